@@ -1,0 +1,196 @@
+"""The symmetric body: mass, axial inertia J, transverse inertia I.
+
+Built once from the body keys of a problem file (see the format page): mass
+from ``mass`` or ``weight``/g, J and the transverse inertias from moments of
+inertia, radii of gyration, the parallel-axis theorem or a ``shape``. Every
+formula used is written into the worked answer.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+from .errors import InputError
+from .spec import Param
+from .work import Work, qty
+
+G_SI = 9.81         # m/s^2, the format's default
+G_US = 32.2 * 0.3048  # 32.2 ft/s^2 in m/s^2, the textbook value for US data
+
+BODY_PARAMS: tuple[Param, ...] = (
+    Param("mass", "mass", "m", "mass of the body"),
+    Param("weight", "force", "W", "weight of the body (lb and oz read as lbf and ozf)"),
+    Param("g", "acceleration", "g", "gravity; default 9.81 m/s^2, or 32.2 ft/s^2 for US data"),
+    Param("J", "inertia", "J", "moment of inertia about the symmetry axis"),
+    Param("k_axial", "length", "k_z", "radius of gyration about the symmetry axis"),
+    Param("I_pivot", "inertia", "I", "transverse moment of inertia about the fixed point"),
+    Param("k_pivot", "length", "k_O", "transverse radius of gyration about the fixed point"),
+    Param("I_cg", "inertia", "I_G", "transverse moment of inertia about the centre of mass"),
+    Param("k_cg", "length", "k_G", "transverse radius of gyration about the centre of mass"),
+    Param("shape", "word", "shape", "disk, ring, cylinder, sphere or cone (solid, apex at the "
+          "fixed point)", choices=("disk", "ring", "cylinder", "sphere", "cone")),
+    Param("radius", "length", "r", "radius of the shape"),
+    Param("diameter", "length", "d", "diameter of the shape"),
+    Param("length", "length", "L", "length of a cylinder along its axis"),
+    Param("height", "length", "h", "height of a cone, apex to base"),
+    Param("cg_distance", "length", "l", "fixed point to centre of mass along the symmetry axis"),
+)
+
+# shape -> (J / (m r^2) with its formula text, I_G as a function of m, r, L, with its text)
+SHAPES: dict[str, tuple[float, str, Callable[[float, float, float], float], str]] = {
+    "disk": (0.5, "m r^2 / 2", lambda m, r, L: m * r * r / 4, "m r^2 / 4"),
+    "ring": (1.0, "m r^2", lambda m, r, L: m * r * r / 2, "m r^2 / 2"),
+    "cylinder": (0.5, "m r^2 / 2", lambda m, r, L: m * (3 * r * r + L * L) / 12,
+                 "m (3 r^2 + L^2) / 12"),
+    "sphere": (0.4, "2 m r^2 / 5", lambda m, r, L: 0.4 * m * r * r, "2 m r^2 / 5"),
+    "cone": (0.3, "3 m r^2 / 10", lambda m, r, h: m * (3 * r * r / 20 + 3 * h * h / 80),
+             "m (3 r^2 / 20 + 3 h^2 / 80)"),
+}
+
+
+@dataclass(frozen=True)
+class Body:
+    """A symmetric body, SI. Absent inertias are None; ``require`` names what is missing."""
+
+    mass: float | None
+    g: float
+    J: float | None = None
+    I_cg: float | None = None
+    I_pivot: float | None = None
+    l: float = 0.0
+    radius: float | None = None
+    shape: str | None = None
+
+    @property
+    def m(self) -> float:
+        """The mass; InputError where the file gave neither mass nor weight."""
+        if self.mass is None:
+            raise InputError("this problem needs the body's `mass` or `weight`", key="given.mass")
+        return self.mass
+
+    @property
+    def weight(self) -> float:
+        return self.m * self.g
+
+    @property
+    def mgl(self) -> float:
+        """m g l: the gravity moment per unit sin(theta) (Eq. 11.11); 0 when l = 0."""
+        return self.m * self.g * self.l if self.l else 0.0
+
+    def require(self, *names: str) -> None:
+        """Raise InputError naming the body data a kind needs but lacks."""
+        how = {"J": "J, k_axial or a shape", "I_pivot": "I_pivot, k_pivot, I_cg or k_cg "
+               "(with cg_distance) or a shape", "I_cg": "I_cg, k_cg or a shape",
+               "radius": "radius or diameter"}
+        for name in names:
+            if getattr(self, name) is None:
+                raise InputError(f"this problem needs {how.get(name, name)} in `given`",
+                                 key=f"given.{name}")
+
+
+def _positive(values: dict, key: str, allow_zero: bool = False) -> None:
+    value = values.get(key)
+    if isinstance(value, float) and (value < 0 or (value == 0 and not allow_zero)):
+        need = "zero or positive" if allow_zero else "positive"
+        raise InputError(f"must be {need}, got {value:g} (SI)", key=f"given.{key}")
+
+
+def build_body(values: dict, us_customary: bool, work: Work) -> Body:
+    """Make the Body from SI values; writes the 'Body' section of the answer."""
+    for key in ("mass", "weight", "g", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg",
+                "radius", "diameter", "length", "height"):
+        _positive(values, key)
+    _positive(values, "cg_distance", allow_zero=True)
+    if "mass" in values and "weight" in values:
+        raise InputError("give mass or weight, not both", key="given.weight")
+    needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values]
+    if "mass" not in values and "weight" not in values and needs_mass:
+        raise InputError(f"the body needs `mass` or `weight` (to go with {needs_mass[0]})",
+                         key="given.mass")
+    if "radius" in values and "diameter" in values:
+        raise InputError("give radius or diameter, not both", key="given.diameter")
+
+    work.section("Body")
+    g = values.get("g", G_US if us_customary else G_SI)
+    if "mass" in values:
+        m = values["mass"]
+    elif "weight" not in values:
+        m = None
+    else:
+        m = work.step("m", "W / g", f"{qty(values['weight'], 'N')} / {qty(g, 'm/s^2')}",
+                      values["weight"] / g, "kg")
+    r = values.get("radius")
+    if r is None and "diameter" in values:
+        r = work.step("r", "d / 2", qty(values["diameter"], "m") + " / 2",
+                      values["diameter"] / 2, "m")
+    shape = values.get("shape")
+    l = values.get("cg_distance")
+    if shape == "cone" and l is None and "height" in values:
+        l = work.step("l", "3 h / 4", f"3 ({qty(values['height'], 'm')}) / 4",
+                      0.75 * values["height"], "m", note="apex at the fixed point")
+    if shape and r is None:
+        raise InputError(f"shape {shape!r} needs radius or diameter", key="given.shape")
+    J = _axial(values, m, r, shape, work)
+    I_cg = _transverse_cg(values, m, r, shape, work)
+    I_pivot = _transverse_pivot(values, m, I_cg, l, work)
+    if J is not None and I_cg is not None and J > 2 * I_cg * (1 + 1e-12):
+        raise InputError(f"J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}: no "
+                         "rigid body has these inertias (the axial moment is at most the sum "
+                         "of the two transverse ones)", key="given.J")
+    if I_pivot is not None and l and I_pivot < m * l * l * (1 - 1e-12):
+        raise InputError(f"I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
+                         f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no body can have "
+                         "(parallel axes: I = I_G + m l^2)", key="given.I_pivot")
+    return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
+
+
+def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:
+    if "J" in values:
+        return values["J"]
+    if "k_axial" in values:
+        k = values["k_axial"]
+        return work.step("J", "m k_z^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
+    if shape:
+        factor, formula, _, _ = SHAPES[shape]
+        return work.step("J", formula, f"{_m_r(m, r)}", factor * m * r * r, "kg*m^2",
+                         note=f"({shape})")
+    return None
+
+
+def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
+                   work: Work) -> float | None:
+    if "I_cg" in values:
+        return values["I_cg"]
+    if "k_cg" in values:
+        k = values["k_cg"]
+        return work.step("I_G", "m k_G^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k,
+                         "kg*m^2")
+    if shape:
+        _, _, inertia, formula = SHAPES[shape]
+        along = values.get("height" if shape == "cone" else "length", 0.0)
+        if shape == "cone" and "height" not in values:
+            raise InputError("a cone needs its height", key="given.height")
+        subst = _m_r(m, r) + (f", {'h' if shape == 'cone' else 'L'} = {qty(along, 'm')}"
+                              if shape in ("cone", "cylinder") else "")
+        return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
+                         note=f"({shape}, about its centre of mass)")
+    return None
+
+
+def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | None,
+                      work: Work) -> float | None:
+    if "I_pivot" in values:
+        return values["I_pivot"]
+    if "k_pivot" in values:
+        k = values["k_pivot"]
+        return work.step("I", "m k_O^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
+    if I_cg is not None and l is not None:
+        return work.step("I", "I_G + m l^2",
+                         f"{qty(I_cg, 'kg*m^2')} + {qty(m, 'kg')} ({qty(l, 'm')})^2",
+                         I_cg + m * l * l, "kg*m^2", note="(parallel axes, about the fixed point)")
+    return None
+
+
+def _m_r(m: float, r: float | None) -> str:
+    return f"m = {qty(m, 'kg')}, r = {qty(r or 0.0, 'm')}"

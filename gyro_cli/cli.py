@@ -1,0 +1,85 @@
+"""The command line: ``gyro solve``, ``gyro kinds``.
+
+Every command exits 0 on success, 1 when an answer does not match (check), and
+2 on bad input or usage, with a one-line message and never a traceback.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from . import __version__
+from .errors import InputError
+
+FORMATS = ("text", "json")
+
+
+def fail(error: InputError | str) -> None:
+    """Print one line on stderr and exit 2."""
+    click.echo(f"gyro: {error}", err=True)
+    sys.exit(2)
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, "--version", prog_name="gyro")
+def main() -> None:
+    """Worked answers to textbook problems of gyroscopic motion (Chapter 11).
+
+    Write a problem as a YAML file with units, then `gyro solve FILE`.
+    """
+
+
+@main.command()
+@click.argument("files", nargs=-1, required=True)
+@click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
+              help="text: the worked answer; json: one JSON object per file, one per line.")
+def solve(files: tuple[str, ...], fmt: str) -> None:
+    """Solve problem FILES and print worked answers."""
+    from . import report
+    from .solve import solve_file
+
+    bad = 0
+    for i, path in enumerate(files):
+        try:
+            result = solve_file(path)
+        except InputError as err:
+            click.echo(f"gyro: {err}", err=True)
+            bad += 1
+            continue
+        if fmt == "json":
+            click.echo(report.as_json(result))
+        else:
+            if i:
+                click.echo("\n" + "=" * report.WIDTH + "\n")
+            click.echo(report.text(result), nl=False)
+    if bad:
+        sys.exit(2)
+
+
+@main.command()
+def kinds() -> None:
+    """List the problem kinds with their given keys and answers."""
+    from . import kinds as registry
+    from .body import BODY_PARAMS
+
+    for name in registry.names():
+        kind = registry.get(name)
+        click.echo(f"{kind.name}: {kind.summary}  ({kind.chapter})")
+        click.echo("  given:")
+        for p in kind.params:
+            default = f" [default {p.default}]" if p.default else ""
+            click.echo(f"    {p.name:<16}{p.dimension:<14}{p.doc}{default}")
+        if kind.uses_body:
+            click.echo(f"    body keys: {', '.join(p.name for p in BODY_PARAMS)}")
+        click.echo("  answers:")
+        for a in kind.answers:
+            click.echo(f"    {a.name:<16}{a.dimension or 'word':<14}{a.doc}")
+        click.echo("")
+    for name, what in registry.PLANNED.items():
+        click.echo(f"{name}: {what}  (not built yet)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,45 @@
+"""The given data of one problem, parsed: SI floats (and words) by key."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from .errors import InputError
+
+if TYPE_CHECKING:
+    from .body import Body
+
+
+@dataclass
+class Given:
+    """SI values by key, plus the body where the kind has one.
+
+    ``given["spin"]`` is psidot in rad/s; ``given.word("arrangement")`` a word.
+    Keys absent from the file but with a default in the kind's spec are present.
+    """
+
+    values: dict[str, float | str]
+    body: "Body | None" = None
+    defaulted: set[str] = field(default_factory=set)
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.values
+
+    def __getitem__(self, key: str) -> float:
+        if key not in self.values:
+            raise InputError("this problem needs this key in `given`", key=f"given.{key}")
+        value = self.values[key]
+        if isinstance(value, str):
+            raise InputError(f"expected a quantity, got the word {value!r}", key=f"given.{key}")
+        return value
+
+    def get(self, key: str, default: float | None = None) -> float | None:
+        return self[key] if key in self.values else default
+
+    def word(self, key: str, default: str | None = None) -> str | None:
+        value = self.values.get(key, default)
+        return value if value is None else str(value)
+
+    def given_explicitly(self, key: str) -> bool:
+        return key in self.values and key not in self.defaulted

@@ -1,0 +1,37 @@
+"""The registry of problem kinds: name -> module holding ``KIND``.
+
+Adding a kind is one module in this package and one line here. Modules are
+imported only when their kind is used, so start-up stays cheap.
+"""
+
+from __future__ import annotations
+
+from importlib import import_module
+
+from ..errors import InputError
+from ..spec import Kind
+
+REGISTRY: dict[str, str] = {
+    "steady_precession": "gyro_cli.kinds.steady_precession",
+}
+
+# In the format but not built yet: named plainly rather than "unknown".
+PLANNED: dict[str, str] = {
+    "released_top": "the released top (nutation, cusps)",
+    "gyroscopic_torque": "gyroscopic bearing torque",
+    "rolling_disk": "rolling disks",
+}
+
+
+def names() -> list[str]:
+    return sorted(REGISTRY)
+
+
+def get(name: object) -> Kind:
+    """The Kind called ``name``; InputError naming the known kinds otherwise."""
+    if not isinstance(name, str) or name not in REGISTRY:
+        if isinstance(name, str) and name in PLANNED:
+            raise InputError(f"kind {name!r} ({PLANNED[name]}) is not built in this version of "
+                             f"gyro; built kinds: {', '.join(names())}", key="kind")
+        raise InputError(f"unknown kind {name!r}; known kinds: {', '.join(names())}", key="kind")
+    return import_module(REGISTRY[name]).KIND

@@ -1,0 +1,233 @@
+"""Reading a problem file: safe YAML, every rule of the format, SI floats out.
+
+Errors name the file, the key, its YAML line and what was expected.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import kinds, units
+from .body import BODY_PARAMS
+from .errors import InputError
+from .given import Given
+from .spec import Kind, Param
+
+TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "notes", "expected", "tolerance",
+            "vary")
+REQUIRED = ("id", "kind", "given", "find")
+MAX_FILE_BYTES = 1_000_000
+
+
+@dataclass
+class Problem:
+    """One problem file, checked and parsed (given data in SI)."""
+
+    file: str
+    id: str
+    kind: Kind
+    given: Given
+    quantities: dict[str, Any]
+    find: dict[str, str | None]
+    title: str = ""
+    source: str = ""
+    notes: list[str] = field(default_factory=list)
+    expected: dict[str, Any] = field(default_factory=dict)
+    tolerance: Any = None
+    vary: Any = None
+    data: dict[str, Any] = field(default_factory=dict)
+    lines: dict[str, int] = field(default_factory=dict)
+    us_customary: bool = False
+
+    def line(self, key: str | None) -> int | None:
+        return self.lines.get(key or "")
+
+
+def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
+    close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.6)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def read_yaml(path: str) -> tuple[Any, dict[str, int]]:
+    """Safe-load one YAML document; also the line of each key, two levels deep."""
+    import yaml
+
+    if not os.path.exists(path):
+        raise InputError("no such file", file=path)
+    if os.path.isdir(path):
+        raise InputError("is a directory, expected a problem file (.yaml)", file=path)
+    try:
+        if os.path.getsize(path) > MAX_FILE_BYTES:
+            raise InputError(f"file is larger than {MAX_FILE_BYTES} bytes; not a problem file",
+                             file=path)
+        with open(path, encoding="utf-8") as handle:
+            text = handle.read()
+    except UnicodeDecodeError:
+        raise InputError("is not UTF-8 text", file=path) from None
+    except OSError as err:
+        raise InputError(f"cannot read: {err.strerror}", file=path) from None
+    loader_class = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    try:
+        loader = loader_class(text)
+        try:
+            node = loader.get_single_node()
+            data = loader.construct_document(node) if node is not None else None
+        finally:
+            loader.dispose()
+    except yaml.MarkedYAMLError as err:
+        mark = err.problem_mark or err.context_mark
+        what = f"{err.problem or err.context}"
+        if "python/" in str(err) or "could not determine a constructor" in str(err):
+            what = f"tag not allowed ({what}); problem files are plain YAML"
+        raise InputError(f"YAML error: {what}", file=path,
+                         line=mark.line + 1 if mark else None) from None
+    except yaml.YAMLError as err:
+        raise InputError(f"YAML error: {err}", file=path) from None
+    return data, _key_lines(node)
+
+
+def _key_lines(node: Any) -> dict[str, int]:
+    import yaml
+
+    lines: dict[str, int] = {}
+    if not isinstance(node, yaml.MappingNode):
+        return lines
+    for key, value in node.value:
+        name = str(key.value)
+        lines[name] = key.start_mark.line + 1
+        if isinstance(value, yaml.MappingNode):
+            for sub_key, _ in value.value:
+                lines[f"{name}.{sub_key.value}"] = sub_key.start_mark.line + 1
+    return lines
+
+
+def load(path: str) -> Problem:
+    """Read and check a problem file; InputError (located) on anything wrong."""
+    data, lines = read_yaml(path)
+    try:
+        return _build(path, data, lines)
+    except InputError as err:
+        raise err.located(file=path, line=lines.get(err.key or "")) from None
+
+
+def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
+    if data is None:
+        raise InputError("the file is empty; expected a mapping with id, kind, given and find")
+    if not isinstance(data, dict):
+        raise InputError(f"expected a mapping with id, kind, given and find at the top, got a "
+                         f"{_type_name(data)}")
+    for key in data:
+        if key not in TOP_KEYS:
+            raise InputError(f"unknown key{suggest(str(key), TOP_KEYS)} (allowed: "
+                             f"{', '.join(TOP_KEYS)})", key=str(key))
+    for key in REQUIRED:
+        if key not in data:
+            raise InputError(f"missing required key `{key}`", key=key)
+    kind = kinds.get(data["kind"])
+    if not isinstance(data["given"], dict):
+        raise InputError(f"expected a mapping of quantities, got a {_type_name(data['given'])}",
+                         key="given")
+    given, quantities, us = parse_given(kind, data["given"])
+    problem = Problem(
+        file=path, id=_text(data["id"], "id"), kind=kind, given=given, quantities=quantities,
+        find=parse_find(kind, data["find"]), title=_text(data.get("title", ""), "title"),
+        source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
+        expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
+        vary=data.get("vary"), data=data, lines=lines, us_customary=us)
+    return problem
+
+
+def params_of(kind: Kind) -> tuple[Param, ...]:
+    return kind.params + (BODY_PARAMS if kind.uses_body else ())
+
+
+def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
+    """Parse every given quantity into SI; apply the kind's defaults."""
+    params = {p.name: p for p in params_of(kind)}
+    values: dict[str, float | str] = {}
+    quantities: dict[str, Any] = {}
+    for key, text in raw.items():
+        param = params.get(str(key))
+        if param is None:
+            raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), list(params))}"
+                             f" (see `gyro kinds`)", key=f"given.{key}")
+        values[param.name], quantities[param.name] = _parse_param(param, text)
+    defaulted = set()
+    for param in kind.params:
+        if param.default is not None and param.name not in values:
+            values[param.name], quantities[param.name] = _parse_param(param, param.default)
+            defaulted.add(param.name)
+    us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
+    return Given(values, defaulted=defaulted), quantities, us
+
+
+def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
+    key = f"given.{param.name}"
+    if param.dimension == "word":
+        if not isinstance(text, str) or text not in param.choices:
+            raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
+                             f"{suggest(str(text), param.choices)}", key=key)
+        return text, text
+    return units.parse(text, param.dimension, key, weight=param.name == "weight")
+
+
+def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
+    """``find``: answer name -> unit to print it in (None for words or SI)."""
+    if isinstance(raw, list):
+        raw = {name: None for name in raw}
+    if not isinstance(raw, dict) or not raw:
+        raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
+                         key="find")
+    names = [a.name for a in kind.answers]
+    find: dict[str, str | None] = {}
+    for name, unit in raw.items():
+        answer = kind.answer(str(name))
+        if answer is None:
+            raise InputError(f"unknown answer for kind {kind.name}{suggest(str(name), names)} "
+                             f"(answers: {', '.join(names)})", key=f"find.{name}")
+        if answer.dimension is None:
+            if unit is not None:
+                raise InputError(f"{name} is a word, not a quantity: write `{name}: null`",
+                                 key=f"find.{name}")
+            find[answer.name] = None
+        else:
+            find[answer.name] = (None if unit is None
+                                 else units.check_unit(unit, answer.dimension, f"find.{name}"))
+    return find
+
+
+def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise InputError("expected a mapping of answer names to values", key="expected")
+    names = [a.name for a in kind.answers]
+    for name in raw:
+        if kind.answer(str(name)) is None:
+            raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
+                             f"{', '.join(names)})", key=f"expected.{name}")
+    return dict(raw)
+
+
+def _text(value: Any, key: str) -> str:
+    if isinstance(value, (dict, list)):
+        raise InputError(f"expected text, got a {_type_name(value)}", key=key)
+    return "" if value is None else str(value)
+
+
+def _notes(value: Any) -> list[str]:
+    if value is None:
+        return []
+    if isinstance(value, str):
+        return [value]
+    if isinstance(value, list) and all(isinstance(v, (str, int, float)) for v in value):
+        return [str(v) for v in value]
+    raise InputError("expected a list of lines of text", key="notes")
+
+
+def _type_name(value: Any) -> str:
+    return {dict: "mapping", list: "list", str: "string", int: "number", float: "number",
+            bool: "boolean"}.get(type(value), type(value).__name__)

@@ -1,0 +1,79 @@
+"""Reports: a solved problem as text or JSON (the format page's contract)."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from .solve import Result
+from .work import num
+
+WIDTH = 78
+
+
+def _answer_text(values: list, unit: str | None, labels: list[str]) -> str:
+    parts = []
+    for i, value in enumerate(values):
+        text = str(value) if isinstance(value, str) else f"{num(value)} {unit or ''}".rstrip()
+        if i < len(labels) and labels[i]:
+            text += f" ({labels[i]})"
+        parts.append(text)
+    return "   ".join(parts)
+
+
+def text(result: Result) -> str:
+    """The worked answer, as the format page shows it."""
+    problem, solution = result.problem, result.solution
+    head = f"{problem.id}  {problem.title}".rstrip()
+    tag = f"[{problem.kind.name}]"
+    lines = [f"{head}{' ' * max(2, WIDTH - len(head) - len(tag))}{tag}"]
+    if problem.source:
+        lines.append(f"Source: {problem.source}")
+    lines += [f"Note: {note}" for note in problem.notes]
+    lines += ["", f"{'Given':<31}SI"]
+    for g in solution.given:
+        si = g.si_value if isinstance(g.si_value, str) else f"{num(g.si_value)} {g.si_unit}"
+        row = f"  {g.symbol:<8}{g.text:<22}{si}"
+        if g.note:
+            row = f"{row:<56}({g.note})"
+        lines.append(row.rstrip())
+    for section in solution.sections:
+        lines += ["", section.title]
+        lines += [f"  {step.as_text()}" for step in section.steps]
+    if solution.checks:
+        lines += ["", "Check"]
+        lines += [f"  {step.as_text()}" for step in solution.checks]
+    lines += ["", "Answer"]
+    width = max(len(name) for name in result.answers) if result.answers else 0
+    for name, answer in result.answers.items():
+        lines.append(f"  {name:<{width}}  {answer.symbol} = "
+                     f"{_answer_text(answer.values, answer.unit, answer.labels)}")
+    if solution.warnings:
+        lines += ["", "Warnings"]
+        lines += [f"  ! {warning}" for warning in solution.warnings]
+    return "\n".join(lines) + "\n"
+
+
+def as_dict(result: Result) -> dict[str, Any]:
+    """The JSON object of one solved problem (values in full precision)."""
+    problem, solution = result.problem, result.solution
+    return {
+        "id": problem.id,
+        "kind": problem.kind.name,
+        "file": problem.file,
+        "title": problem.title,
+        "answers": {
+            name: {"values": a.values, "unit": a.unit, "si_values": a.si_values,
+                   "si_unit": a.si_unit, "symbol": a.symbol, "labels": a.labels}
+            for name, a in result.answers.items()},
+        "given": [{"key": g.key, "symbol": g.symbol, "text": g.text, "si_value": g.si_value,
+                   "si_unit": g.si_unit} for g in solution.given],
+        "steps": [{"title": s.title, "lines": [step.as_text() for step in s.steps]}
+                  for s in solution.sections],
+        "checks": [step.as_text() for step in solution.checks],
+        "warnings": list(solution.warnings),
+    }
+
+
+def as_json(result: Result) -> str:
+    return json.dumps(as_dict(result), allow_nan=False)

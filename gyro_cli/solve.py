@@ -1,0 +1,97 @@
+"""Solving one problem: body, kind, answers in the units asked for."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from . import units
+from .body import build_body
+from .errors import InputError
+from .problem import Problem, load, params_of
+from .work import GivenLine, Solution, Work, num
+
+
+@dataclass
+class Reported:
+    """An answer as asked for: values in ``unit`` (None for words)."""
+
+    name: str
+    symbol: str
+    values: list
+    unit: str | None
+    si_values: list
+    si_unit: str | None
+    labels: list[str]
+
+
+@dataclass
+class Result:
+    problem: Problem
+    solution: Solution
+    answers: dict[str, Reported]
+
+
+def solve_file(path: str) -> Result:
+    return solve(load(path))
+
+
+def solve(problem: Problem) -> Result:
+    """Solve a loaded problem; InputError (located in the file) if it cannot be."""
+    try:
+        return _solve(problem)
+    except InputError as err:
+        raise err.located(file=problem.file, line=problem.line(err.key)) from None
+
+
+def _solve(problem: Problem) -> Result:
+    work = Work()
+    work.given.extend(_given_lines(problem))
+    kind = problem.kind
+    if kind.uses_body:
+        problem.given.body = build_body(problem.given.values, problem.us_customary, work)
+        if problem.us_customary and "g" not in problem.given.values:
+            work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
+                                        "m/s^2", "US customary data: textbook g"))
+        elif "g" not in problem.given.values:
+            work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
+                                        "m/s^2"))
+    kind.solve(problem.given, frozenset(problem.find), work)
+    solution = work.solution()
+    answers = {}
+    for name, unit in problem.find.items():
+        answer = solution.answers.get(name)
+        if answer is None:
+            raise InputError(f"{kind.name} could not give {name!r} from the data given",
+                             key=f"find.{name}")
+        if answer.dimension is None:
+            values, unit = list(answer.si_values), None
+        else:
+            unit = unit or answer.si_unit
+            values = [units.convert(v, answer.dimension, unit) for v in answer.si_values]
+        answers[name] = Reported(name, answer.symbol, values, unit, list(answer.si_values),
+                                 answer.si_unit, answer.labels)
+    return Result(problem, solution, answers)
+
+
+def _given_lines(problem: Problem) -> list[GivenLine]:
+    params = {p.name: p for p in params_of(problem.kind)}
+    lines = []
+    for key, value in problem.given.values.items():
+        param = params[key]
+        quantity = problem.quantities[key]
+        if isinstance(value, str):
+            lines.append(GivenLine(key, param.symbol, value, value, ""))
+            continue
+        raw = problem.data.get("given", {}).get(key)
+        text = " ".join(raw.split()) if isinstance(raw, str) else \
+            f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
+        note = ""
+        if key == "weight":
+            note = "weight"
+            if isinstance(raw, str) and set(raw.split()) & {"lb", "lbs", "oz", "pound", "ounce"}:
+                note = f"weight: read as {units.unit_text(quantity)}"
+        if key in problem.given.defaulted:
+            text += " (default)"
+        lines.append(GivenLine(key, param.symbol, text, value,
+                               units.si_text(param.dimension), note))
+    return lines

@@ -1,0 +1,61 @@
+"""What a problem kind declares: its given keys, its answers and its solver.
+
+A kind is one module in ``gyro_cli/kinds`` exposing ``KIND = Kind(...)`` and one
+line in the registry ``gyro_cli/kinds/__init__.py``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Callable
+
+if TYPE_CHECKING:
+    from .given import Given
+    from .work import Work
+
+
+@dataclass(frozen=True)
+class Param:
+    """A key of `given`: its dimension (a name in units.DIMENSIONS), symbol and meaning."""
+
+    name: str
+    dimension: str
+    symbol: str
+    doc: str
+    default: str | None = None  # a quantity string used when the key is absent
+    choices: tuple[str, ...] = ()  # for word-valued keys (dimension "word")
+
+
+@dataclass(frozen=True)
+class AnswerSpec:
+    """An answer a kind can give; dimension None for a word (``motion``)."""
+
+    name: str
+    dimension: str | None
+    symbol: str
+    doc: str
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A problem kind: the keys it reads, the answers it gives, its solver.
+
+    ``solve(given, find, work)`` reads SI floats from ``given``, writes the
+    worked answer and every answer named in ``find`` into ``work``, and raises
+    InputError (with ``key``) for input it cannot solve.
+    """
+
+    name: str
+    summary: str
+    params: tuple[Param, ...]
+    answers: tuple[AnswerSpec, ...]
+    solve: Callable[["Given", frozenset[str], "Work"], None]
+    uses_body: bool = True
+    chapter: str = ""
+    extra: dict = field(default_factory=dict)
+
+    def param(self, name: str) -> Param | None:
+        return next((p for p in self.params if p.name == name), None)
+
+    def answer(self, name: str) -> AnswerSpec | None:
+        return next((a for a in self.answers if a.name == name), None)

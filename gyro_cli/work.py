@@ -1,0 +1,147 @@
+"""A worked answer under construction: sections of steps, answers, warnings.
+
+Kinds write into a Work; reports (text, JSON, ...) read the finished Solution.
+Values are SI floats; text is formatted to 4 significant figures here, once.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .units import si_text
+
+SIG = 4
+
+
+def num(x: float, sig: int = SIG) -> str:
+    """A number to ``sig`` significant figures, trailing zeros kept (0.8340)."""
+    if x == 0:
+        return "0"
+    text = f"{x:#.{sig}g}"
+    mantissa, _, exponent = text.partition("e")
+    mantissa = mantissa.rstrip(".")
+    return f"{mantissa}e{exponent}" if exponent else mantissa
+
+
+def qty(x: float, unit: str) -> str:
+    """A number with its unit, for substitutions: ``0.8340 N``."""
+    unit = {"kg*m^2": "kg m^2", "N*m": "N m"}.get(unit, unit)
+    return f"{num(x)} {unit}".rstrip()
+
+
+@dataclass
+class Step:
+    """One line: ``symbol = formula = substitution = value unit  (ref)``.
+
+    A step with only ``text`` is a line of prose or a bare equation.
+    """
+
+    symbol: str = ""
+    formula: str = ""
+    substitution: str = ""
+    value: float | None = None
+    unit: str = ""
+    ref: str = ""
+    text: str = ""
+
+    def as_text(self) -> str:
+        if not self.symbol:
+            return self.text
+        parts = [self.symbol]
+        parts += [p for p in (self.formula, self.substitution) if p]
+        if self.value is not None:
+            parts.append(qty(self.value, self.unit))
+        line = " = ".join(parts)
+        if self.ref:
+            line += f"    ({self.ref})"
+        if self.text:
+            line += f"    {self.text}"
+        return line
+
+
+@dataclass
+class Section:
+    title: str
+    steps: list[Step] = field(default_factory=list)
+
+
+@dataclass
+class Answer:
+    """An answer in SI: a list of floats (roots ascending) or of words."""
+
+    name: str
+    symbol: str
+    si_values: list
+    dimension: str | None
+    labels: list[str] = field(default_factory=list)
+
+    @property
+    def si_unit(self) -> str | None:
+        return si_text(self.dimension) if self.dimension else None
+
+
+@dataclass
+class GivenLine:
+    """A given datum as written and in SI, for the report's first table."""
+
+    key: str
+    symbol: str
+    text: str
+    si_value: float | str
+    si_unit: str
+    note: str = ""
+
+
+@dataclass
+class Solution:
+    given: list[GivenLine]
+    sections: list[Section]
+    answers: dict[str, Answer]
+    warnings: list[str]
+    checks: list[Step] = field(default_factory=list)
+
+
+class Work:
+    """Builder the kinds write into."""
+
+    def __init__(self) -> None:
+        self.given: list[GivenLine] = []
+        self.sections: list[Section] = []
+        self.answers: dict[str, Answer] = {}
+        self.warnings: list[str] = []
+        self.checks: list[Step] = []
+
+    def section(self, title: str) -> Section:
+        """Start a section; later steps go into it."""
+        self.sections.append(Section(title))
+        return self.sections[-1]
+
+    def _current(self) -> Section:
+        if not self.sections:
+            self.section("Solution")
+        return self.sections[-1]
+
+    def step(self, symbol: str, formula: str = "", substitution: str = "",
+             value: float | None = None, unit: str = "", ref: str = "", note: str = "") -> float | None:
+        """Add ``symbol = formula = substitution = value``; returns value."""
+        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note))
+        return value
+
+    def text(self, line: str) -> None:
+        """Add a line of prose or a bare equation to the current section."""
+        self._current().steps.append(Step(text=line))
+
+    def check(self, line: str) -> None:
+        """An independent check of the answer (a residual, a balance)."""
+        self.checks.append(Step(text=line))
+
+    def answer(self, name: str, symbol: str, si_values: list, dimension: str | None,
+               labels: list[str] | None = None) -> None:
+        self.answers[name] = Answer(name, symbol, list(si_values), dimension, list(labels or []))
+
+    def warn(self, message: str) -> None:
+        if message not in self.warnings:
+            self.warnings.append(message)
+
+    def solution(self) -> Solution:
+        return Solution(self.given, self.sections, self.answers, self.warnings, self.checks)
