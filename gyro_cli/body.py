@@ -13,7 +13,7 @@ from typing import Callable
 
 from .errors import InputError
 from .spec import Param
-from .work import Work, qty
+from .work import Work, qty, substitute
 
 G_SI = 9.81         # m/s^2, the format's default
 G_US = 32.2 * 0.3048  # 32.2 ft/s^2 in m/s^2, the textbook value for US data
@@ -153,7 +153,8 @@ def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Wor
         return work.step("J", "m k_z^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
     if shape:
         factor, formula, _, _ = SHAPES[shape]
-        return work.step("J", formula, f"{_m_r(m, r)}", factor * m * r * r, "kg*m^2",
+        return work.step("J", formula, substitute(formula, m=qty(m, "kg"), r=qty(r, "m")),
+                         factor * m * r * r, "kg*m^2",
                          note=f"({shape})")
     return None
 
@@ -171,8 +172,8 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
         along = values.get("height" if shape == "cone" else "length", 0.0)
         if shape == "cone" and "height" not in values:
             raise InputError("a cone needs its height", key="given.height")
-        subst = _m_r(m, r) + (f", {'h' if shape == 'cone' else 'L'} = {qty(along, 'm')}"
-                              if shape in ("cone", "cylinder") else "")
+        subst = substitute(formula, m=qty(m, "kg"), r=qty(r, "m"), L=qty(along, "m"),
+                           h=qty(along, "m"))
         return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
                          note=f"({shape}, about its centre of mass)")
     return None
@@ -190,7 +191,3 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
                          f"{qty(I_cg, 'kg*m^2')} + {qty(m, 'kg')} ({qty(l, 'm')})^2",
                          I_cg + m * l * l, "kg*m^2", note="(parallel axes, about the fixed point)")
     return None
-
-
-def _m_r(m: float, r: float | None) -> str:
-    return f"m = {qty(m, 'kg')}, r = {qty(r or 0.0, 'm')}"

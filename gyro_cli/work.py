@@ -29,6 +29,14 @@ def qty(x: float, unit: str) -> str:
     return f"{num(x)} {unit}".rstrip()
 
 
+def substitute(formula: str, **values: str) -> str:
+    """The formula with each named symbol replaced by its value: ``m r^2`` -> ``(2 kg) (0.1 m)^2``."""
+    import re
+
+    return re.sub(r"\b(" + "|".join(map(re.escape, values)) + r")\b",
+                  lambda match: f"({values[match.group(1)]})", formula) if values else formula
+
+
 @dataclass
 class Step:
     """One line: ``symbol = formula = substitution = value unit  (ref)``.
