@@ -132,11 +132,12 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
         D = work.step("D", "M / sin(theta)", f"{qty(M, 'N*m')} / sin({num(math.degrees(theta))}"
                       " deg)", M / math.sin(theta), "N*m")
         return D, "M / sin(theta)"
-    M = work.step("M", "m g l sin(theta)", f"{qty(body.m, 'kg')} ({qty(body.g, 'm/s^2')}) "
-                  f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
-                  body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
     if body.l == 0:
-        work.text("l = 0: no gravity moment (torque-free body)")
+        work.text("l = 0 and no applied moment: a torque-free body (D = 0)")
+        return 0.0, "m g l"
+    work.step("M", "m g l sin(theta)", f"{qty(body.m, 'kg')} ({qty(body.g, 'm/s^2')}) "
+              f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
+              body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
     return body.mgl, "m g l"
 
 

@@ -1,0 +1,37 @@
+"""Shared helpers: run the CLI in-process and write problem files."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from gyro_cli.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = ROOT / "problems"
+
+
+@pytest.fixture
+def run():
+    """run(*args) -> click Result with .exit_code, .stdout, .stderr."""
+    def _run(*args: str):
+        return CliRunner().invoke(main, [str(a) for a in args])
+    return _run
+
+
+@pytest.fixture
+def write(tmp_path):
+    """write(text, name='p.yaml') -> path of a problem file with dedented text."""
+    def _write(text: str, name: str = "p.yaml") -> Path:
+        path = tmp_path / name
+        path.write_text(textwrap.dedent(text))
+        return path
+    return _write
+
+
+@pytest.fixture
+def problems_dir() -> Path:
+    return PROBLEMS

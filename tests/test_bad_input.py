@@ -1,0 +1,126 @@
+"""Bad input: one line on stderr naming file and key, exit code 2, no traceback."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+
+import pytest
+
+GOOD_GIVEN = """weight: 3 oz
+  k_axial: 0.84 in
+  k_pivot: 1.80 in
+  cg_distance: 1.5 in
+  spin: 1800 rpm
+  theta: 30 deg"""
+
+
+def problem(given: str = GOOD_GIVEN, find: str = "precession: rpm",
+            kind: str = "steady_precession", extra: str = "") -> str:
+    return f"id: x\nkind: {kind}\ngiven:\n  {given}\nfind:\n  {find}\n{extra}"
+
+
+def one_line_error(out, *fragments: str) -> str:
+    assert out.exit_code == 2, out.output
+    assert out.stdout == ""
+    err = out.stderr
+    assert "Traceback" not in err
+    assert err.count("\n") == 1 and err.startswith("gyro: "), err
+    for fragment in fragments:
+        assert fragment in err, (fragment, err)
+    return err
+
+
+CASES = {
+    "empty file": ("", ["is empty"]),
+    "yaml syntax": ("id: x\nkind: [steady\n", ["YAML error", "line"]),
+    "not a mapping": ("- 1\n- 2\n", ["expected a mapping", "list"]),
+    "missing kind": ("id: x\ngiven: {}\nfind: {precession: rpm}\n", ["kind", "missing"]),
+    "unknown kind": (problem(kind="top_spin"), ["unknown kind 'top_spin'", "steady_precession"]),
+    "unknown top key": (problem(extra="tolerence: 1%\n"), ["tolerence", "did you mean 'tolerance'"]),
+    "unknown given key": (problem(given=GOOD_GIVEN.replace("spin:", "spinn:")),
+                          ["given.spinn (line 8)", "did you mean 'spin'"]),
+    "wrong dimension": (problem(given=GOOD_GIVEN.replace("1800 rpm", "30 deg")),
+                        ["given.spin", "angular rate", "30 deg"]),
+    "unknown unit": (problem(given=GOOD_GIVEN.replace("1800 rpm", "1800 rpmm")),
+                     ["given.spin", "unknown unit", "rpmm"]),
+    "bare angle": (problem(given=GOOD_GIVEN.replace("30 deg", "30")),
+                   ["given.theta", "deg or rad"]),
+    "negative mass": (problem(given=GOOD_GIVEN.replace("weight: 3 oz", "mass: -2 kg")),
+                      ["given.mass", "positive"]),
+    "zero mass": (problem(given=GOOD_GIVEN.replace("weight: 3 oz", "mass: 0 kg")),
+                  ["given.mass", "positive"]),
+    "negative length": (problem(given=GOOD_GIVEN.replace("0.84 in", "-0.84 in")),
+                        ["given.k_axial", "positive"]),
+    "zero length": (problem(given=GOOD_GIVEN.replace("1.80 in", "0 in")),
+                    ["given.k_pivot", "positive"]),
+    "spin below threshold": (problem(given=GOOD_GIVEN.replace("1800 rpm", "500 rpm")),
+                             ["given.spin", "too low", "965.4 rpm", "Eq. 11.21"]),
+    "power tower": (problem(given=GOOD_GIVEN.replace("1800 rpm", '"9**9**9**9 rpm"')),
+                    ["given.spin"]),
+    "python tag": ("id: !!python/object/apply:os.system ['echo hi']\nkind: steady_precession\n",
+                   ["tag not allowed"]),
+    "unknown answer": (problem(find="precesion: rpm"), ["find.precesion", "did you mean"]),
+    "answer in wrong unit": (problem(find="precession: m"), ["find.precession", "angular rate"]),
+    "vertical axis": (problem(given=GOOD_GIVEN.replace("30 deg", "0 deg")),
+                      ["given.theta", "undefined"]),
+    "given not a mapping": ("id: x\nkind: steady_precession\ngiven: 3\nfind: {spin: rpm}\n",
+                            ["given", "mapping"]),
+    "impossible inertia": (problem(given=GOOD_GIVEN.replace("1.80 in", "1.0 in")
+                                   .replace("k_pivot", "k_cg").replace("0.84 in", "1.5 in")),
+                           ["given.J", "no rigid body"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_bad_file(case, run, write):
+    text, fragments = CASES[case]
+    path = write(text)
+    err = one_line_error(run("solve", path), *fragments)
+    assert str(path) in err
+
+
+def test_missing_file(run, tmp_path):
+    one_line_error(run("solve", tmp_path / "nope.yaml"), "no such file")
+
+
+def test_directory(run, tmp_path):
+    one_line_error(run("solve", tmp_path), "directory")
+
+
+@pytest.mark.parametrize("size,message", [(1_000_000, "larger than"),
+                                          (500_000, "at most 100")])
+def test_megabyte_string_is_refused_fast(run, write, size, message):
+    path = write(problem(given=GOOD_GIVEN.replace("1800 rpm", "1" * size + " rpm")))
+    start = time.perf_counter()
+    one_line_error(run("solve", path), message)
+    assert time.perf_counter() - start < 1.0
+
+
+@pytest.mark.parametrize("text", ["9**9**9**9 rpm", "1 rpm**9**9**9", "1 m^9^9 rpm",
+                                  "(1e308)**999 rpm", "1 " + "(" * 50 + "rpm" + ")" * 50])
+def test_pathological_quantities_rejected_within_a_second(text):
+    from gyro_cli import units
+    from gyro_cli.errors import InputError
+
+    start = time.perf_counter()
+    with pytest.raises(InputError):
+        units.parse(text, "rate", "given.spin")
+    assert time.perf_counter() - start < 1.0
+
+
+def test_other_files_still_solved(run, write, problems_dir):
+    bad = write("", "bad.yaml")
+    out = run("solve", problems_dir / "11_3.yaml", bad)
+    assert out.exit_code == 2
+    assert "45.13 rpm" in out.stdout
+    assert "bad.yaml" in out.stderr and "Traceback" not in out.stderr
+
+
+def test_installed_command_exits_2(write):
+    path = write(problem(given=GOOD_GIVEN.replace("1800 rpm", "30 deg")))
+    proc = subprocess.run([sys.executable, "-m", "gyro_cli", "solve", str(path)],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 2
+    assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
