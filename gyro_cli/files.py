@@ -1,0 +1,71 @@
+"""Writing output files safely: never clobber without --force, never leave half a file.
+
+``write_atomic`` writes to a temporary file in the same directory, flushes it to
+disk and renames it over the target (``os.replace`` is atomic on POSIX and
+Windows), so a reader sees either the old file or the whole new one.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from .errors import InputError
+
+
+def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False) -> Path:
+    """Write ``text`` to ``path`` atomically; InputError if it exists and not ``force``.
+
+    The parent directory must exist. Returns the path written.
+    """
+    target = Path(path)
+    if target.is_dir():
+        raise InputError("is a directory, expected a file to write", file=str(target))
+    if not force and (target.exists() or target.is_symlink()):
+        raise InputError("exists; not overwritten (use --force to replace it)", file=str(target))
+    parent = target.parent if str(target.parent) else Path(".")
+    if not parent.is_dir():
+        raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
+    data = text.encode("utf-8") if isinstance(text, str) else text
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=parent)
+    except OSError as err:
+        raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        if not force:
+            # Claim the name without replacing: fails if someone created it meanwhile.
+            try:
+                os.link(tmp, target)
+            except FileExistsError:
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=str(target)) from None
+            except OSError:
+                # Filesystems without hard links: fall back to a checked rename.
+                if target.exists():
+                    raise InputError("exists; not overwritten (use --force to replace it)",
+                                     file=str(target)) from None
+                os.replace(tmp, target)
+        else:
+            os.replace(tmp, target)
+        mode = 0o666 & ~_umask()
+        try:
+            os.chmod(target, mode)
+        except OSError:
+            pass
+    except OSError as err:
+        raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    return target
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
