@@ -59,6 +59,62 @@ def solve(files: tuple[str, ...], fmt: str) -> None:
 
 
 @main.command()
+@click.argument("paths", nargs=-1, required=True)
+@click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
+              show_default=True, help="table: one line per answer; json: one document.")
+@click.option("--junit", "junit_file", metavar="FILE",
+              help="Also write JUnit XML to FILE (a testsuite per file, a testcase per answer).")
+@click.option("--strict", is_flag=True,
+              help="Count problems without expected answers as failures (exit 1).")
+@click.option("--answers", "sheet", metavar="SHEET",
+              help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
+@click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
+@click.option("--force", is_flag=True, help="With --out: replace FILE if it exists.")
+def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
+          sheet: str | None, out: str | None, force: bool) -> None:
+    """Solve problem files and compare with their `expected` answers.
+
+    PATHS are files, directories (searched recursively for *.yaml and *.yml)
+    or globs. Exit 0 when every answer matches, 1 when one does not (or
+    nothing was compared), 2 when a file is bad (the others are still checked).
+    """
+    if sheet is None:
+        if out or force:
+            fail("--out and --force go with --answers SHEET")
+        from . import check as checking
+
+        result = checking.run(paths, strict=strict)
+        for problem in result.problems:
+            if problem.error:
+                click.echo(f"gyro: {problem.error}", err=True)
+        click.echo(checking.as_json(result) if fmt == "json" else checking.table(result),
+                   nl=fmt == "json")
+        if junit_file:
+            from . import junit
+            from .files import write_atomic
+
+            try:
+                write_atomic(junit_file, junit.xml(result), force=True)
+            except InputError as err:
+                fail(err)
+        sys.exit(result.exit_code)
+    if junit_file or strict:
+        fail("--junit and --strict go with checking the answer key, not with --answers")
+    from . import grades
+
+    try:
+        graded = grades.grade(sheet, paths)
+        text = grades.csv_text(graded)
+        if out:
+            from .files import write_atomic
+
+            write_atomic(out, text, force=force)
+    except InputError as err:
+        fail(err)
+    click.echo(grades.as_json(graded) if fmt == "json" else grades.table(graded), nl=fmt == "json")
+
+
+@main.command()
 def kinds() -> None:
     """List the problem kinds with their given keys and answers."""
     from . import kinds as registry
