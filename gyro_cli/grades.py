@@ -1,0 +1,300 @@
+"""Grading students' answers: `gyro check --answers SHEET PROBLEMS... [--out grades.csv]`.
+
+SHEET is a CSV with the columns student, problem, answer, value (a header row
+naming them is optional; several roots either as several rows or separated by
+``;`` in one value), or a YAML mapping ``student -> problem id -> answer ->
+value or list``. Each submitted value is graded against the solver's answer
+with the problem's tolerance; roots are matched as sets as in `gyro check`.
+
+One item = one (student, problem, answer): worth 1 point, shared among the
+roots (a student who gives one of two roots gets 1/2). An item another
+student answered but this one did not is `missing` (0 points). A value that
+does not parse or has the wrong dimension is `invalid` (0 points, with the
+reason): that is the student's slip, not a bad sheet. A sheet naming a problem
+or an answer that is not among the problem files is bad input (exit 2).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import io
+import json
+import os
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import check
+from .errors import InputError
+from .work import num
+
+COLUMNS = ("student", "problem", "answer", "value")
+HEADER_WORDS = {"student": "student", "name": "student", "problem": "problem",
+                "problem id": "problem", "problem_id": "problem", "id": "problem",
+                "answer": "answer", "answer name": "answer", "answer_name": "answer",
+                "value": "value", "value with unit": "value"}
+OUT_COLUMNS = ("student", "problem", "answer", "submitted", "correct", "relative_error",
+               "result", "points", "max_points", "note")
+MAX_SHEET_BYTES = 20_000_000
+
+
+@dataclass
+class Submission:
+    student: str
+    problem: str
+    answer: str
+    values: list[Any]
+    line: int | None = None
+
+
+@dataclass
+class GradeRow:
+    student: str
+    problem: str
+    answer: str
+    submitted: str
+    correct: str
+    relative_error: float | None
+    result: str  # correct | partial | wrong | invalid | missing
+    points: float
+    max_points: float = 1.0
+    note: str = ""
+
+
+@dataclass
+class Graded:
+    rows: list[GradeRow]
+    scores: dict[str, tuple[float, float]] = field(default_factory=dict)
+
+
+# ---- reading the sheet ------------------------------------------------------
+
+def read_sheet(path: str) -> list[Submission]:
+    """The submissions in a CSV or YAML answer sheet, in sheet order."""
+    if not os.path.isfile(path):
+        raise InputError("no such answer sheet" if not os.path.exists(path)
+                         else "is not a file", file=path)
+    if os.path.getsize(path) > MAX_SHEET_BYTES:
+        raise InputError(f"answer sheet is larger than {MAX_SHEET_BYTES} bytes", file=path)
+    if path.endswith((".yaml", ".yml")):
+        return _read_yaml(path)
+    return _read_csv(path)
+
+
+def _read_csv(path: str) -> list[Submission]:
+    try:
+        with open(path, encoding="utf-8-sig", newline="") as handle:
+            rows = list(csv.reader(handle))
+    except UnicodeDecodeError:
+        raise InputError("is not UTF-8 text", file=path) from None
+    except csv.Error as err:
+        raise InputError(f"not a CSV file: {err}", file=path) from None
+    order = list(COLUMNS)
+    start = 0
+    if rows and [HEADER_WORDS.get(c.strip().lower()) for c in rows[0][:4]] \
+            and all(c.strip().lower() in HEADER_WORDS for c in rows[0] if c.strip()):
+        order = [HEADER_WORDS[c.strip().lower()] for c in rows[0] if c.strip()]
+        if sorted(set(order)) != sorted(COLUMNS):
+            raise InputError(f"the header must name the columns {', '.join(COLUMNS)}; got "
+                             f"{', '.join(rows[0])}", file=path, line=1)
+        start = 1
+    merged: dict[tuple[str, str, str], Submission] = {}
+    for number, row in enumerate(rows[start:], start + 1):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) < len(order) or any(c.strip() for c in row[len(order):]):
+            raise InputError(f"expected {len(order)} columns ({', '.join(order)}), got "
+                             f"{len(row)}", file=path, line=number)
+        cells = {name: row[k].strip() for k, name in enumerate(order)}
+        if not (cells["student"] and cells["problem"] and cells["answer"]):
+            raise InputError("student, problem and answer must not be empty", file=path,
+                             line=number)
+        values = [v.strip() for v in cells["value"].split(";") if v.strip()]
+        key = (cells["student"], cells["problem"], cells["answer"])
+        if key in merged:
+            merged[key].values += values
+        else:
+            merged[key] = Submission(*key, values, number)
+    return list(merged.values())
+
+
+def _read_yaml(path: str) -> list[Submission]:
+    from .problem import read_yaml
+
+    data, lines = read_yaml(path)
+    if not isinstance(data, dict):
+        raise InputError("expected a mapping: student -> problem id -> answer -> value",
+                         file=path)
+    out = []
+    for student, problems in data.items():
+        where = dict(file=path, line=lines.get(str(student)))
+        if not isinstance(problems, dict):
+            raise InputError(f"student {student!r}: expected a mapping of problem ids", **where)
+        for problem, answers in problems.items():
+            if not isinstance(answers, dict):
+                raise InputError(f"student {student!r}, problem {problem!r}: expected a mapping "
+                                 "of answer names to values", **where)
+            for answer, value in answers.items():
+                values = value if isinstance(value, list) else [value]
+                out.append(Submission(str(student), str(problem), str(answer),
+                                      [v for v in values if v is not None], where["line"]))
+    return out
+
+
+# ---- grading ----------------------------------------------------------------
+
+def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
+    """The problems to grade against, by id; any bad file is bad input."""
+    from .problem import load
+
+    files, errors = check.collect(paths)
+    if errors:
+        raise InputError(errors[0].error or "bad path")
+    by_id: dict[str, Any] = {}
+    for path in files:
+        problem = load(path)
+        if problem.id in by_id:
+            raise InputError(f"problem id {problem.id!r} is also in {by_id[problem.id].file}",
+                             file=path, key="id")
+        by_id[problem.id] = problem
+    return by_id
+
+
+def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
+    """Grade every submission in ``sheet`` against the problems under ``paths``."""
+    from .solve import solve
+
+    submissions = read_sheet(sheet)
+    problems = load_problems(paths)
+    asked: dict[str, dict[str, None]] = {}
+    for s in submissions:
+        problem = problems.get(s.problem)
+        if problem is None:
+            raise InputError(f"problem {s.problem!r} (student {s.student!r}) is not among the "
+                             f"problem files given (ids: {', '.join(sorted(problems)) or 'none'})",
+                             file=sheet, line=s.line)
+        if problem.kind.answer(s.answer) is None:
+            names = ", ".join(a.name for a in problem.kind.answers)
+            raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
+                             f"{names})", file=sheet, line=s.line)
+        asked.setdefault(s.problem, {})[s.answer] = None
+    solved = {}
+    for pid, names in asked.items():
+        problem = problems[pid]
+        find = dict(problem.find)
+        for name in names:
+            find.setdefault(name, None)
+        solved[pid] = solve(dataclasses.replace(problem, find=find))
+    items = [(pid, name) for pid, names in asked.items() for name in names]
+    students = list(dict.fromkeys(s.student for s in submissions))
+    by_key = {(s.student, s.problem, s.answer): s for s in submissions}
+    graded = Graded([])
+    for student in students:
+        total = 0.0
+        for pid, name in items:
+            submission = by_key.get((student, pid, name))
+            row = grade_item(student, problems[pid], name, solved[pid].answers[name],
+                             submission.values if submission else None)
+            graded.rows.append(row)
+            total += row.points
+        graded.scores[student] = (total, float(len(items)))
+    return graded
+
+
+def grade_item(student: str, problem: Any, name: str, reported: Any,
+               values: list[Any] | None) -> GradeRow:
+    """One student's answer to one question, against the solver's answer."""
+    spec = problem.kind.answer(name)
+    names = [a.name for a in problem.kind.answers]
+    tolerance = check.tolerance_for(problem.tolerance, name, spec.dimension, names)
+    correct = _correct_text(reported)
+    row = GradeRow(student, problem.id, name, "", correct, None, "missing", 0.0)
+    if not values:
+        row.note = "no answer submitted"
+        return row
+    row.submitted = "; ".join(" ".join(str(v).split()) for v in values)
+    try:
+        parsed = [check.parse_value(v, spec.dimension, name) for v in values]
+    except InputError as err:
+        row.result, row.note = "invalid", err.message
+        return row
+    lines = check.compare(name, parsed, tolerance, reported)
+    passed = sum(line.passed for line in lines)
+    row.points = round(passed / len(lines), 4) if lines else 0.0
+    row.result = "correct" if passed == len(lines) else ("partial" if passed else "wrong")
+    # Here the solver's value is the truth and the student's the one that is off.
+    errors = [(float(line.expected_si) - float(line.got_si)) / abs(float(line.got_si))
+              for line in lines if line.expected is not None and line.got_si is not None
+              and float(line.got_si) != 0]
+    row.relative_error = max(errors, key=abs) if errors else None
+    notes = []
+    for line in lines:
+        if line.passed:
+            continue
+        if line.expected is None:
+            notes.append(f"missing root {line.got}")
+        elif line.got_si is None:
+            notes.append(f"{line.expected}: no such root")
+        else:
+            truth, submitted = float(line.got_si), float(line.expected_si)
+            note = (f"{line.expected}: off by {(submitted - truth) / abs(truth) * 100:+.3g}%"
+                    if truth else f"{line.expected}: wrong")
+            slip = check.diagnose(truth, submitted, abs(truth) * 0.01, [])
+            if slip:
+                note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
+            notes.append(note)
+    row.note = "; ".join(notes)
+    return row
+
+
+def _correct_text(reported: Any) -> str:
+    if reported.unit is None and reported.si_unit is None:
+        return "; ".join(str(v) for v in reported.values)
+    return "; ".join(f"{num(v)} {reported.unit}" for v in reported.values)
+
+
+# ---- output -----------------------------------------------------------------
+
+def _cell(value: Any) -> str:
+    """A CSV cell a spreadsheet will not run as a formula (=, +, @, -letters)."""
+    text = "" if value is None else str(value)
+    if text[:1] in ("=", "+", "@", "\t", "\r") or (text[:1] == "-" and not
+                                                   text[1:2].replace(".", "").isdigit()):
+        return "'" + text
+    return text
+
+
+def csv_text(graded: Graded) -> str:
+    """The grades: one row per student and answer, then a score row per student."""
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(OUT_COLUMNS)
+    for row in graded.rows:
+        rel = "" if row.relative_error is None else f"{row.relative_error:.6g}"
+        writer.writerow([_cell(row.student), _cell(row.problem), _cell(row.answer),
+                         _cell(row.submitted), _cell(row.correct), rel, row.result,
+                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)])
+    for student, (points, total) in graded.scores.items():
+        percent = 100 * points / total if total else 0.0
+        writer.writerow([_cell(student), "", "", "", "", "", "score", f"{points:g}",
+                         f"{total:g}", f"{percent:.1f}%"])
+    return out.getvalue()
+
+
+def table(graded: Graded) -> str:
+    lines = []
+    for row in graded.rows:
+        lines.append(f"{row.student:<12} {row.problem:<8} {row.answer:<12} {row.result:<8} "
+                     f"{row.points:>4g}  {row.submitted or '-'}  [solver: {row.correct}]"
+                     + (f"  {row.note}" if row.note and row.result != "correct" else ""))
+    lines.append("")
+    for student, (points, total) in graded.scores.items():
+        percent = 100 * points / total if total else 0.0
+        lines.append(f"{student:<12} score {points:g} / {total:g} ({percent:.1f}%)")
+    return "\n".join(lines) + "\n"
+
+
+def as_json(graded: Graded) -> str:
+    return json.dumps({"rows": [dataclasses.asdict(r) for r in graded.rows],
+                       "scores": {s: {"points": p, "max_points": t}
+                                  for s, (p, t) in graded.scores.items()}}, allow_nan=False)
