@@ -1,0 +1,197 @@
+"""The full equations of motion (Euler + quaternion, simulate.py) against
+independent references:
+
+* Lagrange's reduced equation 11.15 with Eq. 11.16 for phi, integrated here in
+  Euler angles with its own solve_ivp (a different formulation and state);
+* the chapter's closed forms for the released top (Eq. 11.25, cusps at u2) and
+  for steady precession (the quadratic of kind steady_precession);
+* conservation laws written in Euler angles (Eqs. 11.10, 11.11, 11.14) on the
+  output series, not on the integrator's state;
+* the analytic module nutation.py (elliptic/quadrature path), for 20 random tops.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from gyro_cli.simulate import Params, initial_state, motion_of, simulate
+
+G = 9.81
+# Problem 11/3: 3 ozf top, k_z = 0.84 in, k_O = 1.80 in, l = 1.5 in, 1800 rpm, 30 deg
+M_11_3 = 3 * 0.27801385 / (32.2 * 0.3048)
+TOP_11_3 = dict(I=M_11_3 * (1.80 * 0.0254) ** 2, J=M_11_3 * (0.84 * 0.0254) ** 2,
+                mgl=M_11_3 * 32.2 * 0.3048 * 1.5 * 0.0254)
+
+
+def top(theta0_deg: float, spin: float, precession0: float = 0.0, theta_rate0: float = 0.0,
+        **body) -> Params:
+    body = body or TOP_11_3
+    return Params(theta0=math.radians(theta0_deg), spin=spin, precession0=precession0,
+                  theta_rate0=theta_rate0, **body)
+
+
+def lagrange(p: Params, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """theta, phi, phidot from Eqs. 11.14-11.16 integrated in Euler angles."""
+    c0, s0 = math.cos(p.theta0), math.sin(p.theta0)
+    P2 = p.J * (p.spin + p.precession0 * c0)                     # Eq. 11.14
+    P1 = p.I * p.precession0 * s0 ** 2 + P2 * c0
+
+    def rhs(_, y):
+        th, thd, _phi = y
+        c, s = math.cos(th), math.sin(th)
+        thdd = ((P1 - P2 * c) * (P1 * c - P2) / (p.I * s ** 3) + p.mgl * s) / p.I   # Eq. 11.15
+        return [thd, thdd, (P1 - P2 * c) / (p.I * s * s)]                           # Eq. 11.16
+
+    sol = solve_ivp(rhs, (0, t[-1]), [p.theta0, p.theta_rate0, 0.0], method="DOP853",
+                    rtol=1e-13, atol=1e-14, t_eval=t)
+    theta, phi = sol.y[0], sol.y[2]
+    return theta, phi, (P1 - P2 * np.cos(theta)) / (p.I * np.sin(theta) ** 2)
+
+
+def euler_energy(p: Params, sim) -> np.ndarray:
+    """T + V from the output Euler angles and rates, Eqs. 11.10 and 11.11."""
+    th = sim.theta
+    return 0.5 * (p.I * (sim.theta_rate ** 2 + sim.phidot ** 2 * np.sin(th) ** 2)
+                  + p.J * (sim.psidot + sim.phidot * np.cos(th)) ** 2) + p.mgl * np.cos(th)
+
+
+CASES = {
+    "cusps (released, problem 11/3 top)": top(30, 188.5),
+    "loops (phidot0 < 0)": top(60, 150.0, precession0=-3.0),
+    "waves (phidot0 > 0)": top(45, 150.0, precession0=6.0),
+    "hanging, thetadot0 != 0": top(120, 90.0, precession0=1.0, theta_rate0=0.7),
+}
+
+
+@pytest.mark.parametrize("name", list(CASES))
+def test_theta_and_phi_match_lagrange_eq_11_15(name):
+    p = CASES[name]
+    sim = simulate(p, p, t_end=1.0, samples=801)
+    theta, phi, phidot = lagrange(p, sim.t)
+    assert np.max(np.abs(sim.theta - theta)) < 1e-8
+    assert np.max(np.abs(sim.phi - phi)) < 1e-7
+    assert np.max(np.abs(sim.phidot - phidot)) < 1e-6 * np.max(np.abs(phidot))
+
+
+def test_initial_state_is_eq_11_8():
+    """Body omega at t = 0 by hand (psi = 0): (thetadot, phidot sin th, psidot + phidot cos th)."""
+    p = top(40, 100.0, precession0=2.0, theta_rate0=-0.5)
+    w, x, y, z, ox, oy, oz = initial_state(p)
+    assert (ox, oy) == (-0.5, pytest.approx(2.0 * math.sin(math.radians(40))))
+    assert oz == pytest.approx(100.0 + 2.0 * math.cos(math.radians(40)))
+    assert w * w + x * x + y * y + z * z == pytest.approx(1.0)
+    # body z axis seen from the fixed frame: cos(theta) = 1 - 2 (x^2 + y^2)
+    assert 1 - 2 * (x * x + y * y) == pytest.approx(math.cos(math.radians(40)))
+
+
+def test_released_top_falls_to_eq_11_25_and_has_cusps():
+    """theta oscillates between theta2 (release) and theta1 of Eq. 11.25 (as corrected);
+    phidot = 0 at theta2 (cusps, Eq. 11.26) and the path repeats."""
+    p = top(30, 188.5)
+    sim = simulate(p, p, t_end=1.0, samples=401)
+    a = 2 * p.mgl / p.I
+    gamma = p.J * p.spin / p.I
+    u2 = math.cos(p.theta0)
+    u1 = gamma ** 2 / (2 * a) - math.sqrt(gamma ** 4 / (4 * a * a) - gamma ** 2 / a * u2 + 1)
+    assert sim.theta_min == pytest.approx(p.theta0, rel=1e-10)
+    assert sim.theta_max == pytest.approx(math.acos(u1), rel=1e-9)
+    assert np.all(np.abs(sim.phidot_at_min) < 1e-7 * np.max(np.abs(sim.phidot_at_max)))
+    assert motion_of(sim) == "cusps"
+
+
+def test_energy_and_momenta_drift_over_100_periods():
+    """Energy (Eqs. 11.10-11.11) and P1, P2 (Eq. 11.14) from the output Euler angles stay at
+    their values computed by hand from the initial conditions, over 100 nutation periods."""
+    p = top(60, 150.0, precession0=-3.0)
+    short = simulate(p, p, t_end=1.0, samples=3)
+    sim = simulate(p, p, t_end=100 * short.nutation_period, samples=20001)
+    assert len(sim.t_theta_max) >= 99
+    c0, s0 = math.cos(p.theta0), math.sin(p.theta0)
+    omega_z = p.spin + p.precession0 * c0
+    E0 = 0.5 * (p.I * p.precession0 ** 2 * s0 ** 2 + p.J * omega_z ** 2) + p.mgl * c0
+    P2 = p.J * omega_z
+    P1 = p.I * p.precession0 * s0 ** 2 + P2 * c0
+    scale_E = 0.5 * (p.I * p.precession0 ** 2 * s0 ** 2 + p.J * omega_z ** 2) + p.mgl
+    H = math.hypot(p.I * p.precession0 * s0, P2)
+    th = sim.theta
+    energy = euler_energy(p, sim)
+    p2 = p.J * (sim.psidot + sim.phidot * np.cos(th))
+    p1 = p.I * sim.phidot * np.sin(th) ** 2 + p2 * np.cos(th)
+    assert np.max(np.abs(energy - E0)) / scale_E < 1e-10
+    assert np.max(np.abs(p1 - P1)) / H < 1e-10
+    assert np.max(np.abs(p2 - P2)) / H < 1e-10
+    # and the integrator's own bookkeeping agrees
+    assert sim.energy0 == pytest.approx(E0, rel=1e-14)
+    assert max(sim.energy_drift, sim.P1_drift, sim.P2_drift) < 1e-10
+    assert sim.norm_drift < 1e-10
+
+
+@pytest.mark.parametrize("which", [0, 1])
+def test_steady_precession_keeps_theta(which):
+    """Started at a root of the steady-precession quadratic (kind steady_precession, Eq. 11.13
+    with thetaddot = 0), theta stays put and phi advances at that root."""
+    from gyro_cli.kinds.steady_precession import precession_from_spin
+
+    p0 = top(30, 188.5)
+    roots = precession_from_spin(p0.I, p0.J, p0.theta0, p0.spin, p0.mgl)
+    phidot = sorted(roots, key=abs)[which]
+    p = top(30, 188.5, precession0=phidot)
+    sim = simulate(p, p, t_end=20 * 2 * math.pi / abs(phidot), samples=2001)
+    assert np.max(np.abs(sim.theta - p.theta0)) < 1e-9
+    assert sim.mean_precession == pytest.approx(phidot, rel=1e-10)
+    assert motion_of(sim) == "steady"
+    assert sim.nutation_period is None
+
+
+def test_sleeping_top_at_theta_zero():
+    """theta0 = 0 is gimbal lock for Euler angles; the quaternion state integrates it, the axis
+    stays vertical and the body spins at omega_z (psi + phi advance at the spin)."""
+    p = top(0, 188.5)
+    sim = simulate(p, p, t_end=2.0, samples=201)
+    assert np.all(np.isfinite(sim.theta)) and np.max(sim.theta) < 1e-12
+    assert sim.energy_drift < 1e-12
+    assert motion_of(sim) == "sleeping"
+
+
+def test_axis_through_the_vertical():
+    """With P1 = P2 (Eq. 11.14) u = 1 is a root of f(u) (Eq. 11.19: f(1) = -(beta - gamma)^2);
+    pushed up hard enough that f > 0 on (u0, 1) (thetadot0^2 + phidot0^2 sin^2 th0 > a (1 - u0),
+    f(u)/(1 - u) is concave), the axis passes through theta = 0, where Eq. 11.15 is singular.
+    The quaternion integration goes through, conserving energy and P1."""
+    th0 = math.radians(20)
+    body = TOP_11_3
+    P2 = body["J"] * 120.0
+    # phidot0 with I phidot sin^2 + P2 cos = P2 and spin such that J(psidot + phidot cos) = P2
+    phidot0 = P2 * (1 - math.cos(th0)) / (body["I"] * math.sin(th0) ** 2)
+    p = top(20, 120.0 - phidot0 * math.cos(th0), precession0=phidot0, theta_rate0=-30.0)
+    a = 2 * body["mgl"] / body["I"]
+    assert p.theta_rate0 ** 2 + (phidot0 * math.sin(th0)) ** 2 > a * (1 - math.cos(th0))
+    sim = simulate(p, p, t_end=0.5, samples=4001)
+    assert sim.theta_min < 1e-6
+    assert sim.energy_drift < 1e-11 and sim.P1_drift < 1e-11
+    assert np.all(np.isfinite(sim.theta))
+
+
+def test_unstable_sleeping_top_falls_and_stable_one_stays():
+    """Near theta = 0 the sleeping top is stable iff J^2 omega_z^2 > 4 I m g l (Eq. 11.21 at
+    theta0 = 0)."""
+    body = TOP_11_3
+    critical = 2 * math.sqrt(body["I"] * body["mgl"]) / body["J"]
+    stable = top(0.01, 1.5 * critical)
+    unstable = top(0.01, 0.5 * critical)
+    sim_s = simulate(stable, stable, t_end=2.0, samples=401)
+    sim_u = simulate(unstable, unstable, t_end=2.0, samples=401)
+    assert sim_s.theta_max < math.radians(0.1)
+    assert sim_u.theta_max > math.radians(30)
+
+
+def test_bad_parameters_raise():
+    with pytest.raises(ValueError):
+        simulate(top(30, 10.0, I=-1.0, J=1.0, mgl=1.0), top(30, 10.0), t_end=1.0)
+    with pytest.raises(ValueError):
+        p = top(30, 10.0)
+        simulate(p, p, t_end=0.0)
