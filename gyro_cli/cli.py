@@ -13,7 +13,7 @@ import click
 from . import __version__
 from .errors import InputError
 
-FORMATS = ("text", "json")
+FORMATS = ("text", "json", "markdown", "latex")
 
 
 def fail(error: InputError | str) -> None:
@@ -34,7 +34,8 @@ def main() -> None:
 @main.command()
 @click.argument("files", nargs=-1, required=True)
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
-              help="text: the worked answer; json: one JSON object per file, one per line.")
+              help="text: the worked answer; json: one JSON object per file, one per line; "
+                   "markdown, latex: a write-up for a solution sheet.")
 def solve(files: tuple[str, ...], fmt: str) -> None:
     """Solve problem FILES and print worked answers."""
     from . import report
@@ -50,6 +51,12 @@ def solve(files: tuple[str, ...], fmt: str) -> None:
             continue
         if fmt == "json":
             click.echo(report.as_json(result))
+        elif fmt in ("markdown", "latex"):
+            from . import writeup
+
+            if i:
+                click.echo("")
+            click.echo(getattr(writeup, fmt)(result), nl=False)
         else:
             if i:
                 click.echo("\n" + "=" * report.WIDTH + "\n")
