@@ -121,6 +121,61 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     click.echo(grades.as_json(graded) if fmt == "json" else grades.table(graded), nl=fmt == "json")
 
 
+@main.command("new")
+@click.argument("kind")
+@click.option("-o", "--output", metavar="FILE", help="Write the template to FILE (not stdout).")
+@click.option("--force", is_flag=True, help="Replace FILE if it exists.")
+def new(kind: str, output: str | None, force: bool) -> None:
+    """Print (or write) a commented problem template with every key of KIND."""
+    from .authoring import template
+
+    try:
+        text = template(kind)
+        if output:
+            from .files import write_atomic
+
+            write_atomic(output, text, force=force)
+            click.echo(f"wrote {output}", err=True)
+        else:
+            click.echo(text, nl=False)
+    except InputError as err:
+        fail(err)
+
+
+@main.command()
+def schema() -> None:
+    """Print a JSON Schema of the problem format (for editors' YAML support)."""
+    import json
+
+    from .authoring import schema as make_schema
+
+    click.echo(json.dumps(make_schema(), indent=2, ensure_ascii=False))
+
+
+@main.command()
+@click.argument("file")
+@click.option("--count", "-n", type=int, required=True, help="How many variants.")
+@click.option("--seed", "-s", type=int, default=0, show_default=True,
+              help="Random seed: the same seed gives the same files.")
+@click.option("-o", "--out-dir", "out_dir", metavar="DIR", required=True,
+              help="Directory to write the variants into (created if needed).")
+@click.option("--force", is_flag=True, help="Replace variant files that exist.")
+def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
+    """Write COUNT variants of FILE with values drawn from its `vary:` block.
+
+    Each variant has its computed `expected` answers; draws with no real
+    solution are rejected and drawn again.
+    """
+    from .authoring import write_variants
+
+    try:
+        written = write_variants(file, count, seed, out_dir, force)
+    except InputError as err:
+        fail(err)
+    for path in written:
+        click.echo(path)
+
+
 @main.command()
 def kinds() -> None:
     """List the problem kinds with their given keys and answers."""

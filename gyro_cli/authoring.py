@@ -1,0 +1,392 @@
+"""Authoring problem files: `gyro new` (a commented template), `gyro schema` (JSON
+Schema for editors) and `gyro vary` (random variants with their answer keys).
+
+The `vary` block of a problem file (see docs/check.md) names given keys and a
+range for each, in one of two forms:
+
+    vary:
+      spin: [0.8, 1.2]          # two plain numbers: factors on the given value
+      theta: [20 deg, 40 deg]   # two quantities: an absolute range
+
+Each variant draws every key uniformly in its range from ``random.Random(seed)``
+(so the same seed gives the same files), rounds it to 3 significant figures,
+solves the problem, and keeps it only when it has a real solution (a spin below
+the least spin for steady precession is drawn again). Its `expected` answers
+are the solver's, written to 4 significant figures (more where the tolerance
+needs them).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import os
+import random
+from typing import Any
+
+from . import kinds, units
+from .body import BODY_PARAMS
+from .errors import InputError
+from .spec import Kind
+
+EXAMPLE_QUANTITY = {
+    "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
+    "rate": "1800 rpm", "angle": "30 deg", "inertia": "0.01 kg m^2", "moment": "2 N m",
+    "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
+}
+ANSWER_UNIT = {"rate": "rpm", "angle": "deg"}
+
+# A complete, solvable example per kind (given keys used, answers asked); other
+# keys of the kind appear commented out. Kinds without one get every key commented.
+EXAMPLES: dict[str, dict[str, Any]] = {
+    "steady_precession": {
+        "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
+                  "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
+        "find": {"precession": "rpm", "min_spin": "rpm"},
+        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"},
+    },
+}
+VARIANT_DIGITS = 3
+MAX_VARIANTS = 10_000
+
+
+# ---- gyro new ---------------------------------------------------------------
+
+def _line(text: str, comment: str, width: int = 30) -> str:
+    return f"{text:<{width}}# {comment}" if comment else text
+
+
+def template(kind_name: str) -> str:
+    """A commented problem file with every key of ``kind_name``."""
+    kind = kinds.get(kind_name)
+    example = EXAMPLES.get(kind.name) or kind.extra.get("example") or {}
+    given_ex: dict[str, str] = dict(example.get("given", {}))
+    find_ex: dict[str, Any] = dict(example.get("find", {}))
+    out = [f"# A gyro problem file of kind {kind.name}: {kind.summary}.",
+           f"# Chapter: {kind.chapter}." if kind.chapter else "# Chapter 11.",
+           "# Quantities are strings with a unit: \"150 mm\", \"1800 rpm\", \"30 deg\".",
+           "# Lines starting with # are comments; uncomment the keys you need.",
+           "# Solve it with `gyro solve FILE`; verify the answer key with `gyro check FILE`.",
+           "",
+           _line('id: "new-1"', "required: how reports name this problem"),
+           _line('title: "Describe the problem"', "optional"),
+           _line(f"kind: {kind.name}", "required"),
+           _line('source: ""', "optional: book, chapter, problem number"),
+           _line("notes:", "optional: lines printed with the worked answer"),
+           "  - Spin is the rate relative to the precessing frame (psidot).",
+           "",
+           _line("given:", "required: the data, each with its unit")]
+    if not given_ex:
+        out.append("  # (fill in: uncomment and edit the keys this problem gives)")
+    params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
+    for i, p in enumerate(params):
+        if kind.uses_body and i == len(kind.params):
+            out.append("  # the body: mass or weight; J or k_axial; I_pivot, k_pivot, I_cg, "
+                       "k_cg or shape; cg_distance")
+        what = p.dimension
+        comment = f"{what}: {p.doc}" + (f" (default {p.default})" if p.default else "")
+        if p.name in given_ex:
+            out.append(_line(f"  {p.name}: {given_ex[p.name]}", comment))
+        else:
+            value = p.choices[0] if p.dimension == "word" else \
+                p.default or EXAMPLE_QUANTITY.get(p.dimension, "1")
+            out.append(_line(f"  # {p.name}: {value}", comment))
+    out += ["", _line("find:", "required: answer name -> the unit to print it in")]
+    first = next(iter(find_ex), None) or kind.answers[0].name
+    for a in kind.answers:
+        unit = "null" if a.dimension is None else \
+            (find_ex.get(a.name) or ANSWER_UNIT.get(a.dimension) or units.si_text(a.dimension))
+        comment = f"{a.dimension or 'word'}: {a.doc}"
+        text = f"  {a.name}: {unit}"
+        out.append(_line(text if a.name in find_ex or (not find_ex and a.name == first)
+                         else f"  # {text.strip()}", comment))
+    expected_ex = _example_expected(kind, given_ex, find_ex)
+    out += ["", _line("expected:" if expected_ex else "# expected:",
+                      "optional: what `gyro check` compares against (roots in any order)")]
+    for a in kind.answers:
+        if a.name in expected_ex:
+            out.append(f"  {a.name}: {expected_ex[a.name]}")
+        else:
+            value = "cusps" if a.dimension is None else \
+                EXAMPLE_QUANTITY.get(a.dimension, "1").split()[0] + " " + (
+                    ANSWER_UNIT.get(a.dimension) or units.si_text(a.dimension))
+            out.append(f"  # {a.name}: {value}".rstrip())
+    out += [_line("tolerance: 1%", "optional: \"1%\" relative, \"3 sig\" significant "
+                  "figures, or a quantity (\"0.01 rad/s\") absolute; or answer -> tolerance"),
+            "", _line("# vary:" if not example.get("vary") else "vary:",
+                      "optional, for `gyro vary`: factors [0.8, 1.2] or a range "
+                      "[20 deg, 40 deg]")]
+    vary_ex = example.get("vary") or {params[0].name: "[0.9, 1.1]"}
+    for key, value in vary_ex.items():
+        out.append(f"  {key}: {value}" if example.get("vary") else f"#   {key}: {value}")
+    return "\n".join(out) + "\n"
+
+
+def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
+    """The example's answers as the solver gives them, for the template's `expected`."""
+    from .problem import _build
+    from .solve import solve
+
+    if not given or not find:
+        return {}
+    data = {"id": "example", "kind": kind.name, "given": dict(given), "find": dict(find)}
+    try:
+        result = solve(_build("<template>", data, {}))
+    except InputError:
+        return {}
+    out = {}
+    for name, answer in result.answers.items():
+        texts = [str(v) if answer.unit is None else
+                 f"{number_text(round_sig(v, 4))} {answer.unit}" for v in answer.values]
+        out[name] = texts[0] if len(texts) == 1 else "[" + ", ".join(texts) + "]"
+    return out
+
+
+# ---- gyro schema ------------------------------------------------------------
+
+QUANTITY_PATTERN = (r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*"
+                    r"[A-Za-z_°µΩ(]?[A-Za-z0-9_°µΩ*/^() \t+-]*$")
+
+
+def schema() -> dict[str, Any]:
+    """A JSON Schema (draft-07) of the problem format, for editors."""
+    quantity = {"type": "string", "maxLength": units.MAX_TEXT, "pattern": QUANTITY_PATTERN}
+    tolerance_one = {"type": "string", "maxLength": units.MAX_TEXT,
+                     "description": "\"1%\" relative, \"3 sig\" significant figures, or a "
+                                    "quantity (\"0.01 rad/s\") absolute"}
+    kind_names = kinds.names()
+    rules = []
+    for name in kind_names:
+        kind = kinds.get(name)
+        rules.append({"if": {"properties": {"kind": {"const": name}}, "required": ["kind"]},
+                      "then": {"properties": _kind_properties(kind, quantity, tolerance_one)}})
+    return {
+        "$schema": "http://json-schema.org/draft-07/schema#",
+        "title": "gyro problem file",
+        "description": "A textbook problem of gyroscopic motion for `gyro solve` and "
+                       "`gyro check` (see docs/check.md and the format page).",
+        "type": "object",
+        "required": ["id", "kind", "given", "find"],
+        "additionalProperties": False,
+        "properties": {
+            "id": {"type": ["string", "number"], "description": "how reports name the problem"},
+            "title": {"type": "string"},
+            "kind": {"enum": kind_names, "description": "the problem kind (`gyro kinds`)"},
+            "source": {"type": "string"},
+            "notes": {"oneOf": [{"type": "string"},
+                                {"type": "array", "items": {"type": ["string", "number"]}}]},
+            "given": {"type": "object", "description": "the data, each quantity with its unit"},
+            "find": {"oneOf": [{"type": "object", "minProperties": 1},
+                               {"type": "array", "minItems": 1, "items": {"type": "string"}}],
+                     "description": "answer name -> the unit to print it in"},
+            "expected": {"type": "object",
+                         "description": "answers `gyro check` compares against"},
+            "tolerance": {"oneOf": [tolerance_one, {"type": "object",
+                                                    "additionalProperties": tolerance_one}]},
+            "vary": {"type": "object", "description": "for `gyro vary`: given key -> [low, high]"
+                                                      " factors or quantities",
+                     "additionalProperties": {"type": "array", "minItems": 2, "maxItems": 2,
+                                              "items": {"oneOf": [{"type": "number"},
+                                                                  quantity]}}},
+        },
+        "allOf": rules,
+    }
+
+
+def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[str, Any]:
+    params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
+    given = {}
+    for p in params:
+        if p.dimension == "word":
+            given[p.name] = {"enum": list(p.choices), "description": p.doc}
+        elif p.dimension == "dimensionless":
+            given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
+        else:
+            given[p.name] = dict(quantity, description=f"{p.doc} ({p.dimension})")
+    answers = [a.name for a in kind.answers]
+    find = {a.name: ({"type": "null"} if a.dimension is None else
+                     {"type": ["string", "null"], "description": f"unit for {a.doc}"})
+            for a in kind.answers}
+    expected = {}
+    for a in kind.answers:
+        one = {"type": "string"} if a.dimension is None else quantity
+        expected[a.name] = {"oneOf": [one, {"type": "array", "minItems": 1, "items": one}],
+                            "description": a.doc}
+    return {
+        "given": {"type": "object", "additionalProperties": False, "properties": given},
+        "find": {"oneOf": [{"type": "object", "minProperties": 1, "additionalProperties": False,
+                            "properties": find},
+                           {"type": "array", "minItems": 1, "items": {"enum": answers}}]},
+        "expected": {"type": "object", "additionalProperties": False, "properties": expected},
+        "tolerance": {"oneOf": [tolerance_one, {
+            "type": "object", "additionalProperties": False,
+            "properties": {name: tolerance_one for name in answers + ["default"]}}]},
+        "vary": {"type": "object", "propertyNames": {"enum": [
+            p.name for p in params if p.dimension not in ("word",)]}},
+    }
+
+
+# ---- gyro vary --------------------------------------------------------------
+
+def parse_vary(problem: Any) -> list[tuple[str, str, float, float, str, float]]:
+    """The `vary` block: (key, form, low, high, unit, SI per unit) per key, in file order.
+
+    form "scale": low/high are factors on the given number; "range": numbers in ``unit``.
+    """
+    raw = problem.vary
+    if raw is None:
+        raise InputError("no `vary` block: add one, e.g. `vary: {spin: [0.8, 1.2]}` (factors) "
+                         "or `vary: {theta: [20 deg, 40 deg]}` (a range)", key="vary")
+    if not isinstance(raw, dict) or not raw:
+        raise InputError("expected a mapping of given keys to [low, high]", key="vary")
+    params = {p.name: p for p in list(problem.kind.params) +
+              (list(BODY_PARAMS) if problem.kind.uses_body else [])}
+    given_raw = problem.data.get("given", {})
+    out = []
+    for key, bounds in raw.items():
+        where = f"vary.{key}"
+        param = params.get(str(key))
+        if param is None or param.dimension == "word":
+            raise InputError(f"{key!r} is not a numeric given key of kind {problem.kind.name}",
+                             key=where)
+        if not isinstance(bounds, list) or len(bounds) != 2:
+            raise InputError("expected [low, high]: two factors such as [0.8, 1.2] or two "
+                             "quantities such as [20 deg, 40 deg]", key=where)
+        weight = param.name == "weight"
+        if all(isinstance(b, (int, float)) and not isinstance(b, bool) for b in bounds):
+            low, high = float(bounds[0]), float(bounds[1])
+            if key not in given_raw:
+                raise InputError(f"factors scale the given value, but `given` has no {key}; "
+                                 "give a range with units instead", key=where)
+            if not (0 < low <= high and math.isfinite(high)):
+                raise InputError(f"factors must satisfy 0 < low <= high, got {bounds}", key=where)
+            number, unit = units._split(given_raw[key], f"given.{key}")
+            out.append((str(key), "scale", low * number, high * number, unit, 1.0))
+            continue
+        if not all(isinstance(b, str) for b in bounds):
+            raise InputError("expected two plain factors or two quantities with units",
+                             key=where)
+        low_si, _ = units.parse(bounds[0], param.dimension, where, weight=weight)
+        high_si, _ = units.parse(bounds[1], param.dimension, where, weight=weight)
+        number, unit = units._split(bounds[0], where)
+        if low_si > high_si:
+            raise InputError(f"low must not exceed high, got {bounds}", key=where)
+        factor = low_si / number if number else \
+            units.parse(f"1 {unit}", param.dimension, where, weight=weight)[0]
+        out.append((str(key), "range", low_si / factor, high_si / factor, unit, factor))
+    return out
+
+
+def round_sig(value: float, digits: int) -> float:
+    if value == 0 or not math.isfinite(value):
+        return value
+    return round(value, digits - 1 - math.floor(math.log10(abs(value))))
+
+
+def number_text(value: float) -> str:
+    return f"{value:.12g}"
+
+
+def _expected_text(values: list, unit: str | None, tol_halfwidths: list[float]) -> Any:
+    if unit is None:
+        texts = [str(v) for v in values]
+    else:
+        texts = []
+        for value, width in zip(values, tol_halfwidths):
+            digits = 4
+            while digits < 15 and abs(round_sig(value, digits) - value) > width / 10:
+                digits += 1
+            texts.append(f"{number_text(round_sig(value, digits))} {unit}")
+    return texts[0] if len(texts) == 1 else texts
+
+
+def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
+    """``count`` variants of the problem in ``path``: (file name, YAML text) each."""
+    import yaml
+
+    from . import check
+    from .problem import _build, load
+    from .solve import solve
+
+    if not 1 <= count <= MAX_VARIANTS:
+        raise InputError(f"--count must lie between 1 and {MAX_VARIANTS}, got {count}")
+    problem = load(path)
+    try:
+        ranges = parse_vary(problem)
+    except InputError as err:
+        raise err.located(file=path, line=problem.line(err.key)) from None
+    base = copy.deepcopy(problem.data)
+    base.pop("vary", None)
+    keyed = list(problem.expected) or list(problem.find)
+    answer_names = [a.name for a in problem.kind.answers]
+    rng = random.Random(seed)
+    stem = os.path.splitext(os.path.basename(path))[0]
+    width = max(2, len(str(count)))
+    out: list[tuple[str, str]] = []
+    draws = 0
+    max_draws = 50 * count + 50
+    while len(out) < count:
+        if draws >= max_draws:
+            raise InputError(f"only {len(out)} of {count} variants have a real solution after "
+                             f"{draws} draws; narrow the ranges in `vary`", file=path, key="vary")
+        draws += 1
+        data = copy.deepcopy(base)
+        for key, form, low, high, unit, _ in ranges:
+            value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
+            data["given"][key] = f"{number_text(value)} {unit}".strip()
+        n = len(out) + 1
+        data["id"] = f"{problem.id}-v{n:0{width}d}"
+        if problem.title:
+            data["title"] = f"{problem.title} (variant {n})"
+        data["source"] = f"gyro vary {os.path.basename(path)} --seed {seed}: variant {n}" + \
+            (f" of {problem.source}" if problem.source else "")
+        find = dict(data["find"]) if isinstance(data["find"], dict) else \
+            {name: None for name in data["find"]}
+        for name in keyed:
+            find.setdefault(name, None)
+        data["find"] = find
+        data.pop("expected", None)
+        try:
+            candidate = _build(path, data, {})
+            result = solve(candidate)
+        except InputError:
+            continue  # no real solution (or an impossible body): draw again
+        expected = {}
+        for name in keyed:
+            answer = result.answers[name]
+            spec = problem.kind.answer(name)
+            tol = check.tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
+            widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
+                      if isinstance(v, float) else 0.0
+                      for si, v in zip(answer.si_values, answer.values)]
+            expected[name] = _expected_text(answer.values, answer.unit, widths)
+        data["expected"] = expected
+        order = ["id", "title", "kind", "source", "notes", "given", "find", "expected",
+                 "tolerance"]
+        data = {k: data[k] for k in order if k in data}
+        text = (f"# Generated by `gyro vary {os.path.basename(path)} --count {count} "
+                f"--seed {seed}`: variant {n} of {count}.\n"
+                + yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100))
+        out.append((f"{stem}-v{n:0{width}d}.yaml", text))
+    return out
+
+
+def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) -> list[str]:
+    """Write the variants into ``out_dir`` (created if needed); never overwrite without force."""
+    from .files import write_atomic
+
+    made = variants(path, count, seed)
+    if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+        raise InputError("exists and is not a directory", file=out_dir)
+    os.makedirs(out_dir, exist_ok=True)
+    if not force:
+        clash = [name for name, _ in made if os.path.exists(os.path.join(out_dir, name))]
+        if clash:
+            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
+                             "variant file(s) already there)", file=os.path.join(out_dir, clash[0]))
+    written = []
+    for name, text in made:
+        target = os.path.join(out_dir, name)
+        write_atomic(target, text, force=force)
+        written.append(target)
+    return written
