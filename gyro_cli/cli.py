@@ -36,15 +36,26 @@ def main() -> None:
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
               help="text: the worked answer; json: one JSON object per file, one per line; "
                    "markdown, latex: a write-up for a solution sheet.")
-def solve(files: tuple[str, ...], fmt: str) -> None:
+@click.option("--plot", "plot_file", metavar="FILE",
+              help="released_top: also draw the axis's path, theta(t) and phidot(t) to FILE "
+                   "(.png, .svg or .pdf); one problem file.")
+@click.option("--force", is_flag=True, help="With --plot: replace FILE if it exists.")
+def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
+          force: bool = False) -> None:
     """Solve problem FILES and print worked answers."""
     from . import report
     from .solve import solve_file
 
+    if plot_file and len(files) != 1:
+        fail("--plot draws one problem: give one FILE")
     bad = 0
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
+            if plot_file:
+                from .plot import plot_result
+
+                plot_result(result, plot_file, force=force)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -174,6 +185,32 @@ def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
         fail(err)
     for path in written:
         click.echo(path)
+
+
+@main.command()
+@click.argument("file")
+@click.option("--periods", type=click.FloatRange(min=0, min_open=True, max=1e5), default=5.0,
+              show_default=True, help="How long: nutation periods (precession revolutions "
+                                      "for a steady top).")
+@click.option("--format", "fmt", type=click.Choice(("text", "json")), default="text",
+              show_default=True, help="text: side-by-side table; json: one JSON object.")
+@click.option("--csv", "csv_file", metavar="FILE",
+              help="Write the time series t, theta, phi, psi and their rates (SI) to FILE.")
+@click.option("--plot", "plot_file", metavar="FILE",
+              help="Draw the axis's path, theta(t) and phidot(t) to FILE (.png, .svg, .pdf).")
+@click.option("--force", is_flag=True, help="Replace output files that exist.")
+def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
+             plot_file: str | None, force: bool) -> None:
+    """Integrate the top of FILE (released_top or steady_precession) from Euler's
+    equations and compare with the analytic answer."""
+    from .simulate_cmd import simulate_file, terminal_progress
+
+    try:
+        out = simulate_file(file, periods=periods, fmt=fmt, csv=csv_file, plot=plot_file,
+                            force=force, progress=terminal_progress())
+    except InputError as err:
+        fail(err)
+    click.echo(out, nl=False)
 
 
 @main.command()

@@ -330,6 +330,11 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
             root = brentq(lambda t: _slope(_piece_at(piece, t)), piece.t_old, piece.t,
                           xtol=1e-15 * max(1.0, abs(piece.t)), rtol=4 * np.finfo(float).eps)
             (t_min if decreasing else t_max).append(root)
+    if p.theta_rate0 == 0.0 and (t_min or t_max):
+        # released with thetadot = 0: t = 0 is itself an extremum, of the other kind
+        # than the first one found (no sign change brackets it)
+        first_is_min = bool(t_min) and (not t_max or t_min[0] < t_max[0])
+        (t_max if first_is_min else t_min).insert(0, 0.0)
     t_min, t_max = np.array(t_min), np.array(t_max)
 
     at_ext = {name: (euler_angles(p, dense(ts)) if len(ts) else
