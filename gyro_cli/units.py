@@ -9,6 +9,7 @@ as ``9**9**9**9`` and a megabyte string is refused before it is looked at.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
@@ -50,6 +51,10 @@ _NAME_RE = re.compile(_NAME)
 _CHAINED_POWER = re.compile(r"(?:\*\*|\^)\s*[-+]?\d+\s*(?:\*\*|\^)")
 
 _registry: Any = None
+# (unit text, dimension) -> (pint units, SI per unit), for units already checked.
+_CHECKED: dict[tuple[str, str], tuple[Any, float]] = {}
+# (dimension, unit) -> unit per SI, for answers converted before.
+_TO: dict[tuple[str, str], float] = {}
 
 
 def registry() -> Any:
@@ -125,6 +130,13 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     if weight:
         unit = _NAME_RE.sub(lambda m: WEIGHT_WORDS.get(m.group(0), m.group(0)), unit)
     ureg = registry()
+    checked = _CHECKED.get((unit, dimension))
+    if checked is not None:  # this unit was parsed and checked for this dimension before
+        units, factor = checked
+        value = number * factor
+        if not math.isfinite(value):
+            raise InputError(f"{text!r} is out of range", key=key)
+        return value, ureg.Quantity(number, units)
     units = _units(unit, key, text)
     quantity = ureg.Quantity(number, units)
     pint_dim, si, words = DIMENSIONS[dimension]
@@ -138,6 +150,14 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     value = quantity.to(si).magnitude if si else quantity.to("dimensionless").magnitude
     if not math.isfinite(value):
         raise InputError(f"{text!r} is out of range", key=key)
+    # Cache the unit's SI factor where the unit is a plain multiple (no offset), so a
+    # directory of problems asks pint once per unit, not once per value.
+    factor = float(ureg.Quantity(1.0, units).to(si or "dimensionless").magnitude)
+    if len(_CHECKED) < 4096 and math.isfinite(factor) and \
+            math.isclose(ureg.Quantity(3.0, units).to(si or "dimensionless").magnitude,
+                         3 * factor, rel_tol=1e-12):
+        _CHECKED[(unit, dimension)] = (units, factor)
+        value = number * factor  # the same arithmetic as every later, cached, parse
     return float(value), quantity
 
 
@@ -152,11 +172,18 @@ def check_unit(text: Any, dimension: str, key: str) -> str:
 
 def convert(si_value: float, dimension: str, unit: str) -> float:
     """An SI value expressed in ``unit`` (already checked with check_unit)."""
-    ureg = registry()
-    si = si_unit(dimension)
-    if not si:
-        return si_value * ureg.Quantity(1, "dimensionless").to(_units(unit, "", unit)).magnitude
-    return ureg.Quantity(si_value, si).to(_units(unit, "", unit)).magnitude
+    factor = _TO.get((dimension, unit))
+    if factor is None:
+        ureg = registry()
+        si = si_unit(dimension) or "dimensionless"
+        target = _units(unit, "", unit)
+        factor = float(ureg.Quantity(1.0, si).to(target).magnitude)
+        if not math.isclose(ureg.Quantity(3.0, si).to(target).magnitude, 3 * factor,
+                            rel_tol=1e-12):  # an offset unit: let pint do it every time
+            return ureg.Quantity(si_value, si).to(target).magnitude
+        if len(_TO) < 4096:
+            _TO[(dimension, unit)] = factor
+    return si_value * factor
 
 
 def is_us_customary(quantity: Any) -> bool:
