@@ -57,8 +57,9 @@ def stationary_points(data: PathData, zero: float = 1e-3) -> np.ndarray:
     a = np.abs(d)
     inner = np.arange(1, len(d) - 1)
     touch = inner[(a[1:-1] <= a[:-2]) & (a[1:-1] <= a[2:]) & (a[1:-1] < zero * scale)]
+    ends = [i for i in (0, len(d) - 1) if a[i] < zero * scale]     # e.g. the release point
     change = np.where(a[change] <= a[change + 1], change, change + 1)
-    return np.unique(np.concatenate([change, touch]))
+    return np.unique(np.concatenate([change, touch, ends]).astype(int))
 
 
 def radial_exaggeration(data: PathData, band: float = 0.3) -> float:

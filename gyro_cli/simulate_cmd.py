@@ -211,12 +211,14 @@ def text(report: dict, periods: float) -> str:
              "Simulated: Euler's equations in body axes (I, I, J) with gravity's torque, unit",
              "quaternion attitude (no gimbal lock), scipy DOP853 at rtol 1e-12",
              f"  I = {num(p['I'])} kg m^2, J = {num(p['J'])} kg m^2, m g l = {num(p['mgl'])} N m",
-             f"  theta0 = {num(math.degrees(p['theta0']))} deg, psidot0 = {num(p['spin'])} "
-             f"rad/s, phidot0 = {num(p['precession0'])} rad/s, thetadot0 = "
-             f"{num(p['theta_rate0'])} rad/s   (Eqs. 11.5-11.8, z-x-z)",
+             f"  start (Eqs. 11.5-11.8, z-x-z): theta0 = {num(math.degrees(p['theta0']))} deg, "
+             f"psidot0 = {num(p['spin'])} rad/s,",
+             f"    phidot0 = {num(p['precession0'])} rad/s, thetadot0 = "
+             f"{num(p['theta_rate0'])} rad/s",
              f"  t = 0 .. {num(report['t_end'])} s: {periods:g} {report['period_meaning']} "
-             f"of {num(report['period_unit'])} s; {report['steps']} steps, "
-             f"{report['evaluations']} evaluations, {report['cpu_seconds']:.2f} s CPU",
+             f"of {num(report['period_unit'])} s",
+             f"  {report['steps']} steps, {report['evaluations']} evaluations, "
+             f"{report['cpu_seconds']:.2f} s CPU",
              "",
              f"  {'':<24}{'analytic':>18}{'simulated':>18}{'difference':>13}{'relative':>11}"]
     rows = (("theta_min", "theta_min (deg)"), ("theta_max", "theta_max (deg)"),
@@ -237,16 +239,16 @@ def text(report: dict, periods: float) -> str:
         lines.append(f"  {label:<24}{_value(key, a):>18}{_value(key, s):>18}{diff:>13}{rel:>11}")
     drift = report["drift"]
     inv = report["invariants"]
-    rows = (("energy T + V (Eqs. 11.10-11.11)", f"{num(inv['energy'], 10)} J",
+    rows = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
              drift["energy"], "T0 + m g l"),
-            ("P1 = p_phi, vertical H (11.14)", f"{num(inv['P1'], 10)} kg m^2/s", drift["P1"],
+            ("P1 = p_phi, vertical H, Eq. 11.14", f"{num(inv['P1'], 10)} kg m^2/s", drift["P1"],
              "|H|"),
-            ("P2 = p_psi, axial H (11.14)", f"{num(inv['P2'], 10)} kg m^2/s", drift["P2"],
+            ("P2 = p_psi, axial H, Eq. 11.14", f"{num(inv['P2'], 10)} kg m^2/s", drift["P2"],
              "|H| (J omega_z' = 0 exactly)"),
-            ("|q| - 1, quaternion norm", "1", drift["quaternion_norm"], "not renormalised"))
-    lines += ["", f"  {'integral of the motion':<32}{'at t = 0':>24}{'max drift':>11}  relative to"]
+            ("quaternion norm |q|", "1", drift["quaternion_norm"], "not renormalised"))
+    lines += ["", f"  {'integral of the motion':<34}{'at t = 0':>24}{'max drift':>11}  relative to"]
     for label, value, d, scale in rows:
-        lines.append(f"  {label:<32}{value:>24}{d:>11.1e}  {scale}")
+        lines.append(f"  {label:<34}{value:>24}{d:>11.1e}  {scale}")
     lines.append(f"  theta range over the run: {math.degrees(report['theta_range']):.6g} deg")
     for note in report["notes"]:
         lines.append(f"Note: {note}")

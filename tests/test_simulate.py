@@ -195,3 +195,84 @@ def test_bad_parameters_raise():
     with pytest.raises(ValueError):
         p = top(30, 10.0)
         simulate(p, p, t_end=0.0)
+
+
+# ---- the command line -----------------------------------------------------------
+
+STEADY_FILE = """\
+    id: t1
+    kind: steady_precession
+    given:
+      mass: 0.5 kg
+      J: 2.0e-4 kg*m^2
+      I_pivot: 1.2e-3 kg*m^2
+      cg_distance: 40 mm
+      spin: 3000 rpm
+      theta: 50 deg
+    find:
+      precession: rpm
+"""
+
+
+def test_cli_steady_precession_json(run, write):
+    """The slow root of the steady-precession quadratic, worked by hand here:
+    (J - I) cos th phidot^2 + J psidot phidot - m g l = 0."""
+    import json
+
+    result = run("simulate", write(STEADY_FILE), "--periods", "3", "--format", "json")
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    I, J, mgl, th, spin = 1.2e-3, 2.0e-4, 0.5 * 9.81 * 0.040, math.radians(50), 100 * math.pi
+    a, b, c = (J - I) * math.cos(th), J * spin, -mgl
+    slow = min(((-b + s * math.sqrt(b * b - 4 * a * c)) / (2 * a) for s in (1, -1)), key=abs)
+    assert report["analytic"]["mean_precession"] == pytest.approx(slow, rel=1e-12)
+    assert report["simulated"]["mean_precession"] == pytest.approx(slow, rel=1e-9)
+    assert report["simulated"]["motion"] == "steady"
+    assert report["theta_range"] < 1e-9
+    assert report["t_end"] == pytest.approx(3 * 2 * math.pi / slow, rel=1e-12)
+    assert max(report["drift"].values()) < 1e-10
+
+
+def test_cli_text_report_names_the_equations(run, problems_dir):
+    result = run("simulate", problems_dir / "11_3.yaml", "--periods", "1")
+    assert result.exit_code == 0, result.output
+    for text in ("analytic", "simulated", "Eq. 11.14", "energy T + V", "45.13444", "steady"):
+        assert text in result.stdout
+
+
+@pytest.mark.parametrize("args,message", [
+    (["nope.yaml"], "no such file"),
+    (["{steady}", "--periods", "0"], "periods"),
+    (["{moment}"], "applied moment"),
+    (["{steady}", "--plot", "{tmp}/x.gif"], "png"),
+    (["{steady}", "--csv", "{tmp}/no/dir/x.csv"], "no such directory"),
+])
+def test_cli_bad_input_is_one_line_exit_2(run, write, tmp_path, args, message):
+    steady = write(STEADY_FILE, "steady.yaml")
+    moment = write(STEADY_FILE.replace("cg_distance: 40 mm", "moment: 0.2 N*m"), "moment.yaml")
+    args = [a.format(steady=steady, moment=moment, tmp=tmp_path) for a in args]
+    result = run("simulate", *args)
+    assert result.exit_code == 2
+    assert message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1 or "Usage" in result.stderr
+    assert "Traceback" not in result.output
+
+
+def test_progress_bar_only_on_a_terminal():
+    import io
+
+    from gyro_cli.simulate_cmd import terminal_progress
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    assert terminal_progress(io.StringIO()) is None
+    stream = Tty()
+    show = terminal_progress(stream)
+    import time as _time
+    _time.sleep(0.55)
+    show(0.5)
+    show(1.0)
+    assert "simulating" in stream.getvalue() and "50.0%" in stream.getvalue()
+    assert stream.getvalue().endswith("\r")       # the bar is wiped at the end
