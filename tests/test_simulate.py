@@ -276,3 +276,134 @@ def test_progress_bar_only_on_a_terminal():
     show(1.0)
     assert "simulating" in stream.getvalue() and "50.0%" in stream.getvalue()
     assert stream.getvalue().endswith("\r")       # the bar is wiped at the end
+
+
+# ---- random tops: the integration against quadratures of Eq. 11.19 and nutation.py -------
+
+def quadrature(p: Params) -> dict:
+    """theta limits, nutation period and mean precession by quadrature of Eq. 11.19, written
+    here: f(u) = (1 - u^2)(alpha - a u) - (beta - gamma u)^2 = a (u - u1)(u - u2)(u - u3);
+    u = u1 + (u2 - u1) sin^2 s makes dt = du / sqrt(f) = 2 ds / sqrt(a (u3 - u)), smooth."""
+    from scipy.integrate import quad
+
+    c0, s0 = math.cos(p.theta0), math.sin(p.theta0)
+    a = 2 * p.mgl / p.I
+    gamma = p.J * (p.spin + p.precession0 * c0) / p.I
+    beta = p.precession0 * s0 ** 2 + gamma * c0
+    alpha = p.theta_rate0 ** 2 + (p.precession0 * s0) ** 2 + a * c0
+    # f(u) = a u^3 - (alpha + gamma^2) u^2 + (2 beta gamma - a) u + alpha - beta^2
+    coeffs = [a, -(alpha + gamma ** 2), 2 * beta * gamma - a, alpha - beta ** 2]
+    roots = np.sort(np.roots(coeffs).real)
+    for _ in range(3):                                   # polish by Newton
+        roots = roots - np.polyval(coeffs, roots) / np.polyval(np.polyder(coeffs), roots)
+    u1, u2, u3 = np.sort(roots)
+
+    def u_of(s):
+        return u1 + (u2 - u1) * math.sin(s) ** 2
+
+    def dt(s):
+        return 2 / math.sqrt(a * (u3 - u_of(s)))
+
+    def dphi(s):
+        u = u_of(s)
+        return (beta - gamma * u) / (1 - u * u) * dt(s)
+
+    period = 2 * quad(dt, 0, math.pi / 2, epsabs=0, epsrel=1e-13, limit=200)[0]
+    advance = 2 * quad(dphi, 0, math.pi / 2, epsabs=0, epsrel=1e-13, limit=200)[0]
+    phidot_ends = [(beta - gamma * u) / (1 - u * u) for u in (u1, u2)]
+    return {"theta_min": math.acos(min(u2, 1.0)), "theta_max": math.acos(max(u1, -1.0)),
+            "nutation_period": period, "mean_precession": advance / period,
+            "phidot_scale": max(map(abs, phidot_ends))}
+
+
+def random_tops(n: int = 20, seed: int = 11) -> list[Params]:
+    """Seeded tops spanning slow and fast spin, upright and hanging, released and thrown;
+    tops whose axis comes within 5 deg of the vertical are redrawn (phi is ill-defined there)."""
+    rng = np.random.default_rng(seed)
+    tops = []
+    while len(tops) < n:
+        I = 10 ** rng.uniform(-4, -2)
+        J = I * rng.uniform(0.2, 1.8)
+        mgl = I * rng.uniform(5, 50)
+        a = 2 * mgl / I
+        theta0 = math.radians(rng.uniform(15, 150))
+        gamma = math.sqrt(a) * rng.uniform(0.7, 4.0)
+        precession0 = rng.choice([0.0, rng.uniform(-1, 1) * math.sqrt(a)])
+        theta_rate0 = rng.choice([0.0, 0.0, rng.uniform(-0.5, 0.5) * math.sqrt(a)])
+        spin = gamma * I / J - precession0 * math.cos(theta0)
+        p = Params(I=I, J=J, mgl=mgl, theta0=theta0, spin=spin, precession0=precession0,
+                   theta_rate0=theta_rate0)
+        q = quadrature(p)
+        if q["theta_min"] > math.radians(5) and q["theta_max"] < math.radians(175) and \
+                q["theta_max"] - q["theta_min"] > 1e-4:
+            tops.append(p)
+    return tops
+
+
+TOPS = random_tops()
+
+
+@pytest.fixture(scope="module")
+def simulated():
+    """Each random top integrated over 5 nutation periods (period from the quadrature; a
+    duration only: everything measured comes from the integration)."""
+    out = []
+    for p in TOPS:
+        q = quadrature(p)
+        out.append((p, q, simulate(p, p, t_end=5 * q["nutation_period"] * (1 + 1e-3),
+                                   samples=1001)))
+    return out
+
+
+def test_random_tops_match_quadrature_of_eq_11_19(simulated):
+    for p, q, sim in simulated:
+        assert sim.theta_min == pytest.approx(q["theta_min"], rel=1e-7), p
+        assert sim.theta_max == pytest.approx(q["theta_max"], rel=1e-7), p
+        assert sim.nutation_period == pytest.approx(q["nutation_period"], rel=1e-7), p
+        assert sim.mean_precession == pytest.approx(
+            q["mean_precession"], rel=1e-7, abs=1e-9 * q["phidot_scale"]), p
+        assert len(sim.t_theta_max) + len(sim.t_theta_min) >= 10
+
+
+@pytest.fixture(scope="module")
+def nutation():
+    return pytest.importorskip("gyro_cli.nutation")
+
+
+def _top_start(nutation, p: Params):
+    return (nutation.Top(I=p.I, J=p.J, mgl=p.mgl),
+            nutation.Start(theta0=p.theta0, spin=p.spin, precession0=p.precession0,
+                           theta_rate0=p.theta_rate0))
+
+
+def test_random_tops_match_nutation_analyse(nutation, simulated):
+    """The analytic module against the integration: theta limits, period, mean precession to
+    1e-7 relative; its motion word against phidot's signs in the simulated series."""
+    for p, q, sim in simulated:
+        nut = nutation.analyse(*_top_start(nutation, p))
+        assert nut.theta_min == pytest.approx(sim.theta_min, rel=1e-7), p
+        assert nut.theta_max == pytest.approx(sim.theta_max, rel=1e-7), p
+        assert nut.nutation_period == pytest.approx(sim.nutation_period, rel=1e-7), p
+        assert nut.mean_precession == pytest.approx(
+            sim.mean_precession, rel=1e-7, abs=1e-9 * q["phidot_scale"]), p
+        series = sim.phidot
+        scale = np.max(np.abs(series))
+        if nut.motion == "loops":
+            assert series.min() < -1e-6 * scale and series.max() > 1e-6 * scale, p
+        elif nut.motion == "waves":
+            assert np.all(series > 0) or np.all(series < 0), p
+        elif nut.motion == "cusps":
+            ends = np.concatenate([sim.phidot_at_min, sim.phidot_at_max])
+            assert np.min(np.abs(ends)) < 1e-7 * scale, p
+            assert np.all(series >= -1e-7 * scale) or np.all(series <= 1e-7 * scale), p
+        assert nut.motion == motion_of(sim), p
+
+
+def test_exact_theta_of_t_matches_integration(nutation, simulated):
+    """theta(t) of the analytic module against the integrated theta, 5 nutation periods."""
+    theta_of_t = getattr(nutation, "theta_of_t", None)
+    if theta_of_t is None:
+        theta_of_t = pytest.importorskip("gyro_cli.motion").theta_of_t
+    for p, _, sim in simulated:
+        exact = np.asarray(theta_of_t(*_top_start(nutation, p), sim.t))
+        assert np.max(np.abs(exact - sim.theta)) < 1e-8, p
