@@ -36,7 +36,6 @@ from typing import Callable, Protocol
 import numpy as np
 
 RTOL = 1e-12
-SAMPLES_PER_STEP = 4      # points per integrator step where thetadot's sign is checked
 STEADY_AMPLITUDE = 1e-9   # rad: a theta range below this is no measurable nutation
 
 
@@ -189,7 +188,8 @@ def euler_angles(p: Params, y: np.ndarray) -> dict[str, np.ndarray]:
     theta = np.arctan2(s, kz)
     with np.errstate(invalid="ignore", divide="ignore"):
         theta_rate = np.where(s > 0, (ky * ox - kx * oy) / np.where(s > 0, s, 1.0), 0.0)
-        phidot = np.where(s2 > 0, (kx * ox + ky * oy) / np.where(s2 > 0, s2, 1.0), np.nan)
+        # on the vertical only phi + psi is defined: phidot = 0 there, psidot = omega_z
+        phidot = np.where(s2 > 0, (kx * ox + ky * oy) / np.where(s2 > 0, s2, 1.0), 0.0)
     psidot = oz - phidot * kz
     return {"theta": theta, "phi": np.arctan2(sx, -sy), "psi": np.arctan2(kx, ky),
             "theta_rate": theta_rate, "phidot": phidot, "psidot": psidot}
