@@ -59,9 +59,9 @@ def gyro_file(expected: str = "", tolerance: str = "", extra_find: str = "") -> 
           spin: 100 rad/s
           theta: 90 deg
         find:
-          precession: rad/s{extra_find}
+          precession: rad/s
         """
-    text = textwrap.dedent(text)
+    text = textwrap.dedent(text).replace("precession: rad/s\n", f"precession: rad/s{extra_find}\n")
     if expected:
         text += "expected:\n" + textwrap.indent(textwrap.dedent(expected), "  ")
     if tolerance:
