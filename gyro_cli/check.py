@@ -568,7 +568,18 @@ def as_dict(run_: CheckRun) -> dict[str, Any]:
     return {"summary": summary, "problems": problems}
 
 
+def _finite(value: Any) -> Any:
+    """JSON has no NaN or infinity: such a number (a solver overflow) becomes null."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_finite(v) for v in value]
+    return value
+
+
 def as_json(run_: CheckRun) -> str:
     import json
 
-    return json.dumps(as_dict(run_), indent=1, allow_nan=False)
+    return json.dumps(_finite(as_dict(run_)), indent=1, allow_nan=False)

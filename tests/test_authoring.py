@@ -270,3 +270,22 @@ def test_vary_block_errors(run, tmp_path, block, message):
     assert result.exit_code == 2
     assert message in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_vary_through_the_installed_command(tmp_path):
+    import subprocess
+
+    from test_check import gyro_exe
+
+    source = put(tmp_path, "top.yaml", TOP)
+    outs = []
+    for name in ("x", "y"):
+        done = subprocess.run([gyro_exe(), "vary", str(source), "--count", "3", "--seed", "9",
+                               "-o", str(tmp_path / name)], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        outs.append({n: (tmp_path / name / n).read_bytes()
+                     for n in os.listdir(tmp_path / name)})
+    assert outs[0] == outs[1] and len(outs[0]) == 3
+    checked = subprocess.run([gyro_exe(), "check", str(tmp_path / "x")], capture_output=True,
+                             text=True)
+    assert checked.returncode == 0, checked.stdout

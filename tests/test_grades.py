@@ -141,3 +141,17 @@ def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
+
+
+def test_round_trip_through_the_installed_command(tmp_path, problems):
+    import subprocess
+
+    from test_check import gyro_exe
+
+    sheet = put(tmp_path, "sheet.csv", SHEET)
+    out = tmp_path / "grades.csv"
+    done = subprocess.run([gyro_exe(), "check", "--answers", str(sheet), str(problems),
+                           "--out", str(out)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    _, scores = read_back(out)
+    assert scores["bob"] == (0.5, 2.0, "25.0%")
