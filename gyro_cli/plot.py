@@ -52,7 +52,9 @@ def stationary_points(data: PathData, zero: float = 1e-3) -> np.ndarray:
     """Indices where phidot vanishes: sign changes (loop turn points) and touch-downs
     (cusps, local minima of |phidot| below ``zero`` times its largest value)."""
     d = np.asarray(data.phidot)
-    scale = float(np.nanmax(np.abs(d))) or 1.0
+    scale = float(np.nanmax(np.abs(d))) if len(d) else 0.0
+    if not scale:
+        return np.array([], dtype=int)          # no precession at all (sleeping top)
     change = np.nonzero(np.sign(d[:-1]) * np.sign(d[1:]) < 0)[0]
     a = np.abs(d)
     inner = np.arange(1, len(d) - 1)
@@ -115,7 +117,7 @@ def figure(data: PathData):
     if len(marks):
         ax.plot(x[marks], y[marks], "v", color="tab:orange", ms=5, label="phidot = 0")
     ax.plot([0], [0], "+", color="0.4", ms=8)
-    reach = max(float(np.max(np.hypot(x, y))), 1e-6)
+    reach = max(float(np.max(np.hypot(x, y))), 0.25)     # a sleeping top is a point
     if k == 1.0 and data.theta_min < math.pi / 2 < data.theta_max:
         reach = 1.0
     lim = 1.06 * reach

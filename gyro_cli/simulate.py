@@ -99,6 +99,8 @@ class Simulation:
     theta_max: float
     phidot_at_min: np.ndarray    # phidot at each theta minimum (cusps: 0 there)
     phidot_at_max: np.ndarray
+    theta_at_min: np.ndarray     # theta at each minimum (root-refined)
+    theta_at_max: np.ndarray
     nutation_period: float | None
     mean_precession: float
     precession_resolved: bool    # False when the axis passes too near the vertical to unwrap phi
@@ -357,7 +359,10 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     order = np.argsort(all_t, kind="stable")
     all_t, all_y = all_t[order], all_y[order]
     phi_all, resolved = _unwrap_phi(p, dense, all_t, all_y)
-    if not resolved:
+    if period is not None and theta_min < 1e-6:
+        notes.append("the axis passes through the vertical (P1 = P2, Eq. 11.14): phi is "
+                     "undefined there and jumps by 180 deg")
+    elif not resolved:
         notes.append("the axis passes too near the vertical for phi to be followed: the mean "
                      "precession is not reliable")
 
@@ -386,6 +391,7 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
         norm_drift=float(np.max(np.abs(norm - 1.0))),
         t_theta_min=t_min, t_theta_max=t_max, theta_min=theta_min, theta_max=theta_max,
         phidot_at_min=at_ext["min"]["phidot"], phidot_at_max=at_ext["max"]["phidot"],
+        theta_at_min=theta_ext["min"], theta_at_max=theta_ext["max"],
         nutation_period=period, mean_precession=float(mean_precession),
         precession_resolved=resolved, steps=len(times) - 1, nfev=int(nfev),
         cpu_seconds=clock, notes=notes)
@@ -441,8 +447,13 @@ def motion_of(sim: Simulation, zero: float = 1e-6) -> str:
         return "sleeping"
     if not sim.nutates:
         return "steady"
-    ends = np.concatenate([sim.phidot_at_min, sim.phidot_at_max])
-    scale = float(np.max(np.abs(ends))) or 1.0
+    # on the vertical itself phi is undefined (the axis passes through the pole, P1 = P2):
+    # phidot's sign is read at the other extreme
+    ends = np.concatenate([sim.phidot_at_min[sim.theta_at_min > 1e-6],
+                           sim.phidot_at_max[sim.theta_at_max < math.pi - 1e-6]])
+    scale = float(np.max(np.abs(ends))) if len(ends) else 0.0
+    if not scale:
+        return "cusps" if len(ends) else "waves"
     lo, hi = float(ends.min()) / scale, float(ends.max()) / scale
     if min(abs(lo), abs(hi)) < zero:
         return "cusps"

@@ -174,6 +174,9 @@ def test_axis_through_the_vertical():
     assert sim.theta_min < 1e-6
     assert sim.energy_drift < 1e-11 and sim.P1_drift < 1e-11
     assert np.all(np.isfinite(sim.theta))
+    # phidot = gamma (1 - u) / (1 - u^2) = gamma / (1 + u) (Eq. 11.16 with beta = gamma): one sign
+    assert motion_of(sim) == "waves"
+    assert any("through the vertical" in note for note in sim.notes)
 
 
 def test_unstable_sleeping_top_falls_and_stable_one_stays():
