@@ -44,9 +44,18 @@ _MATH_OPS = {">=": r"\ge ", "<=": r"\le ", "+-": r"\pm ", "!=": r"\ne ", "*": r"
              "~": r"\sim ", "\\": r"\backslash ", '"': "''", "@": r"\text{@}", "`": "'"}
 
 
+# Unicode a problem file may hold, as LaTeX maths (pdflatex has no glyph for them in math).
+UNICODE_MATH = {"θ": r"\theta", "φ": r"\phi", "ψ": r"\psi", "ω": r"\omega", "α": r"\alpha",
+                "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "μ": r"\mu", "µ": r"\mu",
+                "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "Ω": r"\Omega",
+                "Δ": r"\Delta", "°": r"^{\circ}", "≥": r"\ge", "≤": r"\le", "±": r"\pm",
+                "×": r"\times", "·": r"\cdot", "−": "-", "≈": r"\approx", "→": r"\to"}
+
+
 def text_escape(text: str) -> str:
-    """Plain text safe in LaTeX."""
-    return "".join(_TEXT_ESCAPES.get(c, c) for c in text)
+    """Plain text safe in LaTeX (Greek and math signs as inline maths)."""
+    return "".join(_TEXT_ESCAPES.get(c) or (f"${UNICODE_MATH[c]}$" if c in UNICODE_MATH else c)
+                   for c in text)
 
 
 def _tokens(text: str) -> list[tuple[str, str]]:
@@ -228,7 +237,12 @@ def _math(toks: list[tuple[str, str]], units: bool) -> str:
             out.append(r"\hat{}")
             k += 1
             continue
-        out.append(_MATH_OPS.get(tok, tok) if kind == "op" else text_escape(tok))
+        if kind == "op":
+            out.append(_MATH_OPS.get(tok, tok))
+        elif tok in UNICODE_MATH:
+            out.append(UNICODE_MATH[tok] + " ")
+        else:
+            out.append(f"\\text{{{text_escape(tok)}}}")
         k += 1
     return re.sub(r"(\\ )+", r"\\ ", "".join(out)).strip()
 

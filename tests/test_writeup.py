@@ -30,7 +30,7 @@ ALLOWED = {
     "times", "cdot", "ge", "le", "pm", "ne", "sim", "circ", "qquad", "quad", "hline", "item",
     "begin", "end", "subsection", "paragraph", "textasciicircum", "textasciitilde",
     "textbackslash", "backslash", "hat", ",", " ", "{", "}", "$", "&", "#", "%", "_", "\\",
-    "[", "]",
+    "[", "]", "approx", "to",
 }
 
 
@@ -56,6 +56,9 @@ def latex_problems(tex: str) -> list[str]:
     ends = re.findall(r"\\end\{(\w+)\}", body)
     if begins != ends[::-1] and sorted(begins) != sorted(ends):
         faults.append(f"environments {begins} closed by {ends}")
+    outside = sorted({c for c in body if ord(c) > 127})
+    if outside:
+        faults.append(f"characters pdflatex may not typeset: {''.join(outside)}")
     for name in re.findall(r"\\([A-Za-z]+|.)", body):
         if name not in ALLOWED:
             faults.append(f"unknown control sequence \\{name}")
@@ -147,3 +150,20 @@ def test_json_and_text_formats_unchanged(run, gyro_path):
     assert doc["answers"]["precession"]["values"][0] == pytest.approx(GYRO_PRECESSION)
     assert doc["answers"]["min_spin"]["values"] == [0.0]
     assert RPM > 0
+
+
+def test_any_formula_text_gives_sound_latex():
+    """Seeded random formula text (odd characters, Greek, units, words): never broken LaTeX."""
+    import random
+
+    vocab = ["phidot", "theta", "psidot_min", "omega_z", "sqrt(", "(", ")", "^", "^2", "^-1",
+             "*", "/", "+", "-", "=", ">=", "<=", "+-", " ", "1.5e-07", "3", "0.25", "kg", "m",
+             "s^2", "rad/s", "deg", "rpm", "N m", "because", "the", "a", "in", "{", "}", "%",
+             "&", "#", "$", "_", "~", "\\", "|", "[", "]", ":", ";", ",", ".", "'", '"', "@",
+             "θ", "°", "µ", "≥", "−", "I_G", "x_1", "1e5", "dH/dt"]
+    rng = random.Random(7)
+    for _ in range(3000):
+        text = "".join(rng.choice(vocab) for _ in range(rng.randint(1, 12)))
+        assert latex_problems(f"\\[ {writeup.math(text)} \\]") == [], text
+        assert latex_problems(f"\\[ {writeup.math(text, units=False)} \\]") == [], text
+        assert latex_problems(writeup.mixed(text, ("$", "$"), writeup.text_escape)) == [], text
