@@ -399,3 +399,26 @@ def test_junit_option_writes_the_file(run, passing, tmp_path):
     # re-running replaces it (CI reruns), without leaving temporary files behind
     assert run("check", passing, "--junit", out).exit_code == 0
     assert sorted(os.listdir(tmp_path)) == ["report.xml", "set"]
+
+
+def test_word_answers_compare_as_words():
+    from gyro_cli.solve import Reported
+
+    motion = Reported("motion", "motion", ["cusps"], None, ["cusps"], None, [])
+    exact = check.parse_tolerance("1%", None)
+    good = check.compare("motion", check.parse_expected("Cusps", None, "expected.motion"), exact,
+                         motion)
+    bad = check.compare("motion", check.parse_expected(["loops"], None, "expected.motion"),
+                        exact, motion)
+    assert [a.passed for a in good] == [True]
+    assert [a.passed for a in bad] == [False] and "got cusps" in bad[0].message
+
+
+def test_dimensionless_expected_may_be_a_bare_number():
+    from gyro_cli.solve import Reported
+
+    ratio = Reported("u", "u", [0.5], "", [0.5], "", [])
+    values = check.parse_expected([0.501], "dimensionless", "expected.u")
+    assert values[0].si == 0.501
+    assert [a.passed for a in check.compare("u", values, check.parse_tolerance("1%", "x"),
+                                            ratio)] == [True]
