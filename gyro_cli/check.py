@@ -117,6 +117,22 @@ def tolerance_for(spec: Any, name: str, dimension: str | None, answer_names: lis
     return parse_tolerance(spec, dimension, "tolerance")
 
 
+def validate_tolerance(spec: Any, kind: Any) -> None:
+    """Check every entry of a file's `tolerance`, used or not (InputError if malformed)."""
+    names = [a.name for a in kind.answers]
+    if spec is None:
+        return
+    if not isinstance(spec, dict):
+        # The form here; an absolute value's dimension against each answer when it is used.
+        parse_tolerance(spec, None, "tolerance")
+        return
+    tolerance_for(spec, "", None, names)  # unknown answer names
+    for name, value in spec.items():
+        answer = kind.answer(name)
+        parse_tolerance(value, answer.dimension if answer else None,
+                        f"tolerance.{name}")
+
+
 # ---- expected values --------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -363,22 +379,20 @@ def check_problem(problem: Any) -> ProblemCheck:
     result = ProblemCheck(problem.file, problem.id, problem.title, kind.name)
     answer_names = [a.name for a in kind.answers]
     # Validate everything in the file before solving: a bad key is exit 2 either way.
+    validate_tolerance(problem.tolerance, kind)
     wanted: dict[str, tuple[list[Expected], Tolerance]] = {}
-    if isinstance(problem.tolerance, dict):
-        tolerance_for(problem.tolerance, "", None, answer_names)  # unknown names
-    elif problem.tolerance is not None and not problem.expected:
-        tolerance_for(problem.tolerance, "", None, answer_names)
     for name, raw in problem.expected.items():
         dimension = kind.answer(name).dimension
         values = parse_expected(raw, dimension, f"expected.{name}")
         wanted[name] = (values, tolerance_for(problem.tolerance, name, dimension, answer_names))
-    if not wanted:
-        result.status = "no expected answers"
-        return result
     find = dict(problem.find)
     for name in wanted:
         find.setdefault(name, None)
+    # Solved even without expected answers: a file that cannot be solved is a bad file.
     solved = solve(dataclasses.replace(problem, find=find))
+    if not wanted:
+        result.status = "no expected answers"
+        return result
     for name, (values, tolerance) in wanted.items():
         result.answers += compare(name, values, tolerance, solved.answers[name])
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"

@@ -422,3 +422,15 @@ def test_dimensionless_expected_may_be_a_bare_number():
     assert values[0].si == 0.501
     assert [a.passed for a in check.compare("u", values, check.parse_tolerance("1%", "x"),
                                             ratio)] == [True]
+
+
+def test_unused_tolerance_entries_and_unsolvable_files_are_file_errors(run, tmp_path):
+    unused = put(tmp_path, "u.yaml", gyro_file("precession: 1.962 rad/s\n",
+                                               "{precession: 1%, moment: 3 kg}"))
+    result = run("check", unused)
+    assert result.exit_code == 2 and "tolerance.moment" in result.stderr
+    # no expected answers, but no steady precession either (spin far below the least spin)
+    hopeless = put(tmp_path, "h.yaml", gyro_file().replace("theta: 90 deg", "theta: 30 deg")
+                   .replace("spin: 100 rad/s", "spin: 0.01 rad/s"))
+    result = run("check", hopeless)
+    assert result.exit_code == 2 and "too low for steady precession" in result.stderr
