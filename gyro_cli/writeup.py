@@ -312,7 +312,8 @@ def _classify(toks: list[tuple[str, str]]) -> list[bool]:
             unit_left -= 1
             classes.append(True)
         elif kind == "name":
-            possessive = previous[-1:] == ["'"] and k and toks[k - 1][0] != "space"
+            possessive = tok == "s" and previous[-1:] == ["'"] and k > 1 \
+                and toks[k - 2][0] == "name"
             classes.append(not (is_word(tok) or tok in SHORT_WORDS or possessive))
         elif kind == "space":
             classes.append(classes[-1] if classes else False)
@@ -393,7 +394,7 @@ def markdown(result: Result) -> str:
         si = f"\\text{{{text_escape(g.si_value)}}}" if isinstance(g.si_value, str) \
             else number_tex(num(g.si_value)) + unit_tex(g.si_unit)
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"| ${symbol_tex(g.key if g.symbol == g.key else g.symbol)}$ | "
+        lines.append(f"| ${symbol_tex(g.symbol)}$ | "
                      f"{_md_cell(g.text)}{_md_cell(note)} | ${si}$ |")
     for section in solution.sections:
         lines += ["", f"### {mixed(section.title, md)}", ""]
