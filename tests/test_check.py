@@ -434,3 +434,19 @@ def test_unused_tolerance_entries_and_unsolvable_files_are_file_errors(run, tmp_
                    .replace("spin: 100 rad/s", "spin: 0.01 rad/s"))
     result = run("check", hopeless)
     assert result.exit_code == 2 and "too low for steady precession" in result.stderr
+
+
+def test_unit_factor_cache_keeps_every_check():
+    """The SI factor cached for a unit (for speed) gives pint's value and keeps the checks."""
+    first, _ = units.parse("1800 rpm", "rate", "k")
+    again, quantity = units.parse("900 rpm", "rate", "k")
+    assert first == pytest.approx(1800 * 2 * math.pi / 60, rel=1e-15)
+    assert again == pytest.approx(quantity.to("rad/s").magnitude, rel=1e-15)
+    units.parse("3 in", "length", "k")
+    with pytest.raises(units.InputError, match="an angular rate"):
+        units.parse("3 in", "rate", "k")  # cached for length, still refused as a rate
+    with pytest.raises(units.InputError, match="out of range"):
+        units.parse("1e308 km", "length", "k")  # finite number, infinite in metres
+    assert units.parse("3 oz", "force", "k", weight=True)[0] == pytest.approx(3 * 0.27801385,
+                                                                              rel=1e-8)
+    assert units.convert(first, "rate", "rpm") == pytest.approx(1800, rel=1e-15)
