@@ -111,19 +111,21 @@ def test_11_3_by_hand(problems_dir):
         pytest.approx(least, rel=1e-12)
 
 
-def test_11_1_by_hand(problems_dir):
-    """11/1: thin disk 2 kg, r = 75 mm, l = 0.6 m, theta = 120 deg, phidot = 36 rpm."""
+@pytest.mark.parametrize("name,theta_deg,printed", [("11_1.yaml", 120, 3006),
+                                                    ("11_2.yaml", 150, 1326)])
+def test_11_1_and_11_2_by_hand(problems_dir, name, theta_deg, printed):
+    """11/1, 11/2: thin disk 2 kg, r = 75 mm, l = 0.6 m, theta = 180 - beta, phidot = 36 rpm."""
     m, r, l, g = 2.0, 0.075, 0.6, 9.81
     J = m * r * r / 2
     I = m * r * r / 4 + m * l * l
     phidot = 36 * RPM
-    c = math.cos(math.radians(120))
+    c = math.cos(math.radians(theta_deg))
     # Moment balance about the line of nodes (dH/dt = M), sin(theta) divided out:
     #   phidot (J omega_z - I phidot cos) = m g l,   omega_z = psidot + phidot cos
     omega_z = (m * g * l + I * phidot ** 2 * c) / (J * phidot)
     psidot = omega_z - phidot * c
-    assert psidot / RPM == pytest.approx(3006, abs=0.5)
-    assert answers(problems_dir / "11_1.yaml")["spin"].si_values[0] == pytest.approx(psidot,
+    assert psidot / RPM == pytest.approx(printed, abs=0.5)
+    assert answers(problems_dir / name)["spin"].si_values[0] == pytest.approx(psidot,
                                                                                         rel=1e-12)
 
 
