@@ -138,3 +138,21 @@ def test_gyro_solve_plot_refuses_other_kinds(run, problems_dir, tmp_path):
     assert "released_top only" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert not (tmp_path / "x.png").exists()
+
+
+def test_analytic_path_has_its_cusps_on_the_theta_min_circle():
+    """gyro solve --plot draws the analytic motion: exact theta(t), phi from Eq. 11.16. Its
+    phidot = 0 points lie on the theta_min circle, and the path agrees with the integration."""
+    nutation = pytest.importorskip("gyro_cli.nutation")
+    top = nutation.Top(I=BODY["I"], J=BODY["J"], mgl=BODY["mgl"])
+    start = nutation.Start(theta0=math.radians(30), spin=188.5)
+    data = plot.from_analysis(top, start, periods=3, samples_per_period=600)
+    assert data.source.startswith("analytic")
+    marks = plot.stationary_points(data)
+    x, y = plot.path_xy(data.theta, data.phi)
+    assert np.hypot(x[marks], y[marks]) == pytest.approx(math.sin(math.radians(30)), abs=2e-5)
+    assert len(marks) == 4                               # t = 0 and one per period
+    p = Params(theta0=math.radians(30), spin=188.5, **BODY)
+    sim = simulate(p, p, t_end=data.t[-1], samples=len(data.t))
+    assert np.max(np.abs(sim.theta - data.theta)) < 1e-8
+    assert np.max(np.abs(sim.phi - data.phi)) < 1e-6

@@ -410,3 +410,75 @@ def test_exact_theta_of_t_matches_integration(nutation, simulated):
     for p, _, sim in simulated:
         exact = np.asarray(theta_of_t(*_top_start(nutation, p), sim.t))
         assert np.max(np.abs(exact - sim.theta)) < 1e-8, p
+
+
+# ---- gyro simulate on released_top files ------------------------------------------------
+
+RELEASED_FILE = """\
+    id: r1
+    title: Problem 11/3's top released at 30 deg
+    kind: released_top
+    given:
+      weight: 3 oz
+      k_axial: 0.84 in
+      k_pivot: 1.80 in
+      cg_distance: 1.5 in
+      spin: 1800 rpm
+      theta0: {theta0}
+    find:
+      theta_max: deg
+      nutation_period: s
+      motion: null
+"""
+
+
+@pytest.fixture
+def released(write):
+    pytest.importorskip("gyro_cli.kinds.released_top")
+    return lambda theta0="30 deg": write(RELEASED_FILE.format(theta0=theta0), "released.yaml")
+
+
+def test_cli_released_top_analytic_beside_simulated(run, released):
+    import json
+
+    result = run("simulate", released(), "--periods", "4", "--format", "json")
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    for key in ("theta_min", "theta_max", "nutation_period", "mean_precession"):
+        assert abs(report["difference"][key]["relative"]) < 1e-7, key
+    assert report["analytic"]["motion"] == report["simulated"]["motion"] == "cusps"
+    assert max(report["drift"].values()) < 1e-10
+    # Eq. 11.25 (as corrected) by hand: the axis falls from 30 deg to theta_1
+    p = TOP_11_3
+    a, gamma, u2 = 2 * p["mgl"] / p["I"], p["J"] * 60 * math.pi / p["I"], math.cos(math.pi / 6)
+    u1 = gamma ** 2 / (2 * a) - math.sqrt(gamma ** 4 / (4 * a * a) - gamma ** 2 / a * u2 + 1)
+    assert report["simulated"]["theta_max"] == pytest.approx(math.acos(u1), rel=1e-9)
+    assert report["t_end"] == pytest.approx(4 * report["analytic"]["nutation_period"])
+
+
+def test_cli_released_top_text_and_plot(run, released, tmp_path):
+    png = tmp_path / "r.png"
+    result = run("simulate", released(), "--plot", png)
+    assert result.exit_code == 0, result.output
+    assert "cusps" in result.stdout and "nutation period (s)" in result.stdout
+    assert png.read_bytes().startswith(b"\x89PNG")
+
+
+def test_cli_sleeping_released_top(run, released):
+    import json
+
+    result = run("simulate", released("0 deg"), "--periods", "2", "--format", "json")
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    assert report["simulated"]["motion"] == "sleeping"
+    assert report["simulated"]["theta_max"] < 1e-12
+    assert max(report["drift"].values()) < 1e-10
+
+
+def test_gyro_solve_plot_released_top(run, released, tmp_path):
+    png = tmp_path / "solve.png"
+    result = run("solve", released(), "--plot", png)
+    assert result.exit_code == 0, result.output
+    assert png.read_bytes().startswith(b"\x89PNG")
+    again = run("solve", released(), "--plot", png)
+    assert again.exit_code == 2 and "exists" in again.stderr
