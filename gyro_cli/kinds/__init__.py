@@ -13,12 +13,12 @@ from ..spec import Kind
 
 REGISTRY: dict[str, str] = {
     "steady_precession": "gyro_cli.kinds.steady_precession",
+    "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".
 PLANNED: dict[str, str] = {
     "released_top": "the released top (nutation, cusps)",
-    "gyroscopic_torque": "gyroscopic bearing torque",
     "rolling_disk": "rolling disks",
 }
 

@@ -1,0 +1,399 @@
+"""Gyroscopic torque on a rotor carried by a turning frame (Eqs. 11.27-11.29, generalised).
+
+A rotor of axial inertia J and transverse inertia I (about its centre G) spins
+at psidot (``spin``) relative to a frame that turns at Omega (``precession``)
+about an axis K at ``theta`` to the spin axis k. Its angular velocity is
+omega = Omega K + psidot k, and in the turning frame its angular momentum about
+G, H = J omega_z k + I Omega (K - cos(theta) k), is constant, so
+
+    dH/dt = Omega K x H = Omega sin(theta) (J omega_z - I Omega cos(theta)) n,
+    omega_z = psidot + Omega cos(theta),   n = K x k / sin(theta)   (line of nodes).
+
+At theta = 90 deg this is Eq. 11.29, Q_theta = J phidot psidot. The bearings
+supply that moment as a couple of forces on the spin axis, on top of the
+weight and of the force that accelerates an off-axis centre of mass
+(``bearing_forces``); a movable counterweight on a pivoted arm can supply it
+instead (problem 11/4, ``counterweight_position``).
+
+Conventions: K is the precession axis, pointing up (gravity along -K); k is the
+spin axis pointing from bearing A to bearing B; spin and precession are positive
+counter-clockwise seen from the tips of k and K (right-hand rule).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import InputError
+from ..given import Given
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+from .steady_precession import cos_theta, quadratic_roots
+
+RPM = 2 * math.pi / 60
+
+
+# ---- physics on floats ------------------------------------------------------
+
+def gyroscopic_moment(J: float, I: float, spin: float, precession: float, theta: float) -> float:
+    """Moment on the rotor along n = K x k / sin(theta): Omega sin th (J omega_z - I Omega cos th)."""
+    cos = cos_theta(theta)
+    axial = spin + precession * cos
+    return precession * math.sin(theta) * (J * axial - I * precession * cos)
+
+
+def precession_for_moment(J: float, I: float, spin: float, theta: float,
+                          moment: float) -> list[float]:
+    """Precession rates at which the moment along n is ``moment`` (roots, ascending).
+
+    (J - I) cos(th) sin(th) Omega^2 + J psidot sin(th) Omega - M = 0.
+    """
+    sin, cos = math.sin(theta), cos_theta(theta)
+    return quadratic_roots((J - I) * cos * sin, J * spin * sin, -moment)
+
+
+@dataclass(frozen=True)
+class BearingForces:
+    """Forces of bearings A and B on the rotor, SI, split by cause.
+
+    ``up``: perpendicular to k in the plane of K and k, toward +K (upward when
+    K is the upward vertical); ``side``: along the line of nodes, toward the
+    precession axis; ``thrust``: along k (A to B), taken by the thrust bearing.
+    """
+
+    weight: tuple[float, float]
+    inertial: tuple[float, float]
+    couple: tuple[float, float]
+    side: tuple[float, float]
+    thrust: float
+
+    @property
+    def up(self) -> tuple[float, float]:
+        return (self.weight[0] + self.inertial[0] + self.couple[0],
+                self.weight[1] + self.inertial[1] + self.couple[1])
+
+    @property
+    def loads(self) -> tuple[float, float]:
+        return (math.hypot(self.up[0], self.side[0]), math.hypot(self.up[1], self.side[1]))
+
+
+def centre_acceleration(precession: float, theta: float, cg_radius: float,
+                        offset: str) -> tuple[float, float, float]:
+    """Acceleration of G (centripetal, Omega^2 R toward the axis) as (along k, up, toward axis).
+
+    ``across``: G lies off the axis along the line of nodes (a ship's rotor on a
+    turn); ``along``: G lies off the axis in the plane of K and k, on the side
+    k points to, horizontal unit h = (k - cos th K) / sin th.
+    """
+    a = precession * precession * cg_radius
+    if offset == "across":
+        return 0.0, 0.0, a
+    return -a * math.sin(theta), a * cos_theta(theta), 0.0
+
+
+def bearing_forces(mass: float, g: float, moment: float, spacing: float, cg_position: float,
+                   precession: float, theta: float, cg_radius: float = 0.0,
+                   offset: str = "across") -> BearingForces:
+    """Bearing forces from the free body of the rotor (weight, m a_G, couple M along n).
+
+    With a = AG and b = GB = L - a along k:
+    up:   F_A + F_B = m (g sin th + a_up),   a F_A - b F_B = M       (moments about G along n)
+    side: F_A + F_B = m a_toward_axis,       a F_A - b F_B = 0
+    axial: T = m (g cos th + a_k).
+    """
+    L, a = spacing, cg_position
+    b = L - a
+    along_k, up, toward = centre_acceleration(precession, theta, cg_radius, offset)
+    W = mass * g * math.sin(theta)
+    return BearingForces(
+        weight=(W * b / L, W * a / L),
+        inertial=(mass * up * b / L, mass * up * a / L),
+        couple=(moment / L, -moment / L),
+        side=(mass * toward * b / L, mass * toward * a / L),
+        thrust=mass * (g * cos_theta(theta) + along_k))
+
+
+def counterweight_offset(moment: float, counterweight: float, g: float) -> float:
+    """How far the block moves from the balance point so its weight gives the moment: M / (m_c g)."""
+    return abs(moment) / (counterweight * g)
+
+
+# ---- the worked answer ------------------------------------------------------
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    body.require("J")
+    theta = given["theta"]
+    if not 0 < theta < math.pi:
+        raise InputError(f"theta, the angle between the precession and spin axes, must lie "
+                         f"strictly between 0 and 180 deg (got {num(math.degrees(theta))} deg): "
+                         "along the spin axis a precession only adds to the spin and needs no "
+                         "moment", key="given.theta")
+    cos, sin = cos_theta(theta), math.sin(theta)
+    if cos != 0:
+        body.require("I_cg")
+    J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
+    if "spin" not in given:
+        raise InputError("give the rotor's spin relative to the frame", key="given.spin")
+    spin = given["spin"]
+    work.section("Conventions")
+    work.text("K: the precession axis, upward (gravity along -K); k: the spin axis, from bearing "
+              "A to bearing B; spin and precession positive counter-clockwise seen from the tips "
+              "of k and of K (right-hand rule).")
+    work.text("n = K x k / sin(theta): the line of nodes, perpendicular to both the spin and "
+              "the precession axes (with k pointing east and K up, n points north).")
+
+    precession = _precession(given, J, I, spin, theta, work)
+    work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
+    axial = work.step("omega_z", "psidot + Omega cos(theta)",
+                      f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
+                      spin + precession * cos, "rad/s", ref="Eq. 11.8")
+    M = work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))",
+                  f"{qty(precession, 'rad/s')} ({num(sin)}) ({qty(J, 'kg*m^2')} "
+                  f"{qty(axial, 'rad/s')} - {qty(I, 'kg*m^2')} {qty(precession, 'rad/s')} "
+                  f"({num(cos)}))", gyroscopic_moment(J, I, spin, precession, theta), "N*m",
+                  ref="Eq. 11.29: J phidot psidot at theta = 90 deg")
+    if cos == 0:
+        work.text("theta = 90 deg: the I term drops out and M = J psidot Omega (Eq. 11.29)")
+    _sense(M, work)
+    work.answer("moment", "M", [M], "moment")
+    work.answer("precession", "Omega", [precession], "rate")
+    work.check(f"|H| is constant in the turning frame; |dH/dt| = |Omega| |K x H| = "
+               f"{qty(abs(M), 'N m')}")
+
+    if {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust"} & find \
+            or "bearing_spacing" in given:
+        _bearings(given, M, precession, theta, work)
+    if "counterweight_position" in find or "counterweight" in given:
+        _counterweight(given, M, theta, work)
+
+
+def _precession(given: Given, J: float, I: float, spin: float, theta: float,
+                work: Work) -> float:
+    """Omega: given, from a path (v / R), or from an applied moment."""
+    ways = [k for k in ("precession", "speed", "moment") if k in given]
+    if len(ways) > 1:
+        raise InputError(f"give one of precession, speed (with turn_radius) or moment, not "
+                         f"{' and '.join(ways)}", key=f"given.{ways[1]}")
+    if not ways:
+        raise InputError("give the precession (or speed and turn_radius, or the moment)",
+                         key="given.precession")
+    if "turn_radius" in given and ways != ["speed"]:
+        raise InputError("turn_radius goes with speed (Omega = v / R)", key="given.turn_radius")
+    if "turn" in given and ways != ["speed"]:
+        raise InputError("turn (left or right) goes with speed and turn_radius",
+                         key="given.turn")
+    if ways == ["precession"]:
+        return given["precession"]
+    if ways == ["speed"]:
+        R = given["turn_radius"]
+        if R <= 0:
+            raise InputError(f"turn_radius must be positive, got {num(R)} m",
+                             key="given.turn_radius")
+        turn = given.word("turn", "left")
+        sign = 1.0 if turn == "left" else -1.0
+        work.section("Precession from the path")
+        work.text(f"the frame turns {turn} on a circle: Omega = {'+' if sign > 0 else '-'}v / R "
+                  "about the upward vertical (a left turn is counter-clockwise from above)")
+        return work.step("Omega", f"{'' if sign > 0 else '-'}v / R",
+                         f"{'' if sign > 0 else '-'}{qty(given['speed'], 'm/s')} / "
+                         f"{qty(R, 'm')}", sign * given["speed"] / R, "rad/s")
+    M = given["moment"]
+    work.section("Precession that the applied moment sustains (moment along n given)")
+    work.text("(J - I) cos(theta) sin(theta) Omega^2 + J psidot sin(theta) Omega - M = 0")
+    roots = precession_for_moment(J, I, spin, theta, M)
+    if not roots:
+        raise InputError(f"no steady precession carries the moment {qty(M, 'N m')} at this spin "
+                         "(the quadratic has no real root): raise the spin", key="given.moment")
+    if len(roots) > 1:
+        slow = min(roots, key=abs)
+        work.text(f"two roots {', '.join(qty(r, 'rad/s') for r in roots)}; the slow one is "
+                  "taken (the fast one is a top-like motion, see steady_precession)")
+        roots = [slow]
+    return work.step("Omega", "root of the quadratic" if math.cos(theta) else "M / (J psidot)",
+                     value=roots[0], unit="rad/s")
+
+
+def _sense(M: float, work: Work) -> None:
+    if M == 0:
+        work.text("M = 0: no moment is needed")
+        return
+    along = "+n" if M > 0 else "-n"
+    end = "B" if M > 0 else "A"
+    work.text(f"Sense: the moment the bearings exert on the rotor points along {along}, the line "
+              f"of nodes; it turns the spin axis about n so that the {end} end of the axis is "
+              f"pushed toward -K (down). The rotor exerts the equal and opposite moment on its "
+              "frame.")
+
+
+def _bearings(given: Given, M: float, precession: float, theta: float, work: Work) -> None:
+    body = given.body
+    if "bearing_spacing" not in given:
+        raise InputError("bearing forces need bearing_spacing (the distance AB)",
+                         key="given.bearing_spacing")
+    L = given["bearing_spacing"]
+    if L <= 0:
+        raise InputError(f"bearing_spacing must be positive, got {num(L)} m: two bearings at one "
+                         "point cannot take a couple", key="given.bearing_spacing")
+    arrangement = given.word("arrangement", "between")
+    a = given["cg_position"] if "cg_position" in given else L / 2
+    if arrangement == "between" and not 0 <= a <= L:
+        raise InputError(f"cg_position {num(a)} m puts the centre of mass outside the bearings "
+                         f"(0 to {num(L)} m from A); write `arrangement: overhung` if the rotor "
+                         "really overhangs a bearing", key="given.cg_position")
+    m = given["supported_mass"] if "supported_mass" in given else body.m
+    if m <= 0:
+        raise InputError("supported_mass must be positive", key="given.supported_mass")
+    offset = given.word("cg_offset", "across")
+    R = given.get("cg_radius")
+    if R is None:
+        R = given["turn_radius"] if "turn_radius" in given else 0.0
+        if "turn_radius" in given:
+            work.text("the rotor's centre travels on the turn: cg_radius = turn_radius, across "
+                      "the spin axis")
+    if R < 0:
+        raise InputError("cg_radius is a distance: give it positive", key="given.cg_radius")
+    g = body.g
+    sin, cos = math.sin(theta), cos_theta(theta)
+    forces = bearing_forces(m, g, M, L, a, precession, theta, R, offset)
+    b = L - a
+    work.section("Bearing forces: free body of the rotor (forces on the rotor)")
+    work.text("F_A, F_B: forces of the bearings on the rotor, perpendicular to the spin axis. "
+              "'up' components lie in the plane of K and k, positive toward +K (upward); 'side' "
+              "components lie along n, positive toward the precession axis. Labelled A, B in "
+              "that order.")
+    work.step("a", "AG", value=a, unit="m", note="(default: midway)" if "cg_position" not in
+              given else "")
+    work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
+    work.text(f"up:   F_A + F_B = m (g sin(theta) + a_up);   a F_A - b F_B = M   "
+              "(moments about G along n)")
+    work.step("F_A,weight", "m g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
+              f"({num(sin)}) {qty(b, 'm')} / {qty(L, 'm')}", forces.weight[0], "N",
+              note="static share of the weight")
+    work.step("F_B,weight", "m g sin(theta) a / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
+              f"({num(sin)}) {qty(a, 'm')} / {qty(L, 'm')}", forces.weight[1], "N")
+    if forces.inertial != (0.0, 0.0):
+        work.step("a_up", "Omega^2 R cos(theta)", f"({qty(precession, 'rad/s')})^2 "
+                  f"{qty(R, 'm')} ({num(cos)})", precession ** 2 * R * cos, "m/s^2",
+                  note="(centre off the axis along k)")
+        work.step("F_A,accel", "m a_up b / L", value=forces.inertial[0], unit="N")
+        work.step("F_B,accel", "m a_up a / L", value=forces.inertial[1], unit="N")
+    work.step("F_A,couple", "+M / L", f"{qty(M, 'N*m')} / {qty(L, 'm')}", forces.couple[0], "N",
+              note="gyroscopic couple")
+    work.step("F_B,couple", "-M / L", f"-{qty(M, 'N*m')} / {qty(L, 'm')}", forces.couple[1], "N")
+    accel = " + F_{0},accel" if forces.inertial != (0.0, 0.0) else ""
+    work.step("F_A", f"F_A,weight{accel.format('A')} + F_A,couple", value=forces.up[0], unit="N")
+    work.step("F_B", f"F_B,weight{accel.format('B')} + F_B,couple", value=forces.up[1], unit="N")
+    work.text("side: F_A + F_B = m Omega^2 R (toward the axis);   a F_A - b F_B = 0")
+    if offset == "across" and R:
+        work.step("F_A,side", "m Omega^2 R b / L", f"{qty(m, 'kg')} ({qty(precession, 'rad/s')})"
+                  f"^2 {qty(R, 'm')} {qty(b, 'm')} / {qty(L, 'm')}", forces.side[0], "N",
+                  note="centripetal force of the centre of mass")
+        work.step("F_B,side", "m Omega^2 R a / L", value=forces.side[1], unit="N")
+    else:
+        work.text("no side forces (the centre of mass is not off the axis across the spin axis)")
+    work.step("T", "m (g cos(theta) + a_k)", value=forces.thrust, unit="N",
+              note="axial, along k, taken by the thrust bearing")
+    if min(forces.up) < 0:
+        work.text("a negative 'up' force pulls the rotor down: that bearing must hold the shaft "
+                  "against lifting")
+    work.answer("bearing_forces", "F", list(forces.up), "force", ["A", "B"])
+    work.answer("bearing_side_forces", "F_side", list(forces.side), "force", ["A", "B"])
+    work.answer("bearing_loads", "|F|", list(forces.loads), "force", ["A", "B"])
+    work.answer("axial_thrust", "T", [forces.thrust], "force")
+    work.check(f"up: F_A + F_B = {qty(sum(forces.up), 'N')}, m g sin(theta) + m a_up = "
+               f"{qty(m * g * sin + sum(forces.inertial), 'N')}; a F_A - b F_B = "
+               f"{qty(a * forces.up[0] - b * forces.up[1], 'N m')}, M = {qty(M, 'N m')}")
+
+
+def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
+    body = given.body
+    if "counterweight" not in given or "balance_position" not in given:
+        missing = "counterweight" if "counterweight" not in given else "balance_position"
+        raise InputError("counterweight_position needs the block's mass (counterweight) and its "
+                         "position when the unit balances with the rotor at rest "
+                         "(balance_position)", key=f"given.{missing}")
+    if cos_theta(theta) != 0:
+        raise InputError("the counterweight arm is built for a horizontal spin axis (theta = 90 "
+                         "deg)", key="given.theta")
+    mc, b0 = given["counterweight"], given["balance_position"]
+    if mc <= 0:
+        raise InputError("counterweight must be a positive mass", key="given.counterweight")
+    g = body.g
+    work.section("Counterweight on the pivoted arm (problem 11/4)")
+    work.text("At b = b0 the arm balances with the rotor at rest. Moving the block by db "
+              "unbalances the arm by m_c g db, which must equal the moment M the precession "
+              "needs; the spin may turn either way, so the block may go out or in.")
+    db = work.step("db", "|M| / (m_c g)", f"{qty(abs(M), 'N*m')} / ({qty(mc, 'kg')} "
+                   f"{qty(g, 'm/s^2')})", counterweight_offset(M, mc, g), "m")
+    positions = [b0 - db, b0 + db]
+    work.step("b", "b0 - db", f"{qty(b0, 'm')} - {qty(db, 'm')}", positions[0], "m",
+              note="rotor side heavier")
+    work.step("b", "b0 + db", f"{qty(b0, 'm')} + {qty(db, 'm')}", positions[1], "m",
+              note="block side heavier")
+    work.text("With the spin vector pointing out along the arm toward the rotor, the rotor-side-"
+              "heavier position (b0 - db) gives precession counter-clockwise seen from above; "
+              "the block-side-heavier one (b0 + db) clockwise (or the same sense with the spin "
+              "reversed).")
+    if positions[0] < 0:
+        work.warn("b0 - db is negative: the block would have to pass the pivot")
+    work.answer("counterweight_position", "b", positions, "length",
+                ["rotor side heavier", "block side heavier"])
+    work.check(f"m_c g (b - b0) = {qty(mc * g * db, 'N m')} = |M| = {qty(abs(M), 'N m')}")
+
+
+KIND = Kind(
+    name="gyroscopic_torque",
+    summary="moment and bearing forces of a rotor carried by a turning frame (gyroscope, turbine "
+            "in a turning ship, counterweighted fan)",
+    chapter="Eqs. 11.27-11.29 (generalised to any theta), dH/dt = Omega x H",
+    params=(
+        Param("spin", "rate", "psidot", "spin of the rotor relative to its frame, positive about "
+              "k (A to B)"),
+        Param("precession", "rate", "Omega", "rate at which the frame turns, positive "
+              "counter-clockwise seen from above"),
+        Param("theta", "angle", "theta", "angle between the precession axis and the spin axis",
+              default="90 deg"),
+        Param("speed", "speed", "v", "speed of a turning vehicle (instead of precession; with "
+              "turn_radius)"),
+        Param("turn_radius", "length", "R", "radius of the vehicle's turn: Omega = v / R"),
+        Param("turn", "word", "turn", "left (counter-clockwise from above, default) or right",
+              choices=("left", "right")),
+        Param("moment", "moment", "M", "applied moment along the line of nodes, to find the "
+              "precession it sustains"),
+        Param("bearing_spacing", "length", "L", "distance between bearings A and B on the spin "
+              "axis"),
+        Param("cg_position", "length", "a", "distance from bearing A to the centre of mass, "
+              "toward B (default midway)"),
+        Param("arrangement", "word", "arrangement", "between (default: the centre of mass lies "
+              "between the bearings) or overhung", choices=("between", "overhung")),
+        Param("supported_mass", "mass", "m_s", "mass the bearings carry, if more than the rotor "
+              "(a motor's housing); default the body's mass"),
+        Param("cg_radius", "length", "R_G", "distance of the centre of mass from the precession "
+              "axis (default 0, or turn_radius)"),
+        Param("cg_offset", "word", "offset", "across (default: off the axis along the line of "
+              "nodes) or along (in the plane of the two axes, k pointing away)",
+              choices=("across", "along")),
+        Param("counterweight", "mass", "m_c", "mass of the movable block on the pivoted arm"),
+        Param("balance_position", "length", "b0", "block position at which the arm balances "
+              "with the rotor at rest"),
+    ),
+    answers=(
+        AnswerSpec("moment", "moment", "M", "moment the bearings exert on the rotor, along the "
+                   "line of nodes n = K x k / sin(theta)"),
+        AnswerSpec("precession", "rate", "Omega", "precession rate (given, v / R, or sustained by "
+                   "a given moment)"),
+        AnswerSpec("bearing_forces", "force", "F", "[A, B]: forces of the bearings on the rotor "
+                   "perpendicular to k in the plane of K and k, upward positive"),
+        AnswerSpec("bearing_side_forces", "force", "F_side", "[A, B]: along the line of nodes, "
+                   "toward the precession axis positive"),
+        AnswerSpec("bearing_loads", "force", "|F|", "[A, B]: magnitudes of the radial bearing "
+                   "forces"),
+        AnswerSpec("axial_thrust", "force", "T", "force along the spin axis (A to B) on the "
+                   "rotor"),
+        AnswerSpec("counterweight_position", "length", "b", "block positions for the "
+                   "precession, ascending (one per spin sense)"),
+    ),
+    solve=solve,
+)
