@@ -14,12 +14,12 @@ from ..spec import Kind
 REGISTRY: dict[str, str] = {
     "steady_precession": "gyro_cli.kinds.steady_precession",
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
+    "rolling_disk": "gyro_cli.kinds.rolling_disk",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".
 PLANNED: dict[str, str] = {
     "released_top": "the released top (nutation, cusps)",
-    "rolling_disk": "rolling disks",
 }
 
 
