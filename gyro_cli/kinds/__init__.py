@@ -15,6 +15,7 @@ REGISTRY: dict[str, str] = {
     "steady_precession": "gyro_cli.kinds.steady_precession",
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
+    "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

@@ -1,0 +1,201 @@
+"""A spinning rotor on an arm that swings about a horizontal shaft (problem 11/8).
+
+A rotor (a thin disk in 11/8) spins at a steady rate p about its own axis k,
+which lies along an arm of length L. The arm is rigidly fixed to a horizontal
+shaft turning in bearings A and B (spacing d, the arm at a from A). Released
+from rest at theta0 (theta from the upward vertical, 0 = arm straight up), the
+arm swings down under gravity; the spin axis turns with it, so the bearings
+must supply the gyroscopic couple J p thetadot as well as the forces that carry
+and accelerate the rotor's centre.
+
+With i along the shaft (A to B), k along the arm (shaft to rotor) and n the
+unit perpendicular to both on the upper side (n = -i x k, against the swing):
+
+    energy:          I_O thetadot^2 / 2 = m g L (cos theta0 - cos theta),  I_O = I_G + m L^2
+    moment about AB: I_O thetaddot = m g L sin(theta)
+    moments about O: H_O = I_O thetadot i + J p k,  dH_O/dt = I_O thetaddot i - J p thetadot n
+    forces:          F_A + F_B = m a_G + m g (up),  a_G = -L thetaddot n - L thetadot^2 k
+
+so along the arm F_A = (b/d) m (g cos th - L thetadot^2) - J p thetadot / d,
+F_B = (a/d) m (g cos th - L thetadot^2) + J p thetadot / d, and along n
+F_A = (b/d) m (g sin th - L thetaddot), F_B = (a/d) m (g sin th - L thetaddot).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..errors import InputError
+from ..given import Given
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+from .steady_precession import cos_theta
+
+
+# ---- physics on floats ------------------------------------------------------
+
+def swing_rate_sq(m: float, g: float, L: float, I_O: float, theta0: float,
+                  theta: float) -> float:
+    """thetadot^2 from energy: 2 m g L (cos theta0 - cos theta) / I_O."""
+    return 2 * m * g * L * (math.cos(theta0) - math.cos(theta)) / I_O
+
+
+def swing_acceleration(m: float, g: float, L: float, I_O: float, theta: float) -> float:
+    """thetaddot from moments about the shaft: m g L sin(theta) / I_O."""
+    return m * g * L * math.sin(theta) / I_O
+
+
+@dataclass(frozen=True)
+class SwingForces:
+    """Bearing forces on the rotor assembly at theta, SI, as (A, B).
+
+    ``arm``: along the arm, from the shaft toward the rotor positive; ``normal``:
+    perpendicular to the arm and the shaft, on the upper side (against the swing).
+    """
+
+    thetadot: float
+    thetaddot: float
+    arm: tuple[float, float]
+    normal: tuple[float, float]
+    couple: float  # J p thetadot / d, the gyroscopic share along the arm (+B, -A)
+
+    @property
+    def magnitudes(self) -> tuple[float, float]:
+        return (math.hypot(self.arm[0], self.normal[0]), math.hypot(self.arm[1], self.normal[1]))
+
+
+def swing_forces(m: float, g: float, J: float, I_G: float, spin: float, L: float, d: float,
+                 a: float, theta0: float, theta: float) -> SwingForces:
+    """Forces in A and B as the arm passes theta (energy, moment about AB, free body)."""
+    I_O = I_G + m * L * L
+    thetadot = math.sqrt(max(swing_rate_sq(m, g, L, I_O, theta0, theta), 0.0))
+    thetaddot = swing_acceleration(m, g, L, I_O, theta)
+    b = d - a
+    S_arm = m * (g * math.cos(theta) - L * thetadot ** 2)
+    S_normal = m * (g * math.sin(theta) - L * thetaddot)
+    couple = J * spin * thetadot / d
+    return SwingForces(thetadot, thetaddot, (b * S_arm / d - couple, a * S_arm / d + couple),
+                       (b * S_normal / d, a * S_normal / d), couple)
+
+
+# ---- the worked answer ------------------------------------------------------
+
+def _inertia_texts(body) -> tuple[str, str]:
+    """I_G / m and J / m as text in the rotor's own symbols (r^2/4 for a disk)."""
+    if body.shape == "disk":
+        return "r^2/4", "r^2/2"
+    if body.shape == "ring":
+        return "r^2/2", "r^2"
+    return "k_G^2", "k_z^2"
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    body.require("J", "I_cg")
+    m, g, J, I_G = body.m, body.g, body.J, body.I_cg
+    p, L, d = given["spin"], given["arm_length"], given["bearing_spacing"]
+    theta, theta0 = given["theta"], given["theta0"]
+    if d <= 0:
+        raise InputError(f"bearing_spacing must be positive, got {num(d)} m: bearings at one "
+                         "point cannot take the gyroscopic couple", key="given.bearing_spacing")
+    if L <= 0:
+        raise InputError("arm_length must be positive (shaft to the rotor's centre)",
+                         key="given.arm_length")
+    a = given["arm_position"] if "arm_position" in given else d / 2
+    if not 0 <= a <= d:
+        raise InputError(f"arm_position {num(a)} m puts the arm outside the bearings (0 to "
+                         f"{num(d)} m from A)", key="given.arm_position")
+    if not 0 <= theta0 < math.pi:
+        raise InputError("theta0 must lie in [0, 180) deg", key="given.theta0")
+    if math.cos(theta) > math.cos(theta0) + 1e-12 or not 0 <= theta <= 2 * math.pi - theta0:
+        raise InputError(f"released from rest at theta0 = {num(math.degrees(theta0))} deg the "
+                         f"arm never reaches theta = {num(math.degrees(theta))} deg (it swings "
+                         f"between {num(math.degrees(theta0))} and "
+                         f"{num(360 - math.degrees(theta0))} deg)", key="given.theta")
+    b = d - a
+    kg2, kz2 = _inertia_texts(body)
+    c0, c, s = cos_theta(theta0), cos_theta(theta), math.sin(theta)
+    f = swing_forces(m, g, J, I_G, p, L, d, a, theta0, theta)
+    I_O = I_G + m * L * L
+
+    work.section("Conventions")
+    work.text("i: along the shaft from A to B; the arm swings with angular velocity +thetadot i "
+              "(counter-clockwise seen from B); k: along the arm from the shaft to the rotor; "
+              "spin p positive about k (counter-clockwise seen from outside the rotor's face). "
+              "n: perpendicular to the arm and the shaft on the upper side (against the swing).")
+    work.text("Forces are those of the bearings on the rotor assembly: 'arm' components along k "
+              "(from the shaft toward the rotor positive), 'normal' components along n. "
+              "Labelled A, B in that order. The bearings exert no moment about AB.")
+    work.section("Swing: energy and moments about AB")
+    work.step("I_O", "I_G + m L^2", f"{qty(I_G, 'kg*m^2')} + {qty(m, 'kg')} ({qty(L, 'm')})^2",
+              I_O, "kg*m^2", note=f"= m ({kg2} + L^2)")
+    work.step("thetadot^2", f"2 m g L (cos theta0 - cos theta) / I_O = 2 g L (cos theta0 - "
+              f"cos theta) / ({kg2} + L^2)", f"2 ({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(c0)} "
+              f"- {num(c)}) / {qty(I_O / m, 'm^2')}", f.thetadot ** 2, "rad^2/s^2",
+              ref="energy")
+    work.step("thetadot", value=f.thetadot, unit="rad/s")
+    work.step("thetaddot", f"m g L sin(theta) / I_O = g L sin(theta) / ({kg2} + L^2)",
+              f"({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(s)}) / {qty(I_O / m, 'm^2')}",
+              f.thetaddot, "rad/s^2", ref="moments about AB")
+    work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
+    work.step("J p thetadot / d", f"m ({kz2}) p thetadot / d",
+              f"{qty(J, 'kg*m^2')} ({qty(p, 'rad/s')}) ({qty(f.thetadot, 'rad/s')}) / "
+              f"{qty(d, 'm')}", f.couple, "N", note="+ at B, - at A, along the arm")
+    work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
+    root = f"sqrt(2 g L (cos theta0 - cos theta) / ({kg2} + L^2))"
+    arm_common = f"m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / ({kg2} + L^2)]"
+    normal_common = f"m g sin(theta) ({kg2}) / ({kg2} + L^2)"
+    common_arm = m * (g * c - L * f.thetadot ** 2)
+    common_normal = m * (g * s - L * f.thetaddot)
+    work.text(f"a = {qty(a, 'm')} (A to the arm), b = d - a = {qty(b, 'm')}; b/d = {num(b / d)}, "
+              f"a/d = {num(a / d)}")
+    work.step("F_A,arm", f"(b/d) {arm_common} - m ({kz2}) p {root} / d",
+              f"({num(b / d)}) ({qty(common_arm, 'N')}) - {qty(f.couple, 'N')}", f.arm[0], "N")
+    work.step("F_B,arm", f"(a/d) {arm_common} + m ({kz2}) p {root} / d",
+              f"({num(a / d)}) ({qty(common_arm, 'N')}) + {qty(f.couple, 'N')}", f.arm[1], "N")
+    work.step("F_A,normal", f"(b/d) {normal_common}", f"({num(b / d)}) "
+              f"({qty(common_normal, 'N')})", f.normal[0], "N")
+    work.step("F_B,normal", f"(a/d) {normal_common}", f"({num(a / d)}) "
+              f"({qty(common_normal, 'N')})", f.normal[1], "N")
+    work.step("|F_A|", "sqrt(F_A,arm^2 + F_A,normal^2)", value=f.magnitudes[0], unit="N")
+    work.step("|F_B|", "sqrt(F_B,arm^2 + F_B,normal^2)", value=f.magnitudes[1], unit="N")
+    if abs(f.couple) > 0:
+        work.text("the gyroscopic couple pushes B along +k and A along -k when p thetadot > 0; "
+                  "reversing the spin swaps the two")
+    work.answer("bearing_forces", "|F|", list(f.magnitudes), "force", ["A", "B"])
+    work.answer("bearing_forces_arm", "F_arm", list(f.arm), "force", ["A", "B"])
+    work.answer("bearing_forces_normal", "F_n", list(f.normal), "force", ["A", "B"])
+    work.answer("angular_rate", "thetadot", [f.thetadot], "rate")
+    work.check(f"moments about O along i x k: b F_B,arm - a F_A,arm = "
+               f"{qty(b * f.arm[1] - a * f.arm[0], 'N m')}; J p thetadot = "
+               f"{qty(J * p * f.thetadot, 'N m')}")
+
+
+KIND = Kind(
+    name="swinging_rotor",
+    summary="spinning rotor on an arm swinging about a horizontal shaft in two bearings "
+            "(problem 11/8)",
+    chapter="Eq. 11.29 (couple J p thetadot), energy, moments about the shaft",
+    params=(
+        Param("spin", "rate", "p", "steady spin of the rotor about the arm, positive from the "
+              "shaft outward"),
+        Param("arm_length", "length", "L", "distance from the shaft AB to the rotor's centre, "
+              "along the arm"),
+        Param("bearing_spacing", "length", "d", "distance between bearings A and B"),
+        Param("arm_position", "length", "a", "distance from A to the arm along the shaft "
+              "(default midway)"),
+        Param("theta", "angle", "theta", "angle of the arm from the upward vertical at which "
+              "the forces are wanted"),
+        Param("theta0", "angle", "theta0", "release angle (from rest)", default="0 deg"),
+    ),
+    answers=(
+        AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces"),
+        AnswerSpec("bearing_forces_arm", "force", "F_arm", "[A, B]: along the arm, shaft to "
+                   "rotor positive"),
+        AnswerSpec("bearing_forces_normal", "force", "F_n", "[A, B]: perpendicular to the arm "
+                   "and shaft, upper side positive"),
+        AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
+    ),
+    solve=solve,
+)
