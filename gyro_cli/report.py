@@ -33,7 +33,7 @@ def text(result: Result) -> str:
     lines += ["", f"{'Given':<31}SI"]
     for g in solution.given:
         si = g.si_value if isinstance(g.si_value, str) else f"{num(g.si_value)} {g.si_unit}"
-        row = f"  {g.symbol:<8}{g.text:<22}{si}"
+        row = f"  {g.symbol + ' ':<8}{g.text:<22}{si}"
         if g.note:
             row = f"{row:<56}({g.note})"
         lines.append(row.rstrip())

@@ -13,6 +13,7 @@ from ..spec import Kind
 
 REGISTRY: dict[str, str] = {
     "steady_precession": "gyro_cli.kinds.steady_precession",
+    "released_top": "gyro_cli.kinds.released_top",
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
     "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
@@ -20,7 +21,6 @@ REGISTRY: dict[str, str] = {
 
 # In the format but not built yet: named plainly rather than "unknown".
 PLANNED: dict[str, str] = {
-    "released_top": "the released top (nutation, cusps)",
 }
 
 

@@ -1,0 +1,331 @@
+"""The heavy top released at theta0 with spin: nutation limits, period, precession.
+
+Chapter 11, Eqs. 11.14-11.26 (Eq. 11.24 corrected: gamma^2/a), solved exactly by
+gyro_cli.nutation: the roots of the cubic f(u) of Eq. 11.19 give the nutation
+limits, complete elliptic integrals the period and the mean precession.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from ..given import Given
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+
+RPM = 2 * math.pi / 60
+DEG = math.pi / 180
+
+
+def _deg(x: float) -> str:
+    return f"{num(x / DEG)} deg"
+
+
+def _rel(approx: float, exact: float) -> str:
+    return f"{num(100 * (approx - exact) / exact, 2)}%" if exact else "n/a"
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    from ..nutation import Start, Top, analyse
+
+    body = given.body
+    body.require("J", "I_pivot")
+    if not body.l or body.l <= 0:
+        raise InputError("a released top needs its centre of mass off the fixed point: give "
+                         "cg_distance > 0 (with l = 0 there is no gravity moment and no "
+                         "nutation of this kind)", key="given.cg_distance")
+    theta0, spin = given["theta0"], given["spin"]
+    precession0 = given.get("precession0", 0.0) or 0.0
+    theta_rate0 = given.get("theta_rate0", 0.0) or 0.0
+    if not 0 <= theta0 <= math.pi * (1 + 1e-15):
+        raise InputError(f"theta0 must lie between 0 and 180 deg (from the upward vertical), "
+                         f"got {_deg(theta0)}", key="given.theta0")
+    theta0 = min(theta0, math.pi)
+    if spin < 0:
+        raise InputError(f"spin {num(spin)} rad/s is negative: reverse the sense of the axis "
+                         "instead (the chapter takes psidot > 0 about the axis from the fixed "
+                         "point to the centre of mass); give the spin as positive and change the "
+                         "sign of precession0", key="given.spin")
+    vertical = abs(math.sin(theta0)) < 1e-15
+    if spin == 0:
+        raise InputError("spin 0: a top released without spin is a pendulum, not a top; give "
+                         "the spin psidot > 0", key="given.spin")
+    top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
+    start = Start(theta0=theta0, spin=spin, precession0=precession0, theta_rate0=theta_rate0)
+    omega_z = spin + precession0 * (1.0 if vertical and theta0 < 1 else -1.0 if vertical
+                                    else math.cos(theta0))
+    if vertical and omega_z == 0 and theta_rate0 == 0:
+        raise InputError(f"theta0 = {_deg(theta0)} with no spin about the axis: the top stands "
+                         "(or hangs) on the vertical and does not move", key="given.theta0")
+    nut = analyse(top, start)
+    _constants(top, start, nut, omega_z, work)
+    _roots(top, start, nut, work)
+    if nut.motion == "sleeping":
+        _sleeping(top, start, nut, omega_z, find, work)
+        return
+    released = precession0 == 0 and theta_rate0 == 0
+    if released:
+        _released(top, start, nut, omega_z, work)
+    _period(nut, work)
+    _precession(nut, work)
+    _fast_top(top, start, nut, omega_z, released, work)
+    _answers(nut, work)
+    if nut.theta_max > math.pi / 2 + 1e-12:
+        work.warn(f"theta_max = {_deg(nut.theta_max)} passes 90 deg: the centre of mass goes "
+                  "below the fixed point; a top standing on a floor would touch it (the "
+                  "analysis assumes a fixed point free to swing, as in a ball joint)")
+
+
+def _constants(top, start, nut, omega_z: float, work: Work) -> None:
+    c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
+    work.section("Constants of the motion at t = 0 (Eqs. 11.8, 11.14, 11.17, 11.18)")
+    work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the "
+              "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative")
+    work.step("omega_z", "psidot + phidot cos(theta0)", f"{qty(start.spin, 'rad/s')} + "
+              f"{qty(start.precession0, 'rad/s')} ({num(c0)})", omega_z, "rad/s", ref="Eq. 11.8")
+    work.step("P2", "J omega_z", f"{qty(top.J, 'kg*m^2')} ({qty(omega_z, 'rad/s')})", nut.P2,
+              "kg m^2/s", ref="Eq. 11.14")
+    work.step("P1", "I phidot sin^2(theta0) + P2 cos(theta0)", f"{qty(top.I, 'kg*m^2')} "
+              f"({qty(start.precession0, 'rad/s')}) ({num(s0)})^2 + "
+              f"({qty(nut.P2, 'kg m^2/s')}) ({num(c0)})", nut.P1, "kg m^2/s", ref="Eq. 11.14")
+    work.step("h", "[I (thetadot^2 + phidot^2 sin^2(theta0)) + J omega_z^2] / 2 + m g l "
+              "cos(theta0)", f"[{qty(top.I, 'kg*m^2')} (({qty(start.theta_rate0, 'rad/s')})^2 "
+              f"+ ({qty(start.precession0 * s0, 'rad/s')})^2) + {qty(top.J, 'kg*m^2')} "
+              f"({qty(omega_z, 'rad/s')})^2] / 2 + ({qty(top.mgl, 'N*m')}) ({num(c0)})",
+              nut.energy, "J", ref="Eq. 11.17")
+    work.step("a", "2 m g l / I", f"2 ({qty(top.mgl, 'N*m')}) / {qty(top.I, 'kg*m^2')}",
+              nut.a, "1/s^2", ref="Eq. 11.18")
+    work.step("alpha", "2 h / I - P2^2 / (I J)", f"2 ({qty(nut.energy, 'J')}) / "
+              f"{qty(top.I, 'kg*m^2')} - ({qty(nut.P2, 'kg m^2/s')})^2 / "
+              f"(({qty(top.I, 'kg*m^2')}) ({qty(top.J, 'kg*m^2')}))", nut.alpha, "1/s^2",
+              ref="Eq. 11.18")
+    work.step("beta", "P1 / I", f"{qty(nut.P1, 'kg m^2/s')} / {qty(top.I, 'kg*m^2')}",
+              nut.beta, "rad/s", ref="Eq. 11.18")
+    work.step("gamma", "P2 / I", f"{qty(nut.P2, 'kg m^2/s')} / {qty(top.I, 'kg*m^2')}",
+              nut.gamma, "rad/s", ref="Eq. 11.18")
+
+
+def _roots(top, start, nut, work: Work) -> None:
+    a, al, b, g = nut.a, nut.alpha, nut.beta, nut.gamma
+    work.section("Energy integral in u = cos(theta), Eq. 11.19")
+    work.text("udot^2 = f(u) = (1 - u^2)(alpha - a u) - (beta - gamma u)^2"
+              "    (Eq. 11.19)")
+    work.text("       = a u^3 - (alpha + gamma^2) u^2 + (2 beta gamma - a) u + (alpha - beta^2)")
+    work.text(f"       = ({num(a)}) u^3 - ({num(al + g * g)}) u^2 + ({num(2 * b * g - a)}) u + "
+              f"({num(al - b * b)})    [1/s^2]")
+    work.text("f(+-1) = -(beta -+ gamma)^2 <= 0 and f(u0) = sin^2(theta0) thetadot0^2 >= 0: "
+              "u1 <= u0 <= u2 in [-1, 1], u3 >= 1")
+    for i, u in enumerate(nut.u_roots, 1):
+        work.step(f"u{i}", value=u)
+    if nut.motion == "sleeping":
+        return
+    work.step("theta_max", "acos(u1)", value=nut.theta_max / DEG, unit="deg")
+    work.step("theta_min", "acos(u2)", value=nut.theta_min / DEG, unit="deg")
+    from ..nutation import f_of_u
+
+    scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
+    residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
+    work.check(f"f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest coefficient) = "
+               f"{residual:.1e}")
+
+
+def _released(top, start, nut, omega_z: float, work: Work) -> None:
+    from ..nutation import released_u1
+
+    a, g = nut.a, nut.gamma
+    u2 = math.cos(start.theta0)
+    work.section("Released from rest (phidot0 = thetadot0 = 0): Eqs. 11.22-11.25")
+    work.text("P1 = P2 u2 (Eq. 11.22), alpha = a u2, f(u) = (u2 - u)[a (1 - u^2) - gamma^2 "
+              "(u2 - u)] (Eq. 11.23)")
+    work.text("Eq. 11.24 as corrected in the errata: gamma^2/a u2 under the root, not gamma^2/2")
+    u1 = released_u1(top, start.theta0, omega_z)
+    work.step("u1", "gamma^2/(2a) - sqrt(gamma^4/(4a^2) - gamma^2/a cos(theta0) + 1)",
+              f"{num(g * g / (2 * a))} - sqrt({num(g ** 4 / (4 * a * a))} - {num(g * g / a)} "
+              f"({num(u2)}) + 1)", u1, ref="Eq. 11.25")
+    work.step("theta_1", "acos(u1)", value=math.acos(max(-1.0, min(1.0, u1))) / DEG, unit="deg",
+              note="the axis falls from theta0 = theta_2 to theta_1 and back")
+    work.check(f"Eq. 11.25 u1 = {num(u1, 10)} against the root of Eq. 11.19 u1 = "
+               f"{num(nut.u_roots[0], 10)}")
+
+
+def _period(nut, work: Work) -> None:
+    from ..nutation import complete_K
+
+    d1, d2, d3 = nut.d_roots
+    u1, u2, u3 = nut.u_roots
+    m = (d2 - d1) / (d3 - d1)
+    K = complete_K(d1, d2, d3)
+    work.section("Nutation period: f(u) = a (u - u1)(u - u2)(u - u3), u = u1 + (u2 - u1) sin^2 s")
+    work.text("T = 2 int_u1^u2 du / sqrt(f(u)) = 4 K(m) / sqrt(a (u3 - u1))  (complete "
+              "elliptic integral of the first kind)")
+    work.step("m", "(u2 - u1) / (u3 - u1)", f"({num(u2)} - {num(u1)}) / ({num(u3)} - {num(u1)})",
+              m)
+    work.step("K(m)", value=K)
+    work.step("T", "4 K(m) / sqrt(a (u3 - u1))", f"4 ({num(K)}) / sqrt(({qty(nut.a, '1/s^2')}) "
+              f"({num(u3 - u1)}))", nut.nutation_period, "s",
+              note="theta_max -> theta_min -> theta_max")
+    if nut.motion == "steady":
+        work.text("u1 = u2 (to rounding): no nutation; T is the period of small oscillations "
+                  "about theta0, the m -> 0 limit 2 pi / sqrt(a (u3 - u1))")
+
+
+def _precession(nut, work: Work) -> None:
+    d1, d2, d3 = nut.d_roots
+    u1, u2, _ = nut.u_roots
+    work.section("Precession: phidot = (beta - gamma u) / (1 - u^2) (Eqs. 11.16, 11.26)")
+    from ..nutation import phidot
+
+    at = {"u1": nut.max_precession, "u2": nut.min_precession}
+    if abs(phidot(nut, u1) - nut.max_precession) > abs(phidot(nut, u1) - nut.min_precession):
+        at = {"u1": nut.min_precession, "u2": nut.max_precession}
+    work.step("phidot(u1)", "(beta - gamma u1) / (1 - u1^2)", value=at["u1"], unit="rad/s",
+              note=f"at theta_max ({num(at['u1'] / RPM)} rpm)")
+    work.step("phidot(u2)", "(beta - gamma u2) / (1 - u2^2)", value=at["u2"], unit="rad/s",
+              note=f"at theta_min ({num(at['u2'] / RPM)} rpm)")
+    if nut.motion != "steady":
+        m = (d2 - d1) / (d3 - d1)
+        n1 = (u2 - u1) / (1 - u1) if u1 < 1 else math.inf
+        n2 = (u2 - u1) / (1 + u1) if u1 > -1 else math.inf
+        work.text("phidot = 1/2 [(beta - gamma)/(1 - u) + (beta + gamma)/(1 + u)]; with "
+                  "1 - u = (1 - u1)(1 - n1 sin^2 s), 1 + u = (1 + u1)(1 + n2 sin^2 s):")
+        work.text("mean phidot = [(beta - gamma) Pi(n1|m) / (1 - u1) + (beta + gamma) Pi(-n2|m) "
+                  "/ (1 + u1)] / (2 K(m))  (complete elliptic integrals of the third kind, "
+                  "Pi(n|m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n))")
+        work.text(f"    n1 = (u2 - u1)/(1 - u1) = {num(n1)}, n2 = (u2 - u1)/(1 + u1) = "
+                  f"{num(n2)}, m = {num(m)}")
+    work.step("phidot_mean", value=nut.mean_precession, unit="rad/s",
+              note=f"({num(nut.mean_precession / RPM)} rpm; phi advance over one period / T)")
+    reason = {
+        "cusps": "phidot = 0 at a limit of the nutation: the axis stops there, the path has "
+                 "cusps (Fig. 11-9)",
+        "loops": "phidot changes sign between the limits: the path loops back (Fig. 11-10)",
+        "waves": "phidot keeps one sign between the limits: the path waves (Fig. 11-10)",
+        "steady": "no nutation: steady precession at theta0 (Fig. 11-7)",
+    }[nut.motion]
+    work.text(f"motion: {nut.motion}. The numerator beta - gamma u is linear in u, so phidot's "
+              f"signs over the nutation are those at u1 and u2: {reason}")
+
+
+def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
+    from ..nutation import (fast_mean_precession, fast_nutation_amplitude,
+                            fast_nutation_period)
+
+    work.section("Fast-top approximation (gamma^2 >> a)")
+    ratio = nut.gamma ** 2 / nut.a
+    work.step("gamma^2 / a", value=ratio, note="(the approximation needs this >> 1)")
+    work.text("u3 ~ gamma^2/a, so sqrt(a (u3 - u1)) ~ gamma: nutation at J omega_z / I; the "
+              "slow root of Eq. 11.20 gives the mean precession a / (2 gamma) = m g l / "
+              "(J omega_z)")
+    T = fast_nutation_period(top, omega_z)
+    work.step("T_fast", "2 pi I / (J omega_z)", f"2 pi {qty(top.I, 'kg*m^2')} / "
+              f"(({qty(top.J, 'kg*m^2')}) ({qty(omega_z, 'rad/s')}))", T, "s",
+              note=f"exact {num(nut.nutation_period)} s, error {_rel(T, nut.nutation_period)}")
+    mean = fast_mean_precession(top, omega_z)
+    work.step("phidot_fast", "m g l / (J omega_z)", f"{qty(top.mgl, 'N*m')} / "
+              f"(({qty(top.J, 'kg*m^2')}) ({qty(omega_z, 'rad/s')}))", mean, "rad/s",
+              note=f"exact {num(nut.mean_precession)} rad/s, error "
+                   f"{_rel(mean, nut.mean_precession)}")
+    if released:
+        work.text("Released from rest: a (1 - u^2) = gamma^2 (u2 - u) at u1 (Eq. 11.23); for "
+                  "gamma^2 >> a, u2 - u1 ~ a sin^2(theta0) / gamma^2 and dtheta ~ du / "
+                  "sin(theta0):")
+        amp = fast_nutation_amplitude(top, omega_z, start.theta0)
+        exact = nut.theta_max - nut.theta_min
+        work.step("dtheta_fast", "2 I m g l sin(theta0) / (J omega_z)^2",
+                  f"2 ({qty(top.I, 'kg*m^2')}) ({qty(top.mgl, 'N*m')}) "
+                  f"({num(math.sin(start.theta0))}) / (({qty(top.J, 'kg*m^2')}) "
+                  f"({qty(omega_z, 'rad/s')}))^2", amp / DEG, "deg",
+                  note=f"exact theta_max - theta_min = {_deg(exact)}, error {_rel(amp, exact)}")
+
+
+def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work) -> None:
+    upright = start.theta0 < 1
+    work.section("Sleeping top: the axis on the vertical (theta0 = "
+                 f"{'0' if upright else '180'} deg, thetadot0 = 0)")
+    work.text("u = " + ("1" if upright else "-1") + " is a double root of f(u); phi is undefined "
+              "on the vertical (phidot and psidot only add up to omega_z)")
+    lhs = (top.J * omega_z) ** 2
+    if upright:
+        rhs = 4 * top.I * top.mgl
+        work.step("J^2 omega_z^2", f"({qty(top.J, 'kg*m^2')} {qty(omega_z, 'rad/s')})^2", value=lhs,
+                  unit="kg^2 m^4/s^2")
+        work.step("4 I m g l", f"4 ({qty(top.I, 'kg*m^2')}) ({qty(top.mgl, 'N*m')})",
+                  value=rhs, unit="kg^2 m^4/s^2")
+        if nut.stable:
+            work.text("J^2 omega_z^2 > 4 I m g l (Eq. 11.21 with theta0 = 0, i.e. gamma^2 > 2 a): "
+                      "stable; u3 = gamma^2/a - 1 > 1")
+        else:
+            u1 = nut.u_roots[0]
+            work.text("J^2 omega_z^2 <= 4 I m g l: NOT stable; the least disturbance lets the "
+                      f"axis fall to u1 = gamma^2/a - 1 = {num(u1)}, theta = "
+                      f"{_deg(math.acos(max(-1, u1)))}")
+            least = 2 * math.sqrt(top.I * top.mgl) / top.J
+            work.warn(f"the sleeping top is unstable: omega_z = {num(omega_z / RPM)} rpm is below "
+                      f"2 sqrt(I m g l) / J = {num(least / RPM)} rpm (Eq. 11.21 at theta0 = 0)")
+    else:
+        work.text("hanging: always stable (gravity restores the axis)")
+    if nut.stable:
+        beat = "gamma^2 - 2 a" if upright else "gamma^2 + 2 a"
+        work.step("T", f"2 pi / sqrt({beat})", f"2 pi / sqrt(({qty(nut.gamma, 'rad/s')})^2 "
+                  f"{'-' if upright else '+'} 2 ({qty(nut.a, '1/s^2')}))", nut.nutation_period,
+                  "s", note="nutation period of a slightly disturbed sleeping top "
+                            "(2 pi / sqrt(a (u3 - u1)))")
+    undefined = {"mean_precession", "max_precession", "min_precession"} & find
+    if undefined:
+        raise InputError(f"{sorted(undefined)[0]} is undefined for a sleeping top: the axis "
+                         "stays on the vertical, where phi has no meaning; drop it from `find`",
+                         key=f"find.{sorted(undefined)[0]}")
+    if "nutation_period" in find and not nut.stable:
+        raise InputError("nutation_period: the sleeping top is unstable (J^2 omega_z^2 <= "
+                         "4 I m g l), it does not nutate about the vertical; drop it from `find`",
+                         key="find.nutation_period")
+    work.answer("theta_min", "theta_min", [nut.theta_min], "angle")
+    work.answer("theta_max", "theta_max", [nut.theta_max], "angle")
+    if nut.stable:
+        work.answer("nutation_period", "T", [nut.nutation_period], "time")
+    work.answer("motion", "motion", ["sleeping"], None,
+                labels=["stable" if nut.stable else "unstable"])
+    work.answer("u_roots", "u", list(nut.u_roots), "dimensionless")
+
+
+def _answers(nut, work: Work) -> None:
+    work.answer("theta_min", "theta_min", [nut.theta_min], "angle")
+    work.answer("theta_max", "theta_max", [nut.theta_max], "angle")
+    work.answer("nutation_period", "T", [nut.nutation_period], "time")
+    work.answer("mean_precession", "phidot_mean", [nut.mean_precession], "rate")
+    work.answer("max_precession", "phidot_max", [nut.max_precession], "rate")
+    work.answer("min_precession", "phidot_min", [nut.min_precession], "rate")
+    work.answer("motion", "motion", [nut.motion], None)
+    work.answer("u_roots", "u", list(nut.u_roots), "dimensionless")
+
+
+KIND = Kind(
+    name="released_top",
+    summary="heavy symmetric top released at theta0 with spin: nutation and precession",
+    chapter="Eqs. 11.14-11.26 (11.24 corrected), exact by elliptic integrals",
+    params=(
+        Param("theta0", "angle", "theta0", "angle of the axis from the upward vertical at t = 0 "
+              "(the chapter's theta_2)"),
+        Param("spin", "rate", "psidot", "spin relative to the precessing frame (> 0)"),
+        Param("precession0", "rate", "phidot0", "precession rate at t = 0", default="0 rad/s"),
+        Param("theta_rate0", "rate", "thetadot0", "rate of change of theta at t = 0",
+              default="0 rad/s"),
+    ),
+    answers=(
+        AnswerSpec("theta_min", "angle", "theta_min", "least angle of the axis from the vertical"),
+        AnswerSpec("theta_max", "angle", "theta_max", "largest angle of the axis from the "
+                   "vertical"),
+        AnswerSpec("nutation_period", "time", "T", "time from theta_max to theta_min and back"),
+        AnswerSpec("mean_precession", "rate", "phidot_mean", "phi advance over one nutation "
+                   "period, divided by the period"),
+        AnswerSpec("max_precession", "rate", "phidot_max", "precession rate of largest "
+                   "magnitude (at a nutation limit), signed"),
+        AnswerSpec("min_precession", "rate", "phidot_min", "precession rate at the other "
+                   "nutation limit, signed"),
+        AnswerSpec("motion", None, "motion", "cusps, loops, waves, steady or sleeping"),
+        AnswerSpec("u_roots", "dimensionless", "u", "the three roots of f(u), Eq. 11.19, "
+                   "ascending"),
+    ),
+    solve=solve,
+)
