@@ -209,7 +209,9 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             for a in kind.answers}
     expected = {}
     for a in kind.answers:
-        one = {"type": "string"} if a.dimension is None else quantity
+        one = ({"type": "string"} if a.dimension is None else
+               {"oneOf": [{"type": "number"}, quantity]} if a.dimension == "dimensionless" else
+               quantity)
         expected[a.name] = {"oneOf": [one, {"type": "array", "minItems": 1, "items": one}],
                             "description": a.doc}
     return {
