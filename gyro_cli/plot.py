@@ -127,6 +127,8 @@ def figure(data: PathData):
     ax.set_xlabel("sin(theta) cos(phi)")
     ax.set_ylabel("sin(theta) sin(phi)")
     notes = []
+    if data.theta_max < 1e-9:
+        notes.append("the axis stays on the vertical: a sleeping top")
     if data.theta_min > math.pi / 2:
         notes.append("centre of mass below the pivot")
     if k != 1.0:
@@ -204,7 +206,8 @@ def from_analysis(top, start, periods: float = 3.0, samples_per_period: int = 60
     n = int(max(201, round(periods * samples_per_period) + 1))
     t = np.linspace(0.0, periods * period, n)
     theta = np.asarray(theta_of_t(top, start, t), dtype=float)
-    rate = np.asarray(phidot(nut, np.cos(theta)), dtype=float)
+    with np.errstate(invalid="ignore", divide="ignore"):       # on the vertical: 0 / 0
+        rate = np.asarray(phidot(nut, np.cos(theta)), dtype=float)
     rate = np.where(np.isfinite(rate), rate, 0.0)
     phi = cumulative_simpson(rate, x=t, initial=0.0)
     return PathData(t=t, theta=theta, phi=phi, phidot=rate, theta_min=nut.theta_min,
@@ -241,8 +244,12 @@ def _simulated_path(top, start, nut, periods: float, samples_per_period: int,
     return data
 
 
-def plot_result(result, path: str, force: bool = False, periods: float = 3.0) -> Path:
-    """``gyro solve --plot``: draw a solved released_top problem; InputError otherwise."""
+def plot_result(result, path: str, force: bool = False, periods: float | None = None) -> Path:
+    """``gyro solve --plot``: draw a solved released_top problem; InputError otherwise.
+
+    By default enough nutation periods for the axis to go once round the vertical
+    (at least 3, at most 12).
+    """
     from .errors import InputError
 
     problem = result.problem
@@ -263,4 +270,16 @@ def plot_result(result, path: str, force: bool = False, periods: float = 3.0) ->
                   precession0=given.get("precession0", 0.0) or 0.0,
                   theta_rate0=given.get("theta_rate0", 0.0) or 0.0)
     title = f"{problem.id}  {problem.title}".strip()
+    if periods is None:
+        periods = _periods_for_one_turn(top, start)
     return save(from_analysis(top, start, periods=periods, title=title), path, force=force)
+
+
+def _periods_for_one_turn(top, start) -> float:
+    from .nutation import analyse
+
+    nut = analyse(top, start)
+    period, rate = nut.nutation_period, nut.mean_precession
+    if not (period and rate and math.isfinite(period) and math.isfinite(rate)):
+        return 3.0
+    return float(min(12, max(3, math.ceil(2 * math.pi / abs(rate * period)))))

@@ -193,7 +193,8 @@ def euler_angles(p: Params, y: np.ndarray) -> dict[str, np.ndarray]:
         # on the vertical only phi + psi is defined: phidot = 0 there, psidot = omega_z
         phidot = np.where(s2 > 0, (kx * ox + ky * oy) / np.where(s2 > 0, s2, 1.0), 0.0)
     psidot = oz - phidot * kz
-    return {"theta": theta, "phi": np.arctan2(sx, -sy), "psi": np.arctan2(kx, ky),
+    # 0.0 - sy, not -sy: on the vertical sy = +0.0 and atan2(0, -0.0) would be pi
+    return {"theta": theta, "phi": np.arctan2(sx, 0.0 - sy), "psi": np.arctan2(kx, ky),
             "theta_rate": theta_rate, "phidot": phidot, "psidot": psidot}
 
 
@@ -362,7 +363,7 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     if period is not None and theta_min < 1e-6:
         notes.append("the axis passes through the vertical (P1 = P2, Eq. 11.14): phi is "
                      "undefined there and jumps by 180 deg")
-    elif not resolved:
+    elif not resolved and theta_max > 1e-9:
         notes.append("the axis passes too near the vertical for phi to be followed: the mean "
                      "precession is not reliable")
 
