@@ -396,4 +396,9 @@ KIND = Kind(
                    "precession, ascending (one per spin sense)"),
     ),
     solve=solve,
+    extra={"example": {
+        "given": {"mass": "2.5 kg", "k_axial": "35 mm", "supported_mass": "10 kg",
+                  "spin": "-1725 rpm", "precession": "48 rpm", "bearing_spacing": "200 mm"},
+        "find": {"bearing_forces": "N", "moment": "N*m"},
+        "vary": {"precession": "[0.8, 1.2]"}}},
 )

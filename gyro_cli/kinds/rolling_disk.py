@@ -282,4 +282,9 @@ KIND = Kind(
         AnswerSpec("precession", "rate", "Omega", "free: rate about the vertical, v / rho"),
     ),
     solve=solve,
+    extra={"example": {
+        "given": {"arrangement": "axle_pivot", "weight": "96.6 lb", "shape": "disk",
+                  "radius": "1 ft", "path_radius": "2 ft", "precession": "48 rpm"},
+        "find": {"normal_force": "lbf", "spin": "rpm"},
+        "vary": {"precession": "[0.8, 1.2]"}}},
 )

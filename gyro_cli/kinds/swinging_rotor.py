@@ -198,4 +198,9 @@ KIND = Kind(
         AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
     ),
     solve=solve,
+    extra={"example": {
+        "given": {"mass": "2 kg", "shape": "disk", "radius": "100 mm", "spin": "300 rad/s",
+                  "arm_length": "250 mm", "bearing_spacing": "200 mm", "theta": "90 deg"},
+        "find": {"bearing_forces": "N", "angular_rate": "rad/s"},
+        "vary": {"spin": "[0.8, 1.2]"}}},
 )
