@@ -290,6 +290,13 @@ BAD = [
                 speed: 3 m/s, turn_radius: 10 m}
         find: {moment: N*m}
         """, "not precession and speed"),
+    ("""
+        id: bad
+        kind: gyroscopic_torque
+        given: {mass: 2 kg, J: 0.01 kg*m^2, spin: 100 rad/s, precession: 1 rad/s,
+                cg_radius: 1 m}
+        find: {moment: N*m}
+        """, "need bearing_spacing"),
 ]
 
 

@@ -149,19 +149,27 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     axial = work.step("omega_z", "psidot + Omega cos(theta)",
                       f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
                       spin + precession * cos, "rad/s", ref="Eq. 11.8")
-    M = work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))",
+    M = gyroscopic_moment(J, I, spin, precession, theta)
+    if cos == 0:
+        work.text("theta = 90 deg: omega_z = psidot, the I term drops out (I is not needed)")
+        work.step("M", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
+                  f"({qty(precession, 'rad/s')})", M, "N*m", ref="Eq. 11.29")
+    else:
+        work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))",
                   f"{qty(precession, 'rad/s')} ({num(sin)}) ({qty(J, 'kg*m^2')} "
                   f"{qty(axial, 'rad/s')} - {qty(I, 'kg*m^2')} {qty(precession, 'rad/s')} "
-                  f"({num(cos)}))", gyroscopic_moment(J, I, spin, precession, theta), "N*m",
-                  ref="Eq. 11.29: J phidot psidot at theta = 90 deg")
-    if cos == 0:
-        work.text("theta = 90 deg: the I term drops out and M = J psidot Omega (Eq. 11.29)")
+                  f"({num(cos)}))", M, "N*m", ref="Eq. 11.29 generalised")
     _sense(M, work)
     work.answer("moment", "M", [M], "moment")
     work.answer("precession", "Omega", [precession], "rate")
     work.check(f"|H| is constant in the turning frame; |dH/dt| = |Omega| |K x H| = "
                f"{qty(abs(M), 'N m')}")
 
+    bearing_keys = [k for k in ("cg_position", "arrangement", "supported_mass", "cg_radius",
+                                "cg_offset") if k in given]
+    if bearing_keys and "bearing_spacing" not in given:
+        raise InputError(f"{bearing_keys[0]} is used only for bearing forces, which need "
+                         "bearing_spacing", key="given.bearing_spacing")
     if {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust"} & find \
             or "bearing_spacing" in given:
         _bearings(given, M, precession, theta, work)
@@ -211,8 +219,10 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
         work.text(f"two roots {', '.join(qty(r, 'rad/s') for r in roots)}; the slow one is "
                   "taken (the fast one is a top-like motion, see steady_precession)")
         roots = [slow]
-    return work.step("Omega", "root of the quadratic" if math.cos(theta) else "M / (J psidot)",
-                     value=roots[0], unit="rad/s")
+    if cos_theta(theta) == 0:
+        return work.step("Omega", "M / (J psidot)", f"{qty(M, 'N*m')} / ({qty(J, 'kg*m^2')} "
+                         f"{qty(spin, 'rad/s')})", roots[0], "rad/s", ref="Eq. 11.29")
+    return work.step("Omega", "root of the quadratic", value=roots[0], unit="rad/s")
 
 
 def _sense(M: float, work: Work) -> None:
