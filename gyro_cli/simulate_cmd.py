@@ -317,8 +317,21 @@ def simulate_file(path: str, periods: float = 5.0, fmt: str = "text", csv: str |
         outputs["plot"] = str(plot)
     report["outputs"] = outputs
     if fmt == "json":
-        return json.dumps(report, allow_nan=False, default=_json_default) + "\n"
+        return json.dumps(_clean(report), allow_nan=False, default=_json_default) + "\n"
     return text(report, periods)
+
+
+def _clean(value):
+    """Non-finite numbers become null (JSON has no NaN); numpy scalars become floats."""
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_clean(v) for v in value]
+    if hasattr(value, "item") and not isinstance(value, (str, bytes)):
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
 
 
 def _json_default(value):
