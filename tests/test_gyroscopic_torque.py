@@ -320,3 +320,18 @@ def test_overhung_rotor_is_allowed_when_declared(run, write):
         find: {bearing_forces: N}
         """)
     assert solve_json(run, path)["bearing_forces"]["values"] == pytest.approx([-9.81, 29.43])
+
+
+@pytest.mark.parametrize("theta", [math.radians(50), math.pi / 2, math.radians(130)])
+def test_precession_for_a_given_moment_reproduces_it_by_finite_differences(theta):
+    from gyro_cli.kinds.gyroscopic_torque import precession_for_moment
+
+    J, I, spin, M = 0.02, 0.03, 80.0, 1.7
+    roots = precession_for_moment(J, I, spin, theta, M)
+    assert roots
+    for precession in roots:
+        R_of = lambda t: attitude(t, precession, theta, spin)  # noqa: E731
+        h = 1e-2 / max(abs(precession), abs(spin))  # the fast root turns at ~250 rad/s
+        rate = dH_dt(R_of, 0.2, np.diag([I, I, J]), h=h)
+        n = np.cross(K, R_of(0.2)[:, 2]) / math.sin(theta)
+        assert np.allclose(rate, M * n, atol=1e-4 * M)
