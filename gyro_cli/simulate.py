@@ -310,6 +310,8 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
         if progress and solver.t >= next_report * t_end:
             progress(min(1.0, solver.t / t_end))
             next_report = solver.t / t_end + 0.01
+    if progress:
+        progress(1.0)
     nfev = solver.nfev
     dense = _Dense(pieces)
     nodes = np.array(node_y)

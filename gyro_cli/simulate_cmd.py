@@ -272,11 +272,13 @@ def terminal_progress(stream=None) -> Callable[[float], None] | None:
     stream = stream or sys.stderr
     if not stream.isatty():
         return None
-    started = time.monotonic()
+    started: list[float] = []
     shown = [False]
 
     def show(fraction: float) -> None:
-        if time.monotonic() - started < 0.5 and fraction < 1.0:
+        if not started:
+            started.append(time.monotonic())
+        if time.monotonic() - started[0] < 0.5 and fraction < 1.0:
             return
         if fraction >= 1.0 and not shown[0]:
             return

@@ -273,6 +273,8 @@ def test_progress_bar_only_on_a_terminal():
     assert terminal_progress(io.StringIO()) is None
     stream = Tty()
     show = terminal_progress(stream)
+    show(0.01)
+    assert stream.getvalue() == ""                # short runs show nothing
     import time as _time
     _time.sleep(0.55)
     show(0.5)
