@@ -156,3 +156,10 @@ def test_analytic_path_has_its_cusps_on_the_theta_min_circle():
     sim = simulate(p, p, t_end=data.t[-1], samples=len(data.t))
     assert np.max(np.abs(sim.theta - data.theta)) < 1e-8
     assert np.max(np.abs(sim.phi - data.phi)) < 1e-6
+
+
+def test_gyro_solve_plot_takes_one_file(run, problems_dir, tmp_path):
+    result = run("solve", problems_dir / "11_3.yaml", problems_dir / "11_1.yaml", "--plot",
+                 tmp_path / "x.png")
+    assert result.exit_code == 2 and "one FILE" in result.stderr
+    assert not (tmp_path / "x.png").exists()
