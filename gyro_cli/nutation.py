@@ -75,6 +75,7 @@ class Nutation:
     one_plus_u0: float = 0.0
     rising: bool = False       # u increasing at t = 0 (theta decreasing)
     stable: bool = True        # sleeping top: J^2 omega_z^2 > 4 I m g l cos(theta0)
+    limit_precession: tuple[float, float] = (math.nan, math.nan)   # phidot at u1, at u2
 
 
 # ---- constants of the motion ---------------------------------------------------
@@ -102,8 +103,14 @@ def f_of_u(nut: Nutation, u):
 
 
 def phidot(nut: Nutation, u):
-    """Precession rate (beta - gamma u) / (1 - u^2) at u = cos(theta) (Eqs. 11.16, 11.26)."""
-    return (nut.beta - nut.gamma * u) / (1 - u * u)
+    """Precession rate (beta - gamma u) / (1 - u^2) at u = cos(theta) (Eqs. 11.16, 11.26);
+    vectorised. On the vertical (u = +-1) it is undefined: inf or nan, no exception."""
+    import numpy as np
+
+    u = np.asarray(u, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rate = (nut.beta - nut.gamma * u) / (1 - u * u)
+    return float(rate) if rate.ndim == 0 else rate
 
 
 def psidot(nut: Nutation, u, top: Top):
@@ -224,13 +231,15 @@ def analyse(top: Top, start: Start) -> Nutation:
         return Nutation(u_roots=roots, theta_min=theta_min, theta_max=theta_max,
                         nutation_period=period, mean_precession=mean,
                         max_precession=max(rates, key=abs), min_precession=min(rates, key=abs),
-                        motion="steady", d_roots=(d1, d2, d3), **common)
+                        motion="steady", d_roots=(d1, d2, d3),
+                        limit_precession=tuple(rates), **common)
     mean = _mean_precession(k, B, d1, d2, d3, one_minus0, one_plus0)
     big = max(range(2), key=lambda i: abs(rates[i]))
     return Nutation(u_roots=roots, theta_min=theta_min, theta_max=theta_max,
                     nutation_period=period, mean_precession=mean,
                     max_precession=rates[big], min_precession=rates[1 - big],
-                    motion=classify(*rates), d_roots=(d1, d2, d3), **common)
+                    motion=classify(*rates), d_roots=(d1, d2, d3),
+                    limit_precession=tuple(rates), **common)
 
 
 def classify(phidot_at_u1: float, phidot_at_u2: float) -> str:
@@ -246,15 +255,14 @@ def classify(phidot_at_u1: float, phidot_at_u2: float) -> str:
 
 
 def _phidot_at(k: dict, B: float, d: float, one_minus0: float, one_plus0: float) -> float:
-    """phidot at u = u0 + d: (B - gamma d) / ((1 - u)(1 + u)); on the pole (u = +-1 with
-    beta = +-gamma, the axis passing through the vertical) the limit gamma / (1 +- u)."""
+    """phidot at u = u0 + d: (B - gamma d) / ((1 - u)(1 + u)). A limit on the pole itself
+    (u = +-1 is a root only when beta = +-gamma: the axis passes through the vertical) is
+    beta / (1 + u) = gamma / 2 at u = 1 and -gamma / (1 - u) = -gamma / 2 at u = -1."""
     one_minus, one_plus = one_minus0 - d, one_plus0 + d
     if one_minus <= 0:
-        return k["gamma"] / 2 if k["beta"] == k["gamma"] or abs(B - k["gamma"] * d) < 1e-300 \
-            else math.copysign(math.inf, B - k["gamma"] * d)
+        return k["gamma"] / 2
     if one_plus <= 0:
-        return -k["gamma"] / 2 if k["beta"] == -k["gamma"] or abs(B - k["gamma"] * d) < 1e-300 \
-            else math.copysign(math.inf, B - k["gamma"] * d)
+        return -k["gamma"] / 2
     return (B - k["gamma"] * d) / (one_minus * one_plus)
 
 
@@ -273,15 +281,12 @@ def _mean_precession(k: dict, B: float, d1: float, d2: float, d3: float, one_min
     minus = 0.0 if k["beta"] == gamma else B - gamma * one_minus0
     plus = 0.0 if k["beta"] == -gamma else B + gamma * one_plus0
     total = 0.0
-    # (n, 1 - n): n1 = (u2 - u1)/(1 - u1), 1 - n1 = (1 - u2)/(1 - u1); -n2 likewise with 1 + u
-    for coeff, scale, n, p in ((minus, one_minus1, width / one_minus1,
-                                (one_minus0 - d2) / one_minus1),
-                               (plus, one_plus1, -width / one_plus1,
-                                (one_plus0 + d2) / one_plus1)):
-        if coeff == 0:
-            continue
-        pi = K + n / 3 * float(elliprj(0.0, y, 1.0, p))
-        total += coeff * pi / scale
+    if minus:       # n1 = (u2 - u1)/(1 - u1), 1 - n1 = (1 - u2)/(1 - u1)
+        n, p = width / one_minus1, (one_minus0 - d2) / one_minus1
+        total += minus * (K + n / 3 * float(elliprj(0.0, y, 1.0, p))) / one_minus1
+    if plus:        # -n2 = -(u2 - u1)/(1 + u1), 1 + n2 = (1 + u2)/(1 + u1)
+        n, p = -width / one_plus1, (one_plus0 + d2) / one_plus1
+        total += plus * (K + n / 3 * float(elliprj(0.0, y, 1.0, p))) / one_plus1
     return total / (2 * K)
 
 

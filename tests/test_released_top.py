@@ -158,3 +158,14 @@ def test_thrown_top_defaults_and_units(run, write):
     assert answers["theta_min"]["si_values"][0] == pytest.approx(ref.theta_min, rel=1e-7)
     released = run("solve", write(problem("  theta0: 45 deg\n  spin: 1500 rpm"), "r.yaml"))
     assert "(default)" in released.stdout
+
+
+@pytest.mark.parametrize("theta0", ["0 deg", "180 deg"])
+def test_thrown_through_the_vertical_warns_about_phi(run, write, theta0):
+    text = problem(f"  theta0: {theta0}\n  spin: 1800 rpm\n  theta_rate0: 1 rad/s",
+                   find="theta_max: deg\n  mean_precession: rpm\n  max_precession: rpm")
+    result = run("solve", write(text), "--format", "json")
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    assert any("passes through the vertical" in w for w in report["warnings"])
+    assert all(math.isfinite(v) for a in report["answers"].values() for v in a["si_values"])

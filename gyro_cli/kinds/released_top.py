@@ -27,7 +27,7 @@ def _rel(approx: float, exact: float) -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    from ..nutation import Start, Top, analyse
+    from ..nutation import Start, Top, analyse, constants
 
     body = given.body
     body.require("J", "I_pivot")
@@ -53,8 +53,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "the spin psidot > 0", key="given.spin")
     top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
     start = Start(theta0=theta0, spin=spin, precession0=precession0, theta_rate0=theta_rate0)
-    omega_z = spin + precession0 * (1.0 if vertical and theta0 < 1 else -1.0 if vertical
-                                    else math.cos(theta0))
+    omega_z = constants(top, start)["omega_z"]
     if vertical and omega_z == 0 and theta_rate0 == 0:
         raise InputError(f"theta0 = {_deg(theta0)} with no spin about the axis: the top stands "
                          "(or hangs) on the vertical and does not move", key="given.theta0")
@@ -71,6 +70,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _precession(nut, work)
     _fast_top(top, start, nut, omega_z, released, work)
     _answers(nut, work)
+    pole = "0" if nut.theta_min == 0 else "180" if nut.theta_max == math.pi else ""
+    if pole:
+        work.warn(f"the axis passes through the vertical (theta = {pole} deg) once a period: "
+                  "there phi jumps by +-180 deg (which sign is undefined); mean_precession "
+                  "counts only the continuous advance, the integral of Eq. 11.16 (the two "
+                  f"one-sided limits are mean_precession +- pi / T = +-{num(math.pi / nut.nutation_period)} rad/s)")
     if nut.theta_max > math.pi / 2 + 1e-12:
         work.warn(f"theta_max = {_deg(nut.theta_max)} passes 90 deg: the centre of mass goes "
                   "below the fixed point; a top standing on a floor would touch it (the "
@@ -174,11 +179,7 @@ def _precession(nut, work: Work) -> None:
     d1, d2, d3 = nut.d_roots
     u1, u2, _ = nut.u_roots
     work.section("Precession: phidot = (beta - gamma u) / (1 - u^2) (Eqs. 11.16, 11.26)")
-    from ..nutation import phidot
-
-    at = {"u1": nut.max_precession, "u2": nut.min_precession}
-    if abs(phidot(nut, u1) - nut.max_precession) > abs(phidot(nut, u1) - nut.min_precession):
-        at = {"u1": nut.min_precession, "u2": nut.max_precession}
+    at = dict(zip(("u1", "u2"), nut.limit_precession))
     work.step("phidot(u1)", "(beta - gamma u1) / (1 - u1^2)", value=at["u1"], unit="rad/s",
               note=f"at theta_max ({num(at['u1'] / RPM)} rpm)")
     work.step("phidot(u2)", "(beta - gamma u2) / (1 - u2^2)", value=at["u2"], unit="rad/s",
