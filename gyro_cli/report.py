@@ -30,12 +30,14 @@ def text(result: Result) -> str:
     if problem.source:
         lines.append(f"Source: {problem.source}")
     lines += [f"Note: {note}" for note in problem.notes]
-    lines += ["", f"{'Given':<31}SI"]
+    symbol = max([7] + [len(g.symbol) for g in solution.given]) + 1
+    text = max([21] + [len(g.text) for g in solution.given]) + 1
+    lines += ["", f"{'Given':<{symbol + text + 2}}SI"]
     for g in solution.given:
         si = g.si_value if isinstance(g.si_value, str) else f"{num(g.si_value)} {g.si_unit}"
-        row = f"  {g.symbol + ' ':<8}{g.text:<22}{si}"
+        row = f"  {g.symbol:<{symbol}}{g.text:<{text}}{si}"
         if g.note:
-            row = f"{row:<56}({g.note})"
+            row = f"{row:<{symbol + text + 20}}({g.note})"
         lines.append(row.rstrip())
     for section in solution.sections:
         lines += ["", section.title]

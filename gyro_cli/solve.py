@@ -82,7 +82,7 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         if isinstance(value, str):
             lines.append(GivenLine(key, param.symbol, value, value, ""))
             continue
-        raw = problem.data.get("given", {}).get(key)
+        raw = problem.data.get("given", {}).get(key, param.default)
         text = " ".join(raw.split()) if isinstance(raw, str) else \
             f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
         note = ""
