@@ -184,7 +184,6 @@ def _quadratic_roots(a: float, b: float, c: float) -> tuple[float, float]:
 def d_roots(top: Top, start: Start) -> tuple[float, float, float]:
     """Roots d1 <= d2 <= d3 of f(u0 + d): u_i = u0 + d_i (Eq. 11.19), ascending."""
     c = shifted_cubic(top, start)
-    c0_, _ = _cos_sin(start.theta0)
     one_minus, one_plus = _one_minus_plus(start.theta0)
     if c[0] == 0:                     # u0 is a root: divide it out, Eq. 11.23
         return tuple(sorted((0.0,) + _quadratic_roots(c[3], c[2], c[1])))
