@@ -36,16 +36,6 @@ EXAMPLE_QUANTITY = {
 }
 ANSWER_UNIT = {"rate": "rpm", "angle": "deg"}
 
-# A complete, solvable example per kind (given keys used, answers asked); other
-# keys of the kind appear commented out. Kinds without one get every key commented.
-EXAMPLES: dict[str, dict[str, Any]] = {
-    "steady_precession": {
-        "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
-                  "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
-        "find": {"precession": "rpm", "min_spin": "rpm"},
-        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"},
-    },
-}
 VARIANT_DIGITS = 3
 MAX_VARIANTS = 10_000
 
@@ -59,7 +49,7 @@ def _line(text: str, comment: str, width: int = 30) -> str:
 def template(kind_name: str) -> str:
     """A commented problem file with every key of ``kind_name``."""
     kind = kinds.get(kind_name)
-    example = EXAMPLES.get(kind.name) or kind.extra.get("example") or {}
+    example = kind.extra.get("example") or {}  # a complete, solvable example of the kind
     given_ex: dict[str, str] = dict(example.get("given", {}))
     find_ex: dict[str, Any] = dict(example.get("find", {}))
     out = [f"# A gyro problem file of kind {kind.name}: {kind.summary}.",

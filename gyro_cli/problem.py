@@ -230,4 +230,4 @@ def _notes(value: Any) -> list[str]:
 
 def _type_name(value: Any) -> str:
     return {dict: "mapping", list: "list", str: "string", int: "number", float: "number",
-            bool: "boolean"}.get(type(value), type(value).__name__)
+            bool: "boolean", type(None): "empty value"}.get(type(value), type(value).__name__)

@@ -186,6 +186,15 @@ def test_new_for_every_kind_is_yaml_with_every_key(run):
     assert bad.exit_code == 2 and "unknown kind" in bad.stderr
 
 
+@pytest.mark.parametrize("name", kinds.names())
+def test_new_template_of_every_kind_is_a_working_problem(run, tmp_path, name):
+    """A newcomer's `gyro new KIND` then `gyro solve` must work, for every kind."""
+    out = tmp_path / f"{name}.yaml"
+    assert run("new", name, "-o", out).exit_code == 0
+    assert run("solve", out).exit_code == 0
+    assert run("check", out).exit_code == 0
+
+
 # ---- gyro vary ----------------------------------------------------------------
 
 TOP = """\

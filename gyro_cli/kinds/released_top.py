@@ -329,4 +329,10 @@ KIND = Kind(
                    "ascending"),
     ),
     solve=solve,
+    extra={"example": {
+        "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
+                  "cg_distance": "1.5 in", "theta0": "30 deg", "spin": "1800 rpm"},
+        "find": {"theta_max": "deg", "nutation_period": "s", "mean_precession": "rpm",
+                 "motion": None},
+        "vary": {"spin": "[0.8, 1.2]", "theta0": "[20 deg, 40 deg]"}}},
 )

@@ -302,4 +302,9 @@ KIND = Kind(
         AnswerSpec("min_spin", "rate", "psidot_min", "least spin for steady precession at theta"),
     ),
     solve=solve,
+    extra={"example": {
+        "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
+                  "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
+        "find": {"precession": "rpm", "min_spin": "rpm"},
+        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"}}},
 )
