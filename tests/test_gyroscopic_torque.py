@@ -19,30 +19,14 @@ import numpy as np
 import pytest
 
 from gyro_cli.kinds.gyroscopic_torque import bearing_forces, gyroscopic_moment
+from rotations import K, omega_of, rx, rz
 
 RPM = 2 * math.pi / 60
-K = np.array([0.0, 0.0, 1.0])
-
-
-def rz(a):
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]])
-
-
-def rx(a):
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[1.0, 0, 0], [0, c, -s], [0, s, c]])
 
 
 def attitude(t, precession, theta, spin):
     """z-x-z: frame turns at precession about K, spin axis at theta, rotor spins relative."""
     return rz(precession * t) @ rx(theta) @ rz(spin * t)
-
-
-def omega_of(R_of, t, h=1e-6):
-    """Angular velocity from the skew matrix dR/dt R^T (central differences)."""
-    W = (R_of(t + h) - R_of(t - h)) / (2 * h) @ R_of(t).T
-    return np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2
 
 
 def angular_momentum(R_of, t, inertia_body):

@@ -24,24 +24,9 @@ from scipy.integrate import solve_ivp
 from gyro_cli.kinds.rolling_disk import (axle_pivot_normal_force, axle_pivot_spin,
                                          free_from_speed_and_path, free_from_speed_and_tilt,
                                          free_from_tilt_and_path)
+from rotations import K, omega_of, rx, rz
 
 RPM = 2 * math.pi / 60
-K = np.array([0.0, 0.0, 1.0])
-
-
-def rz(a):
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]])
-
-
-def rx(a):
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[1.0, 0, 0], [0, c, -s], [0, s, c]])
-
-
-def omega_of(R_of, t, h=1e-6):
-    W = (R_of(t + h) - R_of(t - h)) / (2 * h) @ R_of(t).T
-    return np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2
 
 
 @pytest.mark.parametrize("m, r, R, Omega", [(3.0, 0.3048, 0.6096, 48 * RPM),

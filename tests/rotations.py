@@ -1,0 +1,29 @@
+"""Rotation matrices and finite-difference kinematics shared by the tests.
+
+Independent of gyro's code: angular velocity is read off dR/dt R^T, and the
+angular momentum H = R I_body R^T omega is differentiated numerically.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+K = np.array([0.0, 0.0, 1.0])
+
+
+def rz(a: float) -> np.ndarray:
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]])
+
+
+def rx(a: float) -> np.ndarray:
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[1.0, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def omega_of(R_of, t: float, h: float = 1e-6) -> np.ndarray:
+    """Angular velocity from the skew matrix dR/dt R^T (central differences)."""
+    W = (R_of(t + h) - R_of(t - h)) / (2 * h) @ R_of(t).T
+    return np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2
