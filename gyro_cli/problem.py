@@ -86,7 +86,10 @@ def read_yaml(path: str) -> tuple[Any, dict[str, int]]:
                          line=mark.line + 1 if mark else None) from None
     except yaml.YAMLError as err:
         raise InputError(f"YAML error: {err}", file=path) from None
-    return data, _key_lines(node)
+    try:
+        return data, _key_lines(node)
+    except InputError as err:
+        raise err.located(file=path) from None
 
 
 def _key_lines(node: Any) -> dict[str, int]:
@@ -97,11 +100,20 @@ def _key_lines(node: Any) -> dict[str, int]:
         return lines
     for key, value in node.value:
         name = str(key.value)
-        lines[name] = key.start_mark.line + 1
+        _once(lines, name, key)
         if isinstance(value, yaml.MappingNode):
             for sub_key, _ in value.value:
-                lines[f"{name}.{sub_key.value}"] = sub_key.start_mark.line + 1
+                _once(lines, f"{name}.{sub_key.value}", sub_key)
     return lines
+
+
+def _once(lines: dict[str, int], name: str, key: Any) -> None:
+    """Record a key's line; a key written twice is an error (YAML keeps the last silently)."""
+    line = key.start_mark.line + 1
+    if name in lines:
+        raise InputError(f"key written twice (lines {lines[name]} and {line}); keep one",
+                         key=name, line=line)
+    lines[name] = line
 
 
 def load(path: str) -> Problem:

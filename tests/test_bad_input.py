@@ -124,3 +124,9 @@ def test_installed_command_exits_2(write):
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
+
+
+def test_key_written_twice(run, write):
+    """YAML keeps the last of two equal keys silently; gyro refuses it."""
+    path = write(problem(given=GOOD_GIVEN + "\n  spin: 900 rpm"))
+    one_line_error(run("solve", path), "given.spin", "written twice", "lines 8 and 10")
