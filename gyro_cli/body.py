@@ -134,15 +134,30 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     J = _axial(values, m, r, shape, work)
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
-    if J is not None and I_cg is not None and J > 2 * I_cg * (1 + 1e-12):
+    _check_inertias(values, m, J, I_cg, I_pivot, l)
+    return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
+
+
+# Rounded textbook data may miss the inequalities below by a little; more than this is an error.
+INERTIA_SLACK = 0.01
+
+
+def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float | None,
+                    I_pivot: float | None, l: float | None) -> None:
+    """Refuse inertias no rigid body has: J <= 2 I_G (I_z <= I_x + I_y) and I >= m l^2."""
+    if I_pivot is not None and l and m is not None:
+        if I_pivot < m * l * l * (1 - INERTIA_SLACK):
+            raise InputError(f"I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
+                             f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no body can have "
+                             "(parallel axes: I = I_G + m l^2)", key="given.I_pivot")
+        if I_cg is None:
+            I_cg = max(I_pivot - m * l * l, 0.0)
+    if J is not None and I_cg is not None and J > 2 * I_cg * (1 + INERTIA_SLACK):
+        key = "given.J" if "J" in values else "given.k_axial" if "k_axial" in values else \
+            "given.shape"
         raise InputError(f"J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}: no "
                          "rigid body has these inertias (the axial moment is at most the sum "
-                         "of the two transverse ones)", key="given.J")
-    if I_pivot is not None and l and I_pivot < m * l * l * (1 - 1e-12):
-        raise InputError(f"I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
-                         f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no body can have "
-                         "(parallel axes: I = I_G + m l^2)", key="given.I_pivot")
-    return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
+                         "of the two transverse ones about the centre of mass)", key=key)
 
 
 def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:

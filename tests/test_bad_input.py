@@ -69,7 +69,7 @@ CASES = {
                             ["given", "mapping"]),
     "impossible inertia": (problem(given=GOOD_GIVEN.replace("1.80 in", "1.0 in")
                                    .replace("k_pivot", "k_cg").replace("0.84 in", "1.5 in")),
-                           ["given.J", "no rigid body"]),
+                           ["given.k_axial", "no rigid body"]),
 }
 
 
@@ -130,3 +130,9 @@ def test_key_written_twice(run, write):
     """YAML keeps the last of two equal keys silently; gyro refuses it."""
     path = write(problem(given=GOOD_GIVEN + "\n  spin: 900 rpm"))
     one_line_error(run("solve", path), "given.spin", "written twice", "lines 8 and 10")
+
+
+def test_axial_inertia_beyond_the_transverse_ones_through_the_pivot(run, write):
+    """J > 2 (I_pivot - m l^2) is refused too: here J = m (1 m)^2 against I_G = m (0.99 in^2)."""
+    path = write(problem(given=GOOD_GIVEN.replace("0.84 in", "1 m")))
+    one_line_error(run("solve", path), "given.k_axial", "no rigid body")
