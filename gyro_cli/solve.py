@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from . import units
@@ -55,13 +56,24 @@ def _solve(problem: Problem) -> Result:
         elif "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
                                         "m/s^2"))
-    kind.solve(problem.given, frozenset(problem.find), work)
+    try:
+        kind.solve(problem.given, frozenset(problem.find), work)
+    except (ArithmeticError, ValueError) as err:
+        # Last line of defence: extreme data (1e300 kg, a 1e9 m radius of gyration) that
+        # overflow or degenerate in floating point. Say so rather than print a traceback.
+        raise InputError(f"these data are outside what {kind.name} can compute reliably in "
+                         f"double precision ({type(err).__name__}: {err}); check the magnitudes "
+                         "and units", key="given") from None
     solution = work.solution()
     answers = {}
     for name, unit in problem.find.items():
         answer = solution.answers.get(name)
         if answer is None:
             raise InputError(f"{kind.name} could not give {name!r} from the data given",
+                             key=f"find.{name}")
+        if not all(isinstance(v, str) or math.isfinite(v) for v in answer.si_values):
+            raise InputError(f"{name} is not a finite number for these data (overflow or a "
+                             "degenerate case); check the magnitudes and units",
                              key=f"find.{name}")
         if answer.dimension is None:
             values, unit = list(answer.si_values), None

@@ -136,3 +136,21 @@ def test_axial_inertia_beyond_the_transverse_ones_through_the_pivot(run, write):
     """J > 2 (I_pivot - m l^2) is refused too: here J = m (1 m)^2 against I_G = m (0.99 in^2)."""
     path = write(problem(given=GOOD_GIVEN.replace("0.84 in", "1 m")))
     one_line_error(run("solve", path), "given.k_axial", "no rigid body")
+
+
+@pytest.mark.parametrize("given", [
+    # a radius of gyration of 1e9 m: the released top degenerates in floating point
+    GOOD_GIVEN.replace("1.80 in", "1e9 m").replace("spin: 1800 rpm", "spin: 1800 rpm\n  "
+                                                   "theta0: 30 deg").replace("\n  theta: 30 deg",
+                                                                             ""),
+])
+def test_extreme_magnitudes_say_so(run, write, given):
+    path = write(problem(given=given, kind="released_top", find="theta_max: deg"))
+    one_line_error(run("solve", path), "double precision")
+
+
+def test_overflowing_answer_is_refused(run, write):
+    path = write(problem(given="mass: 1e300 kg\n  shape: disk\n  radius: 1e9 m\n  spin: 300 rad/s"
+                         "\n  arm_length: 250 mm\n  bearing_spacing: 200 mm\n  theta: 90 deg",
+                         kind="swinging_rotor", find="bearing_forces: N"))
+    one_line_error(run("solve", path), "not a finite number")
