@@ -484,3 +484,17 @@ def test_gyro_solve_plot_released_top(run, released, tmp_path):
     assert png.read_bytes().startswith(b"\x89PNG")
     again = run("solve", released(), "--plot", png)
     assert again.exit_code == 2 and "exists" in again.stderr
+
+
+def test_a_run_too_long_is_refused_at_once(run, tmp_path):
+    """A needle-like top (I/J = 1e6) at 1e6 rpm would take hours: refused before integrating."""
+    import time
+
+    path = tmp_path / "needle.yaml"
+    path.write_text("id: needle\nkind: released_top\ngiven: {mass: 1 kg, J: 1e-7 kg m^2, "
+                    "I_pivot: 0.1 kg m^2, cg_distance: 0.1 m, theta0: 30 deg, spin: 1e6 rpm}\n"
+                    "find: {theta_max: deg}\n")
+    start = time.perf_counter()
+    out = run("simulate", path)
+    assert out.exit_code == 2 and "--periods" in out.stderr and out.stderr.count("\n") == 1
+    assert time.perf_counter() - start < 5
