@@ -1,4 +1,4 @@
-"""The command line: ``gyro solve``, ``gyro kinds``.
+"""The command line: solve, check, simulate, new, schema, vary, kinds.
 
 Every command exits 0 on success, 1 when an answer does not match (check), and
 2 on bad input or usage, with a one-line message and never a traceback.
