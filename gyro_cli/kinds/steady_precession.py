@@ -101,6 +101,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if len(rates) == 3:
         raise InputError("give at most two of spin, axial_rate and precession",
                          key="given.axial_rate")
+    work.section("Conventions (errata)")
+    work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the centre "
+              "of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
+              "precessing frame, omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about "
+              "the fixed point")
     D, driver = _driver(given, theta, work)
     if not rates:
         if find - {"min_spin"}:
@@ -131,7 +136,7 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
         M = given["moment"]
         D = work.step("D", "M / sin(theta)", f"{qty(M, 'N*m')} / sin({num(math.degrees(theta))}"
                       " deg)", M / math.sin(theta), "N*m")
-        return D, "M / sin(theta)"
+        return D, "D"
     if body.l == 0:
         work.text("l = 0 and no applied moment: a torque-free body (D = 0)")
         return 0.0, "m g l"
@@ -153,7 +158,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         work.text(f"({qty(a, 'kg m^2')}) phidot^2 + ({qty(b, 'kg m^2/s')}) phidot "
                   f"- {qty(D, 'N m')} = 0")
         roots = precession_from_spin(I, J, theta, spin, D)
-        least, formula = min_spin(I, J, theta, D), "2 sqrt((I - J) D cos(theta)) / J"
+        least, formula = min_spin(I, J, theta, D), f"2 sqrt((I - J) {driver} cos(theta)) / J"
         symbol = "psidot"
     else:
         axial = given["axial_rate"]
@@ -164,7 +169,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         work.step("a", f"2 {driver} / I", f"2 ({qty(D, 'N*m')}) / {qty(I, 'kg*m^2')}",
                   2 * D / I, "1/s^2")
         roots = precession_from_axial_rate(I, J, theta, axial, D)
-        least, formula = min_axial_rate(I, J, theta, D), "2 sqrt(I D cos(theta)) / J"
+        least, formula = min_axial_rate(I, J, theta, D), f"2 sqrt(I {driver} cos(theta)) / J"
         symbol, spin = "omega_z", None
     if not roots:
         raise InputError(
@@ -256,11 +261,11 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
     work.section("Least spin for steady precession (discriminant of Eq. 11.13; Eq. 11.21)")
     least = min_spin(I, J, theta, D)
     if least > 0:
-        work.step("psidot_min", "2 sqrt((I - J) D cos(theta)) / J", f"2 sqrt(({qty(I - J, 'kg*m^2')}"
+        work.step("psidot_min", f"2 sqrt((I - J) {driver} cos(theta)) / J", f"2 sqrt(({qty(I - J, 'kg*m^2')}"
                   f") ({qty(D, 'N*m')}) ({num(cos_theta(theta))})) / {qty(J, 'kg*m^2')}", least,
-                  "rad/s", note=f"D = {driver}")
+                  "rad/s")
     else:
-        work.text("(I - J) D cos(theta) <= 0: real roots for every spin, no least spin "
+        work.text(f"(I - J) {driver} cos(theta) <= 0: real roots for every spin, no least spin "
                   "(psidot_min = 0)")
     work.answer("min_spin", "psidot_min", [least], "rate")
 
