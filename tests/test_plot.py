@@ -143,7 +143,8 @@ def test_gyro_solve_plot_refuses_other_kinds(run, problems_dir, tmp_path):
 def test_analytic_path_has_its_cusps_on_the_theta_min_circle():
     """gyro solve --plot draws the analytic motion: exact theta(t), phi from Eq. 11.16. Its
     phidot = 0 points lie on the theta_min circle, and the path agrees with the integration."""
-    nutation = pytest.importorskip("gyro_cli.nutation")
+    import gyro_cli.nutation as nutation
+
     top = nutation.Top(I=BODY["I"], J=BODY["J"], mgl=BODY["mgl"])
     start = nutation.Start(theta0=math.radians(30), spin=188.5)
     data = plot.from_analysis(top, start, periods=3, samples_per_period=600)

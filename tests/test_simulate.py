@@ -372,7 +372,9 @@ def test_random_tops_match_quadrature_of_eq_11_19(simulated):
 
 @pytest.fixture(scope="module")
 def nutation():
-    return pytest.importorskip("gyro_cli.nutation")
+    import gyro_cli.nutation
+
+    return gyro_cli.nutation
 
 
 def _top_start(nutation, p: Params):
@@ -406,9 +408,8 @@ def test_random_tops_match_nutation_analyse(nutation, simulated):
 
 def test_exact_theta_of_t_matches_integration(nutation, simulated):
     """theta(t) of the analytic module against the integrated theta, 5 nutation periods."""
-    theta_of_t = getattr(nutation, "theta_of_t", None)
-    if theta_of_t is None:
-        theta_of_t = pytest.importorskip("gyro_cli.motion").theta_of_t
+    from gyro_cli.motion import theta_of_t
+
     for p, _, sim in simulated:
         exact = np.asarray(theta_of_t(*_top_start(nutation, p), sim.t))
         assert np.max(np.abs(exact - sim.theta)) < 1e-8, p
@@ -436,7 +437,6 @@ RELEASED_FILE = """\
 
 @pytest.fixture
 def released(write):
-    pytest.importorskip("gyro_cli.kinds.released_top")
     return lambda theta0="30 deg": write(RELEASED_FILE.format(theta0=theta0), "released.yaml")
 
 
