@@ -58,13 +58,42 @@ def text_escape(text: str) -> str:
                    for c in text)
 
 
+_keys: frozenset[str] | None = None
+
+
+def _FILE_KEYS() -> frozenset[str]:  # noqa: N802 - computed once, on first use
+    global _keys
+    if _keys is None:
+        _keys = file_keys()
+    return _keys
+
+
 def _tokens(text: str) -> list[tuple[str, str]]:
     return [(m.lastgroup, m.group()) for m in _TOKEN.finditer(text)]
 
 
+def file_keys() -> frozenset[str]:
+    """Key and answer names of the problem format written with an underscore whose first
+    part is a word, not a symbol (``bearing_forces``, ``cg_distance``; not ``theta_max``)."""
+    from . import kinds
+    from .body import BODY_PARAMS
+
+    names = {p.name for p in BODY_PARAMS}
+    for kind in map(kinds.get, kinds.names()):
+        names |= {p.name for p in kind.params} | {a.name for a in kind.answers}
+    return frozenset(n for n in names if "_" in n and not _is_symbol(n.partition("_")[0]))
+
+
+def _is_symbol(base: str) -> bool:
+    return base in GREEK or len(base) == 1 or bool(_dotted(base))
+
+
 def is_word(name: str) -> bool:
-    """An English word rather than a symbol (``because`` but not ``phidot`` or ``I_G``)."""
-    if "_" in name or name in GREEK or name in FUNCTIONS or name == "sqrt" or _dotted(name):
+    """An English word rather than a symbol (``because`` but not ``phidot`` or ``I_G``);
+    a file key such as ``bearing_forces`` in prose counts as a word."""
+    if "_" in name:
+        return name in _FILE_KEYS()
+    if name in GREEK or name in FUNCTIONS or name == "sqrt" or _dotted(name):
         return False
     if len(name) == 1:
         return False

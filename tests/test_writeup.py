@@ -168,3 +168,12 @@ def test_any_formula_text_gives_sound_latex():
         assert latex_problems(f"\\[ {writeup.math(text)} \\]") == [], text
         assert latex_problems(f"\\[ {writeup.math(text, units=False)} \\]") == [], text
         assert latex_problems(writeup.mixed(text, ("$", "$"), writeup.text_escape)) == [], text
+
+
+def test_file_keys_in_prose_stay_words():
+    """`bearing_forces` in a note is a key of the file (text), `theta_max` a symbol (maths)."""
+    from gyro_cli.writeup import _latex_prose
+
+    tex = _latex_prose("bearing_forces lists A and B; theta_max is the lowest", ("$", "$"))
+    assert tex.startswith("bearing\\_forces lists")
+    assert "$\\theta_{\\mathrm{max}}$" in tex
