@@ -29,7 +29,7 @@ from ..errors import InputError
 from ..given import Given
 from ..spec import AnswerSpec, Kind, Param
 from ..work import Work, num, qty
-from .steady_precession import cos_theta, quadratic_roots
+from ..physics.algebra import cos_theta, quadratic_roots
 
 RPM = 2 * math.pi / 60
 

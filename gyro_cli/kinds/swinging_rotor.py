@@ -30,7 +30,7 @@ from ..errors import InputError
 from ..given import Given
 from ..spec import AnswerSpec, Kind, Param
 from ..work import Work, num, qty
-from .steady_precession import cos_theta
+from ..physics.algebra import cos_theta
 
 
 # ---- physics on floats ------------------------------------------------------
