@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Callable
 
 from .errors import InputError
-from .spec import Param
+from .params import Param
 from .work import Work, qty, substitute
 
 G_SI = 9.81         # m/s^2, the format's default

@@ -393,10 +393,3 @@ def _theta_from_one_minus_plus(one_minus, one_plus):
     theta = np.where(one_minus <= one_plus, 2 * np.arcsin(np.sqrt(0.5 * one_minus)),
                      np.pi - 2 * np.arcsin(np.sqrt(0.5 * one_plus)))
     return float(theta) if np.ndim(theta) == 0 else theta
-
-
-def theta_of_t(top: Top, start: Start, t):
-    """Exact theta(t) (Jacobi elliptic functions); see gyro_cli.motion."""
-    from .motion import theta_of_t as exact
-
-    return exact(top, start, t)

@@ -188,18 +188,18 @@ def from_simulation(sim, title: str = "", motion: str = "") -> PathData:
 
 def from_analysis(top, start, periods: float = 3.0, samples_per_period: int = 600,
                   title: str = "") -> PathData:
-    """PathData from the analytic solution: exact theta(t) (nutation/motion.theta_of_t),
+    """PathData from the analytic solution: exact theta(t) (motion.theta_of_t),
     phidot from Eq. 11.16 and phi by integrating it (cumulative Simpson's rule).
 
-    Where the exact theta(t) is not available, or the top does not nutate, the
-    path is simulated instead (simulate.py) and the figure says so.
+    Where the top does not nutate, the path is simulated instead (simulate.py)
+    and the figure says so.
     """
+    from .motion import theta_of_t
     from .nutation import analyse, phidot
 
     nut = analyse(top, start)
     period = nut.nutation_period
-    theta_of_t = _theta_of_t()
-    if theta_of_t is None or not (period and math.isfinite(period) and period > 0):
+    if not (period and math.isfinite(period) and period > 0):
         return _simulated_path(top, start, nut, periods, samples_per_period, title)
     from scipy.integrate import cumulative_simpson
 
@@ -213,17 +213,6 @@ def from_analysis(top, start, periods: float = 3.0, samples_per_period: int = 60
     return PathData(t=t, theta=theta, phi=phi, phidot=rate, theta_min=nut.theta_min,
                     theta_max=nut.theta_max, title=title, motion=nut.motion,
                     source="analytic: exact theta(t), phi from Eq. 11.16")
-
-
-def _theta_of_t():
-    for module in ("nutation", "motion"):
-        try:
-            mod = __import__(f"gyro_cli.{module}", fromlist=["theta_of_t"])
-        except ImportError:
-            continue
-        if hasattr(mod, "theta_of_t"):
-            return mod.theta_of_t
-    return None
 
 
 def _simulated_path(top, start, nut, periods: float, samples_per_period: int,

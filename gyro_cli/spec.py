@@ -9,31 +9,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Callable
 
+from .params import AnswerSpec, Param
+
 if TYPE_CHECKING:
     from .given import Given
     from .work import Work
 
-
-@dataclass(frozen=True)
-class Param:
-    """A key of `given`: its dimension (a name in units.DIMENSIONS), symbol and meaning."""
-
-    name: str
-    dimension: str
-    symbol: str
-    doc: str
-    default: str | None = None  # a quantity string used when the key is absent
-    choices: tuple[str, ...] = ()  # for word-valued keys (dimension "word")
-
-
-@dataclass(frozen=True)
-class AnswerSpec:
-    """An answer a kind can give; dimension None for a word (``motion``)."""
-
-    name: str
-    dimension: str | None
-    symbol: str
-    doc: str
+__all__ = ["AnswerSpec", "Kind", "Param"]
 
 
 @dataclass(frozen=True)

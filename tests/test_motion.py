@@ -43,12 +43,6 @@ def test_phi_and_psi_match_integration():
         assert np.max(np.abs(psi - y[2])) < 1e-8 * scale_psi, start
 
 
-def test_nutation_theta_of_t_is_reexported():
-    start = Start(math.radians(30), 1800 * RPM)
-    t = np.linspace(0, 1, 11)
-    assert np.array_equal(nutation.theta_of_t(TOP, start, t), motion.theta_of_t(TOP, start, t))
-
-
 @pytest.mark.parametrize("theta_rate0", [2.0, -2.0, 0.0])
 def test_start_anywhere_in_the_band_moving_either_way(theta_rate0):
     """From the same theta0, thrown up, thrown down or at rest: theta(t) follows the
