@@ -12,8 +12,8 @@ import time
 
 import numpy as np
 
-from gyro_cli.motion import angles_of_t, theta_of_t
-from gyro_cli.nutation import Start, Top, analyse
+from gyro_cli.physics.motion import angles_of_t, theta_of_t
+from gyro_cli.physics.nutation import Start, Top, analyse
 
 G = 32.2 * 0.3048
 M = 3 * 0.45359237 * 9.80665 / 16 / G

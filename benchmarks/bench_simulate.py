@@ -23,7 +23,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from gyro_cli.simulate import Params, simulate  # noqa: E402
+from gyro_cli.physics.simulate import Params, simulate  # noqa: E402
 
 M = 3 * 0.27801385 / (32.2 * 0.3048)
 BODY = dict(I=M * (1.80 * 0.0254) ** 2, J=M * (0.84 * 0.0254) ** 2,
@@ -39,13 +39,13 @@ TOPS = {
 def analytic():
     """(Top, Start, analyse, theta_of_t) from the analytic module, or None."""
     try:
-        from gyro_cli import nutation
+        from gyro_cli.physics import nutation
     except ImportError:
         return None
     theta_of_t = getattr(nutation, "theta_of_t", None)
     if theta_of_t is None:
         try:
-            from gyro_cli.motion import theta_of_t
+            from gyro_cli.physics.motion import theta_of_t
         except ImportError:
             return None
     return nutation.Top, nutation.Start, nutation.analyse, theta_of_t
@@ -95,7 +95,7 @@ def main() -> None:
               f"energy drift {best.energy_drift:.2e}, P1 {best.P1_drift:.2e}, "
               f"P2 {best.P2_drift:.2e}; measured period {best.nutation_period:.12g} s")
         if tools is None:
-            print("  exact theta(t): not available (gyro_cli.nutation not built yet)")
+            print("  exact theta(t): not available (gyro_cli.physics.nutation not built yet)")
             continue
         Top, Start, _, theta_of_t = tools
         top, start = Top(p.I, p.J, p.mgl), Start(p.theta0, p.spin, p.precession0,

@@ -11,7 +11,7 @@ import sys
 import click
 
 from . import __version__
-from .errors import InputError
+from .core.errors import InputError
 
 FORMATS = ("text", "json", "markdown", "latex")
 
@@ -43,8 +43,8 @@ def main() -> None:
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
           force: bool = False) -> None:
     """Solve problem FILES and print worked answers."""
-    from . import report
-    from .solve import solve_file
+    from .render import report
+    from .solving.solve import solve_file
 
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
@@ -53,7 +53,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         try:
             result = solve_file(path)
             if plot_file:
-                from .plot import plot_result
+                from .render.plot import plot_result
 
                 plot_result(result, plot_file, force=force)
         except InputError as err:
@@ -63,7 +63,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         if fmt == "json":
             click.echo(report.as_json(result))
         elif fmt in ("markdown", "latex"):
-            from . import writeup
+            from .render import writeup
 
             if i:
                 click.echo("")
@@ -99,7 +99,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if sheet is None:
         if out or force:
             fail("--out and --force go with --answers SHEET")
-        from . import check as checking
+        from .checking import check as checking
 
         result = checking.run(paths, strict=strict)
         for problem in result.problems:
@@ -108,8 +108,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         click.echo(checking.as_json(result) if fmt == "json" else checking.table(result),
                    nl=fmt == "json")
         if junit_file:
-            from . import junit
-            from .files import write_atomic
+            from .render import junit
+            from .core.files import write_atomic
 
             try:
                 write_atomic(junit_file, junit.xml(result), force=True)
@@ -118,13 +118,13 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         sys.exit(result.exit_code)
     if junit_file or strict:
         fail("--junit and --strict go with checking the answer key, not with --answers")
-    from . import grades
+    from .checking import grades
 
     try:
         graded = grades.grade(sheet, paths)
         text = grades.csv_text(graded)
         if out:
-            from .files import write_atomic
+            from .core.files import write_atomic
 
             write_atomic(out, text, force=force)
     except InputError as err:
@@ -138,12 +138,12 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 @click.option("--force", is_flag=True, help="Replace FILE if it exists.")
 def new(kind: str, output: str | None, force: bool) -> None:
     """Print (or write) a commented problem template with every key of KIND."""
-    from .authoring import template
+    from .commands.authoring import template
 
     try:
         text = template(kind)
         if output:
-            from .files import write_atomic
+            from .core.files import write_atomic
 
             write_atomic(output, text, force=force)
             click.echo(f"wrote {output}", err=True)
@@ -158,7 +158,7 @@ def schema() -> None:
     """Print a JSON Schema of the problem format (for editors' YAML support)."""
     import json
 
-    from .authoring import schema as make_schema
+    from .commands.authoring import schema as make_schema
 
     click.echo(json.dumps(make_schema(), indent=2, ensure_ascii=False))
 
@@ -177,7 +177,7 @@ def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
     Each variant has its computed `expected` answers; draws with no real
     solution are rejected and drawn again.
     """
-    from .authoring import write_variants
+    from .commands.authoring import write_variants
 
     try:
         written = write_variants(file, count, seed, out_dir, force)
@@ -203,7 +203,7 @@ def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
              plot_file: str | None, force: bool) -> None:
     """Integrate the top of FILE (released_top or steady_precession) from Euler's
     equations and compare with the analytic answer."""
-    from .simulate_cmd import simulate_file, terminal_progress
+    from .commands.simulate import simulate_file, terminal_progress
 
     try:
         out = simulate_file(file, periods=periods, fmt=fmt, csv=csv_file, plot=plot_file,
@@ -217,7 +217,7 @@ def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
 def kinds() -> None:
     """List the problem kinds with their given keys and answers."""
     from . import kinds as registry
-    from .body import BODY_PARAMS
+    from .core.body import BODY_PARAMS
 
     for name in registry.names():
         kind = registry.get(name)

@@ -20,8 +20,8 @@ import pytest
 import yaml
 
 from gyro_cli import kinds
-from gyro_cli.body import BODY_PARAMS
-from gyro_cli.problem import load
+from gyro_cli.core.body import BODY_PARAMS
+from gyro_cli.solving.problem import load
 
 from test_check import put
 

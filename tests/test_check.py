@@ -20,7 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from gyro_cli import check, units
+from gyro_cli.checking import check
+from gyro_cli.core import units
 
 G = 9.81
 RPM = 2 * math.pi / 60
@@ -402,7 +403,7 @@ def test_junit_option_writes_the_file(run, passing, tmp_path):
 
 
 def test_word_answers_compare_as_words():
-    from gyro_cli.solve import Reported
+    from gyro_cli.solving.solve import Reported
 
     motion = Reported("motion", "motion", ["cusps"], None, ["cusps"], None, [])
     exact = check.parse_tolerance("1%", None)
@@ -415,7 +416,7 @@ def test_word_answers_compare_as_words():
 
 
 def test_dimensionless_expected_may_be_a_bare_number():
-    from gyro_cli.solve import Reported
+    from gyro_cli.solving.solve import Reported
 
     ratio = Reported("u", "u", [0.5], "", [0.5], "", [])
     values = check.parse_expected([0.501], "dimensionless", "expected.u")

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from gyro_cli.errors import InputError
-from gyro_cli.files import write_atomic
+from gyro_cli.core.errors import InputError
+from gyro_cli.core.files import write_atomic
 
 from test_check import FAST, GYRO_PRECESSION, RPM, SLOW, gyro_file, put, top_file
 

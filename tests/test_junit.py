@@ -12,7 +12,8 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from gyro_cli import check, junit
+from gyro_cli.checking import check
+from gyro_cli.render import junit
 
 from test_check import GYRO_PRECESSION, gyro_file, put, top_file, SLOW, FAST
 

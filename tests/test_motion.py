@@ -1,4 +1,4 @@
-"""Exact theta(t), phi(t), psi(t) (gyro_cli.motion) against Lagrange's equations 11.13
+"""Exact theta(t), phi(t), psi(t) (gyro_cli.physics.motion) against Lagrange's equations 11.13
 integrated in the test (tests/lagrange_top.py), against the energy integral by finite
 differences, and across the start (either direction, any point of the band)."""
 
@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from gyro_cli import motion, nutation
-from gyro_cli.nutation import Start, analyse
+from gyro_cli.physics import motion, nutation
+from gyro_cli.physics.nutation import Start, analyse
 from lagrange_top import integrate
 from test_nutation import CASES, TOP, RPM
 
@@ -120,10 +120,10 @@ def test_a_million_points_vectorised():
 @pytest.mark.parametrize("theta0, precession0", [(0.0, 0.0), (0.0, 2.0), (math.pi, 0.0)])
 def test_axis_through_the_vertical(theta0, precession0):
     """Thrown from the vertical (P1 = +-P2): Euler angles are singular there, so the reference
-    is the quaternion integration of gyro_cli.simulate (no Euler-angle equation). theta(t)
+    is the quaternion integration of gyro_cli.physics.simulate (no Euler-angle equation). theta(t)
     and the period agree; the azimuth jumps by +-pi at each passage, so the simulated mean
     precession is the analytic one (the continuous advance) plus or minus pi / T."""
-    from gyro_cli.simulate import Params, simulate
+    from gyro_cli.physics.simulate import Params, simulate
 
     start = Start(theta0, 1800 * RPM if theta0 == 0 else 50.0, precession0, 1.0)
     nut = analyse(TOP, start)

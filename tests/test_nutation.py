@@ -1,4 +1,4 @@
-"""gyro_cli.nutation against independent references: Lagrange's equations 11.13 integrated
+"""gyro_cli.physics.nutation against independent references: Lagrange's equations 11.13 integrated
 numerically (tests/lagrange_top.py), Eq. 11.25 and Eq. 11.20 written out here, limiting
 cases (fast top, sleeping top, steady precession) and the cubic itself."""
 
@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from gyro_cli.nutation import (Start, Top, analyse, fast_mean_precession,
+from gyro_cli.physics.nutation import (Start, Top, analyse, fast_mean_precession,
                                fast_nutation_amplitude, fast_nutation_period, phidot)
 from lagrange_top import integrate
 

@@ -12,9 +12,9 @@ import math
 import numpy as np
 import pytest
 
-from gyro_cli import plot
-from gyro_cli.errors import InputError
-from gyro_cli.simulate import Params, simulate
+from gyro_cli.render import plot
+from gyro_cli.core.errors import InputError
+from gyro_cli.physics.simulate import Params, simulate
 
 BODY = dict(I=1.776e-4, J=3.869e-5, mgl=0.03178)
 
@@ -143,7 +143,7 @@ def test_gyro_solve_plot_refuses_other_kinds(run, problems_dir, tmp_path):
 def test_analytic_path_has_its_cusps_on_the_theta_min_circle():
     """gyro solve --plot draws the analytic motion: exact theta(t), phi from Eq. 11.16. Its
     phidot = 0 points lie on the theta_min circle, and the path agrees with the integration."""
-    import gyro_cli.nutation as nutation
+    import gyro_cli.physics.nutation as nutation
 
     top = nutation.Top(I=BODY["I"], J=BODY["J"], mgl=BODY["mgl"])
     start = nutation.Start(theta0=math.radians(30), spin=188.5)

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from gyro_cli.simulate import Params, initial_state, motion_of, simulate
+from gyro_cli.physics.simulate import Params, initial_state, motion_of, simulate
 
 G = 9.81
 # Problem 11/3: 3 ozf top, k_z = 0.84 in, k_O = 1.80 in, l = 1.5 in, 1800 rpm, 30 deg
@@ -264,7 +264,7 @@ def test_cli_bad_input_is_one_line_exit_2(run, write, tmp_path, args, message):
 def test_progress_bar_only_on_a_terminal():
     import io
 
-    from gyro_cli.simulate_cmd import terminal_progress
+    from gyro_cli.commands.simulate import terminal_progress
 
     class Tty(io.StringIO):
         def isatty(self):
@@ -372,9 +372,9 @@ def test_random_tops_match_quadrature_of_eq_11_19(simulated):
 
 @pytest.fixture(scope="module")
 def nutation():
-    import gyro_cli.nutation
+    import gyro_cli.physics.nutation
 
-    return gyro_cli.nutation
+    return gyro_cli.physics.nutation
 
 
 def _top_start(nutation, p: Params):
@@ -408,7 +408,7 @@ def test_random_tops_match_nutation_analyse(nutation, simulated):
 
 def test_exact_theta_of_t_matches_integration(nutation, simulated):
     """theta(t) of the analytic module against the integrated theta, 5 nutation periods."""
-    from gyro_cli.motion import theta_of_t
+    from gyro_cli.physics.motion import theta_of_t
 
     for p, _, sim in simulated:
         exact = np.asarray(theta_of_t(*_top_start(nutation, p), sim.t))

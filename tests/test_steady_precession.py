@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from gyro_cli.solve import solve_file
+from gyro_cli.solving.solve import solve_file
 
 RPM = 2 * math.pi / 60
 

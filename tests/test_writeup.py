@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from gyro_cli import writeup
+from gyro_cli.render import writeup
 
 from test_check import GYRO_PRECESSION, RPM, gyro_file, put
 
@@ -172,7 +172,7 @@ def test_any_formula_text_gives_sound_latex():
 
 def test_file_keys_in_prose_stay_words():
     """`bearing_forces` in a note is a key of the file (text), `theta_max` a symbol (maths)."""
-    from gyro_cli.writeup import _latex_prose
+    from gyro_cli.render.writeup import _latex_prose
 
     tex = _latex_prose("bearing_forces lists A and B; theta_max is the lowest", ("$", "$"))
     assert tex.startswith("bearing\\_forces lists")

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 from importlib import import_module
 
-from ..errors import InputError
-from ..spec import Kind
+from ..core.errors import InputError
+from ..core.spec import Kind
 
 REGISTRY: dict[str, str] = {
     "steady_precession": "gyro_cli.kinds.steady_precession",

@@ -1,7 +1,7 @@
 """The heavy top released at theta0 with spin: nutation limits, period, precession.
 
 Chapter 11, Eqs. 11.14-11.26 (Eq. 11.24 corrected: gamma^2/a), solved exactly by
-gyro_cli.nutation: the roots of the cubic f(u) of Eq. 11.19 give the nutation
+gyro_cli.physics.nutation: the roots of the cubic f(u) of Eq. 11.19 give the nutation
 limits, complete elliptic integrals the period and the mean precession.
 """
 
@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import math
 
-from ..errors import InputError
-from ..given import Given
-from ..spec import AnswerSpec, Kind, Param
-from ..work import Work, num, qty
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
 
 RPM = 2 * math.pi / 60
 DEG = math.pi / 180
@@ -27,7 +27,7 @@ def _rel(approx: float, exact: float) -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    from ..nutation import Start, Top, analyse, constants
+    from ..physics.nutation import Start, Top, analyse, constants
 
     body = given.body
     body.require("J", "I_pivot")
@@ -127,7 +127,7 @@ def _roots(top, start, nut, work: Work) -> None:
         return
     work.step("theta_max", "acos(u1)", value=nut.theta_max / DEG, unit="deg")
     work.step("theta_min", "acos(u2)", value=nut.theta_min / DEG, unit="deg")
-    from ..nutation import f_of_u
+    from ..physics.nutation import f_of_u
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
     residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
@@ -136,7 +136,7 @@ def _roots(top, start, nut, work: Work) -> None:
 
 
 def _released(top, start, nut, omega_z: float, work: Work) -> None:
-    from ..nutation import released_u1
+    from ..physics.nutation import released_u1
 
     a, g = nut.a, nut.gamma
     u2 = math.cos(start.theta0)
@@ -155,7 +155,7 @@ def _released(top, start, nut, omega_z: float, work: Work) -> None:
 
 
 def _period(nut, work: Work) -> None:
-    from ..nutation import complete_K
+    from ..physics.nutation import complete_K
 
     d1, d2, d3 = nut.d_roots
     u1, u2, u3 = nut.u_roots
@@ -209,7 +209,7 @@ def _precession(nut, work: Work) -> None:
 
 
 def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
-    from ..nutation import (fast_mean_precession, fast_nutation_amplitude,
+    from ..physics.nutation import (fast_mean_precession, fast_nutation_amplitude,
                             fast_nutation_period)
 
     work.section("Fast-top approximation (gamma^2 >> a)")

@@ -18,11 +18,11 @@ from __future__ import annotations
 
 import math
 
-from ..errors import InputError
-from ..given import Given
-from ..spec import AnswerSpec, Kind, Param
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
-from ..work import Work, num, qty
+from ..core.work import Work, num, qty
 
 RPM = 2 * math.pi / 60
 FASTEST_REAL_ROTOR = 1e5 * RPM  # beyond this no real top or gyroscope spins

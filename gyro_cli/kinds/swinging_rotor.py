@@ -26,10 +26,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import InputError
-from ..given import Given
-from ..spec import AnswerSpec, Kind, Param
-from ..work import Work, num, qty
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
 
 

@@ -1,5 +1,3 @@
-"""Physics on plain floats: no files, no units, no printing.
-
-Modules here may import only the standard library, numpy and scipy, and each
-other; the kinds above them call these functions with SI floats.
-"""
+"""Physics on plain floats: the exact nutation solution, theta(t), the
+integrator of Euler's equations, shared algebra. No files, no units, no
+printing; imports only the standard library, numpy, scipy and core.errors."""

@@ -24,10 +24,11 @@ import os
 import random
 from typing import Any
 
-from . import kinds, units
-from .body import BODY_PARAMS
-from .errors import InputError
-from .spec import Kind
+from .. import kinds
+from ..core import units
+from ..core.body import BODY_PARAMS
+from ..core.errors import InputError
+from ..core.spec import Kind
 
 EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
@@ -114,8 +115,8 @@ def template(kind_name: str) -> str:
 
 def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
     """The example's answers as the solver gives them, for the template's `expected`."""
-    from .problem import _build
-    from .solve import solve
+    from ..solving.problem import _build
+    from ..solving.solve import solve
 
     if not given or not find:
         return {}
@@ -296,9 +297,9 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     """``count`` variants of the problem in ``path``: (file name, YAML text) each."""
     import yaml
 
-    from . import check
-    from .problem import _build, load
-    from .solve import solve
+    from ..checking import check
+    from ..solving.problem import _build, load
+    from ..solving.solve import solve
 
     if not 1 <= count <= MAX_VARIANTS:
         raise InputError(f"--count must lie between 1 and {MAX_VARIANTS}, got {count}")
@@ -365,7 +366,7 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
 
 def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) -> list[str]:
     """Write the variants into ``out_dir`` (created if needed); never overwrite without force."""
-    from .files import write_atomic
+    from ..core.files import write_atomic
 
     made = variants(path, count, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):

@@ -26,9 +26,9 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import units
-from .errors import InputError
-from .work import num
+from ..core import units
+from ..core.errors import InputError
+from ..core.work import num
 
 DEFAULT_TOLERANCE = "1%"
 YAML_SUFFIXES = (".yaml", ".yml")
@@ -104,7 +104,7 @@ def tolerance_for(spec: Any, name: str, dimension: str | None, answer_names: lis
     if isinstance(spec, dict):
         for entry in spec:
             if entry != "default" and entry not in answer_names:
-                from .problem import suggest
+                from ..solving.problem import suggest
 
                 raise InputError(f"unknown answer {entry!r}{suggest(str(entry), answer_names)} "
                                  f"(answers: {', '.join(answer_names)}; or `default`)",
@@ -373,7 +373,7 @@ def collect(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[Problem
 
 def check_problem(problem: Any) -> ProblemCheck:
     """Solve one loaded problem and compare every expected answer; InputError if bad."""
-    from .solve import solve
+    from ..solving.solve import solve
 
     kind = problem.kind
     result = ProblemCheck(problem.file, problem.id, problem.title, kind.name)
@@ -483,7 +483,7 @@ def _other_root(value: Expected, roots: list[float], width_si: float, unit: str)
 
 def check_file(path: str) -> ProblemCheck:
     """Load, solve and compare one file; a bad file comes back with status error."""
-    from .problem import load
+    from ..solving.problem import load
 
     try:
         problem = load(path)

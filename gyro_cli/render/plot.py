@@ -169,8 +169,8 @@ def render(data: PathData, suffix: str) -> bytes:
 
 def save(data: PathData, path: str, force: bool = False) -> Path:
     """Render and write atomically; InputError if the file exists and not ``force``."""
-    from .errors import InputError
-    from .files import write_atomic
+    from ..core.errors import InputError
+    from ..core.files import write_atomic
 
     suffix = Path(path).suffix
     if suffix.lower() not in FORMATS:
@@ -194,8 +194,8 @@ def from_analysis(top, start, periods: float = 3.0, samples_per_period: int = 60
     Where the top does not nutate, the path is simulated instead (simulate.py)
     and the figure says so.
     """
-    from .motion import theta_of_t
-    from .nutation import analyse, phidot
+    from ..physics.motion import theta_of_t
+    from ..physics.nutation import analyse, phidot
 
     nut = analyse(top, start)
     period = nut.nutation_period
@@ -217,7 +217,7 @@ def from_analysis(top, start, periods: float = 3.0, samples_per_period: int = 60
 
 def _simulated_path(top, start, nut, periods: float, samples_per_period: int,
                     title: str) -> PathData:
-    from .simulate import simulate
+    from ..physics.simulate import simulate
 
     period = nut.nutation_period
     if not (period and math.isfinite(period) and period > 0):
@@ -239,7 +239,7 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     By default enough nutation periods for the axis to go once round the vertical
     (at least 3, at most 12).
     """
-    from .errors import InputError
+    from ..core.errors import InputError
 
     problem = result.problem
     if problem.kind.name != "released_top":
@@ -251,7 +251,7 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
                          ".png, .svg or .pdf", file=path)
     if Path(path).exists() and not force:
         raise InputError("exists; not overwritten (use --force to replace it)", file=path)
-    from .nutation import Start, Top
+    from ..physics.nutation import Start, Top
 
     given, body = problem.given, problem.given.body
     top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
@@ -265,7 +265,7 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
 
 
 def _periods_for_one_turn(top, start) -> float:
-    from .nutation import analyse
+    from ..physics.nutation import analyse
 
     nut = analyse(top, start)
     period, rate = nut.nutation_period, nut.mean_precession

@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from . import check
-from .errors import InputError
-from .work import num
+from ..core.errors import InputError
+from ..core.work import num
 
 COLUMNS = ("student", "problem", "answer", "value")
 HEADER_WORDS = {"student": "student", "name": "student", "problem": "problem",
@@ -119,7 +119,7 @@ def _read_csv(path: str) -> list[Submission]:
 
 
 def _read_yaml(path: str) -> list[Submission]:
-    from .problem import read_yaml
+    from ..solving.problem import read_yaml
 
     data, lines = read_yaml(path)
     if not isinstance(data, dict):
@@ -145,7 +145,7 @@ def _read_yaml(path: str) -> list[Submission]:
 
 def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
     """The problems to grade against, by id; any bad file is bad input."""
-    from .problem import load
+    from ..solving.problem import load
 
     files, errors = check.collect(paths)
     if errors:
@@ -162,7 +162,7 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
 
 def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
     """Grade every submission in ``sheet`` against the problems under ``paths``."""
-    from .solve import solve
+    from ..solving.solve import solve
 
     submissions = read_sheet(sheet)
     problems = load_problems(paths)

@@ -10,11 +10,12 @@ import os
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import kinds, units
-from .body import BODY_PARAMS
-from .errors import InputError
-from .given import Given
-from .spec import Kind, Param
+from .. import kinds
+from ..core import units
+from ..core.body import BODY_PARAMS
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "notes", "expected", "tolerance",
             "vary")

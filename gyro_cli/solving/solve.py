@@ -5,11 +5,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import units
-from .body import build_body
-from .errors import InputError
+from ..core import units
+from ..core.body import build_body
+from ..core.errors import InputError
 from .problem import Problem, load, params_of
-from .work import GivenLine, Solution, Work, num
+from ..core.work import GivenLine, Solution, Work, num
 
 
 @dataclass

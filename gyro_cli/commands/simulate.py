@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from .errors import InputError
-from .work import num
+from ..core.errors import InputError
+from ..core.work import num
 
 RPM = 2 * math.pi / 60
 KINDS = ("released_top", "steady_precession")
@@ -41,8 +41,8 @@ class Setup:
 
 def prepare(path: str) -> Setup:
     """Load the file and work out the analytic answer; InputError if it cannot be simulated."""
-    from .problem import load
-    from .solve import solve
+    from ..solving.problem import load
+    from ..solving.solve import solve
 
     problem = load(path)
     if problem.kind.name not in KINDS:
@@ -60,8 +60,8 @@ def prepare(path: str) -> Setup:
 
 
 def _released(problem, given, body) -> Setup:
-    from .nutation import Start, Top, analyse
-    from .simulate import Params
+    from ..physics.nutation import Start, Top, analyse
+    from ..physics.simulate import Params
 
     top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
     start = Start(theta0=given["theta0"], spin=given["spin"],
@@ -78,7 +78,7 @@ def _released(problem, given, body) -> Setup:
 
 
 def _steady(problem, given, body, result) -> Setup:
-    from .simulate import Params
+    from ..physics.simulate import Params
 
     if "moment" in given:
         raise InputError("simulate integrates gravity's torque (cg_distance); a file with an "
@@ -122,7 +122,7 @@ def _time_unit(p, analytic: dict) -> tuple[float, str]:
 
 def check_outputs(paths: list[str | None], force: bool) -> None:
     """Fail before integrating if an output exists (no --force) or has a bad name."""
-    from .plot import FORMATS
+    from ..render.plot import FORMATS
 
     named = [p for p in paths if p]
     if len(set(map(str, named))) < len(named):
@@ -145,7 +145,7 @@ def check_outputs(paths: list[str | None], force: bool) -> None:
 
 def run(setup: Setup, periods: float, progress: Callable[[float], None] | None = None):
     """Integrate ``periods`` time units; returns the Simulation."""
-    from .simulate import simulate
+    from ..physics.simulate import simulate
 
     t_end = periods * setup.period
     samples = int(min(MAX_SAMPLES, max(201, round(periods * SAMPLES_PER_PERIOD) + 1)))
@@ -157,7 +157,7 @@ def run(setup: Setup, periods: float, progress: Callable[[float], None] | None =
 
 def comparison(setup: Setup, sim) -> dict:
     """Analytic, simulated and their differences, SI; plus drifts. The JSON object."""
-    from .simulate import motion_of
+    from ..physics.simulate import motion_of
 
     simulated = {"theta_min": sim.theta_min, "theta_max": sim.theta_max,
                  "nutation_period": sim.nutation_period,
@@ -297,7 +297,7 @@ def simulate_file(path: str, periods: float = 5.0, fmt: str = "text", csv: str |
                   plot: str | None = None, force: bool = False,
                   progress: Callable[[float], None] | None = None) -> str:
     """The whole command: returns what to print; InputError on bad input."""
-    from .files import write_atomic
+    from ..core.files import write_atomic
 
     if not (math.isfinite(periods) and periods > 0):
         raise InputError("--periods must be a positive number")
@@ -310,7 +310,7 @@ def simulate_file(path: str, periods: float = 5.0, fmt: str = "text", csv: str |
         write_atomic(csv, csv_text(sim), force=force)
         outputs["csv"] = str(csv)
     if plot:
-        from . import plot as plots
+        from ..render import plot as plots
 
         problem = setup.problem
         title = f"{problem.id}  {problem.title}".strip()

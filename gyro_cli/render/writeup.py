@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import re
 
-from .solve import Result
-from .work import num
+from ..solving.solve import Result
+from ..core.work import num
 
 GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
          "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
@@ -75,8 +75,8 @@ def _tokens(text: str) -> list[tuple[str, str]]:
 def file_keys() -> frozenset[str]:
     """Key and answer names of the problem format written with an underscore whose first
     part is a word, not a symbol (``bearing_forces``, ``cg_distance``; not ``theta_max``)."""
-    from . import kinds
-    from .body import BODY_PARAMS
+    from .. import kinds
+    from ..core.body import BODY_PARAMS
 
     names = {p.name for p in BODY_PARAMS}
     for kind in map(kinds.get, kinds.names()):

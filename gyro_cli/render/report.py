@@ -5,8 +5,8 @@ from __future__ import annotations
 import json
 from typing import Any
 
-from .solve import Result
-from .work import num
+from ..solving.solve import Result
+from ..core.work import num
 
 WIDTH = 78
 
