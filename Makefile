@@ -20,9 +20,11 @@ demo: $(STAMP)
 	$(BIN)/gyro solve problems/*.yaml
 
 test: $(STAMP)
+	$(BIN)/lint-imports --no-cache
 	$(BIN)/python -m pytest -q
 
 check: $(STAMP)
+	$(BIN)/lint-imports --no-cache
 	$(BIN)/gyro check problems/
 
 bench: $(STAMP)
