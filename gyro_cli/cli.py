@@ -52,10 +52,6 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
-            if plot_file:
-                from .render.plot import plot_result
-
-                plot_result(result, plot_file, force=force)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -72,6 +68,14 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             if i:
                 click.echo("\n" + "=" * report.WIDTH + "\n")
             click.echo(report.text(result), nl=False)
+        if plot_file:  # after the worked answer, so a refused plot does not hide it
+            from .render.plot import plot_result
+
+            try:
+                plot_result(result, plot_file, force=force)
+            except InputError as err:
+                click.echo(f"gyro: {err}", err=True)
+                bad += 1
     if bad:
         sys.exit(2)
 
@@ -218,22 +222,9 @@ def kinds() -> None:
     """List the problem kinds with their given keys and answers."""
     from . import kinds as registry
     from .core.body import BODY_PARAMS
+    from .render.kinds_list import kinds_text
 
-    for name in registry.names():
-        kind = registry.get(name)
-        click.echo(f"{kind.name}: {kind.summary}  ({kind.chapter})")
-        click.echo("  given:")
-        for p in kind.params:
-            default = f" [default {p.default}]" if p.default else ""
-            click.echo(f"    {p.name:<16}{p.dimension:<14}{p.doc}{default}")
-        if kind.uses_body:
-            click.echo(f"    body keys: {', '.join(p.name for p in BODY_PARAMS)}")
-        click.echo("  answers:")
-        for a in kind.answers:
-            click.echo(f"    {a.name:<16}{a.dimension or 'word':<14}{a.doc}")
-        click.echo("")
-    for name, what in registry.PLANNED.items():
-        click.echo(f"{name}: {what}  (not built yet)")
+    click.echo(kinds_text(registry, BODY_PARAMS))
 
 
 if __name__ == "__main__":

@@ -315,7 +315,7 @@ def simulate_file(path: str, periods: float = 5.0, fmt: str = "text", csv: str |
         problem = setup.problem
         title = f"{problem.id}  {problem.title}".strip()
         data = plots.from_simulation(sim, title=title, motion=report["simulated"]["motion"])
-        plots.save(data, plot, force=force)
+        plots.save(plots.with_rate_unit(data, problem), plot, force=force)
         outputs["plot"] = str(plot)
     report["outputs"] = outputs
     if fmt == "json":

@@ -34,18 +34,48 @@ class PathData:
     title: str = ""
     motion: str = ""
     source: str = ""       # "simulated" or "analytic": said on the figure
+    rate_unit: str = "rad/s"   # phidot is drawn in this unit ...
+    rate_per_si: float = 1.0   # ... one rad/s being this many of it
 
 
-def path_xy(theta: np.ndarray, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The axis seen from above: x = sin(theta) cos(phi), y = sin(theta) sin(phi)."""
-    s = np.sin(theta)
-    return s * np.cos(phi), s * np.sin(phi)
+# A band between the circles narrower than this fraction of its radius is no
+# visible nutation (a steady precession integrated to 1e-12 wobbles by ~1e-10):
+# it is drawn as one steady circle, never widened into a false nutation.
+VISIBLE_BAND = 1e-6
 
 
-def circle_xy(theta: float, n: int = 361) -> tuple[np.ndarray, np.ndarray]:
+def radius(theta, below: bool = False):
+    """Distance from the centre of the picture: sin(theta) seen from above, or
+    theta / 90 deg (azimuthal equidistant) when the path goes below the
+    horizontal, where sin(theta) would fold the lower hemisphere back inside."""
+    return np.asarray(theta) / (0.5 * math.pi) if below else np.sin(theta)
+
+
+def path_xy(theta: np.ndarray, phi: np.ndarray,
+            below: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """The axis seen from above: x = r cos(phi), y = r sin(phi), r = sin(theta)."""
+    r = radius(theta, below)
+    return r * np.cos(phi), r * np.sin(phi)
+
+
+def circle_xy(theta: float, n: int = 361,
+              below: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """The circle of constant theta seen from above (radius sin(theta))."""
     a = np.linspace(0.0, 2 * math.pi, n)
-    return math.sin(theta) * np.cos(a), math.sin(theta) * np.sin(a)
+    r = float(radius(theta, below))
+    return r * np.cos(a), r * np.sin(a)
+
+
+def crosses_horizontal(data: PathData) -> bool:
+    """True when the path reaches below the horizontal plane through the pivot."""
+    return data.theta_max > 0.5 * math.pi + 1e-9
+
+
+def is_steady(data: PathData) -> bool:
+    """No visible nutation: the band is narrower than VISIBLE_BAND of its radius."""
+    lo, hi = float(radius(data.theta_min)), float(radius(data.theta_max))
+    mid = 0.5 * (abs(lo) + abs(hi))
+    return mid > 0 and abs(hi - lo) <= VISIBLE_BAND * mid
 
 
 def stationary_points(data: PathData, zero: float = 1e-3) -> np.ndarray:
@@ -72,13 +102,12 @@ def radial_exaggeration(data: PathData, band: float = 0.3) -> float:
     phi alone, so cusps stay cusps (phidot = 0 where r turns), loops stay loops and
     waves waves. k makes the band ``band`` times its mean radius.
     """
-    r_lo, r_hi = sorted((math.sin(data.theta_min), math.sin(data.theta_max)))
+    below = crosses_horizontal(data)
+    r_lo, r_hi = sorted((float(radius(data.theta_min, below)), float(radius(data.theta_max, below))))
     r_mid = 0.5 * (r_lo + r_hi)
     width = r_hi - r_lo
-    if r_mid <= 0 or width >= 0.15 * r_mid:
-        return 1.0
-    if width <= 1e-12 * r_mid:
-        return 1.0          # no nutation to show (steady or sleeping)
+    if r_mid <= 0 or width >= 0.15 * r_mid or is_steady(data):
+        return 1.0          # wide enough, or no nutation to show (steady or sleeping)
     return band * r_mid / width
 
 
@@ -92,47 +121,7 @@ def figure(data: PathData):
     fig = Figure(figsize=(7.0, 10.5), layout="constrained")
     grid = fig.add_gridspec(3, 1, height_ratios=[3.4, 1, 1])
     ax = fig.add_subplot(grid[0])
-    k = radial_exaggeration(data)
-    r_mid = 0.5 * (math.sin(data.theta_min) + math.sin(data.theta_max))
-
-    def warp(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        if k == 1.0:
-            return x, y
-        r = np.hypot(x, y)
-        scale = np.where(r > 0, (r_mid + k * (r - r_mid)) / np.where(r > 0, r, 1.0), 0.0)
-        return x * scale, y * scale
-
-    x, y = warp(*path_xy(data.theta, data.phi))
-    for theta, colour, label in ((data.theta_min, "tab:blue", "theta_min"),
-                                 (data.theta_max, "tab:red", "theta_max")):
-        cx, cy = warp(*circle_xy(theta))
-        ax.plot(cx, cy, "--", color=colour, lw=1.0,
-                label=f"{label} = {math.degrees(theta):.4g} deg")
-    if k == 1.0 and data.theta_max > math.pi / 2 > 0.5 * data.theta_min:
-        cx, cy = circle_xy(math.pi / 2)
-        ax.plot(cx, cy, ":", color="0.6", lw=0.8, label="theta = 90 deg")
-    ax.plot(x, y, "-", color="k", lw=1.0, label="symmetry axis")
-    ax.plot(x[:1], y[:1], "o", color="tab:green", ms=6, label="start")
-    marks = stationary_points(data)
-    if len(marks):
-        ax.plot(x[marks], y[marks], "v", color="tab:orange", ms=5, label="phidot = 0")
-    ax.plot([0], [0], "+", color="0.4", ms=8)
-    reach = max(float(np.max(np.hypot(x, y))), 0.25)     # a sleeping top is a point
-    if k == 1.0 and data.theta_min < math.pi / 2 < data.theta_max:
-        reach = 1.0
-    lim = 1.06 * reach
-    ax.set_xlim(-lim, lim)
-    ax.set_ylim(-lim, lim)
-    ax.set_aspect("equal")
-    ax.set_xlabel("sin(theta) cos(phi)")
-    ax.set_ylabel("sin(theta) sin(phi)")
-    notes = []
-    if data.theta_max < 1e-9:
-        notes.append("the axis stays on the vertical: a sleeping top")
-    if data.theta_min > math.pi / 2:
-        notes.append("centre of mass below the pivot")
-    if k != 1.0:
-        notes.append(f"band between the circles widened x{k:.3g}")
+    notes = _draw_path(ax, data)
     head = data.title + (f"  [{data.motion}]" if data.motion else "")
     ax.set_title(f"{head}\npath of the symmetry axis seen from above"
                  + (f"\n({'; '.join(notes)})" if notes else ""), fontsize=10)
@@ -143,15 +132,93 @@ def figure(data: PathData):
     ax_theta.plot(data.t, np.degrees(data.theta), color="k", lw=1.0)
     for theta, colour in ((data.theta_min, "tab:blue"), (data.theta_max, "tab:red")):
         ax_theta.axhline(math.degrees(theta), ls="--", color=colour, lw=0.8)
+    if crosses_horizontal(data):
+        ax_theta.axhline(90.0, ls="-", color="0.6", lw=0.8)
     ax_theta.set_ylabel("theta (deg)")
     ax_theta.set_xlim(data.t[0], data.t[-1])
 
     ax_rate = fig.add_subplot(grid[2], sharex=ax_theta)
-    ax_rate.plot(data.t, data.phidot, color="k", lw=1.0)
+    ax_rate.plot(data.t, np.asarray(data.phidot) * data.rate_per_si, color="k", lw=1.0)
     ax_rate.axhline(0.0, color="0.5", lw=0.8)
-    ax_rate.set_ylabel("phidot (rad/s)")
+    ax_rate.set_ylabel(f"phidot ({data.rate_unit})")
     ax_rate.set_xlabel("t (s)" + (f"   [{data.source}]" if data.source else ""))
     return fig
+
+
+def _draw_path(ax, data: PathData) -> list[str]:
+    """The view from above on ``ax``; returns the notes for the title."""
+    below = crosses_horizontal(data)
+    steady = is_steady(data)
+    k = radial_exaggeration(data)
+    r_mid = 0.5 * (float(radius(data.theta_min, below)) + float(radius(data.theta_max, below)))
+
+    def warp(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        if k == 1.0:
+            return x, y
+        r = np.hypot(x, y)
+        scale = np.where(r > 0, (r_mid + k * (r - r_mid)) / np.where(r > 0, r, 1.0), 0.0)
+        return x * scale, y * scale
+
+    notes = []
+    if steady:
+        theta = 0.5 * (data.theta_min + data.theta_max)
+        cx, cy = circle_xy(theta, below=below)
+        ax.plot(cx, cy, "--", color="tab:blue", lw=1.0, gid="theta circle",
+                label=f"steady: theta = {math.degrees(theta):.4g} deg")
+        notes.append(f"no visible nutation (band under {VISIBLE_BAND:.0e} of its radius): "
+                     "a steady circle")
+    else:
+        for theta, colour, label in ((data.theta_min, "tab:blue", "theta_min"),
+                                     (data.theta_max, "tab:red", "theta_max")):
+            cx, cy = warp(*circle_xy(theta, below=below))
+            ax.plot(cx, cy, "--", color=colour, lw=1.0, gid="theta circle",
+                    label=f"{label} = {math.degrees(theta):.4g} deg")
+            if k != 1.0:  # the true angle written on the circle, since the axes are warped
+                ax.annotate(f"{math.degrees(theta):.6g} deg", (cx[45], cy[45]), fontsize=7,
+                            color=colour, gid="true theta")
+    if below:
+        cx, cy = circle_xy(0.5 * math.pi, below=True)
+        ax.plot(cx, cy, "-", color="0.6", lw=0.8, gid="horizontal",
+                label="horizontal, theta = 90 deg")
+        notes.append("radius theta / 90 deg (azimuthal equidistant), so circles keep "
+                     "their order below the horizontal")
+    elif k == 1.0 and not steady and data.theta_max > math.pi / 2 > 0.5 * data.theta_min:
+        cx, cy = circle_xy(math.pi / 2)
+        ax.plot(cx, cy, ":", color="0.6", lw=0.8, label="theta = 90 deg")
+    x, y = warp(*path_xy(data.theta, data.phi, below))
+    if below:
+        lower = np.asarray(data.theta) > 0.5 * math.pi
+        ax.plot(np.ma.masked_where(lower, x), np.ma.masked_where(lower, y), "-", color="k",
+                lw=1.0, gid="upper hemisphere", label="axis above the horizontal")
+        ax.plot(np.ma.masked_where(~lower, x), np.ma.masked_where(~lower, y), "-",
+                color="tab:purple", lw=1.4, gid="lower hemisphere",
+                label="axis below the horizontal")
+    else:
+        ax.plot(x, y, "-", color="k", lw=1.0, label="symmetry axis")
+    ax.plot(x[:1], y[:1], "o", color="tab:green", ms=6, label="start")
+    marks = stationary_points(data)
+    if len(marks) and not steady:
+        ax.plot(x[marks], y[marks], "v", color="tab:orange", ms=5, label="phidot = 0")
+    ax.plot([0], [0], "+", color="0.4", ms=8)
+    reach = max(float(np.max(np.hypot(x, y))), 0.25)
+    if k == 1.0 and data.theta_min < math.pi / 2 < data.theta_max:
+        reach = max(reach, 1.0)
+    lim = 1.06 * reach
+    ax.set_xlim(-lim, lim)
+    ax.set_ylim(-lim, lim)
+    ax.set_aspect("equal")
+    r_name = "theta/90deg" if below else "sin(theta)"
+    ax.set_xlabel(f"{r_name} cos(phi)")
+    ax.set_ylabel(f"{r_name} sin(phi)")
+    if data.theta_min > math.pi / 2:
+        notes.append("centre of mass below the pivot")
+    if k != 1.0:
+        # a warped radius has no true tick values: drop the ticks, label the circles
+        ax.set_xticks([])
+        ax.set_yticks([])
+        notes.append(f"band between the circles widened x{k:.3g}; circles labelled "
+                     "with their true theta")
+    return notes
 
 
 def render(data: PathData, suffix: str) -> bytes:
@@ -176,6 +243,9 @@ def save(data: PathData, path: str, force: bool = False) -> Path:
     if suffix.lower() not in FORMATS:
         raise InputError(f"plot format {suffix or '(none)'!r} not supported; name the file "
                          ".png, .svg or .pdf", file=path)
+    if max(data.theta_max, float(np.max(data.theta))) < 1e-9:
+        raise InputError("the axis stays on the vertical (a sleeping top): seen from above "
+                         "its path is one point, so there is no figure to draw", file=path)
     return write_atomic(path, render(data, suffix), force=force)
 
 
@@ -233,6 +303,18 @@ def _simulated_path(top, start, nut, periods: float, samples_per_period: int,
     return data
 
 
+def with_rate_unit(data: PathData, problem) -> PathData:
+    """Draw phidot in the unit the file asks its precession answers in (rad/s if none)."""
+    from ..core import units
+
+    for name, unit in problem.find.items():
+        answer = problem.kind.answer(name)
+        if unit and answer is not None and answer.dimension == "rate":
+            data.rate_unit, data.rate_per_si = unit, units.convert(1.0, "rate", unit)
+            break
+    return data
+
+
 def plot_result(result, path: str, force: bool = False, periods: float | None = None) -> Path:
     """``gyro solve --plot``: draw a solved released_top problem; InputError otherwise.
 
@@ -261,7 +343,8 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     title = f"{problem.id}  {problem.title}".strip()
     if periods is None:
         periods = _periods_for_one_turn(top, start)
-    return save(from_analysis(top, start, periods=periods, title=title), path, force=force)
+    data = with_rate_unit(from_analysis(top, start, periods=periods, title=title), problem)
+    return save(data, path, force=force)
 
 
 def _periods_for_one_turn(top, start) -> float:
