@@ -432,3 +432,33 @@ def test_inner_wheels_lifting_is_warned(run, write):
         """))
     assert result.exit_code == 0
     assert "inner wheels leave the road" in result.output
+
+
+def test_extreme_magnitudes_keep_the_words_or_exit_2(run, write):
+    tiny = run("solve", "--format", "json", write("""
+        id: t
+        kind: ship
+        given: {mass: 1e-300 kg, k_axial: 1e-10 m, spin: 2400 rpm,
+                rotor_sense: clockwise_from_stern, speed: 200 km/h, turn_radius: 50 m}
+        find: {effect: null}
+        """))
+    assert tiny.exit_code == 0
+    assert json.loads(tiny.stdout)["answers"]["effect"]["values"] == [
+        "raises the bow and lowers the stern"]
+    for kind_text in ("""
+        id: t
+        kind: aeroplane
+        given: {mass: 1e300 kg, k_axial: 1e10 m, spin: 2400 rpm,
+                rotor_sense: clockwise_from_rear, speed: 200 km/h, turn_radius: 50 m}
+        find: {effect: null}
+        """, """
+        id: t
+        kind: two_wheeler
+        given: {mass: 1e300 kg, cg_height: 1e10 m, wheel_inertia: 1 kg*m^2,
+                wheel_radius: 0.3 m, speed: 20 m/s, turn_radius: 50 m}
+        find: {heel_angle: deg}
+        """):
+        result = run("solve", write(kind_text))
+        assert result.exit_code == 2, result.output
+        assert "double precision" in result.stderr and "inf" not in result.output
+        assert len(result.stderr.strip().splitlines()) == 1

@@ -14,6 +14,8 @@ the gyroscopic couple on an aeroplane); S.S. Rattan, "Theory of Machines", ch. 1
 
 from __future__ import annotations
 
+import math
+
 from ..errors import InputError
 from ..given import Given
 from ..physics import vehicles as V
@@ -75,6 +77,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.section("Gyroscopic couple, C = omega_p x H")
     C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
                   f"({qty(rate, 'rad/s')})", J * spin * rate, "N*m", ref="Eq. 11.29")
+    if not math.isfinite(C):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
     if sense:
@@ -82,7 +88,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         reactive = V.reactive_couple(wp, H)
         work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
         work.text(f"reactive couple on the aeroplane -(omega_p x H) = {_vec(reactive, 'N m')}")
-        words = V.effect(reactive, "aeroplane")
+        words = V.effect_of(wp, H, "aeroplane")
         work.text(f"effect on the aeroplane: {words}")
         work.answer("effect", "effect", [words], None)
         work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")

@@ -98,6 +98,11 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
         raise InputError("speed must be positive (the vehicle goes forward)", key="given.speed")
     turn = given.word("turn", "left")
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
+    if not all(math.isfinite(q) for q in (s.outer, s.inner, s.gyroscopic_couple,
+                                           s.centrifugal_couple, s.wheel_rate)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
     work.section("Rates")
     work.step("omega_w", "v / r_w", f"{qty(v, 'm/s')} / {qty(rw, 'm')}", s.wheel_rate, "rad/s")
     work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", s.precession, "rad/s")

@@ -92,6 +92,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                       f"({qty(rate, 'rad/s')})", Hmag * rate, "N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")
+    if not (math.isfinite(C) and math.isfinite(Hmag)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
     work.answer("couple", "C", [C], "moment")
     if rate is not None:
         work.answer("precession", "omega_p", [rate], "rate")
@@ -100,7 +104,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         reactive = V.reactive_couple(wp, H)
         work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
         work.text(f"reactive couple on the ship -(omega_p x H) = {_vec(reactive, 'N m')}")
-        words = V.effect(reactive, "ship")
+        words = V.effect_of(wp, H, "ship")
         work.text(f"effect on the ship: {words}")
         work.answer("effect", "effect", [words], None)
         work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")

@@ -49,6 +49,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     turn = given.word("turn", "left")
     s = V.two_wheeler(m, g, h, Iw, rw, IE, G, sense, v, R)
     sign = "+" if sense == "same" else "-"
+    if not all(math.isfinite(q) for q in (s.gyroscopic_couple, s.centrifugal_couple, m * g * h,
+                                           s.wheel_rate)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                               "precision (a product overflows); check the magnitudes and units",
+                               key="given")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text("machine axes: x forward, y to the left, z up. Going forward the road wheels "

@@ -26,9 +26,11 @@ the engine turns at G omega_w, in the wheels' sense or opposite. With the
 precession v / R about the vertical, the gyroscopic couple is
 C_g = (n_w I_w +- G I_E) v^2 / (R r_w) (times cos(theta) for a machine heeled
 by theta), and the centrifugal couple about the ground line
-C_c = m v^2 h / R (times cos(theta)). Both tend to overturn the vehicle outward
-when the spin angular momentum points to the inside of the turn (the wheels'
-own sense, for a vehicle going forward).
+C_c = m v^2 h / R (times cos(theta)). The centrifugal couple always overturns
+the vehicle outward; the gyroscopic one does too when the net spin angular
+momentum has the wheels' own sense (going forward it points to the vehicle's
+left, whichever way the vehicle turns), and presses the inner wheels down when
+engines running against the wheels dominate.
 """
 
 from __future__ import annotations
@@ -150,6 +152,27 @@ def effect(couple: Vector, vehicle: str, tol: float = 1e-12) -> str:
         words.append(f"lifts the {side[0]} side and dips the {side[1]}" if x > 0 else
                      f"lifts the {side[1]} side and dips the {side[0]}")
     return "; ".join(words) if words else "none"
+
+
+def direction(v: Vector) -> Vector | None:
+    """The unit vector along v, exact for overflowing (inf) or underflowing (tiny) v; None if 0."""
+    if any(math.isinf(c) for c in v):
+        v = tuple(math.copysign(1.0, c) if math.isinf(c) else 0.0 for c in v)
+    big = max(abs(c) for c in v)
+    if big == 0 or not math.isfinite(big):
+        return None
+    v = (v[0] / big, v[1] / big, v[2] / big)
+    size = norm(v)
+    return (v[0] / size, v[1] / size, v[2] / size)
+
+
+def effect_of(precession: Vector, H: Vector, vehicle: str) -> str:
+    """The effect words of -(omega_p x H) from the directions alone, so that extreme
+    magnitudes cannot change the words; "none" if either vector is zero."""
+    p, h = direction(precession), direction(H)
+    if p is None or h is None:
+        return "none"
+    return effect(reactive_couple(p, h), vehicle)
 
 
 # ---- ship pitching (simple harmonic) ---------------------------------------------
