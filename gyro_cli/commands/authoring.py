@@ -44,7 +44,7 @@ MAX_VARIANTS = 10_000
 # ---- gyro new ---------------------------------------------------------------
 
 def _line(text: str, comment: str, width: int = 30) -> str:
-    return f"{text:<{width}}# {comment}" if comment else text
+    return f"{text:<{width - 1}} # {comment}" if comment else text
 
 
 def template(kind_name: str) -> str:
@@ -64,7 +64,9 @@ def template(kind_name: str) -> str:
            _line(f"kind: {kind.name}", "required"),
            _line('source: ""', "optional: book, chapter, problem number"),
            _line("notes:", "optional: lines printed with the worked answer"),
-           "  - Spin is the rate relative to the precessing frame (psidot).",
+           "  - Spin is the rate relative to the precessing frame (psidot)."
+           if (kind.param("spin") and kind.param("spin").symbol == "psidot")
+           else "  - State here what the problem assumes.",
            "",
            _line("given:", "required: the data, each with its unit")]
     if not given_ex:

@@ -25,6 +25,8 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "angle": ("", "rad", "an angle like '30 deg' or '0.52 rad'"),
     "inertia": ("[mass] * [length] ** 2", "kg*m^2", "a moment of inertia like '0.01 kg m^2'"),
     "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "a moment like '2 N m'"),
+    "angular_acceleration": ("1 / [time] ** 2", "rad/s^2", "an angular acceleration like "
+                             "'0.01 rad/s^2'"),
     "speed": ("[length] / [time]", "m/s", "a speed like '10 m/s'"),
     "time": ("[time]", "s", "a time like '2 s'"),
     "dimensionless": ("", "", "a plain number"),

@@ -17,6 +17,10 @@ REGISTRY: dict[str, str] = {
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
     "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
+    "ship": "gyro_cli.kinds.ship",
+    "aeroplane": "gyro_cli.kinds.aeroplane",
+    "two_wheeler": "gyro_cli.kinds.two_wheeler",
+    "four_wheeler": "gyro_cli.kinds.four_wheeler",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

@@ -1,0 +1,124 @@
+"""An aeroplane's engine and propeller on a turn: the gyroscopic couple and its effect.
+
+The rotor (engine and propeller) turns about the fore-and-aft axis x; its
+angular momentum H = J omega s points forward or aft (``rotor_sense``, seen
+from the front or the rear). Turning on a circle of radius R at speed v turns
+H at omega_p = v / R about the vertical, so the rotor needs the couple
+C = omega_p x H, of size J omega v / R (Eq. 11.29 in vector form), and the
+aeroplane feels the reactive couple -C, which pitches it: it raises the nose
+and dips the tail, or dips the nose and raises the tail.
+
+Reference: R.S. Khurmi and J.K. Gupta, "Theory of Machines", ch. 14 (effect of
+the gyroscopic couple on an aeroplane); S.S. Rattan, "Theory of Machines", ch. 14.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from ..given import Given
+from ..physics import vehicles as V
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+
+
+def _vec(v: V.Vector, unit: str) -> str:
+    return "(" + ", ".join(num(c) if c else "0" for c in v) + f") {unit}".rstrip()
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    body.require("J")
+    J = body.J
+    for key in ("spin", "speed", "turn_radius"):
+        if key not in given:
+            raise InputError("the aeroplane needs spin (engine speed), speed and turn_radius",
+                             key=f"given.{key}")
+    spin, v, R = given["spin"], given["speed"], given["turn_radius"]
+    if spin < 0:
+        raise InputError("give the engine speed as a positive rate and its sense in "
+                         "rotor_sense (e.g. clockwise_from_rear)", key="given.spin")
+    if R <= 0:
+        raise InputError(f"turn_radius must be positive, got {num(R)} m", key="given.turn_radius")
+    if v < 0:
+        raise InputError("speed must be positive (the aeroplane flies forward)",
+                         key="given.speed")
+    sense = given.word("rotor_sense")
+    if sense is None and "effect" in find:
+        raise InputError("the effect needs the engine's sense: rotor_sense, one of "
+                         f"{', '.join(V.AEROPLANE_SENSES)}", key="given.rotor_sense")
+    turn = given.word("turn", "left")
+
+    work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
+    work.text("aeroplane axes: x forward (toward the nose), y to the left (looking forward), "
+              "z up. The engine's axis lies fore and aft. A rotation that looks clockwise to an "
+              "observer has its vector pointing away from the observer (right-hand rule).")
+    work.text("couple on the rotor C = omega_p x H (Eq. 11.29); the aeroplane feels the reactive "
+              "couple -C. About -y it raises the nose; about +y it dips it.")
+
+    direction = V.spin_direction(sense) if sense else 1.0
+    work.section("Engine and propeller")
+    work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotating parts")
+    work.step("omega", value=spin, unit="rad/s", note="engine speed")
+    work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin, "kg m^2/s")
+    H = V.scale(J * spin * direction, V.FORWARD)
+    if sense:
+        work.text(f"{sense.replace('_', ' ')}: the spin vector points "
+                  f"{'forward (toward the nose), +x' if direction > 0 else 'aft (toward the tail), -x'}"
+                  f"; H = {_vec(H, 'kg m^2/s')}")
+
+    work.section("Turn: precession about the vertical")
+    rate = work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
+    wp = V.steering_precession(v, R, turn)
+    work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
+              f"from above): omega_p = {_vec(wp, 'rad/s')}")
+
+    work.section("Gyroscopic couple, C = omega_p x H")
+    C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
+                  f"({qty(rate, 'rad/s')})", J * spin * rate, "N*m", ref="Eq. 11.29")
+    if not math.isfinite(C):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
+    work.answer("couple", "C", [C], "moment")
+    work.answer("precession", "omega_p", [rate], "rate")
+    if sense:
+        active = V.couple_on_rotor(wp, H)
+        reactive = V.reactive_couple(wp, H)
+        work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
+        work.text(f"reactive couple on the aeroplane -(omega_p x H) = {_vec(reactive, 'N m')}")
+        words = V.effect_of(wp, H, "aeroplane")
+        work.text(f"effect on the aeroplane: {words}")
+        work.answer("effect", "effect", [words], None)
+        work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")
+
+
+KIND = Kind(
+    name="aeroplane",
+    summary="an aeroplane's engine and propeller on a turn: gyroscopic couple and whether it "
+            "raises or dips the nose",
+    chapter="Eq. 11.29 in vector form, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
+    params=(
+        Param("spin", "rate", "omega", "engine (propeller) speed, a positive rate; its sense in "
+              "rotor_sense"),
+        Param("rotor_sense", "word", "sense", "sense of the engine seen from the front (nose) or "
+              "the rear (tail, the pilot's view)", choices=V.AEROPLANE_SENSES),
+        Param("speed", "speed", "v", "flying speed"),
+        Param("turn_radius", "length", "R", "radius of the turn"),
+        Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
+    ),
+    answers=(
+        AnswerSpec("couple", "moment", "C", "gyroscopic couple J omega v / R"),
+        AnswerSpec("precession", "rate", "omega_p", "rate of turn v / R"),
+        AnswerSpec("effect", None, "effect", "what the reactive couple does: 'raises the nose "
+                   "and dips the tail' or 'dips the nose and raises the tail'"),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"mass": "400 kg", "k_axial": "0.3 m", "spin": "2400 rpm",
+                  "rotor_sense": "clockwise_from_rear", "speed": "200 km/h",
+                  "turn_radius": "50 m", "turn": "left"},
+        "find": {"couple": "N*m", "effect": None},
+        "vary": {"speed": "[0.8, 1.2]"}}},
+)

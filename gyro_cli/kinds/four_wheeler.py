@@ -1,0 +1,213 @@
+"""A four-wheeled car or rail trolley on a curve: the vertical reaction of each wheel.
+
+The wheels roll, omega_w = v / r_w; each engine (motor) turns at G omega_w in
+the wheels' sense or against it (``engine_sense``). Turning at omega_p = v / R
+about the vertical:
+
+- weight: m g / 4 on every wheel (centre of mass midway between the axles and
+  between the wheels);
+- gyroscopic couple C_g = (sum I_w +- G sum I_E) v^2 / (R r_w) (Eq. 11.29,
+  reactive): with the wheels' own sense it overturns the vehicle outward; the
+  two wheel pairs, x apart, take it as +-C_g / (2 x) on each wheel;
+- centrifugal couple C_c = m v^2 h / R, taken as +-C_c / (2 x) on each wheel.
+
+Outer wheels: m g / 4 + C_g / (2 x) + C_c / (2 x); inner: the shares subtracted.
+The inner wheels leave the road when their reaction reaches zero:
+
+    v_lim^2 = m g x R / (2 (I_eq / r_w + m h)),  I_eq = sum I_w +- G sum I_E
+
+Reference: R.S. Khurmi and J.K. Gupta, "Theory of Machines", ch. 14 (stability
+of a four-wheel drive moving in a curved path); S.S. Rattan, ch. 14.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from ..given import Given
+from ..physics import vehicles as V
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    for key in ("mass", "g", "cg_height", "track", "wheel_radius", "turn_radius"):
+        if given[key] <= 0:
+            raise InputError(f"{key} must be positive, got {num(given[key])}", key=f"given.{key}")
+    for key in ("engine_inertia", "gear_ratio"):
+        if given[key] < 0:
+            raise InputError(f"{key} cannot be negative, got {num(given[key])}",
+                             key=f"given.{key}")
+    engines = given["engines"]
+    if engines < 0 or engines != int(engines):
+        raise InputError(f"engines is a count (0, 1, 2, ...), got {num(engines)}",
+                         key="given.engines")
+    m, g, h, x = given["mass"], given["g"], given["cg_height"], given["track"]
+    rw, R = given["wheel_radius"], given["turn_radius"]
+    IE, G, sense = given["engine_inertia"], given["gear_ratio"], given.word("engine_sense", "same")
+    sign = "+" if sense == "same" else "-"
+    wheel_total, wheel_text = _wheels(given)
+
+    work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
+    work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
+              "their spin vector points to the left (+y); each engine's points the same way "
+              "(engine_sense: same) or the other way (opposite).")
+    work.text("couple on the rotors C = omega_p x H (Eq. 11.29); the vehicle feels the "
+              "reactive couple -C. Couples are about the fore-and-aft axis, positive "
+              "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
+              "road's vertical forces on each wheel; the centre of mass is taken midway between "
+              "the axles and the wheels, so each pair shares equally.")
+    work.section("Rotating parts")
+    work.step("sum I_w", wheel_text, value=wheel_total, unit="kg*m^2")
+    work.step("sum I_E", "engines I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
+              "kg*m^2")
+    I_eq = work.step("I_eq", f"sum I_w {sign} G sum I_E", f"{qty(wheel_total, 'kg*m^2')} {sign} "
+                     f"{num(G)} ({qty(engines * IE, 'kg*m^2')})",
+                     wheel_total + (1 if sense == "same" else -1) * G * engines * IE, "kg*m^2")
+
+    if "speed" not in given and "limiting_speed" not in find:
+        raise InputError("give the speed (or ask only for limiting_speed)", key="given.speed")
+    if "speed" in given:
+        _at_speed(given, work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, sign, I_eq)
+    if "limiting_speed" in find:
+        _limit(work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, I_eq)
+
+
+def _wheels(given: Given) -> tuple[float, str]:
+    if ("wheel_inertia" in given) == ("axle_inertia" in given):
+        raise InputError("give wheel_inertia (each of the four wheels) or axle_inertia (each of "
+                         "the two axles with its pair of wheels and gears), one of them",
+                         key="given.wheel_inertia")
+    if "wheel_inertia" in given:
+        Iw = given["wheel_inertia"]
+        if Iw < 0:
+            raise InputError("wheel_inertia cannot be negative", key="given.wheel_inertia")
+        return 4 * Iw, f"4 I_w = 4 ({qty(Iw, 'kg*m^2')})"
+    Ia = given["axle_inertia"]
+    if Ia < 0:
+        raise InputError("axle_inertia cannot be negative", key="given.axle_inertia")
+    return 2 * Ia, f"2 I_axle = 2 ({qty(Ia, 'kg*m^2')})"
+
+
+def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, rw: float,
+              R: float, wheels: float, engines: float, G: float, sense: str, sign: str,
+              I_eq: float) -> None:
+    v = given["speed"]
+    if v < 0:
+        raise InputError("speed must be positive (the vehicle goes forward)", key="given.speed")
+    turn = given.word("turn", "left")
+    s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
+    if not all(math.isfinite(q) for q in (s.outer, s.inner, s.gyroscopic_couple,
+                                           s.centrifugal_couple, s.wheel_rate)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
+    work.section("Rates")
+    work.step("omega_w", "v / r_w", f"{qty(v, 'm/s')} / {qty(rw, 'm')}", s.wheel_rate, "rad/s")
+    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", s.precession, "rad/s")
+    work.section("Vector rule")
+    H = I_eq * s.wheel_rate
+    work.step("H", "I_eq omega_w", f"{qty(I_eq, 'kg*m^2')} ({qty(s.wheel_rate, 'rad/s')})", H,
+              "kg m^2/s", note="along +y (left) if positive")
+    wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
+    work.text(f"turning {turn}: omega_p = (0, 0, {num(wp[2])}) rad/s; omega_p x H = "
+              f"({num(V.couple_on_rotor(wp, Hv)[0])}, 0, 0) N m on the rotors; the reactive "
+              f"couple on the vehicle, ({num(V.reactive_couple(wp, Hv)[0])}, 0, 0) N m, "
+              + ("overturns it outward (lifts the inner wheels)" if H >= 0 else
+                 "presses the inner wheels down (the engines' reversed momentum dominates)"))
+    work.section("Couples and their shares on each wheel")
+    work.step("C_g", f"(sum I_w {sign} G sum I_E) v^2 / (R r_w)", f"{qty(I_eq, 'kg*m^2')} "
+              f"({qty(v, 'm/s')})^2 / ({qty(R, 'm')} {qty(rw, 'm')})", s.gyroscopic_couple,
+              "N*m", ref="Eq. 11.29")
+    work.step("C_c", "m v^2 h / R", f"{qty(m, 'kg')} ({qty(v, 'm/s')})^2 {qty(h, 'm')} / "
+              f"{qty(R, 'm')}", s.centrifugal_couple, "N*m")
+    work.step("P_w", "m g / 4", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) / 4", s.weight_share, "N",
+              note="weight, every wheel")
+    work.step("P_g", "C_g / (2 x)", f"{qty(s.gyroscopic_couple, 'N m')} / (2 ({qty(x, 'm')}))",
+              s.gyroscopic_share, "N", note="gyroscopic: + outer, - inner")
+    work.step("P_c", "C_c / (2 x)", f"{qty(s.centrifugal_couple, 'N m')} / (2 ({qty(x, 'm')}))",
+              s.centrifugal_share, "N", note="centrifugal: + outer, - inner")
+    work.step("R_outer", "P_w + P_g + P_c", f"{qty(s.weight_share, 'N')} + "
+              f"{qty(s.gyroscopic_share, 'N')} + {qty(s.centrifugal_share, 'N')}", s.outer, "N",
+              note="each outer wheel")
+    work.step("R_inner", "P_w - P_g - P_c", f"{qty(s.weight_share, 'N')} - "
+              f"{qty(s.gyroscopic_share, 'N')} - {qty(s.centrifugal_share, 'N')}", s.inner, "N",
+              note="each inner wheel")
+    if s.inner < 0:
+        work.warn(f"the inner wheels' reaction is negative ({qty(s.inner, 'N')}): at this speed "
+                  "the inner wheels leave the road (the vehicle overturns) unless held down")
+    if s.outer < 0:
+        work.warn(f"the outer wheels' reaction is negative ({qty(s.outer, 'N')}): they leave "
+                  "the road")
+    work.check(f"2 R_outer + 2 R_inner = {qty(2 * (s.outer + s.inner), 'N')} = m g = "
+               f"{qty(m * g, 'N')}; x (R_outer - R_inner) = "
+               f"{qty(x * (s.outer - s.inner), 'N m')} = C_g + C_c = "
+               f"{qty(s.gyroscopic_couple + s.centrifugal_couple, 'N m')}")
+    work.answer("wheel_reactions", "R", [s.outer, s.inner], "force", ["outer", "inner"])
+    work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
+    work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
+
+
+def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
+           wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
+    work.section("Limiting speed: the inner wheels' reaction falls to zero")
+    work.text("m g / 4 = (v^2 / (2 x R)) (I_eq / r_w + m h)")
+    v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
+    if v2 is None:
+        raise InputError(f"the inner wheels never leave the road: the engines' reversed "
+                         f"gyroscopic couple, I_eq / r_w = {qty(I_eq / rw, 'kg m')}, outweighs "
+                         f"the centrifugal m h = {qty(m * h, 'kg m')}", key="find.limiting_speed")
+    v = work.step("v_lim", "sqrt(m g x R / (2 (I_eq / r_w + m h)))",
+                  f"sqrt({qty(m, 'kg')} ({qty(g, 'm/s^2')}) {qty(x, 'm')} {qty(R, 'm')} / (2 "
+                  f"({qty(I_eq, 'kg*m^2')} / {qty(rw, 'm')} + {qty(m, 'kg')} {qty(h, 'm')})))",
+                  math.sqrt(v2), "m/s")
+    work.answer("limiting_speed", "v_lim", [v], "speed")
+
+
+KIND = Kind(
+    name="four_wheeler",
+    summary="a four-wheeled car or rail trolley on a curve: wheel reactions with their weight, "
+            "gyroscopic and centrifugal parts, and the speed at which the inner wheels lift",
+    chapter="Eq. 11.29, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
+    uses_body=False,
+    params=(
+        Param("mass", "mass", "m", "total mass of the vehicle"),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
+        Param("cg_height", "length", "h", "height of the centre of mass above the road or rails"),
+        Param("track", "length", "x", "track width: distance between the wheels of an axle "
+              "(between the rails)"),
+        Param("wheel_radius", "length", "r_w", "radius of the wheels"),
+        Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each of the four wheels"),
+        Param("axle_inertia", "inertia", "I_axle", "instead of wheel_inertia: each of the two "
+              "axles with its wheels and gears"),
+        Param("engine_inertia", "inertia", "I_E", "moment of inertia of each engine (motor) with "
+              "its rotating parts", default="0 kg*m^2"),
+        Param("engines", "dimensionless", "n_E", "number of engines (motors)", default="1"),
+        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1"),
+        Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
+              "engines' sense of rotation relative to the wheels", choices=("same", "opposite")),
+        Param("speed", "speed", "v", "speed of the vehicle"),
+        Param("turn_radius", "length", "R", "radius of the curve"),
+        Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
+              choices=("left", "right")),
+    ),
+    answers=(
+        AnswerSpec("wheel_reactions", "force", "R", "[outer, inner]: vertical reaction on each "
+                   "outer and each inner wheel"),
+        AnswerSpec("gyroscopic_couple", "moment", "C_g", "(sum I_w +- G sum I_E) v^2 / (R r_w), "
+                   "positive overturning outward"),
+        AnswerSpec("centrifugal_couple", "moment", "C_c", "m v^2 h / R"),
+        AnswerSpec("limiting_speed", "speed", "v_lim", "speed at which the inner wheels leave "
+                   "the road"),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"mass": "2500 kg", "cg_height": "0.9 m", "track": "1.5 m",
+                  "wheel_radius": "0.375 m", "axle_inertia": "18 kg*m^2",
+                  "engine_inertia": "12 kg*m^2", "engines": "2", "gear_ratio": "5",
+                  "engine_sense": "opposite", "speed": "24 km/h", "turn_radius": "30 m"},
+        "find": {"wheel_reactions": "N", "gyroscopic_couple": "N*m",
+                 "centrifugal_couple": "N*m"},
+        "vary": {"speed": "[0.8, 1.2]"}}},
+)

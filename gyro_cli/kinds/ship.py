@@ -1,0 +1,255 @@
+"""A ship's turbine rotor: the gyroscopic couple in steering, pitching and rolling.
+
+The rotor's axis lies fore and aft. Its angular momentum H = J omega s points
+forward or aft (``rotor_sense``, seen from the stern or the bow). The ship's
+motion turns H at omega_p, so the rotor needs the couple C = omega_p x H
+(Eq. 11.29 in vector form) and the ship feels the reactive couple -C:
+
+- steering on a circle of radius R at speed v: omega_p = v / R about the
+  vertical, C = J omega v / R, which pitches the ship;
+- pitching in simple harmonic motion, theta = phi sin(2 pi t / T):
+  omega_p,max = phi 2 pi / T, C_max = J omega omega_p,max, which turns (yaws)
+  the ship; alpha_max = phi (2 pi / T)^2;
+- rolling about the fore-and-aft axis: omega_p is parallel to H, so C = 0.
+
+Reference: R.S. Khurmi and J.K. Gupta, "Theory of Machines", ch. 14 (naval
+ship: steering, pitching, rolling); S.S. Rattan, "Theory of Machines", ch. 14.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from ..given import Given
+from ..physics import vehicles as V
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+
+
+def _vec(v: V.Vector, unit: str) -> str:
+    return "(" + ", ".join(num(c) if c else "0" for c in v) + f") {unit}".rstrip()
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    body.require("J")
+    J = body.J
+    if "spin" not in given:
+        raise InputError("give the rotor's speed `spin` (e.g. 1800 rpm)", key="given.spin")
+    spin = given["spin"]
+    if spin < 0:
+        raise InputError("give the rotor's speed as a positive rate and its sense in "
+                         "rotor_sense (e.g. clockwise_from_stern)", key="given.spin")
+    motion = given.word("motion", "steering")
+    sense = given.word("rotor_sense")
+    _refuse_foreign(given, motion)
+
+    work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
+    work.text("ship axes: x forward (toward the bow), y to port (left, looking forward), z up. "
+              "The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
+              "observer has its vector pointing away from the observer (right-hand rule).")
+    work.text("couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive "
+              "couple -C. About -y it raises the bow; about +z it turns the ship to port.")
+
+    if sense is None:
+        if "effect" in find:
+            raise InputError("the effect needs the rotor's sense: rotor_sense, one of "
+                             f"{', '.join(V.SHIP_SENSES)}", key="given.rotor_sense")
+        direction = 1.0
+        work.text("rotor_sense not given: the couple's size is found; its effect needs the sense")
+    else:
+        direction = V.spin_direction(sense)
+    work.section("Rotor")
+    work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotor")
+    work.step("omega", value=spin, unit="rad/s", note="rotor speed")
+    H = V.scale(J * spin * direction, V.FORWARD)
+    Hmag = work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
+                     "kg m^2/s")
+    if sense:
+        work.text(f"{sense.replace('_', ' ')}: the spin vector points "
+                  f"{'forward (toward the bow), +x' if direction > 0 else 'aft (toward the stern), -x'}"
+                  f"; H = {_vec(H, 'kg m^2/s')}")
+
+    if motion == "steering":
+        wp = _steering(given, work)
+    elif motion == "pitching":
+        wp = _pitching(given, find, work)
+    else:
+        wp = _rolling(given, work)
+
+    rate = V.norm(wp)
+    if motion == "rolling":
+        rate = abs(given["roll_rate"]) if "roll_rate" in given else None
+    work.section("Gyroscopic couple, C = omega_p x H")
+    if motion == "rolling":
+        work.text("omega_p lies along x, parallel to H: omega_p x H = 0. Rolling gives no "
+                  "gyroscopic couple.")
+        C = 0.0
+        work.step("C", "J omega omega_p sin(0)", value=0.0, unit="N*m")
+    else:
+        C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
+                      f"({qty(rate, 'rad/s')})", Hmag * rate, "N*m",
+                      ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
+                      else "")
+    if not (math.isfinite(C) and math.isfinite(Hmag)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
+    work.answer("couple", "C", [C], "moment")
+    if rate is not None:
+        work.answer("precession", "omega_p", [rate], "rate")
+    if sense:
+        active = V.couple_on_rotor(wp, H)
+        reactive = V.reactive_couple(wp, H)
+        work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
+        work.text(f"reactive couple on the ship -(omega_p x H) = {_vec(reactive, 'N m')}")
+        words = V.effect_of(wp, H, "ship")
+        work.text(f"effect on the ship: {words}")
+        work.answer("effect", "effect", [words], None)
+        work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")
+
+
+def _refuse_foreign(given: Given, motion: str) -> None:
+    """Keys of another motion are refused rather than silently ignored."""
+    belongs = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
+               "amplitude": "pitching", "period": "pitching", "bow": "pitching",
+               "pitch_rate": "pitching", "roll_rate": "rolling"}
+    for key, owner in belongs.items():
+        if key in given and owner != motion:
+            raise InputError(f"{key} belongs to `motion: {owner}`, but motion is {motion}",
+                             key=f"given.{key}")
+
+
+def _steering(given: Given, work: Work) -> V.Vector:
+    for key in ("speed", "turn_radius"):
+        if key not in given:
+            raise InputError(f"steering needs speed and turn_radius (omega_p = v / R)",
+                             key=f"given.{key}")
+    v, R = given["speed"], given["turn_radius"]
+    if R <= 0:
+        raise InputError(f"turn_radius must be positive, got {num(R)} m", key="given.turn_radius")
+    if v < 0:
+        raise InputError("speed must be positive (the ship goes ahead)", key="given.speed")
+    turn = given.word("turn", "left")
+    work.section("Steering: precession about the vertical")
+    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
+    wp = V.steering_precession(v, R, turn)
+    work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
+              f"seen from above): omega_p = {_vec(wp, 'rad/s')}, along "
+              f"{'+z' if turn == 'left' else '-z'}")
+    return wp
+
+
+def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
+    bow = given.word("bow")
+    if "pitch_rate" in given:
+        if "amplitude" in given or "period" in given:
+            raise InputError("give either pitch_rate (the rate at the instant) or amplitude and "
+                             "period (simple harmonic pitching), not both", key="given.pitch_rate")
+        for name in ("max_precession", "max_angular_acceleration"):
+            if name in find:
+                raise InputError(f"{name} needs amplitude and period of the pitching",
+                                 key=f"find.{name}")
+        rate = abs(given["pitch_rate"])
+        work.section("Pitching at a given rate")
+        work.step("omega_p", value=rate, unit="rad/s", note="pitching rate at the instant")
+    else:
+        for key in ("amplitude", "period"):
+            if key not in given:
+                raise InputError("pitching needs amplitude (the largest angle from the mean "
+                                 "position, half the swing between the extremes) and period, "
+                                 "or pitch_rate", key=f"given.{key}")
+        phi, T = given["amplitude"], given["period"]
+        if phi <= 0 or T <= 0:
+            key = "amplitude" if phi <= 0 else "period"
+            raise InputError(f"{key} must be positive", key=f"given.{key}")
+        if phi >= math.pi / 2:
+            raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
+                             "through 90 deg", key="given.amplitude")
+        p = V.pitching(phi, T)
+        work.section("Pitching: simple harmonic, theta = phi sin(omega_1 t)")
+        work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
+        work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
+        work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
+                  "position (cos = 1)")
+        rate = work.step("omega_p,max", "phi omega_1", f"{num(phi)} ({qty(p.frequency, 'rad/s')})",
+                         p.max_precession, "rad/s")
+        work.text("alpha = -phi omega_1^2 sin(omega_1 t): largest at the extremes")
+        work.step("alpha_max", "phi omega_1^2", f"{num(phi)} ({qty(p.frequency, 'rad/s')})^2",
+                  p.max_acceleration, "rad/s^2")
+        work.answer("max_precession", "omega_p,max", [p.max_precession], "rate")
+        work.answer("max_angular_acceleration", "alpha_max", [p.max_acceleration],
+                    "angular_acceleration")
+        work.text("at the extremes the pitching rate, and so the gyroscopic couple, is zero")
+    if bow is None:
+        if "effect" in find:
+            raise InputError("the effect needs bow: rising or falling at the instant",
+                             key="given.bow")
+        bow = "rising"
+        work.text("bow not given: the couple's size is the same rising or falling")
+    wp = V.pitching_precession(rate, bow)
+    work.text(f"bow {bow}: the rotation carries x {'toward +z' if bow == 'rising' else 'toward -z'}"
+              f", a rotation about {'-y' if bow == 'rising' else '+y'}: omega_p = "
+              f"{_vec(wp, 'rad/s')}")
+    return wp
+
+
+def _rolling(given: Given, work: Work) -> V.Vector:
+    rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
+    work.section("Rolling: precession about the fore-and-aft axis")
+    if rate:
+        work.step("omega_p", value=rate, unit="rad/s", note="rolling rate")
+    else:
+        work.text("no roll_rate given: any rate will do, only its direction matters")
+    wp = V.rolling_precession(rate or 1.0)
+    work.text(f"omega_p along x: {_vec(wp, 'rad/s')}")
+    return wp
+
+
+KIND = Kind(
+    name="ship",
+    summary="a ship's fore-and-aft turbine rotor: gyroscopic couple and its effect in steering, "
+            "pitching (simple harmonic) and rolling",
+    chapter="Eq. 11.29 in vector form, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
+    params=(
+        Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)"),
+        Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
+              choices=V.SHIP_SENSES),
+        Param("motion", "word", "motion", "steering (default), pitching or rolling",
+              choices=("steering", "pitching", "rolling")),
+        Param("speed", "speed", "v", "ship's speed (steering)"),
+        Param("turn_radius", "length", "R", "radius of the turn (steering)"),
+        Param("turn", "word", "turn", "left (to port, default) or right (to starboard)",
+              choices=("left", "right")),
+        Param("amplitude", "angle", "phi", "pitching: largest angle from the mean position "
+              "(half the total swing)"),
+        Param("period", "time", "T", "pitching: period of the simple harmonic pitching"),
+        Param("pitch_rate", "rate", "omega_p", "pitching: the pitching rate at the instant "
+              "(instead of amplitude and period)"),
+        Param("bow", "word", "bow", "pitching: the bow rising or falling at the instant asked",
+              choices=("rising", "falling")),
+        Param("roll_rate", "rate", "omega_r", "rolling: the rolling rate (the couple is zero "
+              "whatever it is)"),
+    ),
+    answers=(
+        AnswerSpec("couple", "moment", "C", "gyroscopic couple J omega omega_p (the maximum in "
+                   "pitching; 0 in rolling)"),
+        AnswerSpec("precession", "rate", "omega_p", "precession rate used (the maximum in "
+                   "pitching)"),
+        AnswerSpec("max_precession", "rate", "omega_p,max", "pitching: largest pitching rate "
+                   "phi 2 pi / T"),
+        AnswerSpec("max_angular_acceleration", "angular_acceleration", "alpha_max",
+                   "pitching: largest angular acceleration phi (2 pi / T)^2"),
+        AnswerSpec("effect", None, "effect", "what the reactive couple does to the ship: "
+                   "'raises the bow and lowers the stern', 'turns the ship to starboard', "
+                   "'none' for rolling, ..."),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"mass": "8000 kg", "k_axial": "0.6 m", "spin": "1800 rpm",
+                  "rotor_sense": "clockwise_from_stern", "motion": "steering",
+                  "speed": "100 km/h", "turn_radius": "75 m", "turn": "left"},
+        "find": {"couple": "kN*m", "effect": None},
+        "vary": {"speed": "[0.8, 1.2]"}}},
+)

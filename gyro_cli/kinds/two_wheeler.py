@@ -1,0 +1,154 @@
+"""A motorcycle (or bicycle) on a curve: the heel that balances the overturning couples.
+
+The road wheels roll, omega_w = v / r_w, and the engine turns at G omega_w in
+the wheels' sense (``engine_sense: same``) or against it. Going forward, the
+wheels' spin vector points to the machine's left. Turning at omega_p = v / R
+about the vertical, the rotors need the couple omega_p x H, and the machine
+feels the reactive gyroscopic couple, which tends to overturn it outward:
+
+    C_g = (2 I_w +- G I_E) omega_w omega_p = (2 I_w +- G I_E) v^2 / (R r_w)
+
+The centrifugal (inertia) force m v^2 / R at the centre of mass, h above the
+road, gives the overturning couple C_c = m v^2 h / R. Heeled inward by theta,
+both are multiplied by cos(theta) (the spin axes tilt; G is h cos(theta) up),
+and the weight gives the balancing couple m g h sin(theta):
+
+    tan(theta) = (C_g + C_c) / (m g h)
+
+Reference: R.S. Khurmi and J.K. Gupta, "Theory of Machines", ch. 14 (stability
+of a two-wheel vehicle taking a turn); S.S. Rattan, "Theory of Machines", ch. 14.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from ..given import Given
+from ..physics import vehicles as V
+from ..spec import AnswerSpec, Kind, Param
+from ..work import Work, num, qty
+
+
+def positive(given: Given, *keys: str) -> None:
+    for key in keys:
+        if given[key] <= 0:
+            raise InputError(f"{key} must be positive, got {num(given[key])}", key=f"given.{key}")
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    positive(given, "mass", "g", "cg_height", "wheel_radius", "turn_radius")
+    for key in ("wheel_inertia", "engine_inertia", "gear_ratio", "speed"):
+        if given[key] < 0:
+            raise InputError(f"{key} cannot be negative, got {num(given[key])}",
+                             key=f"given.{key}")
+    m, g, h = given["mass"], given["g"], given["cg_height"]
+    Iw, rw, IE = given["wheel_inertia"], given["wheel_radius"], given["engine_inertia"]
+    G, sense = given["gear_ratio"], given.word("engine_sense", "same")
+    v, R = given["speed"], given["turn_radius"]
+    turn = given.word("turn", "left")
+    s = V.two_wheeler(m, g, h, Iw, rw, IE, G, sense, v, R)
+    sign = "+" if sense == "same" else "-"
+    if not all(math.isfinite(q) for q in (s.gyroscopic_couple, s.centrifugal_couple, m * g * h,
+                                           s.wheel_rate)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                               "precision (a product overflows); check the magnitudes and units",
+                               key="given")
+
+    work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
+    work.text("machine axes: x forward, y to the left, z up. Going forward the road wheels "
+              "roll: their spin vector points to the left (+y). The engine's points the same "
+              "way (engine_sense: same) or the other way (opposite).")
+    work.text("couple on the rotors C = omega_p x H (Eq. 11.29); the machine feels the reactive "
+              "couple -C. Couples below are about the fore-and-aft line through the contact "
+              "points, positive overturning the machine outward (away from the centre).")
+
+    work.section("Rates")
+    work.step("omega_w", "v / r_w", f"{qty(v, 'm/s')} / {qty(rw, 'm')}", s.wheel_rate, "rad/s",
+              note="road wheels (rolling)")
+    work.step("omega_E", "G omega_w", f"{num(G)} ({qty(s.wheel_rate, 'rad/s')})",
+              G * s.wheel_rate, "rad/s", note=f"engine, {sense} sense as the wheels")
+    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", s.precession, "rad/s",
+              note="precession about the vertical")
+
+    work.section("Vector rule (upright)")
+    H = s.gyroscopic_couple / s.precession if s.precession else 0.0
+    work.step("H", f"(2 I_w {sign} G I_E) omega_w", f"(2 ({qty(Iw, 'kg*m^2')}) {sign} {num(G)} "
+              f"({qty(IE, 'kg*m^2')})) ({qty(s.wheel_rate, 'rad/s')})",
+              (2 * Iw + (1 if sense == 'same' else -1) * G * IE) * s.wheel_rate, "kg m^2/s",
+              note="along +y (left) if positive")
+    wp = V.steering_precession(v, R, turn)
+    Hv = V.scale(H, V.LEFT)
+    work.text(f"turning {turn}: omega_p = (0, 0, {num(wp[2])}) rad/s; "
+              f"omega_p x H = ({num(V.couple_on_rotor(wp, Hv)[0])}, 0, 0) N m on the rotors; "
+              f"the reactive couple on the machine, ({num(V.reactive_couple(wp, Hv)[0])}, 0, 0) "
+              "N m, lifts the " + ("inner side: it overturns the machine outward"
+                                   if H >= 0 else "outer side: it leans the machine inward"))
+
+    work.section("Overturning couples, upright")
+    work.step("C_g", f"(2 I_w {sign} G I_E) v^2 / (R r_w)", f"(2 ({qty(Iw, 'kg*m^2')}) {sign} "
+              f"{num(G)} ({qty(IE, 'kg*m^2')})) ({qty(v, 'm/s')})^2 / ({qty(R, 'm')} "
+              f"{qty(rw, 'm')})", s.gyroscopic_couple, "N*m", ref="Eq. 11.29")
+    work.step("C_c", "m v^2 h / R", f"{qty(m, 'kg')} ({qty(v, 'm/s')})^2 {qty(h, 'm')} / "
+              f"{qty(R, 'm')}", s.centrifugal_couple, "N*m", note="centrifugal force m v^2 / R "
+              "at the centre of mass")
+
+    work.section("Heel: free body of the machine heeled inward by theta")
+    work.text("road: normal force N = m g up and friction F = m v^2 / R toward the centre, at "
+              "the contact; G at h sin(theta) inward and h cos(theta) up from it. Moments about "
+              "G along x: h (F cos(theta) - N sin(theta)) = dH/dt = -omega_p H cos(theta) (the "
+              "spin axes tilt by theta), that is")
+    work.text("m g h sin(theta) = (C_g + C_c) cos(theta)")
+    work.step("theta", "atan((C_g + C_c) / (m g h))", f"atan(({qty(s.gyroscopic_couple, 'N m')} "
+              f"+ {qty(s.centrifugal_couple, 'N m')}) / ({qty(m, 'kg')} {qty(g, 'm/s^2')} "
+              f"{qty(h, 'm')}))", math.degrees(s.heel), "deg")
+    if s.heel < 0:
+        work.warn("the engine's reversed gyroscopic couple outweighs the centrifugal one: the "
+                  "machine leans outward")
+    balance = m * g * h * math.sin(s.heel) - (s.gyroscopic_couple + s.centrifugal_couple) * \
+        math.cos(s.heel)
+    work.check(f"m g h sin(theta) - (C_g + C_c) cos(theta) = {qty(balance, 'N m')}")
+    work.answer("heel_angle", "theta", [s.heel], "angle")
+    work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
+    work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
+
+
+KIND = Kind(
+    name="two_wheeler",
+    summary="a motorcycle on a curve: gyroscopic and centrifugal overturning couples and the "
+            "heel that balances them",
+    chapter="Eq. 11.29, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
+    uses_body=False,
+    params=(
+        Param("mass", "mass", "m", "total mass of the machine with its rider"),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
+        Param("cg_height", "length", "h", "height of the centre of mass above the road, upright"),
+        Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each road wheel about "
+              "its axle"),
+        Param("wheel_radius", "length", "r_w", "radius of the road wheels"),
+        Param("engine_inertia", "inertia", "I_E", "moment of inertia of the engine's rotating "
+              "parts", default="0 kg*m^2"),
+        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1"),
+        Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
+              "engine's sense of rotation relative to the wheels", choices=("same", "opposite")),
+        Param("speed", "speed", "v", "speed of the machine"),
+        Param("turn_radius", "length", "R", "radius of the curve"),
+        Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
+              choices=("left", "right")),
+    ),
+    answers=(
+        AnswerSpec("heel_angle", "angle", "theta", "lean from the vertical, toward the centre, "
+                   "that balances both couples"),
+        AnswerSpec("gyroscopic_couple", "moment", "C_g", "gyroscopic overturning couple, "
+                   "upright, (2 I_w +- G I_E) v^2 / (R r_w)"),
+        AnswerSpec("centrifugal_couple", "moment", "C_c", "centrifugal overturning couple, "
+                   "upright, m v^2 h / R"),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"mass": "250 kg", "cg_height": "0.6 m", "wheel_inertia": "1 kg*m^2",
+                  "wheel_radius": "300 mm", "engine_inertia": "0.3 kg*m^2", "gear_ratio": "5",
+                  "engine_sense": "same", "speed": "90 km/h", "turn_radius": "50 m"},
+        "find": {"heel_angle": "deg", "gyroscopic_couple": "N*m", "centrifugal_couple": "N*m"},
+        "vary": {"speed": "[0.8, 1.2]"}}},
+)

@@ -1,0 +1,279 @@
+"""Gyroscopic effects on vehicles: ships, aeroplanes, two- and four-wheelers (plain floats).
+
+Vehicle axes, fixed in the vehicle: x forward (toward the bow or nose), y to the
+left (port), z up. A rotor of axial inertia J spinning at omega about its axis
+has angular momentum H = J omega s (s the unit spin vector, by the right-hand
+rule). When the vehicle turns at omega_p (the precession vector), H turns with
+it, and the moment that must act on the rotor is (Eq. 11.29, vector form)
+
+    C = dH/dt = omega_p x H            (the active gyroscopic couple, on the rotor)
+
+The rotor pushes back on its bearings, so the vehicle feels the reactive
+gyroscopic couple -C. Its effect is read off its components: about y it
+pitches the vehicle (a couple along -y raises the bow), about z it turns it
+(along +z to the left, to port), about x it heels it (along +x the port side
+rises).
+
+These are the rules of the engineering texts: R.S. Khurmi and J.K. Gupta,
+"Theory of Machines", ch. 14 (gyroscopic couple and precessional motion), and
+S.S. Rattan, "Theory of Machines", ch. 14, with the reactive couple on the
+vehicle. Magnitudes: C = J omega omega_p (ship, aeroplane); for pitching in
+simple harmonic motion theta = phi sin(omega_1 t), omega_1 = 2 pi / T:
+omega_p,max = phi omega_1 and alpha_max = phi omega_1^2.
+
+Two- and four-wheelers (same texts): the road wheels roll, omega_w = v / r_w;
+the engine turns at G omega_w, in the wheels' sense or opposite. With the
+precession v / R about the vertical, the gyroscopic couple is
+C_g = (n_w I_w +- G I_E) v^2 / (R r_w) (times cos(theta) for a machine heeled
+by theta), and the centrifugal couple about the ground line
+C_c = m v^2 h / R (times cos(theta)). The centrifugal couple always overturns
+the vehicle outward; the gyroscopic one does too when the net spin angular
+momentum has the wheels' own sense (going forward it points to the vehicle's
+left, whichever way the vehicle turns), and presses the inner wheels down when
+engines running against the wheels dominate.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+Vector = tuple[float, float, float]
+
+FORWARD: Vector = (1.0, 0.0, 0.0)
+LEFT: Vector = (0.0, 1.0, 0.0)
+UP: Vector = (0.0, 0.0, 1.0)
+
+
+def cross(a: Vector, b: Vector) -> Vector:
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def scale(k: float, a: Vector) -> Vector:
+    return (k * a[0], k * a[1], k * a[2])
+
+
+def norm(a: Vector) -> float:
+    return math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+
+
+# ---- the rotor's spin vector ----------------------------------------------------
+
+# rotor_sense words: the sense of rotation seen by an observer at one end of the
+# vehicle looking along its length. A rotation that looks clockwise to an observer
+# has its vector pointing away from the observer (right-hand rule).
+SHIP_SENSES = ("clockwise_from_stern", "counterclockwise_from_stern",
+               "clockwise_from_bow", "counterclockwise_from_bow")
+AEROPLANE_SENSES = ("clockwise_from_rear", "counterclockwise_from_rear",
+                    "clockwise_from_front", "counterclockwise_from_front")
+
+
+def spin_direction(sense: str) -> float:
+    """+1 if the spin vector points forward (+x), -1 if aft, from a rotor_sense word.
+
+    Seen from the stern (rear) the observer looks forward: clockwise points away,
+    forward. Seen from the bow (front) the observer looks aft: clockwise points aft.
+    """
+    turn, _, end = sense.partition("_from_")
+    if turn not in ("clockwise", "counterclockwise") or end not in ("stern", "rear", "bow",
+                                                                    "front"):
+        raise ValueError(f"not a rotor sense: {sense!r}")
+    away = 1.0 if turn == "clockwise" else -1.0
+    looking_forward = end in ("stern", "rear")
+    return away if looking_forward else -away
+
+
+def spin_vector(J: float, spin: float, sense: str) -> Vector:
+    """H = J omega s along the fore-and-aft axis (spin >= 0, its magnitude)."""
+    return scale(J * abs(spin) * spin_direction(sense), FORWARD)
+
+
+# ---- the precession vector ------------------------------------------------------
+
+def steering_precession(speed: float, radius: float, turn: str) -> Vector:
+    """Turning on a circle: omega_p = v / R about +z for a left turn, -z for a right one."""
+    rate = speed / radius
+    return scale(rate if turn == "left" else -rate, UP)
+
+
+def pitching_precession(rate: float, bow: str) -> Vector:
+    """Pitching at |rate|: the bow rising turns x toward z, a rotation about -y."""
+    return scale(-abs(rate) if bow == "rising" else abs(rate), LEFT)
+
+
+def rolling_precession(rate: float) -> Vector:
+    """Rolling: about the fore-and-aft axis x, parallel to the spin axis."""
+    return scale(rate, FORWARD)
+
+
+def couple_on_rotor(precession: Vector, H: Vector) -> Vector:
+    """The active gyroscopic couple C = omega_p x H (Eq. 11.29 in vector form)."""
+    return cross(precession, H)
+
+
+def reactive_couple(precession: Vector, H: Vector) -> Vector:
+    """The couple the rotor exerts on the vehicle through its bearings: -(omega_p x H)."""
+    return scale(-1.0, couple_on_rotor(precession, H))
+
+
+# ---- effect words ---------------------------------------------------------------
+
+ENDS = {"ship": ("bow", "stern"), "aeroplane": ("nose", "tail")}
+
+
+def effect(couple: Vector, vehicle: str, tol: float = 1e-12) -> str:
+    """Words for what the reactive couple on the vehicle does; "none" if it is zero.
+
+    Pitch (about y): a rotation about -y lifts the front. Yaw (about z): about +z
+    turns the vehicle left (to port). Roll (about x): about +x lifts the left
+    (port) side.
+    """
+    size = norm(couple)
+    if size == 0 or not math.isfinite(size):
+        return "none"
+    x, y, z = (c / size for c in couple)
+    front, back = ENDS[vehicle]
+    words = []
+    if abs(y) > tol:
+        if vehicle == "ship":
+            words.append("raises the bow and lowers the stern" if y < 0 else
+                         "lowers the bow and raises the stern")
+        else:
+            words.append("raises the nose and dips the tail" if y < 0 else
+                         "dips the nose and raises the tail")
+    if abs(z) > tol:
+        if vehicle == "ship":
+            words.append("turns the ship to port" if z > 0 else "turns the ship to starboard")
+        else:
+            words.append("turns the nose to the left" if z > 0 else
+                         "turns the nose to the right")
+    if abs(x) > tol:
+        side = ("port", "starboard") if vehicle == "ship" else ("left wing", "right wing")
+        words.append(f"lifts the {side[0]} side and dips the {side[1]}" if x > 0 else
+                     f"lifts the {side[1]} side and dips the {side[0]}")
+    return "; ".join(words) if words else "none"
+
+
+def direction(v: Vector) -> Vector | None:
+    """The unit vector along v, exact for overflowing (inf) or underflowing (tiny) v; None if 0."""
+    if any(math.isinf(c) for c in v):
+        v = tuple(math.copysign(1.0, c) if math.isinf(c) else 0.0 for c in v)
+    big = max(abs(c) for c in v)
+    if big == 0 or not math.isfinite(big):
+        return None
+    v = (v[0] / big, v[1] / big, v[2] / big)
+    size = norm(v)
+    return (v[0] / size, v[1] / size, v[2] / size)
+
+
+def effect_of(precession: Vector, H: Vector, vehicle: str) -> str:
+    """The effect words of -(omega_p x H) from the directions alone, so that extreme
+    magnitudes cannot change the words; "none" if either vector is zero."""
+    p, h = direction(precession), direction(H)
+    if p is None or h is None:
+        return "none"
+    return effect(reactive_couple(p, h), vehicle)
+
+
+# ---- ship pitching (simple harmonic) ---------------------------------------------
+
+@dataclass(frozen=True)
+class Pitching:
+    """theta = phi sin(omega_1 t): frequency, largest pitching rate and acceleration."""
+
+    frequency: float          # omega_1 = 2 pi / T
+    max_precession: float     # phi omega_1
+    max_acceleration: float   # phi omega_1^2
+
+
+def pitching(amplitude: float, period: float) -> Pitching:
+    w1 = 2 * math.pi / period
+    return Pitching(w1, amplitude * w1, amplitude * w1 * w1)
+
+
+# ---- two-wheeler ----------------------------------------------------------------
+
+def spin_momentum(wheel_inertia_total: float, engine_inertia_total: float, gear_ratio: float,
+                  engine_sense: str, wheel_rate: float) -> float:
+    """(sum I_w +- G sum I_E) omega_w: positive in the wheels' own sense."""
+    sign = 1.0 if engine_sense == "same" else -1.0
+    return (wheel_inertia_total + sign * gear_ratio * engine_inertia_total) * wheel_rate
+
+
+@dataclass(frozen=True)
+class TwoWheeler:
+    """Upright couples and the heel that balances them, SI."""
+
+    wheel_rate: float         # omega_w = v / r_w
+    precession: float         # omega_p = v / R
+    gyroscopic_couple: float  # C_g upright = H omega_p
+    centrifugal_couple: float  # C_c upright = m v^2 h / R
+    heel: float               # theta from the vertical, toward the centre of the turn
+
+
+def two_wheeler(mass: float, g: float, cg_height: float, wheel_inertia: float,
+                wheel_radius: float, engine_inertia: float, gear_ratio: float,
+                engine_sense: str, speed: float, turn_radius: float) -> TwoWheeler:
+    """Heeled by theta, both couples scale by cos(theta) and the weight gives m g h sin(theta):
+
+    m g h sin(theta) = (C_g + C_c) cos(theta)  ->  tan(theta) = (C_g + C_c) / (m g h).
+    """
+    w = speed / wheel_radius
+    wp = speed / turn_radius
+    H = spin_momentum(2 * wheel_inertia, engine_inertia, gear_ratio, engine_sense, w)
+    Cg = H * wp
+    Cc = mass * speed * speed * cg_height / turn_radius
+    heel = math.atan2(Cg + Cc, mass * g * cg_height)
+    return TwoWheeler(w, wp, Cg, Cc, heel)
+
+
+# ---- four-wheeler ---------------------------------------------------------------
+
+@dataclass(frozen=True)
+class FourWheeler:
+    """Vertical reactions of each wheel, by cause, SI; outer then inner."""
+
+    wheel_rate: float
+    precession: float
+    gyroscopic_couple: float   # C_g = H omega_p, positive overturning outward
+    centrifugal_couple: float  # C_c = m v^2 h / R
+    weight_share: float        # m g / 4 on every wheel
+    gyroscopic_share: float    # C_g / (2 x): + on each outer wheel, - on each inner
+    centrifugal_share: float   # C_c / (2 x)
+
+    @property
+    def outer(self) -> float:
+        return self.weight_share + self.gyroscopic_share + self.centrifugal_share
+
+    @property
+    def inner(self) -> float:
+        return self.weight_share - self.gyroscopic_share - self.centrifugal_share
+
+
+def four_wheeler(mass: float, g: float, cg_height: float, track: float, wheel_radius: float,
+                 wheel_inertia_total: float, engine_inertia_total: float, gear_ratio: float,
+                 engine_sense: str, speed: float, turn_radius: float) -> FourWheeler:
+    """Each couple is taken by the outer and inner wheel pairs, x apart: P = C / x per
+    pair, C / (2 x) per wheel; the weight is shared equally by the four wheels."""
+    w = speed / wheel_radius
+    wp = speed / turn_radius
+    H = spin_momentum(wheel_inertia_total, engine_inertia_total, gear_ratio, engine_sense, w)
+    Cg = H * wp
+    Cc = mass * speed * speed * cg_height / turn_radius
+    return FourWheeler(w, wp, Cg, Cc, mass * g / 4, Cg / (2 * track), Cc / (2 * track))
+
+
+def limiting_speed_squared(mass: float, g: float, cg_height: float, track: float,
+                           wheel_radius: float, wheel_inertia_total: float,
+                           engine_inertia_total: float, gear_ratio: float, engine_sense: str,
+                           turn_radius: float) -> float | None:
+    """v^2 at which the inner wheels' reaction falls to zero; None if it never does.
+
+    m g / 4 = (v^2 / (2 x R)) (I_eq / r_w + m h),  I_eq = sum I_w +- G sum I_E.
+    """
+    sign = 1.0 if engine_sense == "same" else -1.0
+    per_v2 = ((wheel_inertia_total + sign * gear_ratio * engine_inertia_total) / wheel_radius
+              + mass * cg_height)
+    if per_v2 <= 0:
+        return None
+    return mass * g * track * turn_radius / (2 * per_v2)
