@@ -16,11 +16,11 @@ from __future__ import annotations
 
 import math
 
-from ..errors import InputError
-from ..given import Given
+from ..core.errors import InputError
+from ..core.given import Given
 from ..physics import vehicles as V
-from ..spec import AnswerSpec, Kind, Param
-from ..work import Work, num, qty
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
 
 
 def _vec(v: V.Vector, unit: str) -> str:
