@@ -188,6 +188,19 @@ def test_hibbeler_football_by_hand(run, problems_dir):
     assert a["omega_angle"][0] == pytest.approx(math.atan(2.598076 / 4.5), rel=1e-6)
 
 
+def test_hibbeler_21_72_football_by_hand(run, problems_dir):
+    # I_z = m k_z^2 = 0.25 (0.042)^2 = 4.41e-4, I = m k_y^2 = 0.25 (0.13)^2 = 4.225e-3 kg m^2.
+    # H_G = I_z omega_z / cos(theta) = 4.41e-4 (15) / 0.766044 = 8.6353e-3 kg m^2/s;
+    # phidot = H_G / I = 2.0439 rad/s; psidot = omega_z - phidot cos(theta) = 13.434 rad/s.
+    a = answers_of(run, problems_dir / "torque_free_football_21_72.yaml")
+    Iz, I = 0.25 * 0.042 ** 2, 0.25 * 0.13 ** 2
+    H = Iz * 15 / math.cos(math.radians(40))
+    assert a["angular_momentum"][0] == pytest.approx(H, rel=1e-12)
+    assert a["precession"][0] == pytest.approx(H / I, rel=1e-12)
+    assert a["precession"][0] == pytest.approx(2.044, abs=5e-4)
+    assert a["spin"][0] == pytest.approx(15 - H / I * math.cos(math.radians(40)), rel=1e-12)
+
+
 def test_rigid_earth_euler_period_by_hand(run, problems_dir):
     # Euler: the figure sees the rotation axis go round in (A / (C - A)) sidereal days
     # = 1 / 0.00328 = 304.88 sidereal days = 304.05 days of 86400 s, retrograde (oblate).
@@ -294,6 +307,10 @@ BAD = {
                         ["given.I_pivot", "centre of mass"]),
     "k without mass": (tf("omega: 1 rad/s\n  omega_angle: 10 deg",
                           "k_axial: 0.1 m\n  k_cg: 0.2 m"), ["given.mass"]),
+    "overflow": (tf("precession: 1e308 rad/s\n  spin: 1e308 rad/s"),
+                 ["given.precession", "overflow or underflow"]),
+    "underflow": (tf("omega: 1e-310 rad/s\n  omega_angle: 30 deg"),
+                  ["given.omega", "overflow or underflow"]),
     "rate as angle": (tf("omega: 10 deg\n  omega_angle: 10 deg"), ["given.omega", "rate"]),
 }
 

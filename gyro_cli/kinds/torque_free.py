@@ -41,6 +41,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                "J": "J" if "J" in given else "k_axial" if "k_axial" in given else "shape"
                }.get(err.key, err.key)
         raise InputError(err.message, key=f"given.{key}") from None
+    _representable(state, known)
 
     work.section("Conventions")
     work.text("No moment about the centre of mass G: H is fixed in space. Z: along H; k: the "
@@ -53,6 +54,19 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "tan(beta),  psidot = (I - J) / I omega_z")
     _route(J, I, known, state, work)
     _results(J, I, state, work)
+
+
+def _representable(s: FreeMotion, known: dict[str, float]) -> None:
+    """Refuse data whose rates or periods overflow or underflow double precision."""
+    try:
+        values = (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
+                  s.precession_period, s.body_wobble_period)
+    except ArithmeticError:
+        values = (math.nan,)
+    if not all(math.isfinite(v) and v != 0 for v in values):
+        raise InputError("these rates and inertias overflow or underflow double precision (a "
+                         "rate, H or a period is not a finite non-zero number): check the "
+                         "magnitudes and units", key=f"given.{next(iter(known))}")
 
 
 def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
