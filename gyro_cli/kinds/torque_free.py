@@ -20,6 +20,10 @@ from ..spec import AnswerSpec, Kind, Param
 from ..work import Work, num, qty
 
 
+WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
+         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot"}
+
+
 def _deg(angle: float) -> str:
     return f"{num(math.degrees(angle))} deg"
 
@@ -45,13 +49,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section("Conventions")
     work.text("No moment about the centre of mass G: H is fixed in space. Z: along H; k: the "
-              "symmetry axis, taken on the side of H (H . k > 0), so omega_z > 0 and theta, "
-              "beta < 90 deg. z-x-z Euler angles as in the chapter (Eqs. 11.5-11.8): phi about "
+              "symmetry axis, taken on the side of H, so that H has a positive component "
+              "along k; then omega_z > 0 and theta, beta < 90 deg. z-x-z Euler angles as in "
+              "the chapter (Eqs. 11.5-11.8): phi about "
               "Z, theta from Z to k, psi about k; omega = phidot Z + psidot k, "
               "omega_z = psidot + phidot cos(theta).")
-    work.text("H . k = J omega_z = H cos(theta);  across k: I omega_e = H sin(theta), "
-              "omega_e = phidot sin(theta)  =>  phidot = H / I,  tan(theta) = (I / J) "
-              "tan(beta),  psidot = (I - J) / I omega_z")
+    work.text("Along k: J omega_z = H cos(theta); across k: I omega_e = H sin(theta) with "
+              "omega_e = phidot sin(theta). Hence phidot = H / I, tan(theta) = (I / J) "
+              "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")
     _route(J, I, known, state, work)
     _results(J, I, state, work)
 
@@ -71,7 +76,7 @@ def _representable(s: FreeMotion, known: dict[str, float]) -> None:
 
 def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
     """The steps that turn the two given quantities into omega_z and beta."""
-    work.section(f"The motion from {' and '.join(known)}")
+    work.section(f"The motion from {' and '.join(WORDS[k] for k in known)}")
     Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
     if "nutation_angle" in known:
         work.step("beta", "atan((J / I) tan(theta))", f"atan(({Jt} / {It}) tan("
@@ -154,8 +159,8 @@ def _results(J: float, I: float, s: FreeMotion, work: Work) -> None:
                f"{num(s.spin + s.precession * math.cos(theta))} rad/s (Eq. 11.8)")
     work.check(f"omega_e = phidot sin(theta): {num(we)} = "
                f"{num(s.precession * math.sin(theta))} rad/s")
-    work.check(f"H . k = J omega_z = {num(J * wz)} = H cos(theta) = {num(H * math.cos(theta))} "
-               "kg m^2/s")
+    work.check(f"H along k: J omega_z = {num(J * wz)} kg m^2/s, H cos(theta) = "
+               f"{num(H * math.cos(theta))} kg m^2/s")
 
     work.answer("precession", "phidot", [s.precession], "rate")
     work.answer("spin", "psidot", [s.spin], "rate")
