@@ -87,7 +87,8 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
     angle = "omega_angle" in known or "nutation_angle" in known
     axial = "axial_rate" in known or "spin" in known
     if angle and axial:
-        pass  # beta and omega_z are both above
+        if "omega_angle" in known and "axial_rate" in known:
+            work.text("beta and omega_z are given: together with J and I they fix the motion")
     elif angle and "omega" in known:
         work.step("omega_z", "omega cos(beta)", f"{qty(known['omega'], 'rad/s')} cos("
                   f"{_deg(s.omega_angle)})", s.axial_rate, "rad/s")
@@ -107,8 +108,8 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
         work.text("H^2 = (J omega_z)^2 + (I omega_e)^2 = J^2 omega^2 + (I^2 - J^2) omega^2 "
                   "sin^2(beta), with H = I phidot")
         work.step("beta", "asin(sqrt(((I phidot)^2 - (J omega)^2) / ((I^2 - J^2) omega^2)))",
-                  f"asin(sqrt((({It}) ({qty(p, 'rad/s')}))^2 - (({Jt}) ({qty(w, 'rad/s')}))"
-                  f"^2) / (({It})^2 - ({Jt})^2) ({qty(w, 'rad/s')})^2))",
+                  f"asin(sqrt(((({It}) ({qty(p, 'rad/s')}))^2 - (({Jt}) ({qty(w, 'rad/s')}))"
+                  f"^2) / ((({It})^2 - ({Jt})^2) ({qty(w, 'rad/s')})^2)))",
                   math.degrees(s.omega_angle), "deg")
         work.step("omega_z", "omega cos(beta)", value=s.axial_rate, unit="rad/s")
     elif axial:  # with precession
