@@ -348,3 +348,18 @@ def test_latex_of_tiny_angles_has_one_superscript(run, problems_dir):
         assert result.exit_code == 0, result.output
         assert "}^{\\circ}" in result.stdout
         assert "10^{-5}^" not in result.stdout and "10^{-7}^" not in result.stdout
+
+
+def test_free_cone_uses_i_about_its_centre_of_mass(run, write):
+    # solid cone, m = 1 kg, r = 0.1 m, h = 0.3 m: J = 3 m r^2 / 10 = 0.003,
+    # I_G = m (3 r^2 / 20 + 3 h^2 / 80) = 0.0015 + 0.003375 = 0.004875 kg m^2 (not about the apex).
+    # omega = 10 rad/s at beta = 10 deg: omega_z = 9.8481, omega_e = 1.7365 rad/s,
+    # H = sqrt((0.003 omega_z)^2 + (0.004875 omega_e)^2), phidot = H / I_G.
+    path = write("id: x\nkind: torque_free\ngiven:\n  mass: 1 kg\n  shape: cone\n  radius: 0.1 m\n"
+                 "  height: 0.3 m\n  omega: 10 rad/s\n  omega_angle: 10 deg\n"
+                 "find:\n  precession: rad/s\n")
+    result = run("solve", "--format", "json", path)
+    assert result.exit_code == 0, result.output
+    got = json.loads(result.stdout)["answers"]["precession"]["si_values"][0]
+    wz, we = 10 * math.cos(math.radians(10)), 10 * math.sin(math.radians(10))
+    assert got == pytest.approx(math.hypot(0.003 * wz, 0.004875 * we) / 0.004875, rel=1e-12)

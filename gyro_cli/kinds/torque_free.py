@@ -37,6 +37,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              "shape)", key=f"given.{key}")
     body.require("J", "I_cg")
     J, I = body.J, body.I_cg
+    if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
+        work.text("I about the apex is not used: a free body turns about its centre of mass, "
+                  "so I = I_G")
     known = {k: given[k] for k in MOTION_KEYS if k in given}
     try:
         state = solve_motion(J, I, known)
