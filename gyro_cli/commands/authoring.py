@@ -34,6 +34,7 @@ EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
     "rate": "1800 rpm", "angle": "30 deg", "inertia": "0.01 kg m^2", "moment": "2 N m",
     "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
+    "angular_momentum": "2 kg m^2/s",
 }
 ANSWER_UNIT = {"rate": "rpm", "angle": "deg"}
 

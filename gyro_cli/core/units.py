@@ -27,13 +27,15 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "moment": ("[mass] * [length] ** 2 / [time] ** 2", "N*m", "a moment like '2 N m'"),
     "angular_acceleration": ("1 / [time] ** 2", "rad/s^2", "an angular acceleration like "
                              "'0.01 rad/s^2'"),
+    "angular_momentum": ("[mass] * [length] ** 2 / [time]", "kg*m^2/s",
+                         "an angular momentum like '2 kg m^2/s'"),
     "speed": ("[length] / [time]", "m/s", "a speed like '10 m/s'"),
     "time": ("[time]", "s", "a time like '2 s'"),
     "dimensionless": ("", "", "a plain number"),
 }
 
 # How SI units are written in worked answers.
-SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m"}
+SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}
 
 ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",

@@ -25,7 +25,7 @@ def num(x: float, sig: int = SIG) -> str:
 
 def qty(x: float, unit: str) -> str:
     """A number with its unit, for substitutions: ``0.8340 N``."""
-    unit = {"kg*m^2": "kg m^2", "N*m": "N m"}.get(unit, unit)
+    unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(unit, unit)
     return f"{num(x)} {unit}".rstrip()
 
 

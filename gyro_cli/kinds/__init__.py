@@ -21,6 +21,7 @@ REGISTRY: dict[str, str] = {
     "aeroplane": "gyro_cli.kinds.aeroplane",
     "two_wheeler": "gyro_cli.kinds.two_wheeler",
     "four_wheeler": "gyro_cli.kinds.four_wheeler",
+    "torque_free": "gyro_cli.kinds.torque_free",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

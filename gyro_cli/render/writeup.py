@@ -439,7 +439,7 @@ def markdown(result: Result) -> str:
     if solution.warnings:
         lines += ["", "### Warnings", ""]
         lines += [f"- {w}" for w in solution.warnings]
-    return "\n".join(lines) + "\n"
+    return _one_superscript("\n".join(lines) + "\n")
 
 
 def _md_cell(text: str) -> str:
@@ -503,7 +503,16 @@ def latex(result: Result) -> str:
         lines += ["", "\\paragraph{Warnings.}", "", "\\begin{itemize}"]
         lines += [f"  \\item {_latex_prose(w, inline)}" for w in solution.warnings]
         lines.append("\\end{itemize}")
-    return "\n".join(lines) + "\n"
+    return _one_superscript("\n".join(lines) + "\n")
+
+
+_DOUBLE_SUPERSCRIPT = re.compile(r"(\d[\d.]*\\times10\^\{-?\d+\})\^\{\\circ\}")
+
+
+def _one_superscript(text: str) -> str:
+    """Brace a number in powers of ten before a degree sign: ``a\\times10^{-5}^{\\circ}``
+    is a double superscript, which TeX rejects; ``{a\\times10^{-5}}^{\\circ}`` is not."""
+    return _DOUBLE_SUPERSCRIPT.sub(r"{\1}^{\\circ}", text)
 
 
 def _latex_prose(text: str, inline: tuple[str, str]) -> str:

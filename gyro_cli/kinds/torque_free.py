@@ -1,0 +1,228 @@
+"""Torque-free motion of an axisymmetric body: space capsule, satellite, football, the Earth.
+
+No moment acts about the centre of mass, so H is fixed in space. The motion is
+fixed by J, I (about the centre of mass) and any two of omega, omega_angle
+(beta), nutation_angle (theta), axial_rate (omega_z), precession (phidot) and
+spin (psidot). The relations, their derivation and the sign conventions are in
+``gyro_cli.physics.torque_free``:
+
+    tan(theta) = (I / J) tan(beta),  phidot = H / I,  psidot = (I - J) / I * omega_z.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+
+
+WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
+         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot"}
+
+
+def _deg(angle: float) -> str:
+    return f"{num(math.degrees(angle))} deg"
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    for key in ("I_pivot", "k_pivot", "cg_distance"):
+        if key in given:
+            raise InputError(f"{key} does not apply: a torque-free body turns about its centre "
+                             "of mass, so give the transverse inertia about it (I_cg, k_cg or a "
+                             "shape)", key=f"given.{key}")
+    body.require("J", "I_cg")
+    J, I = body.J, body.I_cg
+    if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
+        work.text("I about the apex is not used: a free body turns about its centre of mass, "
+                  "so I = I_G")
+    known = {k: given[k] for k in MOTION_KEYS if k in given}
+    try:
+        state = solve_motion(J, I, known)
+    except TorqueFreeError as err:
+        key = {"I_cg": "I_cg" if "I_cg" in given else "k_cg" if "k_cg" in given else "shape",
+               "J": "J" if "J" in given else "k_axial" if "k_axial" in given else "shape"
+               }.get(err.key, err.key)
+        raise InputError(err.message, key=f"given.{key}") from None
+    _representable(state, known)
+
+    work.section("Conventions")
+    work.text("No moment about the centre of mass G: H is fixed in space. Z: along H; k: the "
+              "symmetry axis, taken on the side of H, so that H has a positive component "
+              "along k; then omega_z > 0 and theta, beta < 90 deg. z-x-z Euler angles as in "
+              "the chapter (Eqs. 11.5-11.8): phi about "
+              "Z, theta from Z to k, psi about k; omega = phidot Z + psidot k, "
+              "omega_z = psidot + phidot cos(theta).")
+    work.text("Along k: J omega_z = H cos(theta); across k: I omega_e = H sin(theta) with "
+              "omega_e = phidot sin(theta). Hence phidot = H / I, tan(theta) = (I / J) "
+              "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")
+    _route(J, I, known, state, work)
+    _results(J, I, state, work)
+
+
+def _representable(s: FreeMotion, known: dict[str, float]) -> None:
+    """Refuse data whose rates or periods overflow or underflow double precision."""
+    try:
+        values = (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
+                  s.precession_period, s.body_wobble_period)
+    except ArithmeticError:
+        values = (math.nan,)
+    if not all(math.isfinite(v) and v != 0 for v in values):
+        raise InputError("these rates and inertias overflow or underflow double precision (a "
+                         "rate, H or a period is not a finite non-zero number): check the "
+                         "magnitudes and units", key=f"given.{next(iter(known))}")
+
+
+def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
+    """The steps that turn the two given quantities into omega_z and beta."""
+    work.section(f"The motion from {' and '.join(WORDS[k] for k in known)}")
+    Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
+    if "nutation_angle" in known:
+        work.step("beta", "atan((J / I) tan(theta))", f"atan(({Jt} / {It}) tan("
+                  f"{_deg(known['nutation_angle'])}))", math.degrees(s.omega_angle), "deg")
+    if "spin" in known:
+        work.step("omega_z", "I psidot / (I - J)", f"{It} ({qty(known['spin'], 'rad/s')}) / "
+                  f"({It} - {Jt})", s.axial_rate, "rad/s")
+    angle = "omega_angle" in known or "nutation_angle" in known
+    axial = "axial_rate" in known or "spin" in known
+    if angle and axial:
+        if "omega_angle" in known and "axial_rate" in known:
+            work.text("beta and omega_z are given: together with J and I they fix the motion")
+    elif angle and "omega" in known:
+        work.step("omega_z", "omega cos(beta)", f"{qty(known['omega'], 'rad/s')} cos("
+                  f"{_deg(s.omega_angle)})", s.axial_rate, "rad/s")
+    elif angle and "precession" in known:
+        if "nutation_angle" not in known:
+            work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan("
+                      f"{_deg(s.omega_angle)}))", math.degrees(s.nutation_angle), "deg")
+        p = qty(known["precession"], "rad/s")
+        work.step("omega_z", "I phidot cos(theta) / J", f"{It} ({p}) cos("
+                  f"{_deg(s.nutation_angle)}) / {Jt}", s.axial_rate, "rad/s",
+                  note="(H = I phidot, H cos(theta) = J omega_z)")
+    elif axial and "omega" in known:
+        work.step("beta", "acos(omega_z / omega)", f"acos({qty(s.axial_rate, 'rad/s')} / "
+                  f"{qty(known['omega'], 'rad/s')})", math.degrees(s.omega_angle), "deg")
+    elif "omega" in known:  # with precession
+        w, p = known["omega"], known["precession"]
+        work.text("H^2 = (J omega_z)^2 + (I omega_e)^2 = J^2 omega^2 + (I^2 - J^2) omega^2 "
+                  "sin^2(beta), with H = I phidot")
+        work.step("beta", "asin(sqrt(((I phidot)^2 - (J omega)^2) / ((I^2 - J^2) omega^2)))",
+                  f"asin(sqrt(((({It}) ({qty(p, 'rad/s')}))^2 - (({Jt}) ({qty(w, 'rad/s')}))"
+                  f"^2) / ((({It})^2 - ({Jt})^2) ({qty(w, 'rad/s')})^2)))",
+                  math.degrees(s.omega_angle), "deg")
+        work.step("omega_z", "omega cos(beta)", value=s.axial_rate, unit="rad/s")
+    elif axial:  # with precession
+        work.step("theta", "acos(J omega_z / (I phidot))", f"acos({Jt} "
+                  f"({qty(s.axial_rate, 'rad/s')}) / ({It} {qty(known['precession'], 'rad/s')}))",
+                  math.degrees(s.nutation_angle), "deg", note="(H cos(theta) = J omega_z)")
+        work.step("beta", "atan((J / I) tan(theta))", value=math.degrees(s.omega_angle),
+                  unit="deg")
+
+
+def _results(J: float, I: float, s: FreeMotion, work: Work) -> None:
+    work.section("Rates, angles and periods")
+    Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
+    beta, theta, wz, we = s.omega_angle, s.nutation_angle, s.axial_rate, s.transverse_rate
+    work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
+    work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
+              math.degrees(theta), "deg", note="angle from H to k")
+    work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
+    work.step("omega_e", "omega_z tan(beta)", f"{qty(wz, 'rad/s')} tan({_deg(beta)})", we,
+              "rad/s", note="across the axis")
+    work.step("omega", "sqrt(omega_z^2 + omega_e^2)", value=s.omega, unit="rad/s")
+    H = work.step("H", "sqrt((J omega_z)^2 + (I omega_e)^2)", f"sqrt(({Jt} "
+                  f"{qty(wz, 'rad/s')})^2 + ({It} {qty(we, 'rad/s')})^2)", s.angular_momentum,
+                  "kg m^2/s")
+    work.step("phidot", "H / I", f"{qty(H, 'kg m^2/s')} / {It}", s.precession, "rad/s",
+              note="precession of k about H")
+    work.step("psidot", "(I - J) / I omega_z", f"({It} - {Jt}) / {It} ({qty(wz, 'rad/s')})",
+              s.spin, "rad/s", note="spin relative to the precessing frame")
+    work.step("T_p", "2 pi / phidot", value=s.precession_period, unit="s",
+              note="period of the axis about H")
+    work.step("T_w", "2 pi / |psidot|", value=s.body_wobble_period, unit="s",
+              note="period of omega and H about k, seen in the body")
+    work.step("body cone", "beta", value=math.degrees(s.body_cone_angle), unit="deg",
+              note="semi-angle of the cone omega traces about k in the body")
+    work.step("space cone", "|theta - beta|", value=math.degrees(s.space_cone_angle), unit="deg",
+              note="semi-angle of the cone omega traces about H in space")
+    if s.motion == "direct":
+        work.text("I > J (prolate): theta > beta, psidot has the sense of phidot; the body "
+                  "cone rolls on the outside of the space cone: direct precession.")
+    else:
+        work.text("J > I (oblate): beta > theta, psidot is against phidot; the body cone rolls "
+                  "with the space cone inside it: retrograde precession.")
+    if J > 2 * I:
+        work.warn(f"J exceeds 2 I ({qty(J, 'kg*m^2')} > 2 x {qty(I, 'kg*m^2')}): allowed only "
+                  "within the 1% slack for rounded data")
+    work.check(f"omega_z = psidot + phidot cos(theta): {num(wz)} = {num(s.spin)} + "
+               f"{num(s.precession)} ({num(math.cos(theta))}) = "
+               f"{num(s.spin + s.precession * math.cos(theta))} rad/s (Eq. 11.8)")
+    work.check(f"omega_e = phidot sin(theta): {num(we)} = "
+               f"{num(s.precession * math.sin(theta))} rad/s")
+    work.check(f"H along k: J omega_z = {num(J * wz)} kg m^2/s, H cos(theta) = "
+               f"{num(H * math.cos(theta))} kg m^2/s")
+
+    work.answer("precession", "phidot", [s.precession], "rate")
+    work.answer("spin", "psidot", [s.spin], "rate")
+    work.answer("axial_rate", "omega_z", [wz], "rate")
+    work.answer("omega", "omega", [s.omega], "rate")
+    work.answer("nutation_angle", "theta", [theta], "angle")
+    work.answer("omega_angle", "beta", [beta], "angle")
+    work.answer("angular_momentum", "H", [H], "angular_momentum")
+    work.answer("precession_period", "T_p", [s.precession_period], "time")
+    work.answer("body_wobble_period", "T_w", [s.body_wobble_period], "time")
+    work.answer("body_cone_angle", "beta", [s.body_cone_angle], "angle")
+    work.answer("space_cone_angle", "|theta - beta|", [s.space_cone_angle], "angle")
+    work.answer("motion", "motion", [s.motion], None)
+
+
+KIND = Kind(
+    name="torque_free",
+    summary="axisymmetric body with no applied moment (space capsule, satellite, football, the "
+            "Earth's free wobble): precession, spin, cones and periods",
+    chapter="Eqs. 11.5-11.8 with H fixed; Euler's equations with no moment",
+    params=(
+        Param("omega", "rate", "omega", "magnitude of the angular velocity"),
+        Param("omega_angle", "angle", "beta", "angle between omega and the symmetry axis "
+              "(0 to 90 deg)"),
+        Param("nutation_angle", "angle", "theta", "angle between H and the symmetry axis "
+              "(0 to 90 deg)"),
+        Param("axial_rate", "rate", "omega_z", "component of omega along the symmetry axis "
+              "(positive)"),
+        Param("precession", "rate", "phidot", "rate of the symmetry axis about H (positive)"),
+        Param("spin", "rate", "psidot", "spin relative to the precessing frame: positive for "
+              "I > J, negative for J > I"),
+    ),
+    answers=(
+        AnswerSpec("precession", "rate", "phidot", "precession of the axis about H, H / I"),
+        AnswerSpec("spin", "rate", "psidot", "spin relative to the precessing frame, "
+                   "(I - J) / I omega_z"),
+        AnswerSpec("axial_rate", "rate", "omega_z", "component of omega along the axis"),
+        AnswerSpec("omega", "rate", "omega", "magnitude of the angular velocity"),
+        AnswerSpec("nutation_angle", "angle", "theta", "angle between H and the axis"),
+        AnswerSpec("omega_angle", "angle", "beta", "angle between omega and the axis"),
+        AnswerSpec("angular_momentum", "angular_momentum", "H", "magnitude of H about the "
+                   "centre of mass"),
+        AnswerSpec("precession_period", "time", "T_p", "2 pi / phidot: one turn of the axis "
+                   "about H"),
+        AnswerSpec("body_wobble_period", "time", "T_w", "2 pi / |psidot|: one turn of omega "
+                   "about the axis, seen in the body (Euler's period for the Earth)"),
+        AnswerSpec("body_cone_angle", "angle", "beta", "semi-angle of the body cone (omega "
+                   "about the axis)"),
+        AnswerSpec("space_cone_angle", "angle", "|theta - beta|", "semi-angle of the space "
+                   "cone (omega about H)"),
+        AnswerSpec("motion", None, "motion", "direct (prolate, I > J) or retrograde (oblate, "
+                   "J > I)"),
+    ),
+    solve=solve,
+    extra={"gravity": False, "example": {
+        "given": {"J": "100 kg m^2", "I_cg": "125 kg m^2", "nutation_angle": "20 deg",
+                  "spin": "1 rpm"},
+        "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",
+                 "motion": None},
+        "vary": {"nutation_angle": "[10 deg, 40 deg]"}}},
+)

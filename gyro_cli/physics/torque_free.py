@@ -1,0 +1,228 @@
+"""Torque-free motion of an axisymmetric rigid body, on plain floats.
+
+J is the moment of inertia about the symmetry axis k, I the transverse one,
+both about the centre of mass. With no moment about the centre of mass, H is
+fixed in space; take the inertial axis Z along H and the z-x-z Euler angles of
+the chapter (phi about Z, theta from Z to k, psi about k, Eqs. 11.5-11.8), so
+omega = phidot Z + thetadot n + psidot k and omega_z = psidot + phidot cos(theta).
+
+Components of H along k and along e (perpendicular to k in the plane of Z and
+k): H cos(theta) = J omega_z and H sin(theta) = I omega_e with
+omega_e = phidot sin(theta) (thetadot = 0). From these, for 0 < theta < 90 deg:
+
+    phidot = H / I                                   (precession of k about H)
+    tan(theta) = (I / J) tan(beta),  tan(beta) = omega_e / omega_z
+    psidot = omega_z - phidot cos(theta) = (I - J) / I * omega_z      (spin)
+    H^2 = J^2 omega_z^2 + I^2 omega_e^2
+
+(Meriam & Kraige, Dynamics, Art. 7/9; Hibbeler, Dynamics, Sec. 21.6;
+Beer & Johnston, Vector Mechanics, Sec. 18.10; Goldstein, Classical
+Mechanics, Sec. 5.6.) Euler's equations with no moment,
+I omega_x' = (I - J) omega_y omega_z, I omega_y' = (J - I) omega_z omega_x,
+J omega_z' = 0, turn omega about k in the body at the rate -psidot, so the
+body sees omega (and H) go round once in 2 pi / |psidot|: for the Earth,
+with (C - A) / A = 0.00328, Euler's period of about 305 days.
+
+omega lies in the plane of H and k, at beta from k (the body cone, semi-angle
+beta) and at |theta - beta| from H (the space cone). With I > J (prolate:
+a football, a long capsule) theta > beta, psidot and phidot have the same
+sense and the body cone rolls on the outside of the space cone: direct
+precession. With J > I (oblate: a disk, the Earth) beta > theta, psidot is
+negative and the body cone rolls with the space cone inside it: retrograde.
+
+Sign conventions: H is along +Z and k is taken on the side of H
+(H . k > 0), so omega_z, phidot, H, theta and beta are positive, with
+theta and beta below 90 deg; psidot carries the sign of I - J.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+# What may be given: two of these.
+MOTION_KEYS = ("omega", "omega_angle", "nutation_angle", "axial_rate", "precession", "spin")
+ANGLE_KEYS = ("omega_angle", "nutation_angle")
+
+
+class TorqueFreeError(ValueError):
+    """Data that fix no torque-free motion; ``key`` names the datum at fault."""
+
+    def __init__(self, message: str, key: str) -> None:
+        super().__init__(message)
+        self.message = message
+        self.key = key
+
+
+@dataclass(frozen=True)
+class FreeMotion:
+    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 < beta < 90 deg."""
+
+    J: float
+    I: float
+    axial_rate: float   # omega_z, along k
+    omega_angle: float  # beta, from k to omega
+
+    @property
+    def nutation_angle(self) -> float:
+        """theta from tan(theta) = (I / J) tan(beta), as atan2 (no overflow near 90 deg)."""
+        return math.atan2(self.I * math.sin(self.omega_angle), self.J * math.cos(self.omega_angle))
+
+    @property
+    def transverse_rate(self) -> float:
+        """omega_e = omega_z tan(beta), the part of omega across the axis."""
+        return self.axial_rate * math.tan(self.omega_angle)
+
+    @property
+    def omega(self) -> float:
+        return math.hypot(self.axial_rate, self.transverse_rate)
+
+    @property
+    def angular_momentum(self) -> float:
+        """H = sqrt((J omega_z)^2 + (I omega_e)^2)."""
+        return math.hypot(self.J * self.axial_rate, self.I * self.transverse_rate)
+
+    @property
+    def precession(self) -> float:
+        """phidot = H / I."""
+        return self.angular_momentum / self.I
+
+    @property
+    def spin(self) -> float:
+        """psidot = (I - J) / I omega_z: positive for I > J, negative for J > I."""
+        return (self.I - self.J) / self.I * self.axial_rate
+
+    @property
+    def precession_period(self) -> float:
+        return 2 * math.pi / self.precession
+
+    @property
+    def body_wobble_period(self) -> float:
+        """2 pi / |psidot|: the period of omega (and H) going round k, seen in the body."""
+        return 2 * math.pi / abs(self.spin)
+
+    @property
+    def body_cone_angle(self) -> float:
+        return self.omega_angle
+
+    @property
+    def space_cone_angle(self) -> float:
+        return abs(self.nutation_angle - self.omega_angle)
+
+    @property
+    def motion(self) -> str:
+        return "direct" if self.I > self.J else "retrograde"
+
+
+def omega_angle_from_nutation(J: float, I: float, theta: float) -> float:
+    """beta from tan(beta) = (J / I) tan(theta)."""
+    return math.atan2(J * math.sin(theta), I * math.cos(theta))
+
+
+def axial_rate_from_spin(J: float, I: float, spin: float) -> float:
+    """omega_z = I psidot / (I - J); TorqueFreeError if psidot has the wrong sign."""
+    if spin == 0:
+        raise TorqueFreeError("spin must not be zero: with J != I the body always spins "
+                              "relative to its precessing frame, psidot = (I - J) / I omega_z",
+                              "spin")
+    axial = I * spin / (I - J)
+    if axial <= 0:
+        shape, sign = (("prolate (I > J)", "positive") if I > J else
+                       ("oblate (J > I)", "negative"))
+        raise TorqueFreeError(f"spin must be {sign} for this {shape} body: psidot = (I - J) / I "
+                              "omega_z, with k taken on the side of H so that omega_z > 0 "
+                              f"({'direct' if I > J else 'retrograde'} precession)", "spin")
+    return axial
+
+
+def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
+    """The motion from exactly two of MOTION_KEYS (SI values); TorqueFreeError otherwise.
+
+    Every pair but two fixes one motion (no second root, since k is taken on
+    the side of H): omega_angle with nutation_angle, and axial_rate with spin,
+    are tied to each other by the inertias and fix no rate or no angle.
+    """
+    if J <= 0 or I <= 0:
+        raise TorqueFreeError("J and I must be positive", "J" if J <= 0 else "I_cg")
+    if math.isclose(J, I, rel_tol=1e-9):
+        raise TorqueFreeError("J = I: every axis through the centre of mass is principal, "
+                              "omega stays along H and there is no precession or wobble to find",
+                              "J")
+    keys = [k for k in MOTION_KEYS if k in known]
+    if len(keys) != 2:
+        extra = keys[2] if len(keys) > 2 else "omega"
+        raise TorqueFreeError(f"give exactly two of {', '.join(MOTION_KEYS)} (got "
+                              f"{', '.join(keys) or 'none'})", extra)
+    for key in keys:
+        value = known[key]
+        if key in ANGLE_KEYS:
+            if not 0 < value < math.pi / 2:
+                raise TorqueFreeError(
+                    f"{key} must lie strictly between 0 and 90 deg, got "
+                    f"{math.degrees(value):.6g} deg: at 0 the body spins steadily about its "
+                    "axis, at 90 deg it turns about a transverse axis, neither wobbles; above "
+                    "90 deg take the axis k the other way (180 deg minus the angle)", key)
+        elif key != "spin" and not value > 0:
+            raise TorqueFreeError(f"{key} must be positive (H is taken along +Z and k on the "
+                                  f"side of H), got {value:.6g} (SI)", key)
+    pair = set(keys)
+    if pair == set(ANGLE_KEYS):
+        raise TorqueFreeError("omega_angle and nutation_angle are tied by tan(theta) = (I / J) "
+                              "tan(beta) and fix no rate: give one of them with a rate",
+                              "nutation_angle")
+    if pair == {"axial_rate", "spin"}:
+        raise TorqueFreeError("axial_rate and spin are tied by psidot = (I - J) / I omega_z and "
+                              "fix no angle: give one of them with an angle or another rate",
+                              "spin")
+
+    # The angle beta, where an angle is given.
+    beta = None
+    if "omega_angle" in known:
+        beta = known["omega_angle"]
+    elif "nutation_angle" in known:
+        beta = omega_angle_from_nutation(J, I, known["nutation_angle"])
+
+    # The axial rate, where a rate fixes it alone.
+    axial = None
+    if "axial_rate" in known:
+        axial = known["axial_rate"]
+    elif "spin" in known:
+        axial = axial_rate_from_spin(J, I, known["spin"])
+
+    if beta is not None:
+        if axial is None:
+            if "omega" in known:
+                axial = known["omega"] * math.cos(beta)
+            else:  # precession: omega_z = I phidot cos(theta) / J
+                theta = math.atan2(I * math.sin(beta), J * math.cos(beta))
+                axial = I * known["precession"] * math.cos(theta) / J
+        return FreeMotion(J, I, axial, beta)
+
+    # No angle: two rates.
+    if "omega" in known and axial is not None:
+        omega = known["omega"]
+        if not axial < omega:
+            by = "axial_rate" if "axial_rate" in known else "spin"
+            raise TorqueFreeError(f"omega = {omega:.6g} rad/s must exceed the axial rate "
+                                  f"omega_z = {axial:.6g} rad/s (from {by}): omega_z is one "
+                                  "component of omega, equal only without wobble", "omega")
+        return FreeMotion(J, I, axial, math.acos(axial / omega))
+    if "omega" in known:  # with precession: H^2 = J^2 omega^2 + (I^2 - J^2) omega^2 sin^2(beta)
+        omega, phidot = known["omega"], known["precession"]
+        s2 = ((I * phidot) ** 2 - (J * omega) ** 2) / ((I * I - J * J) * omega * omega)
+        if not 0 < s2 < 1:
+            lo, hi = sorted((J * omega / I, omega))
+            raise TorqueFreeError(f"precession must lie strictly between J omega / I and omega "
+                                  f"({lo:.6g} and {hi:.6g} rad/s) for omega = {omega:.6g} "
+                                  f"rad/s, got {phidot:.6g} rad/s", "precession")
+        beta = math.asin(math.sqrt(s2))
+        return FreeMotion(J, I, omega * math.cos(beta), beta)
+    # axial rate (given or from spin) with precession: cos(theta) = J omega_z / (I phidot)
+    phidot = known["precession"]
+    cos_theta = J * axial / (I * phidot)
+    if not cos_theta < 1:
+        raise TorqueFreeError(f"precession must exceed J omega_z / I = {J * axial / I:.6g} "
+                              f"rad/s (got {phidot:.6g} rad/s): phidot = H / I and H >= "
+                              "J omega_z, equal only without wobble", "precession")
+    theta = math.acos(cos_theta)
+    return FreeMotion(J, I, axial, omega_angle_from_nutation(J, I, theta))
