@@ -253,8 +253,11 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     from .errors import InputError
 
     problem = result.problem
+    draw = problem.kind.extra.get("plot")  # a kind with its own picture (bicycle)
+    if draw is not None:
+        return draw(result, path, force=force)
     if problem.kind.name != "released_top":
-        raise InputError(f"plots exist for kind released_top only; this file is kind "
+        raise InputError(f"plots exist for kinds released_top and bicycle only; this file is kind "
                          f"{problem.kind.name!r}", file=problem.file, key="kind")
     suffix = Path(path).suffix
     if suffix.lower() not in FORMATS:

@@ -17,6 +17,7 @@ REGISTRY: dict[str, str] = {
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
     "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
+    "bicycle": "gyro_cli.kinds.bicycle",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".
