@@ -63,7 +63,7 @@ def figure(p: dict[str, float], gyroscopic: bool, speed: float | None, title: st
     note = "" if gyroscopic else "  (no wheel spin: gyroscopic false)"
     ax.set_title((title + "\n" if title else "") + "eigenvalues of the linearised Whipple "
                  "bicycle against speed" + note, fontsize=10)
-    ax.legend(loc="lower left", fontsize=8)
+    ax.legend(loc="lower right", fontsize=8)
     return fig
 
 

@@ -33,6 +33,10 @@ WEAVE, CAPSIZE = 4.29238253634111, 6.02426201538837
 EIG_5 = [-14.0783896927982, -0.775341882195845 - 4.46486771378823j,
          -0.775341882195845 + 4.46486771378823j, -0.322866429004087]
 EIG_0 = [-5.53094371765393, -3.13164324790656, 3.13164324790656, 5.53094371765393]
+EIG_4 = [-12.15861426576447, -1.42944427361326, 0.41325331521125 - 3.07910818603206j,
+         0.41325331521125 + 3.07910818603206j]
+EIG_10 = [-24.62459635017404, -3.72016840437287 - 10.90681139476287j,
+          -3.72016840437287 + 10.90681139476287j, 0.16105338653172]
 
 
 # ---- (a) the paper's numbers --------------------------------------------------
@@ -50,6 +54,8 @@ def test_eigenvalues_at_5_and_0_m_per_s_equal_the_published_values():
     assert list(got.real) == sorted(got.real)        # ascending real part, then imaginary
     assert got[1].imag < 0 < got[2].imag
     assert np.allclose(bike.eigenvalues(m, 0.0, G), EIG_0, rtol=1e-13)
+    assert np.allclose(bike.eigenvalues(m, 4.0, G), EIG_4, rtol=1e-12)
+    assert np.allclose(bike.eigenvalues(m, 10.0, G), EIG_10, rtol=1e-12)
 
 
 def test_weave_and_capsize_speeds_equal_the_published_values():
@@ -124,7 +130,8 @@ def growth_rate(t, y) -> float:
     return float(np.polyfit(tt, ss, 1)[0])
 
 
-@pytest.mark.parametrize("v, verdict", [(5.0, "stable"), (3.0, "weave"), (7.0, "capsize")])
+@pytest.mark.parametrize("v, verdict", [(5.0, "stable"), (3.0, "weave"), (4.0, "weave"),
+                                        (7.0, "capsize"), (10.0, "capsize")])
 def test_lean_disturbance_decays_inside_and_grows_outside(v, verdict, run, write):
     t, y = integrate(v, t_end=25.0)
     lean = np.abs(y[0])
@@ -149,6 +156,82 @@ def test_lean_disturbance_decays_inside_and_grows_outside(v, verdict, run, write
     assert out.exit_code == 0, out.output
     answers = json.loads(out.stdout)["answers"]
     assert answers["motion"]["values"] == [verdict]
+
+
+def no_spin_by_hand():
+    """The published C1 and K2 with the wheels' spin terms taken out by hand (Appendix A):
+    S_R = I_Ryy / r_R = 0.4 kg m, S_F = I_Fyy / r_F = 0.8 kg m, S_T = 1.2 kg m."""
+    lam, w, c = math.pi / 10, 1.02, 0.08
+    mu, SF, ST = c * math.cos(lam) / w, 0.28 / 0.35, 0.12 / 0.3 + 0.28 / 0.35
+    C1 = C1_PUB.copy()
+    C1[0, 1] -= mu * ST + SF * math.cos(lam)
+    C1[1, 0] += mu * ST + SF * math.cos(lam)
+    K2 = K2_PUB.copy()
+    K2[0, 1] -= ST * math.cos(lam) / w
+    K2[1, 1] -= SF * math.sin(lam) * math.cos(lam) / w
+    return C1, K2
+
+
+def test_no_spin_problem_against_the_published_matrices_edited_by_hand(run, problems_dir):
+    from scipy.integrate import solve_ivp
+
+    C1, K2 = no_spin_by_hand()
+    assert abs(C1[1, 0]) < 1e-13      # C1_deltaphi is wholly gyroscopic
+    v = 5.0
+    inv = np.linalg.inv(M_PUB)
+    A = np.block([[np.zeros((2, 2)), np.eye(2)],
+                  [-inv @ (G * K0_PUB + v * v * K2), -inv @ (v * C1)]])
+    want = np.linalg.eigvals(A)
+    out = run("solve", problems_dir / "bicycle_no_spin.yaml", "--format", "json")
+    assert out.exit_code == 0, out.output
+    answers = json.loads(out.stdout)["answers"]
+    got = np.array(answers["eigenvalues_real"]["si_values"]) + \
+        1j * np.array(answers["eigenvalues_imag"]["si_values"])
+    assert np.allclose(np.sort_complex(got), np.sort_complex(want), rtol=1e-12)
+    assert answers["motion"]["values"] == ["weave"]
+    # in time: the lean oscillates with a growing amplitude
+    sol = solve_ivp(lambda _t, y: A @ y, (0, 6), [0.01, 0, 0, 0], rtol=1e-10, atol=1e-13,
+                    t_eval=np.linspace(0, 6, 601))
+    lean = sol.y[0]
+    assert np.max(np.abs(lean[-100:])) > 100 * 0.01
+    assert np.count_nonzero(np.diff(np.sign(lean))) >= 2
+
+
+@pytest.mark.parametrize("name, speed, published", [
+    ("bicycle_benchmark_slow.yaml", 4.0, EIG_4), ("bicycle_benchmark_fast.yaml", 10.0, EIG_10),
+    ("bicycle_benchmark.yaml", 5.0, EIG_5)])
+def test_bundled_problems_by_hand(run, problems_dir, name, speed, published):
+    """The km/h problems: the speed converts to the published one, the eigenvalues are Table 2's,
+    and the doubling time and period in the notes follow from them by hand."""
+    out = run("solve", problems_dir / name, "--format", "json")
+    assert out.exit_code == 0, out.output
+    answers = json.loads(out.stdout)["answers"]
+    got = np.array(answers["eigenvalues_real"]["si_values"]) + \
+        1j * np.array(answers["eigenvalues_imag"]["si_values"])
+    assert np.allclose(got, published, rtol=1e-12, atol=1e-12)
+    worst = max(published, key=lambda e: e.real)
+    if speed == 4.0:
+        assert math.log(2) / worst.real == pytest.approx(1.68, abs=0.005)
+        assert 2 * math.pi / abs(worst.imag) == pytest.approx(2.04, abs=0.005)
+        assert answers["weave_speed"]["values"] == [pytest.approx(WEAVE * 3.6, rel=1e-12)]
+    if speed == 10.0:
+        assert math.log(2) / worst.real == pytest.approx(4.3, abs=0.05)
+        assert answers["capsize_speed"]["values"] == [pytest.approx(CAPSIZE * 3.6, rel=1e-12)]
+
+
+def test_docs_trail_table():
+    """docs/bicycle.md: the stable range for trail 0, 0.04, 0.08, 0.12 m, with and without spin."""
+    table = {0.0: (2.933, 3.129), 0.04: (3.753, 4.767), 0.08: (4.292, 6.024),
+             0.12: (4.696, 7.115)}
+    for c, (lo, hi) in table.items():
+        p = dict(bike.BENCHMARK, c=c)
+        (got_lo, got_hi), = bike.stability(bike.matrices(p), G).stable
+        assert (round(got_lo, 3), round(got_hi, 3)) == (lo, hi)
+        assert bike.stability(bike.matrices(p, gyroscopic=False), G).stable == []
+        # just outside the range unstable, inside stable
+        m = bike.matrices(p)
+        for v, stable in ((0.5 * (lo + hi), True), (lo - 0.05, False), (hi + 0.05, False)):
+            assert (bike.spectral_abscissa(m, v, G) < 0) == stable
 
 
 # ---- (d) the gyroscopic share ---------------------------------------------------

@@ -316,9 +316,9 @@ def _share_text(with_spin: "bike.Stability", without: "bike.Stability") -> str:
         return "neither has a self-stable speed."
     if not without.stable:
         return ("without the wheels' spin angular momentum there is no self-stable speed at all: "
-                "the weave never stabilises. For these data the gyroscopic terms are needed "
-                "for self-stability; they act together with the trail and the front "
-                "assembly's mass, through the steer (the chapter's 'partly').")
+                "the weave never stabilises. For these data the wheels' spin is needed for "
+                "self-stability, while the rest of the design (trail, steer-axis tilt, mass "
+                "distribution) decides where the range lies: the chapter's 'partly'.")
     if not with_spin.stable:
         return "the wheels' spin removes the self-stable range these data have without it."
     (lo1, hi1), (lo0, hi0) = with_spin.stable[0], without.stable[0]
