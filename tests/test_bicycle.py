@@ -66,6 +66,22 @@ def test_weave_and_capsize_speeds_equal_the_published_values():
     assert abs(stab.weave[0] / WEAVE - 1) < 1e-6 and abs(stab.capsize[0] / CAPSIZE - 1) < 1e-6
 
 
+def test_froude_scaling():
+    """Dimensional analysis, independent of the formulas: a bicycle scaled by L in every
+    length and by k in every mass (inertias by k L^2) has its speeds scaled by sqrt(L)
+    and its eigenvalues by 1/sqrt(L) (same g)."""
+    lengths = ("w", "c", "rR", "rF", "xB", "zB", "xH", "zH")
+    for L, k in ((0.01, 1e-3), (3.0, 2.0), (100.0, 1e3)):
+        p = {key: (v * L if key in lengths else v * k if key.startswith("m") else
+                   v * k * L * L if key.startswith("I") else v)
+             for key, v in bike.BENCHMARK.items()}
+        stab = bike.stability(bike.matrices(p), G)
+        assert stab.weave == [pytest.approx(WEAVE * math.sqrt(L), rel=1e-12)]
+        assert stab.capsize == [pytest.approx(CAPSIZE * math.sqrt(L), rel=1e-12)]
+        got = bike.eigenvalues(bike.matrices(p), 5.0 * math.sqrt(L), G)
+        assert np.allclose(got * math.sqrt(L), EIG_5, rtol=1e-11)
+
+
 # ---- (b) by hand from the published matrices -----------------------------------
 
 def test_eigenvalues_at_rest_by_hand():

@@ -73,8 +73,8 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
         elif preset == PRESET:
             p[key] = bike.BENCHMARK[key]
             text = "pi/10 rad" if key == "lambda" else f"{p[key]:.12g} {SI[dimension]}"
-            work.given.append(GivenLine(key, symbol, f"{text} (preset)", p[key], SI[dimension],
-                                        "Table 1"))
+            work.given.append(GivenLine(key, symbol, text, p[key], SI[dimension],
+                                        "preset: Table 1"))
         else:
             raise InputError(f"needed: the {KEYS[key][2]} ({dimension}); give it, or write "
                              "`preset: benchmark` to take the rest from Table 1 of Meijaard et "
@@ -160,6 +160,15 @@ def _poly_text(coeffs, var: str = "v") -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    import numpy as np
+
+    # Overflow or 0/0 in extreme data raises FloatingPointError (an ArithmeticError), which
+    # the solver reports as one line, instead of printing numpy's warnings.
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        _solve(given, find, work)
+
+
+def _solve(given: Given, find: frozenset[str], work: Work) -> None:
     p = parameters(given, work)
     g = p["g"]
     gyroscopic = given.word("gyroscopic", "true") == "true"

@@ -236,11 +236,11 @@ def _positive_roots(poly: np.ndarray) -> list[float]:
     then polished by Newton steps on the polynomial in v.
     """
     poly = np.asarray(poly, dtype=float)
-    scale = np.max(np.abs(poly)) if poly.size else 0.0
-    if scale == 0:
+    if not np.any(poly):
         return []
     even = poly[::2].copy()                  # coefficients of w^0, w^1, ...
-    even[np.abs(even) < 1e-13 * scale] = 0.0
+    # B = v C1 and C = g K0 + v^2 K2 have exact zero coefficients, so the factors of
+    # w (roots at v = 0) come out as exact zeros, not as rounding noise.
     while even.size and even[0] == 0:        # factors of w (v = 0 roots)
         even = even[1:]
     even = np.trim_zeros(even, "b")
@@ -273,7 +273,7 @@ class Stability:
     weave: list[float]            # a complex pair crosses the imaginary axis (H3 = 0)
     capsize: list[float]          # a real eigenvalue crosses zero (a0 = 0)
     stable: list[tuple[float, float]]   # (low, high); high may be inf
-    other: list[float]            # H3 = 0 with a real pair +-sigma (no change of stability)
+    other: list[float]            # roots where the stability does not change (a real pair +-sigma)
 
 
 def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
@@ -289,16 +289,22 @@ def stability(m: Matrices, g: float) -> Stability:
     interval decides it.
     """
     coeffs = characteristic(m, g)
-    capsize = _positive_roots(coeffs[0])
-    weave, other = [], []
+    capsize, weave, other = [], [], []
+    for v in _positive_roots(coeffs[0]):
+        ev = eigenvalues(m, v, g)
+        if np.min(np.abs(ev)) <= 1e-6 * max(1.0, float(np.max(np.abs(ev)))):
+            capsize.append(v)                # a real eigenvalue at 0
+        else:
+            other.append(v)                  # rounding: no eigenvalue there after all
     for v in _positive_roots(hurwitz(coeffs)):
         ev = eigenvalues(m, v, g)
+        scale = max(1.0, float(np.max(np.abs(ev))))
         near = ev[np.argmin(np.abs(ev.real))]
-        if abs(near.imag) > 1e-6 * max(1.0, np.max(np.abs(ev))):
-            weave.append(v)
+        if abs(near.real) <= 1e-6 * scale and abs(near.imag) > 1e-6 * scale:
+            weave.append(v)                  # a pair +-i omega on the imaginary axis
         else:
-            other.append(v)
-    edges = sorted(set(capsize + weave))
+            other.append(v)                  # a real pair +-sigma: no change of stability
+    edges = sorted(set(capsize + weave + other))
     points = [0.0] + edges + [math.inf]
     stable: list[tuple[float, float]] = []
     for lo, hi in zip(points, points[1:]):
