@@ -299,8 +299,8 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("the eigenvalues and the motion are at a speed: give `speed`",
                          key="given.speed")
     for v in stab.weave + stab.capsize:
-        work.check(f"v = {num(v, 10)} m/s: largest |Re(s)| of the eigenvalue nearest the axis "
-                   f"{min(abs(bike.eigenvalues(m, v, g).real)):.2g} 1/s")
+        work.check(f"v = {num(v, 10)} m/s: the eigenvalue nearest the imaginary axis has "
+                   f"|Re(s)| = {min(abs(bike.eigenvalues(m, v, g).real)):.2g} 1/s")
     work.answer("weave_speed", "v_w", stab.weave, "speed")
     work.answer("capsize_speed", "v_c", stab.capsize, "speed")
     ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
