@@ -38,7 +38,8 @@ def main() -> None:
                    "markdown, latex: a write-up for a solution sheet.")
 @click.option("--plot", "plot_file", metavar="FILE",
               help="released_top: also draw the axis's path, theta(t) and phidot(t) to FILE "
-                   "(.png, .svg or .pdf); one problem file.")
+                   "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
+                   "file.")
 @click.option("--force", is_flag=True, help="With --plot: replace FILE if it exists.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
           force: bool = False) -> None:

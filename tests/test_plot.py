@@ -135,7 +135,7 @@ def test_gyro_simulate_plot_and_csv(run, problems_dir, tmp_path):
 def test_gyro_solve_plot_refuses_other_kinds(run, problems_dir, tmp_path):
     result = run("solve", problems_dir / "11_3.yaml", "--plot", tmp_path / "x.png")
     assert result.exit_code == 2
-    assert "released_top only" in result.stderr
+    assert "released_top and bicycle only" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert not (tmp_path / "x.png").exists()
 

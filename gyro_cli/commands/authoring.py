@@ -35,8 +35,10 @@ EXAMPLE_QUANTITY = {
     "rate": "1800 rpm", "angle": "30 deg", "inertia": "0.01 kg m^2", "moment": "2 N m",
     "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
     "angular_momentum": "2 kg m^2/s",
+    "speed": "10 m/s", "time": "2 s", "dimensionless": "1", "inverse_time": "-0.32 s^-1",
+    "mass_length": "2 kg m",
 }
-ANSWER_UNIT = {"rate": "rpm", "angle": "deg"}
+ANSWER_UNIT = {"rate": "rpm", "angle": "deg", "inverse_time": "s^-1"}
 
 VARIANT_DIGITS = 3
 MAX_VARIANTS = 10_000
@@ -192,7 +194,10 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
     given = {}
     for p in params:
         if p.dimension == "word":
-            given[p.name] = {"enum": list(p.choices), "description": p.doc}
+            words: list = list(p.choices)
+            if set(words) == {"true", "false"}:
+                words += [True, False]  # YAML reads `false` as a boolean
+            given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
             given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
         else:

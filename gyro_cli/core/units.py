@@ -32,10 +32,12 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "speed": ("[length] / [time]", "m/s", "a speed like '10 m/s'"),
     "time": ("[time]", "s", "a time like '2 s'"),
     "dimensionless": ("", "", "a plain number"),
+    "inverse_time": ("1 / [time]", "1/s", "an eigenvalue or growth rate like '-0.32 s^-1'"),
+    "mass_length": ("[mass] * [length]", "kg*m", "a mass times a length like '2 kg m'"),
 }
 
 # How SI units are written in worked answers.
-SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}
+SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s", "kg*m": "kg m"}
 
 ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",

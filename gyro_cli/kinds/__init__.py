@@ -22,6 +22,7 @@ REGISTRY: dict[str, str] = {
     "two_wheeler": "gyro_cli.kinds.two_wheeler",
     "four_wheeler": "gyro_cli.kinds.four_wheeler",
     "torque_free": "gyro_cli.kinds.torque_free",
+    "bicycle": "gyro_cli.kinds.bicycle",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-FORMATS = {".png": "png", ".svg": "svg", ".pdf": "pdf"}
+from .picture_formats import FORMATS
 
 
 @dataclass
@@ -324,8 +324,12 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     from ..core.errors import InputError
 
     problem = result.problem
+    if problem.kind.name == "bicycle":  # its own picture: eigenvalues against speed
+        from .plot_bicycle import plot_result as plot_bicycle
+
+        return plot_bicycle(result, path, force=force)
     if problem.kind.name != "released_top":
-        raise InputError(f"plots exist for kind released_top only; this file is kind "
+        raise InputError(f"plots exist for kinds released_top and bicycle only; this file is kind "
                          f"{problem.kind.name!r}", file=problem.file, key="kind")
     suffix = Path(path).suffix
     if suffix.lower() not in FORMATS:

@@ -12,6 +12,8 @@ WIDTH = 78
 
 
 def _answer_text(values: list, unit: str | None, labels: list[str]) -> str:
+    if not values:
+        return "none"
     parts = []
     for i, value in enumerate(values):
         text = str(value) if isinstance(value, str) else f"{num(value)} {unit or ''}".rstrip()

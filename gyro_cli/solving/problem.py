@@ -180,6 +180,8 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
 def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
     key = f"given.{param.name}"
     if param.dimension == "word":
+        if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
+            text = "true" if text else "false"  # YAML reads `false` as a boolean
         if not isinstance(text, str) or text not in param.choices:
             raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
                              f"{suggest(str(text), param.choices)}", key=key)

@@ -1,0 +1,381 @@
+"""Why a bicycle stays up: the linearised Whipple bicycle and its self-stable speeds.
+
+Chapter 11 ends: "Gyroscopic motion also partly explains why one can stay up on
+a bicycle when it's moving (Fig. 11-14)". This kind answers "partly, how much"
+with the benchmark model of Meijaard, Papadopoulos, Ruina and Schwab, "Linearized
+dynamics equations for the balance and steer of a bicycle: a benchmark and
+review", Proc. R. Soc. A 463 (2007) 1955-1982 (the paper's names are the keys).
+
+Lean phi and steer delta obey M q'' + v C1 q' + (g K0 + v^2 K2) q = 0 (Eq. 5.3);
+M, C1, K0, K2 come from the parameters by the paper's Appendix A
+(physics/bicycle.py). The eigenvalues at the given speed say whether the
+riderless bicycle balances itself there; the weave speed (a complex pair
+crosses the imaginary axis) and the capsize speed (a real eigenvalue crosses
+zero) bound the self-stable range. ``gyroscopic: false`` removes the wheels'
+spin angular momentum (the terms in I_Ryy / r_R and I_Fyy / r_F), and the normal
+worked answer says how the stable range moves without it.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..physics import bicycle as bike
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import GivenLine, Work, num
+
+# key -> (dimension, symbol, meaning); order of Table 1.
+KEYS: dict[str, tuple[str, str, str]] = {
+    "w": ("length", "w", "wheel base"),
+    "c": ("length", "c", "trail"),
+    "lambda": ("angle", "lambda", "steer axis tilt from the vertical (pi/2 - head angle)"),
+    "rR": ("length", "r_R", "rear wheel radius"),
+    "mR": ("mass", "m_R", "rear wheel mass"),
+    "IRxx": ("inertia", "I_Rxx", "rear wheel moment of inertia about a diameter (= I_Rzz)"),
+    "IRyy": ("inertia", "I_Ryy", "rear wheel moment of inertia about its axle"),
+    "xB": ("length", "x_B", "rear frame (with rider) centre of mass, forward of the rear "
+           "contact"),
+    "zB": ("length", "z_B", "rear frame centre of mass, z downward (negative: above the road)"),
+    "mB": ("mass", "m_B", "rear frame mass (with rider)"),
+    "IBxx": ("inertia", "I_Bxx", "rear frame inertia about its centre of mass, xx"),
+    "IByy": ("inertia", "I_Byy", "rear frame inertia, yy"),
+    "IBzz": ("inertia", "I_Bzz", "rear frame inertia, zz"),
+    "IBxz": ("inertia", "I_Bxz", "rear frame inertia tensor, xz entry"),
+    "xH": ("length", "x_H", "front frame (fork and handlebar) centre of mass, forward"),
+    "zH": ("length", "z_H", "front frame centre of mass, z downward"),
+    "mH": ("mass", "m_H", "front frame mass"),
+    "IHxx": ("inertia", "I_Hxx", "front frame inertia about its centre of mass, xx"),
+    "IHyy": ("inertia", "I_Hyy", "front frame inertia, yy"),
+    "IHzz": ("inertia", "I_Hzz", "front frame inertia, zz"),
+    "IHxz": ("inertia", "I_Hxz", "front frame inertia tensor, xz entry"),
+    "rF": ("length", "r_F", "front wheel radius"),
+    "mF": ("mass", "m_F", "front wheel mass"),
+    "IFxx": ("inertia", "I_Fxx", "front wheel moment of inertia about a diameter (= I_Fzz)"),
+    "IFyy": ("inertia", "I_Fyy", "front wheel moment of inertia about its axle"),
+}
+SI = {"length": "m", "mass": "kg", "inertia": "kg m^2", "angle": "rad"}
+MASSES = ("mR", "mB", "mH", "mF")
+PRESET = "benchmark"
+Q = "(phi, delta)"
+
+
+# ---- input ------------------------------------------------------------------
+
+def parameters(given: Given, work: Work) -> dict[str, float]:
+    """The paper's parameters in SI: from `given`, the rest from `preset: benchmark`."""
+    preset = given.word("preset")
+    p: dict[str, float] = {"g": given["g"]}
+    for key, (dimension, symbol, _) in KEYS.items():
+        if key in given:
+            p[key] = given[key]
+        elif preset == PRESET:
+            p[key] = bike.BENCHMARK[key]
+            text = "pi/10 rad" if key == "lambda" else f"{p[key]:.12g} {SI[dimension]}"
+            work.given.append(GivenLine(key, symbol, text, p[key], SI[dimension],
+                                        "preset: Table 1"))
+        else:
+            raise InputError(f"needed: the {KEYS[key][2]} ({dimension}); give it, or write "
+                             "`preset: benchmark` to take the rest from Table 1 of Meijaard et "
+                             "al. (2007)", key=f"given.{key}")
+    _validate(p)
+    return p
+
+
+def _validate(p: dict[str, float]) -> None:
+    """Physically impossible data: exit 2 naming the key and the limit."""
+    for key in MASSES:
+        if p[key] <= 0:
+            raise InputError(f"a mass must be positive, got {num(p[key])} kg", key=f"given.{key}")
+    for key in ("w", "rR", "rF"):
+        if p[key] <= 0:
+            raise InputError(f"must be positive, got {num(p[key])} m", key=f"given.{key}")
+    if p["g"] <= 0:
+        raise InputError(f"gravity must be positive, got {num(p['g'])} m/s^2", key="given.g")
+    if not abs(p["lambda"]) < math.pi / 2:
+        raise InputError(f"the steer axis tilt lies between -90 and 90 deg, got "
+                         f"{num(math.degrees(p['lambda']))} deg", key="given.lambda")
+    for key in ("zB", "zH"):
+        if p[key] >= 0:
+            raise InputError(f"z points down from the road: a centre of mass above the road has "
+                             f"z < 0, got {num(p[key])} m", key=f"given.{key}")
+    for wheel in ("R", "F"):
+        xx, yy = p[f"I{wheel}xx"], p[f"I{wheel}yy"]
+        for key, value in ((f"I{wheel}xx", xx), (f"I{wheel}yy", yy)):
+            if value <= 0:
+                raise InputError(f"the wheel's inertia tensor diag(I{wheel}xx, I{wheel}yy, "
+                                 f"I{wheel}xx) must be positive definite, got {num(value)} kg m^2",
+                                 key=f"given.{key}")
+        if yy > 2 * xx * (1 + 1e-9):
+            raise InputError(f"a wheel's moment about its axle is at most twice its moment about "
+                             f"a diameter (all mass in the wheel's plane): I{wheel}yy <= 2 "
+                             f"I{wheel}xx = {num(2 * xx)} kg m^2, got {num(yy)} kg m^2",
+                             key=f"given.I{wheel}yy")
+    for frame in ("B", "H"):
+        xx, yy, zz, xz = (p[f"I{frame}{a}"] for a in ("xx", "yy", "zz", "xz"))
+        for key, value in ((f"I{frame}xx", xx), (f"I{frame}yy", yy), (f"I{frame}zz", zz)):
+            if value <= 0:
+                raise InputError(f"the inertia tensor is not positive definite: a diagonal entry "
+                                 f"must be positive, got {num(value)} kg m^2", key=f"given.{key}")
+        if xz * xz >= xx * zz:
+            raise InputError(f"the inertia tensor [[I{frame}xx, 0, I{frame}xz], [0, I{frame}yy, "
+                             f"0], [I{frame}xz, 0, I{frame}zz]] is not positive definite: "
+                             f"|I{frame}xz| must be less than sqrt(I{frame}xx I{frame}zz) = "
+                             f"{num(math.sqrt(xx * zz))} kg m^2, got {num(xz)} kg m^2",
+                             key=f"given.I{frame}xz")
+        mean, half = 0.5 * (xx + zz), math.hypot(0.5 * (xx - zz), xz)
+        principal = sorted((mean - half, mean + half, yy))
+        if principal[2] > (principal[0] + principal[1]) * (1 + 1e-9):
+            raise InputError(f"no body has these inertias: the principal moments "
+                             f"{', '.join(num(x) for x in principal)} kg m^2 break the triangle "
+                             f"inequality (the largest may not exceed the sum of the other two, "
+                             f"{num(principal[0] + principal[1])} kg m^2)",
+                             key=f"given.I{frame}{'yy' if principal[2] == yy else 'xz'}")
+
+
+# ---- the worked answer ------------------------------------------------------
+
+def _speeds_text(intervals: list[tuple[float, float]]) -> str:
+    if not intervals:
+        return "no self-stable speed"
+    return ", ".join(f"{num(lo, 7)} m/s < v < " + (f"{num(hi, 7)} m/s" if math.isfinite(hi)
+                                                      else "infinity") for lo, hi in intervals)
+
+
+def _matrix_text(name: str, a, unit: str) -> str:
+    return (f"{name} = [[{num(a[0, 0], 10)}, {num(a[0, 1], 10)}], "
+            f"[{num(a[1, 0], 10)}, {num(a[1, 1], 10)}]] {unit}")
+
+
+def _poly_text(coeffs, var: str = "v") -> str:
+    terms = []
+    for power, c in enumerate(coeffs):
+        if c == 0:
+            continue
+        term = num(c, 7) + ("" if power == 0 else f" {var}" if power == 1 else
+                            f" {var}^{power}")
+        terms.append(term)
+    return " + ".join(terms).replace("+ -", "- ") or "0"
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    import numpy as np
+
+    # Overflow or 0/0 in extreme data raises FloatingPointError (an ArithmeticError), which
+    # the solver reports as one line, instead of printing numpy's warnings.
+    with np.errstate(over="raise", invalid="raise", divide="raise"):
+        _solve(given, find, work)
+
+
+def _solve(given: Given, find: frozenset[str], work: Work) -> None:
+    p = parameters(given, work)
+    g = p["g"]
+    gyroscopic = given.word("gyroscopic", "true") == "true"
+    speed = given.get("speed")
+    t = bike.totals(p, gyroscopic)
+    m = bike.matrices(p, gyroscopic)
+    if not (m.M[0, 0] > 0 and float(m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2) > 0):
+        raise InputError("the mass matrix M is not positive definite for these data; check the "
+                         "inertias and their units", key="given")
+
+    work.section("Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)")
+    work.text("x forward, y to the right, z down; origin at the rear wheel's contact point. "
+              "q = (phi, delta): lean to the right, steer to the right (rad). Small motions about "
+              "upright straight running at speed v, no rider torques:")
+    work.text("M q'' + v C1 q' + (g K0 + v^2 K2) q = 0    (Eq. 5.3)")
+    if not gyroscopic:
+        work.text("gyroscopic: false -- the wheels' spin angular momentum is removed: S_R = S_F "
+                  "= 0 wherever I_Ryy / r_R and I_Fyy / r_F enter (C1 and K2).")
+
+    work.section("The whole bicycle T about the rear contact point (Eqs. A 1-A 5)")
+    work.step("m_T", "m_R + m_B + m_H + m_F", value=t.mT, unit="kg")
+    work.step("x_T", "(x_B m_B + x_H m_H + w m_F) / m_T", value=t.xT, unit="m")
+    work.step("z_T", "(-r_R m_R + z_B m_B + z_H m_H - r_F m_F) / m_T", value=t.zT, unit="m",
+              note="centre of mass of the whole bicycle")
+    work.step("I_Txx", "I_Rxx + I_Bxx + I_Hxx + I_Fxx + m_R r_R^2 + m_B z_B^2 + m_H z_H^2 + "
+              "m_F r_F^2", value=t.ITxx, unit="kg*m^2")
+    work.step("I_Txz", "I_Bxz + I_Hxz - m_B x_B z_B - m_H x_H z_H + m_F w r_F", value=t.ITxz,
+              unit="kg*m^2")
+    work.step("I_Tzz", "I_Rxx + I_Bzz + I_Hzz + I_Fxx + m_B x_B^2 + m_H x_H^2 + m_F w^2",
+              value=t.ITzz, unit="kg*m^2", note="wheels: I_zz = I_xx")
+
+    work.section("The front assembly A = front frame H + front wheel F (Eqs. A 6-A 15)")
+    work.step("m_A", "m_H + m_F", value=t.mA, unit="kg")
+    work.step("x_A", "(x_H m_H + w m_F) / m_A", value=t.xA, unit="m")
+    work.step("z_A", "(z_H m_H - r_F m_F) / m_A", value=t.zA, unit="m")
+    work.step("I_Axx", "I_Hxx + I_Fxx + m_H (z_H - z_A)^2 + m_F (r_F + z_A)^2", value=t.IAxx,
+              unit="kg*m^2")
+    work.step("I_Axz", "I_Hxz - m_H (x_H - x_A)(z_H - z_A) + m_F (w - x_A)(r_F + z_A)",
+              value=t.IAxz, unit="kg*m^2")
+    work.step("I_Azz", "I_Hzz + I_Fxx + m_H (x_H - x_A)^2 + m_F (w - x_A)^2", value=t.IAzz,
+              unit="kg*m^2")
+    work.step("u_A", "(x_A - w - c) cos(lambda) - z_A sin(lambda)", value=t.uA, unit="m",
+              note="distance of A's centre of mass ahead of the steer axis")
+    work.step("I_All", "m_A u_A^2 + I_Axx sin^2(lambda) + 2 I_Axz sin(lambda) cos(lambda) + "
+              "I_Azz cos^2(lambda)", value=t.IAll, unit="kg*m^2", note="about the steer axis")
+    work.step("I_Alx", "-m_A u_A z_A + I_Axx sin(lambda) + I_Axz cos(lambda)", value=t.IAlx,
+              unit="kg*m^2")
+    work.step("I_Alz", "m_A u_A x_A + I_Axz sin(lambda) + I_Azz cos(lambda)", value=t.IAlz,
+              unit="kg*m^2")
+    work.step("mu", "c cos(lambda) / w", value=t.mu, unit="", note="trail ratio")
+    work.step("S_R", "I_Ryy / r_R" if gyroscopic else "0 (gyroscopic: false)", value=t.SR,
+              unit="kg m", note="rear wheel spin angular momentum per unit speed")
+    work.step("S_F", "I_Fyy / r_F" if gyroscopic else "0 (gyroscopic: false)", value=t.SF,
+              unit="kg m")
+    work.step("S_T", "S_R + S_F", value=t.ST, unit="kg m")
+    work.step("S_A", "m_A u_A + mu m_T x_T", value=t.SA, unit="kg m",
+              note="static moment of the steering assembly")
+
+    work.section("The matrices (Eqs. A 20-A 23), rows and columns " + Q)
+    work.text("M_pp = I_Txx;  M_pd = M_dp = I_Alx + mu I_Txz;  M_dd = I_All + 2 mu I_Alz + "
+              "mu^2 I_Tzz")
+    work.text(_matrix_text("M", m.M, "kg m^2"))
+    work.text("C1_pp = 0;  C1_pd = mu S_T + S_F cos(lambda) + I_Txz cos(lambda) / w - mu m_T "
+              "z_T;  C1_dp = -(mu S_T + S_F cos(lambda));  C1_dd = I_Alz cos(lambda) / w + "
+              "mu (S_A + I_Tzz cos(lambda) / w)")
+    work.text(_matrix_text("C1", m.C1, "kg m"))
+    work.text("K0_pp = m_T z_T;  K0_pd = K0_dp = -S_A;  K0_dd = -S_A sin(lambda)")
+    work.text(_matrix_text("K0", m.K0, "kg m"))
+    work.text("K2_pp = K2_dp = 0;  K2_pd = (S_T - m_T z_T) cos(lambda) / w;  K2_dd = (S_A + "
+              "S_F sin(lambda)) cos(lambda) / w")
+    work.text(_matrix_text("K2", m.K2, "kg"))
+
+    coeffs = bike.characteristic(m, g)
+    work.section("The characteristic equation: det(M s^2 + v C1 s + g K0 + v^2 K2) = 0")
+    work.text("a4 s^4 + a3 s^3 + a2 s^2 + a1 s + a0 = 0, with (v in m/s, s in 1/s)")
+    for k in (4, 3, 2, 1, 0):
+        work.text(f"a{k} = {_poly_text(coeffs[k])}")
+    work.text("Routh-Hurwitz: all four roots have Re(s) < 0 iff every a_k > 0 and "
+              "H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 > 0. A real root crosses 0 where a0(v) = 0 "
+              "(capsize speed); a complex pair crosses the imaginary axis where H3(v) = 0 "
+              "(weave speed).")
+
+    stab = bike.stability(m, g)
+    work.section("Self-stable speeds (v > 0)")
+    work.text(f"H3(v) = {_poly_text(bike.hurwitz(coeffs))}")
+    for v in stab.weave:
+        work.step("v_w", "H3(v) = 0, a complex pair on the imaginary axis", value=v,
+                  unit="m/s", note=f"weave speed, {v:.12g} m/s")
+    for v in stab.capsize:
+        work.step("v_c", "a0(v) = 0, a real eigenvalue at 0", value=v, unit="m/s",
+                  note=f"capsize speed, {v:.12g} m/s")
+    work.text(f"stable (every Re(s) < 0): {_speeds_text(stab.stable)}")
+    if not stab.stable:
+        work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "
+                  "every speed")
+    elif not math.isfinite(stab.stable[-1][1]):
+        work.warn("the stable range has no upper end for these data (no capsize speed)")
+
+    if gyroscopic:
+        plain = bike.stability(bike.matrices(p, gyroscopic=False), g)
+        work.section("The wheels' gyroscopic share (S_R = S_F = 0: no spin angular momentum)")
+        work.text(f"with the wheels' spin angular momentum: {_speeds_text(stab.stable)}")
+        work.text(f"without it (gyroscopic: false): {_speeds_text(plain.stable)}")
+        work.text(_share_text(stab, plain))
+
+    if speed is not None:
+        ev = bike.eigenvalues(m, speed, g)
+        state = bike.motion(ev)
+        work.section(f"At v = {speed:.12g} m/s: the eigenvalues of the state matrix "
+                     "[[0, I], [-M^-1 (g K0 + v^2 K2), -M^-1 v C1]]")
+        for e in ev:
+            work.text(f"s = {num(e.real, 12)}" + (f" {'+' if e.imag > 0 else '-'} "
+                      f"{num(abs(e.imag), 12)} i" if e.imag else "") + " 1/s")
+        work.text(f"motion: {state}" + {
+            "stable": " -- every eigenvalue has Re(s) < 0: a small disturbance dies out, "
+                      "the bicycle balances itself",
+            "capsize": " -- a real eigenvalue > 0: it falls over without oscillating",
+            "weave": " -- a complex pair with Re(s) > 0: lean and steer oscillate and grow",
+            "capsize and weave": " -- both a capsize and a weave mode grow"}[state])
+        for e in ev:
+            residual = _char_value(coeffs, speed, e)
+            work.check(f"s = {num(e.real, 6)}{'' if not e.imag else f' {e.imag:+.6g}i'}: "
+                       f"|det(M s^2 + v C1 s + g K0 + v^2 K2)| / a4 = {abs(residual):.2g}")
+        work.answer("eigenvalues_real", "Re(s)", [float(e.real) for e in ev], "inverse_time")
+        work.answer("eigenvalues_imag", "Im(s)", [float(e.imag) for e in ev], "inverse_time")
+        work.answer("motion", "motion", [state], None)
+    elif find & {"eigenvalues_real", "eigenvalues_imag", "motion"}:
+        raise InputError("the eigenvalues and the motion are at a speed: give `speed`",
+                         key="given.speed")
+    for v in stab.weave + stab.capsize:
+        work.check(f"v = {num(v, 10)} m/s: the eigenvalue nearest the imaginary axis has "
+                   f"|Re(s)| = {min(abs(bike.eigenvalues(m, v, g).real)):.2g} 1/s")
+    work.answer("weave_speed", "v_w", stab.weave, "speed")
+    work.answer("capsize_speed", "v_c", stab.capsize, "speed")
+    ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
+    labels = [lab for lo, hi in stab.stable
+              for lab in (("low", "high") if math.isfinite(hi) else ("low, no upper end",))]
+    work.answer("stable_speeds", "v", ends, "speed", labels)
+    for name, a, dim in (("M", m.M, "inertia"), ("C1", m.C1, "mass_length"),
+                         ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
+        work.answer(name, name, [float(x) + 0.0 for x in a.ravel()], dim,
+                    ["phi,phi", "phi,delta", "delta,phi", "delta,delta"])
+
+
+def _char_value(coeffs, v: float, s: complex) -> complex:
+    from numpy.polynomial import polynomial as P
+
+    a = [P.polyval(v, c) for c in coeffs]
+    return sum(a[k] * s ** k for k in range(5)) / a[4]
+
+
+def _share_text(with_spin: "bike.Stability", without: "bike.Stability") -> str:
+    if not with_spin.stable and not without.stable:
+        return "neither has a self-stable speed."
+    if not without.stable:
+        return ("without the wheels' spin angular momentum there is no self-stable speed at all: "
+                "the weave never stabilises. For these data the wheels' spin is needed for "
+                "self-stability, while the rest of the design (trail, steer-axis tilt, mass "
+                "distribution) decides where the range lies: the chapter's 'partly'.")
+    if not with_spin.stable:
+        return "the wheels' spin removes the self-stable range these data have without it."
+    (lo1, hi1), (lo0, hi0) = with_spin.stable[0], without.stable[0]
+
+    def end(x: float) -> str:
+        return f"{num(x, 6)} m/s" if math.isfinite(x) else "infinity"
+
+    return (f"the wheels' spin moves the lower end from {end(lo0)} to {end(lo1)} and the upper "
+            f"end from {end(hi0)} to {end(hi1)}.")
+
+
+KIND = Kind(
+    name="bicycle",
+    summary="the linearised Whipple bicycle (Meijaard et al. 2007): eigenvalues, weave and "
+            "capsize speeds, the self-stable range and the wheels' gyroscopic share",
+    chapter="Fig. 11-14 and the chapter's last paragraph; Meijaard et al., Proc. R. Soc. A 463 "
+            "(2007) 1955, Eq. 5.3 and Appendix A",
+    params=(
+        Param("preset", "word", "preset", "benchmark: Table 1 of Meijaard et al. (2007) for "
+              "every key not given", choices=(PRESET,)),
+        Param("speed", "speed", "v", "forward speed (for the eigenvalues and the motion)"),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
+        Param("gyroscopic", "word", "gyroscopic", "true (default) or false: false removes the "
+              "wheels' spin angular momentum (I_Ryy / r_R, I_Fyy / r_F)",
+              choices=("true", "false")),
+    ) + tuple(Param(key, dim, symbol, doc) for key, (dim, symbol, doc) in KEYS.items()),
+    answers=(
+        AnswerSpec("weave_speed", "speed", "v_w", "speed where the weave (a complex pair) "
+                   "crosses the imaginary axis: the low end of the self-stable range"),
+        AnswerSpec("capsize_speed", "speed", "v_c", "speed where the capsize mode (a real "
+                   "eigenvalue) crosses zero: the high end of the self-stable range"),
+        AnswerSpec("stable_speeds", "speed", "v", "the self-stable range, [low, high]"),
+        AnswerSpec("eigenvalues_real", "inverse_time", "Re(s)", "real parts of the four "
+                   "eigenvalues at `speed` (ascending real part, then imaginary part)"),
+        AnswerSpec("eigenvalues_imag", "inverse_time", "Im(s)", "imaginary parts, same order"),
+        AnswerSpec("motion", None, "motion", "at `speed`: stable, capsize, weave, or capsize "
+                   "and weave (which mode grows)"),
+        AnswerSpec("M", "inertia", "M", "mass matrix, entries phi-phi, phi-delta, delta-phi, "
+                   "delta-delta"),
+        AnswerSpec("C1", "mass_length", "C1", "velocity matrix (times v), same order"),
+        AnswerSpec("K0", "mass_length", "K0", "gravity stiffness matrix (times g), same order"),
+        AnswerSpec("K2", "mass", "K2", "speed stiffness matrix (times v^2), same order"),
+    ),
+    solve=solve,
+    uses_body=False,
+    extra={"example": {
+        "given": {"preset": "benchmark", "speed": "5 m/s"},
+        "find": {"weave_speed": "m/s", "capsize_speed": "m/s", "eigenvalues_real": "s^-1",
+                 "eigenvalues_imag": "s^-1", "motion": None},
+        "vary": {"speed": "[0.8, 1.2]"}}},
+)

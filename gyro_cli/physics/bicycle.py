@@ -1,0 +1,334 @@
+"""The linearised Whipple bicycle: Meijaard, Papadopoulos, Ruina & Schwab (2007).
+
+J. P. Meijaard, J. M. Papadopoulos, A. Ruina and A. L. Schwab, "Linearized dynamics
+equations for the balance and steer of a bicycle: a benchmark and review",
+Proc. R. Soc. A 463 (2007) 1955-1982, doi:10.1098/rspa.2007.1857. Section and
+equation numbers below are the paper's.
+
+Four rigid bodies (rear wheel R, rear frame B with the rider, front frame H,
+front wheel F) on a flat road; axes x forward, y to the right, z down, origin at
+the rear contact point. Lean phi and steer delta obey, for small motions about
+upright straight running at speed v (Eq. 5.3, torques zero),
+
+    M q'' + v C1 q' + (g K0 + v^2 K2) q = 0,    q = (phi, delta).
+
+The entries of M, C1, K0, K2 are built in Appendix A from totals: the whole
+bicycle T (Eqs. A 1-A 5), the front assembly A = H + F (A 6-A 10), its inertia
+about the steer axis (A 11-A 14), the trail ratio mu (A 15) and the wheels' spin
+angular momentum coefficients S_R = I_Ryy / r_R, S_F = I_Fyy / r_F (A 16-A 18).
+
+Gyroscopic share: the wheels' spin angular momentum (I_Ryy v / r_R and I_Fyy v / r_F)
+enters only through S_R, S_F and S_T = S_R + S_F; I_Ryy and I_Fyy appear nowhere
+else (the lean and steer inertias use I_xx and I_zz = I_xx of the axisymmetric
+wheels). ``gyroscopic=False`` sets S_R = S_F = 0: in C1 the terms mu S_T + S_F cos(lambda)
+of C1_phidelta and C1_deltaphi, in K2 the S_T of K2_phidelta and the S_F sin(lambda) of
+K2_deltadelta.
+
+Only numpy here: the eigenvalues of the 4x4 state matrix come from numpy.linalg.eigvals,
+and the speeds where the stability changes from the roots of polynomials in v^2
+(the characteristic polynomial's constant term and its Hurwitz determinant).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.polynomial import polynomial as P
+
+# Table 1 of the paper, SI (lambda = pi/10 rad). g is the paper's 9.81 m/s^2.
+BENCHMARK: dict[str, float] = {
+    "w": 1.02, "c": 0.08, "lambda": math.pi / 10, "g": 9.81,
+    "rR": 0.3, "mR": 2.0, "IRxx": 0.0603, "IRyy": 0.12,
+    "xB": 0.3, "zB": -0.9, "mB": 85.0, "IBxx": 9.2, "IByy": 11.0, "IBzz": 2.8, "IBxz": 2.4,
+    "xH": 0.9, "zH": -0.7, "mH": 4.0, "IHxx": 0.05892, "IHyy": 0.06, "IHzz": 0.00708,
+    "IHxz": -0.00756,
+    "rF": 0.35, "mF": 3.0, "IFxx": 0.1405, "IFyy": 0.28,
+}
+KEYS = tuple(BENCHMARK)
+
+
+@dataclass(frozen=True)
+class Totals:
+    """Appendix A: the whole bicycle (T), the front assembly (A), trail ratio, spin terms."""
+
+    mT: float
+    xT: float
+    zT: float
+    ITxx: float
+    ITxz: float
+    ITzz: float
+    mA: float
+    xA: float
+    zA: float
+    IAxx: float
+    IAxz: float
+    IAzz: float
+    uA: float
+    IAll: float
+    IAlx: float
+    IAlz: float
+    mu: float
+    SR: float
+    SF: float
+    ST: float
+    SA: float
+
+
+def totals(p: dict[str, float], gyroscopic: bool = True) -> Totals:
+    """Eqs. A 1-A 19 of the paper, on SI floats keyed by the paper's names.
+
+    Whole bicycle about the rear contact point (parallel axes; the wheels'
+    centres are at (0, -rR) and (w, -rF), and I_zz = I_xx for each wheel):
+      m_T = m_R + m_B + m_H + m_F                                     (A 1)
+      x_T = (x_B m_B + x_H m_H + w m_F) / m_T                         (A 2)
+      z_T = (-r_R m_R + z_B m_B + z_H m_H - r_F m_F) / m_T
+      I_Txx = sum I_xx + m_R r_R^2 + m_B z_B^2 + m_H z_H^2 + m_F r_F^2 (A 3)
+      I_Txz = I_Bxz + I_Hxz - m_B x_B z_B - m_H x_H z_H + m_F w r_F    (A 4)
+      I_Tzz = I_Rxx + I_Bzz + I_Hzz + I_Fxx + m_B x_B^2 + m_H x_H^2 + m_F w^2  (A 5)
+    Front assembly A = H + F about its own centre of mass (A 6-A 10), the
+    perpendicular distance u_A of its centre from the steer axis (A 11) and its
+    inertias about the steer axis (A 12-A 14):
+      u_A = (x_A - w - c) cos(lambda) - z_A sin(lambda)
+      I_All = m_A u_A^2 + I_Axx sin^2 + 2 I_Axz sin cos + I_Azz cos^2
+      I_Alx = -m_A u_A z_A + I_Axx sin + I_Axz cos
+      I_Alz =  m_A u_A x_A + I_Axz sin + I_Azz cos
+    mu = c cos(lambda) / w (A 15); S_R = I_Ryy / r_R, S_F = I_Fyy / r_F,
+    S_T = S_R + S_F (A 16); S_A = m_A u_A + mu m_T x_T (A 17).
+    """
+    w, c, lam = p["w"], p["c"], p["lambda"]
+    rR, mR, rF, mF = p["rR"], p["mR"], p["rF"], p["mF"]
+    xB, zB, mB, xH, zH, mH = p["xB"], p["zB"], p["mB"], p["xH"], p["zH"], p["mH"]
+    mT = mR + mB + mH + mF
+    xT = (xB * mB + xH * mH + w * mF) / mT
+    zT = (-rR * mR + zB * mB + zH * mH - rF * mF) / mT
+    ITxx = (p["IRxx"] + p["IBxx"] + p["IHxx"] + p["IFxx"] + mR * rR ** 2 + mB * zB ** 2
+            + mH * zH ** 2 + mF * rF ** 2)
+    ITxz = p["IBxz"] + p["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF
+    ITzz = (p["IRxx"] + p["IBzz"] + p["IHzz"] + p["IFxx"] + mB * xB ** 2 + mH * xH ** 2
+            + mF * w ** 2)
+    mA = mH + mF
+    xA = (xH * mH + w * mF) / mA
+    zA = (zH * mH - rF * mF) / mA
+    IAxx = p["IHxx"] + p["IFxx"] + mH * (zH - zA) ** 2 + mF * (rF + zA) ** 2
+    IAxz = p["IHxz"] - mH * (xH - xA) * (zH - zA) + mF * (w - xA) * (rF + zA)
+    IAzz = p["IHzz"] + p["IFxx"] + mH * (xH - xA) ** 2 + mF * (w - xA) ** 2
+    s, co = math.sin(lam), math.cos(lam)
+    uA = (xA - w - c) * co - zA * s
+    IAll = mA * uA ** 2 + IAxx * s * s + 2 * IAxz * s * co + IAzz * co * co
+    IAlx = -mA * uA * zA + IAxx * s + IAxz * co
+    IAlz = mA * uA * xA + IAxz * s + IAzz * co
+    mu = c / w * co
+    SR = p["IRyy"] / rR if gyroscopic else 0.0
+    SF = p["IFyy"] / rF if gyroscopic else 0.0
+    SA = mA * uA + mu * mT * xT
+    return Totals(mT, xT, zT, ITxx, ITxz, ITzz, mA, xA, zA, IAxx, IAxz, IAzz, uA, IAll, IAlx,
+                  IAlz, mu, SR, SF, SR + SF, SA)
+
+
+@dataclass(frozen=True)
+class Matrices:
+    """M (kg m^2), C1 (kg m), K0 (kg m), K2 (kg): 2x2 arrays, rows/columns (phi, delta)."""
+
+    M: np.ndarray
+    C1: np.ndarray
+    K0: np.ndarray
+    K2: np.ndarray
+
+
+def matrices(p: dict[str, float], gyroscopic: bool = True) -> Matrices:
+    """Eqs. A 20-A 23 of the paper.
+
+      M_pp = I_Txx,  M_pd = M_dp = I_Alx + mu I_Txz,  M_dd = I_All + 2 mu I_Alz + mu^2 I_Tzz
+      K0_pp = m_T z_T,  K0_pd = K0_dp = -S_A,  K0_dd = -S_A sin(lambda)
+      K2_pp = K2_dp = 0,  K2_pd = (S_T - m_T z_T) cos(lambda) / w,
+      K2_dd = (S_A + S_F sin(lambda)) cos(lambda) / w
+      C1_pp = 0,  C1_pd = mu S_T + S_F cos(lambda) + I_Txz cos(lambda) / w - mu m_T z_T,
+      C1_dp = -(mu S_T + S_F cos(lambda)),
+      C1_dd = I_Alz cos(lambda) / w + mu (S_A + I_Tzz cos(lambda) / w)
+    """
+    t = totals(p, gyroscopic)
+    w, lam = p["w"], p["lambda"]
+    s, co = math.sin(lam), math.cos(lam)
+    M = np.array([[t.ITxx, t.IAlx + t.mu * t.ITxz],
+                  [t.IAlx + t.mu * t.ITxz, t.IAll + 2 * t.mu * t.IAlz + t.mu ** 2 * t.ITzz]])
+    K0 = np.array([[t.mT * t.zT, -t.SA], [-t.SA, -t.SA * s]])
+    K2 = np.array([[0.0, (t.ST - t.mT * t.zT) * co / w],
+                   [0.0, (t.SA + t.SF * s) * co / w]])
+    gyro = t.mu * t.ST + t.SF * co
+    C1 = np.array([[0.0, gyro + t.ITxz * co / w - t.mu * t.mT * t.zT],
+                   [-gyro, t.IAlz * co / w + t.mu * (t.SA + t.ITzz * co / w)]])
+    return Matrices(M, C1, K0, K2)
+
+
+def state_matrix(m: Matrices, v: float, g: float) -> np.ndarray:
+    """The 4x4 A of x' = A x, x = (phi, delta, phi', delta'): Eq. 5.3 solved for q''."""
+    inv = np.linalg.inv(m.M)
+    A = np.zeros((4, 4))
+    A[:2, 2:] = np.eye(2)
+    A[2:, :2] = -inv @ (g * m.K0 + v * v * m.K2)
+    A[2:, 2:] = -inv @ (v * m.C1)
+    return A
+
+
+def eigenvalues(m: Matrices, v: float, g: float) -> np.ndarray:
+    """The four eigenvalues at speed v (complex), ascending real part, then imaginary part.
+
+    LAPACK returns a complex pair with bit-equal real parts, so the order is exact.
+    """
+    ev = np.linalg.eigvals(state_matrix(m, v, g)).astype(complex)
+    ev = np.where(np.abs(ev.imag) <= 1e-14 * np.maximum(1.0, np.abs(ev)), ev.real + 0j, ev)
+    order = np.lexsort((ev.imag, ev.real))
+    return ev[order]
+
+
+# ---- the characteristic polynomial as polynomials in v ------------------------
+
+def characteristic(m: Matrices, g: float) -> list[np.ndarray]:
+    """[a0, a1, a2, a3, a4]: det(M s^2 + v C1 s + g K0 + v^2 K2) = sum a_k(v) s^k.
+
+    Each a_k is a numpy.polynomial coefficient array in v (lowest power first).
+    For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
+      a3 = A11 B22 + B11 A22 - A12 B21 - B12 A21,
+      a2 = A11 C22 + B11 B22 + C11 A22 - A12 C21 - B12 B21 - C12 A21,
+      a1 = B11 C22 + C11 B22 - B12 C21 - C12 B21.
+    """
+    A = [[np.array([m.M[i, j]]) for j in range(2)] for i in range(2)]
+    B = [[np.array([0.0, m.C1[i, j]]) for j in range(2)] for i in range(2)]
+    C = [[np.array([g * m.K0[i, j], 0.0, m.K2[i, j]]) for j in range(2)] for i in range(2)]
+
+    def cross(X, Y):
+        """X11 Y22 + Y11 X22 - X12 Y21 - Y12 X21: the mixed term of det(X + Y)."""
+        return P.polysub(P.polyadd(P.polymul(X[0][0], Y[1][1]), P.polymul(Y[0][0], X[1][1])),
+                         P.polyadd(P.polymul(X[0][1], Y[1][0]), P.polymul(Y[0][1], X[1][0])))
+
+    def det(X):
+        return P.polysub(P.polymul(X[0][0], X[1][1]), P.polymul(X[0][1], X[1][0]))
+
+    a4 = det(A)
+    a3 = cross(A, B)
+    a2 = P.polyadd(cross(A, C), det(B))
+    a1 = cross(B, C)
+    a0 = det(C)
+    return [np.trim_zeros(a, "b") if np.any(a) else np.zeros(1) for a in (a0, a1, a2, a3, a4)]
+
+
+def hurwitz(coeffs: list[np.ndarray]) -> np.ndarray:
+    """H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 as a polynomial in v.
+
+    With a4 > 0, all four roots have negative real parts iff every a_k > 0 and
+    H3 > 0 (Routh-Hurwitz for a quartic). A pair of roots +-i omega on the
+    imaginary axis makes H3 = 0; a root s = 0 makes a0 = 0. So stability can
+    change only at roots of a0(v) (a real eigenvalue through 0: capsize-type)
+    and of H3(v) (a complex pair through the axis: weave-type).
+    """
+    a0, a1, a2, a3, a4 = coeffs
+    h = P.polysub(P.polymul(P.polymul(a1, a2), a3),
+                  P.polyadd(P.polymul(a0, P.polymul(a3, a3)), P.polymul(P.polymul(a1, a1), a4)))
+    return h
+
+
+def _positive_roots(poly: np.ndarray) -> list[float]:
+    """Real roots v > 0 of a polynomial in v that is even in v: solved in w = v^2.
+
+    Roots of the polynomial in w by numpy.roots, kept where real and positive,
+    then polished by Newton steps on the polynomial in v.
+    """
+    poly = np.asarray(poly, dtype=float)
+    if not np.any(poly):
+        return []
+    even = poly[::2].copy()                  # coefficients of w^0, w^1, ...
+    # B = v C1 and C = g K0 + v^2 K2 have exact zero coefficients, so the factors of
+    # w (roots at v = 0) come out as exact zeros, not as rounding noise.
+    while even.size and even[0] == 0:        # factors of w (v = 0 roots)
+        even = even[1:]
+    even = np.trim_zeros(even, "b")
+    if even.size < 2:
+        return []
+    roots = np.roots(even[::-1])
+    out = []
+    d = P.polyder(poly)
+    for r in roots:
+        if abs(r.imag) > 1e-9 * max(1.0, abs(r)) or r.real <= 0:
+            continue
+        v = math.sqrt(r.real)
+        for _ in range(8):
+            slope = P.polyval(v, d)
+            if slope == 0:
+                break
+            step = P.polyval(v, poly) / slope
+            v -= step
+            if abs(step) <= 1e-16 * abs(v):
+                break
+        if v > 0:
+            out.append(float(v))
+    return sorted(set(out))
+
+
+@dataclass(frozen=True)
+class Stability:
+    """The speeds (v > 0) where the self-stability changes, and the stable intervals."""
+
+    weave: list[float]            # a complex pair crosses the imaginary axis (H3 = 0)
+    capsize: list[float]          # a real eigenvalue crosses zero (a0 = 0)
+    stable: list[tuple[float, float]]   # (low, high); high may be inf
+    other: list[float]            # roots where the stability does not change (a real pair +-sigma)
+
+
+def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
+    """The largest real part of the eigenvalues at speed v."""
+    return float(np.max(eigenvalues(m, v, g).real))
+
+
+def stability(m: Matrices, g: float) -> Stability:
+    """Weave and capsize speeds and the self-stable speed range(s), v > 0.
+
+    Candidates are the positive roots of a0(v) and H3(v); between consecutive
+    candidates the eigenvalues' signs cannot change, so one speed inside each
+    interval decides it.
+    """
+    coeffs = characteristic(m, g)
+    capsize, weave, other = [], [], []
+    for v in _positive_roots(coeffs[0]):
+        ev = eigenvalues(m, v, g)
+        if np.min(np.abs(ev)) <= 1e-6 * max(1.0, float(np.max(np.abs(ev)))):
+            capsize.append(v)                # a real eigenvalue at 0
+        else:
+            other.append(v)                  # rounding: no eigenvalue there after all
+    for v in _positive_roots(hurwitz(coeffs)):
+        ev = eigenvalues(m, v, g)
+        scale = max(1.0, float(np.max(np.abs(ev))))
+        near = ev[np.argmin(np.abs(ev.real))]
+        if abs(near.real) <= 1e-6 * scale and abs(near.imag) > 1e-6 * scale:
+            weave.append(v)                  # a pair +-i omega on the imaginary axis
+        else:
+            other.append(v)                  # a real pair +-sigma: no change of stability
+    edges = sorted(set(capsize + weave + other))
+    points = [0.0] + edges + [math.inf]
+    stable: list[tuple[float, float]] = []
+    for lo, hi in zip(points, points[1:]):
+        probe = 0.5 * (lo + hi) if math.isfinite(hi) else (2 * lo if lo > 0 else 1.0)
+        if spectral_abscissa(m, probe, g) < 0:
+            if stable and stable[-1][1] == lo:
+                stable[-1] = (stable[-1][0], hi)
+            else:
+                stable.append((lo, hi))
+    return Stability(weave, capsize, stable, other)
+
+
+def motion(ev: np.ndarray, tol: float = 1e-12) -> str:
+    """stable, or which mode grows: capsize (a real eigenvalue > 0: the bicycle falls
+    over without oscillating), weave (a complex pair with positive real part: an
+    oscillation of lean and steer that grows), or 'capsize and weave'."""
+    scale = max(1.0, float(np.max(np.abs(ev))))
+    growing = [e for e in ev if e.real > tol * scale]
+    real = any(abs(e.imag) <= tol * scale for e in growing)
+    pair = any(abs(e.imag) > tol * scale for e in growing)
+    if real and pair:
+        return "capsize and weave"
+    if pair:
+        return "weave"
+    if real:
+        return "capsize"
+    return "stable"
