@@ -94,6 +94,10 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         if isinstance(value, str):
             lines.append(GivenLine(key, param.symbol, value, value, ""))
             continue
+        if param.dimension == "particles":
+            lines.append(GivenLine(key, param.symbol, f"{len(value)} particles",
+                                   "listed under Inertia", ""))
+            continue
         raw = problem.data.get("given", {}).get(key, param.default)
         text = " ".join(raw.split()) if isinstance(raw, str) else \
             f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()

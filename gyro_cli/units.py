@@ -28,10 +28,13 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "speed": ("[length] / [time]", "m/s", "a speed like '10 m/s'"),
     "time": ("[time]", "s", "a time like '2 s'"),
     "dimensionless": ("", "", "a plain number"),
+    "angular_momentum": ("[mass] * [length] ** 2 / [time]", "kg*m^2/s",
+                         "an angular momentum like '0.5 kg m^2/s' or '1e6 g cm^2/s'"),
+    "energy": ("[mass] * [length] ** 2 / [time] ** 2", "J", "an energy like '3 J'"),
 }
 
 # How SI units are written in worked answers.
-SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m"}
+SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}
 
 ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",

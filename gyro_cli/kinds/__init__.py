@@ -17,6 +17,8 @@ REGISTRY: dict[str, str] = {
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
     "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
+    "euler_angles": "gyro_cli.kinds.euler_angles",
+    "gyro_drift": "gyro_cli.kinds.gyro_drift",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".
