@@ -86,7 +86,8 @@ def test_larger_spin_means_slower_drift_and_faster_smaller_nutation():
     # doubling H halves the drift, doubles w_n and quarters the amplitude
     M, Ix, Iy = 1e-3, 2e-3, 3e-3
     assert gd.drift_rate(M, 2.0) == pytest.approx(gd.drift_rate(M, 1.0) / 2)
-    assert gd.nutation_frequency(2.0, Ix, Iy) == pytest.approx(2 * gd.nutation_frequency(1.0, Ix, Iy))
+    assert gd.nutation_frequency(2.0, Ix, Iy) == pytest.approx(
+        2 * gd.nutation_frequency(1.0, Ix, Iy))
     assert gd.nutation_amplitudes(M, 2.0, Ix, Iy)[0] == pytest.approx(
         gd.nutation_amplitudes(M, 1.0, Ix, Iy)[0] / 4)
 

@@ -129,14 +129,15 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                          f"omega_x, omega_y, omega_z", key=f"given.{rate_keys[0]}")
     if have_rates:
         missing = [k for k in rate_keys if k not in given]
+        r1, r2, r3 = (given.get(k, 0.0) for k in rate_keys)
+        work.section("Angular velocity in body axes (Eqs. 11.5-11.8)" if sequence == "zxz"
+                     else "Angular velocity in body axes (yaw, pitch, roll)")
         if missing:
             work.text(f"not given, taken as zero: {', '.join(missing)}")
-        r1, r2, r3 = (given.get(k, 0.0) for k in rate_keys)
         if sequence == "zxz":
-            work.section("Angular velocity in body axes (Eqs. 11.5-11.8)")
             work.text("omega = phidot K + thetadot i'' + psidot k  (Eq. 11.5), with "
                       "i'' = cos(psi) i - sin(psi) j, K = cos(theta) k + sin(theta) j'' (Eq. 11.6)")
-            st, ct, sp, cp = math.sin(a2), math.cos(a2), math.sin(a3), math.cos(a3)
+            st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
             omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
             work.step("omega_x", "phidot sin(theta) sin(psi) + thetadot cos(psi)",
                       f"{_rate(r1)} ({num(st)}) ({num(sp)}) + {_rate(r2)} ({num(cp)})",
@@ -148,9 +149,8 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                       f"{_rate(r1)} ({num(ct)}) + {_rate(r3)}", omega[2], "rad/s",
                       ref="Eq. 11.8")
         else:
-            work.section("Angular velocity in body axes (yaw, pitch, roll)")
             work.text("omega = yawdot Z + pitchdot y' + rolldot x (each rate about its own axis)")
-            sq, cq, sr, cr = math.sin(a2), math.cos(a2), math.sin(a3), math.cos(a3)
+            sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
             omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
             work.step("p", "rolldot - yawdot sin(pitch)", f"{_rate(r3)} - {_rate(r1)} "
                       f"({num(sq)})", omega[0], "rad/s")
@@ -167,13 +167,14 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         return omega, (r1, r2, r3)
 
     missing = [k for k in omega_keys if k not in given]
-    if missing:
-        work.text(f"not given, taken as zero: {', '.join(missing)}")
     omega = tuple(given.get(k, 0.0) for k in omega_keys)
     rates = _inverse(sequence, a2, a3, omega, raise_singular=True)
+    work.section("Euler rates from omega (Eq. 11.8 solved for the rates)" if sequence == "zxz"
+                 else "Euler rates from p, q, r (yaw, pitch, roll)")
+    if missing:
+        work.text(f"not given, taken as zero: {', '.join(missing)}")
     if sequence == "zxz":
-        work.section("Euler rates from omega (Eq. 11.8 solved for the rates)")
-        st, ct, sp, cp = math.sin(a2), math.cos(a2), math.sin(a3), math.cos(a3)
+        st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
         work.step("thetadot", "omega_x cos(psi) - omega_y sin(psi)",
                   f"{_rate(omega[0])} ({num(cp)}) - {_rate(omega[1])} ({num(sp)})", rates[1],
                   "rad/s")
@@ -183,8 +184,7 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         work.step("psidot", "omega_z - phidot cos(theta)",
                   f"{_rate(omega[2])} - {_rate(rates[0])} ({num(ct)})", rates[2], "rad/s")
     else:
-        work.section("Euler rates from p, q, r (yaw, pitch, roll)")
-        sq, cq, sr, cr = math.sin(a2), math.cos(a2), math.sin(a3), math.cos(a3)
+        sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
         work.step("yawdot", "(q sin(roll) + r cos(roll)) / cos(pitch)",
                   f"({_rate(omega[1])} ({num(sr)}) + {_rate(omega[2])} ({num(cr)})) / "
                   f"{num(cq)}", rates[0], "rad/s")
@@ -193,7 +193,7 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                   "rad/s")
         work.step("rolldot", "p + yawdot sin(pitch)",
                   f"{_rate(omega[0])} + {_rate(rates[0])} ({num(sq)})", rates[2], "rad/s")
-    near = abs(math.sin(a2)) if sequence == "zxz" else abs(math.cos(a2))
+    near = abs(ek.sin_exact(a2)) if sequence == "zxz" else abs(ek.cos_exact(a2))
     if near < math.sin(math.radians(1)):
         work.warn(f"{second} is within 1 deg of the singular attitude: the rates {first}_rate "
                   f"and {third}_rate are large and sensitive to rounding in the data")
@@ -229,7 +229,7 @@ def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3
     work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz")
     if sequence == "zxz":
         r1, r2, r3 = rates
-        s1, c1, s2, c2 = math.sin(a1), math.cos(a1), math.sin(a2), math.cos(a2)
+        s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)
         work.text("equivalently omega = phidot K + thetadot (cos(phi) I + sin(phi) J) + psidot k, "
                   "k = sin(theta) sin(phi) I - sin(theta) cos(phi) J + cos(theta) K:")
         work.step("omega_X", "thetadot cos(phi) + psidot sin(theta) sin(phi)",
@@ -391,8 +391,15 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
             work.step(name, f"I_{name[-1]} omega_{name[-1]}", f"{qty(I, 'kg m^2')} ({_rate(w)})",
                       value, "kg m^2/s")
     else:
-        work.step("T", "(1/2) omega . (I omega)", value=T, unit="J",
-                  ref="Eq. 11.2, first line, with the products")
+        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
+        Ixy, Iyz, Izx = -matrix[0][1], -matrix[1][2], -matrix[0][2]
+        I_ = lambda v: qty(v, "kg m^2")  # noqa: E731
+        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2 - 2 I_yz omega_y "
+                  "omega_z - 2 I_zx omega_z omega_x - 2 I_xy omega_x omega_y)",
+                  f"(1/2) ({I_(Ix)} ({_rate(wx)})^2 + {I_(Iy)} ({_rate(wy)})^2 + {I_(Iz)} "
+                  f"({_rate(wz)})^2 - 2 ({I_(Iyz)}) ({_rate(wy)}) ({_rate(wz)}) - 2 ({I_(Izx)}) "
+                  f"({_rate(wz)}) ({_rate(wx)}) - 2 ({I_(Ixy)}) ({_rate(wx)}) ({_rate(wy)}))",
+                  T, "J", ref="Eq. 11.2, first line, with the products")
         work.step("H_x", "I_x omega_x - I_xy omega_y - I_zx omega_z", value=H[0], unit="kg m^2/s")
         work.step("H_y", "-I_xy omega_x + I_y omega_y - I_yz omega_z", value=H[1],
                   unit="kg m^2/s")

@@ -170,8 +170,10 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
               note="about y, the drift axis: the ripple on the drift")
     work.step("a_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
               note="largest deflection about x, reached every half period")
-    work.check(f"I_x a'' + H b' at t = T_n / 4: {qty(Ix * _a_dd(M, H, Ix, Iy, period / 4) + H * _b_d(M, H, Ix, Iy, period / 4), 'N m')}"
-               f" = M = {qty(M, 'N m')}")
+    quarter = period / 4
+    residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
+    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x a'' + H b' = "
+               f"{qty(residual, 'N m')}, M = {qty(M, 'N m')}")
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
         work.warn(f"the nutation reaches {num(math.degrees(max(abs(2 * ax), abs(ay))))} deg: the "
                   "linearised gimbal equations assume small angles")

@@ -55,13 +55,13 @@ class SingularAngles(ValueError):
     """The Euler-angle rates are not determined at this attitude (gimbal lock)."""
 
 
-def _sin(a: float) -> float:
+def sin_exact(a: float) -> float:
     """sin(a), exactly 0 at multiples of pi written in floating point."""
     s = math.sin(a)
     return 0.0 if abs(s) < 1e-15 else s
 
 
-def _cos(a: float) -> float:
+def cos_exact(a: float) -> float:
     """cos(a), exactly 0 at odd multiples of pi/2 written in floating point."""
     c = math.cos(a)
     return 0.0 if abs(c) < 1e-15 else c
@@ -70,17 +70,17 @@ def _cos(a: float) -> float:
 # ---- rotations --------------------------------------------------------------
 
 def rot_x(a: float) -> Matrix:
-    c, s = _cos(a), _sin(a)
+    c, s = cos_exact(a), sin_exact(a)
     return ((1.0, 0.0, 0.0), (0.0, c, -s), (0.0, s, c))
 
 
 def rot_y(a: float) -> Matrix:
-    c, s = _cos(a), _sin(a)
+    c, s = cos_exact(a), sin_exact(a)
     return ((c, 0.0, s), (0.0, 1.0, 0.0), (-s, 0.0, c))
 
 
 def rot_z(a: float) -> Matrix:
-    c, s = _cos(a), _sin(a)
+    c, s = cos_exact(a), sin_exact(a)
     return ((c, -s, 0.0), (s, c, 0.0), (0.0, 0.0, 1.0))
 
 
@@ -115,7 +115,7 @@ def attitude(sequence: str, first: float, second: float, third: float) -> Matrix
 def body_rates_zxz(theta: float, psi: float, phi_rate: float, theta_rate: float,
                    psi_rate: float) -> Vector:
     """(omega_x, omega_y, omega_z) in body axes, Eq. 11.8."""
-    st, ct, sp, cp = _sin(theta), _cos(theta), _sin(psi), _cos(psi)
+    st, ct, sp, cp = sin_exact(theta), cos_exact(theta), sin_exact(psi), cos_exact(psi)
     return (phi_rate * st * sp + theta_rate * cp,
             phi_rate * st * cp - theta_rate * sp,
             phi_rate * ct + psi_rate)
@@ -127,18 +127,18 @@ def euler_rates_zxz(theta: float, psi: float, wx: float, wy: float, wz: float) -
     thetadot = wx cos(psi) - wy sin(psi);  phidot = (wx sin(psi) + wy cos(psi)) / sin(theta);
     psidot = wz - phidot cos(theta). SingularAngles where sin(theta) = 0.
     """
-    st = _sin(theta)
+    st = sin_exact(theta)
     if abs(st) < SINGULAR:
         raise SingularAngles("sin(theta) = 0")
-    sp, cp = _sin(psi), _cos(psi)
+    sp, cp = sin_exact(psi), cos_exact(psi)
     phi_rate = (wx * sp + wy * cp) / st
-    return (phi_rate, wx * cp - wy * sp, wz - phi_rate * _cos(theta))
+    return (phi_rate, wx * cp - wy * sp, wz - phi_rate * cos_exact(theta))
 
 
 def body_rates_zyx(pitch: float, roll: float, yaw_rate: float, pitch_rate: float,
                    roll_rate: float) -> Vector:
     """(p, q, r) in body axes for yaw-pitch-roll."""
-    sr, cr, sq, cq = _sin(roll), _cos(roll), _sin(pitch), _cos(pitch)
+    sr, cr, sq, cq = sin_exact(roll), cos_exact(roll), sin_exact(pitch), cos_exact(pitch)
     return (roll_rate - yaw_rate * sq,
             pitch_rate * cr + yaw_rate * cq * sr,
             -pitch_rate * sr + yaw_rate * cq * cr)
@@ -150,12 +150,12 @@ def euler_rates_zyx(pitch: float, roll: float, p: float, q: float, r: float) -> 
     yawdot = (q sin(roll) + r cos(roll)) / cos(pitch); pitchdot = q cos(roll) - r sin(roll);
     rolldot = p + yawdot sin(pitch).
     """
-    cq = _cos(pitch)
+    cq = cos_exact(pitch)
     if abs(cq) < SINGULAR:
         raise SingularAngles("cos(pitch) = 0")
-    sr, cr = _sin(roll), _cos(roll)
+    sr, cr = sin_exact(roll), cos_exact(roll)
     yaw_rate = (q * sr + r * cr) / cq
-    return (yaw_rate, q * cr - r * sr, p + yaw_rate * _sin(pitch))
+    return (yaw_rate, q * cr - r * sr, p + yaw_rate * sin_exact(pitch))
 
 
 # ---- inertia ----------------------------------------------------------------
