@@ -50,7 +50,9 @@ def _solve(problem: Problem) -> Result:
     kind = problem.kind
     if kind.uses_body:
         problem.given.body = build_body(problem.given.values, problem.us_customary, work)
-        if problem.us_customary and "g" not in problem.given.values:
+        if not kind.extra.get("uses_gravity", True) and "weight" not in problem.given.values:
+            pass  # gravity plays no part in this kind (and no weight to turn into a mass)
+        elif problem.us_customary and "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
                                         "m/s^2", "US customary data: textbook g"))
         elif "g" not in problem.given.values:

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -374,3 +375,28 @@ def test_vary_refuses_particles_and_schema_describes_them(run, tmp_path):
     particles = rule["then"]["properties"]["given"]["properties"]["particles"]
     assert particles["type"] == "array"
     assert particles["items"]["required"] == ["mass", "x", "y", "z"]
+
+
+def test_every_answer_and_key_is_documented(run):
+    from pathlib import Path
+
+    from gyro_cli import kinds
+
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "euler_and_drift.md").read_text()
+    listing = run("kinds").stdout
+    for name in ("euler_angles", "gyro_drift"):
+        kind = kinds.get(name)
+        for item in [a.name for a in kind.answers] + [p.name for p in kind.params]:
+            assert f"`{item}`" in doc, (name, item)
+            assert re.search(rf"^    {item}(\s|angular|rate|inertia|angle)", listing,
+                             re.M), (name, item)
+
+
+def test_no_gravity_line_where_gravity_plays_no_part(run, write):
+    out = json.loads(run("solve", "--format", "json", write("""
+        id: g
+        kind: euler_angles
+        given: {theta: 30 deg, psi: 0 deg, psi_rate: 1 rad/s, I: 1 kg m^2, J: 1 kg m^2}
+        find: [kinetic_energy]
+        """)).stdout)
+    assert "g" not in [line["key"] for line in out["given"]]

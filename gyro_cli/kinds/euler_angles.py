@@ -39,6 +39,7 @@ def _rate(x: float) -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    _drop_empty_body_section(work)
     sequence = given.word("sequence", "zxz")
     first, second, third = ANGLES[sequence]
     other = ANGLES["zyx" if sequence == "zxz" else "zxz"]
@@ -111,6 +112,11 @@ FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z"}
 NEEDS_INERTIA = {"kinetic_energy", "H_x", "H_y", "H_z", "H_X", "H_Y", "H_Z", "angular_momentum",
                  "omega_H_angle", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx",
                  "principal_moments"}
+
+
+def _drop_empty_body_section(work: Work) -> None:
+    """The body section is written only where the body's inertias are worked out."""
+    work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
 
 
 def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: float, a3: float,
@@ -499,7 +505,7 @@ KIND = Kind(
         AnswerSpec("roll_rate", "rate", "phi_rdot", "zyx: roll rate"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"uses_gravity": False, "example": {
         "given": {"phi": "30 deg", "theta": "60 deg", "psi": "45 deg", "phi_rate": "2 rad/s",
                   "theta_rate": "1 rad/s", "psi_rate": "10 rad/s", "I": "0.02 kg m^2",
                   "J": "0.03 kg m^2"},

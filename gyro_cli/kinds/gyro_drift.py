@@ -27,6 +27,7 @@ def _h(x: float) -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
     work.section("Conventions")
     work.text("k: the spin axis; x: the gimbal axis about which the disturbing moment M acts; "
               "y: the other gimbal axis, at right angles to both. a, b: small rotations of the "
@@ -232,7 +233,7 @@ KIND = Kind(
                    "about the moment's axis"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"uses_gravity": False, "example": {
         "given": {"J": "2.5e-4 kg m^2", "spin": "24000 rpm", "moment": "1e-7 N m",
                   "I": "2e-4 kg m^2", "duration": "1 h"},
         "find": {"drift_rate": "deg/h", "drift_angle": "deg", "nutation_frequency": "Hz",
