@@ -400,3 +400,30 @@ def test_no_gravity_line_where_gravity_plays_no_part(run, write):
         find: [kinetic_energy]
         """)).stdout)
     assert "g" not in [line["key"] for line in out["given"]]
+
+
+def test_a_body_described_by_shape_and_cg_distance(run, write):
+    # a 2 kg disk of radius 0.1 m whose centre is 0.2 m from the fixed point along k:
+    # J = m r^2 / 2 = 0.01, I = m r^2 / 4 + m l^2 = 0.085 (parallel axes); Eq. 11.10 for T
+    a = solve_json(run, write("""
+        id: disk
+        kind: euler_angles
+        given: {mass: 2 kg, shape: disk, radius: 0.1 m, cg_distance: 0.2 m,
+                theta: 60 deg, psi: 30 deg, phi_rate: 2 rad/s, theta_rate: 0.5 rad/s,
+                psi_rate: 40 rad/s}
+        find: [kinetic_energy, principal_moments]
+        """))
+    th = math.radians(60)
+    T = 0.5 * (0.085 * (0.25 + 4 * math.sin(th) ** 2) + 0.01 * (40 + 2 * math.cos(th)) ** 2)
+    assert a["kinetic_energy"][0] == pytest.approx(T, rel=1e-12)
+    assert a["principal_moments"] == pytest.approx([0.01, 0.085, 0.085])
+
+
+def test_omega_H_angle_at_rest_is_refused_plainly(run, write):
+    result = run("solve", write("""
+        id: r
+        kind: euler_angles
+        given: {theta: 30 deg, psi: 0 deg, psi_rate: 0 rad/s, I: 1 kg m^2, J: 1 kg m^2}
+        find: [omega_H_angle]
+        """))
+    one_line(result, "find.omega_H_angle", "undefined")

@@ -106,6 +106,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              "I_pivot, shape, ...); or particles", key="given.I_x")
         return
     _energy_and_momentum(matrix, omega, R, work)
+    if "omega_H_angle" in find and "omega_H_angle" not in work.answers:
+        raise InputError("omega_H_angle is undefined here: H = 0 (the body is at rest, or turns "
+                         "about a line on which all its mass lies)", key="find.omega_H_angle")
 
 
 FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z"}
