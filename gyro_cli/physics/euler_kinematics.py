@@ -21,7 +21,8 @@ phi about the body's x): R = Rz(yaw) Ry(pitch) Rx(roll) and
     q = pitchdot cos(roll) + yawdot cos(pitch) sin(roll)
     r = -pitchdot sin(roll) + yawdot cos(pitch) cos(roll)
 
-(e.g. Etkin, Dynamics of Atmospheric Flight, Eq. 4.4,2). Each inverse divides
+(as flight-dynamics texts write them, e.g. Etkin, Dynamics of Atmospheric
+Flight; re-derived in the tests from R^T dR/dt). Each inverse divides
 by sin(theta) (z-x-z) or cos(pitch) (z-y-x): there the first and last rotations
 turn about the same axis and the rates are not determined.
 
