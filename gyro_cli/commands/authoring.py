@@ -34,9 +34,8 @@ EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
     "rate": "1800 rpm", "angle": "30 deg", "inertia": "0.01 kg m^2", "moment": "2 N m",
     "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
-    "angular_momentum": "2 kg m^2/s",
-    "speed": "10 m/s", "time": "2 s", "dimensionless": "1", "inverse_time": "-0.32 s^-1",
-    "mass_length": "2 kg m",
+    "angular_momentum": "2 kg m^2/s", "inverse_time": "-0.32 s^-1", "mass_length": "2 kg m",
+    "energy": "3 J", "particles": "[{mass: 1 kg, x: 0.1 m, y: 0 m, z: 0 m}]",
 }
 ANSWER_UNIT = {"rate": "rpm", "angle": "deg", "inverse_time": "s^-1"}
 
@@ -200,6 +199,12 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
             given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
+        elif p.dimension == "particles":
+            given[p.name] = {"type": "array", "minItems": 1, "description": p.doc,
+                             "items": {"type": "object", "additionalProperties": False,
+                                       "required": ["mass", "x", "y", "z"],
+                                       "properties": {n: quantity for n in
+                                                      ("mass", "x", "y", "z")}}}
         else:
             given[p.name] = dict(quantity, description=f"{p.doc} ({p.dimension})")
     answers = [a.name for a in kind.answers]
@@ -223,7 +228,7 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             "type": "object", "additionalProperties": False,
             "properties": {name: tolerance_one for name in answers + ["default"]}}]},
         "vary": {"type": "object", "propertyNames": {"enum": [
-            p.name for p in params if p.dimension not in ("word",)]}},
+            p.name for p in params if p.dimension not in ("word", "particles")]}},
     }
 
 
@@ -247,7 +252,7 @@ def parse_vary(problem: Any) -> list[tuple[str, str, float, float, str, float]]:
     for key, bounds in raw.items():
         where = f"vary.{key}"
         param = params.get(str(key))
-        if param is None or param.dimension == "word":
+        if param is None or param.dimension in ("word", "particles"):
             raise InputError(f"{key!r} is not a numeric given key of kind {problem.kind.name}",
                              key=where)
         if not isinstance(bounds, list) or len(bounds) != 2:

@@ -34,6 +34,7 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "dimensionless": ("", "", "a plain number"),
     "inverse_time": ("1 / [time]", "1/s", "an eigenvalue or growth rate like '-0.32 s^-1'"),
     "mass_length": ("[mass] * [length]", "kg*m", "a mass times a length like '2 kg m'"),
+    "energy": ("[mass] * [length] ** 2 / [time] ** 2", "J", "an energy like '3 J'"),
 }
 
 # How SI units are written in worked answers.

@@ -23,6 +23,8 @@ REGISTRY: dict[str, str] = {
     "four_wheeler": "gyro_cli.kinds.four_wheeler",
     "torque_free": "gyro_cli.kinds.torque_free",
     "bicycle": "gyro_cli.kinds.bicycle",
+    "euler_angles": "gyro_cli.kinds.euler_angles",
+    "gyro_drift": "gyro_cli.kinds.gyro_drift",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

@@ -103,8 +103,15 @@ def _key_lines(node: Any) -> dict[str, int]:
         name = str(key.value)
         _once(lines, name, key)
         if isinstance(value, yaml.MappingNode):
-            for sub_key, _ in value.value:
+            for sub_key, sub_value in value.value:
                 _once(lines, f"{name}.{sub_key.value}", sub_key)
+                if isinstance(sub_value, yaml.SequenceNode):  # a list of mappings (particles)
+                    for i, item in enumerate(sub_value.value):
+                        where = f"{name}.{sub_key.value}[{i}]"
+                        lines[where] = item.start_mark.line + 1
+                        if isinstance(item, yaml.MappingNode):
+                            for item_key, _ in item.value:
+                                _once(lines, f"{where}.{item_key.value}", item_key)
     return lines
 
 
@@ -123,7 +130,11 @@ def load(path: str) -> Problem:
     try:
         return _build(path, data, lines)
     except InputError as err:
-        raise err.located(file=path, line=lines.get(err.key or "")) from None
+        key = err.key or ""
+        line = lines.get(key)
+        if line is None and "[" in key:  # a key missing from a list item: the item's line
+            line = lines.get(key.rsplit(".", 1)[0])
+        raise err.located(file=path, line=line) from None
 
 
 def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
@@ -186,7 +197,43 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
             raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
                              f"{suggest(str(text), param.choices)}", key=key)
         return text, text
+    if param.dimension == "particles":
+        return parse_particles(text, key), text
     return units.parse(text, param.dimension, key, weight=param.name == "weight")
+
+
+PARTICLE_KEYS = ("mass", "x", "y", "z")
+MAX_PARTICLES = 10_000
+
+
+def parse_particles(raw: Any, key: str) -> tuple[tuple[float, float, float, float], ...]:
+    """A list of {mass, x, y, z} mappings -> ((m, x, y, z) in SI, ...); positive masses."""
+    if not isinstance(raw, list) or not raw:
+        raise InputError("expected a list of particles, each {mass: .., x: .., y: .., z: ..}, "
+                         f"got a {_type_name(raw)}", key=key)
+    if len(raw) > MAX_PARTICLES:
+        raise InputError(f"{len(raw)} particles; at most {MAX_PARTICLES} are accepted", key=key)
+    out = []
+    for i, item in enumerate(raw):
+        where = f"{key}[{i}]"
+        if not isinstance(item, dict):
+            raise InputError(f"expected a mapping {{mass: .., x: .., y: .., z: ..}}, got a "
+                             f"{_type_name(item)}", key=where)
+        for name in item:
+            if name not in PARTICLE_KEYS:
+                raise InputError(f"unknown key{suggest(str(name), PARTICLE_KEYS)} (a particle "
+                                 "has mass, x, y, z)", key=f"{where}.{name}")
+        for name in PARTICLE_KEYS:
+            if name not in item:
+                what = "its mass" if name == "mass" else f"its position {name} (body axes)"
+                raise InputError(f"this particle needs {what}", key=f"{where}.{name}")
+        m, _ = units.parse(item["mass"], "mass", f"{where}.mass")
+        if m <= 0:
+            raise InputError(f"a particle's mass must be positive, got {item['mass']!r}",
+                             key=f"{where}.mass")
+        xyz = [units.parse(item[n], "length", f"{where}.{n}")[0] for n in ("x", "y", "z")]
+        out.append((m, *xyz))
+    return tuple(out)
 
 
 def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:

@@ -50,8 +50,8 @@ def _solve(problem: Problem) -> Result:
     kind = problem.kind
     if kind.uses_body:
         problem.given.body = build_body(problem.given.values, problem.us_customary, work)
-        if not kind.extra.get("gravity", True):
-            pass  # no weight acts in this kind's equations: g is not listed
+        if not kind.extra.get("gravity", True) and "weight" not in problem.given.values:
+            pass  # gravity plays no part in this kind (and no weight to turn into a mass)
         elif problem.us_customary and "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
                                         "m/s^2", "US customary data: textbook g"))
@@ -95,6 +95,10 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         quantity = problem.quantities[key]
         if isinstance(value, str):
             lines.append(GivenLine(key, param.symbol, value, value, ""))
+            continue
+        if param.dimension == "particles":
+            lines.append(GivenLine(key, param.symbol, f"{len(value)} particles",
+                                   "listed under Inertia", ""))
             continue
         raw = problem.data.get("given", {}).get(key, param.default)
         text = " ".join(raw.split()) if isinstance(raw, str) else \

@@ -1,0 +1,518 @@
+"""A rigid body with one point fixed, described by Euler angles (section 11.1).
+
+Given the three angles and their rates (or the body components of omega, the
+inverse), the angular velocity in body axes (Eq. 11.8) and in the fixed frame,
+the kinetic energy (Eq. 11.2) and the angular momentum about the fixed point,
+from principal moments, from I and J (a symmetric body), from a body as the
+other kinds describe one, or from particles (Eq. 11.3, products included). The
+formulas are in gyro_cli/physics/euler_kinematics.py.
+
+Sequences: ``zxz`` (the chapter's, default: phi about K, theta about the line of
+nodes, psi about the body's k) and ``zyx`` (yaw, pitch, roll as aircraft books
+write it).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..physics import euler_kinematics as ek
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+
+# sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
+ANGLES = {"zxz": ("phi", "theta", "psi"), "zyx": ("yaw", "pitch", "roll")}
+SYMBOLS = {"phi": "phi", "theta": "theta", "psi": "psi", "yaw": "psi_y", "pitch": "theta_p",
+           "roll": "phi_r"}
+INERTIA_SLACK = 0.01  # rounded data may break I_max <= I_a + I_b by this much
+MAX_LISTED = 12
+
+
+def _deg(x: float) -> str:
+    return f"{num(math.degrees(x))} deg"
+
+
+def _rate(x: float) -> str:
+    return qty(x, "rad/s")
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    _drop_empty_body_section(work)
+    sequence = given.word("sequence", "zxz")
+    first, second, third = ANGLES[sequence]
+    other = ANGLES["zyx" if sequence == "zxz" else "zxz"]
+    for key in other + tuple(f"{k}_rate" for k in other):
+        if key in given:
+            raise InputError(f"{key} belongs to `sequence: {'zyx' if sequence == 'zxz' else 'zxz'}`"
+                             f"; with sequence {sequence} give {first}, {second}, {third} and "
+                             "their rates", key=f"given.{key}")
+    wrong = [n for n in find if n.endswith("_rate") and n.split("_")[0] in other]
+    if wrong:
+        raise InputError(f"{wrong[0]} is a rate of the {'zyx' if sequence == 'zxz' else 'zxz'} "
+                         f"sequence; this problem uses {sequence} ({first}_rate, {second}_rate, "
+                         f"{third}_rate)", key=f"find.{wrong[0]}")
+    for key in (second, third):
+        if key not in given:
+            raise InputError(f"Eq. 11.8 needs the angles {second} and {third}"
+                             if sequence == "zxz" else
+                             f"the body rates need the {second} and {third} angles",
+                             key=f"given.{key}")
+    a2, a3 = given[second], given[third]
+    a1 = given.get(first)
+
+    work.section("Conventions")
+    if sequence == "zxz":
+        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
+                  "K, then by theta about the line of nodes i' = i'', then by psi about the "
+                  "body's k. The body axes in the fixed frame are the columns of "
+                  "R = Rz(phi) Rx(theta) Rz(psi).")
+    else:
+        work.text("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
+                  "the fixed frame by the yaw psi about Z, then by the pitch theta about the new "
+                  "y, then by the roll phi about the body's x. R = Rz(yaw) Ry(pitch) Rx(roll); "
+                  "p, q, r = omega_x, omega_y, omega_z.")
+    work.text("omega: the body's angular velocity relative to the fixed frame; the origin is the "
+              "fixed point, about which the moments of inertia are taken.")
+
+    omega, rates = _angular_velocity(given, find, sequence, a2, a3, work)
+    if a1 is not None:
+        R = ek.attitude(sequence, a1, a2, a3)
+        fixed = ek.matvec(R, omega)
+        _fixed_frame(sequence, R, omega, fixed, rates, a1, a2, a3, work)
+        for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
+            work.answer(name, name, [value], "rate")
+    else:
+        R = None
+        asked = sorted(n for n in find if n in FIXED_FRAME_ANSWERS)
+        if asked:
+            raise InputError(f"{asked[0]} (a fixed-frame component) depends on the first angle: "
+                             f"give {first}", key=f"given.{first}")
+    work.step("|omega|", "sqrt(omega_x^2 + omega_y^2 + omega_z^2)", value=ek.norm(omega),
+              unit="rad/s")
+    for name, value in zip(("omega_x", "omega_y", "omega_z"), omega):
+        work.answer(name, name, [value], "rate")
+    work.answer("omega", "|omega|", [ek.norm(omega)], "rate")
+    for name, value in zip((first, second, third), rates):
+        work.answer(f"{name}_rate", f"{SYMBOLS[name]}dot", [value], "rate")
+
+    matrix = _inertia(given, find, work)
+    if matrix is None:
+        asked = sorted(n for n in find if n in NEEDS_INERTIA)
+        if asked:
+            raise InputError(f"{asked[0]} needs the body's inertia about the fixed point: give "
+                             "I_x, I_y, I_z; or I and J (a symmetric body); or the body (J, "
+                             "I_pivot, shape, ...); or particles", key="given.I_x")
+        return
+    _energy_and_momentum(matrix, omega, R, work)
+    if "omega_H_angle" in find and "omega_H_angle" not in work.answers:
+        raise InputError("omega_H_angle is undefined here: H = 0 (the body is at rest, or turns "
+                         "about a line on which all its mass lies)", key="find.omega_H_angle")
+
+
+FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z"}
+NEEDS_INERTIA = {"kinetic_energy", "H_x", "H_y", "H_z", "H_X", "H_Y", "H_Z", "angular_momentum",
+                 "omega_H_angle", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx",
+                 "principal_moments"}
+
+
+def _drop_empty_body_section(work: Work) -> None:
+    """The body section is written only where the body's inertias are worked out."""
+    work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
+
+
+def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: float, a3: float,
+                      work: Work) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+    """omega in body axes and the three Euler rates, forward (rates given) or inverse."""
+    first, second, third = ANGLES[sequence]
+    rate_keys = [f"{k}_rate" for k in (first, second, third)]
+    omega_keys = ["omega_x", "omega_y", "omega_z"]
+    have_rates = [k for k in rate_keys if k in given]
+    have_omega = [k for k in omega_keys if k in given]
+    if have_rates and have_omega:
+        raise InputError(f"give the Euler rates or the body components of omega, not both "
+                         f"({have_rates[0]} and {have_omega[0]})", key=f"given.{have_omega[0]}")
+    if not have_rates and not have_omega:
+        raise InputError(f"give the Euler rates ({', '.join(rate_keys)}) or, for the inverse, "
+                         f"omega_x, omega_y, omega_z", key=f"given.{rate_keys[0]}")
+    if have_rates:
+        missing = [k for k in rate_keys if k not in given]
+        r1, r2, r3 = (given.get(k, 0.0) for k in rate_keys)
+        work.section("Angular velocity in body axes (Eqs. 11.5-11.8)" if sequence == "zxz"
+                     else "Angular velocity in body axes (yaw, pitch, roll)")
+        if missing:
+            work.text(f"not given, taken as zero: {', '.join(missing)}")
+        if sequence == "zxz":
+            work.text("omega = phidot K + thetadot i'' + psidot k  (Eq. 11.5), with "
+                      "i'' = cos(psi) i - sin(psi) j, K = cos(theta) k + sin(theta) j'' (Eq. 11.6)")
+            st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+            omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
+            work.step("omega_x", "phidot sin(theta) sin(psi) + thetadot cos(psi)",
+                      f"{_rate(r1)} ({num(st)}) ({num(sp)}) + {_rate(r2)} ({num(cp)})",
+                      omega[0], "rad/s", ref="Eq. 11.8")
+            work.step("omega_y", "phidot sin(theta) cos(psi) - thetadot sin(psi)",
+                      f"{_rate(r1)} ({num(st)}) ({num(cp)}) - {_rate(r2)} ({num(sp)})",
+                      omega[1], "rad/s", ref="Eq. 11.8")
+            work.step("omega_z", "phidot cos(theta) + psidot",
+                      f"{_rate(r1)} ({num(ct)}) + {_rate(r3)}", omega[2], "rad/s",
+                      ref="Eq. 11.8")
+        else:
+            work.text("omega = yawdot Z + pitchdot y' + rolldot x (each rate about its own axis)")
+            sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+            omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
+            work.step("p", "rolldot - yawdot sin(pitch)", f"{_rate(r3)} - {_rate(r1)} "
+                      f"({num(sq)})", omega[0], "rad/s")
+            work.step("q", "pitchdot cos(roll) + yawdot cos(pitch) sin(roll)",
+                      f"{_rate(r2)} ({num(cr)}) + {_rate(r1)} ({num(cq)}) ({num(sr)})",
+                      omega[1], "rad/s")
+            work.step("r", "-pitchdot sin(roll) + yawdot cos(pitch) cos(roll)",
+                      f"-{_rate(r2)} ({num(sr)}) + {_rate(r1)} ({num(cq)}) ({num(cr)})",
+                      omega[2], "rad/s")
+        back = _inverse(sequence, a2, a3, omega, raise_singular=False)
+        if back is not None:
+            work.check("the inverse of Eq. 11.8 gives back the rates: " + ", ".join(
+                f"{k} = {_rate(v)}" for k, v in zip(rate_keys, back)))
+        return omega, (r1, r2, r3)
+
+    missing = [k for k in omega_keys if k not in given]
+    omega = tuple(given.get(k, 0.0) for k in omega_keys)
+    rates = _inverse(sequence, a2, a3, omega, raise_singular=True)
+    work.section("Euler rates from omega (Eq. 11.8 solved for the rates)" if sequence == "zxz"
+                 else "Euler rates from p, q, r (yaw, pitch, roll)")
+    if missing:
+        work.text(f"not given, taken as zero: {', '.join(missing)}")
+    if sequence == "zxz":
+        st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+        work.step("thetadot", "omega_x cos(psi) - omega_y sin(psi)",
+                  f"{_rate(omega[0])} ({num(cp)}) - {_rate(omega[1])} ({num(sp)})", rates[1],
+                  "rad/s")
+        work.step("phidot", "(omega_x sin(psi) + omega_y cos(psi)) / sin(theta)",
+                  f"({_rate(omega[0])} ({num(sp)}) + {_rate(omega[1])} ({num(cp)})) / "
+                  f"{num(st)}", rates[0], "rad/s")
+        work.step("psidot", "omega_z - phidot cos(theta)",
+                  f"{_rate(omega[2])} - {_rate(rates[0])} ({num(ct)})", rates[2], "rad/s")
+    else:
+        sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+        work.step("yawdot", "(q sin(roll) + r cos(roll)) / cos(pitch)",
+                  f"({_rate(omega[1])} ({num(sr)}) + {_rate(omega[2])} ({num(cr)})) / "
+                  f"{num(cq)}", rates[0], "rad/s")
+        work.step("pitchdot", "q cos(roll) - r sin(roll)",
+                  f"{_rate(omega[1])} ({num(cr)}) - {_rate(omega[2])} ({num(sr)})", rates[1],
+                  "rad/s")
+        work.step("rolldot", "p + yawdot sin(pitch)",
+                  f"{_rate(omega[0])} + {_rate(rates[0])} ({num(sq)})", rates[2], "rad/s")
+    near = abs(ek.sin_exact(a2)) if sequence == "zxz" else abs(ek.cos_exact(a2))
+    if near < math.sin(math.radians(1)):
+        work.warn(f"{second} is within 1 deg of the singular attitude: the rates {first}_rate "
+                  f"and {third}_rate are large and sensitive to rounding in the data")
+    check = (ek.body_rates_zxz(a2, a3, *rates) if sequence == "zxz"
+             else ek.body_rates_zyx(a2, a3, *rates))
+    work.check("the rates put back into Eq. 11.8 give omega = (" +
+               ", ".join(_rate(v) for v in check) + ")")
+    return omega, rates
+
+
+def _inverse(sequence: str, a2: float, a3: float, omega, raise_singular: bool):
+    try:
+        if sequence == "zxz":
+            return ek.euler_rates_zxz(a2, a3, *omega)
+        return ek.euler_rates_zyx(a2, a3, *omega)
+    except ek.SingularAngles:
+        if not raise_singular:
+            return None
+    first, second, third = ANGLES[sequence]
+    if sequence == "zxz":
+        msg = (f"theta = {_deg(a2)}: at theta = 0 or 180 deg the Euler angles are singular (phi "
+               "and psi turn about the same axis, so omega fixes only phidot +- psidot); the "
+               "rates phi_rate and psi_rate are not determined")
+    else:
+        msg = (f"pitch = {_deg(a2)}: at pitch = +-90 deg the Euler angles are singular (gimbal "
+               "lock: yaw and roll turn about the same axis); yaw_rate and roll_rate are not "
+               "determined")
+    raise InputError(msg, key=f"given.{second}")
+
+
+def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3: float,
+                 work: Work) -> None:
+    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz")
+    if sequence == "zxz":
+        r1, r2, r3 = rates
+        s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)
+        work.text("equivalently omega = phidot K + thetadot (cos(phi) I + sin(phi) J) + psidot k, "
+                  "k = sin(theta) sin(phi) I - sin(theta) cos(phi) J + cos(theta) K:")
+        work.step("omega_X", "thetadot cos(phi) + psidot sin(theta) sin(phi)",
+                  f"{_rate(r2)} ({num(c1)}) + {_rate(r3)} ({num(s2)}) ({num(s1)})", fixed[0],
+                  "rad/s")
+        work.step("omega_Y", "thetadot sin(phi) - psidot sin(theta) cos(phi)",
+                  f"{_rate(r2)} ({num(s1)}) - {_rate(r3)} ({num(s2)}) ({num(c1)})", fixed[1],
+                  "rad/s")
+        work.step("omega_Z", "phidot + psidot cos(theta)",
+                  f"{_rate(r1)} + {_rate(r3)} ({num(c2)})", fixed[2], "rad/s")
+    else:
+        work.text("R = Rz(yaw) Ry(pitch) Rx(roll) = [" + "; ".join(
+            " ".join(num(v) for v in row) for row in R) + "]")
+        for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
+            work.step(name, value=value, unit="rad/s")
+
+
+# ---- inertia ----------------------------------------------------------------
+
+PRINCIPAL_KEYS = ("I_x", "I_y", "I_z")
+PRODUCT_KEYS = ("I_xy", "I_yz", "I_zx")
+BODY_INERTIA_KEYS = ("J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg", "shape")
+
+
+def _inertia(given: Given, find: frozenset[str], work: Work):
+    """The inertia matrix about the fixed point in body axes, or None if none is given."""
+    ways = []
+    if "particles" in given:
+        ways.append("particles")
+    if any(k in given for k in PRINCIPAL_KEYS + PRODUCT_KEYS):
+        ways.append("I_x")
+    if "I" in given:
+        ways.append("I")
+    body_keys = [k for k in BODY_INERTIA_KEYS if k in given]
+    if body_keys and "I" not in ways:
+        ways.append(body_keys[0])
+    if len(ways) > 1:
+        raise InputError(f"give the inertia one way: {ways[0]} and {ways[1]} are both given",
+                         key=f"given.{ways[1]}")
+    if not ways:
+        return None
+    way = ways[0]
+    work.section("Inertia about the fixed point, body axes (Eq. 11.3)")
+    if way == "particles":
+        return _from_particles(given.values["particles"], work)
+    if way == "I_x":
+        values = []
+        for key in PRINCIPAL_KEYS:
+            if key not in given:
+                raise InputError(f"give all three moments I_x, I_y, I_z (or I and J for a "
+                                 f"symmetric body); {key} is missing", key=f"given.{key}")
+            if given[key] <= 0:
+                raise InputError(f"a moment of inertia must be positive, got "
+                                 f"{qty(given[key], 'kg*m^2')}", key=f"given.{key}")
+            values.append(given[key])
+        products = [given.get(k, 0.0) for k in PRODUCT_KEYS]
+        matrix = ek.inertia_matrix(*values, *products)
+        work.text("I_x, I_y, I_z as given" + (", with the products I_xy, I_yz, I_zx"
+                                              if any(products) else " (principal axes)"))
+        _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
+        _report_matrix(matrix, products, work)
+        return matrix
+    body = given.body
+    J = body.J
+    if way == "I":
+        I = given["I"]
+        if I <= 0:
+            raise InputError(f"a moment of inertia must be positive, got {qty(I, 'kg*m^2')}",
+                             key="given.I")
+        if J is None:
+            raise InputError("I (transverse) goes with J (axial) for a symmetric body",
+                             key="given.J")
+    else:
+        if J is None:
+            raise InputError("the body needs its axial inertia: J, k_axial or a shape",
+                             key="given.J")
+        if body.I_pivot is not None:
+            I = body.I_pivot
+        elif body.I_cg is not None:
+            I = body.I_cg
+            work.text("no cg_distance: the fixed point is taken at the centre of mass, "
+                      "I = I_G")
+        else:
+            raise InputError("the body needs its transverse inertia about the fixed point: "
+                             "I_pivot, k_pivot, I_cg or k_cg (with cg_distance), or a shape",
+                             key="given.I_pivot")
+    work.text("symmetric body (Eq. 11.9): I_x = I_y = I, I_z = J")
+    matrix = ek.inertia_matrix(I, I, J)
+    _check_rigid(matrix, "given.J")
+    _report_matrix(matrix, [0.0, 0.0, 0.0], work)
+    return matrix
+
+
+def _check_rigid(matrix, key: str) -> None:
+    moments = ek.principal_moments(matrix)
+    if moments[0] <= 0:
+        raise InputError(f"the inertia matrix is not positive definite (principal moments "
+                         f"{', '.join(num(m) for m in moments)} kg m^2): no body has it", key=key)
+    if moments[2] > (moments[0] + moments[1]) * (1 + INERTIA_SLACK):
+        raise InputError(f"the largest principal moment {num(moments[2])} kg m^2 exceeds the sum "
+                         f"of the other two, {num(moments[0] + moments[1])} kg m^2: no rigid "
+                         "body has these inertias (I_z = sum m (x^2 + y^2) <= I_x + I_y)",
+                         key=key)
+
+
+def _from_particles(particles, work: Work):
+    work.text("particles at (x, y, z) in body axes from the fixed point; the products as the "
+              "chapter defines them, I_xy = sum m x y (the matrix has -I_xy off the diagonal)")
+    for i, (m, x, y, z) in enumerate(particles[:MAX_LISTED]):
+        work.text(f"  [{i}] m = {qty(m, 'kg')} at ({num(x)}, {num(y)}, {num(z)}) m")
+    if len(particles) > MAX_LISTED:
+        work.text(f"  ... {len(particles) - MAX_LISTED} more")
+    Ix, Iy, Iz, Ixy, Iyz, Izx = ek.inertia_from_particles(particles)
+    work.step("I_x", "sum m (y^2 + z^2)", value=Ix, unit="kg*m^2", ref="Eq. 11.3")
+    work.step("I_y", "sum m (z^2 + x^2)", value=Iy, unit="kg*m^2", ref="Eq. 11.3")
+    work.step("I_z", "sum m (x^2 + y^2)", value=Iz, unit="kg*m^2", ref="Eq. 11.3")
+    work.step("I_xy", "sum m x y", value=Ixy, unit="kg*m^2")
+    work.step("I_yz", "sum m y z", value=Iyz, unit="kg*m^2")
+    work.step("I_zx", "sum m z x", value=Izx, unit="kg*m^2")
+    matrix = ek.inertia_matrix(Ix, Iy, Iz, Ixy, Iyz, Izx)
+    _report_matrix(matrix, [Ixy, Iyz, Izx], work, listed=True)
+    return matrix
+
+
+def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
+    Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
+    if not listed:
+        for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
+            work.step(name, value=value, unit="kg*m^2")
+    moments = ek.principal_moments(matrix)
+    if ek.is_diagonal(matrix):
+        work.text("the products of inertia are zero: x, y, z are principal axes")
+    else:
+        work.text("the products of inertia are not zero: x, y, z are NOT principal axes, and T "
+                  "and H below use the whole inertia matrix, not Eq. 11.2's diagonal form")
+        work.warn("the body axes are not principal axes (products of inertia not zero); T and "
+                  "H use the whole inertia matrix")
+    work.step("principal moments", "eigenvalues of the inertia matrix",
+              value=None, note=", ".join(qty(m, "kg m^2") for m in moments))
+    for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
+        work.answer(name, name, [value], "inertia")
+    for name, value in zip(PRODUCT_KEYS, products):
+        work.answer(name, name, [value], "inertia")
+    work.answer("principal_moments", "I_1, I_2, I_3", moments, "inertia")
+
+
+def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
+    wx, wy, wz = omega
+    T = ek.kinetic_energy(matrix, omega)
+    H = ek.angular_momentum(matrix, omega)
+    work.section("Kinetic energy (Eq. 11.2) and angular momentum about the fixed point")
+    if ek.is_diagonal(matrix):
+        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
+        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2)",
+                  f"(1/2) ({qty(Ix, 'kg m^2')} ({_rate(wx)})^2 + {qty(Iy, 'kg m^2')} "
+                  f"({_rate(wy)})^2 + {qty(Iz, 'kg m^2')} ({_rate(wz)})^2)", T, "J",
+                  ref="Eq. 11.2")
+        for name, I, w, value in zip(("H_x", "H_y", "H_z"), (Ix, Iy, Iz), omega, H):
+            work.step(name, f"I_{name[-1]} omega_{name[-1]}", f"{qty(I, 'kg m^2')} ({_rate(w)})",
+                      value, "kg m^2/s")
+    else:
+        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
+        Ixy, Iyz, Izx = -matrix[0][1], -matrix[1][2], -matrix[0][2]
+        I_ = lambda v: qty(v, "kg m^2")  # noqa: E731
+        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2 - 2 I_yz omega_y "
+                  "omega_z - 2 I_zx omega_z omega_x - 2 I_xy omega_x omega_y)",
+                  f"(1/2) ({I_(Ix)} ({_rate(wx)})^2 + {I_(Iy)} ({_rate(wy)})^2 + {I_(Iz)} "
+                  f"({_rate(wz)})^2 - 2 ({I_(Iyz)}) ({_rate(wy)}) ({_rate(wz)}) - 2 ({I_(Izx)}) "
+                  f"({_rate(wz)}) ({_rate(wx)}) - 2 ({I_(Ixy)}) ({_rate(wx)}) ({_rate(wy)}))",
+                  T, "J", ref="Eq. 11.2, first line, with the products")
+        work.step("H_x", "I_x omega_x - I_xy omega_y - I_zx omega_z", value=H[0], unit="kg m^2/s")
+        work.step("H_y", "-I_xy omega_x + I_y omega_y - I_yz omega_z", value=H[1],
+                  unit="kg m^2/s")
+        work.step("H_z", "-I_zx omega_x - I_yz omega_y + I_z omega_z", value=H[2],
+                  unit="kg m^2/s")
+    Hmag = ek.norm(H)
+    work.step("|H|", "sqrt(H_x^2 + H_y^2 + H_z^2)", value=Hmag, unit="kg m^2/s")
+    work.check(f"T = (1/2) omega . H = {qty(0.5 * ek.dot(omega, H), 'J')}")
+    work.answer("kinetic_energy", "T", [T], "energy")
+    for name, value in zip(("H_x", "H_y", "H_z"), H):
+        work.answer(name, name, [value], "angular_momentum")
+    work.answer("angular_momentum", "|H|", [Hmag], "angular_momentum")
+    if R is not None:
+        fixed = ek.matvec(R, H)
+        for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
+            work.step(name, value=value, unit="kg m^2/s", note="(R H_xyz)")
+            work.answer(name, name, [value], "angular_momentum")
+        work.check(f"|H| in the fixed frame = {qty(ek.norm(fixed), 'kg m^2/s')}")
+    if Hmag > 0:
+        angle = ek.angle_between(omega, H)
+        work.step("angle(omega, H)", "atan2(|omega x H|, omega . H)", value=math.degrees(angle),
+                  unit="deg", note="zero only when omega lies along a principal axis")
+        work.answer("omega_H_angle", "angle(omega, H)", [angle], "angle")
+    else:
+        work.text("omega = 0: the body is at rest, H = 0 and the angle between them is undefined")
+
+
+KIND = Kind(
+    name="euler_angles",
+    summary="rigid body with one point fixed: omega from Euler angles and rates (and back), "
+            "kinetic energy and angular momentum, inertia from particles",
+    chapter="section 11.1, Eqs. 11.1-11.8 (z-x-z, Fig. 11-2); z-y-x yaw-pitch-roll also",
+    params=(
+        Param("sequence", "word", "sequence", "zxz (default: the chapter's phi, theta, psi) or "
+              "zyx (yaw, pitch, roll)", choices=("zxz", "zyx")),
+        Param("phi", "angle", "phi", "zxz: first rotation, about the fixed K (needed only for "
+              "fixed-frame answers)"),
+        Param("theta", "angle", "theta", "zxz: second rotation, about the line of nodes"),
+        Param("psi", "angle", "psi", "zxz: third rotation, about the body's k"),
+        Param("phi_rate", "rate", "phidot", "zxz: precession rate (absent: 0 if other rates are "
+              "given)"),
+        Param("theta_rate", "rate", "thetadot", "zxz: nutation rate"),
+        Param("psi_rate", "rate", "psidot", "zxz: spin rate relative to the precessing frame"),
+        Param("yaw", "angle", "psi_y", "zyx: first rotation, about the fixed Z (needed only for "
+              "fixed-frame answers)"),
+        Param("pitch", "angle", "theta_p", "zyx: second rotation, about the new y"),
+        Param("roll", "angle", "phi_r", "zyx: third rotation, about the body's x"),
+        Param("yaw_rate", "rate", "psi_ydot", "zyx: yaw rate"),
+        Param("pitch_rate", "rate", "theta_pdot", "zyx: pitch rate"),
+        Param("roll_rate", "rate", "phi_rdot", "zyx: roll rate"),
+        Param("omega_x", "rate", "omega_x", "inverse: body component of omega along x (p)"),
+        Param("omega_y", "rate", "omega_y", "inverse: along y (q)"),
+        Param("omega_z", "rate", "omega_z", "inverse: along z (r)"),
+        Param("I_x", "inertia", "I_x", "moment of inertia about body x through the fixed point"),
+        Param("I_y", "inertia", "I_y", "about body y"),
+        Param("I_z", "inertia", "I_z", "about body z"),
+        Param("I_xy", "inertia", "I_xy", "product of inertia sum m x y (default 0)"),
+        Param("I_yz", "inertia", "I_yz", "product of inertia sum m y z (default 0)"),
+        Param("I_zx", "inertia", "I_zx", "product of inertia sum m z x (default 0)"),
+        Param("I", "inertia", "I", "symmetric body: I_x = I_y = I about the fixed point (with J)"),
+        Param("particles", "particles", "particles", "list of {mass, x, y, z}: point masses at "
+              "positions in body axes from the fixed point"),
+    ),
+    answers=(
+        AnswerSpec("omega_x", "rate", "omega_x", "body component of omega along i (Eq. 11.8)"),
+        AnswerSpec("omega_y", "rate", "omega_y", "along j"),
+        AnswerSpec("omega_z", "rate", "omega_z", "along k"),
+        AnswerSpec("omega_X", "rate", "omega_X", "fixed-frame component along I"),
+        AnswerSpec("omega_Y", "rate", "omega_Y", "along J"),
+        AnswerSpec("omega_Z", "rate", "omega_Z", "along K"),
+        AnswerSpec("omega", "rate", "|omega|", "magnitude of the angular velocity"),
+        AnswerSpec("kinetic_energy", "energy", "T", "kinetic energy (Eq. 11.2; with products "
+                   "(1/2) omega . I omega)"),
+        AnswerSpec("H_x", "angular_momentum", "H_x", "angular momentum about the fixed point, "
+                   "body x"),
+        AnswerSpec("H_y", "angular_momentum", "H_y", "body y"),
+        AnswerSpec("H_z", "angular_momentum", "H_z", "body z"),
+        AnswerSpec("H_X", "angular_momentum", "H_X", "fixed frame, along I"),
+        AnswerSpec("H_Y", "angular_momentum", "H_Y", "along J"),
+        AnswerSpec("H_Z", "angular_momentum", "H_Z", "along K"),
+        AnswerSpec("angular_momentum", "angular_momentum", "|H|", "magnitude of H"),
+        AnswerSpec("omega_H_angle", "angle", "angle(omega, H)", "angle between omega and H "
+                   "(zero only about a principal axis)"),
+        AnswerSpec("I_x", "inertia", "I_x", "moment of inertia about body x (Eq. 11.3)"),
+        AnswerSpec("I_y", "inertia", "I_y", "about body y"),
+        AnswerSpec("I_z", "inertia", "I_z", "about body z"),
+        AnswerSpec("I_xy", "inertia", "I_xy", "product of inertia sum m x y"),
+        AnswerSpec("I_yz", "inertia", "I_yz", "product of inertia sum m y z"),
+        AnswerSpec("I_zx", "inertia", "I_zx", "product of inertia sum m z x"),
+        AnswerSpec("principal_moments", "inertia", "I_1, I_2, I_3", "eigenvalues of the "
+                   "inertia matrix, ascending"),
+        AnswerSpec("phi_rate", "rate", "phidot", "zxz: precession rate (inverse, or as given)"),
+        AnswerSpec("theta_rate", "rate", "thetadot", "zxz: nutation rate"),
+        AnswerSpec("psi_rate", "rate", "psidot", "zxz: spin rate"),
+        AnswerSpec("yaw_rate", "rate", "psi_ydot", "zyx: yaw rate"),
+        AnswerSpec("pitch_rate", "rate", "theta_pdot", "zyx: pitch rate"),
+        AnswerSpec("roll_rate", "rate", "phi_rdot", "zyx: roll rate"),
+    ),
+    solve=solve,
+    extra={"gravity": False, "example": {
+        "given": {"phi": "30 deg", "theta": "60 deg", "psi": "45 deg", "phi_rate": "2 rad/s",
+                  "theta_rate": "1 rad/s", "psi_rate": "10 rad/s", "I": "0.02 kg m^2",
+                  "J": "0.03 kg m^2"},
+        "find": {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s",
+                 "kinetic_energy": "J", "angular_momentum": "kg*m^2/s"},
+        "vary": {"theta": "[20 deg, 80 deg]"}}},
+)

@@ -1,0 +1,242 @@
+"""Drift and nutation of a gimballed gyroscope under a small disturbing moment.
+
+Section 11.3 (Fig. 11-13): the gyroscope in gimbals is an inertial reference;
+bearing friction, drag and imbalance give a small moment M about an axis at
+right angles to the spin, and the spin axis precesses ("drifts") at M / H,
+H = J psidot (Eq. 11.29 read for phidot). Switched on with the gyro at rest it
+also nutates at w_n = H / sqrt(I_x I_y). The derivation and the closed forms
+are in gyro_cli/physics/gyro_drift.py; a drift budget gives the largest moment.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..physics import gyro_drift as gd
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+
+DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
+LINEAR_LIMIT = 0.1  # rad: beyond this the small-angle gimbal equations are doubtful
+
+
+def _h(x: float) -> str:
+    return qty(x, "kg m^2/s")
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
+    work.section("Conventions")
+    work.text("k: the spin axis; x: the gimbal axis about which the disturbing moment M acts; "
+              "y: the other gimbal axis, at right angles to both. a, b: small rotations of the "
+              "spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
+    work.text("Linearised gimbal equations: I_x a'' + H b' = M,  I_y b'' - H a' = 0. "
+              "The moment does not turn the rotor about x: the spin axis drifts about y.")
+    H = _momentum(given, work)
+    M, rate = _moment_and_rate(given, H, work)
+    work.answer("angular_momentum", "H", [H], "angular_momentum")
+    work.answer("moment", "M", [M], "moment")
+    work.answer("drift_rate", "M / H", [rate], "rate")
+    if "duration" in given:
+        t = given["duration"]
+        if t < 0:
+            raise InputError(f"duration must not be negative, got {qty(t, 's')}",
+                             key="given.duration")
+        angle = work.step("drift angle", "(M / H) t", f"{qty(rate, 'rad/s')} ({qty(t, 's')})",
+                          rate * t, "rad", note=f"= {num(math.degrees(rate * t))} deg")
+        work.answer("drift_angle", "(M / H) t", [angle], "angle")
+    elif "drift_angle" in find:
+        raise InputError("drift_angle needs the time the moment acts: give duration",
+                         key="given.duration")
+    _nutation(given, find, H, M, work)
+
+
+def _momentum(given: Given, work: Work) -> float:
+    body = given.body
+    work.section("Spin angular momentum")
+    if "angular_momentum" in given:
+        for key in ("spin", "J", "k_axial", "shape"):
+            if key in given:
+                raise InputError(f"give angular_momentum, or the rotor ({key}) and its spin, "
+                                 "not both", key=f"given.{key}")
+        H = given["angular_momentum"]
+        work.step("H", value=H, unit="kg m^2/s", note="as given")
+    else:
+        if "spin" not in given:
+            raise InputError("give the rotor's spin (with J, k_axial or a shape), or "
+                             "angular_momentum", key="given.spin")
+        if body.J is None:
+            raise InputError("the rotor needs its axial inertia: J, k_axial or a shape (or give "
+                             "angular_momentum)", key="given.J")
+        spin = given["spin"]
+        H = work.step("H", "J psidot", f"{qty(body.J, 'kg m^2')} ({qty(spin, 'rad/s')})",
+                      gd.spin_momentum(body.J, spin), "kg m^2/s", ref="H = J omega_z")
+    if H == 0:
+        raise InputError("the rotor must spin: with H = 0 there is no gyroscopic stiffness and "
+                         "any moment simply turns it", key="given.spin"
+                         if "spin" in given else "given.angular_momentum")
+    return H
+
+
+def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
+    ways = [k for k in ("moment", "drift_rate", "drift_period") if k in given]
+    if len(ways) > 1:
+        raise InputError(f"give one of moment, drift_rate (a budget) or drift_period, not "
+                         f"{ways[0]} and {ways[1]}", key=f"given.{ways[1]}")
+    if not ways:
+        raise InputError("give the disturbing moment, or a drift budget (drift_rate or "
+                         "drift_period) to find the largest moment", key="given.moment")
+    if ways == ["moment"]:
+        M = given["moment"]
+        work.section("Drift: steady precession of the spin axis about y (Eq. 11.29)")
+        rate = work.step("drift rate", "M / H", f"{qty(M, 'N m')} / {_h(H)}",
+                         gd.drift_rate(M, H), "rad/s",
+                         note=f"= {num(gd.drift_rate(M, H) / DEG_PER_HOUR)} deg/h")
+        return M, rate
+    if ways == ["drift_period"]:
+        T = given["drift_period"]
+        if T <= 0:
+            raise InputError(f"drift_period must be positive, got {qty(T, 's')}",
+                             key="given.drift_period")
+        work.section("Drift rate from the period of one full turn")
+        rate = work.step("drift rate", "2 pi / T_d", f"2 pi / {qty(T, 's')}", 2 * math.pi / T,
+                         "rad/s", note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
+    else:
+        rate = given["drift_rate"]
+        if rate < 0:
+            raise InputError("a drift budget is a magnitude: give it positive",
+                             key="given.drift_rate")
+    work.section("Largest disturbing moment for the drift budget: M = H (drift rate)")
+    M = work.step("M", "H (drift rate)", f"{_h(abs(H))} ({qty(rate, 'rad/s')})",
+                  gd.moment_for_drift(rate, abs(H)), "N*m")
+    work.text("any larger moment about x makes the spin axis drift faster than the budget")
+    return M, math.copysign(rate, H) if rate else 0.0
+
+
+def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | None:
+    body = given.body
+    if "I" in given and ("I_x" in given or "I_y" in given):
+        raise InputError("give I (equal inertias) or I_x and I_y, not both",
+                         key="given.I_x" if "I_x" in given else "given.I_y")
+    if "I" in given:
+        Ix = Iy = given["I"]
+    elif "I_x" in given or "I_y" in given:
+        if "I_x" not in given or "I_y" not in given:
+            missing = "I_x" if "I_x" not in given else "I_y"
+            raise InputError("give both I_x and I_y (or one I for both)", key=f"given.{missing}")
+        Ix, Iy = given["I_x"], given["I_y"]
+    elif body.I_pivot is not None:
+        Ix = Iy = body.I_pivot
+    elif body.I_cg is not None:
+        Ix = Iy = body.I_cg
+    else:
+        return None
+    for key, value in (("I_x", Ix), ("I_y", Iy)):
+        if value <= 0:
+            name = "I" if "I" in given else key if key in given else "I_pivot"
+            raise InputError(f"a moment of inertia must be positive, got "
+                             f"{qty(value, 'kg*m^2')}", key=f"given.{name}")
+    return Ix, Iy
+
+
+def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work) -> None:
+    nutation_answers = {"nutation_frequency", "nutation_period", "nutation_amplitude",
+                        "nutation_amplitude_drift", "max_deflection"}
+    inertias = _transverse(given, find)
+    if inertias is None:
+        asked = sorted(nutation_answers & find)
+        if asked:
+            raise InputError(f"{asked[0]} needs the transverse inertia of rotor and gimbals: "
+                             "give I (or I_x and I_y, or the rotor's I_pivot / I_cg / shape)",
+                             key="given.I")
+        return
+    Ix, Iy = inertias
+    source = "I_x = I_y = I" if Ix == Iy else "I_x, I_y"
+    if "I" not in given and "I_x" not in given:
+        source = "the rotor alone (gimbals' inertia neglected)"
+    work.section("Nutation, the moment switched on with the gyro at rest")
+    work.text(f"transverse inertias: {source}")
+    wn = work.step("w_n", "H / sqrt(I_x I_y)", f"{_h(abs(H))} / sqrt({qty(Ix, 'kg m^2')} "
+                   f"{qty(Iy, 'kg m^2')})", gd.nutation_frequency(abs(H), Ix, Iy), "rad/s",
+                   note=f"= {num(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi))} Hz")
+    period = work.step("T_n", "2 pi / w_n", f"2 pi / {qty(wn, 'rad/s')}", 2 * math.pi / wn, "s")
+    work.text("solution from rest: a(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
+              "b(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
+    ax, ay = gd.nutation_amplitudes(M, H, Ix, Iy)
+    work.step("A_x", "M I_y / H^2", f"{qty(M, 'N m')} ({qty(Iy, 'kg m^2')}) / ({_h(H)})^2",
+              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias)")
+    work.step("A_y", "M sqrt(I_x I_y) / H^2", value=ay, unit="rad",
+              note="about y, the drift axis: the ripple on the drift")
+    work.step("a_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
+              note="largest deflection about x, reached every half period")
+    quarter = period / 4
+    residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
+    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x a'' + H b' = "
+               f"{qty(residual, 'N m')}, M = {qty(M, 'N m')}")
+    if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
+        work.warn(f"the nutation reaches {num(math.degrees(max(abs(2 * ax), abs(ay))))} deg: the "
+                  "linearised gimbal equations assume small angles")
+    work.answer("nutation_frequency", "w_n", [wn], "rate")
+    work.answer("nutation_period", "T_n", [period], "time")
+    work.answer("nutation_amplitude", "A_x", [abs(ax)], "angle")
+    work.answer("nutation_amplitude_drift", "A_y", [abs(ay)], "angle")
+    work.answer("max_deflection", "a_max", [abs(2 * ax)], "angle")
+
+
+def _a_dd(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
+    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+    return M * Iy / (H * H) * wn * wn * math.cos(wn * t)
+
+
+def _b_d(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
+    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+    return M / H * (1 - math.cos(wn * t))
+
+
+KIND = Kind(
+    name="gyro_drift",
+    summary="gimballed gyroscope as an inertial reference: drift under a small disturbing "
+            "moment, nutation, and the largest moment a drift budget allows",
+    chapter="section 11.3, Fig. 11-13; drift M / H from Eq. 11.29",
+    params=(
+        Param("spin", "rate", "psidot", "rotor spin (H = J psidot)"),
+        Param("angular_momentum", "angular_momentum", "H", "the rotor's spin angular momentum "
+              "(instead of J and spin)"),
+        Param("moment", "moment", "M", "disturbing moment about a gimbal axis at right angles "
+              "to the spin (friction, drag, imbalance)"),
+        Param("drift_rate", "rate", "drift", "drift budget (instead of moment), e.g. '0.1 deg/h'"),
+        Param("drift_period", "time", "T_d", "time for one full turn of drift (instead of "
+              "drift_rate)"),
+        Param("duration", "time", "t", "time the moment acts, for drift_angle"),
+        Param("I", "inertia", "I", "transverse inertia of rotor and gimbals about each gimbal "
+              "axis"),
+        Param("I_x", "inertia", "I_x", "about the axis of the moment (where the outer gimbal "
+              "adds inertia)"),
+        Param("I_y", "inertia", "I_y", "about the drift axis"),
+    ),
+    answers=(
+        AnswerSpec("angular_momentum", "angular_momentum", "H", "spin angular momentum J psidot"),
+        AnswerSpec("drift_rate", "rate", "M / H", "drift (precession) rate of the spin axis"),
+        AnswerSpec("drift_angle", "angle", "(M / H) t", "drift after duration (the nutation "
+                   "ripple of at most nutation_amplitude_drift aside)"),
+        AnswerSpec("moment", "moment", "M", "the moment (given, or the largest the drift "
+                   "budget allows, H times the rate)"),
+        AnswerSpec("nutation_frequency", "rate", "w_n", "H / sqrt(I_x I_y)"),
+        AnswerSpec("nutation_period", "time", "T_n", "2 pi / w_n"),
+        AnswerSpec("nutation_amplitude", "angle", "A_x", "moment applied at rest: M I_y / H^2 "
+                   "about the moment's axis (M I / H^2 for equal inertias)"),
+        AnswerSpec("nutation_amplitude_drift", "angle", "A_y", "M sqrt(I_x I_y) / H^2 about "
+                   "the drift axis"),
+        AnswerSpec("max_deflection", "angle", "a_max", "2 M I_y / H^2, the largest deflection "
+                   "about the moment's axis"),
+    ),
+    solve=solve,
+    extra={"gravity": False, "example": {
+        "given": {"J": "2.5e-4 kg m^2", "spin": "24000 rpm", "moment": "1e-7 N m",
+                  "I": "2e-4 kg m^2", "duration": "1 h"},
+        "find": {"drift_rate": "deg/h", "drift_angle": "deg", "nutation_frequency": "Hz",
+                 "nutation_amplitude": "arcsec"},
+        "vary": {"moment": "[0.5, 2]"}}},
+)
