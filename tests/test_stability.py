@@ -319,3 +319,30 @@ def test_stability_not_defined_is_one_line(run, write, text, key):
     result = run("solve", write(text))
     assert result.exit_code == 2
     assert len(result.stderr.strip().splitlines()) == 1 and key in result.stderr
+
+
+def test_bundled_problems_by_hand(run, problems_dir):
+    """The three bundled stability problems against their hand working (in their notes)."""
+    def answers(name):
+        result = run("solve", "--format", "json", problems_dir / name)
+        assert result.exit_code == 0, result.output
+        return json.loads(result.stdout)["answers"]
+
+    coin = answers("rolling_coin_upright.yaml")
+    assert coin["upright_speed"]["values"][0] == pytest.approx(math.sqrt(9.81 * 0.01213 / 3),
+                                                               rel=1e-9)
+    assert coin["stability"]["values"] == ["unstable"]
+    hoop = answers("rolling_hoop_stable.yaml")
+    assert hoop["upright_speed"]["values"][0] == pytest.approx(math.sqrt(9.81 * 0.35 / 4),
+                                                               rel=1e-9)
+    assert hoop["stability"]["values"] == ["stable"]
+    # 11/3, slow root, by hand: I, J, omega_z as in the file's notes
+    I, J = TOP["I"], TOP["J"]
+    phidot = 45.13 * RPM
+    omega_z = 1800 * RPM + phidot * math.cos(math.radians(30))
+    k = ((J * omega_z - 2 * I * phidot * math.cos(math.radians(30))) / I) ** 2 + \
+        (phidot * 0.5) ** 2
+    assert k == pytest.approx(1146, rel=2e-3)
+    assert 2 * math.pi / math.sqrt(k) == pytest.approx(0.186, abs=5e-4)
+    top = answers("11_3_stability.yaml")
+    assert top["stability"]["values"] == ["stable", "stable"]

@@ -132,9 +132,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J", "radius")
     if arrangement == "axle_pivot":
-        if find & {"stability", "growth_rate"}:
-            raise InputError("stability is answered for `arrangement: free`; the pinned axle's "
-                             "motion is imposed by the shaft", key="find.stability")
+        asked = sorted(find & {"stability", "growth_rate", "upright_speed"})
+        if asked:
+            raise InputError(f"{asked[0]} is answered for `arrangement: free`; the pinned "
+                             "axle's motion is imposed by the shaft", key=f"find.{asked[0]}")
         _axle_pivot(given, find, work)
     else:
         body.require("I_cg")
@@ -280,16 +281,21 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
         work.step("k", value=verdict.k, unit="1/s^2",
                   note=f"beta = {num(math.degrees(s.tilt))} deg: {verdict.word}, {detail}")
         if verdict.word == UNSTABLE:
-            upright = disk_critical_axial_rate(m, g, r, I, J) * r
             work.warn(f"steady rolling at beta = {num(math.degrees(s.tilt))} deg, v = "
                       f"{qty(s.speed, 'm/s')} is unstable: a small disturbance of the tilt grows "
                       f"as exp({num(verdict.growth_rate)} t / s), doubling every "
-                      f"{qty(math.log(2) / verdict.growth_rate, 's')} (upright rolling needs v > "
-                      f"{qty(upright, 'm/s')})")
+                      f"{qty(math.log(2) / verdict.growth_rate, 's')}")
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
+    upright = work.step("v_upright", "r sqrt(m g r I_G / (J (J + m r^2)))",
+                        f"{qty(r, 'm')} sqrt(({qty(m, 'kg')}) ({qty(g, 'm/s^2')}) ({qty(r, 'm')})"
+                        f" ({qty(I, 'kg*m^2')}) / (({qty(J, 'kg*m^2')}) ({qty(J + m * r * r, 'kg*m^2')})))",
+                        disk_critical_axial_rate(m, g, r, I, J) * r, "m/s",
+                        note="upright rolling in a straight line (beta = 0, Omega = 0) is "
+                             "stable above this speed (k > 0)")
     work.answer("stability", "stability", words, None)
     work.answer("growth_rate", "s", rates, "rate")
+    work.answer("upright_speed", "v_upright", [upright], "speed")
 
 
 KIND = Kind(
@@ -320,6 +326,8 @@ KIND = Kind(
                    "linearised rolling equations)"),
         AnswerSpec("growth_rate", "rate", "s", "free: growth rate of the unstable mode, 1/s (0 "
                    "when stable)"),
+        AnswerSpec("upright_speed", "speed", "v_upright", "free: least speed at which upright "
+                   "rolling in a straight line is stable"),
     ),
     solve=solve,
     extra={"example": {

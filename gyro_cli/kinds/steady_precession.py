@@ -270,9 +270,9 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
     from ..physics.stability import UNSTABLE, top_steady_precession
 
     if "moment" in given or n_rates == 2:
-        raise InputError("stability is worked for a top held by gravity alone (cg_distance): "
-                         "how an applied moment changes with theta is not given",
-                         key="find.stability")
+        raise InputError("stability is worked for a top held by gravity alone (cg_distance, "
+                         "one of spin, axial_rate, precession): how an applied moment changes "
+                         "with theta is not given", key="find.stability")
     answer = work.answers["precession"]
     work.section("Stability: small changes of theta with p_phi and p_psi fixed, "
                  "theta'' + k theta = 0")
