@@ -114,3 +114,18 @@ def test_energy_drift_beside_its_varying_part(run, problems_dir, reference):
     drift = report["drift"]
     assert drift["energy_varying"] == pytest.approx(drift["energy"] * ratio, rel=1e-6)
     assert drift["energy_varying"] < 1e-10
+
+
+@pytest.mark.parametrize("name, motion", [("loops", "loops"),
+                                          ("waves", "too short to classify")])
+def test_a_third_of_a_period_pushed_tops(run, problems_dir, name, motion):
+    """Pushed at 30 deg with phidot0 = -20 rpm (against the mean precession, which is
+    forward, +46 rpm): phidot takes both signs within the first third of a period, and a
+    phidot that changes sign is a loop whatever theta's range. Pushed with +20 rpm, phidot
+    keeps its sign so far: waves and cusps cannot be told apart yet."""
+    result = run("simulate", problems_dir / f"11_2_released_top_{name}.yaml", "--periods",
+                 "0.3", "--format", "json")
+    assert result.exit_code == 0, result.output
+    report = json.loads(result.stdout)
+    assert report["simulated"]["motion"] == motion
+    assert report["difference"]["motion"] is (True if motion == "loops" else None)

@@ -258,7 +258,13 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("precession", "Omega", [s.precession for s in states], "rate")
     work.answer("spin", "psidot", [s.spin for s in states], "rate")
     work.answer("normal_force", "N", [m * g for _ in states], "force")
-    _stability(m, g, r, J, I, states, work)
+    try:
+        _stability(m, g, r, J, I, states, work)
+    except ArithmeticError:
+        if find & {"stability", "growth_rate", "upright_speed"}:
+            raise
+        work.text("stability not worked: the linearised equations overflow in double "
+                  "precision for these data")
 
 
 def _stability(m: float, g: float, r: float, J: float, I: float, states: list[FreeDisk],
@@ -274,6 +280,8 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
               "(it grows as exp(sqrt(-k) t))")
     words, rates = [], []
     for s in states:
+        if not all(map(math.isfinite, (s.centre_radius, s.precession, s.spin, s.axial_rate))):
+            raise OverflowError("the steady state itself overflows")
         verdict = disk_rolling(m, g, r, I, J, s.tilt, s.precession, s.axial_rate)
         detail = (f"wobbles at sqrt(k) = {qty(verdict.frequency, 'rad/s')}" if verdict.frequency
                   else f"grows at sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
