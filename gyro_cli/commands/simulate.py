@@ -157,12 +157,22 @@ def run(setup: Setup, periods: float, progress: Callable[[float], None] | None =
 
 def comparison(setup: Setup, sim) -> dict:
     """Analytic, simulated and their differences, SI; plus drifts. The JSON object."""
-    from ..physics.simulate import motion_of
+    from ..physics.simulate import TOO_SHORT, motion_of
 
     simulated = {"theta_min": sim.theta_min, "theta_max": sim.theta_max,
                  "nutation_period": sim.nutation_period,
                  "mean_precession": sim.mean_precession if sim.precession_resolved else None,
                  "motion": motion_of(sim)}
+    unreached = []
+    if sim.theta_varies:
+        # theta's largest (least) value in a run without a maximum (minimum) is at an end
+        # of the run, not a turning point: not a measure of theta_max (theta_min)
+        for key, times in (("theta_min", sim.t_theta_min), ("theta_max", sim.t_theta_max)):
+            if not len(times):
+                unreached.append(f"no theta {key[6:]}imum in the run: {key} is not measured "
+                                 f"(theta reached {math.degrees(simulated[key]):.6g} deg at an "
+                                 "end of the run)")
+                simulated[key] = None
     difference = {}
     for key in ("theta_min", "theta_max", "nutation_period", "mean_precession"):
         a, s = setup.analytic.get(key), simulated.get(key)
@@ -170,7 +180,8 @@ def comparison(setup: Setup, sim) -> dict:
             difference[key] = None
             continue
         difference[key] = {"absolute": s - a, "relative": (s - a) / abs(a) if a else None}
-    difference["motion"] = simulated["motion"] == setup.analytic["motion"]
+    difference["motion"] = (None if simulated["motion"] == TOO_SHORT
+                            else simulated["motion"] == setup.analytic["motion"])
     p = setup.params
     problem = setup.problem
     return {
@@ -183,11 +194,11 @@ def comparison(setup: Setup, sim) -> dict:
         "period_meaning": setup.period_meaning,
         "analytic": setup.analytic, "simulated": simulated, "difference": difference,
         "invariants": {"energy": sim.energy0, "P1": sim.P1, "P2": sim.P2},
-        "drift": {"energy": sim.energy_drift, "P1": sim.P1_drift, "P2": sim.P2_drift,
-                  "quaternion_norm": sim.norm_drift},
+        "drift": {"energy": sim.energy_drift, "energy_varying": sim.energy_drift_varying,
+                  "P1": sim.P1_drift, "P2": sim.P2_drift, "quaternion_norm": sim.norm_drift},
         "theta_range": float(sim.theta.max() - sim.theta.min()),
         "steps": sim.steps, "evaluations": sim.nfev, "cpu_seconds": sim.cpu_seconds,
-        "notes": setup.notes + sim.notes,
+        "notes": setup.notes + unreached + sim.notes,
     }
 
 
@@ -228,7 +239,7 @@ def text(report: dict, periods: float) -> str:
         a, s = report["analytic"].get(key), report["simulated"].get(key)
         d = report["difference"].get(key)
         if key == "motion":
-            diff, rel = ("same" if d else "DIFFERENT"), ""
+            diff, rel = ("not compared" if d is None else "same" if d else "DIFFERENT"), ""
         elif isinstance(d, dict):
             scale = 180 / math.pi if key.startswith("theta") else (1 / RPM if key ==
                                                                     "mean_precession" else 1)
@@ -236,11 +247,15 @@ def text(report: dict, periods: float) -> str:
             rel = f"{d['relative']:.1e}" if d["relative"] is not None else "-"
         else:
             diff, rel = "-", "-"
-        lines.append(f"  {label:<24}{_value(key, a):>18}{_value(key, s):>18}{diff:>13}{rel:>11}")
+        shown = _value(key, s)
+        lines.append(f"  {label:<24}{_value(key, a):>18}{shown:>{max(18, len(shown) + 2)}}"
+                     f"{diff:>13}{rel:>11}")
     drift = report["drift"]
     inv = report["invariants"]
     rows = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
              drift["energy"], "T0 + m g l"),
+            ("  the same, its varying part", "", drift["energy_varying"],
+             "max I (w_x^2 + w_y^2)/2 + m g l"),
             ("P1 = p_phi, vertical H, Eq. 11.14", f"{num(inv['P1'], 10)} kg m^2/s", drift["P1"],
              "|H|"),
             ("P2 = p_psi, axial H, Eq. 11.14", f"{num(inv['P2'], 10)} kg m^2/s", drift["P2"],

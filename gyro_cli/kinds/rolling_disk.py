@@ -132,6 +132,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J", "radius")
     if arrangement == "axle_pivot":
+        asked = sorted(find & {"stability", "growth_rate", "upright_speed"})
+        if asked:
+            raise InputError(f"{asked[0]} is answered for `arrangement: free`; the pinned "
+                             "axle's motion is imposed by the shaft", key=f"find.{asked[0]}")
         _axle_pivot(given, find, work)
     else:
         body.require("I_cg")
@@ -254,6 +258,52 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("precession", "Omega", [s.precession for s in states], "rate")
     work.answer("spin", "psidot", [s.spin for s in states], "rate")
     work.answer("normal_force", "N", [m * g for _ in states], "force")
+    try:
+        _stability(m, g, r, J, I, states, work)
+    except ArithmeticError:
+        if find & {"stability", "growth_rate", "upright_speed"}:
+            raise
+        work.text("stability not worked: the linearised equations overflow in double "
+                  "precision for these data")
+
+
+def _stability(m: float, g: float, r: float, J: float, I: float, states: list[FreeDisk],
+               work: Work) -> None:
+    """Each steady state's stability: tilt perturbed, linearised (physics/stability.py)."""
+    from ..physics.stability import UNSTABLE, disk_critical_axial_rate, disk_rolling
+
+    work.section("Stability: small changes of the tilt, linearised rolling equations "
+                 "(betadot'' + k betadot = 0)")
+    work.text("I_G (I_G + m r^2) k = J (J + m r^2) omega_z^2 - I_G (3 J + m r^2) Omega omega_z "
+              "sin(beta) + I_G^2 Omega^2 (1 + 2 sin^2(beta)) + I_G m r^2 Omega^2 cos^2(beta) - "
+              "I_G m g r cos(beta); k > 0 stable (the tilt wobbles at sqrt(k)), k < 0 unstable "
+              "(it grows as exp(sqrt(-k) t))")
+    words, rates = [], []
+    for s in states:
+        if not all(map(math.isfinite, (s.centre_radius, s.precession, s.spin, s.axial_rate))):
+            raise OverflowError("the steady state itself overflows")
+        verdict = disk_rolling(m, g, r, I, J, s.tilt, s.precession, s.axial_rate)
+        detail = (f"wobbles at sqrt(k) = {qty(verdict.frequency, 'rad/s')}" if verdict.frequency
+                  else f"grows at sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
+                  if verdict.growth_rate else "neutral to first order")
+        work.step("k", value=verdict.k, unit="1/s^2",
+                  note=f"beta = {num(math.degrees(s.tilt))} deg: {verdict.word}, {detail}")
+        if verdict.word == UNSTABLE:
+            work.warn(f"steady rolling at beta = {num(math.degrees(s.tilt))} deg, v = "
+                      f"{qty(s.speed, 'm/s')} is unstable: a small disturbance of the tilt grows "
+                      f"as exp({num(verdict.growth_rate)} t / s), doubling every "
+                      f"{qty(math.log(2) / verdict.growth_rate, 's')}")
+        words.append(verdict.word)
+        rates.append(verdict.growth_rate)
+    upright = work.step("v_upright", "r sqrt(m g r I_G / (J (J + m r^2)))",
+                        f"{qty(r, 'm')} sqrt(({qty(m, 'kg')}) ({qty(g, 'm/s^2')}) ({qty(r, 'm')})"
+                        f" ({qty(I, 'kg*m^2')}) / (({qty(J, 'kg*m^2')}) ({qty(J + m * r * r, 'kg*m^2')})))",
+                        disk_critical_axial_rate(m, g, r, I, J) * r, "m/s",
+                        note="upright rolling in a straight line (beta = 0, Omega = 0) is "
+                             "stable above this speed (k > 0)")
+    work.answer("stability", "stability", words, None)
+    work.answer("growth_rate", "s", rates, "rate")
+    work.answer("upright_speed", "v_upright", [upright], "speed")
 
 
 KIND = Kind(
@@ -280,6 +330,12 @@ KIND = Kind(
         AnswerSpec("path_radius", "length", "R", "free: radius of the contact point's circle"),
         AnswerSpec("speed", "speed", "v", "free: speed of the centre"),
         AnswerSpec("precession", "rate", "Omega", "free: rate about the vertical, v / rho"),
+        AnswerSpec("stability", None, "stability", "free: stable or unstable (tilt perturbed, "
+                   "linearised rolling equations)"),
+        AnswerSpec("growth_rate", "rate", "s", "free: growth rate of the unstable mode, 1/s (0 "
+                   "when stable)"),
+        AnswerSpec("upright_speed", "speed", "v_upright", "free: least speed at which upright "
+                   "rolling in a straight line is stable"),
     ),
     solve=solve,
     extra={"example": {

@@ -98,6 +98,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _precession_roots(given, rates[0], I, J, theta, D, driver, work)
     if "min_spin" in find:
         _min_spin(I, J, theta, D, driver, work)
+    if find & {"stability", "growth_rate"}:
+        _stability(given, len(rates), I, J, theta, work)
     for name in ("spin", "precession", "axial_rate"):
         fast = [v for v in work.answers[name].si_values if abs(v) > FASTEST_REAL_ROTOR] \
             if name in work.answers else []
@@ -262,6 +264,39 @@ def _check(I: float, J: float, theta: float, spins: list[float], precessions: li
                    f"{qty(D * math.sin(theta), 'N m')}")
 
 
+def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
+               work: Work) -> None:
+    """Each root's stability in theta (physics/stability.py: theta'' + k theta = 0)."""
+    from ..physics.stability import UNSTABLE, top_steady_precession
+
+    if "moment" in given or n_rates == 2:
+        raise InputError("stability is worked for a top held by gravity alone (cg_distance, "
+                         "one of spin, axial_rate, precession): how an applied moment changes "
+                         "with theta is not given", key="find.stability")
+    answer = work.answers["precession"]
+    work.section("Stability: small changes of theta with p_phi and p_psi fixed, "
+                 "theta'' + k theta = 0")
+    work.text("k = U_eff''(theta) / I = ((J omega_z - 2 I phidot cos(theta)) / I)^2 + "
+              "phidot^2 sin^2(theta) >= 0 (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady "
+              "precession of a heavy top about a fixed point is a minimum of U_eff, stable; a "
+              "change of p_phi or p_psi only moves it to a neighbouring steady precession")
+    words, rates = [], []
+    for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
+                                    answer.labels or [""] * len(answer.si_values)):
+        verdict = top_steady_precession(I, J, theta, phidot, axial)
+        tag = f" ({label})" if label else ""
+        work.step(f"k{tag}", value=verdict.k, unit="1/s^2", note=verdict.word + (
+            f", theta oscillates at sqrt(k) = {qty(verdict.frequency, 'rad/s')}"
+            if verdict.frequency else ""))
+        if verdict.word == UNSTABLE:
+            work.warn(f"the steady precession phidot = {qty(phidot, 'rad/s')} is unstable: a "
+                      f"small disturbance grows as exp({num(verdict.growth_rate)} t / s)")
+        words.append(verdict.word)
+        rates.append(verdict.growth_rate)
+    work.answer("stability", "stability", words, None, answer.labels)
+    work.answer("growth_rate", "s", rates, "rate", answer.labels)
+
+
 def _labels(roots: list[float]) -> list[str]:
     if len(roots) != 2:
         return []
@@ -287,6 +322,10 @@ KIND = Kind(
         AnswerSpec("axial_rate", "rate", "omega_z", "axial angular velocity"),
         AnswerSpec("moment", "moment", "M", "moment about the line of nodes for the motion"),
         AnswerSpec("min_spin", "rate", "psidot_min", "least spin for steady precession at theta"),
+        AnswerSpec("stability", None, "stability", "stable or unstable, for each root (theta "
+                   "perturbed, gravity alone)"),
+        AnswerSpec("growth_rate", "rate", "s", "growth rate of the unstable mode, 1/s (0 when "
+                   "stable)"),
     ),
     solve=solve,
     extra={"example": {

@@ -39,6 +39,7 @@ RTOL = 1e-12
 STEADY_AMPLITUDE = 1e-9   # rad: a theta range below this is no measurable nutation
 MAX_STEPS = 1_000_000     # about a minute of CPU; beyond it a run is refused, not started
 STEPS_PER_TURN = 30       # DOP853 at rtol 1e-12 takes about this many steps per turn of the body
+TOO_SHORT = "too short to classify"   # motion_of a run that saw too few theta extrema
 
 
 class TopLike(Protocol):
@@ -78,6 +79,14 @@ class Simulation:
     Angles in rad, rates in rad/s. Drifts are max |X(t) - X(0)| over every
     integrator step, divided by a scale: energy by T0 + |m g l| (the energy can
     pass through zero), P1 and P2 by |H0|, the magnitude of the angular momentum.
+    ``energy_drift_varying`` divides the same energy error by the part of the energy
+    that varies, max over the run of I (omega_x^2 + omega_y^2) / 2 plus |m g l|: the
+    spin energy J omega_z^2 / 2 is constant (J omega_z' = 0) and, for a fast top,
+    would otherwise make any error look small.
+
+    ``mean_precession`` is taken over whole nutation periods only (between the first
+    and last extremum of one kind); it is None when theta varies but the run holds no
+    whole period. Without nutation it is the advance of phi over the run / its time.
     """
 
     params: Params
@@ -92,6 +101,7 @@ class Simulation:
     P1: float
     P2: float
     energy_drift: float
+    energy_drift_varying: float  # the same error relative to the energy that varies
     P1_drift: float
     P2_drift: float
     norm_drift: float            # max | |q| - 1 |
@@ -104,7 +114,7 @@ class Simulation:
     theta_at_min: np.ndarray     # theta at each minimum (root-refined)
     theta_at_max: np.ndarray
     nutation_period: float | None
-    mean_precession: float
+    mean_precession: float | None
     precession_resolved: bool    # False when the axis passes too near the vertical to unwrap phi
     steps: int
     nfev: int
@@ -114,6 +124,11 @@ class Simulation:
     @property
     def nutates(self) -> bool:
         return self.nutation_period is not None
+
+    @property
+    def theta_varies(self) -> bool:
+        """theta changes by more than STEADY_AMPLITUDE over the run."""
+        return self.theta_max - self.theta_min > STEADY_AMPLITUDE
 
 
 # ---- the equations of motion ------------------------------------------------
@@ -337,6 +352,8 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     T0 = energy[0] - p.mgl * vertical_in_body(nodes[:1])[2][0]
     H0 = math.sqrt(p.I ** 2 * (y0[4] ** 2 + y0[5] ** 2) + (p.J * y0[6]) ** 2)
     energy_scale = T0 + abs(p.mgl) or 1.0
+    transverse = 0.5 * p.I * (nodes[:, 4] ** 2 + nodes[:, 5] ** 2)
+    varying_scale = float(transverse.max()) + abs(p.mgl) or 1.0
     H_scale = H0 or 1.0
     norm = np.sqrt(np.sum(nodes[:, :4] ** 2, axis=1))
 
@@ -351,11 +368,11 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
             root = brentq(lambda t: _slope(_piece_at(piece, t)), piece.t_old, piece.t,
                           xtol=1e-15 * max(1.0, abs(piece.t)), rtol=4 * np.finfo(float).eps)
             (t_min if decreasing else t_max).append(root)
-    if p.theta_rate0 == 0.0 and (t_min or t_max):
-        # released with thetadot = 0: t = 0 is itself an extremum, of the other kind
-        # than the first one found (no sign change brackets it)
-        first_is_min = bool(t_min) and (not t_max or t_min[0] < t_max[0])
-        (t_max if first_is_min else t_min).insert(0, 0.0)
+    if p.theta_rate0 == 0.0 and amplitude > STEADY_AMPLITUDE:
+        # released with thetadot = 0: t = 0 is itself an extremum (no sign change brackets
+        # it), a minimum if theta first grows; theta is monotonic up to the first extremum
+        moved = theta_nodes[np.abs(theta_nodes - theta_nodes[0]) > 0.5 * STEADY_AMPLITUDE]
+        (t_min if moved[0] > theta_nodes[0] else t_max).insert(0, 0.0)
     t_min, t_max = np.array(t_min), np.array(t_max)
 
     at_ext = {name: (euler_angles(p, dense(ts)) if len(ts) else
@@ -388,14 +405,23 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     def phi_at(t: np.ndarray) -> np.ndarray:
         return phi_all[np.searchsorted(all_t, t)]
 
-    # mean precession: phi advance over whole nutation periods / their time
+    # mean precession: phi advance over whole nutation periods / their time, never a part
+    mean_precession: float | None = None
     if period is not None:
         ts = t_max if len(t_max) >= 2 else t_min
         a, b = float(ts[0]), float(ts[-1])
+        notes.append(f"means over whole periods only: the mean precession is the advance of phi "
+                     f"over {len(ts) - 1} whole nutation period{'s' * (len(ts) > 2)}, t = "
+                     f"{a:.6g} .. {b:.6g} s")
+    elif amplitude > STEADY_AMPLITUDE:
+        a = b = 0.0
+        notes.append("the run holds no whole nutation period: the mean precession is not "
+                     "measured (means are taken over whole periods only); integrate longer")
     else:
         a, b = 0.0, float(t_end)
-    phi_a, phi_b = phi_at(np.array([a, b]))
-    mean_precession = (phi_b - phi_a) / (b - a)
+    if b > a:
+        phi_a, phi_b = phi_at(np.array([a, b]))
+        mean_precession = float((phi_b - phi_a) / (b - a))
 
     angles = euler_angles(p, dense(t_out))
     clock = time.process_time() - clock
@@ -405,13 +431,14 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
         phidot=angles["phidot"], psidot=angles["psidot"],
         energy0=float(energy[0]), P1=float(P1[0]), P2=float(P2[0]),
         energy_drift=float(np.max(np.abs(energy - energy[0]))) / energy_scale,
+        energy_drift_varying=float(np.max(np.abs(energy - energy[0]))) / varying_scale,
         P1_drift=float(np.max(np.abs(P1 - P1[0]))) / H_scale,
         P2_drift=float(np.max(np.abs(P2 - P2[0]))) / H_scale,
         norm_drift=float(np.max(np.abs(norm - 1.0))),
         t_theta_min=t_min, t_theta_max=t_max, theta_min=theta_min, theta_max=theta_max,
         phidot_at_min=at_ext["min"]["phidot"], phidot_at_max=at_ext["max"]["phidot"],
         theta_at_min=theta_ext["min"], theta_at_max=theta_ext["max"],
-        nutation_period=period, mean_precession=float(mean_precession),
+        nutation_period=period, mean_precession=mean_precession,
         precession_resolved=resolved, steps=len(times) - 1, nfev=int(nfev),
         cpu_seconds=clock, notes=notes)
 
@@ -461,11 +488,23 @@ def motion_of(sim: Simulation, zero: float = 1e-6) -> str:
     theta_max: opposite signs -> loops, zero at one of them -> cusps, one sign ->
     waves. No nutation: steady, or sleeping when the axis stays vertical.
     ``zero`` is relative to the largest |phidot| at the extrema.
+
+    A run shorter than a nutation period is classified from the extrema it saw: one
+    theta minimum and one maximum are enough (phidot's extreme signs are there). With
+    extrema of one kind only, or none, theta's range is not known; phidot of both signs
+    along the run still means loops, else the answer is TOO_SHORT.
     """
     if sim.theta_max < 1e-9 or sim.theta_min > math.pi - 1e-9:
         return "sleeping"
-    if not sim.nutates:
+    if not sim.theta_varies:
         return "steady"
+    if not sim.nutates and not (len(sim.t_theta_min) and len(sim.t_theta_max)):
+        off_vertical = (sim.theta > 1e-6) & (sim.theta < math.pi - 1e-6)
+        rates = sim.phidot[off_vertical]
+        scale = float(np.max(np.abs(rates))) if len(rates) else 0.0
+        if scale and rates.min() < -1e-6 * scale and rates.max() > 1e-6 * scale:
+            return "loops"
+        return TOO_SHORT
     # on the vertical itself phi is undefined (the axis passes through the pole, P1 = P2):
     # phidot's sign is read at the other extreme
     ends = np.concatenate([sim.phidot_at_min[sim.theta_at_min > 1e-6],
