@@ -29,6 +29,11 @@ def qty(x: float, unit: str) -> str:
     return f"{num(x)} {unit}".rstrip()
 
 
+def vec(components, unit: str) -> str:
+    """A vector by components with its unit: ``(0, 1.200, -3.000) N m``."""
+    return "(" + ", ".join(num(c) if c else "0" for c in components) + f") {unit}".rstrip()
+
+
 def substitute(formula: str, **values: str) -> str:
     """The formula with each named symbol replaced by its value: ``m r^2`` -> ``(2 kg) (0.1 m)^2``."""
     import re

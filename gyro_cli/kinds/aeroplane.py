@@ -20,11 +20,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
-
-
-def _vec(v: V.Vector, unit: str) -> str:
-    return "(" + ", ".join(num(c) if c else "0" for c in v) + f") {unit}".rstrip()
+from ..core.work import Work, num, qty, vec
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -66,13 +62,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'forward (toward the nose), +x' if direction > 0 else 'aft (toward the tail), -x'}"
-                  f"; H = {_vec(H, 'kg m^2/s')}")
+                  f"; H = {vec(H, 'kg m^2/s')}")
 
     work.section("Turn: precession about the vertical")
     rate = work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
-              f"from above): omega_p = {_vec(wp, 'rad/s')}")
+              f"from above): omega_p = {vec(wp, 'rad/s')}")
 
     work.section("Gyroscopic couple, C = omega_p x H")
     C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
@@ -86,8 +82,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
-        work.text(f"reactive couple on the aeroplane -(omega_p x H) = {_vec(reactive, 'N m')}")
+        work.text(f"couple on the rotor omega_p x H = {vec(active, 'N m')}")
+        work.text(f"reactive couple on the aeroplane -(omega_p x H) = {vec(reactive, 'N m')}")
         words = V.effect_of(wp, H, "aeroplane")
         work.text(f"effect on the aeroplane: {words}")
         work.answer("effect", "effect", [words], None)

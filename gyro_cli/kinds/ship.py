@@ -24,11 +24,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
-
-
-def _vec(v: V.Vector, unit: str) -> str:
-    return "(" + ", ".join(num(c) if c else "0" for c in v) + f") {unit}".rstrip()
+from ..core.work import Work, num, qty, vec
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -69,7 +65,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'forward (toward the bow), +x' if direction > 0 else 'aft (toward the stern), -x'}"
-                  f"; H = {_vec(H, 'kg m^2/s')}")
+                  f"; H = {vec(H, 'kg m^2/s')}")
 
     if motion == "steering":
         wp = _steering(given, work)
@@ -102,8 +98,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text(f"couple on the rotor omega_p x H = {_vec(active, 'N m')}")
-        work.text(f"reactive couple on the ship -(omega_p x H) = {_vec(reactive, 'N m')}")
+        work.text(f"couple on the rotor omega_p x H = {vec(active, 'N m')}")
+        work.text(f"reactive couple on the ship -(omega_p x H) = {vec(reactive, 'N m')}")
         words = V.effect_of(wp, H, "ship")
         work.text(f"effect on the ship: {words}")
         work.answer("effect", "effect", [words], None)
@@ -136,7 +132,7 @@ def _steering(given: Given, work: Work) -> V.Vector:
     work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
-              f"seen from above): omega_p = {_vec(wp, 'rad/s')}, along "
+              f"seen from above): omega_p = {vec(wp, 'rad/s')}, along "
               f"{'+z' if turn == 'left' else '-z'}")
     return wp
 
@@ -191,7 +187,7 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
     wp = V.pitching_precession(rate, bow)
     work.text(f"bow {bow}: the rotation carries x {'toward +z' if bow == 'rising' else 'toward -z'}"
               f", a rotation about {'-y' if bow == 'rising' else '+y'}: omega_p = "
-              f"{_vec(wp, 'rad/s')}")
+              f"{vec(wp, 'rad/s')}")
     return wp
 
 
@@ -203,7 +199,7 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)
-    work.text(f"omega_p along x: {_vec(wp, 'rad/s')}")
+    work.text(f"omega_p along x: {vec(wp, 'rad/s')}")
     return wp
 
 
