@@ -104,7 +104,8 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     _positive(values, "cg_distance", allow_zero=True)
     if "mass" in values and "weight" in values:
         raise InputError("give mass or weight, not both", key="given.weight")
-    needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values]
+    needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
+                  and not (k == "cg_distance" and values[k] == 0)]  # l = 0: no gravity moment
     if "mass" not in values and "weight" not in values and needs_mass:
         raise InputError(f"the body needs `mass` or `weight` (to go with {needs_mass[0]})",
                          key="given.mass")
@@ -134,7 +135,7 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     J = _axial(values, m, r, shape, work)
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
-    _check_inertias(values, m, J, I_cg, I_pivot, l)
+    _check_inertias(values, m, J, I_cg, I_pivot, l, work)
     return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
 
 
@@ -143,21 +144,27 @@ INERTIA_SLACK = 0.01
 
 
 def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float | None,
-                    I_pivot: float | None, l: float | None) -> None:
-    """Refuse inertias no rigid body has: J <= 2 I_G (I_z <= I_x + I_y) and I >= m l^2."""
+                    I_pivot: float | None, l: float | None, work: Work) -> None:
+    """Warn of inertias no rigid body has: J <= 2 I_G (I_z <= I_x + I_y) and I >= m l^2.
+
+    Textbooks do print such data (a radius of gyration about the pivot shorter
+    than the pivot-to-centre distance); the problem is solved as given, and the
+    warning names the inconsistency. The equations stay meaningful.
+    """
     if I_pivot is not None and l and m is not None:
         if I_pivot < m * l * l * (1 - INERTIA_SLACK):
-            raise InputError(f"I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
-                             f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no body can have "
-                             "(parallel axes: I = I_G + m l^2)", key="given.I_pivot")
+            key = "k_pivot" if "k_pivot" in values else "I_pivot"
+            work.warn(f"{key}: I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
+                      f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no rigid body can have "
+                      "(parallel axes: I = I_G + m l^2); solved with the data as given")
         if I_cg is None:
             I_cg = max(I_pivot - m * l * l, 0.0)
     if J is not None and I_cg is not None and J > 2 * I_cg * (1 + INERTIA_SLACK):
-        key = "given.J" if "J" in values else "given.k_axial" if "k_axial" in values else \
-            "given.shape"
-        raise InputError(f"J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}: no "
-                         "rigid body has these inertias (the axial moment is at most the sum "
-                         "of the two transverse ones about the centre of mass)", key=key)
+        key = "J" if "J" in values else "k_axial" if "k_axial" in values else "shape"
+        work.warn(f"{key}: J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}, "
+                  "which no rigid body can have (the axial moment is at most the sum of the "
+                  "two transverse ones about the centre of mass); solved with the data as "
+                  "given")
 
 
 def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:
