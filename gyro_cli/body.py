@@ -61,6 +61,12 @@ class Body:
     l: float = 0.0
     radius: float | None = None
     shape: str | None = None
+    per_kg: bool = False  # no mass given and none needed: inertias and m g l per kilogram
+
+    @property
+    def mass_for_rates(self) -> float:
+        """The mass in J, I and m g l: the mass, or 1 kg where it cancels from the rates."""
+        return 1.0 if self.per_kg else self.m
 
     @property
     def m(self) -> float:
@@ -76,7 +82,7 @@ class Body:
     @property
     def mgl(self) -> float:
         """m g l: the gravity moment per unit sin(theta) (Eq. 11.11); 0 when l = 0."""
-        return self.m * self.g * self.l if self.l else 0.0
+        return self.mass_for_rates * self.g * self.l if self.l else 0.0
 
     def require(self, *names: str) -> None:
         """Raise InputError naming the body data a kind needs but lacks."""
@@ -106,7 +112,10 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
         raise InputError("give mass or weight, not both", key="given.weight")
     needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
                   and not (k == "cg_distance" and values[k] == 0)]  # l = 0: no gravity moment
-    if "mass" not in values and "weight" not in values and needs_mass:
+    per_kg = bool(needs_mass) and "mass" not in values and "weight" not in values and \
+        not {"J", "I_pivot", "I_cg"} & set(values) and \
+        bool({"shape", "k_axial", "k_pivot", "k_cg"} & set(values))
+    if "mass" not in values and "weight" not in values and needs_mass and not per_kg:
         raise InputError(f"the body needs `mass` or `weight` (to go with {needs_mass[0]})",
                          key="given.mass")
     if "radius" in values and "diameter" in values:
@@ -116,6 +125,10 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     g = values.get("g", G_US if us_customary else G_SI)
     if "mass" in values:
         m = values["mass"]
+    elif per_kg:
+        m = 1.0
+        work.text("no mass given: J, I and m g l are all proportional to m, so the rates do not "
+                  "depend on it; the work below is per kilogram (m = 1 kg)")
     elif "weight" not in values:
         m = None
     else:
@@ -136,7 +149,8 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
     _check_inertias(values, m, J, I_cg, I_pivot, l, work)
-    return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
+    return Body(mass=None if per_kg else m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0,
+                radius=r, shape=shape, per_kg=per_kg)
 
 
 # Rounded textbook data may miss the inequalities below by a little; more than this is an error.

@@ -128,6 +128,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _by_root(find, work)
     if find & MOTION_ANSWERS:
         _motion(body, theta, find, work)
+    if body.per_kg:
+        if "moment" in find:
+            raise InputError("the moment depends on the mass, which the rates do not need: give "
+                             "mass or weight", key="given.mass")
+        work.answers.pop("moment", None)
     for name in ("spin", "precession", "axial_rate"):
         fast = [v for v in work.answers[name].si_values if abs(v) > FASTEST_REAL_ROTOR] \
             if name in work.answers else []
@@ -152,7 +157,7 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
     if body.l == 0:
         work.text("l = 0 and no applied moment: a torque-free body (D = 0)")
         return 0.0, "m g l"
-    work.step("M", "m g l sin(theta)", f"{qty(body.m, 'kg')} ({qty(body.g, 'm/s^2')}) "
+    work.step("M", "m g l sin(theta)", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
               f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
               body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
     return body.mgl, "m g l"
