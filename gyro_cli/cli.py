@@ -242,6 +242,10 @@ def kinds() -> None:
         click.echo("")
     for name, what in registry.PLANNED.items():
         click.echo(f"{name}: {what}  (not built yet)")
+    click.echo("units, as textbooks write them: rpm RPM rev/min r/min rps rev/s rev Hz; "
+               "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
+               "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
+               "Nm, kN m (docs/real_problems.md)")
 
 
 if __name__ == "__main__":

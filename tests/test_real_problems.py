@@ -321,3 +321,20 @@ def test_misspelt_compound_key_suggests_its_family(run, write):
         """)
     out = run("solve", path)
     assert out.exit_code == 2 and "did you mean 'turn_radius'" in out.stderr
+
+
+def test_kinds_and_schema_list_the_new_answers_and_units(run):
+    import re
+
+    from gyro_cli.authoring import QUANTITY_PATTERN, schema
+
+    listing = run("kinds").stdout
+    for name in ("precession_slow", "precession_fast", "spin_slow", "spin_fast",
+                 "precession_approx", "pivot_force", "precession_period", "cg_speed",
+                 "cg_acceleration", "spin_at_limits", "reversal_theta"):
+        assert name in listing
+        assert name in json.dumps(schema())
+    for unit in ("kmph", "rev/min", "N-m", "lb ft", "tonne"):
+        assert unit in listing
+    for text in ("2 N.m", "2 N-m", "360 kmph", "5 1/s", "50 lb-ft", "60 r/min"):
+        assert re.match(QUANTITY_PATTERN, text), text
