@@ -179,7 +179,7 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     if not math.isfinite(si):
         raise InputError(f"{raw!r} is not a finite number", key=key)
     text = " ".join(raw.split()) if isinstance(raw, str) else f"{raw:g}"
-    return Expected(text, si, number, unit, factor)
+    return Expected(text, si, number, units.display(unit, dimension, key), factor)
 
 
 def parse_expected(raw: Any, dimension: str | None, key: str) -> list[Expected]:

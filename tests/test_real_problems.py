@@ -338,3 +338,48 @@ def test_kinds_and_schema_list_the_new_answers_and_units(run):
         assert unit in listing
     for text in ("2 N.m", "2 N-m", "360 kmph", "5 1/s", "50 lb-ft", "60 r/min"):
         assert re.match(QUANTITY_PATTERN, text), text
+
+
+def test_coin_rolling_by_itself_needs_no_mass(write):
+    """A coin (uniform disk) rolling on a circle, given by shape and radius only.
+
+    Moments about G per unit mass (J = r^2/2, I_G = r^2/4 per kg):
+    g r sin(b) = Omega^2 cos(b) [rho (r + J/r) + I_G sin(b)], Omega = v / rho, so
+    g r sin(b) rho^2 - v^2 cos(b) (3 r / 2) rho - v^2 cos(b) (r^2 / 4) sin(b) = 0.
+    """
+    r, v, b, g = 0.012, 0.5, math.radians(10), 9.81
+    qa, qb, qc = g * r * math.sin(b), -v * v * math.cos(b) * 1.5 * r, \
+        -v * v * math.cos(b) * r * r / 4 * math.sin(b)
+    rho = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    text = """\
+        id: coin
+        kind: rolling_disk
+        given: {arrangement: free, %sshape: disk, radius: 12 mm, speed: 0.5 m/s, tilt: 10 deg}
+        find: {precession: rad/s, path_radius: mm}
+        """
+    for mass in ("", "mass: 5 g, "):
+        path = write(text % mass, f"coin{len(mass)}.yaml")
+        assert si(path, "precession") == [pytest.approx(v / rho, rel=1e-9)]
+        assert si(path, "path_radius") == [pytest.approx(rho + r * math.sin(b), rel=1e-9)]
+
+
+def test_force_answer_in_lb_and_expected_in_n_dot_m(run, write):
+    path = write(TOP_11_3 % "pivot_force: lb" + "expected: {moment: 0.01589 N.m}\n")
+    result = solve_file(str(path))
+    reported = result.answers["pivot_force"]
+    assert reported.unit == "lbf"
+    assert reported.values[0] == pytest.approx(3 / 16, rel=1e-9)  # the weight, 3 ozf, in lbf
+    out = run("check", path)
+    assert out.exit_code == 0, out.stdout
+    assert "0.01589 N m (slow)" in out.stdout  # got: as the steps print it
+
+
+def test_applied_moment_of_zero_has_no_zero_root(write):
+    path = write("""\
+        id: x
+        kind: steady_precession
+        given: {J: 0.02 kg m^2, I_pivot: 0.01 kg m^2, moment: 0 N m, spin: 100 rad/s,
+                theta: 60 deg}
+        find: {precession: rad/s}
+        """)
+    assert si(path, "precession") == [pytest.approx(-0.02 * 100 / (0.01 * 0.5), rel=1e-12)]
