@@ -383,3 +383,19 @@ def test_applied_moment_of_zero_has_no_zero_root(write):
         find: {precession: rad/s}
         """)
     assert si(path, "precession") == [pytest.approx(-0.02 * 100 / (0.01 * 0.5), rel=1e-12)]
+
+
+def test_simulate_without_transverse_inertia_is_one_line(run, problems_dir):
+    out = run("simulate", problems_dir / "toy_gyroscope_pivot.yaml", "--periods", "1")
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1
+    assert "given.I_pivot" in out.stderr and "Traceback" not in out.stderr
+
+
+@pytest.mark.parametrize("spin", ["1800 rpm*", "1800 ()", "1800 (rpm", "1800 rpm)", "1800 rmp",
+                                  "1800 mrpm"])
+def test_bad_unit_roots_exit_2_with_one_line(run, write, spin):
+    path = write(TOP_11_3.replace("1800 rpm", f'"{spin}"') % "min_spin: rpm")
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stdout == ""
+    assert out.stderr.count("\n") == 1 and "given.spin" in out.stderr
+    assert "Traceback" not in out.stderr and "AssertionError" not in out.stderr
