@@ -238,6 +238,8 @@ def _split(text: Any, key: str) -> tuple[float, str]:
     if not match:
         raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
     number, unit = match.group(1), match.group(2).strip()
+    if unit in _VALID:
+        return float(number), unit
     words = _names(unit)
     if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
         # Prose after the number ("1800 rpm relative to the frame"): name the first word
@@ -247,9 +249,15 @@ def _split(text: Any, key: str) -> tuple[float, str]:
                 raise InputError(f"unknown unit {word!r} in {text!r}; a comment needs '#'",
                                  key=key)
     tokenize(unit, text, key)
+    if len(_VALID) < 4096:
+        _VALID.add(unit)
     return float(number), unit
 
 
+# Unit texts that passed the checks of _split (their names may still be unknown).
+_VALID: set[str] = set()
+# (unit, dimension) -> the unit as gyro prints it.
+_SHOWN: dict[tuple[str, str], str] = {}
 # (name, weight reading) -> (pint units, printed name) or None when unknown.
 _NAMES: dict[tuple[str, bool], Any] = {}
 
@@ -392,7 +400,14 @@ def _reading(unit: str, dimension: str, key: str, text: Any,
 
 def display(unit: str, dimension: str, key: str = "") -> str:
     """How gyro prints a (checked) unit: ``N*m`` -> ``N m``, ``lb-ft`` -> ``lbf ft``."""
-    return _reading(unit, dimension, key, unit)[1] if unit else unit
+    if not unit:
+        return unit
+    shown = _SHOWN.get((unit, dimension))
+    if shown is None:
+        shown = _reading(unit, dimension, key, unit)[1]
+        if len(_SHOWN) < 4096:
+            _SHOWN[(unit, dimension)] = shown
+    return shown
 
 
 def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple[float, Any]:
