@@ -32,7 +32,7 @@ def main() -> None:
 
 
 @main.command()
-@click.argument("files", nargs=-1, required=True)
+@click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
               help="text: the worked answer; json: one JSON object per file, one per line; "
                    "markdown, latex: a write-up for a solution sheet.")
@@ -43,13 +43,21 @@ def main() -> None:
 @click.option("--force", is_flag=True, help="With --plot: replace FILE if it exists.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
           force: bool = False) -> None:
-    """Solve problem FILES and print worked answers."""
+    """Solve problem FILES and print worked answers.
+
+    FILES may also be directories (every *.yaml and *.yml in them, as for
+    `gyro check`) or quoted globs.
+    """
+    from .checking.check import collect
     from .render import report
     from .solving.solve import solve_file
 
+    files, missing = collect(files)
+    for entry in missing:
+        click.echo(f"gyro: {entry.error}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
-    bad = 0
+    bad = len(missing)
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
@@ -226,6 +234,10 @@ def kinds() -> None:
     from .render.kinds_list import kinds_text
 
     click.echo(kinds_text(registry, BODY_PARAMS))
+    click.echo("units, as textbooks write them: rpm RPM rev/min r/min rps rev/s rev Hz; "
+               "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
+               "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
+               "Nm, kN m (docs/real_problems.md)")
 
 
 if __name__ == "__main__":

@@ -264,9 +264,10 @@ BAD = [
     ("""
         id: bad
         kind: gyroscopic_torque
-        given: {mass: 2 kg, J: 0.01 kg*m^2, spin: 100 rad/s, precession: 1 rad/s, theta: 0 deg}
+        given: {mass: 2 kg, J: 0.01 kg*m^2, spin: 100 rad/s, precession: 1 rad/s, theta: 0 deg,
+                bearing_spacing: 200 mm}
         find: {moment: N*m}
-        """, "theta"),
+        """, "theta = 0 deg"),
     ("""
         id: bad
         kind: gyroscopic_torque

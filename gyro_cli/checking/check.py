@@ -34,7 +34,9 @@ DEFAULT_TOLERANCE = "1%"
 YAML_SUFFIXES = (".yaml", ".yml")
 _SIG = re.compile(r"\s*(\d{1,2})\s*(?:sig|sf|s\.f\.|sig\s*figs?|significant\s+figures?)\s*",
                   re.I)
-_PERCENT = re.compile(r"\s*((?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)\s*%\s*")
+_PERCENT = re.compile(r"\s*((?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)\s*"
+                      r"(?:%|percent|per\s*cent|pct)\s*", re.I)
+_MAGNITUDE = re.compile(r"\s*,?\s*\b(?:magnitudes?|abs)\b\s*,?\s*", re.I)
 
 
 # ---- tolerances -------------------------------------------------------------
@@ -46,6 +48,7 @@ class Tolerance:
     form: str   # "relative" | "sig" | "absolute"
     value: float  # fraction (0.01), digits (3), or SI half-width
     text: str
+    magnitude: bool = False  # compare absolute values (books that quote magnitudes)
 
     def half_width(self, expected_si: float, expected_number: float) -> float:
         """The allowed |got - expected| in SI for one expected value.
@@ -74,6 +77,10 @@ def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> 
                          "(relative), '3 sig' (significant figures) or a quantity with a unit "
                          "(absolute)", key=key)
     text = raw.strip()
+    if len(text) <= units.MAX_TEXT and _MAGNITUDE.search(text):
+        rest = _MAGNITUDE.sub(" ", text).strip()
+        one = parse_tolerance(rest or DEFAULT_TOLERANCE, dimension, key)
+        return dataclasses.replace(one, magnitude=True, text=text)
     match = _PERCENT.fullmatch(text)
     if match:
         fraction = float(match.group(1)) / 100
@@ -172,7 +179,7 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     if not math.isfinite(si):
         raise InputError(f"{raw!r} is not a finite number", key=key)
     text = " ".join(raw.split()) if isinstance(raw, str) else f"{raw:g}"
-    return Expected(text, si, number, unit, factor)
+    return Expected(text, si, number, units.display(unit, dimension, key), factor)
 
 
 def parse_expected(raw: Any, dimension: str | None, key: str) -> list[Expected]:
@@ -286,6 +293,7 @@ class AnswerCheck:
     relative_error: float | None = None
     message: str = ""
     slip: str | None = None
+    keyed: bool = True  # False: a computed root the key does not quote (passes unless --strict)
 
     @property
     def label(self) -> str:
@@ -301,6 +309,7 @@ class ProblemCheck:
     status: str = "pass"  # pass | fail | no expected answers | error
     error: str | None = None
     answers: list[AnswerCheck] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
 
 
 @dataclass
@@ -309,7 +318,7 @@ class CheckRun:
     strict: bool = False
 
     def counts(self) -> dict[str, int]:
-        answers = [a for p in self.problems for a in p.answers]
+        answers = [a for p in self.problems for a in p.answers if a.keyed]
         return {
             "files": len(self.problems),
             "checked": sum(p.status in ("pass", "fail") for p in self.problems),
@@ -371,8 +380,12 @@ def collect(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[Problem
     return unique, errors
 
 
-def check_problem(problem: Any) -> ProblemCheck:
-    """Solve one loaded problem and compare every expected answer; InputError if bad."""
+def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
+    """Solve one loaded problem and compare every expected answer; InputError if bad.
+
+    ``strict``: every computed root must be keyed (else a root the key does not
+    quote is reported as not keyed and does not fail).
+    """
     from ..solving.solve import solve
 
     kind = problem.kind
@@ -390,18 +403,29 @@ def check_problem(problem: Any) -> ProblemCheck:
         find.setdefault(name, None)
     # Solved even without expected answers: a file that cannot be solved is a bad file.
     solved = solve(dataclasses.replace(problem, find=find))
+    result.warnings = list(solved.solution.warnings)
     if not wanted:
         result.status = "no expected answers"
         return result
     for name, (values, tolerance) in wanted.items():
-        result.answers += compare(name, values, tolerance, solved.answers[name])
+        result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict)
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"
     return result
 
 
-def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any) -> list[AnswerCheck]:
-    """Compare the expected values of one answer with its computed roots (as sets)."""
+def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
+            strict: bool = True) -> list[AnswerCheck]:
+    """Compare the expected values of one answer with its computed roots (as sets).
+
+    With ``strict`` False a computed root that no expected value claims, where
+    every expected value found its root, is "not keyed": listed, not failed
+    (a book quotes the slow precession and not the fast one).
+    """
     computed = list(reported.si_values)
+    if tolerance.magnitude and reported.si_unit is not None:
+        computed = [abs(c) for c in computed]
+        values = [dataclasses.replace(v, si=abs(float(v.si)), number=abs(v.number))
+                  for v in values]
     labels = list(reported.labels)
     out: list[AnswerCheck] = []
     if reported.unit is None and reported.si_unit is None:  # a word answer
@@ -425,6 +449,7 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     # same for both precession rates) is covered by it, not a missing value.
     pairs = [(i, j) for i, j in pairs
              if i is not None or not any(within(k, j) for k in range(len(values)))]
+    all_found = all(j is not None and within(i, j) for i, j in pairs if i is not None)
     several = len(values) > 1 or len(pairs) > 1
     for position, (i, j) in enumerate(pairs):
         index = position + 1 if several else None
@@ -432,6 +457,14 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         if i is None:  # a computed root that no expected value claims
             unit, factor = values[0].unit or reported.unit or "", values[0].factor
             got_value = computed[j] / factor
+            if not strict and all_found:
+                out.append(AnswerCheck(
+                    name, index, None, f"{num(got_value)} {unit}".rstrip() + label, True,
+                    unit=unit, got_value=got_value, got_si=computed[j],
+                    si_unit=reported.si_unit, tolerance=tolerance.text, keyed=False,
+                    message="not keyed: the key quotes no value for this root "
+                            "(gyro check --strict fails it)"))
+                continue
             out.append(AnswerCheck(
                 name, index, None, f"{num(got_value)} {unit}".rstrip() + label, False,
                 unit=unit, got_value=got_value, got_si=computed[j],
@@ -481,7 +514,7 @@ def _other_root(value: Expected, roots: list[float], width_si: float, unit: str)
             f"{unit}, which another expected value took")
 
 
-def check_file(path: str) -> ProblemCheck:
+def check_file(path: str, strict: bool = False) -> ProblemCheck:
     """Load, solve and compare one file; a bad file comes back with status error."""
     from ..solving.problem import load
 
@@ -490,7 +523,7 @@ def check_file(path: str) -> ProblemCheck:
     except InputError as err:
         return ProblemCheck(path, status="error", error=str(err))
     try:
-        return check_problem(problem)
+        return check_problem(problem, strict=strict)
     except InputError as err:
         err.located(file=problem.file, line=problem.line(err.key))
         return ProblemCheck(path, problem.id, problem.title, problem.kind.name, status="error",
@@ -500,7 +533,7 @@ def check_file(path: str) -> ProblemCheck:
 def run(paths: list[str] | tuple[str, ...], strict: bool = False) -> CheckRun:
     """Check every problem file under ``paths``, all in this process."""
     files, errors = collect(paths)
-    return CheckRun(errors + [check_file(f) for f in files], strict=strict)
+    return CheckRun(errors + [check_file(f, strict) for f in files], strict=strict)
 
 
 # ---- reports ----------------------------------------------------------------
@@ -536,13 +569,15 @@ def table(run_: CheckRun) -> str:
         elif p.status == "no expected answers":
             rows.append(("#", "  ----   no expected answers (not checked)"))
         for a in p.answers:
-            note = a.message if not a.passed else ""
+            note = a.message if not a.passed or not a.keyed else ""
             if a.slip:
                 note += f"; likely slip: {a.slip}"
             tol = (f" (+-{num(a.tolerance_value)} {a.unit or ''})".replace(" )", ")")
                    if a.tolerance_value is not None and a.tolerance_value >= 0 else "")
-            rows.append(("PASS" if a.passed else "FAIL", a.label, a.expected or "-",
+            rows.append(("PASS" if a.passed and a.keyed else "----" if a.passed else "FAIL",
+                         a.label, a.expected or "-",
                          a.got or "-", _percent(a), f"{a.tolerance}{tol}", note))
+        rows += [("#", f"  ! {warning}") for warning in p.warnings]
     widths = [0] * 6
     for row in rows:
         if row[0] != "#":
@@ -570,7 +605,7 @@ def as_dict(run_: CheckRun) -> dict[str, Any]:
     for p in run_.problems:
         problems.append({
             "file": p.file, "id": p.id or None, "title": p.title or None, "kind": p.kind or None,
-            "status": p.status, "error": p.error,
+            "status": p.status, "error": p.error, "warnings": list(p.warnings),
             "answers": [{
                 "name": a.name, "index": a.index, "passed": a.passed,
                 "expected": a.expected, "got": a.got, "unit": a.unit,
@@ -578,7 +613,7 @@ def as_dict(run_: CheckRun) -> dict[str, Any]:
                 "expected_si": a.expected_si, "got_si": a.got_si, "si_unit": a.si_unit,
                 "tolerance": a.tolerance, "tolerance_value": a.tolerance_value,
                 "relative_error": a.relative_error, "message": a.message or None,
-                "slip": a.slip} for a in p.answers]})
+                "slip": a.slip, "keyed": a.keyed} for a in p.answers]})
     return {"summary": summary, "problems": problems}
 
 

@@ -140,7 +140,7 @@ def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -
 # ---- gyro schema ------------------------------------------------------------
 
 QUANTITY_PATTERN = (r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*"
-                    r"[A-Za-z_°µΩ(]?[A-Za-z0-9_°µΩ*/^() \t+-]*$")
+                    r"[A-Za-z_°µΩ(1]?[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
 
 
 def schema() -> dict[str, Any]:

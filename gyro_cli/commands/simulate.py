@@ -87,6 +87,10 @@ def _steady(problem, given, body, result) -> Setup:
     if "precession" not in answers or "spin" not in answers:
         raise InputError("simulate needs a motion: give spin, axial_rate or precession",
                          key="given.spin")
+    if body.I_pivot is None:
+        raise InputError("simulate integrates the full equations, which need the transverse "
+                         "inertia even where the steady answer does not: give I_pivot, k_pivot, "
+                         "I_cg or k_cg (with cg_distance) or a shape", key="given.I_pivot")
     pairs = list(zip(answers["precession"].si_values, answers["spin"].si_values))
     precession, spin = min(pairs, key=lambda pair: abs(pair[0]))     # the slow root
     theta = given["theta"]

@@ -61,6 +61,12 @@ class Body:
     l: float = 0.0
     radius: float | None = None
     shape: str | None = None
+    per_kg: bool = False  # no mass given and none needed: inertias and m g l per kilogram
+
+    @property
+    def mass_for_rates(self) -> float:
+        """The mass in J, I and m g l: the mass, or 1 kg where it cancels from the rates."""
+        return 1.0 if self.per_kg else self.m
 
     @property
     def m(self) -> float:
@@ -76,7 +82,7 @@ class Body:
     @property
     def mgl(self) -> float:
         """m g l: the gravity moment per unit sin(theta) (Eq. 11.11); 0 when l = 0."""
-        return self.m * self.g * self.l if self.l else 0.0
+        return self.mass_for_rates * self.g * self.l if self.l else 0.0
 
     def require(self, *names: str) -> None:
         """Raise InputError naming the body data a kind needs but lacks."""
@@ -104,8 +110,12 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     _positive(values, "cg_distance", allow_zero=True)
     if "mass" in values and "weight" in values:
         raise InputError("give mass or weight, not both", key="given.weight")
-    needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values]
-    if "mass" not in values and "weight" not in values and needs_mass:
+    needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
+                  and not (k == "cg_distance" and values[k] == 0)]  # l = 0: no gravity moment
+    per_kg = bool(needs_mass) and "mass" not in values and "weight" not in values and \
+        not {"J", "I_pivot", "I_cg"} & set(values) and \
+        bool({"shape", "k_axial", "k_pivot", "k_cg"} & set(values))
+    if "mass" not in values and "weight" not in values and needs_mass and not per_kg:
         raise InputError(f"the body needs `mass` or `weight` (to go with {needs_mass[0]})",
                          key="given.mass")
     if "radius" in values and "diameter" in values:
@@ -115,6 +125,10 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     g = values.get("g", G_US if us_customary else G_SI)
     if "mass" in values:
         m = values["mass"]
+    elif per_kg:
+        m = 1.0
+        work.text("no mass given: J, I and m g l are all proportional to m, so the rates do not "
+                  "depend on it; the work below is per kilogram (m = 1 kg)")
     elif "weight" not in values:
         m = None
     else:
@@ -134,8 +148,9 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     J = _axial(values, m, r, shape, work)
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
-    _check_inertias(values, m, J, I_cg, I_pivot, l)
-    return Body(mass=m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0, radius=r, shape=shape)
+    _check_inertias(values, m, J, I_cg, I_pivot, l, work)
+    return Body(mass=None if per_kg else m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0,
+                radius=r, shape=shape, per_kg=per_kg)
 
 
 # Rounded textbook data may miss the inequalities below by a little; more than this is an error.
@@ -143,21 +158,27 @@ INERTIA_SLACK = 0.01
 
 
 def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float | None,
-                    I_pivot: float | None, l: float | None) -> None:
-    """Refuse inertias no rigid body has: J <= 2 I_G (I_z <= I_x + I_y) and I >= m l^2."""
+                    I_pivot: float | None, l: float | None, work: Work) -> None:
+    """Warn of inertias no rigid body has: J <= 2 I_G (I_z <= I_x + I_y) and I >= m l^2.
+
+    Textbooks do print such data (a radius of gyration about the pivot shorter
+    than the pivot-to-centre distance); the problem is solved as given, and the
+    warning names the inconsistency. The equations stay meaningful.
+    """
     if I_pivot is not None and l and m is not None:
         if I_pivot < m * l * l * (1 - INERTIA_SLACK):
-            raise InputError(f"I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
-                             f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no body can have "
-                             "(parallel axes: I = I_G + m l^2)", key="given.I_pivot")
+            key = "k_pivot" if "k_pivot" in values else "I_pivot"
+            work.warn(f"{key}: I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
+                      f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no rigid body can have "
+                      "(parallel axes: I = I_G + m l^2); solved with the data as given")
         if I_cg is None:
             I_cg = max(I_pivot - m * l * l, 0.0)
     if J is not None and I_cg is not None and J > 2 * I_cg * (1 + INERTIA_SLACK):
-        key = "given.J" if "J" in values else "given.k_axial" if "k_axial" in values else \
-            "given.shape"
-        raise InputError(f"J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}: no "
-                         "rigid body has these inertias (the axial moment is at most the sum "
-                         "of the two transverse ones about the centre of mass)", key=key)
+        key = "J" if "J" in values else "k_axial" if "k_axial" in values else "shape"
+        work.warn(f"{key}: J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}, "
+                  "which no rigid body can have (the axial moment is at most the sum of the "
+                  "two transverse ones about the centre of mass); solved with the data as "
+                  "given")
 
 
 def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:

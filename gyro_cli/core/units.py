@@ -50,16 +50,40 @@ WEIGHT_WORDS = {"lb": "lbf", "lbs": "lbf", "pound": "pound_force", "pounds": "po
                 "oz": "ozf", "ounce": "ounce_force", "ounces": "ounce_force"}
 
 MAX_TEXT = 100  # characters in one quantity string
+MAX_DEPTH = 8   # brackets nested in one unit
 
 _NUMBER = re.compile(r"\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)(.*)", re.S)
-_NAME = r"[A-Za-z_°µΩ][A-Za-z_0-9°µΩ]*"
-_UNIT_EXPR = re.compile(rf"(?:{_NAME}|\s+|[*/()]|(?:\*\*|\^)\s*[-+]?\d{{1,2}})*")
-_NAME_RE = re.compile(_NAME)
-_CHAINED_POWER = re.compile(r"(?:\*\*|\^)\s*[-+]?\d+\s*(?:\*\*|\^)")
+_NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_°µΩ")
+_NAME_CHARS = _NAME_START | frozenset("0123456789")
+
+# Names as textbooks write them -> (pint expression, how gyro prints it). The pint
+# expressions are gyro's own; a user's text never reaches pint's expression parser.
+ALIASES: dict[str, tuple[str, str]] = {
+    "RPM": ("revolution / minute", "rpm"), "Rpm": ("revolution / minute", "rpm"),
+    "rpm": ("revolution / minute", "rpm"), "RPS": ("revolution / second", "rps"),
+    "rps": ("revolution / second", "rps"),
+    "rev": ("revolution", "rev"), "revs": ("revolution", "rev"), "r": ("revolution", "rev"),
+    "kmph": ("kilometer / hour", "km/h"), "kph": ("kilometer / hour", "km/h"),
+    "kmh": ("kilometer / hour", "km/h"), "KPH": ("kilometer / hour", "km/h"),
+    "KMPH": ("kilometer / hour", "km/h"), "MPH": ("mile / hour", "mph"),
+    "kn": ("knot", "knot"), "kt": ("knot", "knot"), "kts": ("knot", "knot"),
+    "Nm": ("newton * meter", "N m"), "kNm": ("kilonewton * meter", "kN m"),
+    "t": ("metric_ton", "t"), "tonne": ("metric_ton", "t"), "tonnes": ("metric_ton", "t"),
+}
+# Units whose name already holds a quotient (rpm, mph): a prefix glued to one is refused.
+COMPOUND_UNITS = {"revolutions_per_minute", "revolutions_per_second", "mile_per_hour",
+                  "kilometer_per_hour", "knot", "number_meter", "foot_per_second",
+                  "inch_per_second", "meter_per_second"}
+# What a "did you mean" chooses from, beside the aliases.
+COMMON_UNITS = ("rad", "deg", "degree", "radian", "s", "sec", "second", "min", "minute", "h",
+                "hr", "hour", "Hz", "m", "mm", "cm", "km", "in", "inch", "ft", "foot", "feet",
+                "yd", "mile", "kg", "g", "gram", "lb", "lbf", "oz", "ozf", "slug", "N", "kN",
+                "kgf", "mph", "knot", "turn", "revolution", "percent")
+
 
 _registry: Any = None
 # (unit text, dimension) -> (pint units, SI per unit), for units already checked.
-_CHECKED: dict[tuple[str, str], tuple[Any, float]] = {}
+_CHECKED: dict[tuple[str, str, bool], tuple[Any, float]] = {}
 # (dimension, unit) -> unit per SI, for answers converted before.
 _TO: dict[tuple[str, str], float] = {}
 
@@ -88,6 +112,123 @@ def si_text(dimension: str) -> str:
     return SI_TEXT.get(unit, unit)
 
 
+
+def _fail(message: str, key: str) -> InputError:
+    return InputError(message, key=key)
+
+
+def tokenize(unit: str, text: Any = None, key: str = "") -> list[tuple[str, Any]]:
+    """Split a unit expression into tokens in one pass (linear in its length).
+
+    Tokens: ("name", word), ("mul", None) for ``*``, ``-`` or ``.`` between
+    names and for a space between two operands, ("div", None), ("pow", int)
+    for ``^n`` or ``**n``, ("(", None) and (")", None). Raises InputError with
+    one line for anything else: a stray character, unbalanced or empty brackets,
+    a trailing or doubled operator, a power without a base or chained powers.
+    The unknown names are not looked at here (see ``_resolve_name``).
+    """
+    shown = text if text is not None else unit
+    tokens: list[tuple[str, Any]] = []
+    i, n, depth = 0, len(unit), 0
+
+    def operand_before() -> bool:
+        return bool(tokens) and tokens[-1][0] in ("name", ")", "pow")
+
+    while i < n:
+        ch = unit[i]
+        if ch in _NAME_START:
+            j = i + 1
+            while j < n and unit[j] in _NAME_CHARS:
+                j += 1
+            if operand_before():
+                tokens.append(("mul", None))  # a space (or nothing, after a bracket) multiplies
+            tokens.append(("name", unit[i:j]))
+            i = j
+            continue
+        if ch.isspace():
+            i += 1
+            continue
+        if ch == "1" and not operand_before() and unit[i + 1:].lstrip().startswith("/"):
+            tokens.append(("name", "1"))  # 1/s
+            i += 1
+            continue
+        if ch == "^" or unit.startswith("**", i):
+            i += 1 if ch == "^" else 2
+            while i < n and unit[i].isspace():
+                i += 1
+            j = i + (1 if i < n and unit[i] in "+-" else 0)
+            k = j
+            while k < n and unit[k].isdigit():
+                k += 1
+            if k == j:
+                raise _fail(f"a power in the unit of {shown!r} needs a whole number after it "
+                            "(m^2, s**-1)", key)
+            if k - j > 2:
+                raise _fail(f"the power {unit[i:k]} in the unit of {shown!r} is too large", key)
+            if not tokens or tokens[-1][0] not in ("name", ")"):
+                what = "another power (chained powers are refused)" \
+                    if tokens and tokens[-1][0] == "pow" else "nothing"
+                raise _fail(f"a power in the unit of {shown!r} must follow a unit name or a "
+                            f"bracket, not {what}", key)
+            tokens.append(("pow", int(unit[i:k])))
+            i = k
+            continue
+        if ch in "*/-.":
+            if not operand_before():
+                raise _fail(f"{ch!r} in the unit of {shown!r} has no unit before it", key)
+            tokens.append(("div" if ch == "/" else "mul", None))
+            i += 1
+            continue
+        if ch == "(":
+            depth += 1
+            if depth > MAX_DEPTH:
+                raise _fail(f"brackets nested more than {MAX_DEPTH} deep in the unit of "
+                            f"{shown!r}", key)
+            if operand_before():
+                tokens.append(("mul", None))
+            tokens.append(("(", None))
+            i += 1
+            continue
+        if ch == ")":
+            if depth == 0:
+                raise _fail(f"unbalanced brackets in the unit of {shown!r}: a ')' closes "
+                            "nothing", key)
+            if tokens and tokens[-1][0] == "(":
+                raise _fail(f"empty brackets '()' in the unit of {shown!r}", key)
+            if tokens and tokens[-1][0] in ("mul", "div"):
+                raise _fail(f"the unit of {shown!r} has an operator with no unit after it "
+                            "before ')'", key)
+            depth -= 1
+            tokens.append((")", None))
+            i += 1
+            continue
+        raise _fail(f"unexpected {ch!r} in the unit of {shown!r}: a unit is names joined by "
+                    "spaces, *, / and ^ powers (a comment needs '#')", key)
+    if depth:
+        raise _fail(f"unbalanced brackets in the unit of {shown!r}: {depth} '(' not closed", key)
+    if tokens and tokens[-1][0] in ("mul", "div"):
+        raise _fail(f"the unit of {shown!r} ends with an operator: a unit name must follow it",
+                    key)
+    for (a, _), (b, _) in zip(tokens, tokens[1:]):
+        if a in ("mul", "div") and b in ("mul", "div"):
+            raise _fail(f"two operators in a row in the unit of {shown!r}", key)
+    return tokens
+
+
+def _names(unit: str) -> list[str]:
+    """The words of a unit text, in order, in one pass (no checking)."""
+    words, word = [], []
+    for ch in unit:
+        if ch in _NAME_CHARS and (word or ch in _NAME_START):
+            word.append(ch)
+        elif word:
+            words.append("".join(word))
+            word = []
+    if word:
+        words.append("".join(word))
+    return words
+
+
 def _split(text: Any, key: str) -> tuple[float, str]:
     """Split a quantity into its number and its (checked) unit expression."""
     if isinstance(text, bool) or text is None:
@@ -104,47 +245,197 @@ def _split(text: Any, key: str) -> tuple[float, str]:
     if not match:
         raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
     number, unit = match.group(1), match.group(2).strip()
-    if not _UNIT_EXPR.fullmatch(unit) or _CHAINED_POWER.search(unit):
-        raise InputError(f"{text!r} is not a number followed by a unit (only names, *, /, "
-                         "brackets and small integer powers are allowed in a unit)", key=key)
+    if unit in _VALID:
+        return float(number), unit
+    words = _names(unit)
+    if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
+        # Prose after the number ("1800 rpm relative to the frame"): name the first word
+        # that is no unit, before any complaint about the punctuation around it.
+        for word in words:
+            if _lookup(word, None) is None:
+                raise InputError(f"unknown unit {word!r} in {text!r}; a comment needs '#'",
+                                 key=key)
+    tokenize(unit, text, key)
+    if len(_VALID) < 4096:
+        _VALID.add(unit)
     return float(number), unit
 
 
-def _units(unit: str, key: str, text: Any) -> Any:
-    import pint
+# Unit texts that passed the checks of _split (their names may still be unknown).
+_VALID: set[str] = set()
+# (unit, dimension) -> the unit as gyro prints it.
+_SHOWN: dict[tuple[str, str], str] = {}
+# (name, weight reading) -> (pint units, printed name) or None when unknown.
+_NAMES: dict[tuple[str, bool], Any] = {}
 
+
+def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
+    """A unit name as pint units and as printed; None if unknown. Refuses glued prefixes."""
+    weight = bool(weight)
+    cache_key = (name, weight)
+    if cache_key in _NAMES:
+        return _NAMES[cache_key]
     ureg = registry()
-    try:
-        return ureg.parse_units(unit.replace("^", "**")) if unit else ureg.dimensionless
-    except pint.errors.UndefinedUnitError as err:
-        raise InputError(f"unknown unit {str(err.unit_names)!r} in {text!r}", key=key) from None
-    except (pint.errors.DefinitionSyntaxError, SyntaxError, TypeError, ValueError,
-            AttributeError, KeyError):
-        raise InputError(f"cannot read the unit in {text!r}", key=key) from None
+    found: tuple[Any, str] | None
+    if name == "1":
+        found = (ureg.dimensionless, "1")
+    elif weight and name in WEIGHT_WORDS:
+        target = WEIGHT_WORDS[name]
+        found = (ureg.parse_units(target), "lbf" if target in ("lbf", "pound_force") else "ozf")
+    elif name in ALIASES:
+        target, shown = ALIASES[name]
+        found = (ureg.parse_units(target), shown)
+    else:
+        import pint
+
+        try:
+            candidates = ureg.parse_unit_name(name)
+        except (pint.errors.PintError, ValueError, KeyError, AttributeError):
+            candidates = ()
+        if not candidates and name not in ("°",):
+            found = None
+        elif candidates and all(prefix for prefix, _, _ in candidates) and \
+                any(unit in COMPOUND_UNITS for _, unit, _ in candidates):
+            prefix, unit, _ = candidates[0]
+            found = ("refused", f"{name!r} would be read as {prefix}-{unit.replace('_', ' ')}, "
+                                "which no textbook means; write the unit out (rpm, km/h)")
+        else:
+            try:
+                found = (ureg.parse_units(name), name)
+            except (pint.errors.PintError, ValueError, KeyError, AttributeError, SyntaxError):
+                found = None
+    if len(_NAMES) < 4096:
+        _NAMES[cache_key] = found
+    return found
+
+
+def _did_you_mean(name: str) -> str:
+    import difflib
+
+    options = list(ALIASES) + list(COMMON_UNITS)
+    lower = {o.lower(): o for o in options}
+    if name.lower() in lower:
+        return f"; did you mean {lower[name.lower()]!r}?"
+    for option in sorted(options, key=lambda o: o != o.lower()):  # swapped: rmp -> rpm
+        if len(name) > 2 and sorted(option.lower()) == sorted(name.lower()):
+            return f"; did you mean {option!r}?"
+    close = difflib.get_close_matches(name, options, n=1, cutoff=0.6)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def _resolve(unit: str, key: str, text: Any, weight: bool = False) -> tuple[Any, str]:
+    """A checked unit text as (pint units, the unit as gyro prints it).
+
+    A small recursive-descent reading of the tokens: products and quotients
+    left to right, powers binding tightest, brackets at most MAX_DEPTH deep.
+    """
+    ureg = registry()
+    if not unit:
+        return ureg.dimensionless, ""
+    tokens = tokenize(unit, text, key)
+    single = len(tokens) == 1
+    pos = 0
+
+    def atom() -> tuple[Any, str]:
+        nonlocal pos
+        kind, value = tokens[pos]
+        pos += 1
+        if kind == "(":
+            units, shown = expr()
+            pos += 1  # the ')' (tokenize checked the brackets balance)
+            return units, f"({shown})"
+        found = _lookup(value, weight)
+        if found is None:
+            raise InputError(f"unknown unit {value!r} in {text!r}{_did_you_mean(value)}",
+                             key=key)
+        if found[0] == "refused":
+            raise InputError(f"unknown unit {value!r} in {text!r}: {found[1]}", key=key)
+        units, shown = found
+        if not single and "/" in shown:  # km/h inside a product prints as kph
+            shown = f"({shown})"
+        return units, shown
+
+    def power() -> tuple[Any, str]:
+        nonlocal pos
+        units, shown = atom()
+        if pos < len(tokens) and tokens[pos][0] == "pow":
+            exponent = tokens[pos][1]
+            pos += 1
+            units, shown = units ** exponent, f"{shown}^{exponent}"
+        return units, shown
+
+    def expr() -> tuple[Any, str]:
+        nonlocal pos
+        units, shown = power()
+        while pos < len(tokens) and tokens[pos][0] in ("mul", "div"):
+            op = tokens[pos][0]
+            pos += 1
+            right, right_shown = power()
+            if op == "mul":
+                units, shown = units * right, f"{shown} {right_shown}"
+            else:
+                units, shown = units / right, f"{shown}/{right_shown}"
+        return units, shown
+
+    return expr()
+
+
+def _units(unit: str, key: str, text: Any) -> Any:
+    return _resolve(unit, key, text)[0]
+
+
+def _reading(unit: str, dimension: str, key: str, text: Any,
+             weight: bool = False) -> tuple[Any, str]:
+    """The pint units of ``unit`` for ``dimension``, with its printed form.
+
+    Where a force or a moment is asked for, lb and oz written for the force
+    (``20 lb``, ``50 lb ft``, ``oz in``) are read as lbf and ozf when the mass
+    reading has the wrong dimension: the only reading that fits, never a
+    silent change of meaning.
+    """
+    ureg = registry()
+    units, shown = _resolve(unit, key, text, weight)
+    pint_dim = DIMENSIONS[dimension][0]
+    if not weight and dimension in ("force", "moment") and \
+            units.dimensionality != ureg.get_dimensionality(pint_dim) and \
+            set(_names(unit)) & set(WEIGHT_WORDS):
+        as_force, shown_force = _resolve(unit, key, text, True)
+        if as_force.dimensionality == ureg.get_dimensionality(pint_dim):
+            return as_force, shown_force
+    return units, shown
+
+
+def display(unit: str, dimension: str, key: str = "") -> str:
+    """How gyro prints a (checked) unit: ``N*m`` -> ``N m``, ``lb-ft`` -> ``lbf ft``."""
+    if not unit:
+        return unit
+    shown = _SHOWN.get((unit, dimension))
+    if shown is None:
+        shown = _reading(unit, dimension, key, unit)[1]
+        if len(_SHOWN) < 4096:
+            _SHOWN[(unit, dimension)] = shown
+    return shown
 
 
 def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple[float, Any]:
     """Parse a quantity string into (SI float, pint quantity).
 
     ``dimension`` names an entry of DIMENSIONS. ``weight=True`` reads lb and oz
-    as pound-force and ounce-force.
+    as pound-force and ounce-force (as does any force or moment where the mass
+    reading would have the wrong dimension).
     """
-    import math
-
     number, unit = _split(text, key)
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
-    if weight:
-        unit = _NAME_RE.sub(lambda m: WEIGHT_WORDS.get(m.group(0), m.group(0)), unit)
     ureg = registry()
-    checked = _CHECKED.get((unit, dimension))
+    checked = _CHECKED.get((unit, dimension, weight))
     if checked is not None:  # this unit was parsed and checked for this dimension before
         units, factor = checked
         value = number * factor
         if not math.isfinite(value):
             raise InputError(f"{text!r} is out of range", key=key)
         return value, ureg.Quantity(number, units)
-    units = _units(unit, key, text)
+    units, _ = _reading(unit, dimension, key, text, weight)
     quantity = ureg.Quantity(number, units)
     pint_dim, si, words = DIMENSIONS[dimension]
     if quantity.dimensionality != ureg.get_dimensionality(pint_dim or "[]"):
@@ -163,18 +454,22 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     if len(_CHECKED) < 4096 and math.isfinite(factor) and \
             math.isclose(ureg.Quantity(3.0, units).to(si or "dimensionless").magnitude,
                          3 * factor, rel_tol=1e-12):
-        _CHECKED[(unit, dimension)] = (units, factor)
+        _CHECKED[(unit, dimension, weight)] = (units, factor)
         value = number * factor  # the same arithmetic as every later, cached, parse
     return float(value), quantity
 
 
 def check_unit(text: Any, dimension: str, key: str) -> str:
-    """Check a unit an answer is asked in (``find: {precession: rpm}``)."""
+    """Check a unit an answer is asked in (``find: {precession: rpm}``).
+
+    Returns the unit as gyro prints it (``N*m`` -> ``N m``, ``lb ft`` -> ``lbf ft``),
+    which ``convert`` reads back to the same units.
+    """
     if not isinstance(text, str) or not text.strip():
         raise InputError(f"expected a unit for this answer such as '{si_text(dimension)}', "
                          f"got {text!r}", key=key)
     parse("1 " + text, dimension, key)
-    return text.strip()
+    return display(text.strip(), dimension, key)
 
 
 def convert(si_value: float, dimension: str, unit: str) -> float:
@@ -183,7 +478,7 @@ def convert(si_value: float, dimension: str, unit: str) -> float:
     if factor is None:
         ureg = registry()
         si = si_unit(dimension) or "dimensionless"
-        target = _units(unit, "", unit)
+        target = _reading(unit, dimension, "", unit)[0] if unit else ureg.dimensionless
         factor = float(ureg.Quantity(1.0, si).to(target).magnitude)
         if not math.isclose(ureg.Quantity(3.0, si).to(target).magnitude, 3 * factor,
                             rel_tol=1e-12):  # an offset unit: let pint do it every time

@@ -123,8 +123,11 @@ def counterweight_offset(moment: float, counterweight: float, g: float) -> float
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
-    body.require("J")
     theta = given["theta"]
+    if 0 <= theta <= math.pi and abs(math.sin(theta)) < 1e-12:
+        _along_the_axis(given, find, theta, work)
+        return
+    body.require("J")
     if not 0 < theta < math.pi:
         raise InputError(f"theta, the angle between the precession and spin axes, must lie "
                          f"strictly between 0 and 180 deg (got {num(math.degrees(theta))} deg): "
@@ -175,6 +178,36 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _bearings(given, M, precession, theta, work)
     if "counterweight_position" in find or "counterweight" in given:
         _counterweight(given, M, theta, work)
+
+
+def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work) -> None:
+    """theta = 0 or 180 deg: the spin axis along the precession axis; the moment is 0.
+
+    omega = (psidot + Omega cos(theta)) k lies along K, so H = J omega_z k is
+    fixed in space and dH/dt = Omega K x H = 0 (sin(theta) = 0 in Eq. 11.29).
+    """
+    deg = round(math.degrees(theta))
+    work.section("Spin axis along the precession axis")
+    work.text(f"theta = {deg} deg: the spin axis lies along the precession axis, so the "
+              "precession only adds to (or takes from) the spin, omega_z = psidot + Omega "
+              "cos(theta); H = J omega_z k stays along K and does not turn: dH/dt = Omega K x H "
+              "= 0, no gyroscopic moment (sin(theta) = 0 in Eq. 11.29)")
+    for key in ("moment", "bearing_spacing", "counterweight"):
+        if key in given:
+            raise InputError(f"at theta = {deg} deg there is no gyroscopic moment: {key} has "
+                             "nothing to balance (the spin axis lies along the precession axis)",
+                             key=f"given.{key}")
+    wanted = find & {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust",
+                     "counterweight_position"}
+    if wanted:
+        raise InputError(f"at theta = {deg} deg the gyroscopic moment is 0; {sorted(wanted)[0]} "
+                         "is not computed for a spin axis along the precession axis",
+                         key=f"find.{sorted(wanted)[0]}")
+    precession = _precession(given, 0.0, 0.0, given.get("spin", 0.0) or 0.0, theta, work)
+    work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))", f"sin({deg} deg) = 0",
+              0.0, "N*m")
+    work.answer("moment", "M", [0.0], "moment")
+    work.answer("precession", "Omega", [precession], "rate")
 
 
 def _precession(given: Given, J: float, I: float, spin: float, theta: float,

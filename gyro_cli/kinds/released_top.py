@@ -70,6 +70,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _precession(nut, work)
     _fast_top(top, start, nut, omega_z, released, work)
     _answers(nut, work)
+    if find & {"spin_at_limits", "reversal_theta"}:
+        _spin_and_reversal(nut, omega_z, find, work)
     pole = "0" if nut.theta_min == 0 else "180" if nut.theta_max == math.pi else ""
     if pole:
         work.warn(f"the axis passes through the vertical (theta = {pole} deg) once a period: "
@@ -290,6 +292,45 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
     work.answer("u_roots", "u", list(nut.u_roots), "dimensionless")
 
 
+def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) -> None:
+    """psidot at the nutation limits and the theta where phidot passes through zero.
+
+    omega_z = psidot + phidot cos(theta) is constant (Eq. 11.14, P2 = J omega_z),
+    so psidot = omega_z - phidot u at u = cos(theta); phidot = (beta - gamma u) /
+    (1 - u^2) (Eq. 11.16) vanishes at u = beta / gamma.
+    """
+    u1, u2, _ = nut.u_roots
+    work.section("Spin at the nutation limits and where the precession reverses")
+    work.text("omega_z = psidot + phidot cos(theta) is constant (Eq. 11.14): psidot = "
+              "omega_z - phidot u")
+    if "spin_at_limits" in find:
+        spins = []
+        for u, rate, where in ((u1, nut.limit_precession[0], "theta_max"),
+                               (u2, nut.limit_precession[1], "theta_min")):
+            if not math.isfinite(rate):
+                raise InputError(f"at {where} the axis is on the vertical, where phidot and "
+                                 "psidot are undefined (only omega_z is)",
+                                 key="find.spin_at_limits")
+            spins.append(work.step(f"psidot at {where}", "omega_z - phidot u",
+                                   f"{qty(omega_z, 'rad/s')} - ({qty(rate, 'rad/s')}) "
+                                   f"({num(u)})", omega_z - rate * u, "rad/s"))
+        work.answer("spin_at_limits", "psidot", spins, "rate", ["at theta_max", "at theta_min"])
+    if "reversal_theta" in find:
+        u_star = nut.beta / nut.gamma if nut.gamma else math.inf
+        tol = 1e-9 * max(1.0, abs(u_star)) if math.isfinite(u_star) else 0.0
+        if not (u1 - tol <= u_star <= u2 + tol):
+            raise InputError(f"the precession does not reverse in this motion ({nut.motion}): "
+                             "phidot = (beta - gamma u) / (1 - u^2) keeps one sign between the "
+                             "nutation limits (it changes sign only in loops, and touches 0 at "
+                             "the cusps)", key="find.reversal_theta")
+        u_star = min(max(u_star, -1.0), 1.0)
+        theta = work.step("theta_rev", "acos(beta / gamma)", f"acos({qty(nut.beta, 'rad/s')} / "
+                          f"{qty(nut.gamma, 'rad/s')})", math.acos(u_star) / DEG, "deg",
+                          note="phidot = 0 there" + (" (a cusp: phidot touches 0 and keeps its "
+                                                      "sign)" if nut.motion == "cusps" else ""))
+        work.answer("reversal_theta", "theta_rev", [theta * DEG], "angle")
+
+
 def _answers(nut, work: Work) -> None:
     work.answer("theta_min", "theta_min", [nut.theta_min], "angle")
     work.answer("theta_max", "theta_max", [nut.theta_max], "angle")
@@ -325,6 +366,10 @@ KIND = Kind(
         AnswerSpec("min_precession", "rate", "phidot_min", "precession rate at the other "
                    "nutation limit, signed"),
         AnswerSpec("motion", None, "motion", "cusps, loops, waves, steady or sleeping"),
+        AnswerSpec("spin_at_limits", "rate", "psidot", "[at theta_max, at theta_min]: spin "
+                   "relative to the precessing frame at the nutation limits"),
+        AnswerSpec("reversal_theta", "angle", "theta_rev", "theta where the precession passes "
+                   "through zero (loops; a cusp touches zero at theta_min)"),
         AnswerSpec("u_roots", "dimensionless", "u", "the three roots of f(u), Eq. 11.19, "
                    "ascending"),
     ),

@@ -191,7 +191,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     if "precession" in given:
         raise InputError("for `arrangement: free` give two of path_radius, speed and tilt",
                          key="given.precession")
-    m, g, J, I, r = body.m, body.g, body.J, body.I_cg, body.radius
+    # J, I_G and m are all proportional to the mass where it is not given: the rates cancel it
+    m, g, J, I, r = body.mass_for_rates, body.g, body.J, body.I_cg, body.radius
     known = [k for k in ("path_radius", "speed", "tilt") if k in given]
     if len(known) != 2:
         raise InputError(f"give exactly two of path_radius, speed and tilt (got "
@@ -257,7 +258,11 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("speed", "v", [s.speed for s in states], "speed")
     work.answer("precession", "Omega", [s.precession for s in states], "rate")
     work.answer("spin", "psidot", [s.spin for s in states], "rate")
-    work.answer("normal_force", "N", [m * g for _ in states], "force")
+    if body.per_kg and "normal_force" in find:
+        raise InputError("the normal force depends on the mass, which the rates do not need: "
+                         "give mass or weight", key="given.mass")
+    if not body.per_kg:
+        work.answer("normal_force", "N", [m * g for _ in states], "force")
     try:
         _stability(m, g, r, J, I, states, work)
     except ArithmeticError:

@@ -23,6 +23,7 @@ from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
 from ..core.work import Work, num, qty
+from ..physics import steady
 
 RPM = 2 * math.pi / 60
 FASTEST_REAL_ROTOR = 1e5 * RPM  # beyond this no real top or gyroscope spins
@@ -66,10 +67,15 @@ def min_axial_rate(I: float, J: float, theta: float, D: float) -> float:
 
 # ---- the worked answer ------------------------------------------------------
 
+# Answers that follow from the precession rate(s) once known.
+MOTION_ANSWERS = {"pivot_force", "precession_period", "cg_speed", "cg_acceleration"}
+NEEDS_EXACT = {"precession_slow", "precession_fast", "spin_slow", "spin_fast", "min_spin"}
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
-    body.require("J", "I_pivot")
-    I, J = body.I_pivot, body.J
+    body.require("J")
+    J = body.J
     theta = given["theta"]
     if abs(math.sin(theta)) < 1e-9:
         raise InputError("at theta = 0 or 180 deg the axis is vertical: the line of nodes, and "
@@ -83,21 +89,50 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if len(rates) == 3:
         raise InputError("give at most two of spin, axial_rate and precession",
                          key="given.axial_rate")
+    cos = cos_theta(theta)
+    approximate = False
+    if body.I_pivot is not None:
+        I = body.I_pivot
+    elif cos == 0:
+        I = 0.0  # multiplies cos(theta) = 0 in every formula below
+    elif len(rates) == 1 and rates[0] in ("spin", "axial_rate") and not find & NEEDS_EXACT:
+        I, approximate = 0.0, True
+    else:
+        wanted = sorted(find & NEEDS_EXACT) or [k for k in rates if k != "spin"] or ["precession"]
+        raise InputError(f"{wanted[0]} at theta = {num(math.degrees(theta))} deg needs the "
+                         "transverse inertia about the fixed point: give I_pivot, k_pivot, "
+                         "I_cg or k_cg (with cg_distance) or a shape (only at theta = 90 deg "
+                         "does it drop out)", key="given.I_pivot")
     work.section("Conventions (errata)")
     work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the centre "
               "of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
               "precessing frame, omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about "
               "the fixed point")
+    if body.I_pivot is None and cos == 0:
+        work.text("theta = 90 deg: cos(theta) = 0, so the transverse inertia I drops out of "
+                  "Eq. 11.13 and is not needed")
     D, driver = _driver(given, theta, work)
     if not rates:
         if find - {"min_spin"}:
             raise InputError("give spin, axial_rate or precession", key="given.spin")
+    elif approximate:
+        _approximate_only(given, rates[0], J, theta, D, driver, work)
     elif len(rates) == 2 or rates == ["precession"]:
         _from_precession_or_pair(given, rates, I, J, theta, D, driver, work)
     else:
         _precession_roots(given, rates[0], I, J, theta, D, driver, work)
+        if "precession_approx" in find:
+            _approximation(given, rates[0], J, theta, D, driver, work)
     if "min_spin" in find:
         _min_spin(I, J, theta, D, driver, work)
+    _by_root(find, work)
+    if find & MOTION_ANSWERS:
+        _motion(body, theta, find, work)
+    if body.per_kg:
+        if "moment" in find:
+            raise InputError("the moment depends on the mass, which the rates do not need: give "
+                             "mass or weight", key="given.mass")
+        work.answers.pop("moment", None)
     if find & {"stability", "growth_rate"}:
         _stability(given, len(rates), I, J, theta, work)
     for name in ("spin", "precession", "axial_rate"):
@@ -124,7 +159,7 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
     if body.l == 0:
         work.text("l = 0 and no applied moment: a torque-free body (D = 0)")
         return 0.0, "m g l"
-    work.step("M", "m g l sin(theta)", f"{qty(body.m, 'kg')} ({qty(body.g, 'm/s^2')}) "
+    work.step("M", "m g l sin(theta)", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
               f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
               body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
     return body.mgl, "m g l"
@@ -155,6 +190,21 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         roots = precession_from_axial_rate(I, J, theta, axial, D)
         least, formula = min_axial_rate(I, J, theta, D), f"2 sqrt(I {driver} cos(theta)) / J"
         symbol, spin = "omega_z", None
+    if D == 0 and 0.0 in roots:
+        roots = [r for r in roots if r != 0.0]
+        work.text("no moment: phidot = 0 (the body spinning about a fixed axis) also solves the "
+                  "equation; it is no precession and is left out")
+        if not roots:
+            raise InputError(f"with no moment there is no steady precession at theta = "
+                             f"{num(math.degrees(theta))} deg other than phidot = 0 (a "
+                             "torque-free body precesses only where (J - I) cos(theta) is not "
+                             "0)", key="given.moment" if "moment" in given
+                             else "given.cg_distance")
+    if not roots and given[rate] == 0:
+        raise InputError(f"a {rate} of 0 is too low for steady precession at theta = "
+                         f"{num(math.degrees(theta))} deg: without spin the moment "
+                         f"{driver} sin(theta) has no angular momentum to turn; give a spin",
+                         key=f"given.{rate}")
     if not roots:
         raise InputError(
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
@@ -168,8 +218,15 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         work.text("one root: the phidot^2 term vanishes" + (" (theta = 90 deg)"
                                                              if abs(cos) < 1e-12 else " (I = J)"))
     labels = _labels(roots)
-    for root, label in zip(roots, labels):
-        work.step(f"phidot ({label})" if label else "phidot", value=root, unit="rad/s")
+    if abs(cos) == 0 and len(roots) == 1 and D:
+        omega = given["spin"] if rate == "spin" else given["axial_rate"]
+        M = D * math.sin(theta)
+        roots = [work.step("phidot", "M / (J psidot)", f"{qty(M, 'N*m')} / ({qty(J, 'kg*m^2')}"
+                           f" {qty(omega, 'rad/s')})", M / (J * omega), "rad/s",
+                           ref="Eq. 11.13 at theta = 90 deg, exact")]
+    else:
+        for root, label in zip(roots, labels):
+            work.step(f"phidot ({label})" if label else "phidot", value=root, unit="rad/s")
     work.answer("precession", "phidot", roots, "rate", labels)
     spins = [spin] * len(roots) if spin is not None else \
         [given["axial_rate"] - p * cos for p in roots]
@@ -295,6 +352,143 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
     work.answer("growth_rate", "s", rates, "rate", answer.labels)
+def _approximation(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
+                   work: Work) -> float:
+    """The gyroscopic approximation beside the exact roots, and how far apart they are."""
+    omega = given[rate]
+    symbol = "psidot" if rate == "spin" else "omega_z"
+    work.section("Gyroscopic approximation (the I phidot cos(theta) term dropped)")
+    if omega == 0:
+        raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
+                         key=f"given.{rate}")
+    value = work.step("phidot_approx", f"{driver} / (J {symbol})",
+                      f"{qty(D, 'N*m')} / ({qty(J, 'kg*m^2')} {qty(omega, 'rad/s')})",
+                      steady.precession_approx(D, J, omega), "rad/s")
+    exact = work.answers.get("precession")
+    if exact and exact.si_values and exact.labels != ["approximation"]:
+        slow = min(exact.si_values, key=abs)
+        if slow:
+            apart = abs(value - slow) / abs(slow)
+            work.text("at theta = 90 deg the approximation is exact: it equals the root "
+                      f"{qty(slow, 'rad/s')}" if apart < 1e-12 else
+                      f"the approximation is {apart * 100:.3g}% from the slow root "
+                      f"{qty(slow, 'rad/s')}")
+    work.answer("precession_approx", "phidot_approx", [value], "rate", ["approximation"])
+    return value
+
+
+def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
+                      work: Work) -> None:
+    """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
+    value = _approximation(given, rate, J, theta, D, driver, work)
+    work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
+              "`precession` is the gyroscopic approximation m g l / (J omega), not an exact "
+              "root of Eq. 11.13; the exact roots need I")
+    cos = cos_theta(theta)
+    spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
+    work.answer("precession", "phidot", [value], "rate", ["approximation"])
+    work.answer("spin", "psidot", [spin], "rate", ["approximation"])
+    work.answer("axial_rate", "omega_z", [spin + value * cos], "rate", ["approximation"])
+    work.answer("moment", "M", [D * math.sin(theta)], "moment")
+
+
+def _by_root(find: frozenset[str], work: Work) -> None:
+    """precession_slow/_fast and spin_slow/_fast: one root named, for keys that quote one."""
+    for name in ("precession", "spin"):
+        answer = work.answers.get(name)
+        for which in ("slow", "fast"):
+            key = f"{name}_{which}"
+            if answer is None or key not in find:
+                continue
+            if which in answer.labels:
+                value = answer.si_values[answer.labels.index(which)]
+            elif which == "slow" and len(answer.si_values) == 1 and not answer.labels:
+                value = answer.si_values[0]  # one root (theta = 90 deg, I = J, torque-free)
+            else:
+                raise InputError(f"there is no {which} root here (one steady precession "
+                                 f"only{', and it is the approximation' if answer.labels == ['approximation'] else ''}); "
+                                 f"ask for {name}", key=f"find.{key}")
+            work.answer(key, f"{answer.symbol}_{which}", [value], "rate")
+
+
+def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
+    """Period, centre-of-mass speed and acceleration and the pivot force, root by root."""
+    answer = work.answers.get("precession")
+    if answer is None:
+        raise InputError("these answers need the precession: give spin, axial_rate or "
+                         "precession", key="given.spin")
+    rates, labels = answer.si_values, answer.labels or [""] * len(answer.si_values)
+    l = body.l
+    work.section("Motion of the centre of mass and the force at the pivot")
+    work.text("the centre of mass runs round a horizontal circle of radius l sin(theta) at "
+              "the rate phidot (theta constant)")
+    tags = [f" ({label})" if label else "" for label in labels]
+    if "precession_period" in find:
+        if any(p == 0 for p in rates):
+            raise InputError("the precession rate is 0: it never completes a turn",
+                             key="find.precession_period")
+        for p, tag in zip(rates, tags):
+            work.step(f"T{tag}", "2 pi / |phidot|", f"2 pi / {qty(abs(p), 'rad/s')}",
+                      steady.precession_period(p), "s")
+        work.answer("precession_period", "T", [steady.precession_period(p) for p in rates],
+                    "time", answer.labels)
+    if "cg_speed" in find:
+        for p, tag in zip(rates, tags):
+            work.step(f"v_G{tag}", "l sin(theta) |phidot|", f"{qty(l, 'm')} "
+                      f"({num(math.sin(theta))}) {qty(abs(p), 'rad/s')}",
+                      steady.cg_speed(l, theta, p), "m/s")
+        work.answer("cg_speed", "v_G", [steady.cg_speed(l, theta, p) for p in rates], "speed",
+                    answer.labels)
+    if "cg_acceleration" in find or "pivot_force" in find:
+        for p, tag in zip(rates, tags):
+            work.step(f"a_G{tag}", "l sin(theta) phidot^2", f"{qty(l, 'm')} "
+                      f"({num(math.sin(theta))}) ({qty(p, 'rad/s')})^2",
+                      steady.cg_acceleration(l, theta, p), "m/s^2",
+                      note="toward the precession axis")
+        work.answer("cg_acceleration", "a_G", [steady.cg_acceleration(l, theta, p)
+                                                for p in rates], "acceleration", answer.labels)
+    if "pivot_force" in find:
+        m, g = body.m, body.g
+        work.text("Newton's second law for the centre of mass, F + m g = m a_G: the support "
+                  "carries the weight and supplies the centripetal force")
+        values, names = [], []
+        for i, (p, tag) in enumerate(zip(rates, tags)):
+            up, toward, size = steady.pivot_force(m, g, l, theta, p)
+            if i == 0:
+                work.step("F_vertical", "m g", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')})", up, "N",
+                          note="upward")
+                values.append(up)
+                names.append("vertical")
+            work.step(f"F_horizontal{tag}", "m l sin(theta) phidot^2", f"{qty(m, 'kg')} "
+                      f"({qty(steady.cg_acceleration(l, theta, p), 'm/s^2')})", toward, "N",
+                      note="toward the precession axis")
+            work.step(f"|F|{tag}", "sqrt(F_vertical^2 + F_horizontal^2)", value=size, unit="N")
+            values += [toward, size]
+            names += [f"horizontal{tag}", f"magnitude{tag}"]
+        work.answer("pivot_force", "F", values, "force", names)
+        if body.I_pivot is not None and "moment" not in given_keys(work):
+            I_G = body.I_pivot - m * l * l
+            for p in rates:
+                up, toward, _ = steady.pivot_force(m, g, l, theta, p)
+                spin = _spin_for(work, p)
+                axial = spin + p * cos_theta(theta)
+                rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
+                work.check(f"phidot = {qty(p, 'rad/s')}: moment of the pivot force about G, "
+                           f"l (F_vertical sin(theta) + F_horizontal cos(theta)) = "
+                           f"{qty(l * (up * math.sin(theta) + toward * cos_theta(theta)), 'N m')}"
+                           f"; dH_G/dt = phidot sin(theta) (J omega_z - I_G phidot cos(theta)) = "
+                           f"{qty(rate, 'N m')}")
+
+
+def given_keys(work: Work) -> set[str]:
+    return {line.key for line in work.given}
+
+
+def _spin_for(work: Work, precession: float) -> float:
+    spin = work.answers["spin"]
+    values = work.answers["precession"].si_values
+    return spin.si_values[values.index(precession)] if len(spin.si_values) == len(values) \
+        else spin.si_values[0]
 
 
 def _labels(roots: list[float]) -> list[str]:
@@ -326,6 +520,21 @@ KIND = Kind(
                    "perturbed, gravity alone)"),
         AnswerSpec("growth_rate", "rate", "s", "growth rate of the unstable mode, 1/s (0 when "
                    "stable)"),
+        AnswerSpec("precession_slow", "rate", "phidot_slow", "the slow root alone (the one "
+                   "books quote)"),
+        AnswerSpec("precession_fast", "rate", "phidot_fast", "the fast root alone"),
+        AnswerSpec("spin_slow", "rate", "psidot_slow", "spin at the slow root (given axial_rate)"),
+        AnswerSpec("spin_fast", "rate", "psidot_fast", "spin at the fast root (given axial_rate)"),
+        AnswerSpec("precession_approx", "rate", "phidot_approx", "gyroscopic approximation m g l "
+                   "/ (J omega), beside the exact roots"),
+        AnswerSpec("precession_period", "time", "T", "time for one turn of the precession, "
+                   "2 pi / |phidot|"),
+        AnswerSpec("cg_speed", "speed", "v_G", "speed of the centre of mass, l sin(theta) "
+                   "|phidot|"),
+        AnswerSpec("cg_acceleration", "acceleration", "a_G", "centripetal acceleration of the "
+                   "centre of mass, l sin(theta) phidot^2"),
+        AnswerSpec("pivot_force", "force", "F", "force of the support on the body: [vertical "
+                   "(up), horizontal (toward the axis), magnitude] per root"),
     ),
     solve=solve,
     extra={"example": {

@@ -155,9 +155,6 @@ def _results(J: float, I: float, s: FreeMotion, work: Work) -> None:
     else:
         work.text("J > I (oblate): beta > theta, psidot is against phidot; the body cone rolls "
                   "with the space cone inside it: retrograde precession.")
-    if J > 2 * I:
-        work.warn(f"J exceeds 2 I ({qty(J, 'kg*m^2')} > 2 x {qty(I, 'kg*m^2')}): allowed only "
-                  "within the 1% slack for rounded data")
     work.check(f"omega_z = psidot + phidot cos(theta): {num(wz)} = {num(s.spin)} + "
                f"{num(s.precession)} ({num(math.cos(theta))}) = "
                f"{num(s.spin + s.precession * math.cos(theta))} rad/s (Eq. 11.8)")

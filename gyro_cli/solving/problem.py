@@ -48,7 +48,16 @@ class Problem:
 
 
 def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
-    close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.6)
+    """A "did you mean" for a misspelt key or answer.
+
+    A compound name is matched first within its own family (``turn_diameter``
+    -> ``turn_radius``, the same kind of thing, not the rotor's ``diameter``).
+    """
+    options = list(options)
+    head = word.split("_")[0]
+    family = [o for o in options if "_" in o and o.split("_")[0] == head] if "_" in word else []
+    close = difflib.get_close_matches(word, family, n=1, cutoff=0.0) if family else \
+        difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     return f"; did you mean {close[0]!r}?" if close else ""
 
 

@@ -67,6 +67,9 @@ def _solve(problem: Problem) -> Result:
                          f"double precision ({type(err).__name__}: {err}); check the magnitudes "
                          "and units", key="given") from None
     solution = work.solution()
+    body = problem.given.body
+    if body is not None and body.per_kg:  # worked per kilogram: no answer that scales with m
+        _drop_mass_answers(solution, problem.find)
     answers = {}
     for name, unit in problem.find.items():
         answer = solution.answers.get(name)
@@ -85,6 +88,21 @@ def _solve(problem: Problem) -> Result:
         answers[name] = Reported(name, answer.symbol, values, unit, list(answer.si_values),
                                  answer.si_unit, answer.labels)
     return Result(problem, solution, answers)
+
+
+# Answers proportional to the mass (a per-kilogram solution cannot give them).
+MASS_DIMENSIONS = {"mass", "force", "moment", "inertia", "angular_momentum", "energy",
+                   "mass_length"}
+
+
+def _drop_mass_answers(solution, find) -> None:
+    """Refuse (if asked) and drop answers that scale with a mass no key gave."""
+    for name, answer in list(solution.answers.items()):
+        if answer.dimension in MASS_DIMENSIONS:
+            if name in find:
+                raise InputError(f"{name} depends on the mass, which the rates do not need: "
+                                 "give mass or weight", key="given.mass")
+            del solution.answers[name]
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
