@@ -2,8 +2,13 @@
 
 from __future__ import annotations
 
+import os
+import tempfile
 import textwrap
 from pathlib import Path
+
+# The unit cache of the test run is its own, never the user's (~/.cache/gyro).
+os.environ["GYRO_CACHE_DIR"] = tempfile.mkdtemp(prefix="gyro-test-cache-")
 
 import pytest
 from click.testing import CliRunner

@@ -392,7 +392,7 @@ def test_unit_registry_is_created_once_for_a_directory(tmp_path, monkeypatch, pa
         put(passing, f"more/g{i}.yaml", gyro_file(f"precession: {GYRO_PRECESSION:.6g} rad/s\n"))
     result = check.run([str(passing)])
     assert result.exit_code == 0 and result.counts()["checked"] == 7
-    assert len(made) == 1
+    assert len(made) <= 1  # none at all when every unit was met before (unit cache)
 
 
 def test_junit_option_writes_the_file(run, passing, tmp_path):
@@ -445,7 +445,9 @@ def test_unit_factor_cache_keeps_every_check():
     first, _ = units.parse("1800 rpm", "rate", "k")
     again, quantity = units.parse("900 rpm", "rate", "k")
     assert first == pytest.approx(1800 * 2 * math.pi / 60, rel=1e-15)
-    assert again == pytest.approx(quantity.to("rad/s").magnitude, rel=1e-15)
+    pint_value = units.registry().Quantity(900, "rpm").to("rad/s").magnitude
+    assert again == pytest.approx(pint_value, rel=1e-15)
+    assert quantity.magnitude == 900 and not quantity.us_customary
     units.parse("3 in", "length", "k")
     with pytest.raises(units.InputError, match="an angular rate"):
         units.parse("3 in", "rate", "k")  # cached for length, still refused as a rate

@@ -11,8 +11,10 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import dataclass
 from typing import Any
 
+from . import unit_cache
 from .errors import InputError
 
 # Name -> (pint dimensionality, SI unit used inside gyro, words for messages).
@@ -82,8 +84,8 @@ COMMON_UNITS = ("rad", "deg", "degree", "radian", "s", "sec", "second", "min", "
 
 
 _registry: Any = None
-# (unit text, dimension) -> (pint units, SI per unit), for units already checked.
-_CHECKED: dict[tuple[str, str, bool], tuple[Any, float]] = {}
+# (unit text, dimension, weight) -> (SI per unit, printed unit, US customary), checked.
+_CHECKED: dict[tuple[str, str, bool], tuple[float, str, bool]] = {}
 # (dimension, unit) -> unit per SI, for answers converted before.
 _TO: dict[tuple[str, str], float] = {}
 
@@ -411,30 +413,53 @@ def display(unit: str, dimension: str, key: str = "") -> str:
         return unit
     shown = _SHOWN.get((unit, dimension))
     if shown is None:
-        shown = _reading(unit, dimension, key, unit)[1]
+        shown = unit_cache.get("shown", unit, dimension)
+        if shown is None:
+            shown = _reading(unit, dimension, key, unit)[1]
+            unit_cache.put("shown", shown, unit, dimension)
         if len(_SHOWN) < 4096:
             _SHOWN[(unit, dimension)] = shown
     return shown
 
 
-def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple[float, Any]:
-    """Parse a quantity string into (SI float, pint quantity).
+@dataclass(frozen=True)
+class Parsed:
+    """A quantity as written: its number, its unit as gyro prints it, and whether
+    that unit is US customary (for the default g)."""
+
+    magnitude: float
+    unit_text: str
+    us_customary: bool
+
+
+def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple[float, Parsed]:
+    """Parse a quantity string into (SI float, Parsed).
 
     ``dimension`` names an entry of DIMENSIONS. ``weight=True`` reads lb and oz
     as pound-force and ounce-force (as does any force or moment where the mass
-    reading would have the wrong dimension).
+    reading would have the wrong dimension). A unit met before, in this process
+    or (through unit_cache) an earlier one, is not asked of pint again.
     """
     number, unit = _split(text, key)
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
-    ureg = registry()
     checked = _CHECKED.get((unit, dimension, weight))
+    if checked is None:
+        stored = unit_cache.get("parse", unit, dimension, int(weight))
+        if stored is not None:
+            checked = _CHECKED[(unit, dimension, weight)] = tuple(stored)
     if checked is not None:  # this unit was parsed and checked for this dimension before
-        units, factor = checked
+        factor, shown, us = checked
         value = number * factor
         if not math.isfinite(value):
             raise InputError(f"{text!r} is out of range", key=key)
-        return value, ureg.Quantity(number, units)
+        return value, Parsed(number, shown, us)
+    return _parse_with_pint(text, number, unit, dimension, key, weight)
+
+
+def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: str,
+                     weight: bool) -> tuple[float, Parsed]:
+    ureg = registry()
     units, _ = _reading(unit, dimension, key, text, weight)
     quantity = ureg.Quantity(number, units)
     pint_dim, si, words = DIMENSIONS[dimension]
@@ -448,15 +473,19 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     value = quantity.to(si).magnitude if si else quantity.to("dimensionless").magnitude
     if not math.isfinite(value):
         raise InputError(f"{text!r} is out of range", key=key)
+    parsed = Parsed(number, f"{units:~}".replace(" ** ", "^").replace("**", "^"),
+                    bool(set(units._units) & US_MASS_OR_FORCE))
     # Cache the unit's SI factor where the unit is a plain multiple (no offset), so a
     # directory of problems asks pint once per unit, not once per value.
     factor = float(ureg.Quantity(1.0, units).to(si or "dimensionless").magnitude)
-    if len(_CHECKED) < 4096 and math.isfinite(factor) and \
+    if len(_CHECKED) < 4096 and math.isfinite(factor) and factor != 0 and \
             math.isclose(ureg.Quantity(3.0, units).to(si or "dimensionless").magnitude,
                          3 * factor, rel_tol=1e-12):
-        _CHECKED[(unit, dimension, weight)] = (units, factor)
+        _CHECKED[(unit, dimension, weight)] = (factor, parsed.unit_text, parsed.us_customary)
+        unit_cache.put("parse", [factor, parsed.unit_text, parsed.us_customary],
+                       unit, dimension, int(weight))
         value = number * factor  # the same arithmetic as every later, cached, parse
-    return float(value), quantity
+    return float(value), parsed
 
 
 def check_unit(text: Any, dimension: str, key: str) -> str:
@@ -474,7 +503,7 @@ def check_unit(text: Any, dimension: str, key: str) -> str:
 
 def convert(si_value: float, dimension: str, unit: str) -> float:
     """An SI value expressed in ``unit`` (already checked with check_unit)."""
-    factor = _TO.get((dimension, unit))
+    factor = _TO.get((dimension, unit)) or unit_cache.get("to", dimension, unit)
     if factor is None:
         ureg = registry()
         si = si_unit(dimension) or "dimensionless"
@@ -483,16 +512,17 @@ def convert(si_value: float, dimension: str, unit: str) -> float:
         if not math.isclose(ureg.Quantity(3.0, si).to(target).magnitude, 3 * factor,
                             rel_tol=1e-12):  # an offset unit: let pint do it every time
             return ureg.Quantity(si_value, si).to(target).magnitude
-        if len(_TO) < 4096:
-            _TO[(dimension, unit)] = factor
+        unit_cache.put("to", factor, dimension, unit)
+    if len(_TO) < 4096:
+        _TO[(dimension, unit)] = factor
     return si_value * factor
 
 
-def is_us_customary(quantity: Any) -> bool:
+def is_us_customary(quantity: Parsed) -> bool:
     """True where a mass or weight was written in US customary units."""
-    return bool(set(quantity.units._units) & US_MASS_OR_FORCE)
+    return quantity.us_customary
 
 
-def unit_text(quantity: Any) -> str:
-    """A parsed quantity's unit, abbreviated (``ozf``, ``ft / s ** 2``)."""
-    return f"{quantity.units:~}".replace(" ** ", "^").replace("**", "^")
+def unit_text(quantity: Parsed) -> str:
+    """A parsed quantity's unit, abbreviated (``ozf``, ``ft/s^2``)."""
+    return quantity.unit_text

@@ -22,7 +22,6 @@ import math
 
 from ..core.errors import InputError
 from ..core.given import Given
-from ..physics import bicycle as bike
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import GivenLine, Work, num
 
@@ -65,6 +64,8 @@ Q = "(phi, delta)"
 
 def parameters(given: Given, work: Work) -> dict[str, float]:
     """The paper's parameters in SI: from `given`, the rest from `preset: benchmark`."""
+    from ..physics import bicycle as bike  # numpy: loaded only when a bicycle is solved
+
     preset = given.word("preset")
     p: dict[str, float] = {"g": given["g"]}
     for key, (dimension, symbol, _) in KEYS.items():
@@ -169,6 +170,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _solve(given: Given, find: frozenset[str], work: Work) -> None:
+    from ..physics import bicycle as bike
+
     p = parameters(given, work)
     g = p["g"]
     gyroscopic = given.word("gyroscopic", "true") == "true"
