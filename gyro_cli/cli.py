@@ -48,13 +48,13 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     FILES may also be directories (every *.yaml and *.yml in them, as for
     `gyro check`) or quoted globs.
     """
-    from .checking.check import collect
     from .render import report
+    from .solving.paths import problem_files
     from .solving.solve import solve_file
 
-    files, missing = collect(files)
-    for entry in missing:
-        click.echo(f"gyro: {entry.error}", err=True)
+    files, missing = problem_files(files)
+    for _, message in missing:
+        click.echo(f"gyro: {message}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
     bad = len(missing)

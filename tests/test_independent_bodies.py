@@ -461,10 +461,23 @@ def test_torque_free_refusals_prolate(run, write, given, key):
 
 @pytest.mark.parametrize("body", [
     "      J: 5 kg*m^2\n      I_cg: 5 kg*m^2",        # sphere: nothing wobbles
-    "      J: 11 kg*m^2\n      I_cg: 5 kg*m^2",       # J > 2 I: no rigid body
 ])
 def test_torque_free_refused_bodies(run, write, body):
     assert refused(run, write, tf_yaml(body, "      omega: 3 rad/s\n      omega_angle: 20 deg"), "J")
+
+
+def test_torque_free_body_no_rigid_body_could_have_is_solved_with_a_warning(run, write):
+    # J > 2 I: textbook data no rigid body could have; Euler's equations do not care,
+    # so the answer is worked as given (H = sqrt((J w cos b)^2 + (I w sin b)^2), phidot = H / I)
+    text = tf_yaml("      J: 11 kg*m^2\n      I_cg: 5 kg*m^2",
+                   "      omega: 3 rad/s\n      omega_angle: 20 deg")
+    result = run("solve", "--format", "json", write(text))
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    assert any("no rigid body" in w for w in data["warnings"])
+    b = math.radians(20)
+    H = math.hypot(11 * 3 * math.cos(b), 5 * 3 * math.sin(b))
+    assert data["answers"]["precession"]["si_values"][0] == pytest.approx(H / 5, rel=1e-9)
 
 
 def test_torque_free_oblate_positive_spin_refused(run, write):

@@ -19,9 +19,7 @@ Rules (see docs/check.md):
 from __future__ import annotations
 
 import dataclasses
-import glob
 import math
-import os
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -31,7 +29,6 @@ from ..core.errors import InputError
 from ..core.work import num
 
 DEFAULT_TOLERANCE = "1%"
-YAML_SUFFIXES = (".yaml", ".yml")
 _SIG = re.compile(r"\s*(\d{1,2})\s*(?:sig|sf|s\.f\.|sig\s*figs?|significant\s+figures?)\s*",
                   re.I)
 _PERCENT = re.compile(r"\s*((?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)\s*"
@@ -343,41 +340,12 @@ class CheckRun:
 # ---- the runner -------------------------------------------------------------
 
 def collect(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[ProblemCheck]]:
-    """Problem files from files, directories (recursive, *.yaml and *.yml) and globs.
+    """Problem files from files, directories and globs (solving.paths), with each path
+    that names nothing as an error entry."""
+    from ..solving.paths import problem_files
 
-    Hidden directories (.git, .venv) are skipped. A path that names nothing is
-    returned as an error entry, so the others are still checked.
-    """
-    files: list[str] = []
-    errors: list[ProblemCheck] = []
-    for path in paths:
-        if os.path.isdir(path):
-            found = []
-            for root, dirs, names in os.walk(path):
-                dirs[:] = sorted(d for d in dirs if not d.startswith("."))
-                found += [os.path.join(root, n) for n in names
-                          if n.endswith(YAML_SUFFIXES) and not n.startswith(".")]
-            if not found:
-                errors.append(ProblemCheck(path, status="error",
-                                           error=f"{path}: no .yaml or .yml files in this "
-                                                 "directory"))
-            files += sorted(found)
-        elif os.path.exists(path) or not glob.has_magic(path):
-            files.append(path)  # a missing plain path is reported when it is loaded
-        else:
-            found = sorted(p for p in glob.glob(path, recursive=True) if os.path.isfile(p))
-            if not found:
-                errors.append(ProblemCheck(path, status="error",
-                                           error=f"{path}: no files match this pattern"))
-            files += found
-    seen: set[str] = set()
-    unique = []
-    for f in files:
-        key = os.path.normpath(f)
-        if key not in seen:
-            seen.add(key)
-            unique.append(f)
-    return unique, errors
+    files, missing = problem_files(paths)
+    return files, [ProblemCheck(path, status="error", error=message) for path, message in missing]
 
 
 def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:

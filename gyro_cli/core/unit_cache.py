@@ -17,7 +17,6 @@ import atexit
 import json
 import math
 import os
-import tempfile
 
 FORMAT = 1
 MAX_BYTES = 1 << 20      # a cache file larger than this is not read
@@ -122,6 +121,8 @@ def save() -> None:
     where, made = path(), stamp()
     if not _dirty or _tables is None or where is None or made is None:
         return
+    import tempfile
+
     tmp = None
     try:
         os.makedirs(os.path.dirname(where), exist_ok=True)
