@@ -32,7 +32,8 @@ from .spec import Kind
 EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
     "rate": "1800 rpm", "angle": "30 deg", "inertia": "0.01 kg m^2", "moment": "2 N m",
-    "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
+    "speed": "10 m/s", "time": "2 s", "dimensionless": "1", "stiffness": "0.5 N m/rad",
+    "damping": "0.002 N m s/rad", "angular_momentum": "0.5 kg m^2/s", "time_per_angle": "72 yr/deg",
 }
 ANSWER_UNIT = {"rate": "rpm", "angle": "deg"}
 

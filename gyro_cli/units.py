@@ -28,10 +28,18 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "speed": ("[length] / [time]", "m/s", "a speed like '10 m/s'"),
     "time": ("[time]", "s", "a time like '2 s'"),
     "dimensionless": ("", "", "a plain number"),
+    "stiffness": ("[mass] * [length] ** 2 / [time] ** 2", "N*m/rad",
+                  "a torsional stiffness like '0.5 N m/rad'"),
+    "damping": ("[mass] * [length] ** 2 / [time]", "N*m*s/rad",
+                "a rotational damping like '0.002 N m s/rad'"),
+    "angular_momentum": ("[mass] * [length] ** 2 / [time]", "kg*m^2/s",
+                         "an angular momentum like '0.5 kg m^2/s'"),
+    "time_per_angle": ("[time]", "s/rad", "a time per angle like '72 yr/deg'"),
 }
 
 # How SI units are written in worked answers.
-SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m"}
+SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "N*m/rad": "N m/rad",
+           "N*m*s/rad": "N m s/rad", "kg*m^2/s": "kg m^2/s"}
 
 ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",

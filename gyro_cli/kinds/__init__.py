@@ -17,6 +17,9 @@ REGISTRY: dict[str, str] = {
     "gyroscopic_torque": "gyro_cli.kinds.gyroscopic_torque",
     "rolling_disk": "gyro_cli.kinds.rolling_disk",
     "swinging_rotor": "gyro_cli.kinds.swinging_rotor",
+    "earth_precession": "gyro_cli.kinds.earth_precession",
+    "gyrocompass": "gyro_cli.kinds.gyrocompass",
+    "rate_gyro": "gyro_cli.kinds.rate_gyro",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".
