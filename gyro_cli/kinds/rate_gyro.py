@@ -94,12 +94,16 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
              "rigid": "rigidly restrained rotor: the bearings supply M = H Omega (Eq. 11.29)"}
     work.text(label[mode])
 
+    work.answer("angular_momentum", "H", [H], "angular_momentum")
+    if given_key == "input_angle":
+        _integrated_angle(given, H, c, I_g, work)
+        _refuse_missing(find, work)
+        return
     rate = _input_rate(given, given_key, H, k, c, work)
     work.answer("rate", "Omega", [rate], "rate")
     M = work.step("M", "H Omega", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')})", H * rate,
                   "N*m", ref="Eq. 11.29", note="moment about the output axis")
     work.answer("moment", "M", [M], "moment")
-    work.answer("angular_momentum", "H", [H], "angular_momentum")
 
     if mode == "spring":
         work.section("Spring-restrained: deflection and sensitivity")
@@ -140,29 +144,51 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
         work.answer("gain", "H/c", [gain], "dimensionless")
-        if "input_angle" in given:
-            phi = given["input_angle"]
-            theta = work.step("theta", "(H / c) phi", f"({num(gain)}) {qty(phi, 'rad')}",
-                              gain * phi, "rad", note="phi: the angle the case turned")
-            work.answer("deflection", "theta", [theta], "angle")
-            if abs(theta) > SMALL_ANGLE:
-                work.warn(f"the gimbal angle {num(theta / DEG)} deg is not small: the linear "
-                          "relation holds only for small angles")
-        if I_g is not None:
-            tau = work.step("tau", "I_g / c", f"{qty(I_g, 'kg*m^2')} / {qty(c, 'N m s/rad')}",
-                            I_g / c, "s", note="time for the gimbal rate to reach its value")
-            work.answer("time_constant", "tau", [tau], "time")
+        _time_constant(c, I_g, work)
         work.check(f"c thetadot = {qty(c * td, 'N m')} = H Omega = {qty(M, 'N m')}")
     else:
         work.check(f"M / H = {qty(M / H, 'rad/s')} = Omega")
     if "gimbal_inertia" in given and mode == "rigid":
         work.text("gimbal_inertia is not used: a rigid restraint does not move")
+    _refuse_missing(find, work)
+
+
+def _time_constant(c: float, I_g: float | None, work: Work) -> None:
+    if I_g is not None:
+        tau = work.step("tau", "I_g / c", f"{qty(I_g, 'kg*m^2')} / {qty(c, 'N m s/rad')}",
+                        I_g / c, "s", note="time for the gimbal rate to reach its value")
+        work.answer("time_constant", "tau", [tau], "time")
+
+
+def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work: Work) -> None:
+    """Rate-integrating gyro: the gimbal angle for the angle the case turned."""
+    work.section("Rate-integrating: gimbal angle for the angle turned")
+    work.text("integrating c thetadot = H Omega over time: c theta = H phi, phi = integral of "
+              "Omega dt (once the transient, time constant I_g / c, has passed)")
+    gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "")
+    phi = given["input_angle"]
+    theta = work.step("theta", "(H / c) phi", f"({num(gain)}) {qty(phi, 'rad')}", gain * phi,
+                      "rad", note="phi: the angle the case turned")
+    work.step("theta", value=theta / DEG, unit="deg")
+    work.answer("deflection", "theta", [theta], "angle")
+    work.answer("gain", "H/c", [gain], "dimensionless")
+    _time_constant(c, I_g, work)
+    if abs(theta) > SMALL_ANGLE:
+        work.warn(f"the gimbal angle {num(theta / DEG)} deg is not small: the linear relation "
+                  "holds only for small angles")
+    work.check(f"c theta = {qty(c * theta, 'N m s')} = H phi = {qty(H * phi, 'N m s')}")
+
+
+def _refuse_missing(find: frozenset[str], work: Work) -> None:
+    """Name what an asked-for answer needs when the data did not give it."""
     missing = {"natural_frequency": "stiffness and gimbal_inertia",
                "damping_ratio": "stiffness, damping and gimbal_inertia",
                "time_constant": "damping (no stiffness) and gimbal_inertia",
                "sensitivity": "stiffness", "gain": "damping (no stiffness)",
                "gimbal_rate": "damping (no stiffness)",
-               "deflection": "stiffness (or damping with input_angle)"}
+               "deflection": "stiffness (or damping with input_angle)",
+               "rate": "an input (rate, deflection, moment or gimbal_rate)",
+               "moment": "the input rate"}
     for name in sorted(find):
         if name in missing and name not in work.answers:
             raise InputError(f"{name} needs {missing[name]}", key=f"find.{name}")
@@ -181,12 +207,9 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
         M = given["moment"]
         return work.step("Omega", "M / H", f"{qty(M, 'N*m')} / {qty(H, 'kg m^2/s')}",
                          rate_from_moment(H, M), "rad/s", ref="Eq. 11.29")
-    if key == "gimbal_rate":
-        td = given["gimbal_rate"]
-        return work.step("Omega", "c thetadot / H", f"{qty(c, 'N m s/rad')} ({qty(td, 'rad/s')}) "
-                         f"/ {qty(H, 'kg m^2/s')}", c * td / H, "rad/s")
-    raise InputError("input_angle gives the gimbal angle, not a rate: give the rate too or "
-                     "instead", key="given.input_angle")
+    td = given["gimbal_rate"]
+    return work.step("Omega", "c thetadot / H", f"{qty(c, 'N m s/rad')} ({qty(td, 'rad/s')}) "
+                     f"/ {qty(H, 'kg m^2/s')}", c * td / H, "rad/s")
 
 
 KIND = Kind(
