@@ -223,14 +223,17 @@ def kinds() -> None:
         kind = registry.get(name)
         click.echo(f"{kind.name}: {kind.summary}  ({kind.chapter})")
         click.echo("  given:")
+        rows = kind.params + kind.answers
+        key_w = max([16] + [len(r.name) + 1 for r in rows])
+        dim_w = max([14] + [len(r.dimension or "word") + 1 for r in rows])
         for p in kind.params:
             default = f" [default {p.default}]" if p.default else ""
-            click.echo(f"    {p.name:<16}{p.dimension:<14}{p.doc}{default}")
+            click.echo(f"    {p.name:<{key_w}}{p.dimension:<{dim_w}}{p.doc}{default}")
         if kind.uses_body:
             click.echo(f"    body keys: {', '.join(p.name for p in BODY_PARAMS)}")
         click.echo("  answers:")
         for a in kind.answers:
-            click.echo(f"    {a.name:<16}{a.dimension or 'word':<14}{a.doc}")
+            click.echo(f"    {a.name:<{key_w}}{a.dimension or 'word':<{dim_w}}{a.doc}")
         click.echo("")
     for name, what in registry.PLANNED.items():
         click.echo(f"{name}: {what}  (not built yet)")

@@ -255,7 +255,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("no torquing body: give sun_* or moon_* keys (mass_ratio and "
                          "orbital_period at least), or preset: earth", key="given")
     total = sum(shares.values())
-    work.section("Lunisolar precession")
+    work.section("Lunisolar precession" if len(shares) > 1 else "Precession")
     if len(shares) > 1:
         work.step("Omega_p", " + ".join(f"Omega_{b}" for b in shares),
                   " + ".join(qty(arcsec_per_year(r), "arcsec/yr") for r in shares.values()),
