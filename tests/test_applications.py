@@ -520,3 +520,15 @@ def test_new_kinds_are_listed_and_their_templates_check(run, tmp_path, name):
     assert run("check", out).exit_code == 0
     schema = json.loads(run("schema").stdout)
     assert name in schema["properties"]["kind"]["enum"]
+
+
+def test_compass_refuses_what_cannot_be(run, write):
+    # a sensitive element lighter than its own rotor
+    result = run("solve", write(COMPASS.format(J=0.002, I_t=0.001, spin=2000, I_v=0.0005,
+                                               lat=30, dev=10)))
+    assert result.exit_code == 2 and "includes the rotor" in result.stderr
+    # released at rest pointing south: unstable equilibrium, no swing period
+    result = run("solve", write(COMPASS.format(J=0.002, I_t=0.001, spin=2000, I_v=0.004,
+                                               lat=30, dev=180)))
+    assert result.exit_code == 2 and "unstable equilibrium" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1

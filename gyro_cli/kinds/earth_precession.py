@@ -247,8 +247,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if fi < 0:
             work.warn(f"{b}_inclination beyond 54.74 deg reverses that body's mean torque")
         shares[b] = rate
-        n_b = math.sqrt(tidal * (1 + 1e-300))  # order of the orbital rate
-        if abs(rate) > 1e-2 * n_b:
+        if abs(rate) > 1e-2 * math.sqrt(tidal):  # sqrt(G M_b / a^3) <= the orbital rate
             work.warn(f"the precession is not slow against {BODY_NAMES[b]}'s orbital motion: "
                       "averaging the torque over the orbit is not justified")
     if not shares:
@@ -269,6 +268,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if total == 0:
         work.warn("the torques cancel: no precession")
         return
+    if abs(total) > 1e-2 * omega:
+        work.warn("the precession is not slow against the spin: the gyroscopic approximation "
+                  "H = C omega s (and so this rate) is not accurate")
     if eps == 0:
         work.warn("obliquity 0: the axis lies along the orbit normal; the torque vanishes and "
                   "the rate is that of a cone of zero width")

@@ -105,7 +105,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                       period(I_v, H_abs, Omega, lat), "s", note="small swings")
         work.step("T", value=T / 60, unit="min")
         work.answer("period", "T", [T], "time")
-        if alpha:
+        if abs(alpha) > math.pi * (1 - 1e-9):
+            work.text("alpha = 180 deg: the spin vector points south, the unstable equilibrium; "
+                      "released there at rest the axis stays (in theory) and never swings")
+            if "swing_period" in find:
+                raise InputError("at a deviation of 180 deg the axis balances in unstable "
+                                 "equilibrium (spin vector south): a swing released there at rest "
+                                 "never returns, its period is unbounded", key="given.deviation")
+        elif alpha:
             Ts = work.step("T(alpha)", "T (2 / pi) K(sin(alpha / 2))", value=swing_period(
                 I_v, H_abs, Omega, lat, alpha), unit="s", note="released at rest at alpha "
                 "(the pendulum's exact period)")
@@ -127,6 +134,10 @@ def _vertical_inertia(given: Given, work: Work) -> float | None:
         I_v = given["I_vertical"]
         if I_v <= 0:
             raise InputError("I_vertical must be positive", key="given.I_vertical")
+        if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):
+            raise InputError(f"I_vertical = {qty(I_v, 'kg*m^2')} is less than the rotor's own "
+                             f"moment about a diameter, I_G = {qty(body.I_cg, 'kg*m^2')}: the "
+                             "sensitive element includes the rotor", key="given.I_vertical")
         return I_v
     if body.I_cg is not None:
         work.text("no I_vertical: the rotor alone turns about the vertical (massless gimbal), "

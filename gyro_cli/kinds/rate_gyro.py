@@ -201,6 +201,11 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
     work.section("Input rate from the measurement")
     if key == "deflection":
         theta = given["deflection"]
+        if abs(theta) > SMALL_ANGLE:
+            exact = k * theta / (H * math.cos(theta)) if abs(theta) < math.pi / 2 else math.inf
+            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
+                      "tilted, k theta = H Omega cos(theta) gives Omega = "
+                      + (f"{num(exact)} rad/s" if math.isfinite(exact) else "no finite rate"))
         return work.step("Omega", "k theta / H", f"{qty(k, 'N m/rad')} ({qty(theta, 'rad')}) / "
                          f"{qty(H, 'kg m^2/s')}", k * theta / H, "rad/s")
     if key == "moment":
