@@ -13,7 +13,9 @@ Independent references, none of which uses the kinds' formulas:
   step), integrated with solve_ivp; period, moment and settling measured.
 - the rate gyro: the gimbal equation I_g thetaddot + c thetadot + k theta =
   H Omega integrated in time; deflection, gimbal rate, natural frequency,
-  damping ratio (logarithmic decrement) and time constant measured.
+  damping ratio (logarithmic decrement) and time constant measured. And the
+  gimbal equation itself: Lagrange's equation of a driven rotor in a gimbal in
+  a turning case, from its kinetic energy, integrated to its steady deflection.
 
 Each bundled problem is also worked by hand, and bad input exits 2 with one line.
 """
@@ -532,3 +534,68 @@ def test_compass_refuses_what_cannot_be(run, write):
                                                lat=30, dev=180)))
     assert result.exit_code == 2 and "unstable equilibrium" in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+
+
+def gimbal_rigid_body(J, I_t, A, B, C, k, c, p, Omega):
+    """Right-hand side for y = (theta, thetadot) of a rotor driven at p in a gimbal, case turning.
+
+    Case axes (turning at Omega about Z, the input axis): X the gimbal (output) axis, Y the
+    spin axis at theta = 0. The gimbal turns by theta about X, so the spin axis is
+    s = cos(theta) Y + sin(theta) Z, and t = X x s. Rotor inertia J s s^T + I_t (1 - s s^T);
+    gimbal inertia A, B, C about X, s, t. Angular velocities: gimbal Omega Z + thetadot X,
+    rotor that plus p s. Lagrange's equation for theta, from T alone (complex step), with a
+    spring k theta and a damper c thetadot; the drive holds p, so psi is not free.
+    """
+    def T(theta, td):
+        s = (0.0, cmath.cos(theta), cmath.sin(theta))
+        t = (0.0, -cmath.sin(theta), cmath.cos(theta))
+        w_g = (td, 0.0, Omega)
+        w_r = (td, p * s[1], Omega + p * s[2])
+        dot = lambda u, v: sum(a * b for a, b in zip(u, v))  # noqa: E731
+        rotor = J * dot(w_r, s) ** 2 + I_t * (dot(w_r, w_r) - dot(w_r, s) ** 2)
+        gimbal = A * w_g[0] ** 2 + B * dot(w_g, s) ** 2 + C * dot(w_g, t) ** 2
+        return 0.5 * (rotor + gimbal)
+
+    def rhs(_, y):
+        theta, td = y
+        h = 1e-30
+        z = theta + 1j * h
+        v = 100.0  # polarise at a rate that lifts M's share above the spin energy's rounding
+        T0, Tp, Tm = T(z, 0.0), T(z, v), T(z, -v)
+        M, M_theta = (Tp + Tm - 2 * T0).real / v ** 2, (Tp + Tm - 2 * T0).imag / h / v ** 2
+        T0_theta = T0.imag / h
+        return [td, (T0_theta - 0.5 * M_theta * td * td - k * theta - c * td) / M]
+
+    return rhs
+
+
+@pytest.mark.parametrize("rate_deg", [3.0, 20.0])
+def test_gimbal_equation_from_the_rigid_body(run, write, rate_deg):
+    # rotor J = 2e-4 at 2500 rad/s (H = 0.5); spring, damper; gimbal inertias
+    J, I_t, p = 2e-4, 1.1e-4, 2500.0
+    k, c = 0.8 if rate_deg < 10 else 0.2, 0.01
+    rhs = gimbal_rigid_body(J, I_t, 2e-5, 3e-5, 4e-5, k, c, p, rate_deg * DEG)
+    sol = solve_ivp(rhs, (0, 1.0), [0.0, 0.0], method="DOP853", rtol=1e-10, atol=1e-10)
+    steady = sol.y[0, -1]
+    path = write(GYRO.format(H=J * p, extra=f"stiffness: {k} N m/rad\n  gimbal_inertia: "
+                             f"{I_t + 2e-5} kg m^2\n  rate: {rate_deg} deg/s",
+                             find="deflection, natural_frequency"))
+    got = answers(run, path)
+    if rate_deg < 10:
+        # small angle: theta = H Omega / k, to the neglected cos(theta) (5e-4 here)
+        assert got["deflection"][0] == pytest.approx(steady, rel=1e-3)
+    else:
+        # 28 deg: the warning's k theta = H Omega cos(theta) is the rigid body's steady state
+        out = run("solve", path).stdout
+        exact = float(out.split("gives ")[1].split(" deg")[0])
+        assert exact == pytest.approx(steady / DEG, rel=1e-3)
+        assert got["deflection"][0] > 1.05 * steady
+    # the free gimbal (no damper) rings at sqrt(k / I_g), I_g = I_t + A about the gimbal axis
+    free = gimbal_rigid_body(J, I_t, 2e-5, 3e-5, 4e-5, k, 0.0, p, 0.0)
+    sol = solve_ivp(free, (0, 1.0), [1e-3, 0.0], method="DOP853", rtol=1e-10, atol=1e-13,
+                    dense_output=True)
+    t = np.linspace(0, 1.0, 100001)
+    theta = sol.sol(t)[0]
+    ups = t[1:][(theta[:-1] < 0) & (theta[1:] >= 0)]
+    assert got["natural_frequency"][0] == pytest.approx(2 * math.pi / np.mean(np.diff(ups)),
+                                                        rel=1e-4)
