@@ -599,3 +599,28 @@ def test_gimbal_equation_from_the_rigid_body(run, write, rate_deg):
     ups = t[1:][(theta[:-1] < 0) & (theta[1:] >= 0)]
     assert got["natural_frequency"][0] == pytest.approx(2 * math.pi / np.mean(np.diff(ups)),
                                                         rel=1e-4)
+
+
+def test_rate_gyro_refuses_a_gimbal_past_90_deg(run, write):
+    result = run("solve", write(GYRO.format(H=0.5, extra="stiffness: 0.1 N m/rad\n  deflection: "
+                                            "95 deg", find="rate")))
+    assert result.exit_code == 2 and "impossible" in result.stderr
+    # a rate far beyond the range: refused, with the exact steady state as the limit
+    result = run("solve", write(GYRO.format(H=0.5, extra="stiffness: 0.1 N m/rad\n  rate: "
+                                            "100 rad/s", find="deflection")))
+    H, k, rate = 0.5, 0.1, 100.0
+    lo, hi = 0.0, math.pi / 2  # k theta = H rate cos(theta), by bisection here
+    for _ in range(100):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if k * mid < H * rate * math.cos(mid) else (lo, mid)
+    assert result.exit_code == 2 and f"{lo / DEG:.4g} deg" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_earth_with_no_torque_gives_zero_and_no_period(run, write):
+    path = write(EARTH_BAD.format(extra="preset: earth\n  sun_mass_ratio: 0\n  moon_mass_ratio: 0"))
+    assert answers(run, path)["precession_rate"] == [0.0]
+    result = run("solve", write(EARTH_BAD.format(
+        extra="preset: earth\n  sun_mass_ratio: 0\n  moon_mass_ratio: 0").replace(
+        "[precession_rate]", "[precession_period]")))
+    assert result.exit_code == 2 and "Traceback" not in result.output

@@ -255,7 +255,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "orbital_period at least), or preset: earth", key="given")
     total = sum(shares.values())
     work.section("Lunisolar precession" if len(shares) > 1 else "Precession")
-    if len(shares) > 1:
+    if len(shares) > 1 and total != 0:
         work.step("Omega_p", " + ".join(f"Omega_{b}" for b in shares),
                   " + ".join(qty(arcsec_per_year(r), "arcsec/yr") for r in shares.values()),
                   arcsec_per_year(total), "arcsec/yr")

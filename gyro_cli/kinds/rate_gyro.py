@@ -107,14 +107,21 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     if mode == "spring":
         work.section("Spring-restrained: deflection and sensitivity")
+        linear = steady_deflection(H, rate, k)
+        if abs(linear) >= math.pi / 2:
+            exact = large_angle_deflection(H, rate, k)
+            raise InputError(f"H Omega / k = {num(linear / DEG)} deg: the small-angle rate gyro "
+                             "is far outside its range (the gimbal would pass 90 deg); the exact "
+                             f"steady state, k theta = H Omega cos(theta), is {num(exact / DEG)} "
+                             "deg: use a stiffer spring", key="given.rate")
         theta = work.step("theta", "H Omega / k", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) / "
-                          f"{qty(k, 'N m/rad')}", steady_deflection(H, rate, k), "rad")
+                          f"{qty(k, 'N m/rad')}", linear, "rad")
         work.step("theta", value=theta / DEG, unit="deg")
         S = work.step("S", "H / k", f"{qty(H, 'kg m^2/s')} / {qty(k, 'N m/rad')}", H / k, "s",
                       note="deflection per unit rate (rad per rad/s)")
         work.answer("deflection", "theta", [theta], "angle")
         work.answer("sensitivity", "S", [S], "time")
-        if abs(theta) > SMALL_ANGLE:
+        if abs(theta) > SMALL_ANGLE and given_key != "deflection":
             exact = large_angle_deflection(H, rate, k)
             work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
                       f"tilted, k theta = H Omega cos(theta) gives {num(exact / DEG)} deg")
@@ -201,11 +208,14 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
     work.section("Input rate from the measurement")
     if key == "deflection":
         theta = given["deflection"]
+        if abs(theta) >= math.pi / 2:
+            raise InputError(f"a gimbal deflection of {num(theta / DEG)} deg is impossible: at "
+                             "90 deg the spin axis lies along the input axis and no input rate "
+                             "gives a moment about the gimbal axis", key="given.deflection")
         if abs(theta) > SMALL_ANGLE:
-            exact = k * theta / (H * math.cos(theta)) if abs(theta) < math.pi / 2 else math.inf
             work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
                       "tilted, k theta = H Omega cos(theta) gives Omega = "
-                      + (f"{num(exact)} rad/s" if math.isfinite(exact) else "no finite rate"))
+                      f"{num(k * theta / (H * math.cos(theta)))} rad/s")
         return work.step("Omega", "k theta / H", f"{qty(k, 'N m/rad')} ({qty(theta, 'rad')}) / "
                          f"{qty(H, 'kg m^2/s')}", k * theta / H, "rad/s")
     if key == "moment":

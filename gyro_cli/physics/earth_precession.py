@@ -69,9 +69,3 @@ def precession_rate(tidal: float, e: float, H: float, obliquity: float, omega: f
     return (1.5 * tidal * eccentricity_factor(e) * H * math.cos(obliquity)
             * node_factor(inclination) / omega)
 
-
-def mean_torque(tidal: float, e: float, C_minus_A: float, obliquity: float,
-                inclination: float = 0.0) -> float:
-    """|<T>|: (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(eps) sin(eps) (1 - 3/2 sin^2 i)."""
-    return (1.5 * tidal * eccentricity_factor(e) * C_minus_A * math.cos(obliquity)
-            * math.sin(obliquity) * node_factor(inclination))
