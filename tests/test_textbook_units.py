@@ -129,3 +129,11 @@ def test_cli_unknown_unit_is_one_line(run, write):
     assert out.exit_code == 2
     assert out.stderr.count("\n") == 1 and "did you mean 'rpm'" in out.stderr
     assert "Traceback" not in out.stderr and "(" not in out.stderr.split("did you mean")[0][-20:]
+
+
+def test_time_per_angle_needs_an_angle_in_its_unit():
+    # pint counts angles as plain numbers, so `yr` would pass as years per radian
+    with pytest.raises(InputError, match="angle in its unit"):
+        units.check_unit("yr", "time_per_angle", "find.years_per_degree")
+    per_degree = units.convert(3600.0 * 180 / math.pi, "time_per_angle", "h/deg")
+    assert per_degree == pytest.approx(1.0, rel=1e-12)   # 1 h per degree, from s/rad

@@ -26,7 +26,7 @@ from test_check import GYRO_PRECESSION, RPM, gyro_file, put
 ALLOWED = {
     "dot", "ddot", "phi", "psi", "theta", "omega", "gamma", "beta", "alpha", "delta", "pi",
     "mu", "rho", "sigma", "tau", "lambda", "Omega", "Delta", "Phi", "Psi", "Theta", "Gamma",
-    "Pi", "Lambda", "Xi", "Sigma",
+    "Pi", "Lambda", "Xi", "Sigma", "zeta", "eta", "epsilon", "kappa", "nu", "xi", "chi", "iota",
     "sin", "cos", "tan", "exp", "ln", "log", "sqrt", "mathrm", "text", "textit", "textbf",
     "times", "cdot", "ge", "le", "pm", "ne", "sim", "circ", "qquad", "quad", "hline", "item",
     "begin", "end", "subsection", "paragraph", "textasciicircum", "textasciitilde",

@@ -36,6 +36,7 @@ EXAMPLE_QUANTITY = {
     "speed": "10 m/s", "time": "2 s", "dimensionless": "1",
     "angular_momentum": "2 kg m^2/s", "inverse_time": "-0.32 s^-1", "mass_length": "2 kg m",
     "energy": "3 J", "particles": "[{mass: 1 kg, x: 0.1 m, y: 0 m, z: 0 m}]",
+    "stiffness": "0.5 N m/rad", "damping": "0.002 N m s/rad", "time_per_angle": "72 yr/deg",
 }
 ANSWER_UNIT = {"rate": "rpm", "angle": "deg", "inverse_time": "s^-1"}
 

@@ -37,10 +37,16 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "inverse_time": ("1 / [time]", "1/s", "an eigenvalue or growth rate like '-0.32 s^-1'"),
     "mass_length": ("[mass] * [length]", "kg*m", "a mass times a length like '2 kg m'"),
     "energy": ("[mass] * [length] ** 2 / [time] ** 2", "J", "an energy like '3 J'"),
+    "stiffness": ("[mass] * [length] ** 2 / [time] ** 2", "N*m/rad",
+                  "a torsional stiffness like '0.5 N m/rad'"),
+    "damping": ("[mass] * [length] ** 2 / [time]", "N*m*s/rad",
+                "a rotational damping like '0.002 N m s/rad'"),
+    "time_per_angle": ("[time]", "s/rad", "a time per angle like '72 yr/deg'"),
 }
 
 # How SI units are written in worked answers.
-SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s", "kg*m": "kg m"}
+SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s", "kg*m": "kg m",
+           "N*m/rad": "N m/rad", "N*m*s/rad": "N m s/rad"}
 
 ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",
@@ -470,6 +476,10 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
         raise InputError(f"expected {words}, got {text!r} (dimension {got})", key=key)
     if dimension == "angle" and not (units._units and set(units._units) <= ANGLE_UNITS):
         raise InputError(f"an angle needs a unit, deg or rad: got {text!r}", key=key)
+    if dimension == "time_per_angle" and not set(units._units) & ANGLE_UNITS:
+        # pint counts angles as plain numbers: `yr` alone would silently mean years per radian
+        raise InputError(f"a time per angle needs an angle in its unit, such as 'yr/deg': got "
+                         f"{text!r}", key=key)
     value = quantity.to(si).magnitude if si else quantity.to("dimensionless").magnitude
     if not math.isfinite(value):
         raise InputError(f"{text!r} is out of range", key=key)

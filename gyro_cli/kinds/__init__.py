@@ -25,6 +25,9 @@ REGISTRY: dict[str, str] = {
     "bicycle": "gyro_cli.kinds.bicycle",
     "euler_angles": "gyro_cli.kinds.euler_angles",
     "gyro_drift": "gyro_cli.kinds.gyro_drift",
+    "earth_precession": "gyro_cli.kinds.earth_precession",
+    "gyrocompass": "gyro_cli.kinds.gyrocompass",
+    "rate_gyro": "gyro_cli.kinds.rate_gyro",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

@@ -1,0 +1,344 @@
+"""The precession of the equinoxes: an oblate planet as a top (section 11.3).
+
+The Sun and the Moon pull on the Earth's equatorial bulge; the orbit-averaged
+torque, from the planet's quadrupole (MacCullagh's formula), turns the spin
+angular momentum C omega about the normal of each body's orbit, a steady
+precession in the chapter's sense (dH/dt = T, Eqs. 11.27-11.29 with the torque
+given). For each torquing body
+
+    Omega_p = (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) (1 - (3/2) sin^2 i) / omega,
+
+H = (C - A) / C the dynamical ellipticity, eps the obliquity, i the
+inclination of the body's orbit to the reference plane (averaged over its
+turning node), and G M_b / a^3 = n_b^2 q / (1 + q) by Kepler's third law.
+The derivation is in gyro_cli/physics/earth_precession.py and docs/applications.md.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+from ..physics.earth_precession import (ARCSEC, G, JULIAN_YEAR, eccentricity_factor,
+                                        node_factor, precession_rate, tidal_from_distance,
+                                        tidal_from_period)
+
+DAY = 86400.0
+BODIES = ("sun", "moon")
+BODY_NAMES = {"sun": "the Sun", "moon": "the Moon"}
+
+# preset: earth. IERS Conventions (2010), Table 1.1 (H, eps0, G M_E, the Moon/Earth
+# mass ratio), the IAU 2009 system of astronomical constants (Sun/Earth mass ratio),
+# and mean orbital elements at J2000 (Simon et al. 1994; the Astronomical Almanac).
+EARTH = {
+    "dynamical_ellipticity": 0.003273795,
+    "obliquity": math.radians(84381.406 / 3600),   # 23.4392794 deg
+    "rotation_period": 86164.0905,                   # sidereal day, s
+    "planet_mass": 3.986004418e14 / G,               # G M_E / G
+    "sun_mass_ratio": 332946.0487,
+    "sun_orbital_period": 365.256363004 * DAY,       # sidereal year
+    "sun_eccentricity": 0.0167086,
+    "sun_inclination": 0.0,                          # the ecliptic is the reference plane
+    "moon_mass_ratio": 0.0123000371,
+    "moon_orbital_period": 27.321661 * DAY,          # sidereal month
+    "moon_eccentricity": 0.0549,
+    "moon_inclination": math.radians(5.145),
+}
+PRESET_TEXT = {
+    "dynamical_ellipticity": "0.003273795 (IERS 2010)",
+    "obliquity": "84381.406 arcsec = 23.43928 deg (IERS 2010, J2000)",
+    "rotation_period": "86164.0905 s (sidereal day)",
+    "planet_mass": "G M_E / G = 3.986004418e14 m^3/s^2 / G",
+    "sun_mass_ratio": "332946.0487 (IAU 2009)",
+    "sun_orbital_period": "365.256363 d (sidereal year)",
+    "sun_eccentricity": "0.0167086 (J2000)",
+    "sun_inclination": "0 deg (the ecliptic)",
+    "moon_mass_ratio": "0.0123000371 (IERS 2010)",
+    "moon_orbital_period": "27.321661 d (sidereal month)",
+    "moon_eccentricity": "0.0549 (mean)",
+    "moon_inclination": "5.145 deg (mean, to the ecliptic)",
+}
+# Keys that say the same thing: the preset fills a group only if the file gives none of it.
+GROUPS = [("dynamical_ellipticity", "J2", "polar_moment_factor"),
+          ("rotation_period", "rotation_rate"), ("obliquity",), ("planet_mass",)]
+for _b in BODIES:
+    GROUPS += [(f"{_b}_mass_ratio", f"{_b}_mass"), (f"{_b}_orbital_period", f"{_b}_distance"),
+               (f"{_b}_eccentricity",), (f"{_b}_inclination",)]
+
+
+def arcsec_per_year(rate: float) -> float:
+    return rate / ARCSEC * JULIAN_YEAR
+
+
+def _values(given: Given, work: Work) -> dict[str, float]:
+    """The file's values, with the preset's filling every group the file leaves out."""
+    values = {k: v for k, v in given.values.items() if not isinstance(v, str)}
+    preset = given.word("preset")
+    if preset is None:
+        return values
+    filled = []
+    for group in GROUPS:
+        if not any(k in values for k in group):
+            key = group[0]
+            values[key] = EARTH[key]
+            filled.append(key)
+    work.section("preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)")
+    for key in filled:
+        work.text(f"{key} = {PRESET_TEXT[key]}")
+    overridden = [k for k in given.values if k != "preset"]
+    if overridden:
+        work.text(f"given in the file instead of the preset: {', '.join(overridden)}")
+    return values
+
+
+def _positive(values: dict, key: str, what: str) -> float:
+    v = values[key]
+    if v <= 0:
+        raise InputError(f"{what} must be positive, got {num(v)}", key=f"given.{key}")
+    return v
+
+
+def _ellipticity(values: dict, work: Work) -> float:
+    if "dynamical_ellipticity" in values:
+        if "J2" in values or "polar_moment_factor" in values:
+            raise InputError("give dynamical_ellipticity or J2 with polar_moment_factor, not "
+                             "both", key="given.J2" if "J2" in values else
+                             "given.polar_moment_factor")
+        H = values["dynamical_ellipticity"]
+    elif "J2" in values or "polar_moment_factor" in values:
+        missing = "polar_moment_factor" if "J2" in values else "J2"
+        if missing not in values:
+            raise InputError(f"J2 and polar_moment_factor go together (H = J2 / (C / (M R^2))); "
+                             f"give {missing} too", key=f"given.{missing}")
+        J2 = _positive(values, "J2", "J2 (the oblateness of the gravity field)")
+        k = values["polar_moment_factor"]
+        if not 0 < k <= 2 / 3:
+            raise InputError(f"polar_moment_factor C / (M R^2) lies between 0 and 2/3 (a hollow "
+                             f"shell; 0.4 for a uniform sphere), got {num(k)}",
+                             key="given.polar_moment_factor")
+        H = work.step("H", "J2 / (C / (M R^2)) = (C - A) / C",
+                      f"{num(J2)} / {num(k)}", J2 / k, "",
+                      note="J2 = (C - A) / (M R^2)")
+    else:
+        raise InputError("give the planet's dynamical_ellipticity H = (C - A) / C (or J2 and "
+                         "polar_moment_factor), or preset: earth",
+                         key="given.dynamical_ellipticity")
+    if not 0 < H < 1:
+        raise InputError(f"the dynamical ellipticity (C - A) / C must lie between 0 and 1 for an "
+                         f"oblate planet, got {num(H)}: a sphere (H = 0) feels no torque",
+                         key="given.dynamical_ellipticity")
+    return H
+
+
+def _spin(values: dict, work: Work) -> float:
+    if "rotation_period" in values and "rotation_rate" in values:
+        raise InputError("give rotation_period or rotation_rate, not both",
+                         key="given.rotation_rate")
+    if "rotation_rate" in values:
+        return _positive(values, "rotation_rate", "rotation_rate")
+    if "rotation_period" not in values:
+        raise InputError("give the planet's rotation_period (sidereal) or rotation_rate",
+                         key="given.rotation_period")
+    P = _positive(values, "rotation_period", "rotation_period")
+    return work.step("omega", "2 pi / P_rot", f"2 pi / {qty(P, 's')}", 2 * math.pi / P, "rad/s")
+
+
+def _tidal(values: dict, b: str, work: Work) -> float | None:
+    """G M_b / a^3 for body b, or None when the file (and preset) name no such body."""
+    keys = [k for k in values if k.startswith(f"{b}_")]
+    if not keys:
+        return None
+    name = BODY_NAMES[b]
+    amount = [k for k in (f"{b}_mass_ratio", f"{b}_mass") if k in values]
+    orbit = [k for k in (f"{b}_orbital_period", f"{b}_distance") if k in values]
+    for group, what in ((amount, "mass_ratio (to the planet) or mass"),
+                        (orbit, "orbital_period or distance (semi-major axis)")):
+        if len(group) > 1:
+            raise InputError(f"give {b}_{what.split(' ')[0]} or the other, not both "
+                             f"({' and '.join(group)})", key=f"given.{group[1]}")
+        if not group:
+            which = what.split(" or ")[0].split(" ")[0]
+            raise InputError(f"{name} needs its {what}", key=f"given.{b}_{which}")
+    amount_key, orbit_key = amount[0], orbit[0]
+    a_value = values[amount_key]
+    if a_value < 0:
+        raise InputError(f"{amount_key} cannot be negative", key=f"given.{amount_key}")
+    o_value = _positive(values, orbit_key, orbit_key)
+    planet = None
+    if (amount_key.endswith("_mass") and orbit_key.endswith("_period")) or \
+            (amount_key.endswith("_ratio") and orbit_key.endswith("_distance")):
+        if "planet_mass" not in values:
+            raise InputError(f"{amount_key} with {orbit_key} needs the planet's mass "
+                             "(planet_mass)", key="given.planet_mass")
+        planet = _positive(values, "planet_mass", "planet_mass")
+    if orbit_key.endswith("_period"):
+        q = a_value if planet is None else a_value / planet
+        if planet is not None:
+            work.step(f"q_{b}", "M_b / M", f"{qty(a_value, 'kg')} / {qty(planet, 'kg')}", q, "")
+        return work.step(f"G M_{b} / a^3", "n^2 q / (1 + q),  n = 2 pi / P",
+                         f"(2 pi / {qty(o_value, 's')})^2 ({num(q)}) / (1 + {num(q)})",
+                         tidal_from_period(o_value, q), "1/s^2", ref="Kepler III")
+    gm = G * a_value if planet is None else G * planet * a_value
+    mass_text = qty(a_value, "kg") if planet is None else f"{num(a_value)} ({qty(planet, 'kg')})"
+    return work.step(f"G M_{b} / a^3", "G M_b / a^3", f"G {mass_text} / ({qty(o_value, 'm')})^3",
+                     tidal_from_distance(gm, o_value), "1/s^2",
+                     note=f"G = {G:g} m^3/(kg s^2)")
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    values = _values(given, work)
+    work.section("The planet")
+    H = _ellipticity(values, work)
+    omega = _spin(values, work)
+    if "obliquity" not in values:
+        raise InputError("give the obliquity (angle between the spin axis and the orbit "
+                         "normal)", key="given.obliquity")
+    eps = values["obliquity"]
+    if not 0 <= eps < math.pi / 2:
+        raise InputError(f"obliquity must lie in [0, 90) deg, got {num(math.degrees(eps))} deg "
+                         "(at 90 deg the bulge lies in the orbit plane and the mean torque "
+                         "vanishes; for a retrograde rotator give 180 deg minus its obliquity, "
+                         "the axis then moves the other way)", key="given.obliquity")
+    work.text(f"H = (C - A) / C = {num(H)}, eps = {num(math.degrees(eps))} deg, "
+              f"omega = {qty(omega, 'rad/s')}")
+    work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
+    work.text("MacCullagh: a body M_b at distance r, direction u, exerts on the planet the "
+              "torque T = (3 G M_b (C - A) / r^3) (u . s) (u x s), s the spin axis.")
+    work.text("Over a Kepler orbit <a^3/r^3> = (1 - e^2)^(-3/2) and <u u^T> is isotropic in the "
+              "orbit plane: <T> = -(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(eps) "
+              "(n x s), n the orbit normal.")
+    work.text("Steady precession (the chapter's dH/dt = T with H = C omega s): s turns about -n "
+              "(westward, retrograde) at Omega_p = |<T>| / (C omega sin(eps)) = "
+              "(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) / omega.")
+    work.text("An orbit inclined at i whose node turns round quickly (the Moon's, in 18.6 years) "
+              "is averaged over the node too: factor (1 - (3/2) sin^2 i).")
+    shares: dict[str, float] = {}
+    for b in BODIES:
+        work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
+        tidal = _tidal(values, b, work)
+        if tidal is None:
+            work.text(f"no {b}_* keys: {BODY_NAMES[b]} is left out")
+            continue
+        e = values.get(f"{b}_eccentricity", 0.0)
+        i = values.get(f"{b}_inclination", 0.0)
+        if not 0 <= e < 1:
+            raise InputError(f"an orbit's eccentricity lies in [0, 1), got {num(e)}",
+                             key=f"given.{b}_eccentricity")
+        if not -math.pi / 2 < i < math.pi / 2:
+            raise InputError(f"inclination must lie within +-90 deg of the reference plane, got "
+                             f"{num(math.degrees(i))} deg", key=f"given.{b}_inclination")
+        fe = work.step("(1 - e^2)^(-3/2)", "", f"(1 - {num(e)}^2)^(-3/2)",
+                       eccentricity_factor(e), "")
+        fi = node_factor(i)
+        if i:
+            work.step("1 - (3/2) sin^2 i", "", f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
+                      "", note="node-averaged")
+        rate = precession_rate(tidal, e, H, eps, omega, i)
+        tail = " (1 - (3/2) sin^2 i)" if i else ""
+        work.step(f"Omega_{b}", f"(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps){tail} / omega",
+                  f"1.5 ({num(tidal)} 1/s^2) ({num(fe)}) ({num(H)}) ({num(math.cos(eps))})"
+                  + (f" ({num(fi)})" if i else "") + f" / {qty(omega, 'rad/s')}",
+                  rate, "rad/s")
+        work.step(f"Omega_{b}", value=arcsec_per_year(rate), unit="arcsec/yr",
+                  note="(1 yr = 365.25 d)")
+        if fi < 0:
+            work.warn(f"{b}_inclination beyond 54.74 deg reverses that body's mean torque")
+        shares[b] = rate
+        if abs(rate) > 1e-2 * math.sqrt(tidal):  # sqrt(G M_b / a^3) <= the orbital rate
+            work.warn(f"the precession is not slow against {BODY_NAMES[b]}'s orbital motion: "
+                      "averaging the torque over the orbit is not justified")
+    if not shares:
+        raise InputError("no torquing body: give sun_* or moon_* keys (mass_ratio and "
+                         "orbital_period at least), or preset: earth", key="given")
+    total = sum(shares.values())
+    work.section("Lunisolar precession" if len(shares) > 1 else "Precession")
+    if len(shares) > 1 and total != 0:
+        work.step("Omega_p", " + ".join(f"Omega_{b}" for b in shares),
+                  " + ".join(qty(arcsec_per_year(r), "arcsec/yr") for r in shares.values()),
+                  arcsec_per_year(total), "arcsec/yr")
+        for b, r in shares.items():
+            work.text(f"{BODY_NAMES[b]}'s share: {num(100 * r / total)} %")
+    work.step("Omega_p", value=total, unit="rad/s")
+    work.answer("precession_rate", "Omega_p", [total], "rate")
+    for b, r in shares.items():
+        work.answer(f"{b}_rate", f"Omega_{b}", [r], "rate")
+    if total == 0:
+        work.warn("the torques cancel: no precession")
+        return
+    if abs(total) > 1e-2 * omega:
+        work.warn("the precession is not slow against the spin: the gyroscopic approximation "
+                  "H = C omega s (and so this rate) is not accurate")
+    if eps == 0:
+        work.warn("obliquity 0: the axis lies along the orbit normal; the torque vanishes and "
+                  "the rate is that of a cone of zero width")
+    period = work.step("T_p", "2 pi / Omega_p", f"2 pi / {qty(total, 'rad/s')}",
+                       2 * math.pi / abs(total), "s")
+    work.step("T_p", value=period / JULIAN_YEAR, unit="yr")
+    per_degree = work.step("t_1deg", "T_p / 360", f"{num(period / JULIAN_YEAR)} yr / 360",
+                           period / JULIAN_YEAR / 360, "yr/deg")
+    work.text("The chapter's 26,000 years; its '80 years' for 1 deg is a misprint: 26,000 / 360 "
+              f"is about 72 (the errata), here {num(per_degree)} years.")
+    work.answer("precession_period", "T_p", [period], "time")
+    work.answer("years_per_degree", "t_1deg", [1 / abs(total)], "time_per_angle")
+    work.check(f"Omega_p / omega = {num(abs(total) / omega)}: the precession is slow against "
+               "the spin, so H = C omega s (the gyroscopic approximation) holds; T_p / t_1deg = "
+               f"{num(period / (per_degree * JULIAN_YEAR))} deg")
+
+
+def _body_params(b: str) -> tuple[Param, ...]:
+    name = BODY_NAMES[b]
+    return (
+        Param(f"{b}_mass_ratio", "dimensionless", f"q_{b}", f"mass of {name} over the planet's "
+              "(0 leaves it out)"),
+        Param(f"{b}_mass", "mass", f"M_{b}", f"mass of {name} (instead of {b}_mass_ratio)"),
+        Param(f"{b}_orbital_period", "time", f"P_{b}", f"sidereal period of {name}'s orbit "
+              "relative to the planet"),
+        Param(f"{b}_distance", "length", f"a_{b}", f"semi-major axis of {name}'s orbit "
+              f"(instead of {b}_orbital_period)"),
+        Param(f"{b}_eccentricity", "dimensionless", f"e_{b}", f"eccentricity of {name}'s orbit "
+              "(0 if absent)"),
+        Param(f"{b}_inclination", "angle", f"i_{b}", f"inclination of {name}'s orbit to the "
+              "reference plane, averaged over its turning node (0 if absent)"),
+    )
+
+
+KIND = Kind(
+    name="earth_precession",
+    summary="precession of the equinoxes: an oblate planet as a top torqued by the Sun and "
+            "the Moon (rate, period, years per degree)",
+    chapter="section 11.3, precession of the equinoxes; steady precession dH/dt = T",
+    params=(
+        Param("preset", "word", "preset", "earth: the Earth, Sun and Moon from the IERS "
+              "Conventions (2010) and the IAU 2009 constants; keys in the file override it",
+              choices=("earth",)),
+        Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet"),
+        Param("J2", "dimensionless", "J2", "the planet's J2 = (C - A) / (M R^2) (with "
+              "polar_moment_factor, instead of dynamical_ellipticity)"),
+        Param("polar_moment_factor", "dimensionless", "C/MR^2", "C / (M R^2) of the planet"),
+        Param("obliquity", "angle", "eps", "angle between the spin axis and the normal of the "
+              "reference orbit plane (the ecliptic)"),
+        Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet"),
+        Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)"),
+        Param("planet_mass", "mass", "M", "mass of the planet (only to go with a body's mass "
+              "and period, or mass_ratio and distance)"),
+    ) + _body_params("sun") + _body_params("moon"),
+    answers=(
+        AnswerSpec("precession_rate", "rate", "Omega_p", "rate at which the spin axis turns "
+                   "about the orbit normal, westward (retrograde) positive; e.g. arcsec/yr"),
+        AnswerSpec("sun_rate", "rate", "Omega_sun", "the Sun's share of the rate"),
+        AnswerSpec("moon_rate", "rate", "Omega_moon", "the Moon's share of the rate"),
+        AnswerSpec("precession_period", "time", "T_p", "time for one turn of the axis, e.g. yr"),
+        AnswerSpec("years_per_degree", "time_per_angle", "t_1deg", "time for the axis to turn "
+                   "one degree: write the unit as yr/deg"),
+    ),
+    solve=solve,
+    uses_body=False,
+    extra={"example": {
+        "given": {"preset": "earth"},
+        "find": {"precession_rate": "arcsec/yr", "precession_period": "yr",
+                 "years_per_degree": "yr/deg"},
+        "vary": {"obliquity": "[10 deg, 40 deg]"}}},
+)

@@ -1,0 +1,184 @@
+"""The gyrocompass (section 11.3): a horizontal rotor free to turn about the local vertical.
+
+On the rotating Earth a rotor whose spin axis is held horizontal, but left
+free to turn about the vertical, feels about the vertical the moment
+H Omega_E cos(lat) sin(alpha) (alpha the deviation of the spin vector from
+north), which turns it back to north: the chapter's "bearing torques act in
+such a way that the gyroscope axis always lines up with ... the northerly
+direction". Small swings about north are those of a pendulum,
+
+    I_v alphaddot + H Omega_E cos(lat) alpha = 0,   T = 2 pi sqrt(I_v / (H Omega_E cos(lat))),
+
+and with any damping about the vertical the axis settles on the meridian. The
+derivation is in gyro_cli/physics/gyrocompass.py and docs/applications.md.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+from ..physics.algebra import cos_theta
+from ..physics.gyrocompass import (directive_stiffness, north_seeking_moment, period,
+                                   swing_period)
+
+POLAR_WARNING_LATITUDE = math.radians(70)
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    body = given.body
+    lat = given["latitude"]
+    if not -math.pi / 2 <= lat <= math.pi / 2:
+        raise InputError(f"latitude lies between -90 and 90 deg, got {num(math.degrees(lat))} "
+                         "deg", key="given.latitude")
+    Omega = given["earth_rate"]
+    if Omega <= 0:
+        raise InputError("earth_rate must be positive (the Earth's sidereal rate, 7.292e-5 "
+                         "rad/s)", key="given.earth_rate")
+    if cos_theta(lat) == 0:
+        raise InputError(f"at latitude {num(math.degrees(lat))} deg (a pole) a gyrocompass cannot "
+                         "settle: the Earth's rate has no horizontal component (Omega_E "
+                         "cos(lat) = 0), so there is no north-seeking moment and no north to "
+                         "seek; the period 2 pi sqrt(I_v / (H Omega_E cos(lat))) grows without "
+                         "bound toward the pole", key="given.latitude")
+    if "angular_momentum" in given:
+        if "spin" in given:
+            raise InputError("give the rotor's angular_momentum or its spin (with J), not both",
+                             key="given.spin")
+        H = given["angular_momentum"]
+    else:
+        if "spin" not in given:
+            raise InputError("give the rotor's spin (with J, k_axial or a shape) or its "
+                             "angular_momentum", key="given.spin")
+        body.require("J")
+        spin = given["spin"]
+        H = work.step("H", "J spin", f"{qty(body.J, 'kg*m^2')} ({qty(spin, 'rad/s')})",
+                      body.J * spin, "kg m^2/s", ref="angular momentum of the rotor")
+    if H == 0:
+        raise InputError("the rotor must spin: with no angular momentum there is no "
+                         "north-seeking moment", key="given.spin")
+    H_abs = abs(H)
+    alpha = given["deviation"]
+    if not -math.pi <= alpha <= math.pi:
+        raise InputError("deviation lies between -180 and 180 deg (east of north positive)",
+                         key="given.deviation")
+
+    work.section("Conventions")
+    work.text("E, N, U: east, north, up at the site. The rotor's spin vector (right-hand rule) "
+              "points along the horizontal axis at azimuth alpha, east of north positive; "
+              "moments about the vertical are positive counter-clockwise seen from above.")
+    work.text("Earth rate: Omega_E = Omega (cos(lat) N + sin(lat) U); only the horizontal part "
+              "Omega cos(lat) N can turn a horizontal spin vector.")
+    if H < 0:
+        work.text("spin < 0: the spin vector points along the other end of the axis; that end "
+                  "seeks north")
+    work.section("Moment about the vertical (angular momentum about U on the rotating Earth)")
+    work.text("d/dt (H . U) = M_U + H . (Omega_E x U),  Omega_E x U = Omega cos(lat) E,  "
+              "H . U = I_v (Omega sin(lat) - alphadot)")
+    work.text("so  I_v alphaddot = -H Omega cos(lat) sin(alpha)  (terms of order I Omega^2 "
+              "dropped): a pendulum about north")
+    D = work.step("D", "H Omega_E cos(lat)", f"{qty(H_abs, 'kg m^2/s')} ({qty(Omega, 'rad/s')}) "
+                  f"cos({num(math.degrees(lat))} deg)",
+                  directive_stiffness(H_abs, Omega, lat), "N m/rad",
+                  note="north-seeking moment per radian of deviation")
+    M = work.step("M", "H Omega_E cos(lat) sin(alpha)", f"{qty(D, 'N m/rad')} "
+                  f"sin({num(math.degrees(alpha))} deg)",
+                  north_seeking_moment(H_abs, Omega, lat, alpha), "N*m")
+    if alpha:
+        work.text(f"the moment turns the axis {'west' if alpha > 0 else 'east'}, back toward "
+                  "north")
+    work.answer("moment", "M", [M], "moment")
+    work.answer("settles", "alpha_eq", ["north"], None)
+    work.answer("directive_moment", "D", [D], "stiffness")
+    work.text("alpha = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
+              "unstable): the axis swings about north and, with any damping about the "
+              "vertical, settles there.")
+
+    I_v = _vertical_inertia(given, work)
+    if I_v is not None:
+        work.section("Swing about north")
+        T = work.step("T", "2 pi sqrt(I_v / (H Omega_E cos(lat)))",
+                      f"2 pi sqrt({qty(I_v, 'kg*m^2')} / {qty(D, 'N m/rad')})",
+                      period(I_v, H_abs, Omega, lat), "s", note="small swings")
+        work.step("T", value=T / 60, unit="min")
+        work.answer("period", "T", [T], "time")
+        if abs(alpha) > math.pi * (1 - 1e-9):
+            work.text("alpha = 180 deg: the spin vector points south, the unstable equilibrium; "
+                      "released there at rest the axis stays (in theory) and never swings")
+            if "swing_period" in find:
+                raise InputError("at a deviation of 180 deg the axis balances in unstable "
+                                 "equilibrium (spin vector south): a swing released there at rest "
+                                 "never returns, its period is unbounded", key="given.deviation")
+        elif alpha:
+            Ts = work.step("T(alpha)", "T (2 / pi) K(sin(alpha / 2))", value=swing_period(
+                I_v, H_abs, Omega, lat, alpha), unit="s", note="released at rest at alpha "
+                "(the pendulum's exact period)")
+            work.answer("swing_period", "T(alpha)", [Ts], "time")
+        work.check(f"I_v (2 pi / T)^2 = {qty(I_v * (2 * math.pi / T) ** 2, 'N m/rad')} = "
+                   f"H Omega_E cos(lat) = {qty(D, 'N m/rad')}")
+    elif {"period", "swing_period"} & find:
+        raise InputError("the period needs I_vertical (or the rotor's I_cg, k_cg or shape)",
+                         key="given.I_vertical")
+    if abs(lat) > POLAR_WARNING_LATITUDE:
+        work.warn(f"at latitude {num(math.degrees(lat))} deg the north-seeking moment is only "
+                  f"cos(lat) = {num(math.cos(lat))} of its value at the equator: the compass is "
+                  "sluggish and a gyrocompass fails toward the poles")
+
+
+def _vertical_inertia(given: Given, work: Work) -> float | None:
+    body = given.body
+    if "I_vertical" in given:
+        I_v = given["I_vertical"]
+        if I_v <= 0:
+            raise InputError("I_vertical must be positive", key="given.I_vertical")
+        if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):
+            raise InputError(f"I_vertical = {qty(I_v, 'kg*m^2')} is less than the rotor's own "
+                             f"moment about a diameter, I_G = {qty(body.I_cg, 'kg*m^2')}: the "
+                             "sensitive element includes the rotor", key="given.I_vertical")
+        return I_v
+    if body.I_cg is not None:
+        work.text("no I_vertical: the rotor alone turns about the vertical (massless gimbal), "
+                  "I_v = I_G, its transverse moment about a diameter")
+        return body.I_cg
+    return None
+
+
+KIND = Kind(
+    name="gyrocompass",
+    summary="gyrocompass: a horizontal rotor free about the vertical on the rotating Earth "
+            "(north-seeking moment, period of the swing about north)",
+    chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
+    params=(
+        Param("latitude", "angle", "lat", "latitude of the site (north or south)"),
+        Param("spin", "rate", "spin", "spin of the rotor about its axis (with J, k_axial or a "
+              "shape)"),
+        Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
+              "(instead of spin)"),
+        Param("I_vertical", "inertia", "I_v", "moment of inertia of the sensitive element "
+              "(rotor and its gimbal) about the vertical; default the rotor's I_cg"),
+        Param("deviation", "angle", "alpha", "angle of the spin vector from north, east "
+              "positive", default="0 deg"),
+        Param("earth_rate", "rate", "Omega_E", "the Earth's rate of rotation (sidereal)",
+              default="7.292115e-5 rad/s"),
+    ),
+    answers=(
+        AnswerSpec("period", "time", "T", "period of small swings about north"),
+        AnswerSpec("swing_period", "time", "T(alpha)", "period of the swing released at rest "
+                   "at the deviation (exact, any amplitude)"),
+        AnswerSpec("moment", "moment", "M", "north-seeking moment about the vertical at the "
+                   "deviation, H Omega_E cos(lat) sin(alpha)"),
+        AnswerSpec("directive_moment", "stiffness", "D", "north-seeking moment per radian of "
+                   "deviation, H Omega_E cos(lat)"),
+        AnswerSpec("settles", None, "alpha_eq", "where the axis settles: north (the spin "
+                   "vector's end); a pole is refused with the reason"),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"mass": "2 kg", "shape": "disk", "radius": "60 mm", "spin": "12000 rpm",
+                  "I_vertical": "0.004 kg m^2", "latitude": "50 deg", "deviation": "10 deg"},
+        "find": {"period": "s", "moment": "N*m", "settles": None},
+        "vary": {"latitude": "[0 deg, 70 deg]"}}},
+)

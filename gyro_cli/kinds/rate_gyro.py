@@ -1,0 +1,277 @@
+"""The gyroscope as a detector of motion (Eq. 11.29): single-gimbal rate gyros.
+
+A rotor of angular momentum H = J spin turns in a gimbal; the case turns at
+Omega about the input axis, perpendicular to the spin axis and to the gimbal's
+(output) axis. Eq. 11.29: to keep the spin axis from turning, a moment
+Q_theta = J psidot phidot = H Omega about the output axis is needed. A
+torsion spring k and a damper c on the output axis supply it as the gimbal
+deflects; with the gimbal's inertia I_g about its axis, for small angles
+
+    I_g thetaddot + c thetadot + k theta = H Omega.
+
+Spring-restrained (rate gyro): theta = H Omega / k; damper only
+(rate-integrating gyro): thetadot = H Omega / c; neither: the bearings'
+moment H Omega. The derivation is in gyro_cli/physics/rate_gyro.py.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import InputError
+from ..core.given import Given
+from ..core.spec import AnswerSpec, Kind, Param
+from ..core.work import Work, num, qty
+from ..physics.rate_gyro import (damping_ratio, gimbal_rate, large_angle_deflection,
+                                 natural_frequency, rate_from_moment, steady_deflection)
+
+SMALL_ANGLE = math.radians(5)
+DEG = math.pi / 180
+
+
+def _angular_momentum(given: Given, work: Work) -> float:
+    body = given.body
+    if "angular_momentum" in given:
+        if "spin" in given:
+            raise InputError("give the rotor's angular_momentum or its spin (with J), not both",
+                             key="given.spin")
+        H = given["angular_momentum"]
+    else:
+        if "spin" not in given:
+            raise InputError("give the rotor's spin (with J, k_axial or a shape) or its "
+                             "angular_momentum", key="given.spin")
+        body.require("J")
+        H = work.step("H", "J spin", f"{qty(body.J, 'kg*m^2')} ({qty(given['spin'], 'rad/s')})",
+                      body.J * given["spin"], "kg m^2/s", ref="angular momentum of the rotor")
+    if H <= 0:
+        raise InputError("the rotor's angular momentum must be positive (spin > 0): a rotor "
+                         "that does not spin senses nothing", key="given.spin")
+    return H
+
+
+def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    H = _angular_momentum(given, work)
+    k = given.get("stiffness")
+    c = given.get("damping")
+    I_g = given.get("gimbal_inertia")
+    for key, value in (("stiffness", k), ("damping", c), ("gimbal_inertia", I_g)):
+        if value is not None and value <= 0:
+            raise InputError(f"{key} must be positive (leave it out if there is none)",
+                             key=f"given.{key}")
+    mode = "spring" if k is not None else "integrating" if c is not None else "rigid"
+    inputs = [key for key in ("rate", "deflection", "moment", "gimbal_rate", "input_angle")
+              if key in given]
+    if len(inputs) != 1:
+        raise InputError("give one input: the case's rate, or a measured deflection, "
+                         "gimbal_rate or moment (or input_angle for a rate-integrating gyro)"
+                         + (f"; got {' and '.join(inputs)}" if inputs else ""),
+                         key=f"given.{inputs[1] if len(inputs) > 1 else 'rate'}")
+    given_key = inputs[0]
+    if given_key == "deflection" and mode == "rigid":
+        raise InputError("a deflection needs a restraining spring (stiffness) or a damper "
+                         "(damping, with input_angle)", key="given.stiffness")
+    if given_key == "deflection" and mode == "integrating":
+        raise InputError("a rate-integrating gyro's deflection measures the angle turned, not "
+                         "the rate: give input_angle, or its gimbal_rate", key="given.deflection")
+    if given_key == "gimbal_rate" and mode != "integrating":
+        raise InputError("a steady gimbal_rate belongs to a rate-integrating gyro (a damper, "
+                         "no spring): give damping and leave out stiffness",
+                         key="given.gimbal_rate")
+    if given_key == "input_angle" and mode != "integrating":
+        raise InputError("input_angle goes with a rate-integrating gyro (damping, no "
+                         "stiffness)", key="given.input_angle")
+
+    work.section("Conventions")
+    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at "
+              "theta = 0; positive senses chosen so that a positive input rate deflects the "
+              "gimbal positively. All results are for small gimbal angles.")
+    work.section("Gimbal equation (Eq. 11.29: Q_theta = J psidot phidot = H Omega)")
+    work.text("I_g thetaddot + c thetadot + k theta = H Omega   (small theta; exactly H Omega "
+              "cos(theta) on the right)")
+    label = {"spring": "spring-restrained rate gyro: steady theta = H Omega / k",
+             "integrating": "rate-integrating gyro (damper, no spring): steady thetadot = "
+                            "H Omega / c, theta = (H / c) * (angle turned)",
+             "rigid": "rigidly restrained rotor: the bearings supply M = H Omega (Eq. 11.29)"}
+    work.text(label[mode])
+
+    work.answer("angular_momentum", "H", [H], "angular_momentum")
+    if given_key == "input_angle":
+        _integrated_angle(given, H, c, I_g, work)
+        _refuse_missing(find, work)
+        return
+    rate = _input_rate(given, given_key, H, k, c, work)
+    work.answer("rate", "Omega", [rate], "rate")
+    M = work.step("M", "H Omega", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')})", H * rate,
+                  "N*m", ref="Eq. 11.29", note="moment about the output axis")
+    work.answer("moment", "M", [M], "moment")
+
+    if mode == "spring":
+        work.section("Spring-restrained: deflection and sensitivity")
+        linear = steady_deflection(H, rate, k)
+        if abs(linear) >= math.pi / 2:
+            exact = large_angle_deflection(H, rate, k)
+            raise InputError(f"H Omega / k = {num(linear / DEG)} deg: the small-angle rate gyro "
+                             "is far outside its range (the gimbal would pass 90 deg); the exact "
+                             f"steady state, k theta = H Omega cos(theta), is {num(exact / DEG)} "
+                             "deg: use a stiffer spring", key="given.rate")
+        theta = work.step("theta", "H Omega / k", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) / "
+                          f"{qty(k, 'N m/rad')}", linear, "rad")
+        work.step("theta", value=theta / DEG, unit="deg")
+        S = work.step("S", "H / k", f"{qty(H, 'kg m^2/s')} / {qty(k, 'N m/rad')}", H / k, "s",
+                      note="deflection per unit rate (rad per rad/s)")
+        work.answer("deflection", "theta", [theta], "angle")
+        work.answer("sensitivity", "S", [S], "time")
+        if abs(theta) > SMALL_ANGLE and given_key != "deflection":
+            exact = large_angle_deflection(H, rate, k)
+            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
+                      f"tilted, k theta = H Omega cos(theta) gives {num(exact / DEG)} deg")
+        work.check(f"k theta = {qty(k * theta, 'N m')} = H Omega = {qty(M, 'N m')}")
+        if I_g is not None:
+            work.section("Dynamics of the gimbal")
+            wn = work.step("omega_n", "sqrt(k / I_g)", f"sqrt({qty(k, 'N m/rad')} / "
+                           f"{qty(I_g, 'kg*m^2')})", natural_frequency(k, I_g), "rad/s")
+            work.step("f_n", "omega_n / (2 pi)", value=wn / (2 * math.pi), unit="Hz")
+            work.answer("natural_frequency", "omega_n", [wn], "rate")
+            if c is not None:
+                zeta = work.step("zeta", "c / (2 sqrt(k I_g))", f"{qty(c, 'N m s/rad')} / (2 "
+                                 f"sqrt({qty(k, 'N m/rad')} {qty(I_g, 'kg*m^2')}))",
+                                 damping_ratio(c, k, I_g), "")
+                work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
+                work.text("zeta near 0.7 lets the reading settle fastest without much overshoot"
+                          if 0.5 <= zeta <= 1 else
+                          "zeta < 0.5: the reading rings before it settles" if zeta < 0.5 else
+                          "zeta > 1: overdamped, the reading creeps up to its value")
+        elif c is not None:
+            work.text("damping given without gimbal_inertia: the damping ratio needs I_g")
+    elif mode == "integrating":
+        work.section("Rate-integrating: gimbal rate and gain")
+        td = work.step("thetadot", "H Omega / c", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) "
+                       f"/ {qty(c, 'N m s/rad')}", gimbal_rate(H, rate, c), "rad/s")
+        gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "",
+                         note="gimbal angle per unit angle turned by the case")
+        work.answer("gimbal_rate", "thetadot", [td], "rate")
+        work.answer("gain", "H/c", [gain], "dimensionless")
+        _time_constant(c, I_g, work)
+        work.check(f"c thetadot = {qty(c * td, 'N m')} = H Omega = {qty(M, 'N m')}")
+    else:
+        work.check(f"M / H = {qty(M / H, 'rad/s')} = Omega")
+    if "gimbal_inertia" in given and mode == "rigid":
+        work.text("gimbal_inertia is not used: a rigid restraint does not move")
+    _refuse_missing(find, work)
+
+
+def _time_constant(c: float, I_g: float | None, work: Work) -> None:
+    if I_g is not None:
+        tau = work.step("tau", "I_g / c", f"{qty(I_g, 'kg*m^2')} / {qty(c, 'N m s/rad')}",
+                        I_g / c, "s", note="time for the gimbal rate to reach its value")
+        work.answer("time_constant", "tau", [tau], "time")
+
+
+def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work: Work) -> None:
+    """Rate-integrating gyro: the gimbal angle for the angle the case turned."""
+    work.section("Rate-integrating: gimbal angle for the angle turned")
+    work.text("integrating c thetadot = H Omega over time: c theta = H phi, phi = integral of "
+              "Omega dt (once the transient, time constant I_g / c, has passed)")
+    gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "")
+    phi = given["input_angle"]
+    theta = work.step("theta", "(H / c) phi", f"({num(gain)}) {qty(phi, 'rad')}", gain * phi,
+                      "rad", note="phi: the angle the case turned")
+    work.step("theta", value=theta / DEG, unit="deg")
+    work.answer("deflection", "theta", [theta], "angle")
+    work.answer("gain", "H/c", [gain], "dimensionless")
+    _time_constant(c, I_g, work)
+    if abs(theta) > SMALL_ANGLE:
+        work.warn(f"the gimbal angle {num(theta / DEG)} deg is not small: the linear relation "
+                  "holds only for small angles")
+    work.check(f"c theta = {qty(c * theta, 'N m s')} = H phi = {qty(H * phi, 'N m s')}")
+
+
+def _refuse_missing(find: frozenset[str], work: Work) -> None:
+    """Name what an asked-for answer needs when the data did not give it."""
+    missing = {"natural_frequency": "stiffness and gimbal_inertia",
+               "damping_ratio": "stiffness, damping and gimbal_inertia",
+               "time_constant": "damping (no stiffness) and gimbal_inertia",
+               "sensitivity": "stiffness", "gain": "damping (no stiffness)",
+               "gimbal_rate": "damping (no stiffness)",
+               "deflection": "stiffness (or damping with input_angle)",
+               "rate": "an input (rate, deflection, moment or gimbal_rate)",
+               "moment": "the input rate"}
+    for name in sorted(find):
+        if name in missing and name not in work.answers:
+            raise InputError(f"{name} needs {missing[name]}", key=f"find.{name}")
+
+
+def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | None,
+                work: Work) -> float:
+    if key == "rate":
+        return given["rate"]
+    work.section("Input rate from the measurement")
+    if key == "deflection":
+        theta = given["deflection"]
+        if abs(theta) >= math.pi / 2:
+            raise InputError(f"a gimbal deflection of {num(theta / DEG)} deg is impossible: at "
+                             "90 deg the spin axis lies along the input axis and no input rate "
+                             "gives a moment about the gimbal axis", key="given.deflection")
+        if abs(theta) > SMALL_ANGLE:
+            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
+                      "tilted, k theta = H Omega cos(theta) gives Omega = "
+                      f"{num(k * theta / (H * math.cos(theta)))} rad/s")
+        return work.step("Omega", "k theta / H", f"{qty(k, 'N m/rad')} ({qty(theta, 'rad')}) / "
+                         f"{qty(H, 'kg m^2/s')}", k * theta / H, "rad/s")
+    if key == "moment":
+        M = given["moment"]
+        return work.step("Omega", "M / H", f"{qty(M, 'N*m')} / {qty(H, 'kg m^2/s')}",
+                         rate_from_moment(H, M), "rad/s", ref="Eq. 11.29")
+    td = given["gimbal_rate"]
+    return work.step("Omega", "c thetadot / H", f"{qty(c, 'N m s/rad')} ({qty(td, 'rad/s')}) "
+                     f"/ {qty(H, 'kg m^2/s')}", c * td / H, "rad/s")
+
+
+KIND = Kind(
+    name="rate_gyro",
+    summary="the gyroscope as a detector of motion: single-gimbal rate gyro with a spring, "
+            "rate-integrating gyro with a damper, or the bearing moment (Eq. 11.29)",
+    chapter="Eqs. 11.27-11.29, the gyroscope as a detector of motion",
+    params=(
+        Param("spin", "rate", "spin", "spin of the rotor (with J, k_axial or a shape)"),
+        Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
+              "(instead of spin and J)"),
+        Param("stiffness", "stiffness", "k", "torsion spring on the gimbal (output) axis"),
+        Param("damping", "damping", "c", "viscous damper on the gimbal axis (alone: a "
+              "rate-integrating gyro)"),
+        Param("gimbal_inertia", "inertia", "I_g", "moment of inertia of gimbal and rotor about "
+              "the gimbal axis"),
+        Param("rate", "rate", "Omega", "input: the case's angular rate about the input axis"),
+        Param("deflection", "angle", "theta", "measured steady gimbal deflection (spring) -> "
+              "the input rate"),
+        Param("moment", "moment", "M", "measured moment about the output axis -> the input "
+              "rate"),
+        Param("gimbal_rate", "rate", "thetadot", "measured steady gimbal rate (rate-integrating)"
+              " -> the input rate"),
+        Param("input_angle", "angle", "phi", "angle the case turned (rate-integrating) -> the "
+              "gimbal angle"),
+    ),
+    answers=(
+        AnswerSpec("rate", "rate", "Omega", "the input rate (given, or from the measurement)"),
+        AnswerSpec("deflection", "angle", "theta", "steady gimbal angle (small angles)"),
+        AnswerSpec("gimbal_rate", "rate", "thetadot", "steady gimbal rate of a rate-integrating "
+                   "gyro"),
+        AnswerSpec("moment", "moment", "M", "moment about the output axis, H Omega"),
+        AnswerSpec("sensitivity", "time", "S", "deflection per unit input rate, H / k (e.g. "
+                   "write s: deg per deg/s)"),
+        AnswerSpec("gain", "dimensionless", "H/c", "rate-integrating: gimbal angle per angle "
+                   "turned (and gimbal rate per input rate)"),
+        AnswerSpec("natural_frequency", "rate", "omega_n", "sqrt(k / I_g) of the gimbal"),
+        AnswerSpec("damping_ratio", "dimensionless", "zeta", "c / (2 sqrt(k I_g))"),
+        AnswerSpec("time_constant", "time", "tau", "rate-integrating: I_g / c"),
+        AnswerSpec("angular_momentum", "angular_momentum", "H", "the rotor's J spin"),
+    ),
+    solve=solve,
+    extra={"example": {
+        "given": {"J": "2e-4 kg m^2", "spin": "24000 rpm", "stiffness": "0.8 N m/rad",
+                  "damping": "0.015 N m s/rad", "gimbal_inertia": "1e-4 kg m^2",
+                  "rate": "5 deg/s"},
+        "find": {"deflection": "deg", "sensitivity": "s", "natural_frequency": "Hz",
+                 "damping_ratio": None},
+        "vary": {"rate": "[0.5, 2]"}}},
+)
