@@ -234,7 +234,7 @@ def kinds() -> None:
     from .render.kinds_list import kinds_text
 
     click.echo(kinds_text(registry, BODY_PARAMS))
-    click.echo("units, as textbooks write them: rpm RPM rev/min r/min rps rev/s rev Hz; "
+    click.echo("Units as textbooks write them: rpm RPM rev/min r/min rps rev/s rev Hz; "
                "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
                "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
                "Nm, kN m (docs/real_problems.md)")
