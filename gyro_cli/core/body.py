@@ -227,3 +227,29 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
                          f"{qty(I_cg, 'kg*m^2')} + {qty(m, 'kg')} ({qty(l, 'm')})^2",
                          I_cg + m * l * l, "kg*m^2", note="(parallel axes, about the fixed point)")
     return None
+
+
+def spin_angular_momentum(given, work: Work) -> float:
+    """A rotor's spin angular momentum H = J psidot, or ``angular_momentum`` as given.
+
+    For the kinds that need only H (gyro drift, the gyrocompass, rate gyros):
+    either the rotor (J, k_axial or a shape) with its spin, or H itself, not both.
+    """
+    if "angular_momentum" in given:
+        for key in ("spin", "J", "k_axial", "shape"):
+            if key in given:
+                raise InputError(f"give angular_momentum, or the rotor ({key}) and its spin, "
+                                 "not both", key=f"given.{key}")
+        H = given["angular_momentum"]
+        work.step("H", value=H, unit="kg m^2/s", note="as given")
+        return H
+    if "spin" not in given:
+        raise InputError("give the rotor's spin (with J, k_axial or a shape), or "
+                         "angular_momentum", key="given.spin")
+    J = given.body.J if given.body is not None else None
+    if J is None:
+        raise InputError("the rotor needs its axial inertia: J, k_axial or a shape (or give "
+                         "angular_momentum)", key="given.J")
+    spin = given["spin"]
+    return work.step("H", "J psidot", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
+                     "kg m^2/s", ref="angular momentum of the rotor, H = J omega_z")

@@ -323,7 +323,7 @@ def _char_value(coeffs, v: float, s: complex) -> complex:
     return sum(a[k] * s ** k for k in range(5)) / a[4]
 
 
-def _share_text(with_spin: "bike.Stability", without: "bike.Stability") -> str:
+def _share_text(with_spin, without) -> str:
     if not with_spin.stable and not without.stable:
         return "neither has a self-stable speed."
     if not without.stable:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import gyro_drift as gd
@@ -54,25 +55,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _momentum(given: Given, work: Work) -> float:
-    body = given.body
     work.section("Spin angular momentum")
-    if "angular_momentum" in given:
-        for key in ("spin", "J", "k_axial", "shape"):
-            if key in given:
-                raise InputError(f"give angular_momentum, or the rotor ({key}) and its spin, "
-                                 "not both", key=f"given.{key}")
-        H = given["angular_momentum"]
-        work.step("H", value=H, unit="kg m^2/s", note="as given")
-    else:
-        if "spin" not in given:
-            raise InputError("give the rotor's spin (with J, k_axial or a shape), or "
-                             "angular_momentum", key="given.spin")
-        if body.J is None:
-            raise InputError("the rotor needs its axial inertia: J, k_axial or a shape (or give "
-                             "angular_momentum)", key="given.J")
-        spin = given["spin"]
-        H = work.step("H", "J psidot", f"{qty(body.J, 'kg m^2')} ({qty(spin, 'rad/s')})",
-                      gd.spin_momentum(body.J, spin), "kg m^2/s", ref="H = J omega_z")
+    H = spin_angular_momentum(given, work)
     if H == 0:
         raise InputError("the rotor must spin: with H = 0 there is no gyroscopic stiffness and "
                          "any moment simply turns it", key="given.spin"

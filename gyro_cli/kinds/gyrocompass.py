@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 
+from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
@@ -29,7 +30,6 @@ POLAR_WARNING_LATITUDE = math.radians(70)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
     lat = given["latitude"]
     if not -math.pi / 2 <= lat <= math.pi / 2:
         raise InputError(f"latitude lies between -90 and 90 deg, got {num(math.degrees(lat))} "
@@ -44,19 +44,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "cos(lat) = 0), so there is no north-seeking moment and no north to "
                          "seek; the period 2 pi sqrt(I_v / (H Omega_E cos(lat))) grows without "
                          "bound toward the pole", key="given.latitude")
-    if "angular_momentum" in given:
-        if "spin" in given:
-            raise InputError("give the rotor's angular_momentum or its spin (with J), not both",
-                             key="given.spin")
-        H = given["angular_momentum"]
-    else:
-        if "spin" not in given:
-            raise InputError("give the rotor's spin (with J, k_axial or a shape) or its "
-                             "angular_momentum", key="given.spin")
-        body.require("J")
-        spin = given["spin"]
-        H = work.step("H", "J spin", f"{qty(body.J, 'kg*m^2')} ({qty(spin, 'rad/s')})",
-                      body.J * spin, "kg m^2/s", ref="angular momentum of the rotor")
+    H = spin_angular_momentum(given, work)
     if H == 0:
         raise InputError("the rotor must spin: with no angular momentum there is no "
                          "north-seeking moment", key="given.spin")

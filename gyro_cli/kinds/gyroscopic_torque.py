@@ -309,7 +309,7 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
     work.step("a", "AG", value=a, unit="m", note="(default: midway)" if "cg_position" not in
               given else "")
     work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
-    work.text(f"up:   F_A + F_B = m (g sin(theta) + a_up);   a F_A - b F_B = M   "
+    work.text("up:   F_A + F_B = m (g sin(theta) + a_up);   a F_A - b F_B = M   "
               "(moments about G along n)")
     work.step("F_A,weight", "m g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
               f"({num(sin)}) {qty(b, 'm')} / {qty(L, 'm')}", forces.weight[0], "N",

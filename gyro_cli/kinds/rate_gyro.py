@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
@@ -30,19 +31,7 @@ DEG = math.pi / 180
 
 
 def _angular_momentum(given: Given, work: Work) -> float:
-    body = given.body
-    if "angular_momentum" in given:
-        if "spin" in given:
-            raise InputError("give the rotor's angular_momentum or its spin (with J), not both",
-                             key="given.spin")
-        H = given["angular_momentum"]
-    else:
-        if "spin" not in given:
-            raise InputError("give the rotor's spin (with J, k_axial or a shape) or its "
-                             "angular_momentum", key="given.spin")
-        body.require("J")
-        H = work.step("H", "J spin", f"{qty(body.J, 'kg*m^2')} ({qty(given['spin'], 'rad/s')})",
-                      body.J * given["spin"], "kg m^2/s", ref="angular momentum of the rotor")
+    H = spin_angular_momentum(given, work)
     if H <= 0:
         raise InputError("the rotor's angular momentum must be positive (spin > 0): a rotor "
                          "that does not spin senses nothing", key="given.spin")

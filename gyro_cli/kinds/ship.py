@@ -120,7 +120,7 @@ def _refuse_foreign(given: Given, motion: str) -> None:
 def _steering(given: Given, work: Work) -> V.Vector:
     for key in ("speed", "turn_radius"):
         if key not in given:
-            raise InputError(f"steering needs speed and turn_radius (omega_p = v / R)",
+            raise InputError("steering needs speed and turn_radius (omega_p = v / R)",
                              key=f"given.{key}")
     v, R = given["speed"], given["turn_radius"]
     if R <= 0:

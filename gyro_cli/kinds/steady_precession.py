@@ -172,7 +172,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
                  "omega_z = psidot + phidot cos(theta)")
     if rate == "spin":
         spin = given["spin"]
-        a, b, c = (J - I) * cos, J * spin, -D
+        a, b = (J - I) * cos, J * spin
         work.text(f"(J - I) cos(theta) phidot^2 + J psidot phidot - {driver} = 0")
         work.text(f"({qty(a, 'kg m^2')}) phidot^2 + ({qty(b, 'kg m^2/s')}) phidot "
                   f"- {qty(D, 'N m')} = 0")
