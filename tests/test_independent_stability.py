@@ -776,13 +776,8 @@ def test_rolling_disk_stability_against_newton_euler(run, write, case):
 SMALL_TILT = [(0.05, 1.0), (0.4, 100.0), (0.1, 500.0), (0.4, 65.0)]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "gyro finds no steady tilt for speed + path_radius when the tilt is below about "
-    "0.022 deg (exit 2, 'no tilt between 0 and 90 deg'), although one exists: the full "
-    "Newton-Euler equations have a root, e.g. 0.02190 deg for a 1-euro coin at 5 cm/s on "
-    "a 1 m circle (unstable, s = 25.11 1/s) and 0.02157 deg at 40 cm/s on 65 m (stable), "
-    "while 40 cm/s on 60 m (0.02336 deg) is found. Nearly straight rolling, the case of "
-    "Routh's upright speed, cannot be stated this way."))
+# Once missed (exit 2, "no tilt between 0 and 90 deg"): the tilt search started at
+# 0.0225 deg; e.g. 0.02190 deg for a 1-euro coin at 5 cm/s on a 1 m circle.
 @pytest.mark.parametrize("v,R", SMALL_TILT, ids=[f"{v}mps-{R}m" for v, R in SMALL_TILT])
 def test_disk_small_tilt_from_speed_and_circle(run, write, v, R):
     m, r, J, IG = _euro_coin()

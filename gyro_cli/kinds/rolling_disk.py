@@ -104,7 +104,10 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
         return free_residual(m, g, r, J, I, tilt, path_radius - r * math.sin(tilt), speed)
 
     n = 4000
-    grid = [top * i / n for i in range(1, n)]
+    # evenly in tilt, and geometrically below the first step (a nearly upright disk on a
+    # large circle tilts by less than 0.02 deg: tan(beta) ~ 3 v^2 / (2 g rho) for a disk)
+    fine = [top / n * 10 ** (-k / 8) for k in range(96, 0, -1)]
+    grid = fine + [top * i / n for i in range(1, n)]
     roots = []
     values = [f(t) for t in grid]
     for (t0, f0), (t1, f1) in zip(zip(grid, values), zip(grid[1:], values[1:])):

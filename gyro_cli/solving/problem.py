@@ -5,7 +5,7 @@ Errors name the file, the key, its YAML line and what was expected.
 
 from __future__ import annotations
 
-import difflib
+
 import os
 from dataclasses import dataclass, field
 from typing import Any
@@ -56,6 +56,8 @@ def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
     options = list(options)
     head = word.split("_")[0]
     family = [o for o in options if "_" in o and o.split("_")[0] == head] if "_" in word else []
+    import difflib
+
     close = difflib.get_close_matches(word, family, n=1, cutoff=0.0) if family else \
         difflib.get_close_matches(word, options, n=1, cutoff=0.6)
     return f"; did you mean {close[0]!r}?" if close else ""
