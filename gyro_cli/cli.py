@@ -41,15 +41,21 @@ def main() -> None:
                    "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
                    "file.")
 @click.option("--force", is_flag=True, help="With --plot: replace FILE if it exists.")
+@click.option("--standalone", is_flag=True,
+              help="With --format latex: a complete document (preamble, title, one section "
+                   "per problem) that pdflatex compiles as it is.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False) -> None:
+          force: bool = False, standalone: bool = False) -> None:
     """Solve problem FILES and print worked answers."""
     from .render import report
     from .solving.solve import solve_file
 
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
+    if standalone and fmt != "latex":
+        fail("--standalone goes with --format latex")
     bad = 0
+    document = []
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
@@ -59,6 +65,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             continue
         if fmt == "json":
             click.echo(report.as_json(result))
+        elif standalone:
+            document.append(result)
         elif fmt in ("markdown", "latex"):
             from .render import writeup
 
@@ -77,6 +85,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
+    if document:
+        from .render import writeup
+
+        click.echo(writeup.standalone(document), nl=False)
     if bad:
         sys.exit(2)
 
