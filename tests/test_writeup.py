@@ -37,7 +37,7 @@ ALLOWED = {
     "times", "arccos", "arcsin", "arctan", "det", "operatorname", "sum", "int", "linewidth",
     "textbar", "textless", "textgreater", "allowbreak", "cosh", "sinh", "tanh", "cot", "sec",
     "csc", "max", "min", "approx", "le", "ge", "iota", "kappa", "nu", "xi", "chi", "zeta", "eta",
-    "epsilon", "Phi", "section", "maketitle", "date", "title", "documentclass", "usepackage",
+    "epsilon", "Phi", "section", "subsubsection", "maketitle", "date", "title", "documentclass", "usepackage",
     "setlength", "parindent", "parskip", "emergencystretch", "allowdisplaybreaks",
 }
 

@@ -41,7 +41,7 @@ RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "C", "M", "F"}
 
 _TOKEN = re.compile(r"""
-    (?P<num>\d+(?:\.\d*)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
+    (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
   | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+(?:,[A-Za-z][A-Za-z0-9]*)?)?)
   | (?P<op>>=|<=|->|>>|<<|\+-|-\+|!=|[-+*/=<>^(),;:.!?'|\[\]~])
   | (?P<space>\s+)
@@ -170,7 +170,7 @@ class _Parser:
         return t.kind == "op" and t.text == "|" and not self.bars
 
     def unary(self) -> Node:
-        if self.at("-", "+"):
+        if self.at("-", "+", "+-", "-+"):
             sign = self.take().text
             return Neg(self.unary(), sign)
         return self.power()
@@ -179,10 +179,14 @@ class _Parser:
         base = self.postfix()
         if self.at("^"):
             self.i += 1
-            if self.at("-"):
-                self.i += 1
-                return Pow(base, Neg(self.power()))
-            return Pow(base, self.power())
+            units, self.units = self.units, False  # no unit in an exponent: sin^2 s
+            try:
+                if self.at("-"):
+                    self.i += 1
+                    return Pow(base, Neg(self.power()))
+                return Pow(base, self.power())
+            finally:
+                self.units = units
         return base
 
     def postfix(self) -> Node:
@@ -227,7 +231,9 @@ class _Parser:
             power = None
             if self.at("^") and name != "sqrt":
                 self.i += 1
+                units, self.units = self.units, False
                 power = self.atom()
+                self.units = units
             if self.at("(") and (not self.peek().space or power is not None or name == "sqrt"):
                 self.i += 1
                 args = self._args(")")
@@ -451,10 +457,14 @@ def spans(text: str, keep_unparsed: bool = False) -> list[tuple[bool, object]]:
         # brackets open or closed outside the maths belong to the sentence
         while core and (core[-1] in "([" or core[-1] in ")]" and _depth(core) < 0):
             tail = core[-1] + tail
-            core = core[:-1].rstrip()
+            core = core[:-1]
+            tail = core[len(core.rstrip()):] + tail
+            core = core.rstrip()
         while core and (core[0] in ")]" or core[0] in "([" and _depth(core) > 0):
             head += core[0]
-            core = core[1:].lstrip()
+            core = core[1:]
+            head += core[: len(core) - len(core.lstrip())]
+            core = core.lstrip()
         tree = try_parse(core) if core else None
         if tree is None and core:
             # a run that does not parse: the longest pieces of it that do, the rest prose
@@ -466,10 +476,11 @@ def spans(text: str, keep_unparsed: bool = False) -> list[tuple[bool, object]]:
                 found = None
                 if words[i].strip():
                     for j in range(len(words), i, -1):
+                        if not words[j - 1].strip():
+                            continue  # the space after a piece stays in the sentence
                         piece = "".join(words[i:j]).strip()
                         sub = try_parse(piece) if piece else None
-                        if sub is not None and not (isinstance(sub, Num) and j == i + 1
-                                                    and False):
+                        if sub is not None:
                             found = (j, sub)
                             break
                 if found is None:
@@ -543,21 +554,16 @@ def _classify(toks: list[Token]) -> list[bool]:
                 sub = [x for x in toks[j:] if x.kind != "space"]
                 # unit_run works on tokens without spaces; count spaced tokens back
                 run = unit_run([Token("num", t.text, False)] + sub, 1) if sub else 0
-                if run:
-                    cnt, seen = 0, 0
-                    for x in toks[k + 1:]:
-                        cnt += 1
-                        if x.kind != "space":
-                            seen += 1
-                            if seen == run:
-                                break
-                    unit_left = cnt
+                unit_left = run
         elif t.kind == "op" and t.text in "([":
             depth += 1
             classes.append(True)
         elif t.kind == "op" and t.text in ")]":
             depth -= 1
             classes.append(True)
+        elif t.kind == "op" and t.text == "." and t.space and after is not None \
+                and after.space and before is not None and before.kind != "op":
+            classes.append(True)  # omega . H: a dot product
         elif t.kind == "op" and t.text in (",", ";", ":", ".", "?", "!"):
             spaced_after = after is None or k + 1 < len(toks) and toks[k + 1].kind == "space"
             classes.append(depth > 0 and t.text == "," or not spaced_after and t.text == ".")

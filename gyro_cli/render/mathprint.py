@@ -225,7 +225,7 @@ class LatexPrinter(Printer):
         inner = self._print(body) if isinstance(body, (Num, Quantity)) else \
             self.parenthesize(body, PRECEDENCE["Neg"]) if not isinstance(body, Neg) \
             else self.brackets(self._print(body))
-        return node.sign + inner
+        return SUM_TEX[node.sign].replace("\\pm", "\\pm ").replace("\\mp", "\\mp ") + inner
 
     def _print_BinOp(self, node: BinOp) -> str:
         op = node.op
@@ -238,7 +238,13 @@ class LatexPrinter(Printer):
                 rtext = self.brackets(rtext)
             return f"{left} {SUM_TEX[op]} {rtext}"
         if op == "/" and self.display:
-            return f"\\frac{{{self._print(_strip(node.left))}}}{{{self._print(_strip(node.right))}}}"
+            # a fraction inside a fraction is written on the line: a/b
+            self.display = False
+            try:
+                num, den = self._print(_strip(node.left)), self._print(_strip(node.right))
+            finally:
+                self.display = True
+            return f"\\frac{{{num}}}{{{den}}}"
         left = self.parenthesize(node.left, PRECEDENCE["*"])
         right = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
         if isinstance(node.right, Neg):

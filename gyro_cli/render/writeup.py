@@ -20,7 +20,7 @@ import re
 
 from ..core.work import num
 from ..solving.solve import Result
-from .mathparse import spans, try_parse, tokens
+from .mathparse import is_symbol_name, spans, try_parse
 from .mathprint import (LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex,
                         UNICODE_MATH)
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
@@ -174,7 +174,7 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
         line, first = prefix, True
         used = width(piece) - width(inner)
         for sign, term in terms:
-            text = printer.doprint(BinOp(sign, Num("0"), term))[4:] if sign else \
+            text = printer.doprint(BinOp(sign, Num("0"), term))[2:] if sign else \
                 printer.doprint(term)
             w = width(term) + 3
             if line.strip() and line != prefix and used + w > budget:
@@ -221,7 +221,7 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
         notes.append(step.text)
     note = " ".join(notes)
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
-    short_note = note and len(note) <= 24 and total + len(note) + 4 <= WIDTH
+    short_note = note and len(note) <= 48 and total + len(note) + 4 <= WIDTH
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
     else:
@@ -343,8 +343,8 @@ def markdown(result: Result) -> str:
     lines += ["### Given", "", "| | as given | SI |", "|---|---|---|"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"| ${symbol_tex(g.symbol)}$ | "
-                     f"{_md_cell(g.text)}{_md_cell(note)} | ${_si(g)}$ |")
+        lines.append(f"| ${math(g.symbol, units=False)}$ | "
+                     f"{_md_cell(_prose(g.text + note, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_prose(section.title, True)}", ""]
         lines += _steps(section.steps, True)
@@ -353,7 +353,7 @@ def markdown(result: Result) -> str:
         lines += _steps(solution.checks, True)
     lines += ["", "### Answer", ""]
     for name, answer in result.answers.items():
-        parts = [f"${symbol_tex(answer.symbol)} = {body}$" + (f" ({label})" if label else "")
+        parts = [f"${math(answer.symbol, units=False)} = {body}$" + (f" ({label})" if label else "")
                  for body, label in _answer_parts(answer)]
         lines.append(f"- **{name}**: " + ", ".join(parts))
     if solution.warnings:
@@ -379,33 +379,33 @@ def latex(result: Result, level: str = "subsection*") -> str:
     lines = ["% gyro solve --format latex: paste into a document that loads amsmath"
              if level == "subsection*" else f"% {problem.id}",
              f"\\{level}{{{text_escape(title)}}}"]
-    meta = text_escape(f"Kind: {problem.kind.name}.")
+    meta = text_escape(f"Kind: {problem.kind.name.replace('_', ' ')}.")
     if problem.source:
         meta += " Source: " + _breakable(_prose(problem.source, False))
     lines.append("\\textit{" + meta + "}")
     for note in problem.notes:
         lines += ["", _prose(note, False)]
-    lines += ["", "\\paragraph{Given.}", "", "\\begin{tabular}{@{}lp{0.5\\linewidth}l@{}}",
+    lines += ["", "\\subsubsection*{Given}", "", "\\begin{tabular}{@{}lp{0.5\\linewidth}l@{}}",
               "& as given & SI \\\\ \\hline"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"${symbol_tex(g.symbol)}$ & {text_escape(g.text + note)} & ${_si(g)}$ \\\\")
+        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(g.text + note, False)} & ${_si(g)}$ \\\\")
     lines.append("\\end{tabular}")
     for section in solution.sections:
-        lines += ["", f"\\paragraph{{{_prose(section.title, False)}.}}", ""]
+        lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
         lines += _steps(section.steps, False)
     if solution.checks:
-        lines += ["", "\\paragraph{Check.}", ""]
+        lines += ["", "\\subsubsection*{Check}", ""]
         lines += _steps(solution.checks, False)
-    lines += ["", "\\paragraph{Answer.}", "", "\\begin{itemize}"]
+    lines += ["", "\\subsubsection*{Answer}", "", "\\begin{itemize}"]
     for name, answer in result.answers.items():
-        parts = [f"${symbol_tex(answer.symbol)} = {body}$" + (f" ({text_escape(label)})"
-                                                              if label else "")
-                 for body, label in _answer_parts(answer)]
-        lines.append(f"  \\item \\textbf{{{text_escape(name)}}}: " + ", ".join(parts))
+        parts = [f"${math(answer.symbol, units=False)} = {body}$" + (
+            f" ({text_escape(label)})" if label else "") for body, label in _answer_parts(answer)]
+        head = "" if is_symbol_name(name) else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
+        lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
-        lines += ["", "\\paragraph{Warnings.}", "", "\\begin{itemize}"]
+        lines += ["", "\\subsubsection*{Warnings}", "", "\\begin{itemize}"]
         lines += [f"  \\item {_prose(w, False)}" for w in solution.warnings]
         lines.append("\\end{itemize}")
     return _squeeze("\n".join(lines)) + "\n"
