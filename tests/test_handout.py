@@ -1,0 +1,218 @@
+"""Solution sheets: the formula parser, its printers, the standalone document, the README.
+
+Expected strings are written out by hand for each construct of the formula
+language, in the plain text the kinds write and in LaTeX (the Markdown write-up
+puts the same LaTeX between $ signs). The standalone document is compiled with
+pdflatex when it is installed (`make handout` says how) and the text pdftotext
+extracts from it must hold no raw identifier of the plain form.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from gyro_cli.render.mathparse import parse, spans, try_parse
+from gyro_cli.render.mathprint import latex, symbol_tex, text
+from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Neg, Num, Pow,
+                                      Quantity, Rel, Sym)
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
+
+# (plain text as a kind writes it, canonical plain text, LaTeX inline, LaTeX display)
+CONSTRUCTS = [
+    ("m g l sin(theta)", "m g l sin(theta)", r"m g l \sin \theta", r"m g l \sin \theta"),
+    ("2 sqrt((I - J) D cos(theta)) / J", "2 sqrt((I - J) D cos(theta)) / J",
+     r"2 \sqrt{(I - J) D \cos \theta}/J", r"\frac{2 \sqrt{(I - J) D \cos \theta}}{J}"),
+    ("phidot sin(theta) (J omega_z - I phidot cos(theta))",
+     "phidot sin(theta) (J omega_z - I phidot cos(theta))",
+     r"\dot{\phi} \sin \theta (J \omega_{z} - I \dot{\phi} \cos \theta)",
+     r"\dot{\phi} \sin \theta (J \omega_{z} - I \dot{\phi} \cos \theta)"),
+    ("0.08498 kg (9.815 m/s^2) (0.03810 m) sin(30.00 deg)",
+     "0.08498 kg (9.815 m/s^2) (0.03810 m) sin(30.00 deg)",
+     r"0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}}) (0.03810\,\mathrm{m}) \sin 30.00^{\circ}",
+     r"0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}}) (0.03810\,\mathrm{m}) \sin 30.00^{\circ}"),
+    ("n = K x k / sin(theta)", "n = K x k / sin(theta)", r"n = K \times k/\sin \theta",
+     r"n = \frac{K \times k}{\sin \theta}"),
+    ("|dH/dt| = |Omega| |K x H|", "|dH / dt| = |Omega| |K x H|",
+     r"\lvert \mathrm{d}H/\mathrm{d}t\rvert = \lvert \Omega\rvert \lvert K \times H\rvert",
+     r"\left|\frac{\mathrm{d}H}{\mathrm{d}t}\right| = \lvert \Omega\rvert \lvert K \times H\rvert"),
+    ("gamma^2 >> a", "gamma^2 >> a", r"\gamma^{2} \gg a", r"\gamma^{2} \gg a"),
+    ("theta_max -> theta_min", "theta_max -> theta_min",
+     r"\theta_{\mathrm{max}} \to \theta_{\mathrm{min}}",
+     r"\theta_{\mathrm{max}} \to \theta_{\mathrm{min}}"),
+    ("psidot >= psidot_min", "psidot >= psidot_min", r"\dot{\psi} \ge \dot{\psi}_{\mathrm{min}}",
+     r"\dot{\psi} \ge \dot{\psi}_{\mathrm{min}}"),
+    ("theta0 + theta_0 + u1 + P2", "theta0 + theta_0 + u1 + P2",
+     r"\theta_{0} + \theta_{0} + u_{1} + P_{2}", r"\theta_{0} + \theta_{0} + u_{1} + P_{2}"),
+    ("T = 2 int_u1^u2 du/sqrt(f(u))", "T = 2 int_u1^u2 du / sqrt(f(u))",
+     r"T = 2 \int_{u_{1}}^{u_{2}} \mathrm{d}u/\sqrt{f(u)}",
+     r"T = 2 \int_{u_{1}}^{u_{2}} \frac{\mathrm{d}u}{\sqrt{f(u)}}"),
+    ("g = 32.2 ft/s^2", "g = 32.2 ft/s^2", r"g = 32.2\,\mathrm{ft/s^{2}}",
+     r"g = 32.2\,\mathrm{ft/s^{2}}"),
+    ("188.5 rad/s + -2.094 rad/s (0.8660)", "188.5 rad/s - 2.094 rad/s (0.8660)",
+     r"188.5\,\mathrm{rad/s} - 2.094\,\mathrm{rad/s}\,(0.8660)",
+     r"188.5\,\mathrm{rad/s} - 2.094\,\mathrm{rad/s}\,(0.8660)"),
+    ("-(-2.781 N m) / 0.2000 m", "-(-2.781 N m) / (0.2000 m)",
+     r"-(-2.781\,\mathrm{N\,m})/(0.2000\,\mathrm{m})",
+     r"\frac{-(-2.781\,\mathrm{N\,m})}{0.2000\,\mathrm{m}}"),
+    ("(1995) u^2 + (-954.0)", "(1995) u^2 - 954.0", r"(1995) u^{2} - 954.0",
+     r"(1995) u^{2} - 954.0"),
+    ("sin^2(theta0) thetadot0^2", "sin^2(theta0) thetadot0^2",
+     r"\sin^{2} \theta_{0} {\dot{\theta}_{0}}^{2}", r"\sin^{2} \theta_{0} {\dot{\theta}_{0}}^{2}"),
+    ("3.869e-05 kg m^2", "3.869e-05 kg m^2", r"3.869\times 10^{-5}\,\mathrm{kg\,m^{2}}",
+     r"3.869\times 10^{-5}\,\mathrm{kg\,m^{2}}"),
+    ("atan2(|omega x H|, omega . H)", "atan2(|omega x H|, omega . H)",
+     r"\operatorname{atan2}(\lvert \omega \times H\rvert, \omega \cdot H)",
+     r"\operatorname{atan2}(\lvert \omega \times H\rvert, \omega \cdot H)"),
+    ("f(+-1) = -(beta -+ gamma)^2", "f(+-1) = -(beta -+ gamma)^2",
+     r"f(\pm 1) = -(\beta \mp \gamma)^{2}", r"f(\pm 1) = -(\beta \mp \gamma)^{2}"),
+    ("M q'' + v C1 q'", "M q'' + v C1 q'", r"M q'' + v C_{1} q'", r"M q'' + v C_{1} q'"),
+    ("sum I_w - G sum I_E", "sum I_w - G sum I_E", r"\sum I_{w} - G \sum I_{E}",
+     r"\sum I_{w} - G \sum I_{E}"),
+    ("Pi(n1|m)", "Pi(n1 | m)", r"\Pi(n_{1} \mid m)", r"\Pi(n_{1} \mid m)"),
+]
+
+
+@pytest.mark.parametrize("source, plain, inline, display", CONSTRUCTS)
+def test_each_construct_in_text_and_latex(source, plain, inline, display):
+    tree = parse(source)
+    assert text(tree) == plain
+    assert latex(tree, display=False) == inline
+    assert latex(tree, display=True) == display
+    # the plain form reads back to the same print
+    assert text(parse(plain)) == plain
+
+
+def test_trees_by_hand():
+    assert parse("m g l sin(theta)", units=False) == BinOp(
+        " ", BinOp(" ", BinOp(" ", Sym("m"), Sym("g")), Sym("l")),
+        Call("sin", (Sym("theta"),)))
+    # a / b c is (a / b) c, as the chapter writes gamma^2/a cos(theta0)
+    assert parse("a / b c", units=False) == BinOp(" ", BinOp("/", Sym("a"), Sym("b")), Sym("c"))
+    assert parse("M^-1") == Pow(Sym("M"), Neg(Num("1")))
+    assert parse("9.815 m/s^2") == Quantity(Num("9.815"), "m/s^2")
+    assert parse("2 m g l") == BinOp(" ", BinOp(" ", BinOp(" ", Num("2"), Sym("m")), Sym("g")),
+                                     Sym("l"))  # not two metres
+    assert parse("357.8 1/s^2") == Quantity(Num("357.8"), "1/s^2")
+    assert parse("|K x H|") == Abs(BinOp("x", Sym("K"), Sym("H")))
+    # x between symbols that are not vectors is a distance: m g x R
+    assert parse("g x R") == BinOp(" ", BinOp(" ", Sym("g"), Sym("x")), Sym("R"))
+    assert parse("= 1") == Rel(None, (("=", Num("1")),))
+    assert parse("int_u1^u2 du") == Integral(Sym("u1"), Sym("u2"), Sym("du"))
+    assert parse("cos theta0 - cos theta") == BinOp(
+        "-", Call("cos", (Sym("theta0"),), parens=False), Call("cos", (Sym("theta"),),
+                                                                parens=False))
+    assert parse("(a)") == Group("(", Sym("a"))
+    for prose in ("the axis falls", "a complex pair", "(gyroscopic: false)", "x = (", ""):
+        assert try_parse(prose) is None
+
+
+def test_symbol_names():
+    assert symbol_tex("theta_0") == symbol_tex("theta0") == r"\theta_{0}"
+    assert symbol_tex("u1") == "u_{1}" and symbol_tex("P2") == "P_{2}"
+    assert symbol_tex("phidot") == r"\dot{\phi}" and symbol_tex("thetaddot") == r"\ddot{\theta}"
+    assert symbol_tex("psidot_min") == r"\dot{\psi}_{\mathrm{min}}"
+    assert symbol_tex("F_A,weight") == r"F_{A,\mathrm{weight}}"
+    assert symbol_tex("omega_p,max") == r"\omega_{p,\mathrm{max}}"
+    assert symbol_tex("K0_pp") == r"K_{0,\mathrm{pp}}"
+    assert symbol_tex("dH_O") == r"\mathrm{d}H_{O}" and symbol_tex("dtheta") == r"\mathrm{d}\theta"
+    assert symbol_tex("m_s") == "m_{s}" and symbol_tex("Omega") == r"\Omega"
+
+
+def test_prose_is_split_by_the_parser():
+    got = spans("real roots exist because psidot >= psidot_min = 101.1 rad/s (Eq. 11.21)")
+    assert got[0] == (False, "real roots exist because ")
+    assert got[1][0] and text(got[1][1]) == "psidot >= psidot_min = 101.1 rad/s"
+    assert got[2] == (False, " (Eq. 11.21)")
+    # "a" the article is prose, "a" the symbol is maths; hyphenated words stay words
+    assert spans("a complex pair") == [(False, "a complex pair")]
+    assert [p for m, p in spans("Euler angles z-x-z; theta from") if not m][0] == \
+        "Euler angles z-x-z; "
+    assert text(spans("up: a F_A - b F_B = M")[1][1]) == "a F_A - b F_B = M"
+
+
+def _markdown(run, path) -> str:
+    result = run("solve", "--format", "markdown", path)
+    assert result.exit_code == 0, result.output
+    return result.stdout
+
+
+def test_markdown_has_no_raw_signs_or_names(run):
+    for path in PROBLEMS:
+        md = _markdown(run, path)
+        maths = " ".join(re.findall(r"\$\$(.*?)\$\$|\$([^$]*)\$", md, re.S).__str__())
+        assert "--" not in maths.replace("---", ""), path
+        assert "+ -" not in maths and "+ (-" not in maths, path
+        assert r"\mathrm{theta" not in md and r"\mathrm{phidot" not in md, path
+        assert "sqrt(" not in maths, path
+
+
+def test_markdown_and_text_of_the_same_step(run, problems_dir):
+    """11/3: the moment step in the text report and in Markdown, written out by hand."""
+    path = problems_dir / "11_3.yaml"
+    out = run("solve", path).stdout
+    assert ("  M = m g l sin(theta) = 0.08498 kg (9.815 m/s^2) (0.03810 m) sin(30.00 deg) = "
+            "0.01589 N m    (Eq. 11.11, gravity)") in out
+    md = _markdown(run, path)
+    assert (r"$$ \begin{aligned}" "\n" r"M &= m g l \sin \theta \\" "\n"
+            r" &= 0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}}) (0.03810\,\mathrm{m}) "
+            r"\sin 30.00^{\circ} \\" "\n" r" &= 0.01589\,\mathrm{N\,m}" "\n"
+            r"\end{aligned} $$") in md
+    assert "(Eq. 11.11, gravity)" in md
+
+
+def test_standalone_is_a_whole_document(run):
+    result = run("solve", "--format", "latex", "--standalone", PROBLEMS[0], PROBLEMS[1])
+    assert result.exit_code == 0
+    tex = result.stdout
+    assert tex.startswith(r"\documentclass") and tex.rstrip().endswith(r"\end{document}")
+    assert tex.count(r"\section{") == 2
+    assert r"\tag{11.8}" in tex  # omega_z = psidot + phidot cos(theta), numbered as the chapter
+    bad = run("solve", "--standalone", PROBLEMS[0])
+    assert bad.exit_code == 2 and "--format latex" in bad.stderr
+
+
+RAW = re.compile(r"phidot|psidot|thetadot|theta0|theta_|sqrt|\^|_")
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
+                    reason="pdflatex/pdftotext not installed (see `make handout`)")
+def test_every_bundled_problem_compiles_clean(run, tmp_path):
+    result = run("solve", "--format", "latex", "--standalone", *PROBLEMS)
+    assert result.exit_code == 0, result.output
+    doc = tmp_path / "handout.tex"
+    doc.write_text(result.stdout)
+    done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", doc.name],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-3000:]
+    log = (tmp_path / "handout.log").read_text(errors="replace")
+    overfull = re.findall(r"Overfull \\hbox.*", log)
+    assert overfull == []
+    subprocess.run(["pdftotext", "handout.pdf", "handout.txt"], cwd=tmp_path, check=True)
+    words = (tmp_path / "handout.txt").read_text(errors="replace")
+    assert RAW.findall(words) == []
+
+
+def test_readme_sample_is_the_real_output(run):
+    readme = (ROOT / "README.md").read_text()
+    block = re.search(r"`gyro solve problems/11_3.yaml` prints:\n\n```\n(.*?)```", readme, re.S)
+    assert block, "the README's sample block is missing"
+    assert block.group(1) == run("solve", ROOT / "problems" / "11_3.yaml").stdout
+
+
+def test_solve_text_and_json_do_not_load_the_typesetting():
+    code = ("import sys; from click.testing import CliRunner; from gyro_cli.cli import main; "
+            "r = CliRunner().invoke(main, ['solve', '--format', 'json', sys.argv[1]]); "
+            "r2 = CliRunner().invoke(main, ['solve', sys.argv[1]]); "
+            "print(sorted(m for m in sys.modules if 'mathparse' in m or 'mathprint' in m "
+            "or 'writeup' in m))")
+    out = subprocess.run([sys.executable, "-c", code, str(ROOT / "problems" / "11_3.yaml")],
+                         capture_output=True, text=True, timeout=120)
+    assert out.stdout.strip() == "[]", out.stderr
