@@ -44,8 +44,12 @@ def main() -> None:
 @click.option("--standalone", is_flag=True,
               help="With --format latex: a complete document (preamble, title, one section "
                    "per problem) that pdflatex compiles as it is.")
+@click.option("--units", "system", type=click.Choice(("si", "us")), default="si",
+              show_default=True,
+              help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
+                   "the file gives no unit for), as US textbooks do.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False, standalone: bool = False) -> None:
+          force: bool = False, standalone: bool = False, system: str = "si") -> None:
     """Solve problem FILES and print worked answers."""
     from .render import report
     from .solving.solve import solve_file
@@ -63,6 +67,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             click.echo(f"gyro: {err}", err=True)
             bad += 1
             continue
+        if system == "us":
+            from .render.us_units import to_us
+
+            result = to_us(result)
         if fmt == "json":
             click.echo(report.as_json(result))
         elif standalone:

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 
+from gyro_cli.core.work import num
 from gyro_cli.render.mathparse import parse, spans, try_parse
 from gyro_cli.render.mathprint import latex, symbol_tex, text
 from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Neg, Num, Pow,
@@ -216,3 +217,34 @@ def test_solve_text_and_json_do_not_load_the_typesetting():
     out = subprocess.run([sys.executable, "-c", code, str(ROOT / "problems" / "11_3.yaml")],
                          capture_output=True, text=True, timeout=120)
     assert out.stdout.strip() == "[]", out.stderr
+
+
+def test_us_units_work_the_problem_in_slug_ft_lbf(run, problems_dir):
+    """11/3 by hand in US units: W = 3 oz = 0.1875 lbf, g = 32.2 ft/s^2, k_z = 0.84 in =
+    0.07 ft, k_O = 1.80 in = 0.15 ft, l = 1.5 in = 0.125 ft."""
+    out = run("solve", "--units", "us", problems_dir / "11_3.yaml").stdout
+    W, g, kz, kO, l = 3 / 16, 32.2, 0.84 / 12, 1.80 / 12, 1.5 / 12
+    m = W / g
+    assert f"m = W / g = 0.1875 lbf / (32.20 ft/s^2) = {m:.4g} slug" in out
+    assert f"J = m k_z^2 = {num(m)} slug (0.07000 ft)^2 = {num(m * kz ** 2)} slug ft^2" in out
+    assert f"I = m k_O^2 = {num(m)} slug (0.1500 ft)^2 = {num(m * kO ** 2)} slug ft^2" in out
+    assert f"= {num(W * l * 0.5)} lbf ft    (Eq. 11.11, gravity)" in out
+    assert "Given                           US" in out
+    assert " kg" not in out and " N m" not in out
+    # the answers the file asks for in rpm stay in rpm; rates are the same in both systems
+    assert "precession  phidot = 45.13 rpm (slow)   533.5 rpm (fast)" in out
+    si = run("solve", problems_dir / "11_3.yaml").stdout
+    assert "Given                           SI" in si and "0.08498 kg" in si
+    assert run("solve", "--units", "us", "--format", "json",
+               problems_dir / "11_3.yaml").exit_code == 0
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_us_units_sheet_compiles(run, tmp_path, problems_dir):
+    result = run("solve", "--units", "us", "--format", "latex", "--standalone",
+                 problems_dir / "11_3.yaml", problems_dir / "11_5.yaml")
+    (tmp_path / "us.tex").write_text(result.stdout)
+    done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "us.tex"],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stdout[-2000:]
+    assert "slug" in result.stdout and "Overfull" not in (tmp_path / "us.log").read_text()

@@ -118,6 +118,7 @@ class Solution:
     answers: dict[str, Answer]
     warnings: list[str]
     checks: list[Step] = field(default_factory=list)
+    system: str = "SI"  # the units of the steps: "SI", or "US" (slug, ft, lbf) on request
 
 
 class Work:

@@ -340,7 +340,7 @@ def markdown(result: Result) -> str:
     lines += ["*" + ". ".join(meta) + ".*", ""]
     for note in problem.notes:
         lines += [f"> {_prose(note, True)}", ""]
-    lines += ["### Given", "", "| | as given | SI |", "|---|---|---|"]
+    lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
         lines.append(f"| ${math(g.symbol, units=False)}$ | "
@@ -386,7 +386,7 @@ def latex(result: Result, level: str = "subsection*") -> str:
     for note in problem.notes:
         lines += ["", _prose(note, False)]
     lines += ["", "\\subsubsection*{Given}", "", "\\begin{tabular}{@{}lp{0.5\\linewidth}l@{}}",
-              "& as given & SI \\\\ \\hline"]
+              f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
         lines.append(f"${math(g.symbol, units=False)}$ & {_prose(g.text + note, False)} & ${_si(g)}$ \\\\")
