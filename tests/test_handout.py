@@ -165,8 +165,9 @@ def test_markdown_and_text_of_the_same_step(run, problems_dir):
     assert (r"$$ \begin{aligned}" "\n" r"M &= m g l \sin \theta \\" "\n"
             r" &= 0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}}) (0.03810\,\mathrm{m}) "
             r"\sin 30.00^{\circ} \\" "\n" r" &= 0.01589\,\mathrm{N\,m}" "\n"
-            r"\end{aligned} $$") in md
-    assert "(Eq. 11.11, gravity)" in md
+            r"\end{aligned} \qquad \text{(gravity)} \qquad \text{(11.11)} $$") in md
+    tex = run("solve", "--format", "latex", path).stdout
+    assert r"\end{aligned} \qquad \text{(gravity)} \tag{11.11}" in tex
 
 
 def test_standalone_is_a_whole_document(run):

@@ -403,6 +403,7 @@ def is_symbol_name(name: str) -> bool:
     return stem[0] == "d" and len(stem) > 1 and _symbolic(stem[1:]) and stem not in WORDS_D
 
 
+UPPER_WORDS = {"US", "SI", "UK", "PDF", "CSV", "JSON", "YAML", "OK", "NB"}
 WORDS_D = {"do", "dip", "die", "dies", "due", "down", "deg", "dot", "ddot"}
 
 
@@ -412,6 +413,8 @@ def _symbolic(rest: str) -> bool:
 
 def is_word(name: str) -> bool:
     """An English word (``because``, ``the``) rather than a symbol."""
+    if name in UPPER_WORDS:
+        return True
     if name in FUNCTIONS or name in GREEK or name.isupper() or name == "sum":
         return False
     if is_symbol_name(name):
@@ -465,6 +468,12 @@ def spans(text: str, keep_unparsed: bool = False) -> list[tuple[bool, object]]:
             core = core[1:]
             head += core[: len(core) - len(core.lstrip())]
             core = core.lstrip()
+        # a bracketed aside, "(psidot)": the brackets are the sentence's
+        if len(core) > 2 and core[0] == "(" and core[-1] == ")" and _depth(core[1:-1]) == 0 \
+                and core[1:-1].count("(") == core[1:-1].count(")"):
+            inner = try_parse(core[1:-1])
+            if inner is not None and not isinstance(inner, (BinOp, Neg)):
+                head, core, tail = head + "(", core[1:-1], ")" + tail
         tree = try_parse(core) if core else None
         if tree is None and core:
             # a run that does not parse: the longest pieces of it that do, the rest prose

@@ -31,7 +31,7 @@ __all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "s
 #: the page of `standalone` is 17 cm, about 480 pt
 WIDTH = 64
 
-_EQ = re.compile(r"^Eq\. (\d+\.\d+)$")
+_EQ = re.compile(r"^Eq\. (\d+\.\d+)(?:, (.+))?$")
 
 
 # ---- formulas ---------------------------------------------------------------
@@ -202,9 +202,10 @@ def _step_pieces(step) -> tuple[Node | None, list[Node]]:
     return lhs, pieces
 
 
-def _tag(step) -> str:
+def _tag(step) -> tuple[str, str]:
+    """The chapter's equation number a step cites, and the rest of its reference."""
     m = _EQ.match(step.ref or "")
-    return m.group(1) if m else ""
+    return (m.group(1), m.group(2) or "") if m else ("", step.ref or "")
 
 
 def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
@@ -213,15 +214,17 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     printer = LatexPrinter(True)
     left = printer.doprint(lhs)
     after = []
-    tag = _tag(step)
+    tag, rest = _tag(step)
     notes = []
-    if step.ref and not tag:
-        notes.append(f"({step.ref})")
+    if rest:
+        notes.append(f"({rest})")
     if step.text:
         notes.append(step.text)
     note = " ".join(notes)
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
-    short_note = note and len(note) <= 48 and total + len(note) + 4 <= WIDTH
+    widest = total if total <= WIDTH else \
+        max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
+    short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
     else:
