@@ -38,7 +38,7 @@ ALLOWED = {
     "textbar", "textless", "textgreater", "allowbreak", "cosh", "sinh", "tanh", "cot", "sec",
     "csc", "max", "min", "approx", "le", "ge", "iota", "kappa", "nu", "xi", "chi", "zeta", "eta",
     "epsilon", "Phi", "section", "subsubsection", "maketitle", "date", "title", "documentclass", "usepackage",
-    "setlength", "parindent", "parskip", "emergencystretch", "allowdisplaybreaks",
+    "setlength", "parindent", "longtable", "parskip", "emergencystretch", "allowdisplaybreaks",
 }
 
 

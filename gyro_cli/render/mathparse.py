@@ -215,6 +215,12 @@ class _Parser:
 
     def _number(self, t: Token) -> Node:
         node = Num(t.text)
+        nxt, after = self.peek(), self.peek(1)
+        if nxt is not None and nxt.kind == "name" and nxt.text == "i" and (
+                after is None or after.kind == "op" or after.kind == "num"
+                and after.text == "1" or after.kind == "name" and after.text in UNITS):
+            self.i += 1  # an imaginary part: 4.46 i, 3.07911i
+            node = Num(t.text + "i")
         if self.units:
             n = unit_run(self.toks, self.i)
             if n:

@@ -158,6 +158,8 @@ def symbol_tex(name: str) -> str:
 
 def number_tex(text: str) -> str:
     """``3.869e-05`` -> ``3.869\\times 10^{-5}``."""
+    if text.endswith("i"):
+        return number_tex(text[:-1]) + r"\,\mathrm{i}"
     mantissa, _, exponent = text.lower().partition("e")
     if not exponent:
         return text

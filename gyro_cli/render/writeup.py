@@ -388,12 +388,14 @@ def latex(result: Result, level: str = "subsection*") -> str:
     lines.append("\\textit{" + meta + "}")
     for note in problem.notes:
         lines += ["", _prose(note, False)]
-    lines += ["", "\\subsubsection*{Given}", "", "\\begin{tabular}{@{}lp{0.5\\linewidth}l@{}}",
+    # a whole document may break a long table over pages; a fragment needs amsmath only
+    table = "longtable" if level == "section" else "tabular"
+    lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
         lines.append(f"${math(g.symbol, units=False)}$ & {_prose(g.text + note, False)} & ${_si(g)}$ \\\\")
-    lines.append("\\end{tabular}")
+    lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
         lines += _steps(section.steps, False)
@@ -404,7 +406,7 @@ def latex(result: Result, level: str = "subsection*") -> str:
     for name, answer in result.answers.items():
         parts = [f"${math(answer.symbol, units=False)} = {body}$" + (
             f" ({text_escape(label)})" if label else "") for body, label in _answer_parts(answer)]
-        head = "" if is_symbol_name(name) else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
+        head = "" if is_symbol_name(name) or name == answer.symbol else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
         lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
@@ -417,6 +419,7 @@ def latex(result: Result, level: str = "subsection*") -> str:
 PREAMBLE = r"""\documentclass[10pt]{article}
 \usepackage[a4paper,margin=2cm]{geometry}
 \usepackage{amsmath}
+\usepackage{longtable}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5ex}
 \emergencystretch=3em
