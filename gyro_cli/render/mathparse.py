@@ -421,7 +421,7 @@ def is_word(name: str) -> bool:
     """An English word (``because``, ``the``) rather than a symbol."""
     if name in UPPER_WORDS:
         return True
-    if name in FUNCTIONS or name in GREEK or name.isupper() or name == "sum":
+    if name in FUNCTIONS or name in GREEK or name.isupper():
         return False
     if is_symbol_name(name):
         return False
@@ -528,6 +528,7 @@ def _classify(toks: list[Token]) -> list[bool]:
         return toks[sig[n]] if 0 <= n < len(sig) else None
 
     depth = 0
+    last_ref = False
     for k, t in enumerate(toks):
         if t.kind == "space":
             classes.append(classes[-1] if classes else False)
@@ -561,6 +562,9 @@ def _classify(toks: list[Token]) -> list[bool]:
                                                                   "A", "ch"))
             ref = ref or (before is not None and before.text == "-" and classes
                           and not classes[-1] and not before.space)
+            # "Eqs. 11.8, 11.14 and 11.17": every number of the list is a reference
+            ref = ref or (before is not None and before.text in (",", "and") and last_ref)
+            last_ref = ref
             classes.append(not ref)
             if not ref:
                 j = k + 1

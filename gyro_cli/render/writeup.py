@@ -20,7 +20,7 @@ import re
 
 from ..core.work import num
 from ..solving.solve import Result
-from .mathparse import is_symbol_name, spans, try_parse
+from .mathparse import spans, try_parse
 from .mathprint import (LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex,
                         UNICODE_MATH)
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
@@ -406,7 +406,7 @@ def latex(result: Result, level: str = "subsection*") -> str:
     for name, answer in result.answers.items():
         parts = [f"${math(answer.symbol, units=False)} = {body}$" + (
             f" ({text_escape(label)})" if label else "") for body, label in _answer_parts(answer)]
-        head = "" if is_symbol_name(name) or name == answer.symbol else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
+        head = "" if symbol_tex(name) == math(answer.symbol, units=False) else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
         lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
