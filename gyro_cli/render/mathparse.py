@@ -35,7 +35,7 @@ FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcs
 UNITS = {"kg", "m", "s", "N", "rad", "rpm", "deg", "mm", "cm", "km", "in", "ft", "lb", "lbf",
          "oz", "ozf", "slug", "Hz", "min", "h", "J", "W", "revolution", "rev", "lbm", "degree",
          "radian", "second", "minute", "meter", "metre", "newton", "kip", "mi", "yd", "knot",
-         "knots", "t", "mph", "kN", "rps", "hr"}
+         "knots", "t", "mph", "kN", "rps", "hr", "g", "dyne", "lbm", "gal", "psi"}
 RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 #: symbols that name vectors: between two of them a spaced ``x`` is a cross product
 VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "C", "M", "F"}
@@ -147,6 +147,11 @@ class _Parser:
             elif t.kind == "op" and t.text == "." and t.space:
                 self.i += 1
                 left = BinOp(".", left, self.unary())
+            elif t.kind == "name" and t.text == "x" and _numeric_expr(left) and \
+                    self.peek(1) is not None and self.peek(1).kind == "num":
+                self.i += 1  # 1 x 10^6: times
+                left = BinOp("x", left, self.power())
+                left = self._unit_after(left)
             elif self._cross(left):
                 self.i += 1
                 left = BinOp("x", left, self.power())
@@ -154,6 +159,15 @@ class _Parser:
                 left = BinOp(" ", left, self.power())
             else:
                 return left
+
+    def _unit_after(self, node: Node) -> Node:
+        if self.units:
+            n = unit_run(self.toks, self.i)
+            if n:
+                unit = _join(self.toks[self.i:self.i + n])
+                self.i += n
+                return Quantity(node, unit)
+        return node
 
     def _cross(self, left: Node) -> bool:
         t, nxt = self.peek(), self.peek(1)
@@ -308,6 +322,16 @@ class _Parser:
         return node
 
 
+def _numeric_expr(node: Node) -> bool:
+    """A number written with a power of ten: 1 x 10^6."""
+    if isinstance(node, Num):
+        return True
+    if isinstance(node, Pow):
+        return isinstance(node.base, Num)
+    return isinstance(node, BinOp) and node.op == "x" and _numeric_expr(node.left) \
+        and _numeric_expr(node.right)
+
+
 def _numeric(node: Node) -> bool:
     return isinstance(node, Num) or isinstance(node, Neg) and isinstance(node.body, Num)
 
@@ -345,7 +369,7 @@ def unit_run(toks: list[Token], k: int) -> int:
     if j + 2 < n and toks[j].text == "1" and toks[j + 1].text == "/" and is_unit(toks[j + 2]) \
             and toks[j].space and not toks[j + 2].space:
         j += 2
-    elif j >= n or not is_unit(toks[j]) or not toks[j].space:
+    elif j >= n or not is_unit(toks[j]):
         return 0
     while True:
         j = power(j + 1)
@@ -356,9 +380,10 @@ def unit_run(toks: list[Token], k: int) -> int:
         if j < n and is_unit(toks[j]) and toks[j].space and _unit_follows(toks, j):
             continue
         break
+    # a symbol after the unit: "2 m g l" is twice m g l, not two metres
     if j < n and toks[j].kind == "name" and toks[j].text not in FUNCTIONS \
-            and toks[j].text not in UNITS and not toks[j].text.startswith("int_") \
-            and not is_word(toks[j].text):
+            and not toks[j].text.startswith("int_") and not is_word(toks[j].text) \
+            and not (toks[j].text == "i"):
         return 0
     return j - k
 
@@ -547,6 +572,10 @@ def _classify(toks: list[Token]) -> list[bool]:
                     after.kind == "name" and is_word(after.text))
                     and after.text not in (",", ".", ";", ":")
                     and not (before is not None and before.text == "'"))
+            elif t.text == "A" and (before is None or before.text in (".", ":", ";")) \
+                    and after is not None and after.kind == "name" and is_word(after.text) \
+                    and after.text.islower():
+                classes.append(False)  # "A gyro wheel": the article opening a sentence
             elif before is not None and before.text == "'" and t.text == "s":
                 classes.append(False)  # possessive
             elif (before is not None and before.text == "-" and not before.space
