@@ -48,7 +48,7 @@ def _fallback(text: str) -> str:
     out = []
     for is_math, part in spans(text):
         out.append(LatexPrinter(False).doprint(part) if is_math
-                   else f"\\text{{{text_escape(part)}}}")
+                   else f"\\text{{{text_escape(part.replace('_', ' '))}}}")
     return " ".join(out) or "\\text{}"
 
 
