@@ -249,3 +249,14 @@ def test_us_units_sheet_compiles(run, tmp_path, problems_dir):
                           cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stdout[-2000:]
     assert "slug" in result.stdout and "Overfull" not in (tmp_path / "us.log").read_text()
+
+
+def test_steps_use_the_given_tables_symbols(run, problems_dir):
+    """11/5 calls the supported mass m_s in its Given table, and so do its steps; 11/3's
+    check writes the moment with the symbols of its steps (m g l), not an undefined D."""
+    out = run("solve", problems_dir / "11_5.yaml").stdout
+    assert "  m_s     10 kg" in out
+    assert "F_A,weight = m_s g sin(theta) b / L" in out
+    assert "m g sin(theta) b" not in out
+    out = run("solve", problems_dir / "11_3.yaml").stdout
+    assert " D " not in out and "applied m g l sin(theta) = 0.01589 N m" in out
