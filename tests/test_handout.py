@@ -260,3 +260,27 @@ def test_steps_use_the_given_tables_symbols(run, problems_dir):
     assert "m g sin(theta) b" not in out
     out = run("solve", problems_dir / "11_3.yaml").stdout
     assert " D " not in out and "applied m g l sin(theta) = 0.01589 N m" in out
+
+
+def test_any_text_parses_or_is_refused_and_converts_cleanly():
+    """Seeded random formula text: the parser answers a tree or ParseError (never another
+    exception), the write-up is sound LaTeX and --units us never fails on it."""
+    import random
+
+    from gyro_cli.render import writeup
+    from gyro_cli.render.us_units import _text
+
+    from test_writeup import latex_problems
+
+    vocab = ["phidot", "theta", "psidot_min", "omega_z", "sqrt(", "(", ")", "^", "^2", "^-1",
+             "*", "/", "+", "-", "=", ">=", "+-", " ", "1.5e-07", "3", "kg", "m", "s^2",
+             "rad/s", "deg", "N m", "because", "the", "a", "|", "[", "]", ":", ",", ".", "'",
+             "I_G", "dH/dt", "x", "K", "int_u1", "sum", "sin", "cos", "i", "A", "F_A,w", "->",
+             ">>", "1/s", "g", "10", "%", "_", "θ"]
+    rng = random.Random(11)
+    for _ in range(3000):
+        line = "".join(rng.choice(vocab) for _ in range(rng.randint(1, 14)))
+        try_parse(line)
+        assert latex_problems(f"\\[ {writeup.math(line, display=True)} \\]") == [], line
+        assert latex_problems(writeup.mixed(line)) == [], line
+        _text(line + " kg")

@@ -57,7 +57,7 @@ class _Convert(TextPrinter):
     exact: dict = {}
 
     def _print_Quantity(self, node: Quantity) -> str:
-        if isinstance(node.value, Num) and node.unit in US:
+        if isinstance(node.value, Num) and node.unit in US and not node.value.text.endswith("i"):
             unit = US[node.unit][0]
             si = self.exact.get((node.value.text, unit), float(node.value.text))
             return f"{num(convert(si, node.unit)[0])} {unit}"
