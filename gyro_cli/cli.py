@@ -44,12 +44,12 @@ def main() -> None:
 @click.option("--standalone", is_flag=True,
               help="With --format latex: a complete document (preamble, title, one section "
                    "per problem) that pdflatex compiles as it is.")
-@click.option("--units", "system", type=click.Choice(("si", "us")), default="si",
-              show_default=True,
+@click.option("--units", "system", type=click.Choice(("si", "us")), default=None,
               help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
-                   "the file gives no unit for), as US textbooks do.")
+                   "the file gives no unit for), as US textbooks do; si (the default, or the "
+                   "file's `units` key).")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False, standalone: bool = False, system: str = "si") -> None:
+          force: bool = False, standalone: bool = False, system: str | None = None) -> None:
     """Solve problem FILES and print worked answers."""
     from .render import report
     from .solving.solve import solve_file
@@ -67,7 +67,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             click.echo(f"gyro: {err}", err=True)
             bad += 1
             continue
-        if system == "us":
+        if (system or result.problem.units) == "us":
             from .render.us_units import to_us
 
             result = to_us(result)

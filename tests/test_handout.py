@@ -284,3 +284,18 @@ def test_any_text_parses_or_is_refused_and_converts_cleanly():
         assert latex_problems(f"\\[ {writeup.math(line, display=True)} \\]") == [], line
         assert latex_problems(writeup.mixed(line)) == [], line
         _text(line + " kg")
+
+
+def test_units_key_in_the_file(run, tmp_path, problems_dir):
+    text = (problems_dir / "11_3.yaml").read_text()
+    path = tmp_path / "us.yaml"
+    path.write_text(text + "\nunits: us\n")
+    out = run("solve", path).stdout
+    assert "0.1875 lbf" in out and "Given                           US" in out
+    assert "0.8340 N" in run("solve", "--units", "si", path).stdout
+    path.write_text(text + "\nunits: metric\n")
+    bad = run("solve", path)
+    assert bad.exit_code == 2
+    assert bad.stderr.strip().splitlines() == [
+        f"gyro: {path}: units (line {len(text.splitlines()) + 2}): expected si or us "
+        "(slug, ft, lbf), got 'metric'"]
