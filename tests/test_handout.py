@@ -78,6 +78,14 @@ CONSTRUCTS = [
     ("sum I_w - G sum I_E", "sum I_w - G sum I_E", r"\sum I_{w} - G \sum I_{E}",
      r"\sum I_{w} - G \sum I_{E}"),
     ("Pi(n1|m)", "Pi(n1 | m)", r"\Pi(n_{1} \mid m)", r"\Pi(n_{1} \mid m)"),
+    ("Rz(yaw) = [1 0; 0 -1]", "Rz(yaw) = [1 0; 0 -1]",
+     r"R_{z}(\mathrm{yaw}) = \begin{bmatrix} 1 & 0 \\ 0 & -1 \end{bmatrix}",
+     r"R_{z}(\mathrm{yaw}) = \begin{bmatrix} 1 & 0 \\ 0 & -1 \end{bmatrix}"),
+    ("1 x 10^6 g cm^2/s", "1 x 10^6 g cm^2/s", r"1 \times 10^{6}\,\mathrm{g\,cm^{2}/s}",
+     r"1 \times 10^{6}\,\mathrm{g\,cm^{2}/s}"),
+    ("s = -0.7753 - 4.465 i 1/s", "s = -0.7753 - 4.465i 1/s",
+     r"s = -0.7753 - 4.465\,\mathrm{i}\,\mathrm{1/s}",
+     r"s = -0.7753 - 4.465\,\mathrm{i}\,\mathrm{1/s}"),
 ]
 
 

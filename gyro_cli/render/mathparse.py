@@ -23,8 +23,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from .mathtree import (Abs, BinOp, Call, Group, Integral, Neg, Node, Num, Pow, Prime, Quantity,
-                       Rel, Sum, Sym, Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
+                       Quantity, Rel, Sum, Sym, Tuple)
 
 GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
          "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
@@ -97,6 +97,7 @@ class _Parser:
         self.toks, self.units, self.i = toks, units, 0
         self.bars = 0  # open |...| (a | closes instead of opening)
         self.sep = ","
+        self.in_call = 0  # inside f(...): Rz(yaw) names an angle by a word
 
     # -- helpers
     def peek(self, k: int = 0) -> Token | None:
@@ -271,7 +272,8 @@ class _Parser:
             self.i += 1
             upper = self.postfix()
             return Integral(lower, upper, self.product())
-        if is_word(name) and not name.startswith("int_"):
+        if is_word(name) and not name.startswith("int_") and not (
+                self.in_call and name in ANGLE_WORDS):
             raise ParseError(f"{name!r} is a word")
         if glued:
             self.i += 1
@@ -292,6 +294,13 @@ class _Parser:
                 self.bars -= 1
 
     def _arglist(self, close: str) -> tuple:
+        self.in_call += 1
+        try:
+            return self._arglist_in(close)
+        finally:
+            self.in_call -= 1
+
+    def _arglist_in(self, close: str) -> tuple:
         args = [self.relation()]
         sep = ","
         while self.at(",", "|"):
@@ -301,7 +310,39 @@ class _Parser:
         self.sep = sep
         return tuple(args)
 
+    def _matrix(self) -> Node | None:
+        """``[1 0 0; 0 1 0; 0 0 1]`` when the bracket holds a top-level ';'."""
+        depth, j = 0, self.i
+        while j < len(self.toks):
+            t = self.toks[j].text
+            if t in ("(", "["):
+                depth += 1
+            elif t in (")", "]"):
+                if depth == 0:
+                    break
+                depth -= 1
+            elif t == ";" and depth == 0:
+                rows, row = [], []
+                while not self.at("]"):
+                    if self.at(";"):
+                        self.i += 1
+                        rows.append(tuple(row))
+                        row = []
+                        continue
+                    row.append(self.unary())
+                self.i += 1
+                rows.append(tuple(row))
+                if len({len(r) for r in rows}) != 1 or not rows[0]:
+                    raise ParseError("rows of a matrix differ in length")
+                return Matrix(tuple(rows))
+            j += 1
+        return None
+
     def _group(self, open_: str) -> Node:
+        if open_ == "[":
+            matrix = self._matrix()
+            if matrix is not None:
+                return matrix
         close = ")" if open_ == "(" else "]"
         saved = self.bars
         self.bars = 0
@@ -431,9 +472,19 @@ def is_symbol_name(name: str) -> bool:
             and _symbolic(stem[1:])
     if stem in GREEK or dotted(stem) or len(stem) == 1:
         return True
+    if len(stem) == 2 and stem[0].isupper() and stem[1].islower() and stem not in ("An", "As",
+                                                                                 "At", "By",
+                                                                                 "If", "In",
+                                                                                 "Is", "It",
+                                                                                 "No", "Of",
+                                                                                 "On", "Or",
+                                                                                 "So", "To",
+                                                                                 "We", "Up"):
+        return True  # Rz, Ry: a rotation about z, y
     return stem[0] == "d" and len(stem) > 1 and _symbolic(stem[1:]) and stem not in WORDS_D
 
 
+ANGLE_WORDS = {"yaw", "pitch", "roll", "heading", "bank"}
 UPPER_WORDS = {"US", "SI", "UK", "PDF", "CSV", "JSON", "YAML", "OK", "NB"}
 WORDS_D = {"do", "dip", "die", "dies", "due", "down", "deg", "dot", "ddot"}
 

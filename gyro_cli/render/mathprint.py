@@ -119,6 +119,8 @@ def split_symbol(name: str) -> tuple[str, list[str]]:
     ("F", ["A", "weight"]); ``K0_pp`` -> ("K", ["0", "pp"])."""
     base, _, sub = name.partition("_")
     subs = sub.split(",") if sub else []
+    if len(base) == 2 and base[0].isupper() and base[1] in "xyz":
+        return base[0], [base[1]] + subs  # Rz: the rotation about z
     m = _DIGITS.match(base)
     if m and (m.group(1) in GREEK or len(m.group(1)) <= 2 or dotted(m.group(1))
               or m.group(1) in ("phidot", "thetadot", "psidot")):
@@ -326,6 +328,10 @@ class LatexPrinter(Printer):
     def _print_Prime(self, node) -> str:
         return self.parenthesize(node.body, PRECEDENCE["Atom"]) + "'" * node.count
 
+    def _print_Matrix(self, node) -> str:
+        rows = " \\\\ ".join(" & ".join(self._print(x) for x in row) for row in node.rows)
+        return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
+
 
 # ---- plain text -------------------------------------------------------------
 
@@ -405,6 +411,9 @@ class TextPrinter(Printer):
 
     def _print_Prime(self, node) -> str:
         return self.parenthesize(node.body, PRECEDENCE["Atom"]) + "'" * node.count
+
+    def _print_Matrix(self, node) -> str:
+        return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
 
 
 # ---- shared ---------------------------------------------------------------

@@ -126,3 +126,9 @@ class Tex(Node):
     ``plain`` is the text it came from."""
     latex: str
     plain: str
+
+
+@dataclass(frozen=True)
+class Matrix(Node):
+    """``[a b c; d e f]``: rows separated by semicolons, entries by spaces."""
+    rows: tuple

@@ -325,9 +325,13 @@ def _answer_parts(answer) -> list[tuple[str, str]]:
     return parts
 
 
+def _given_text(g) -> str:
+    return g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
+
+
 def _si(g) -> str:
-    if isinstance(g.si_value, str):
-        return f"\\text{{{text_escape(g.si_value)}}}"
+    if isinstance(g.si_value, str):  # a word of the file (counterclockwise_from_bow)
+        return f"\\text{{{text_escape(g.si_value.replace('_', ' '))}}}"
     return _quantity(g.si_value, g.si_unit)
 
 
@@ -347,7 +351,7 @@ def markdown(result: Result) -> str:
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
         lines.append(f"| ${math(g.symbol, units=False)}$ | "
-                     f"{_md_cell(_prose(g.text + note, True))} | ${_si(g)}$ |")
+                     f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_prose(section.title, True)}", ""]
         lines += _steps(section.steps, True)
@@ -394,7 +398,7 @@ def latex(result: Result, level: str = "subsection*") -> str:
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(g.text + note, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
