@@ -313,6 +313,16 @@ def _md_escape(text: str) -> str:
     return re.sub(r"([*_`|<>\[\]\\$])", r"\\\1", text)
 
 
+def _answer_lhs(answer) -> str:
+    """``symbol = `` before an answer's values; nothing when the symbol is the name in words
+    (``motion: retrograde``)."""
+    if try_parse(answer.symbol, units=False) is None or answer.symbol == answer.name \
+            and not (answer.values and not isinstance(answer.values[0], str)) \
+            and answer.symbol.isalpha() and len(answer.symbol) > 2:
+        return ""
+    return math(answer.symbol, units=False) + " = "
+
+
 def _answer_parts(answer) -> list[tuple[str, str]]:
     parts = []
     for i, value in enumerate(answer.values):
@@ -360,7 +370,8 @@ def markdown(result: Result) -> str:
         lines += _steps(solution.checks, True)
     lines += ["", "### Answer", ""]
     for name, answer in result.answers.items():
-        parts = [f"${math(answer.symbol, units=False)} = {body}$" + (f" ({label})" if label else "")
+        lhs = _answer_lhs(answer)
+        parts = [f"${lhs}{body}$" + (f" ({label})" if label else "")
                  for body, label in _answer_parts(answer)]
         lines.append(f"- **{name}**: " + ", ".join(parts))
     if solution.warnings:
@@ -408,9 +419,11 @@ def latex(result: Result, level: str = "subsection*") -> str:
         lines += _steps(solution.checks, False)
     lines += ["", "\\subsubsection*{Answer}", "", "\\begin{itemize}"]
     for name, answer in result.answers.items():
-        parts = [f"${math(answer.symbol, units=False)} = {body}$" + (
-            f" ({text_escape(label)})" if label else "") for body, label in _answer_parts(answer)]
-        head = "" if symbol_tex(name) == math(answer.symbol, units=False) else f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
+        lhs = _answer_lhs(answer)
+        parts = [f"${lhs}{body}$" + (f" ({text_escape(label)})" if label else "")
+                 for body, label in _answer_parts(answer)]
+        head = "" if lhs and symbol_tex(name) == math(answer.symbol, units=False) else \
+            f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
         lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
