@@ -307,3 +307,50 @@ def test_units_key_in_the_file(run, tmp_path, problems_dir):
     assert bad.stderr.strip().splitlines() == [
         f"gyro: {path}: units (line {len(text.splitlines()) + 2}): expected si or us "
         "(slug, ft, lbf), got 'metric'"]
+
+
+# Commands that MathJax (GitHub, Jupyter) and KaTeX both typeset; Pandoc passes maths through.
+MATHJAX = {
+    "mathrm", "text", "frac", "sqrt", "dot", "ddot", "times", "cdot", "circ", "qquad", "quad",
+    "begin", "end", "left", "right", "Bigl", "Bigr", "lvert", "rvert", "mid", "operatorname",
+    "sum", "int", "le", "ge", "gg", "ll", "to", "approx", "pm", "mp", "ne",
+    "sin", "cos", "tan", "cot", "sec", "csc", "arcsin", "arccos", "arctan", "sinh", "cosh",
+    "tanh", "exp", "ln", "log", "det", "max", "min",
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+    "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
+    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+}
+
+
+def _markdown_maths(md: str) -> list[str]:
+    blocks = re.findall(r"\$\$(.*?)\$\$", md, re.S)
+    rest = re.sub(r"\$\$.*?\$\$", "", md, flags=re.S)
+    inline = re.findall(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$", rest)
+    return [f"\\[{b}\\]" for b in blocks] + [f"${i}$" for i in inline]
+
+
+def test_markdown_maths_uses_what_mathjax_and_katex_typeset(run):
+    for path in PROBLEMS:
+        md = _markdown(run, path)
+        for maths in _markdown_maths(md):
+            names = set(re.findall(r"\\([A-Za-z]+)", maths))
+            assert names <= MATHJAX, (path, names - MATHJAX)
+            envs = set(re.findall(r"\\begin\{(\w+)\}", maths))
+            assert envs <= {"aligned", "bmatrix"}, (path, envs)
+            # Pandoc: no space just inside inline $ ... $
+            if maths.startswith("$"):
+                assert maths[1] != " " and maths[-2] != " ", (path, maths)
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_markdown_maths_compiles(run, tmp_path):
+    """Every formula of every Markdown write-up, set by LaTeX itself."""
+    body = []
+    for path in PROBLEMS:
+        body += _markdown_maths(_markdown(run, path))
+    doc = tmp_path / "md.tex"
+    doc.write_text("\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n"
+                   + "\n\n".join(body) + "\n\\end{document}\n")
+    done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", doc.name],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stdout[-3000:]
