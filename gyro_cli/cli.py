@@ -70,7 +70,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         if (system or result.problem.units) == "us":
             from .render.us_units import to_us
 
-            result = to_us(result)
+            result = to_us(result, given=fmt != "json")
         if fmt == "json":
             click.echo(report.as_json(result))
         elif standalone:

@@ -244,8 +244,12 @@ def test_us_units_work_the_problem_in_slug_ft_lbf(run, problems_dir):
     assert "precession  phidot = 45.13 rpm (slow)   533.5 rpm (fast)" in out
     si = run("solve", problems_dir / "11_3.yaml").stdout
     assert "Given                           SI" in si and "0.08498 kg" in si
-    assert run("solve", "--units", "us", "--format", "json",
-               problems_dir / "11_3.yaml").exit_code == 0
+    import json
+
+    doc = json.loads(run("solve", "--units", "us", "--format", "json",
+                         problems_dir / "11_3.yaml").stdout)
+    assert doc["units"] == "us" and doc["steps"][0]["lines"][0].endswith("= 0.005823 slug")
+    assert doc["given"][0]["si_unit"] == "N"  # si_value stays SI, as its name says
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")

@@ -76,7 +76,7 @@ def as_dict(result: Result) -> dict[str, Any]:
                   for s in solution.sections],
         "checks": [step.as_text() for step in solution.checks],
         "warnings": list(solution.warnings),
-    }
+    } | ({"units": solution.system.lower()} if solution.system != "SI" else {})
 
 
 def as_json(result: Result) -> str:

@@ -116,8 +116,9 @@ def _answer(answer: Reported) -> Reported:
     return dataclasses.replace(answer, values=values, unit=US[answer.unit][0])
 
 
-def to_us(result: Result) -> Result:
-    """The result with its worked answer in slug, ft and lbf."""
+def to_us(result: Result, given: bool = True) -> Result:
+    """The result with its worked answer in slug, ft and lbf; ``given=False`` keeps the
+    Given lines in SI (JSON's ``si_value`` is SI by contract)."""
     solution = result.solution
     exact = {}
     steps = [step for s in solution.sections for step in s.steps] + list(solution.checks)
@@ -128,7 +129,7 @@ def to_us(result: Result) -> Result:
             exact.setdefault((num(value), US[unit][0]), value)
     _Convert.exact = exact
     converted = Solution(
-        given=[_given(g) for g in solution.given],
+        given=[_given(g) for g in solution.given] if given else list(solution.given),
         sections=[Section(s.title, [_step(step) for step in s.steps]) for s in solution.sections],
         answers=solution.answers,
         warnings=[_text(w) for w in solution.warnings],
