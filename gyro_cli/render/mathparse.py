@@ -472,14 +472,7 @@ def is_symbol_name(name: str) -> bool:
             and _symbolic(stem[1:])
     if stem in GREEK or dotted(stem) or len(stem) == 1:
         return True
-    if len(stem) == 2 and stem[0].isupper() and stem[1].islower() and stem not in ("An", "As",
-                                                                                 "At", "By",
-                                                                                 "If", "In",
-                                                                                 "Is", "It",
-                                                                                 "No", "Of",
-                                                                                 "On", "Or",
-                                                                                 "So", "To",
-                                                                                 "We", "Up"):
+    if len(stem) == 2 and stem[0].isupper() and stem[1] in "xyz":
         return True  # Rz, Ry: a rotation about z, y
     return stem[0] == "d" and len(stem) > 1 and _symbolic(stem[1:]) and stem not in WORDS_D
 
