@@ -31,6 +31,8 @@ __all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "s
 #: the page of `standalone` is 17 cm, about 480 pt
 WIDTH = 64
 
+#: a line ending in the chapter's equation number: "udot^2 = f(u) = ...    (Eq. 11.19)"
+_CITED = re.compile(r"\s+\(Eq\. (\d+\.\d+)\)$")
 _EQ = re.compile(r"^Eq\. (\d+\.\d+)(?:, (.+))?$")
 
 
@@ -258,13 +260,18 @@ def _steps(steps, markdown: bool) -> list[str]:
                 out.append("")
             continue
         text = step.text.strip()
+        tag = ""
+        cited = _CITED.search(text)
+        if cited and try_parse(text[:cited.start()]) is not None:
+            text, tag = text[:cited.start()], cited.group(1)
         tree = try_parse(text)
+        number = (f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}") if tag else ""
         if tree is not None and width(tree) <= WIDTH and _is_equation(tree):
-            out += _display(LatexPrinter(True).doprint(tree), markdown)
+            out += _display(LatexPrinter(True).doprint(tree) + number, markdown)
         elif tree is not None and isinstance(tree, Rel) and _is_equation(tree):
             rows = _rel_rows(tree)
-            out += _display("\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}",
-                            markdown)
+            out += _display("\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
+                            + number, markdown)
         else:
             out += [_prose(text, markdown), ""]
     return out
