@@ -21,8 +21,7 @@ import re
 from ..core.work import num
 from ..solving.solve import Result
 from .mathparse import spans, try_parse
-from .mathprint import (LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex,
-                        UNICODE_MATH)
+from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
 
 __all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "symbol_tex"]
@@ -286,8 +285,6 @@ def _rel_rows(tree: Rel) -> list[str]:
     first = printer.doprint(tree.first) if tree.first is not None else ""
     rows = []
     for k, (op, rhs) in enumerate(tree.rest):
-        from .mathprint import RELATIONS_TEX
-
         sub = _rows("", [rhs], WIDTH - 8)
         for j, (_, right) in enumerate(sub):
             if j == 0:
