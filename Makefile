@@ -1,12 +1,15 @@
 # gyro: the two set-up commands of the README.
 #   make demo   create .venv if needed, install gyro, solve every bundled problem
 #   make test   the same set-up, then the test suite
+#   make handout  a solution sheet of every bundled problem, handout.pdf (needs pdflatex:
+#               apt-get install texlive-latex-base texlive-latex-recommended
+#               texlive-latex-extra poppler-utils; the test that compiles it skips without)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test check bench clean
+.PHONY: demo test check bench handout clean
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -27,6 +30,14 @@ check: $(STAMP)
 	$(BIN)/lint-imports --no-cache
 	$(BIN)/gyro check problems/
 
+handout: $(STAMP)
+	@command -v pdflatex >/dev/null || { echo "make handout needs pdflatex: apt-get install texlive-latex-base texlive-latex-recommended texlive-latex-extra poppler-utils"; exit 2; }
+	$(BIN)/gyro solve --format latex --standalone problems/*.yaml > handout.tex
+	pdflatex -interaction=nonstopmode -halt-on-error handout.tex > /dev/null
+	@! grep -n "Overfull" handout.log
+	@echo "handout.pdf written"
+	$(BIN)/python -m pytest -q tests/test_handout.py
+
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_solve.py
 	$(BIN)/python benchmarks/bench_check.py
@@ -34,4 +45,4 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_motion.py
 
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache
+	rm -rf $(VENV) build *.egg-info .pytest_cache handout.tex handout.aux handout.log handout.pdf

@@ -41,8 +41,15 @@ def main() -> None:
                    "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
                    "file.")
 @click.option("--force", is_flag=True, help="With --plot: replace FILE if it exists.")
+@click.option("--standalone", is_flag=True,
+              help="With --format latex: a complete document (preamble, title, one section "
+                   "per problem) that pdflatex compiles as it is.")
+@click.option("--units", "system", type=click.Choice(("si", "us")), default=None,
+              help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
+                   "the file gives no unit for), as US textbooks do; si (the default, or the "
+                   "file's `units` key).")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False) -> None:
+          force: bool = False, standalone: bool = False, system: str | None = None) -> None:
     """Solve problem FILES and print worked answers.
 
     FILES may also be directories (every *.yaml and *.yml in them, as for
@@ -57,7 +64,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         click.echo(f"gyro: {message}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
+    if standalone and fmt != "latex":
+        fail("--standalone goes with --format latex")
     bad = len(missing)
+    document = []
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
@@ -65,8 +75,14 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             click.echo(f"gyro: {err}", err=True)
             bad += 1
             continue
+        if (system or result.problem.units) == "us":
+            from .render.us_units import to_us
+
+            result = to_us(result, given=fmt != "json")
         if fmt == "json":
             click.echo(report.as_json(result))
+        elif standalone:
+            document.append(result)
         elif fmt in ("markdown", "latex"):
             from .render import writeup
 
@@ -85,6 +101,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
+    if document:
+        from .render import writeup
+
+        click.echo(writeup.standalone(document), nl=False)
     if bad:
         sys.exit(2)
 

@@ -191,7 +191,7 @@ def test_worked_answer_shows_the_shares_and_the_errata(run, problems_dir):
     out = run("solve", problems_dir / "11_3_equinoxes.yaml").stdout
     assert "the Sun's share" in out and "the Moon's share" in out
     assert "misprint" in out and "72" in out
-    assert "(1 - (3/2) sin^2 i)" in out
+    assert "(1 - (3/2) sin^2(i))" in out
 
 
 EARTH_BAD = """

@@ -32,6 +32,13 @@ ALLOWED = {
     "begin", "end", "subsection", "paragraph", "textasciicircum", "textasciitilde",
     "textbackslash", "backslash", "hat", ",", " ", "{", "}", "$", "&", "#", "%", "_", "\\",
     "[", "]", "approx", "to",
+    # the printers of render/mathprint.py
+    "frac", "left", "right", "Bigl", "Bigr", "lvert", "rvert", "mid", "tag", "gg", "ll", "mp",
+    "times", "arccos", "arcsin", "arctan", "det", "operatorname", "sum", "int", "linewidth",
+    "textbar", "textless", "textgreater", "allowbreak", "cosh", "sinh", "tanh", "cot", "sec",
+    "csc", "max", "min", "approx", "le", "ge", "iota", "kappa", "nu", "xi", "chi", "zeta", "eta",
+    "epsilon", "Phi", "section", "subsubsection", "maketitle", "date", "title", "documentclass", "usepackage",
+    "setlength", "parindent", "longtable", "parskip", "emergencystretch", "allowdisplaybreaks",
 }
 
 
@@ -71,20 +78,22 @@ def gyro_path(tmp_path: Path) -> Path:
     return put(tmp_path, "g.yaml", gyro_file(extra_find="\n  moment: N m\n  min_spin: rpm"))
 
 
-def test_transliteration_by_hand():
+def test_formulas_typeset_by_hand():
     assert writeup.math("phidot^2", units=False) == r"\dot{\phi}^{2}"
     assert writeup.math("thetaddot = 0") == r"\ddot{\theta} = 0"
     assert writeup.math("omega_z = psidot + phidot cos(theta)", units=False) == \
-        r"\omega_{z} = \dot{\psi} + \dot{\phi} \cos(\theta)"
+        r"\omega_{z} = \dot{\psi} + \dot{\phi} \cos \theta"
     assert writeup.math("2 sqrt((I - J) D cos(theta)) / J", units=False) == \
-        r"2 \sqrt{(I - J) D \cos(\theta)} / J"
+        r"2 \sqrt{(I - J) D \cos \theta}/J"
+    assert writeup.math("2 sqrt((I - J) D cos(theta)) / J", units=False, display=True) == \
+        r"\frac{2 \sqrt{(I - J) D \cos \theta}}{J}"
     assert writeup.math("psidot_min") == r"\dot{\psi}_{\mathrm{min}}"
-    assert writeup.math("3.869e-05 kg m^2") == r"3.869\times10^{-5}\,\mathrm{kg\,m^{2}}"
+    assert writeup.math("3.869e-05 kg m^2") == r"3.869\times 10^{-5}\,\mathrm{kg\,m^{2}}"
     assert writeup.math("0.08498 kg (9.815 m/s^2)") == \
-        r"0.08498\,\mathrm{kg} (9.815\,\mathrm{m/s^{2}})"
-    assert writeup.math("sin(30.00 deg)") == r"\sin(30.00^{\circ})"
+        r"0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}})"
+    assert writeup.math("sin(30.00 deg)") == r"\sin 30.00^{\circ}"
     # "2 m g l" is twice mass times g times l, not two metres
-    assert writeup.math("a = 2 m g l / I") == "a = 2 m g l / I"
+    assert writeup.math("a = 2 m g l / I") == "a = 2 m g l/I"
     assert writeup.symbol_tex("I_G") == "I_{G}" and writeup.symbol_tex("k_O") == "k_{O}"
 
 
@@ -131,7 +140,7 @@ def test_text_escapes_specials():
     assert writeup.text_escape("a_b & 50% #1 $x {y} ~ ^") == \
         r"a\_b \& 50\% \#1 \$x \{y\} \textasciitilde{} \textasciicircum{}"
     tex = writeup.mixed("the rod's mass is 50% of m_total", ("$", "$"), writeup.text_escape)
-    assert tex == r"the rod's mass is $50\%$ of $m_{\mathrm{total}}$"
+    assert tex == r"the rod's mass is $50$\% of $m_{\mathrm{total}}$"
     assert latex_problems(tex) == []
 
 
@@ -172,8 +181,6 @@ def test_any_formula_text_gives_sound_latex():
 
 def test_file_keys_in_prose_stay_words():
     """`bearing_forces` in a note is a key of the file (text), `theta_max` a symbol (maths)."""
-    from gyro_cli.render.writeup import _latex_prose
-
-    tex = _latex_prose("bearing_forces lists A and B; theta_max is the lowest", ("$", "$"))
+    tex = writeup.mixed("bearing_forces lists A and B; theta_max is the lowest")
     assert tex.startswith("bearing\\_forces lists")
     assert "$\\theta_{\\mathrm{max}}$" in tex

@@ -179,6 +179,8 @@ def schema() -> dict[str, Any]:
                          "description": "answers `gyro check` compares against"},
             "tolerance": {"oneOf": [tolerance_one, {"type": "object",
                                                     "additionalProperties": tolerance_one}]},
+            "units": {"enum": ["si", "us", "SI", "US"],
+                      "description": "the worked answer in SI (default) or slug, ft, lbf"},
             "vary": {"type": "object", "description": "for `gyro vary`: given key -> [low, high]"
                                                       " factors or quantities",
                      "additionalProperties": {"type": "array", "minItems": 2, "maxItems": 2,

@@ -42,6 +42,17 @@ def substitute(formula: str, **values: str) -> str:
                   lambda match: f"({values[match.group(1)]})", formula) if values else formula
 
 
+_SIGNS = {"+": "-", "-": "+"}
+
+
+def fold_signs(text: str) -> str:
+    """``a + -b`` -> ``a - b`` and ``a - -b`` -> ``a + b``: a substituted negative value
+    after a plus or minus sign."""
+    import re
+
+    return re.sub(r"(?<=\s)([+-]) -(?=\d)", lambda m: _SIGNS[m.group(1)] + " ", text)
+
+
 @dataclass
 class Step:
     """One line: ``symbol = formula = substitution = value unit  (ref)``.
@@ -112,6 +123,7 @@ class Solution:
     answers: dict[str, Answer]
     warnings: list[str]
     checks: list[Step] = field(default_factory=list)
+    system: str = "SI"  # the units of the steps: "SI", or "US" (slug, ft, lbf) on request
 
 
 class Work:
@@ -137,6 +149,8 @@ class Work:
     def step(self, symbol: str, formula: str = "", substitution: str = "",
              value: float | None = None, unit: str = "", ref: str = "", note: str = "") -> float | None:
         """Add ``symbol = formula = substitution = value``; returns value."""
+        if " -" in substitution:
+            substitution = fold_signs(substitution)
         self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note))
         return value
 

@@ -6,7 +6,7 @@ angular momentum C omega about the normal of each body's orbit, a steady
 precession in the chapter's sense (dH/dt = T, Eqs. 11.27-11.29 with the torque
 given). For each torquing body
 
-    Omega_p = (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) (1 - (3/2) sin^2 i) / omega,
+    Omega_p = (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon) (1 - (3/2) sin^2(i)) / omega,
 
 H = (C - A) / C the dynamical ellipticity, eps the obliquity, i the
 inclination of the body's orbit to the reference plane (averaged over its
@@ -202,19 +202,20 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "(at 90 deg the bulge lies in the orbit plane and the mean torque "
                          "vanishes; for a retrograde rotator give 180 deg minus its obliquity, "
                          "the axis then moves the other way)", key="given.obliquity")
-    work.text(f"H = (C - A) / C = {num(H)}, eps = {num(math.degrees(eps))} deg, "
+    work.text(f"H = (C - A) / C = {num(H)}, epsilon = {num(math.degrees(eps))} deg, "
               f"omega = {qty(omega, 'rad/s')}")
     work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
     work.text("MacCullagh: a body M_b at distance r, direction u, exerts on the planet the "
               "torque T = (3 G M_b (C - A) / r^3) (u . s) (u x s), s the spin axis.")
-    work.text("Over a Kepler orbit <a^3/r^3> = (1 - e^2)^(-3/2) and <u u^T> is isotropic in the "
-              "orbit plane: <T> = -(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(eps) "
-              "(n x s), n the orbit normal.")
+    work.text("Averaged over a Kepler orbit, a^3/r^3 becomes (1 - e^2)^(-3/2), and the "
+              "direction u is spread evenly round the orbit plane: the mean torque is "
+              "T_mean = -(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(epsilon) (n x s), "
+              "n the orbit normal.")
     work.text("Steady precession (the chapter's dH/dt = T with H = C omega s): s turns about -n "
-              "(westward, retrograde) at Omega_p = |<T>| / (C omega sin(eps)) = "
-              "(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) / omega.")
+              "(westward, retrograde) at Omega_p = |T_mean| / (C omega sin(epsilon)) = "
+              "(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon) / omega.")
     work.text("An orbit inclined at i whose node turns round quickly (the Moon's, in 18.6 years) "
-              "is averaged over the node too: factor (1 - (3/2) sin^2 i).")
+              "is averaged over the node too: factor (1 - (3/2) sin^2(i)).")
     shares: dict[str, float] = {}
     for b in BODIES:
         work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
@@ -234,11 +235,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                        eccentricity_factor(e), "")
         fi = node_factor(i)
         if i:
-            work.step("1 - (3/2) sin^2 i", "", f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
+            work.step("1 - (3/2) sin^2(i)", "", f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
                       "", note="node-averaged")
         rate = precession_rate(tidal, e, H, eps, omega, i)
-        tail = " (1 - (3/2) sin^2 i)" if i else ""
-        work.step(f"Omega_{b}", f"(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps){tail} / omega",
+        tail = " (1 - (3/2) sin^2(i))" if i else ""
+        work.step(f"Omega_{b}", f"(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon){tail} / omega",
                   f"1.5 ({num(tidal)} 1/s^2) ({num(fe)}) ({num(H)}) ({num(math.cos(eps))})"
                   + (f" ({num(fi)})" if i else "") + f" / {qty(omega, 'rad/s')}",
                   rate, "rad/s")

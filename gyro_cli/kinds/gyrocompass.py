@@ -2,12 +2,12 @@
 
 On the rotating Earth a rotor whose spin axis is held horizontal, but left
 free to turn about the vertical, feels about the vertical the moment
-H Omega_E cos(lat) sin(alpha) (alpha the deviation of the spin vector from
+H Omega_E cos(lambda) sin(alpha) (alpha the deviation of the spin vector from
 north), which turns it back to north: the chapter's "bearing torques act in
 such a way that the gyroscope axis always lines up with ... the northerly
 direction". Small swings about north are those of a pendulum,
 
-    I_v alphaddot + H Omega_E cos(lat) alpha = 0,   T = 2 pi sqrt(I_v / (H Omega_E cos(lat))),
+    I_v alphaddot + H Omega_E cos(lambda) alpha = 0,   T = 2 pi sqrt(I_v / (H Omega_E cos(lambda))),
 
 and with any damping about the vertical the axis settles on the meridian. The
 derivation is in gyro_cli/physics/gyrocompass.py and docs/applications.md.
@@ -41,8 +41,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if cos_theta(lat) == 0:
         raise InputError(f"at latitude {num(math.degrees(lat))} deg (a pole) a gyrocompass cannot "
                          "settle: the Earth's rate has no horizontal component (Omega_E "
-                         "cos(lat) = 0), so there is no north-seeking moment and no north to "
-                         "seek; the period 2 pi sqrt(I_v / (H Omega_E cos(lat))) grows without "
+                         "cos(lambda) = 0), so there is no north-seeking moment and no north to "
+                         "seek; the period 2 pi sqrt(I_v / (H Omega_E cos(lambda))) grows without "
                          "bound toward the pole", key="given.latitude")
     H = spin_angular_momentum(given, work)
     if H == 0:
@@ -58,21 +58,21 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("E, N, U: east, north, up at the site. The rotor's spin vector (right-hand rule) "
               "points along the horizontal axis at azimuth alpha, east of north positive; "
               "moments about the vertical are positive counter-clockwise seen from above.")
-    work.text("Earth rate: Omega_E = Omega (cos(lat) N + sin(lat) U); only the horizontal part "
-              "Omega cos(lat) N can turn a horizontal spin vector.")
+    work.text("Earth rate: Omega_E = Omega (cos(lambda) N + sin(lambda) U); only the horizontal part "
+              "Omega cos(lambda) N can turn a horizontal spin vector.")
     if H < 0:
         work.text("spin < 0: the spin vector points along the other end of the axis; that end "
                   "seeks north")
     work.section("Moment about the vertical (angular momentum about U on the rotating Earth)")
-    work.text("d/dt (H . U) = M_U + H . (Omega_E x U),  Omega_E x U = Omega cos(lat) E,  "
-              "H . U = I_v (Omega sin(lat) - alphadot)")
-    work.text("so  I_v alphaddot = -H Omega cos(lat) sin(alpha)  (terms of order I Omega^2 "
+    work.text("d/dt (H . U) = M_U + H . (Omega_E x U),  Omega_E x U = Omega cos(lambda) E,  "
+              "H . U = I_v (Omega sin(lambda) - alphadot)")
+    work.text("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  (terms of order I Omega^2 "
               "dropped): a pendulum about north")
-    D = work.step("D", "H Omega_E cos(lat)", f"{qty(H_abs, 'kg m^2/s')} ({qty(Omega, 'rad/s')}) "
+    D = work.step("D", "H Omega_E cos(lambda)", f"{qty(H_abs, 'kg m^2/s')} ({qty(Omega, 'rad/s')}) "
                   f"cos({num(math.degrees(lat))} deg)",
                   directive_stiffness(H_abs, Omega, lat), "N m/rad",
                   note="north-seeking moment per radian of deviation")
-    M = work.step("M", "H Omega_E cos(lat) sin(alpha)", f"{qty(D, 'N m/rad')} "
+    M = work.step("M", "H Omega_E cos(lambda) sin(alpha)", f"{qty(D, 'N m/rad')} "
                   f"sin({num(math.degrees(alpha))} deg)",
                   north_seeking_moment(H_abs, Omega, lat, alpha), "N*m")
     if alpha:
@@ -88,7 +88,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     I_v = _vertical_inertia(given, work)
     if I_v is not None:
         work.section("Swing about north")
-        T = work.step("T", "2 pi sqrt(I_v / (H Omega_E cos(lat)))",
+        T = work.step("T", "2 pi sqrt(I_v / (H Omega_E cos(lambda)))",
                       f"2 pi sqrt({qty(I_v, 'kg*m^2')} / {qty(D, 'N m/rad')})",
                       period(I_v, H_abs, Omega, lat), "s", note="small swings")
         work.step("T", value=T / 60, unit="min")
@@ -106,13 +106,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 "(the pendulum's exact period)")
             work.answer("swing_period", "T(alpha)", [Ts], "time")
         work.check(f"I_v (2 pi / T)^2 = {qty(I_v * (2 * math.pi / T) ** 2, 'N m/rad')} = "
-                   f"H Omega_E cos(lat) = {qty(D, 'N m/rad')}")
+                   f"H Omega_E cos(lambda) = {qty(D, 'N m/rad')}")
     elif {"period", "swing_period"} & find:
         raise InputError("the period needs I_vertical (or the rotor's I_cg, k_cg or shape)",
                          key="given.I_vertical")
     if abs(lat) > POLAR_WARNING_LATITUDE:
         work.warn(f"at latitude {num(math.degrees(lat))} deg the north-seeking moment is only "
-                  f"cos(lat) = {num(math.cos(lat))} of its value at the equator: the compass is "
+                  f"cos(lambda) = {num(math.cos(lat))} of its value at the equator: the compass is "
                   "sluggish and a gyrocompass fails toward the poles")
 
 
@@ -140,7 +140,7 @@ KIND = Kind(
             "(north-seeking moment, period of the swing about north)",
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
-        Param("latitude", "angle", "lat", "latitude of the site (north or south)"),
+        Param("latitude", "angle", "lambda", "latitude of the site (north or south)"),
         Param("spin", "rate", "spin", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
@@ -157,9 +157,9 @@ KIND = Kind(
         AnswerSpec("swing_period", "time", "T(alpha)", "period of the swing released at rest "
                    "at the deviation (exact, any amplitude)"),
         AnswerSpec("moment", "moment", "M", "north-seeking moment about the vertical at the "
-                   "deviation, H Omega_E cos(lat) sin(alpha)"),
+                   "deviation, H Omega_E cos(lambda) sin(alpha)"),
         AnswerSpec("directive_moment", "stiffness", "D", "north-seeking moment per radian of "
-                   "deviation, H Omega_E cos(lat)"),
+                   "deviation, H Omega_E cos(lambda)"),
         AnswerSpec("settles", None, "alpha_eq", "where the axis settles: north (the spin "
                    "vector's end); a pole is refused with the reason"),
     ),

@@ -302,6 +302,7 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
     forces = bearing_forces(m, g, M, L, a, precession, theta, R, offset)
     b = L - a
     work.section("Bearing forces: free body of the rotor (forces on the rotor)")
+    ms = "m_s" if "supported_mass" in given else "m"  # the Given table's symbol
     work.text("F_A, F_B: forces of the bearings on the rotor, perpendicular to the spin axis. "
               "'up' components lie in the plane of K and k, positive toward +K (upward); 'side' "
               "components lie along n, positive toward the precession axis. Labelled A, B in "
@@ -309,34 +310,34 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
     work.step("a", "AG", value=a, unit="m", note="(default: midway)" if "cg_position" not in
               given else "")
     work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
-    work.text("up:   F_A + F_B = m (g sin(theta) + a_up);   a F_A - b F_B = M   "
+    work.text(f"up:   F_A + F_B = {ms} (g sin(theta) + a_up);   a F_A - b F_B = M   "
               "(moments about G along n)")
-    work.step("F_A,weight", "m g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
+    work.step("F_A,weight", f"{ms} g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
               f"({num(sin)}) {qty(b, 'm')} / {qty(L, 'm')}", forces.weight[0], "N",
               note="static share of the weight")
-    work.step("F_B,weight", "m g sin(theta) a / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
+    work.step("F_B,weight", f"{ms} g sin(theta) a / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
               f"({num(sin)}) {qty(a, 'm')} / {qty(L, 'm')}", forces.weight[1], "N")
     if forces.inertial != (0.0, 0.0):
         work.step("a_up", "Omega^2 R cos(theta)", f"({qty(precession, 'rad/s')})^2 "
                   f"{qty(R, 'm')} ({num(cos)})", precession ** 2 * R * cos, "m/s^2",
                   note="(centre off the axis along k)")
-        work.step("F_A,accel", "m a_up b / L", value=forces.inertial[0], unit="N")
-        work.step("F_B,accel", "m a_up a / L", value=forces.inertial[1], unit="N")
+        work.step("F_A,accel", f"{ms} a_up b / L", value=forces.inertial[0], unit="N")
+        work.step("F_B,accel", f"{ms} a_up a / L", value=forces.inertial[1], unit="N")
     work.step("F_A,couple", "+M / L", f"{qty(M, 'N*m')} / {qty(L, 'm')}", forces.couple[0], "N",
               note="gyroscopic couple")
-    work.step("F_B,couple", "-M / L", f"-{qty(M, 'N*m')} / {qty(L, 'm')}", forces.couple[1], "N")
+    work.step("F_B,couple", "-M / L", f"-({qty(M, 'N*m')}) / {qty(L, 'm')}", forces.couple[1], "N")
     accel = " + F_{0},accel" if forces.inertial != (0.0, 0.0) else ""
     work.step("F_A", f"F_A,weight{accel.format('A')} + F_A,couple", value=forces.up[0], unit="N")
     work.step("F_B", f"F_B,weight{accel.format('B')} + F_B,couple", value=forces.up[1], unit="N")
-    work.text("side: F_A + F_B = m Omega^2 R (toward the axis);   a F_A - b F_B = 0")
+    work.text(f"side: F_A + F_B = {ms} Omega^2 R (toward the axis);   a F_A - b F_B = 0")
     if offset == "across" and R:
-        work.step("F_A,side", "m Omega^2 R b / L", f"{qty(m, 'kg')} ({qty(precession, 'rad/s')})"
+        work.step("F_A,side", f"{ms} Omega^2 R b / L", f"{qty(m, 'kg')} ({qty(precession, 'rad/s')})"
                   f"^2 {qty(R, 'm')} {qty(b, 'm')} / {qty(L, 'm')}", forces.side[0], "N",
                   note="centripetal force of the centre of mass")
-        work.step("F_B,side", "m Omega^2 R a / L", value=forces.side[1], unit="N")
+        work.step("F_B,side", f"{ms} Omega^2 R a / L", value=forces.side[1], unit="N")
     else:
         work.text("no side forces (the centre of mass is not off the axis across the spin axis)")
-    work.step("T", "m (g cos(theta) + a_k)", value=forces.thrust, unit="N",
+    work.step("T", f"{ms} (g cos(theta) + a_k)", value=forces.thrust, unit="N",
               note="axial, along k, taken by the thrust bearing")
     if min(forces.up) < 0:
         work.text("a negative 'up' force pulls the rotor down: that bearing must hold the shaft "
@@ -345,7 +346,7 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
     work.answer("bearing_side_forces", "F_side", list(forces.side), "force", ["A", "B"])
     work.answer("bearing_loads", "|F|", list(forces.loads), "force", ["A", "B"])
     work.answer("axial_thrust", "T", [forces.thrust], "force")
-    work.check(f"up: F_A + F_B = {qty(sum(forces.up), 'N')}, m g sin(theta) + m a_up = "
+    work.check(f"up: F_A + F_B = {qty(sum(forces.up), 'N')}, {ms} g sin(theta) + {ms} a_up = "
                f"{qty(m * g * sin + sum(forces.inertial), 'N')}; a F_A - b F_B = "
                f"{qty(a * forces.up[0] - b * forces.up[1], 'N m')}, M = {qty(M, 'N m')}")
 

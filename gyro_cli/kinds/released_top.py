@@ -119,8 +119,8 @@ def _roots(top, start, nut, work: Work) -> None:
     work.text("udot^2 = f(u) = (1 - u^2)(alpha - a u) - (beta - gamma u)^2"
               "    (Eq. 11.19)")
     work.text("       = a u^3 - (alpha + gamma^2) u^2 + (2 beta gamma - a) u + (alpha - beta^2)")
-    work.text(f"       = ({num(a)}) u^3 - ({num(al + g * g)}) u^2 + ({num(2 * b * g - a)}) u + "
-              f"({num(al - b * b)})    [1/s^2]")
+    work.text(f"       = ({num(a)}) u^3 - ({num(al + g * g)}) u^2 + ({num(2 * b * g - a)}) u"
+              f" {'-' if al - b * b < 0 else '+'} {num(abs(al - b * b))}    [1/s^2]")
     work.text("f(+-1) = -(beta -+ gamma)^2 <= 0 and f(u0) = sin^2(theta0) thetadot0^2 >= 0: "
               "u1 <= u0 <= u2 in [-1, 1], u3 >= 1")
     for i, u in enumerate(nut.u_roots, 1):

@@ -234,7 +234,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     work.answer("spin", "psidot", spins, "rate", labels)
     work.answer("axial_rate", "omega_z", axials, "rate", labels)
     work.answer("moment", "M", [D * math.sin(theta)] * len(roots), "moment", labels)
-    _check(I, J, theta, spins, roots, D, work)
+    _check(I, J, theta, spins, roots, D, work, driver)
 
 
 def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float, theta: float,
@@ -276,7 +276,7 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
     work.answer("moment", "M", [D * math.sin(theta)], "moment")
-    _check(I, J, theta, [spin], [precession], D, work)
+    _check(I, J, theta, [spin], [precession], D, work, driver)
 
 
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
@@ -312,12 +312,13 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
 
 
 def _check(I: float, J: float, theta: float, spins: list[float], precessions: list[float],
-           D: float, work: Work) -> None:
-    """Each root in the vector form dH/dt = M, beside gravity's (or the applied) moment."""
+           D: float, work: Work, driver: str = "D") -> None:
+    """Each root in the vector form dH/dt = M, beside gravity's (or the applied) moment,
+    written with the symbols of the steps (m g l, or D = M / sin(theta) when applied)."""
     for spin, precession in zip(spins, precessions):
         rate = moment_required(I, J, theta, spin, precession)
         work.check(f"phidot = {qty(precession, 'rad/s')}: dH/dt = phidot sin(theta) (J omega_z - "
-                   f"I phidot cos(theta)) = {qty(rate, 'N m')}; applied D sin(theta) = "
+                   f"I phidot cos(theta)) = {qty(rate, 'N m')}; applied {driver} sin(theta) = "
                    f"{qty(D * math.sin(theta), 'N m')}")
 
 

@@ -34,7 +34,7 @@ def text(result: Result) -> str:
     lines += [f"Note: {note}" for note in problem.notes]
     symbol = max([7] + [len(g.symbol) for g in solution.given]) + 1
     text = max([21] + [len(g.text) for g in solution.given]) + 1
-    lines += ["", f"{'Given':<{symbol + text + 2}}SI"]
+    lines += ["", f"{'Given':<{symbol + text + 2}}{solution.system}"]
     for g in solution.given:
         si = g.si_value if isinstance(g.si_value, str) else f"{num(g.si_value)} {g.si_unit}"
         row = f"  {g.symbol:<{symbol}}{g.text:<{text}}{si}"
@@ -76,7 +76,7 @@ def as_dict(result: Result) -> dict[str, Any]:
                   for s in solution.sections],
         "checks": [step.as_text() for step in solution.checks],
         "warnings": list(solution.warnings),
-    }
+    } | ({"units": solution.system.lower()} if solution.system != "SI" else {})
 
 
 def as_json(result: Result) -> str:

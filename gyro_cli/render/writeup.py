@@ -1,408 +1,352 @@
 """Write-ups: a solved problem as Markdown or LaTeX for an instructor's solution sheet.
 
-`gyro solve --format markdown|latex`. The structured steps of the worked
+`gyro solve --format markdown|latex [--standalone]`. Each step of the worked
 answer (``work.Step``: symbol, formula, substitution, value, unit, ref, text)
-are typeset through a small transliteration of the plain formulas:
-``phidot`` -> ``\\dot{\\phi}``, ``theta`` -> ``\\theta``, ``omega_z`` ->
-``\\omega_{z}``, ``sqrt(...)`` -> ``\\sqrt{...}``, ``^2`` -> ``^{2}``,
-``3.869e-05`` -> ``3.869\\times10^{-5}``, a unit after a number in upright
-``\\mathrm{...}``, and words in ``\\text{...}``. Only amsmath is needed (for
-``\\text``); Markdown uses ``$...$`` and ``$$...$$`` (GitHub, Pandoc, Jupyter).
+is parsed into an expression tree (`mathparse`) and typeset by a printer
+(`mathprint`); lines of prose are split into words and the maths in them by
+the same parser, so what does not parse stays words. A display too wide for
+the page is set as aligned rows, one per ``=``, and a long sum is broken
+at its ``+`` and ``-``. A step citing one equation of the chapter is
+numbered with it (``\\tag{11.13}``). LaTeX needs amsmath only (``--standalone``
+writes a whole document); Markdown uses ``$...$`` and ``$$...$$`` (GitHub,
+Pandoc, Jupyter).
+
+Nothing here is imported by ``gyro solve`` in text or JSON.
 """
 
 from __future__ import annotations
 
 import re
 
-from ..solving.solve import Result
 from ..core.work import num
+from ..solving.solve import Result
+from .mathparse import spans, try_parse
+from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
+from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
 
-GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-         "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
-         "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega"}
-FUNCTIONS = {"sin", "cos", "tan", "exp", "ln", "log", "arcsin", "arccos", "arctan", "sinh",
-             "cosh", "tanh"}
-UNITS = {"kg", "m", "s", "N", "rad", "rpm", "deg", "mm", "cm", "km", "in", "ft", "lb", "lbf",
-         "oz", "ozf", "slug", "Hz", "min", "h", "J", "W", "revolution", "rev", "g", "lbm",
-         "degree", "radian", "second", "minute", "meter", "metre", "newton", "kip", "mi", "yd"}
-SHORT_WORDS = {"a", "an", "as", "at", "be", "by", "if", "in", "is", "it", "no", "of", "on", "or",
-               "so", "to", "we", "up"}
+__all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "symbol_tex"]
 
-_TOKEN = re.compile(r"""
-    (?P<num>\d+(?:\.\d*)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
-  | (?P<name>[A-Za-z][A-Za-z0-9_]*)
-  | (?P<op>>=|<=|\+-|!=|[-+*/=<>^(),;:.!?'%&#$|\[\]{}~\\"@`])
-  | (?P<space>\s+)
-  | (?P<other>.)
-""", re.X | re.S)
+#: a display wider than this (in characters of maths, about 5.5 pt each) is broken into rows;
+#: the page of `standalone` is 17 cm, about 480 pt
+WIDTH = 64
 
-_TEXT_ESCAPES = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
-                 "#": r"\#", "%": r"\%", "_": r"\_", "^": r"\textasciicircum{}",
-                 "~": r"\textasciitilde{}"}
-_MATH_OPS = {">=": r"\ge ", "<=": r"\le ", "+-": r"\pm ", "!=": r"\ne ", "*": r"\cdot ",
-             "%": r"\%", "&": r"\&", "#": r"\#", "$": r"\$", "{": r"\{", "}": r"\}",
-             "~": r"\sim ", "\\": r"\backslash ", '"': "''", "@": r"\text{@}", "`": "'"}
+#: a line ending in the chapter's equation number: "udot^2 = f(u) = ...    (Eq. 11.19)"
+_CITED = re.compile(r"\s+\(Eq\. (\d+\.\d+)\)$")
+_EQ = re.compile(r"^Eq\. (\d+\.\d+)(?:, (.+))?$")
 
 
-# Unicode a problem file may hold, as LaTeX maths (pdflatex has no glyph for them in math).
-UNICODE_MATH = {"θ": r"\theta", "φ": r"\phi", "ψ": r"\psi", "ω": r"\omega", "α": r"\alpha",
-                "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "μ": r"\mu", "µ": r"\mu",
-                "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "Ω": r"\Omega",
-                "Δ": r"\Delta", "°": r"^{\circ}", "≥": r"\ge", "≤": r"\le", "±": r"\pm",
-                "×": r"\times", "·": r"\cdot", "−": "-", "≈": r"\approx", "→": r"\to"}
+# ---- formulas ---------------------------------------------------------------
+
+def math(text: str, units: bool = True, display: bool = False) -> str:
+    """A formula as LaTeX maths (no delimiters); what does not parse is set word by word."""
+    tree = try_parse(text, units)
+    if tree is not None:
+        return LatexPrinter(display).doprint(tree)
+    return _fallback(text)
 
 
-def text_escape(text: str) -> str:
-    """Plain text safe in LaTeX (Greek and math signs as inline maths)."""
-    return "".join(_TEXT_ESCAPES.get(c) or (f"${UNICODE_MATH[c]}$" if c in UNICODE_MATH else c)
-                   for c in text)
+def _fallback(text: str) -> str:
+    out = []
+    for is_math, part in spans(text):
+        out.append(LatexPrinter(False).doprint(part) if is_math
+                   else f"\\text{{{text_escape(part.replace('_', ' '))}}}")
+    return " ".join(out) or "\\text{}"
 
 
-_keys: frozenset[str] | None = None
+def _tex(text: str) -> Tex:
+    return Tex(_fallback(text), text)
 
 
-def _FILE_KEYS() -> frozenset[str]:  # noqa: N802 - computed once, on first use
-    global _keys
-    if _keys is None:
-        _keys = file_keys()
-    return _keys
-
-
-def _tokens(text: str) -> list[tuple[str, str]]:
-    return [(m.lastgroup, m.group()) for m in _TOKEN.finditer(text)]
-
-
-def file_keys() -> frozenset[str]:
-    """Key and answer names of the problem format written with an underscore whose first
-    part is a word, not a symbol (``bearing_forces``, ``cg_distance``; not ``theta_max``)."""
-    from .. import kinds
-    from ..core.body import BODY_PARAMS
-
-    names = {p.name for p in BODY_PARAMS}
-    for kind in map(kinds.get, kinds.names()):
-        names |= {p.name for p in kind.params} | {a.name for a in kind.answers}
-    return frozenset(n for n in names if "_" in n and not _is_symbol(n.partition("_")[0]))
-
-
-def _is_symbol(base: str) -> bool:
-    return base in GREEK or len(base) == 1 or bool(_dotted(base))
-
-
-def is_word(name: str) -> bool:
-    """An English word rather than a symbol (``because`` but not ``phidot`` or ``I_G``);
-    a file key such as ``bearing_forces`` in prose counts as a word."""
-    if "_" in name:
-        return name in _FILE_KEYS()
-    if name in GREEK or name in FUNCTIONS or name == "sqrt" or _dotted(name):
-        return False
-    if len(name) == 1:
-        return False
-    return name.isalpha()
-
-
-def _dotted(name: str) -> tuple[str, str] | None:
-    for suffix, accent in (("ddot", r"\ddot"), ("dot", r"\dot")):
-        base = name[: -len(suffix)]
-        if name.endswith(suffix) and (base in GREEK or len(base) == 1):
-            return base, accent
-    return None
-
-
-def symbol_tex(name: str) -> str:
-    """One symbol: ``phidot`` -> ``\\dot{\\phi}``, ``psidot_min`` -> ``\\dot{\\psi}_{\\mathrm{min}}``."""
-    base, _, sub = name.partition("_")
-    dotted = _dotted(base)
-    if dotted:
-        core = f"{dotted[1]}{{{symbol_tex(dotted[0])}}}"
-    elif base in GREEK:
-        core = f"\\{base}"
-    elif base in FUNCTIONS:
-        core = f"\\{base}"
-    elif len(base) == 1:
-        core = base
-    else:
-        core = f"\\mathrm{{{base}}}"
-    if sub:
-        inner = symbol_tex(sub) if (sub in GREEK or len(sub) == 1 or _dotted(sub)) \
-            else f"\\mathrm{{{text_escape(sub)}}}"
-        core += f"_{{{inner}}}"
-    return core
-
-
-def number_tex(text: str) -> str:
-    """``3.869e-05`` -> ``3.869\\times10^{-5}``."""
-    mantissa, _, exponent = text.lower().partition("e")
-    if not exponent:
-        return text
-    return f"{mantissa}\\times10^{{{int(exponent)}}}"
-
-
-def unit_tex(unit: str) -> str:
-    """A unit in upright type: ``kg m^2`` -> ``\\mathrm{kg\\,m^{2}}``; ``deg`` -> ``^{\\circ}``."""
-    unit = unit.strip().replace("*", " ")
+def unit_latex(unit: str) -> str:
     if unit in ("deg", "degree"):
         return "^{\\circ}"
     if not unit:
         return ""
+    return "\\," + unit_tex(unit.replace("*", " "))
+
+
+def _quantity(value: float, unit: str) -> str:
+    body = number_tex(num(value))
+    if unit in ("deg", "degree") and "\\times" in body:
+        body = "{" + body + "}"
+    return body + unit_latex(unit)
+
+
+def mixed(text: str, inline: tuple[str, str] = ("$", "$"), escape=text_escape) -> str:
+    """Prose with the maths in it set inline: words as text, each parsed span as maths."""
     out = []
-    for kind, tok in _tokens(unit):
-        if kind == "space":
-            out.append("\\,")
-        elif kind == "num":
-            out.append(tok)
-        elif kind == "name":
-            out.append(text_escape(tok))
-        elif tok == "^":
-            out.append("^")
+    for is_math, part in spans(text):
+        if is_math:
+            out.append(f"{inline[0]}{LatexPrinter(False).doprint(part)}{inline[1]}")
         else:
-            out.append(_MATH_OPS.get(tok, tok))
-    body = re.sub(r"\^(-?\d+)", r"^{\1}", "".join(out))
-    body = re.sub(r"\^\\,", "^", body)
-    return f"\\,\\mathrm{{{body}}}"
-
-
-def _is_unit_run(toks: list[tuple[str, str]], k: int) -> int:
-    """Length of a unit expression starting at toks[k] (after a number), or 0."""
-    j, last = k, k
-    while j < len(toks):
-        kind, tok = toks[j]
-        if kind == "name" and tok in UNITS:
-            j += 1
-            while j + 1 < len(toks) and toks[j][1] == "^" and toks[j + 1][0] in ("num",):
-                j += 2
-            if j + 2 < len(toks) and toks[j][1] == "^" and toks[j + 1][1] == "-" \
-                    and toks[j + 2][0] == "num":
-                j += 3
-            last = j
-            if j < len(toks) and toks[j][1] in ("/", "*"):
-                j += 1
-                continue
-            if j < len(toks) and toks[j][0] == "space":
-                j += 1
-                continue
-            break
-        break
-    if last == k:
-        return 0
-    # "2 m g l": a unit followed by a symbol is not a unit but a product of symbols.
-    rest = last
-    while rest < len(toks) and toks[rest][0] == "space":
-        rest += 1
-    if rest < len(toks) and toks[rest][0] == "name" and toks[rest][1] not in UNITS \
-            and toks[rest][1] not in FUNCTIONS and toks[rest][1] != "sqrt" \
-            and not is_word(toks[rest][1]):
-        return 0
-    return last - k
-
-
-def math(text: str, units: bool = True) -> str:
-    """Plain formula text as LaTeX math (no delimiters)."""
-    toks = _tokens(text)
-    return _math(toks, units)
-
-
-def _math(toks: list[tuple[str, str]], units: bool) -> str:
-    out: list[str] = []
-    k = 0
-    after_unit = False
-    while k < len(toks):
-        kind, tok = toks[k]
-        if kind == "space":
-            nxt = toks[k + 1] if k + 1 < len(toks) else ("", "")
-            prev = out[-1] if out else ""
-            if prev.startswith("\\text{") or (nxt[0] == "name" and is_word(nxt[1])):
-                out.append("\\ ")
-            elif after_unit and nxt[0] == "num":
-                out.append("\\cdot ")
-            else:
-                out.append(" ")
-            k += 1
-            continue
-        if kind == "num":
-            out.append(number_tex(tok))
-            k += 1
-            if units:
-                j = k
-                while j < len(toks) and toks[j][0] == "space":
-                    j += 1
-                n = _is_unit_run(toks, j)
-                if n:
-                    out.append(unit_tex("".join(t for _, t in toks[j:j + n])))
-                    k = j + n
-                    after_unit = True
-                    continue
-            after_unit = False
-            continue
-        after_unit = False
-        if kind == "name":
-            if tok == "sqrt" and k + 1 < len(toks) and toks[k + 1][1] == "(":
-                end = _matching(toks, k + 1)
-                if end is not None:
-                    out.append(f"\\sqrt{{{_math(toks[k + 2:end], units)}}}")
-                    k = end + 1
-                    continue
-            if is_word(tok) or (tok in SHORT_WORDS and len(tok) > 1):
-                out.append(f"\\text{{{text_escape(tok)}}}")
-            else:
-                out.append(symbol_tex(tok))
-            k += 1
-            continue
-        if tok == "^":
-            nxt = toks[k + 1] if k + 1 < len(toks) else ("", "")
-            if nxt[0] in ("num", "name"):
-                out.append(f"^{{{_math([nxt], False)}}}")
-                k += 2
-                continue
-            if nxt[1] == "-" and k + 2 < len(toks) and toks[k + 2][0] == "num":
-                out.append(f"^{{-{toks[k + 2][1]}}}")
-                k += 3
-                continue
-            if nxt[1] == "(":
-                end = _matching(toks, k + 1)
-                if end is not None:
-                    out.append(f"^{{{_math(toks[k + 2:end], units)}}}")
-                    k = end + 1
-                    continue
-            out.append(r"\hat{}")
-            k += 1
-            continue
-        if kind == "op":
-            out.append(_MATH_OPS.get(tok, tok))
-        elif tok in UNICODE_MATH:
-            out.append(UNICODE_MATH[tok] + " ")
-        else:
-            out.append(f"\\text{{{text_escape(tok)}}}")
-        k += 1
-    return re.sub(r"(\\ )+", r"\\ ", "".join(out)).strip()
-
-
-def _matching(toks: list[tuple[str, str]], start: int) -> int | None:
-    depth = 0
-    for j in range(start, len(toks)):
-        if toks[j][1] == "(":
-            depth += 1
-        elif toks[j][1] == ")":
-            depth -= 1
-            if depth == 0:
-                return j
-    return None
-
-
-def mixed(text: str, inline: tuple[str, str], escape=lambda s: s) -> str:
-    """Prose with the maths in it set inline: words as text, symbols and numbers as math."""
-    toks = _tokens(text)
-    classes = _classify(toks)
-    runs: list[tuple[bool, list[tuple[str, str]]]] = []
-    for tok, is_math in zip(toks, classes):
-        if runs and runs[-1][0] == is_math:
-            runs[-1][1].append(tok)
-        else:
-            runs.append((is_math, [tok]))
-    out = []
-    for is_math, part in runs:
-        if is_math and any(k in ("num", "name") for k, _ in part):
-            first, last = _first_nonspace(part), _last_nonspace(part)
-            core = part[first:last + 1]
-            # Unbalanced brackets at the ends belong to the sentence, not the maths.
-            head = tail = ""
-            while core and (core[-1][0] == "space" or core[-1][1] == "("
-                            or (core[-1][1] == ")" and _depth(core) < 0)):
-                tail = core.pop()[1] + tail
-            while core and (core[0][0] == "space" or core[0][1] == ")"
-                            or (core[0][1] == "(" and _depth(core) > 0)):
-                head += core.pop(0)[1]
-            if not core:
-                out.append(escape(lead_text(part)))
-                continue
-            lead = "".join(t for _, t in part[:first])
-            trail = "".join(t for _, t in part[last + 1:])
-            out.append(f"{escape(lead + head)}{inline[0]}{_math(core, True)}{inline[1]}"
-                       f"{escape(tail + trail)}")
-        else:
-            out.append(escape("".join(t for _, t in part)))
+            out.append(escape(part))
     return "".join(out)
 
 
-def lead_text(part: list[tuple[str, str]]) -> str:
-    return "".join(t for _, t in part)
-
-
-def _depth(part: list[tuple[str, str]]) -> int:
-    return sum(t == "(" for _, t in part) - sum(t == ")" for _, t in part)
-
-
-def _classify(toks: list[tuple[str, str]]) -> list[bool]:
-    """For each token of a prose line: is it maths?"""
-    classes: list[bool] = []
-    unit_left = 0
-    previous: list[str] = []  # the last non-space tokens
-    for k, (kind, tok) in enumerate(toks):
-        if unit_left:
-            unit_left -= 1
-            classes.append(True)
-        elif kind == "name":
-            possessive = tok == "s" and previous[-1:] == ["'"] and k > 1 \
-                and toks[k - 2][0] == "name"
-            classes.append(not (is_word(tok) or tok in SHORT_WORDS or possessive))
-        elif kind == "space":
-            classes.append(classes[-1] if classes else False)
-        elif kind == "num":
-            # "Eq. 11.13" is a reference, not a number in the maths.
-            is_ref = previous[-2:] in (["Eq", "."], ["Eqs", "."]) or \
-                (previous[-1:] == ["-"] and classes and not classes[-1])
-            classes.append(not is_ref)
-            if not is_ref:
-                j = k + 1
-                while j < len(toks) and toks[j][0] == "space":
-                    j += 1
-                run = _is_unit_run(toks, j)
-                if run:
-                    unit_left = j - k - 1 + run
-        else:
-            classes.append(tok not in (",", ";", ":", ".", "?", "!", "'", '"'))
-        if kind != "space":
-            previous.append(tok)
-    return classes
-
-
-def _first_nonspace(part: list[tuple[str, str]]) -> int:
-    return next(i for i, (k, _) in enumerate(part) if k != "space")
-
-
-def _last_nonspace(part: list[tuple[str, str]]) -> int:
-    return max(i for i, (k, _) in enumerate(part) if k != "space")
-
-
 def is_prose(text: str) -> bool:
-    """A line that is mostly words (set as a sentence) rather than an equation."""
-    names = [t for k, t in _tokens(text) if k == "name"]
-    words = [n for n in names if is_word(n) and n not in UNITS]
-    return len(words) >= 2
+    """A line that is not one formula (it is set as a sentence with maths inside)."""
+    return try_parse(text) is None
 
 
-def step_math(step) -> str:
-    """``symbol = formula = substitution = value unit`` as LaTeX math."""
-    parts = [math(step.symbol, units=False)]
+# ---- width and breaking -----------------------------------------------------
+
+def width(node: Node | None) -> float:
+    """Rough width of the typeset node in characters (a stacked fraction is as wide as
+    its wider part)."""
+    if node is None:
+        return 0
+    if isinstance(node, BinOp):
+        if node.op == "/":
+            return max(width(_strip(node.left)), width(_strip(node.right))) + 1
+        return width(node.left) + width(node.right) + (3 if node.op in "+-" else 1)
+    if isinstance(node, Pow):
+        return width(node.base) + 0.7 * width(node.exp)
+    if isinstance(node, Quantity):
+        return width(node.value) + 0.9 * len(node.unit) + 1
+    if isinstance(node, Num):
+        return len(node.text) + (4 if "e" in node.text.lower() else 0)
+    if isinstance(node, Sym):
+        return 1.2 + 0.7 * len(node.name.partition("_")[2])
+    if isinstance(node, Rel):
+        return width(node.first) + sum(3 + width(rhs) for _, rhs in node.rest)
+    if isinstance(node, Text):
+        return len(node.text)
+    if isinstance(node, Tex):
+        return len(node.plain)
+    total = 2.0
+    for value in vars(node).values():
+        if isinstance(value, Node):
+            total += width(value)
+        elif isinstance(value, tuple):
+            total += sum(width(x) + 1 for x in value if isinstance(x, Node))
+            total += sum(width(x[1]) + 2 for x in value if isinstance(x, tuple))
+        elif isinstance(value, str) and type(node).__name__ == "Call":
+            total += len(value) if value not in ("|", ",") else 0
+    return total
+
+
+def _strip(node: Node) -> Node:
+    while isinstance(node, Group) and node.open == "(":
+        node = node.body
+    return node
+
+
+def _terms(node: Node) -> list[tuple[str, Node]]:
+    """A sum as its terms with their signs: a - b + c -> [("", a), ("-", b), ("+", c)]."""
+    if isinstance(node, BinOp) and node.op in ("+", "-"):
+        return _terms(node.left) + [(node.op, node.right)]
+    return [("", node)]
+
+
+def _opened(piece: Node, printer) -> tuple[str, Node, str]:
+    """A piece whose width is in one bracketed sum: the text before the sum, the sum and the
+    text after (``a (b + c + d)`` -> ``a \\Bigl(``, b + c + d, ``\\Bigr)``)."""
+    node = piece
+    if isinstance(node, BinOp) and node.op == "/" and len(_terms(_strip(node.left))) > 1:
+        den = printer.doprint(_strip(node.right))
+        return f"\\frac{{1}}{{{den}}} \\Bigl(", _strip(node.left), " \\Bigr)"
+    if isinstance(node, BinOp) and node.op in (" ", "*"):
+        right = node.right
+        if isinstance(right, Group) and len(_terms(right.body)) > 1 \
+                and width(right) > width(node.left):
+            o, c = ("[", "]") if right.open == "[" else ("(", ")")
+            return f"{printer.doprint(node.left)} \\Bigl{o}", right.body, f" \\Bigr{c}"
+    if isinstance(node, Group) and len(_terms(node.body)) > 1:
+        o, c = ("[", "]") if node.open == "[" else ("(", ")")
+        return f"\\Bigl{o}", node.body, f" \\Bigr{c}"
+    return "", piece, ""
+
+
+def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
+    """(left, right) rows of an aligned display: ``lhs = p1 = p2`` one ``=`` a row, a piece
+    too wide broken at the + and - of its sum."""
+    printer = LatexPrinter(True)
+    rows: list[tuple[str, str]] = []
+    for k, piece in enumerate(pieces):
+        left = lhs if k == 0 else ""
+        if width(piece) <= budget:
+            rows.append((left, "= " + printer.doprint(piece)))
+            continue
+        prefix, inner, suffix = _opened(piece, printer)
+        terms = _terms(inner)
+        if len(terms) == 1:
+            rows.append((left, "= " + printer.doprint(piece)))
+            continue
+        line, first = prefix, True
+        used = width(piece) - width(inner)
+        for sign, term in terms:
+            text = printer.doprint(BinOp(sign, Num("0"), term))[2:] if sign else \
+                printer.doprint(term)
+            w = width(term) + 3
+            if line.strip() and line != prefix and used + w > budget:
+                rows.append((left if first else "", ("= " if first else "\\quad ") + line))
+                first, line, used = False, "", 0.0
+            line = f"{line} {text}".strip() if line else text
+            used += w
+        rows.append((left if first else "", ("= " if first else "\\quad ") + line + suffix))
+    return rows
+
+
+# ---- steps ------------------------------------------------------------------
+
+def _step_pieces(step) -> tuple[Node | None, list[Node]]:
+    lhs = try_parse(step.symbol, units=False) or _tex(step.symbol)
+    pieces: list[Node] = []
     if step.formula:
-        parts.append(math(step.formula, units=False))
+        pieces.append(try_parse(step.formula, units=False) or _tex(step.formula))
     if step.substitution:
-        parts.append(math(step.substitution))
+        pieces.append(try_parse(step.substitution) or _tex(step.substitution))
     if step.value is not None:
-        unit = {"kg*m^2": "kg m^2", "N*m": "N m"}.get(step.unit, step.unit)
-        parts.append(number_tex(num(step.value)) + unit_tex(unit))
-    return " = ".join(parts)
+        unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(step.unit,
+                                                                              step.unit)
+        pieces.append(Quantity(Num(num(step.value)), unit) if unit else Num(num(step.value)))
+    return lhs, pieces
 
 
-def _answer_parts(answer) -> list[str]:
+def _tag(step) -> tuple[str, str]:
+    """The chapter's equation number a step cites, and the rest of its reference."""
+    m = _EQ.match(step.ref or "")
+    return (m.group(1), m.group(2) or "") if m else ("", step.ref or "")
+
+
+def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
+    """The display maths of a step and the prose lines that follow it."""
+    lhs, pieces = _step_pieces(step)
+    printer = LatexPrinter(True)
+    left = printer.doprint(lhs)
+    after = []
+    tag, rest = _tag(step)
+    notes = []
+    if rest:
+        notes.append(f"({rest})")
+    if step.text:
+        notes.append(step.text)
+    note = " ".join(notes)
+    total = width(lhs) + sum(width(p) + 3 for p in pieces)
+    widest = total if total <= WIDTH else \
+        max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
+    short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
+    if total <= WIDTH:
+        body = " = ".join([left] + [printer.doprint(p) for p in pieces])
+    else:
+        rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
+        body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
+            "\n\\end{aligned}"
+    if short_note:
+        body += f" \\qquad {_note_math(note)}"
+    elif note:
+        after.append(note)
+    if tag:
+        body += f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}"
+    return body, after
+
+
+def _note_math(note: str) -> str:
+    tree = try_parse(note)
+    if tree is not None and not isinstance(tree, Sym):
+        return LatexPrinter(True).doprint(tree)
+    return "\\text{" + re.sub(r"\$([^$]*)\$", r"$\1$", mixed(note)) + "}"
+
+
+def _steps(steps, markdown: bool) -> list[str]:
+    out = []
+    for step in steps:
+        if step.symbol:
+            body, after = _step_display(step, markdown)
+            out += _display(body, markdown)
+            out += [_prose(line, markdown) for line in after]
+            if after:
+                out.append("")
+            continue
+        text = step.text.strip()
+        tag = ""
+        cited = _CITED.search(text)
+        if cited and try_parse(text[:cited.start()]) is not None:
+            text, tag = text[:cited.start()], cited.group(1)
+        tree = try_parse(text)
+        number = (f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}") if tag else ""
+        if tree is not None and width(tree) <= WIDTH and _is_equation(tree):
+            out += _display(LatexPrinter(True).doprint(tree) + number, markdown)
+        elif tree is not None and isinstance(tree, Rel) and _is_equation(tree):
+            rows = _rel_rows(tree)
+            out += _display("\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
+                            + number, markdown)
+        else:
+            out += [_prose(text, markdown), ""]
+    return out
+
+
+def _is_equation(tree: Node) -> bool:
+    return isinstance(tree, Rel)
+
+
+def _rel_rows(tree: Rel) -> list[str]:
+    printer = LatexPrinter(True)
+    first = printer.doprint(tree.first) if tree.first is not None else ""
+    rows = []
+    for k, (op, rhs) in enumerate(tree.rest):
+        sub = _rows("", [rhs], WIDTH - 8)
+        for j, (_, right) in enumerate(sub):
+            if j == 0:
+                right = f"{RELATIONS_TEX[op]} {right[2:]}"
+            rows.append(f"{first if k == 0 and j == 0 else ''} &{right}")
+    return rows
+
+
+def _display(body: str, markdown: bool) -> list[str]:
+    if markdown:
+        return [f"$$ {body} $$", ""]
+    if "\\tag" in body:
+        return ["\\begin{equation*}", body, "\\end{equation*}"]
+    return [f"\\[ {body} \\]"]
+
+
+def _prose(text: str, markdown: bool) -> str:
+    return mixed(text, ("$", "$"), _md_escape if markdown else text_escape)
+
+
+def _breakable(tex: str) -> str:
+    """Long addresses may break after a slash (outside the maths)."""
+    parts = re.split(r"(\$[^$]*\$)", tex)
+    return "".join(p if p.startswith("$") else p.replace("/", "/\\allowbreak{}")
+                   for p in parts)
+
+
+def _md_escape(text: str) -> str:
+    """Prose in Markdown: characters that Markdown would read as markup escaped."""
+    return re.sub(r"([*_`|<>\[\]\\$])", r"\\\1", text)
+
+
+def _answer_lhs(answer) -> str:
+    """``symbol = `` before an answer's values; nothing when the symbol is the name in words
+    (``motion: retrograde``)."""
+    if try_parse(answer.symbol, units=False) is None or answer.symbol == answer.name \
+            and not (answer.values and not isinstance(answer.values[0], str)) \
+            and answer.symbol.isalpha() and len(answer.symbol) > 2:
+        return ""
+    return math(answer.symbol, units=False) + " = "
+
+
+def _answer_parts(answer) -> list[tuple[str, str]]:
     parts = []
     for i, value in enumerate(answer.values):
         if isinstance(value, str):
             body = f"\\text{{{text_escape(value)}}}"
         else:
-            body = number_tex(num(value)) + unit_tex(answer.unit or "")
+            body = _quantity(value, answer.unit or "")
         label = answer.labels[i] if i < len(answer.labels) else ""
         parts.append((body, label))
     return parts
+
+
+def _given_text(g) -> str:
+    return g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
+
+
+def _si(g) -> str:
+    if isinstance(g.si_value, str):  # a word of the file (counterclockwise_from_bow)
+        return f"\\text{{{text_escape(g.si_value.replace('_', ' '))}}}"
+    return _quantity(g.si_value, g.si_unit)
 
 
 # ---- Markdown ---------------------------------------------------------------
@@ -410,130 +354,108 @@ def _answer_parts(answer) -> list[str]:
 def markdown(result: Result) -> str:
     """The worked answer as Markdown with $-delimited LaTeX maths."""
     problem, solution = result.problem, result.solution
-    md = ("$", "$")
     lines = [f"## {problem.id}: {problem.title}".rstrip(": ") if problem.title
              else f"## {problem.id}", ""]
-    meta = [f"Kind: `{problem.kind.name}`"] + ([f"Source: {problem.source}"] if problem.source
-                                              else [])
+    meta = [f"Kind: `{problem.kind.name}`"] + ([f"Source: {_md_escape(problem.source)}"]
+                                              if problem.source else [])
     lines += ["*" + ". ".join(meta) + ".*", ""]
     for note in problem.notes:
-        lines += [f"> {mixed(note, md)}", ""]
-    lines += ["### Given", "", "| | as given | SI |", "|---|---|---|"]
+        lines += [f"> {_prose(note, True)}", ""]
+    lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
-        si = f"\\text{{{text_escape(g.si_value)}}}" if isinstance(g.si_value, str) \
-            else number_tex(num(g.si_value)) + unit_tex(g.si_unit)
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"| ${symbol_tex(g.symbol)}$ | "
-                     f"{_md_cell(g.text)}{_md_cell(note)} | ${si}$ |")
+        lines.append(f"| ${math(g.symbol, units=False)}$ | "
+                     f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
     for section in solution.sections:
-        lines += ["", f"### {mixed(section.title, md)}", ""]
-        lines += _md_steps(section.steps, md)
+        lines += ["", f"### {_prose(section.title, True)}", ""]
+        lines += _steps(section.steps, True)
     if solution.checks:
         lines += ["", "### Check", ""]
-        lines += _md_steps(solution.checks, md)
+        lines += _steps(solution.checks, True)
     lines += ["", "### Answer", ""]
     for name, answer in result.answers.items():
-        parts = [f"${symbol_tex(answer.symbol)} = {body}$" + (f" ({label})" if label else "")
+        lhs = _answer_lhs(answer)
+        parts = [f"${lhs}{body}$" + (f" ({label})" if label else "")
                  for body, label in _answer_parts(answer)]
         lines.append(f"- **{name}**: " + ", ".join(parts))
     if solution.warnings:
         lines += ["", "### Warnings", ""]
-        lines += [f"- {w}" for w in solution.warnings]
-    return _one_superscript("\n".join(lines) + "\n")
+        lines += [f"- {_prose(w, True)}" for w in solution.warnings]
+    return _squeeze("\n".join(lines)) + "\n"
 
 
 def _md_cell(text: str) -> str:
     return text.replace("|", "\\|")
 
 
-def _md_steps(steps, md: tuple[str, str]) -> list[str]:
-    out = []
-    for step in steps:
-        if step.symbol:
-            tail = " ".join(f"\\text{{{text_escape(t)}}}" for t in
-                            ([f"({step.ref})"] if step.ref else []) +
-                            ([step.text] if step.text and is_prose(step.text) else []))
-            extra = f"\\qquad {math(step.text)}" if step.text and not is_prose(step.text) else ""
-            if tail:
-                extra += f" \\qquad {tail}"
-            out += [f"$$ {step_math(step)}{extra} $$", ""]
-        elif is_prose(step.text):
-            out += [mixed(step.text, md), ""]
-        else:
-            out += [f"$$ {math(step.text)} $$", ""]
-    return out
+def _squeeze(text: str) -> str:
+    return re.sub(r"\n{3,}", "\n\n", text)
 
 
 # ---- LaTeX ------------------------------------------------------------------
 
-def latex(result: Result) -> str:
+def latex(result: Result, level: str = "subsection*") -> str:
     """The worked answer as a LaTeX fragment (needs amsmath) to paste into a solution sheet."""
     problem, solution = result.problem, result.solution
-    inline = ("$", "$")
     title = f"{problem.id}: {problem.title}" if problem.title else problem.id
-    lines = ["% gyro solve --format latex: paste into a document that loads amsmath",
-             f"\\subsection*{{{text_escape(title)}}}"]
-    meta = [f"Kind: {problem.kind.name}"] + ([f"Source: {problem.source}"] if problem.source
-                                            else [])
-    lines.append("\\textit{" + text_escape(". ".join(meta)) + ".}")
+    lines = ["% gyro solve --format latex: paste into a document that loads amsmath"
+             if level == "subsection*" else f"% {problem.id}",
+             f"\\{level}{{{text_escape(title)}}}"]
+    meta = text_escape(f"Kind: {problem.kind.name.replace('_', ' ')}.")
+    if problem.source:
+        meta += " Source: " + _breakable(_prose(problem.source, False))
+    lines.append("\\textit{" + meta + "}")
     for note in problem.notes:
-        lines += ["", _latex_prose(note, inline)]
-    lines += ["", "\\paragraph{Given.}", "", "\\begin{tabular}{lll}",
-              "& as given & SI \\\\ \\hline"]
+        lines += ["", _prose(note, False)]
+    # a whole document may break a long table over pages; a fragment needs amsmath only
+    table = "longtable" if level == "section" else "tabular"
+    lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
+              f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
-        si = f"\\text{{{text_escape(g.si_value)}}}" if isinstance(g.si_value, str) \
-            else number_tex(num(g.si_value)) + unit_tex(g.si_unit)
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"${symbol_tex(g.symbol)}$ & {text_escape(g.text + note)} & ${si}$ \\\\")
-    lines.append("\\end{tabular}")
+        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
+    lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
-        lines += ["", f"\\paragraph{{{_latex_prose(section.title, inline)}.}}", ""]
-        lines += _latex_steps(section.steps, inline)
+        lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
+        lines += _steps(section.steps, False)
     if solution.checks:
-        lines += ["", "\\paragraph{Check.}", ""]
-        lines += _latex_steps(solution.checks, inline)
-    lines += ["", "\\paragraph{Answer.}", "", "\\begin{itemize}"]
+        lines += ["", "\\subsubsection*{Check}", ""]
+        lines += _steps(solution.checks, False)
+    lines += ["", "\\subsubsection*{Answer}", "", "\\begin{itemize}"]
     for name, answer in result.answers.items():
-        parts = [f"${symbol_tex(answer.symbol)} = {body}$" + (f" ({text_escape(label)})"
-                                                              if label else "")
+        lhs = _answer_lhs(answer)
+        parts = [f"${lhs}{body}$" + (f" ({text_escape(label)})" if label else "")
                  for body, label in _answer_parts(answer)]
-        lines.append(f"  \\item \\textbf{{{text_escape(name)}}}: " + ", ".join(parts))
+        head = "" if lhs and symbol_tex(name) == math(answer.symbol, units=False) else \
+            f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
+        lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
-        lines += ["", "\\paragraph{Warnings.}", "", "\\begin{itemize}"]
-        lines += [f"  \\item {_latex_prose(w, inline)}" for w in solution.warnings]
+        lines += ["", "\\subsubsection*{Warnings}", "", "\\begin{itemize}"]
+        lines += [f"  \\item {_prose(w, False)}" for w in solution.warnings]
         lines.append("\\end{itemize}")
-    return _one_superscript("\n".join(lines) + "\n")
+    return _squeeze("\n".join(lines)) + "\n"
 
 
-_DOUBLE_SUPERSCRIPT = re.compile(r"(\d[\d.]*\\times10\^\{-?\d+\})\^\{\\circ\}")
+PREAMBLE = r"""\documentclass[10pt]{article}
+\usepackage[a4paper,margin=2cm]{geometry}
+\usepackage{amsmath}
+\usepackage{longtable}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5ex}
+\emergencystretch=3em
+\allowdisplaybreaks
+"""
 
 
-def _one_superscript(text: str) -> str:
-    """Brace a number in powers of ten before a degree sign: ``a\\times10^{-5}^{\\circ}``
-    is a double superscript, which TeX rejects; ``{a\\times10^{-5}}^{\\circ}`` is not."""
-    return _DOUBLE_SUPERSCRIPT.sub(r"{\1}^{\\circ}", text)
-
-
-def _latex_prose(text: str, inline: tuple[str, str]) -> str:
-    """Prose for LaTeX: text escaped outside the maths, maths inline."""
-    return mixed(text, inline, text_escape)
-
-
-def _latex_steps(steps, inline: tuple[str, str]) -> list[str]:
-    out = []
-    for step in steps:
-        if step.symbol:
-            tail = []
-            if step.ref:
-                tail.append(f"\\text{{({text_escape(step.ref)})}}")
-            if step.text:
-                tail.append(math(step.text) if not is_prose(step.text)
-                            else f"\\text{{{text_escape(step.text)}}}")
-            extra = "".join(f" \\qquad {t}" for t in tail)
-            out += [f"\\[ {step_math(step)}{extra} \\]"]
-        elif is_prose(step.text):
-            out += [_latex_prose(step.text, inline), ""]
-        else:
-            out += [f"\\[ {math(step.text)} \\]"]
-    return out
+def standalone(results: list[Result], title: str = "Worked solutions") -> str:
+    """A complete LaTeX document (pdflatex compiles it as it is): preamble, title, one
+    section per problem."""
+    if len(results) == 1 and results[0].problem.title:
+        title = results[0].problem.title
+    body = [PREAMBLE, f"\\title{{{text_escape(title)}}}", "\\date{}", "\\begin{document}",
+            "\\maketitle", ""]
+    for result in results:
+        body.append(latex(result, level="section"))
+    body.append("\\end{document}")
+    return "\n".join(body) + "\n"

@@ -18,7 +18,8 @@ from ..core.given import Given
 from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "notes", "expected", "tolerance",
-            "vary")
+            "vary", "units")
+UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
 MAX_FILE_BYTES = 1_000_000
 
@@ -42,6 +43,7 @@ class Problem:
     data: dict[str, Any] = field(default_factory=dict)
     lines: dict[str, int] = field(default_factory=dict)
     us_customary: bool = False
+    units: str = "si"  # the worked answer's units: "si", or "us" (slug, ft, lbf)
 
     def line(self, key: str | None) -> int | None:
         return self.lines.get(key or "")
@@ -171,8 +173,16 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         find=parse_find(kind, data["find"]), title=_text(data.get("title", ""), "title"),
         source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
         expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
-        vary=data.get("vary"), data=data, lines=lines, us_customary=us)
+        vary=data.get("vary"), data=data, lines=lines, us_customary=us,
+        units=_unit_system(data.get("units", "si")))
     return problem
+
+
+def _unit_system(value: Any) -> str:
+    """``units``: the system the worked answer is written in."""
+    if not isinstance(value, str) or value.lower() not in UNIT_SYSTEMS:
+        raise InputError(f"expected si or us (slug, ft, lbf), got {value!r}"[:200], key="units")
+    return value.lower()
 
 
 def params_of(kind: Kind) -> tuple[Param, ...]:
