@@ -1,19 +1,23 @@
 """The command line: solve, check, simulate, new, schema, vary, kinds.
 
-Every command exits 0 on success, 1 when an answer does not match (check), and
-2 on bad input or usage, with a one-line message and never a traceback.
+Every command exits 0 on success, 1 when an answer does not match (check), 2 on
+bad input or usage, with a one-line message and never a traceback, and 3 when
+gyro itself failed on a file (an internal error: one line naming the file, then
+the next file goes on).
 """
 
 from __future__ import annotations
 
+import os
 import sys
 
 import click
 
 from . import __version__
-from .errors import InputError
+from .errors import InputError, internal_message
 
 FORMATS = ("text", "json", "markdown", "latex")
+INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
 def fail(error: InputError | str) -> None:
@@ -22,7 +26,30 @@ def fail(error: InputError | str) -> None:
     sys.exit(2)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+def internal(file: str | None, error: BaseException) -> None:
+    """Report an unexpected exception on one line (traceback with GYRO_DEBUG=1)."""
+    click.echo(f"gyro: {internal_message(file, error)}", err=True)
+    if os.environ.get("GYRO_DEBUG"):
+        import traceback
+
+        traceback.print_exception(error)
+
+
+class _Guarded(click.Group):
+    """The last line of defence: an exception no command caught is one line and exit 3."""
+
+    def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
+        try:
+            return super().invoke(ctx)
+        except (click.exceptions.ClickException, click.exceptions.Exit,
+                click.exceptions.Abort):
+            raise
+        except Exception as err:
+            internal(None, err)
+            sys.exit(INTERNAL)
+
+
+@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="gyro")
 def main() -> None:
     """Worked answers to textbook problems of gyroscopic motion (Chapter 11).
@@ -48,7 +75,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
-    bad = 0
+    bad = crashed = 0
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
@@ -56,22 +83,29 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                 from .plot import plot_result
 
                 plot_result(result, plot_file, force=force)
+            if fmt == "json":
+                text = report.as_json(result) + "\n"
+            elif fmt in ("markdown", "latex"):
+                from . import writeup
+
+                text = getattr(writeup, fmt)(result)
+            else:
+                text = report.text(result)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
             continue
-        if fmt == "json":
-            click.echo(report.as_json(result))
-        elif fmt in ("markdown", "latex"):
-            from . import writeup
-
-            if i:
-                click.echo("")
-            click.echo(getattr(writeup, fmt)(result), nl=False)
-        else:
-            if i:
-                click.echo("\n" + "=" * report.WIDTH + "\n")
-            click.echo(report.text(result), nl=False)
+        except Exception as err:  # a bug: say so on one line, solve the next file
+            internal(path, err)
+            crashed += 1
+            continue
+        if i and fmt in ("markdown", "latex"):
+            text = "\n" + text
+        elif i and fmt == "text":
+            text = "\n" + "=" * report.WIDTH + "\n\n" + text
+        click.echo(text, nl=False)
+    if crashed:
+        sys.exit(INTERNAL)
     if bad:
         sys.exit(2)
 
@@ -129,7 +163,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             write_atomic(out, text, force=force)
     except InputError as err:
         fail(err)
+    for line in graded.errors:
+        click.echo(f"gyro: {line}", err=True)
     click.echo(grades.as_json(graded) if fmt == "json" else grades.table(graded), nl=fmt == "json")
+    if graded.errors:
+        sys.exit(INTERNAL)
 
 
 @main.command("new")
@@ -210,6 +248,9 @@ def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
                             force=force, progress=terminal_progress())
     except InputError as err:
         fail(err)
+    except Exception as err:
+        internal(file, err)
+        sys.exit(INTERNAL)
     click.echo(out, nl=False)
 
 

@@ -51,32 +51,21 @@ def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
-def read_yaml(path: str) -> tuple[Any, dict[str, int]]:
-    """Safe-load one YAML document; also the line of each key, two levels deep."""
+def read_yaml(path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, int]]:
+    """Safe-load one YAML document; also the line of each key, two levels deep.
+
+    Only a regular file of at most ``limit`` bytes is read; nesting and aliases
+    are limited before anything is built (safeyaml.py).
+    """
     import yaml
 
-    if not os.path.exists(path):
-        raise InputError("no such file", file=path)
-    if os.path.isdir(path):
-        raise InputError("is a directory, expected a problem file (.yaml)", file=path)
+    from . import safeyaml
+
+    text = safeyaml.read_text(path, limit)
     try:
-        if os.path.getsize(path) > MAX_FILE_BYTES:
-            raise InputError(f"file is larger than {MAX_FILE_BYTES} bytes; not a problem file",
-                             file=path)
-        with open(path, encoding="utf-8") as handle:
-            text = handle.read()
-    except UnicodeDecodeError:
-        raise InputError("is not UTF-8 text", file=path) from None
-    except OSError as err:
-        raise InputError(f"cannot read: {err.strerror}", file=path) from None
-    loader_class = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    try:
-        loader = loader_class(text)
-        try:
-            node = loader.get_single_node()
-            data = loader.construct_document(node) if node is not None else None
-        finally:
-            loader.dispose()
+        data, node = safeyaml.load(text)
+    except InputError as err:
+        raise err.located(file=path) from None
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         what = f"{err.problem or err.context}"
@@ -183,12 +172,30 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
             raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
                              f"{suggest(str(text), param.choices)}", key=key)
         return text, text
-    return units.parse(text, param.dimension, key, weight=param.name == "weight")
+    return guarded(units.parse, text, param.dimension, key, weight=param.name == "weight")
+
+
+def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> Any:
+    """A units call whose unexpected failure on odd text (the unit parser's own
+    exceptions) is bad input at ``key``, not a crash."""
+    try:
+        return parse(text, dimension, key, **options)
+    except InputError:
+        raise
+    except Exception as err:  # noqa: BLE001 - e.g. AssertionError, TokenError from pint
+        shown = " ".join(str(text).split())[:60]
+        raise InputError(f"cannot read the unit in {shown!r} ({type(err).__name__})",
+                         key=key) from None
 
 
 def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     """``find``: answer name -> unit to print it in (None for words or SI)."""
     if isinstance(raw, list):
+        for name in raw:
+            if not isinstance(name, str):
+                raise InputError(f"expected answer names (a list of words, or a mapping of "
+                                 f"names to units), got a {_type_name(name)} in the list",
+                                 key="find")
         raw = {name: None for name in raw}
     if not isinstance(raw, dict) or not raw:
         raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
@@ -206,8 +213,9 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
                                  key=f"find.{name}")
             find[answer.name] = None
         else:
-            find[answer.name] = (None if unit is None
-                                 else units.check_unit(unit, answer.dimension, f"find.{name}"))
+            find[answer.name] = (None if unit is None else
+                                 guarded(units.check_unit, unit, answer.dimension,
+                                         f"find.{name}"))
     return find
 
 

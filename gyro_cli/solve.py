@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 from . import units
@@ -65,6 +66,7 @@ def _solve(problem: Problem) -> Result:
                          f"double precision ({type(err).__name__}: {err}); check the magnitudes "
                          "and units", key="given") from None
     solution = work.solution()
+    _all_finite(solution)
     answers = {}
     for name, unit in problem.find.items():
         answer = solution.answers.get(name)
@@ -80,9 +82,37 @@ def _solve(problem: Problem) -> Result:
         else:
             unit = unit or answer.si_unit
             values = [units.convert(v, answer.dimension, unit) for v in answer.si_values]
+            if not all(math.isfinite(v) for v in values):
+                big = max(answer.si_values, key=abs)
+                raise InputError(f"{name} = {num(big)} {answer.si_unit} is too large to "
+                                 f"express in {unit}; ask for a larger unit",
+                                 key=f"find.{name}")
         answers[name] = Reported(name, answer.symbol, values, unit, list(answer.si_values),
                                  answer.si_unit, answer.labels)
     return Result(problem, solution, answers)
+
+
+_NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
+
+
+def _all_finite(solution: Solution) -> None:
+    """Every number in the worked answer is finite: an overflow in a step (1e200 rpm
+    squared) is bad input for this kind, not a worked answer with inf in it."""
+    for section in solution.sections:
+        for step in section.steps:
+            where = step.symbol or section.title
+            if step.value is not None and not math.isfinite(step.value):
+                raise InputError(f"the step {where} is not a finite number for these data "
+                                 "(overflow or a degenerate case); check the magnitudes and "
+                                 "units", key="given")
+            for text in (step.formula, step.substitution, step.text):
+                if text and _NOT_FINITE.search(text):
+                    raise InputError(f"the step {where} overflows for these data; check "
+                                     "the magnitudes and units", key="given")
+    for text in [c.text for c in solution.checks] + list(solution.warnings):
+        if _NOT_FINITE.search(text):
+            raise InputError("a check of the answer overflows for these data; check the "
+                             "magnitudes and units", key="given")
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
