@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from . import units
-from .errors import InputError
+from .errors import InputError, shown
 from .work import num
 
 DEFAULT_TOLERANCE = "1%"
@@ -68,9 +68,9 @@ def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> 
     """One tolerance: ``"1%"``, ``"3 sig"`` or a quantity in the answer's dimension."""
     if isinstance(raw, bool) or not isinstance(raw, (str, int, float)):
         raise InputError(f"expected a tolerance such as '1%', '3 sig' or '0.01 rad/s', got "
-                         f"{raw!r}", key=key)
+                         f"{shown(raw)}", key=key)
     if isinstance(raw, (int, float)):
-        raise InputError(f"a bare number {raw!r} is ambiguous as a tolerance: write '{raw}%' "
+        raise InputError(f"a bare number {shown(raw)} is ambiguous as a tolerance: write '{raw}%' "
                          "(relative), '3 sig' (significant figures) or a quantity with a unit "
                          "(absolute)", key=key)
     text = raw.strip()
@@ -156,8 +156,8 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     once per unit, not once per value.
     """
     if dimension is None:
-        if isinstance(raw, (dict, list)) or raw is None:
-            raise InputError(f"expected a word, got {raw!r}", key=key)
+        if not isinstance(raw, str) or not raw.strip():
+            raise InputError(f"expected a word, got {shown(raw)}", key=key)
         return Expected(str(raw).strip(), str(raw).strip())
     if isinstance(raw, (dict, list)):
         raise InputError(f"expected a quantity such as '45.1 rpm', got a "
@@ -170,7 +170,7 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
         _FACTORS[(unit, dimension)] = factor
     si = number * factor
     if not math.isfinite(si):
-        raise InputError(f"{raw!r} is not a finite number", key=key)
+        raise InputError(f"{shown(raw)} is not a finite number", key=key)
     text = " ".join(raw.split()) if isinstance(raw, str) else f"{raw:g}"
     return Expected(text, si, number, unit, factor)
 
@@ -200,7 +200,10 @@ def distance(expected: float, got: float) -> float:
     """
     if expected == 0 or got == 0:
         return 0.0 if expected == got else 1e6 + abs(got - expected)
-    return abs(math.log(abs(got) / abs(expected))) + (1e-9 if (got < 0) != (expected < 0) else 0)
+    # log|got| - log|expected|, not log(|got| / |expected|): the ratio of 1e-300 and
+    # 1e300 underflows to 0.
+    return abs(math.log(abs(got)) - math.log(abs(expected))) + \
+        (1e-9 if (got < 0) != (expected < 0) else 0)
 
 
 def match_roots(expected: list[float], computed: list[float],
@@ -476,8 +479,8 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
             check.got_value = None
             check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
         relative = (got_si - value.si) / abs(value.si) if value.si else None
-        check.relative_error = relative if relative is not None and math.isfinite(relative) \
-            else None
+        check.relative_error = relative if relative is not None and abs(relative) < 1e300 \
+            else None  # in percent it would overflow
         check.passed = within(i, j)
         if not check.passed:
             off = ("expected is 0" if not value.si else "more than 1e308 times the expected value" if

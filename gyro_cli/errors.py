@@ -39,6 +39,21 @@ class InputError(Exception):
         return ": ".join(where + [text])
 
 
+def shown(value: object) -> str:
+    """A value from the file for a message, as YAML writes it (``.nan``, ``[1, .inf]``),
+    so a message never prints a bare nan or inf of its own."""
+    if isinstance(value, str):
+        return repr(value)
+    try:
+        import yaml
+
+        text = yaml.safe_dump(value, default_flow_style=True, width=200).strip()
+        text = text.removesuffix("...").strip()
+    except Exception:  # noqa: BLE001 - an odd type: its name is enough
+        return f"a {type(value).__name__}"
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
 def _one_line(name: str) -> str:
     """A file name or key as written, with line breaks and tabs shown as escapes."""
     name = str(name)

@@ -6,13 +6,15 @@ Errors name the file, the key, its YAML line and what was expected.
 from __future__ import annotations
 
 import difflib
+import math
 import os
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from . import kinds, units
 from .body import BODY_PARAMS
-from .errors import InputError
+from .errors import InputError, shown
 from .given import Given
 from .spec import Kind, Param
 
@@ -169,22 +171,48 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
     key = f"given.{param.name}"
     if param.dimension == "word":
         if not isinstance(text, str) or text not in param.choices:
-            raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
+            raise InputError(f"expected one of {', '.join(param.choices)}, got {shown(text)}"
                              f"{suggest(str(text), param.choices)}", key=key)
         return text, text
     return guarded(units.parse, text, param.dimension, key, weight=param.name == "weight")
 
 
+# The unit grammar of units._UNIT_EXPR with atomic groups: the same strings, in linear
+# time. Checked first while units.py reads units with that backtracking expression,
+# which takes minutes on text such as "1800 rpm relative to the frame psidot, see notes".
+_NUMBER_HEAD = re.compile(r"\s*[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?")
+_UNIT_LINEAR = re.compile(r"(?>(?:\*\*|\^)\s*+[-+]?\d{1,2}+|[A-Za-z_°µΩ][A-Za-z_0-9°µΩ]*+|"
+                          r"\s++|[*/()])*+")
+
+
+def _unit_grammar(text: str, key: str) -> None:
+    if len(text) > units.MAX_TEXT:
+        return  # refused by length in units, before any expression is tried
+    head = _NUMBER_HEAD.match(text)
+    if head and not _UNIT_LINEAR.fullmatch(text[head.end():].strip()):
+        raise InputError(f"{text!r} is not a number followed by a unit (only names, *, /, "
+                         "brackets and small integer powers are allowed in a unit)", key=key)
+
+
 def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> Any:
     """A units call whose unexpected failure on odd text (the unit parser's own
     exceptions) is bad input at ``key``, not a crash."""
+    if parse is units.check_unit and not isinstance(text, str):
+        raise InputError(f"expected a unit for this answer such as "
+                         f"'{units.si_text(dimension)}', got {shown(text)}", key=key)
+    if isinstance(text, float) and not math.isfinite(text):
+        written = ".nan" if text != text else ("-.inf" if text < 0 else ".inf")
+        raise InputError(f"expected a finite quantity such as '150 mm', got {written!r}",
+                         key=key)
+    if isinstance(text, str) and getattr(units, "_UNIT_EXPR", None) is not None:
+        _unit_grammar(text if parse is not units.check_unit else "1 " + text, key)
     try:
         return parse(text, dimension, key, **options)
     except InputError:
         raise
     except Exception as err:  # noqa: BLE001 - e.g. AssertionError, TokenError from pint
-        shown = " ".join(str(text).split())[:60]
-        raise InputError(f"cannot read the unit in {shown!r} ({type(err).__name__})",
+        written = " ".join(str(text).split())[:60]
+        raise InputError(f"cannot read the unit in {written!r} ({type(err).__name__})",
                          key=key) from None
 
 

@@ -42,6 +42,11 @@ def solve(problem: Problem) -> Result:
     try:
         return _solve(problem)
     except InputError as err:
+        if _NOT_FINITE.search(re.sub(r"'[^'\n]*'", "''", err.message)):
+            # A kind's check whose message would print inf or nan (m l^2 = inf kg m^2):
+            # the data are past what double precision holds, and that is the message.
+            err.message = ("these data overflow double precision (a value past 1e308 in "
+                           "checking them); check the magnitudes and units")
         raise err.located(file=problem.file, line=problem.line(err.key)) from None
 
 
