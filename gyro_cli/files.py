@@ -29,15 +29,7 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     The parent directory must exist. Returns the path written.
     """
     target = Path(path)
-    try:
-        mode = os.stat(target).st_mode
-    except (OSError, ValueError):
-        mode = None  # a new path (or a dangling symlink: refused below without --force)
-    if mode is not None and not stat.S_ISREG(mode):
-        from .safeyaml import _not_regular
-
-        message = _not_regular(mode, "a file to write").replace("reads", "writes")
-        raise InputError(message, file=str(target))
+    refuse_special(target)
     if not force and (target.exists() or target.is_symlink()):
         raise InputError("exists; not overwritten (use --force to replace it)", file=str(target))
     parent = target.parent if str(target.parent) else Path(".")
@@ -81,6 +73,19 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
         except OSError:
             pass
     return target
+
+
+def refuse_special(path: str | os.PathLike) -> None:
+    """InputError unless ``path`` is a regular file (or its link) or does not exist."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return  # a new path (or a dangling symlink: refused later without --force)
+    if not stat.S_ISREG(mode):
+        from .safeyaml import _not_regular
+
+        message = _not_regular(mode, "a file to write").replace("reads", "writes")
+        raise InputError(message, file=str(path))
 
 
 def _umask() -> int:
