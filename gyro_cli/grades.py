@@ -51,6 +51,7 @@ WORD_SYNONYMS = {
     "loops": ("loop", "looped", "looping", "loops"),
     "waves": ("wave", "wavy", "waving", "undulating", "waves"),
     "steady": ("steady", "steady precession", "uniform precession", "no nutation"),
+    "sleeping": ("sleeping", "asleep", "sleeping top", "sleeps"),
 }
 
 
