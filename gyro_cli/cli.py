@@ -44,6 +44,15 @@ class _Guarded(click.Group):
         except (click.exceptions.ClickException, click.exceptions.Exit,
                 click.exceptions.Abort):
             raise
+        except BrokenPipeError:
+            # The reader left (gyro solve ... | head): end quietly, as a program killed
+            # by SIGPIPE would (128 + 13), not with an internal error.
+            try:
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, sys.stdout.fileno())
+            except (OSError, ValueError):
+                pass
+            sys.exit(141)
         except Exception as err:
             internal(None, err)
             sys.exit(INTERNAL)

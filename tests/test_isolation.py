@@ -144,3 +144,18 @@ def test_the_traceback_is_shown_on_request(run, batch, broken_torque, monkeypatc
     result = run("solve", batch[1])
     assert result.exit_code == 3
     assert "Traceback" in result.stderr and "injected fault" in result.stderr
+
+
+def test_a_closed_pipe_ends_quietly():
+    import subprocess
+    import sys
+
+    gyro = [sys.executable, "-m", "gyro_cli"]
+    files = [str(p) for p in sorted(PROBLEMS.glob("*.yaml"))] * 5
+    process = subprocess.Popen(gyro + ["solve", *files], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE)
+    process.stdout.readline()
+    process.stdout.close()
+    _, err = process.communicate(timeout=120)
+    assert process.returncode == 141
+    assert err == b""
