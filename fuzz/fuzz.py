@@ -57,6 +57,21 @@ def _alarm(signum, frame):  # noqa: ARG001
     raise Hang()
 
 
+def _clear_click_stream_caches() -> None:
+    """click caches a text wrapper per stream in a WeakKeyDictionary whose values hold
+    their keys, so every CliRunner run keeps its captured output alive (about 7 kB a
+    file, 2 GB over a long run). A harness matter, not gyro's: clear it now and then."""
+    import weakref
+
+    from click import _compat
+
+    for func in (_compat._default_text_stdout, _compat._default_text_stderr,
+                 _compat._default_text_stdin):
+        for cell in getattr(func, "__closure__", None) or ():
+            if isinstance(cell.cell_contents, weakref.WeakKeyDictionary):
+                cell.cell_contents.clear()
+
+
 def classify(result, path: str, command: str, text: str = "") -> str:
     """The outcome class of one CliRunner result (``text``: the input file)."""
     echoed = bool(NOT_FINITE.search(text))  # a note saying "inf" may be printed back
@@ -117,6 +132,8 @@ def run(minutes: float, seed: int, out_dir: Path, timeout: float, keep: int = 5)
             with open(path, "w", encoding="utf-8", errors="surrogatepass") as handle:
                 handle.write(text)
             files += 1
+            if files % 1000 == 0:
+                _clear_click_stream_caches()
             fmt = formats[files % 4]
             for command, args in (("solve", ["solve", "--format", fmt, path]),
                                   ("check", ["check", path])):
@@ -153,6 +170,7 @@ def run(minutes: float, seed: int, out_dir: Path, timeout: float, keep: int = 5)
         "tracebacks": counts["traceback"] + counts["internal error (exit 3)"],
         "hangs": counts["hang"], "broken": sum(counts[o] for o in BROKEN),
         "slowest_run_s": round(slowest, 3), "slowest_case": slowest_case[:200],
+        "max_rss_mb": round(_max_rss_mb(), 1),
         "examples": examples,
     }
     (out_dir / "summary.json").write_text(json.dumps(summary, indent=1))
@@ -160,11 +178,21 @@ def run(minutes: float, seed: int, out_dir: Path, timeout: float, keep: int = 5)
              f"{summary['runs']} runs (solve in text/json/markdown/latex, and check), "
              f"timeout {timeout} s per run",
              f"tracebacks {summary['tracebacks']}, hangs {summary['hangs']}, "
-             f"promise broken {summary['broken']}; slowest run {summary['slowest_run_s']} s"]
+             f"promise broken {summary['broken']}; slowest run {summary['slowest_run_s']} s; "
+             f"peak memory {summary['max_rss_mb']} MB"]
     for outcome, count in counts.most_common():
         lines.append(f"  {outcome:<26}{count:>9}")
     (out_dir / "summary.txt").write_text("\n".join(lines) + "\n")
     return summary
+
+
+def _max_rss_mb() -> float:
+    try:
+        import resource
+
+        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    except (ImportError, OSError):
+        return 0.0
 
 
 def main() -> int:

@@ -263,6 +263,8 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
 def _text(value: Any, key: str) -> str:
     if isinstance(value, (dict, list)):
         raise InputError(f"expected text, got a {_type_name(value)}", key=key)
+    if isinstance(value, float) and not math.isfinite(value):
+        return shown(value)  # `title: .nan` is the text .nan, not a number nan
     return "" if value is None else str(value)
 
 
@@ -272,7 +274,7 @@ def _notes(value: Any) -> list[str]:
     if isinstance(value, str):
         return [value]
     if isinstance(value, list) and all(isinstance(v, (str, int, float)) for v in value):
-        return [str(v) for v in value]
+        return [_text(v, "notes") for v in value]
     raise InputError("expected a list of lines of text", key="notes")
 
 

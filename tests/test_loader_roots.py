@@ -84,6 +84,25 @@ def test_root(run, write, old, new, fragments):
     everywhere(run, path, *fragments)
 
 
+@pytest.mark.parametrize("old, new", [
+    ('title: Motor on a turntable, forces in its supports', "title: .nan"),
+    ('id: "11/5"', "id: -.inf"),
+    ("notes:\n", "notes:\n  - .inf\n"),
+])
+def test_non_finite_text_is_shown_as_yaml_writes_it(run, write, old, new):
+    path = write(variant(old, new))
+    for fmt in ("text", "json", "markdown", "latex"):
+        result = run("solve", "--format", fmt, path)
+        assert result.exit_code == 0, result.output
+        assert not NOT_FINITE.search(result.stdout), fmt
+    assert run("check", path).exit_code == 0
+
+
+def test_a_kind_that_is_not_a_word(run, write):
+    everywhere(run, write(variant("kind: gyroscopic_torque", "kind: .nan")), "kind",
+               "unknown kind .nan")
+
+
 def test_a_kind_message_that_would_print_inf(run, write):
     path = write(variant("k_axial: 35 mm", "k_axial: 1e200 m"))
     for args in (["solve"], ["check"]):
