@@ -54,7 +54,7 @@ class _Guarded(click.Group):
                 pass
             sys.exit(141)
         except Exception as err:
-            internal(None, err)
+            internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
 
 

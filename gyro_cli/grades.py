@@ -72,7 +72,7 @@ class GradeRow:
     submitted: str
     correct: str
     relative_error: float | None
-    result: str  # correct | partial | wrong | invalid | missing
+    result: str  # correct | partial | wrong | invalid | missing | error (internal)
     points: float
     max_points: float = 1.0
     note: str = ""
@@ -165,7 +165,13 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
         raise InputError(errors[0].error or "bad path")
     by_id: dict[str, Any] = {}
     for path in files:
-        problem = load(path)
+        try:
+            problem = load(path)
+        except InputError:
+            raise
+        except Exception as err:  # a bug: reported (exit 3) naming the file
+            err.gyro_file = path  # type: ignore[attr-defined]
+            raise
         if problem.id in by_id:
             raise InputError(f"problem id {problem.id!r} is also in {by_id[problem.id].file}",
                              file=path, key="id")
