@@ -293,3 +293,42 @@ def run_in_process():
     def _run(*args):
         return runner.invoke(main, [str(a) for a in args])
     return _run
+
+
+sheet_values = st.one_of(quantity("rate"), quantity("time"), near_miss,
+                         st.sampled_from(["cusps", "Loops.", "WAVY", "steady precession", "",
+                                          "1e308 s", "965.4 rpm*", "nan rpm", "motion"]),
+                         st.text(alphabet="abcdefgh0123456789 .;,-+*/()^e", max_size=30))
+
+
+@settings(max_examples=150, **SETTINGS)
+@given(values=st.lists(st.tuples(st.sampled_from(["precession", "min_spin"]), sheet_values),
+                       min_size=1, max_size=4),
+       words=st.lists(sheet_values, max_size=2))
+def test_every_sheet_row_is_graded(run_in_process, tmp_path_factory, values, words):
+    """Whatever a student writes, the row is graded (invalid at worst), the rest goes on."""
+    import csv
+    import io
+
+    folder = tmp_path_factory.mktemp("sheet")
+    out = io.StringIO()
+    writer = csv.writer(out)
+    writer.writerow(["student", "problem", "answer", "value"])
+    for i, (answer, value) in enumerate(values):
+        writer.writerow([f"s{i}", "11/3", answer, value])
+    for i, value in enumerate(words):
+        writer.writerow([f"w{i}", "11.2-released", "motion", value])
+    sheet = folder / "sheet.csv"
+    sheet.write_text(out.getvalue())
+    grades = folder / "grades.csv"
+    result = run_in_process("check", "--answers", sheet, ROOT / "problems" / "11_3.yaml",
+                            ROOT / "problems" / "11_2_released_top.yaml", "--out", grades)
+    assert result.exit_code == 0, (result.output, out.getvalue())
+    rows = list(csv.DictReader(io.StringIO(grades.read_text())))
+    assert {r["result"] for r in rows} <= {"correct", "partial", "wrong", "invalid", "missing",
+                                           "score"}
+    for row in rows:  # the student's own text may be quoted back; gyro's figures are finite
+        note = row["note"].replace(row["submitted"], "")
+        for value in row["submitted"].split(";"):
+            note = note.replace(value.strip(), "")
+        assert not not_finite(row["relative_error"] + " " + note), row
