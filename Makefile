@@ -4,12 +4,15 @@
 #   make handout  a solution sheet of every bundled problem, handout.pdf (needs pdflatex:
 #               apt-get install texlive-latex-base texlive-latex-recommended
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
+#   make fuzz   mutate the bundled problems for MINUTES (default 5), in-process
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test check bench handout clean
+.PHONY: demo test check bench handout fuzz clean
+
+MINUTES ?= 5
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -44,6 +47,9 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_check.py
 	$(BIN)/python benchmarks/bench_simulate.py
 	$(BIN)/python benchmarks/bench_motion.py
+
+fuzz: $(STAMP)
+	nice $(BIN)/python fuzz/fuzz.py --minutes $(MINUTES)
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache handout.tex handout.aux handout.log handout.pdf

@@ -1,19 +1,23 @@
 """The command line: solve, check, simulate, new, schema, vary, kinds.
 
-Every command exits 0 on success, 1 when an answer does not match (check), and
-2 on bad input or usage, with a one-line message and never a traceback.
+Every command exits 0 on success, 1 when an answer does not match (check), 2 on
+bad input or usage, with a one-line message and never a traceback, and 3 when
+gyro itself failed on a file (an internal error: one line naming the file, then
+the next file goes on).
 """
 
 from __future__ import annotations
 
+import os
 import sys
 
 import click
 
 from . import __version__
-from .core.errors import InputError
+from .core.errors import InputError, internal_message
 
 FORMATS = ("text", "json", "markdown", "latex")
+INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
 def fail(error: InputError | str) -> None:
@@ -22,13 +26,58 @@ def fail(error: InputError | str) -> None:
     sys.exit(2)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+def internal(file: str | None, error: BaseException) -> None:
+    """Report an unexpected exception on one line (traceback with GYRO_DEBUG=1)."""
+    click.echo(f"gyro: {internal_message(file, error)}", err=True)
+    if os.environ.get("GYRO_DEBUG"):
+        import traceback
+
+        traceback.print_exception(error)
+
+
+class _Guarded(click.Group):
+    """The last line of defence: an exception no command caught is one line and exit 3."""
+
+    def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
+        try:
+            return super().invoke(ctx)
+        except (click.exceptions.ClickException, click.exceptions.Exit,
+                click.exceptions.Abort):
+            raise
+        except BrokenPipeError:
+            # The reader left (gyro solve ... | head): end quietly, as a program killed
+            # by SIGPIPE would (128 + 13), not with an internal error.
+            try:
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, sys.stdout.fileno())
+            except (OSError, ValueError):
+                pass
+            sys.exit(141)
+        except Exception as err:
+            internal(getattr(err, "gyro_file", None), err)
+            sys.exit(INTERNAL)
+
+
+@click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, "--version", prog_name="gyro")
 def main() -> None:
     """Worked answers to textbook problems of gyroscopic motion (Chapter 11).
 
     Write a problem as a YAML file with units, then `gyro solve FILE`.
     """
+
+
+def _rendered(result, fmt: str) -> str:
+    """One solved problem as the text, JSON, Markdown or LaTeX that solve prints."""
+    from .render import report
+
+    if fmt == "json":
+        return report.as_json(result) + "\n"
+    if fmt in ("markdown", "latex"):
+        from .render import writeup
+
+        return getattr(writeup, fmt)(result)
+    return report.text(result)
 
 
 @main.command()
@@ -66,33 +115,32 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
         fail("--standalone goes with --format latex")
-    bad = len(missing)
+    bad, crashed = len(missing), 0
     document = []
     for i, path in enumerate(files):
         try:
             result = solve_file(path)
+            if (system or result.problem.units) == "us":
+                from .render.us_units import to_us
+
+                result = to_us(result, given=fmt != "json")
+            text = None if standalone else _rendered(result, fmt)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
             continue
-        if (system or result.problem.units) == "us":
-            from .render.us_units import to_us
-
-            result = to_us(result, given=fmt != "json")
-        if fmt == "json":
-            click.echo(report.as_json(result))
-        elif standalone:
+        except Exception as err:  # a bug: say so on one line, solve the next file
+            internal(path, err)
+            crashed += 1
+            continue
+        if standalone:
             document.append(result)
-        elif fmt in ("markdown", "latex"):
-            from .render import writeup
-
-            if i:
-                click.echo("")
-            click.echo(getattr(writeup, fmt)(result), nl=False)
         else:
-            if i:
-                click.echo("\n" + "=" * report.WIDTH + "\n")
-            click.echo(report.text(result), nl=False)
+            if i and fmt in ("markdown", "latex"):
+                text = "\n" + text
+            elif i and fmt == "text":
+                text = "\n" + "=" * report.WIDTH + "\n\n" + text
+            click.echo(text, nl=False)
         if plot_file:  # after the worked answer, so a refused plot does not hide it
             from .render.plot import plot_result
 
@@ -105,6 +153,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         from .render import writeup
 
         click.echo(writeup.standalone(document), nl=False)
+    if crashed:
+        sys.exit(INTERNAL)
     if bad:
         sys.exit(2)
 
@@ -162,7 +212,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             write_atomic(out, text, force=force)
     except InputError as err:
         fail(err)
+    for line in graded.errors:
+        click.echo(f"gyro: {line}", err=True)
     click.echo(grades.as_json(graded) if fmt == "json" else grades.table(graded), nl=fmt == "json")
+    if graded.errors:
+        sys.exit(INTERNAL)
 
 
 @main.command("new")
@@ -243,6 +297,9 @@ def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
                             force=force, progress=terminal_progress())
     except InputError as err:
         fail(err)
+    except Exception as err:
+        internal(file, err)
+        sys.exit(INTERNAL)
     click.echo(out, nl=False)
 
 

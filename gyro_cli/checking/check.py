@@ -20,12 +20,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from ..core import units
-from ..core.errors import InputError
+from ..core.errors import InputError, shown
 from ..core.work import num
 
 DEFAULT_TOLERANCE = "1%"
@@ -68,9 +69,9 @@ def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> 
     """One tolerance: ``"1%"``, ``"3 sig"`` or a quantity in the answer's dimension."""
     if isinstance(raw, bool) or not isinstance(raw, (str, int, float)):
         raise InputError(f"expected a tolerance such as '1%', '3 sig' or '0.01 rad/s', got "
-                         f"{raw!r}", key=key)
+                         f"{shown(raw)}", key=key)
     if isinstance(raw, (int, float)):
-        raise InputError(f"a bare number {raw!r} is ambiguous as a tolerance: write '{raw}%' "
+        raise InputError(f"a bare number {shown(raw)} is ambiguous as a tolerance: write '{raw}%' "
                          "(relative), '3 sig' (significant figures) or a quantity with a unit "
                          "(absolute)", key=key)
     text = raw.strip()
@@ -93,9 +94,9 @@ def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> 
         return Tolerance("sig", digits, text)
     if dimension is None:
         # A word answer: compared exactly, but the text must still be a tolerance.
-        units._split(text, key)
+        _guarded(lambda t, d, k: units._split(t, k), text, dimension, key)
         return Tolerance("absolute", 0.0, text)
-    value, _ = units.parse(text, dimension, key)
+    value, _ = _guarded(units.parse, text, dimension, key)
     if value < 0:
         raise InputError(f"a tolerance cannot be negative, got {text!r}", key=key)
     return Tolerance("absolute", value, text)
@@ -160,23 +161,29 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     once per unit, not once per value.
     """
     if dimension is None:
-        if isinstance(raw, (dict, list)) or raw is None:
-            raise InputError(f"expected a word, got {raw!r}", key=key)
+        if not isinstance(raw, str) or not raw.strip():
+            raise InputError(f"expected a word, got {shown(raw)}", key=key)
         return Expected(str(raw).strip(), str(raw).strip())
     if isinstance(raw, (dict, list)):
         raise InputError(f"expected a quantity such as '45.1 rpm', got a "
                          f"{'mapping' if isinstance(raw, dict) else 'nested list'}", key=key)
-    number, unit = units._split(raw, key)
+    number, unit = _guarded(lambda t, d, k: units._split(t, k), raw, dimension, key)
     factor = _FACTORS.get((unit, dimension))
     if factor is None:
-        units.parse(raw, dimension, key)  # every check, with the text as written in messages
-        factor, _ = units.parse(f"1 {unit}" if unit else 1, dimension, key)
+        _guarded(units.parse, raw, dimension, key)  # every check, with the text as written
+        factor, _ = _guarded(units.parse, f"1 {unit}" if unit else 1, dimension, key)
         _FACTORS[(unit, dimension)] = factor
     si = number * factor
     if not math.isfinite(si):
-        raise InputError(f"{raw!r} is not a finite number", key=key)
+        raise InputError(f"{shown(raw)} is not a finite number", key=key)
     text = " ".join(raw.split()) if isinstance(raw, str) else f"{raw:g}"
     return Expected(text, si, number, units.display(unit, dimension, key), factor)
+
+
+def _guarded(parse: Any, text: Any, dimension: str | None, key: str) -> Any:
+    from ..solving.problem import guarded
+
+    return guarded(parse, text, dimension, key)
 
 
 def parse_expected(raw: Any, dimension: str | None, key: str) -> list[Expected]:
@@ -198,7 +205,10 @@ def distance(expected: float, got: float) -> float:
     """
     if expected == 0 or got == 0:
         return 0.0 if expected == got else 1e6 + abs(got - expected)
-    return abs(math.log(abs(got) / abs(expected))) + (1e-9 if (got < 0) != (expected < 0) else 0)
+    # log|got| - log|expected|, not log(|got| / |expected|): the ratio of 1e-300 and
+    # 1e300 underflows to 0.
+    return abs(math.log(abs(got)) - math.log(abs(expected))) + \
+        (1e-9 if (got < 0) != (expected < 0) else 0)
 
 
 def match_roots(expected: list[float], computed: list[float],
@@ -250,6 +260,8 @@ def diagnose(expected: float, got: float, half_width: float,
         return None
     window = min(max(half_width / abs(expected), 0.005), 0.02)
     ratio = got / expected
+    if not math.isfinite(ratio) or ratio == 0 or not math.isfinite(window):
+        return None  # a denormal expected value: no slip to name
     if abs(ratio + 1) <= window:
         return "the sign: got is minus the expected value"
     sign = " and the sign" if ratio < 0 else ""
@@ -305,6 +317,7 @@ class ProblemCheck:
     kind: str = ""
     status: str = "pass"  # pass | fail | no expected answers | error
     error: str | None = None
+    internal: bool = False  # the error is a bug in gyro (exit 3), not a bad file
     answers: list[AnswerCheck] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
 
@@ -323,13 +336,17 @@ class CheckRun:
             "passed": sum(a.passed for a in answers),
             "failed": sum(not a.passed for a in answers),
             "bad_files": sum(p.status == "error" for p in self.problems),
+            "internal_errors": sum(p.internal for p in self.problems),
             "no_expected": sum(p.status == "no expected answers" for p in self.problems),
         }
 
     @property
     def exit_code(self) -> int:
-        """2 if a file is bad; else 1 if an answer failed or nothing was compared; else 0."""
+        """3 if gyro failed on a file (a bug); else 2 if a file is bad; else 1 if an answer
+        failed or nothing was compared; else 0."""
         c = self.counts()
+        if c["internal_errors"]:
+            return 3
         if c["bad_files"]:
             return 2
         if c["failed"] or c["answers"] == 0 or (self.strict and c["no_expected"]):
@@ -460,14 +477,22 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         got = got_si / value.factor
         check.got_si, check.got_value = got_si, got
         check.got = f"{num(got)} {unit}".rstrip() + label
-        check.relative_error = (got_si - value.si) / abs(value.si) if value.si else None
+        if not math.isfinite(got):  # finite in SI, too large for the expected value's unit
+            check.got_value = None
+            check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
+        relative = (got_si - value.si) / abs(value.si) if value.si else None
+        check.relative_error = relative if relative is not None and abs(relative) < 1e300 \
+            else None  # in percent it would overflow
         check.passed = within(i, j)
         if not check.passed:
-            off = ("expected is 0" if check.relative_error is None else
-                   f"{check.relative_error * 100:+.3g}%")
+            off = ("expected is 0" if not value.si else "more than 1e308 times the expected value" if
+                   check.relative_error is None else f"{check.relative_error * 100:+.3g}%")
             check.message = (f"expected {value.text} +- {num(width)} {unit}, got "
                              f"{num(got)} {unit}; off by {num(got - value.number)} {unit} "
                              f"({off})").replace("  ", " ")
+            if not math.isfinite(got):
+                check.message = (f"expected {value.text}, got {check.got}: too large to "
+                                 f"express in {unit}")
             others = [c for k, c in enumerate(computed) if k != j]
             check.slip = diagnose(float(value.si), got_si, width_si, others)
             if check.slip and check.slip.startswith("the other root"):
@@ -486,16 +511,28 @@ def check_file(path: str, strict: bool = False) -> ProblemCheck:
     """Load, solve and compare one file; a bad file comes back with status error."""
     from ..solving.problem import load
 
+    problem = None
     try:
         problem = load(path)
-    except InputError as err:
-        return ProblemCheck(path, status="error", error=str(err))
-    try:
         return check_problem(problem, strict=strict)
     except InputError as err:
-        err.located(file=problem.file, line=problem.line(err.key))
-        return ProblemCheck(path, problem.id, problem.title, problem.kind.name, status="error",
-                            error=str(err))
+        if problem is not None:
+            err.located(file=problem.file, line=problem.line(err.key))
+        error = str(err)
+        internal = False
+    except Exception as err:  # a bug in gyro: this file is an error, the next goes on
+        from ..core.errors import internal_message
+
+        if os.environ.get("GYRO_DEBUG"):
+            import traceback
+
+            traceback.print_exception(err)
+        error = internal_message(path, err)
+        internal = True
+    if problem is None:
+        return ProblemCheck(path, status="error", error=error, internal=internal)
+    return ProblemCheck(path, str(problem.id), str(problem.title), problem.kind.name,
+                        status="error", error=error, internal=internal)
 
 
 def run(paths: list[str] | tuple[str, ...], strict: bool = False) -> CheckRun:
@@ -512,18 +549,23 @@ def summary_line(run_: CheckRun) -> str:
              f"{'s' * (c['checked'] != 1)}: {c['passed']} passed, {c['failed']} failed"]
     if c["no_expected"]:
         parts.append(f"{c['no_expected']} without expected answers (not checked)")
-    if c["bad_files"]:
-        parts.append(f"{c['bad_files']} bad file{'s' * (c['bad_files'] != 1)}")
+    bad = c["bad_files"] - c["internal_errors"]
+    if bad:
+        parts.append(f"{bad} bad file{'s' * (bad != 1)}")
+    if c["internal_errors"]:
+        parts.append(f"{c['internal_errors']} internal error{'s' * (c['internal_errors'] != 1)} "
+                     "(a bug in gyro: please report)")
     if c["answers"] == 0 and not c["bad_files"]:
         parts.append("nothing was compared")
-    verdict = {0: "OK", 1: "FAILED", 2: "ERROR"}[run_.exit_code]
+    verdict = {0: "OK", 1: "FAILED", 2: "ERROR", 3: "INTERNAL ERROR"}[run_.exit_code]
     return f"{verdict}: " + "; ".join(parts)
 
 
 def _percent(check: AnswerCheck) -> str:
     if check.relative_error is None:
         return ""
-    return f"{check.relative_error * 100:+.2f}%"
+    percent = check.relative_error * 100
+    return f"{percent:+.2f}%" if abs(percent) < 1e6 else f"{percent:+.3g}%"
 
 
 def table(run_: CheckRun) -> str:
@@ -573,7 +615,8 @@ def as_dict(run_: CheckRun) -> dict[str, Any]:
     for p in run_.problems:
         problems.append({
             "file": p.file, "id": p.id or None, "title": p.title or None, "kind": p.kind or None,
-            "status": p.status, "error": p.error, "warnings": list(p.warnings),
+            "status": p.status, "error": p.error, "internal": p.internal,
+            "warnings": list(p.warnings),
             "answers": [{
                 "name": a.name, "index": a.index, "passed": a.passed,
                 "expected": a.expected, "got": a.got, "unit": a.unit,

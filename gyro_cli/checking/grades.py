@@ -10,8 +10,16 @@ One item = one (student, problem, answer): worth 1 point, shared among the
 roots (a student who gives one of two roots gets 1/2). An item another
 student answered but this one did not is `missing` (0 points). A value that
 does not parse or has the wrong dimension is `invalid` (0 points, with the
-reason): that is the student's slip, not a bad sheet. A sheet naming a problem
-or an answer that is not among the problem files is bad input (exit 2).
+reason): that is the student's slip, not a bad sheet, and the other rows are
+graded. A sheet naming a problem or an answer that is not among the problem
+files is bad input (exit 2).
+
+Word answers (a released top's `motion`) are graded as words: case and
+surrounding spaces do not matter, and the synonyms in ``WORD_SYNONYMS`` count
+(``cusp``, ``looping``, ``wavy``, ``steady precession``...).
+
+The sheet is read like a problem file: only a regular file, at most
+``MAX_SHEET_BYTES``, and a YAML sheet with the same nesting and alias limits.
 """
 
 from __future__ import annotations
@@ -20,7 +28,7 @@ import csv
 import dataclasses
 import io
 import json
-import os
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -36,6 +44,15 @@ HEADER_WORDS = {"student": "student", "name": "student", "problem": "problem",
 OUT_COLUMNS = ("student", "problem", "answer", "submitted", "correct", "relative_error",
                "result", "points", "max_points", "note")
 MAX_SHEET_BYTES = 20_000_000
+
+# A word answer and the other ways students write it (compared in lower case).
+WORD_SYNONYMS = {
+    "cusps": ("cusp", "cusped", "cuspidal", "cusps"),
+    "loops": ("loop", "looped", "looping", "loops"),
+    "waves": ("wave", "wavy", "waving", "undulating", "waves"),
+    "steady": ("steady", "steady precession", "uniform precession", "no nutation"),
+    "sleeping": ("sleeping", "asleep", "sleeping top", "sleeps"),
+}
 
 
 @dataclass
@@ -55,7 +72,7 @@ class GradeRow:
     submitted: str
     correct: str
     relative_error: float | None
-    result: str  # correct | partial | wrong | invalid | missing
+    result: str  # correct | partial | wrong | invalid | missing | error (internal)
     points: float
     max_points: float = 1.0
     note: str = ""
@@ -65,28 +82,24 @@ class GradeRow:
 class Graded:
     rows: list[GradeRow]
     scores: dict[str, tuple[float, float]] = field(default_factory=dict)
+    errors: list[str] = field(default_factory=list)  # internal errors, one line each
 
 
 # ---- reading the sheet ------------------------------------------------------
 
 def read_sheet(path: str) -> list[Submission]:
     """The submissions in a CSV or YAML answer sheet, in sheet order."""
-    if not os.path.isfile(path):
-        raise InputError("no such answer sheet" if not os.path.exists(path)
-                         else "is not a file", file=path)
-    if os.path.getsize(path) > MAX_SHEET_BYTES:
-        raise InputError(f"answer sheet is larger than {MAX_SHEET_BYTES} bytes", file=path)
     if path.endswith((".yaml", ".yml")):
         return _read_yaml(path)
     return _read_csv(path)
 
 
 def _read_csv(path: str) -> list[Submission]:
+    from ..core.safeyaml import read_text
+
+    text = read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)", "utf-8-sig")
     try:
-        with open(path, encoding="utf-8-sig", newline="") as handle:
-            rows = list(csv.reader(handle))
-    except UnicodeDecodeError:
-        raise InputError("is not UTF-8 text", file=path) from None
+        rows = list(csv.reader(io.StringIO(text, newline="")))
     except csv.Error as err:
         raise InputError(f"not a CSV file: {err}", file=path) from None
     order = list(COLUMNS)
@@ -121,7 +134,7 @@ def _read_csv(path: str) -> list[Submission]:
 def _read_yaml(path: str) -> list[Submission]:
     from ..solving.problem import read_yaml
 
-    data, lines = read_yaml(path)
+    data, lines = read_yaml(path, MAX_SHEET_BYTES)
     if not isinstance(data, dict):
         raise InputError("expected a mapping: student -> problem id -> answer -> value",
                          file=path)
@@ -152,7 +165,13 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
         raise InputError(errors[0].error or "bad path")
     by_id: dict[str, Any] = {}
     for path in files:
-        problem = load(path)
+        try:
+            problem = load(path)
+        except InputError:
+            raise
+        except Exception as err:  # a bug: reported (exit 3) naming the file
+            err.gyro_file = path  # type: ignore[attr-defined]
+            raise
         if problem.id in by_id:
             raise InputError(f"problem id {problem.id!r} is also in {by_id[problem.id].file}",
                              file=path, key="id")
@@ -178,23 +197,44 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
                              f"{names})", file=sheet, line=s.line)
         asked.setdefault(s.problem, {})[s.answer] = None
+    graded = Graded([])
     solved = {}
     for pid, names in asked.items():
         problem = problems[pid]
         find = dict(problem.find)
         for name in names:
             find.setdefault(name, None)
-        solved[pid] = solve(dataclasses.replace(problem, find=find))
+        try:
+            solved[pid] = solve(dataclasses.replace(problem, find=find))
+        except InputError:
+            raise
+        except Exception as err:  # a bug: this problem's rows are errors, the rest is graded
+            from ..core.errors import internal_message
+
+            graded.errors.append(internal_message(problem.file, err))
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
     by_key = {(s.student, s.problem, s.answer): s for s in submissions}
-    graded = Graded([])
     for student in students:
         total = 0.0
         for pid, name in items:
             submission = by_key.get((student, pid, name))
-            row = grade_item(student, problems[pid], name, solved[pid].answers[name],
-                             submission.values if submission else None)
+            values = submission.values if submission else None
+            if pid not in solved:
+                row = GradeRow(student, pid, name, _submitted(values), "", None, "error", 0.0,
+                               note="internal error solving the problem (please report)")
+            else:
+                try:
+                    row = grade_item(student, problems[pid], name, solved[pid].answers[name],
+                                     values)
+                except Exception as err:  # a bug: this row is an error, the rest is graded
+                    from ..core.errors import internal_message
+
+                    line = internal_message(problems[pid].file, err)
+                    if line not in graded.errors:
+                        graded.errors.append(line)
+                    row = GradeRow(student, pid, name, _submitted(values), "", None, "error",
+                                   0.0, note=line)
             graded.rows.append(row)
             total += row.points
         graded.scores[student] = (total, float(len(items)))
@@ -212,12 +252,20 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     if not values:
         row.note = "no answer submitted"
         return row
-    row.submitted = "; ".join(" ".join(str(v).split()) for v in values)
-    try:
-        parsed = [check.parse_value(v, spec.dimension, name) for v in values]
-    except InputError as err:
-        row.result, row.note = "invalid", err.message
-        return row
+    row.submitted = _submitted(values)
+    if spec.dimension is None:
+        return _grade_words(row, values, reported)
+    parsed = []
+    for value in values:
+        try:
+            parsed.append(check.parse_value(value, spec.dimension, name))
+        except InputError as err:
+            row.result, row.note = "invalid", err.message
+            return row
+        except Exception:  # the unit parser failed on it: still the student's slip
+            row.result = "invalid"
+            row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
+            return row
     lines = check.compare(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
     row.points = round(passed / len(lines), 4) if lines else 0.0
@@ -226,6 +274,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     errors = [(float(line.expected_si) - float(line.got_si)) / abs(float(line.got_si))
               for line in lines if line.expected is not None and line.got_si is not None
               and float(line.got_si) != 0]
+    errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
     row.relative_error = max(errors, key=abs) if errors else None
     notes = []
     for line in lines:
@@ -237,13 +286,47 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             notes.append(f"{line.expected}: no such root")
         else:
             truth, submitted = float(line.got_si), float(line.expected_si)
-            note = (f"{line.expected}: off by {(submitted - truth) / abs(truth) * 100:+.3g}%"
-                    if truth else f"{line.expected}: wrong")
+            off = (submitted - truth) / abs(truth) * 100 if truth else math.inf
+            note = (f"{line.expected}: off by {off:+.3g}%" if math.isfinite(off)
+                    else f"{line.expected}: wrong")
             slip = check.diagnose(truth, submitted, abs(truth) * 0.01, [])
             if slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
             notes.append(note)
     row.note = "; ".join(notes)
+    return row
+
+
+def _submitted(values: list[Any] | None) -> str:
+    return "; ".join(" ".join(str(v).split()) for v in values or [])
+
+
+def normal_word(value: Any) -> str:
+    """A word answer as compared: lower case, one space, no trailing full stop."""
+    return " ".join(str(value).lower().split()).strip(" .!")
+
+
+def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
+    """Words against the solver's words: each solver word is one share of the point."""
+    truth = [str(v) for v in reported.si_values]
+    submitted = []
+    for value in values:
+        if isinstance(value, (dict, list, bool)) or not str(value).strip():
+            row.result, row.note = "invalid", f"expected a word, got {value!r}"
+            return row
+        submitted.append(normal_word(value))
+    hits = 0
+    for word in truth:
+        accepted = set(WORD_SYNONYMS.get(word.lower(), ())) | {word.lower()}
+        if any(s in accepted for s in submitted):
+            hits += 1
+    extra = [s for s in submitted
+             if not any(s in set(WORD_SYNONYMS.get(w.lower(), ())) | {w.lower()} for w in truth)]
+    row.points = round(hits / max(len(truth), len(submitted)), 4) if truth else 0.0
+    row.result = "correct" if hits == len(truth) and not extra else (
+        "partial" if hits else "wrong")
+    if row.result != "correct":
+        row.note = f"expected {', '.join(truth)}, got {row.submitted}"
     return row
 
 

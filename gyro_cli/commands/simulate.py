@@ -132,6 +132,9 @@ def check_outputs(paths: list[str | None], force: bool) -> None:
     if len(set(map(str, named))) < len(named):
         raise InputError("--csv and --plot name the same file")
     for path in named:
+        from ..core.files import refuse_special
+
+        refuse_special(path)
         target = Path(path)
         if target.is_dir():
             raise InputError("is a directory, expected a file to write", file=str(path))

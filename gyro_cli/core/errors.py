@@ -29,11 +29,48 @@ class InputError(Exception):
     def __str__(self) -> str:
         where = []
         if self.file:
-            where.append(self.file)
+            where.append(_one_line(self.file))
         if self.key:
-            key = self.key + (f" (line {self.line})" if self.line else "")
+            key = _one_line(self.key) + (f" (line {self.line})" if self.line else "")
             where.append(key)
         elif self.line:
             where.append(f"line {self.line}")
         text = " ".join(self.message.split())  # always one line
         return ": ".join(where + [text])
+
+
+def shown(value: object) -> str:
+    """A value from the file for a message, as YAML writes it (``.nan``, ``[1, .inf]``),
+    so a message never prints a bare nan or inf of its own."""
+    if isinstance(value, str):
+        return repr(value)
+    try:
+        import yaml
+
+        text = yaml.safe_dump(value, default_flow_style=True, width=200).strip()
+        text = text.removesuffix("...").strip()
+    except Exception:  # noqa: BLE001 - an odd type: its name is enough
+        return f"a {type(value).__name__}"
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _one_line(name: str) -> str:
+    """A file name or key as written, with line breaks and tabs shown as escapes."""
+    name = str(name)
+    if name.isprintable():
+        return name
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
+                   for c in name)
+
+
+def internal_message(file: str | None, error: BaseException) -> str:
+    """One line for a bug in gyro: ``FILE: internal error: TYPE: message (please report)``.
+
+    The command goes on with the next file and exits 3 at the end. Set
+    GYRO_DEBUG=1 to have the traceback printed as well.
+    """
+    text = " ".join(str(error).split())
+    if len(text) > 300:
+        text = text[:297] + "..."
+    where = f"{_one_line(file)}: " if file else ""
+    return f"{where}internal error: {type(error).__name__}: {text} (please report)"

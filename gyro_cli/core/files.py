@@ -3,11 +3,20 @@
 ``write_atomic`` writes to a temporary file in the same directory, flushes it to
 disk and renames it over the target (``os.replace`` is atomic on POSIX and
 Windows), so a reader sees either the old file or the whole new one.
+
+Only a regular file or a new path is written, with or without --force: a
+device (``/dev/full``, ``/dev/null``), a FIFO, a socket or a directory is
+refused with one line, never replaced by a regular file. A failed write (a
+full disk) is reported as bad input (exit 2) and its temporary file removed.
+The temporary file is named ``.NAME.XXXXXXXX.tmp``: hidden and ending in
+``.tmp``, so one left by a killed run is never read as output (``gyro check``
+skips hidden files, and ``*.yaml`` does not match it).
 """
 
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from pathlib import Path
 
@@ -20,8 +29,7 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     The parent directory must exist. Returns the path written.
     """
     target = Path(path)
-    if target.is_dir():
-        raise InputError("is a directory, expected a file to write", file=str(target))
+    refuse_special(target)
     if not force and (target.exists() or target.is_symlink()):
         raise InputError("exists; not overwritten (use --force to replace it)", file=str(target))
     parent = target.parent if str(target.parent) else Path(".")
@@ -60,9 +68,24 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     except OSError as err:
         raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
     finally:
-        if os.path.exists(tmp):
+        try:
             os.unlink(tmp)
+        except OSError:
+            pass
     return target
+
+
+def refuse_special(path: str | os.PathLike) -> None:
+    """InputError unless ``path`` is a regular file (or its link) or does not exist."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return  # a new path (or a dangling symlink: refused later without --force)
+    if not stat.S_ISREG(mode):
+        from .safeyaml import _not_regular
+
+        message = _not_regular(mode, "a file to write").replace("reads", "writes")
+        raise InputError(message, file=str(path))
 
 
 def _umask() -> int:

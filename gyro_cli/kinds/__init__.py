@@ -45,5 +45,8 @@ def get(name: object) -> Kind:
         if isinstance(name, str) and name in PLANNED:
             raise InputError(f"kind {name!r} ({PLANNED[name]}) is not built in this version of "
                              f"gyro; built kinds: {', '.join(names())}", key="kind")
-        raise InputError(f"unknown kind {name!r}; known kinds: {', '.join(names())}", key="kind")
+        from ..core.errors import shown
+
+        raise InputError(f"unknown kind {shown(name)}; known kinds: {', '.join(names())}",
+                         key="kind")
     return import_module(REGISTRY[name]).KIND

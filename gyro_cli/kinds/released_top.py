@@ -195,8 +195,12 @@ def _precession(nut, work: Work) -> None:
         work.text("mean phidot = [(beta - gamma) Pi(n1|m) / (1 - u1) + (beta + gamma) Pi(-n2|m) "
                   "/ (1 + u1)] / (2 K(m))  (complete elliptic integrals of the third kind, "
                   "Pi(n|m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n))")
-        work.text(f"    n1 = (u2 - u1)/(1 - u1) = {num(n1)}, n2 = (u2 - u1)/(1 + u1) = "
-                  f"{num(n2)}, m = {num(m)}")
+        def shown(n: float, pole: str) -> str:
+            # On a pole (u1 = +-1) that term's coefficient beta -+ gamma is zero: no term.
+            return num(n) if math.isfinite(n) else f"unbounded (u1 = {pole}: the term drops)"
+
+        work.text(f"    n1 = (u2 - u1)/(1 - u1) = {shown(n1, '1')}, n2 = (u2 - u1)/(1 + u1) = "
+                  f"{shown(n2, '-1')}, m = {num(m)}")
     work.step("phidot_mean", value=nut.mean_precession, unit="rad/s",
               note=f"({num(nut.mean_precession / RPM)} rpm; phi advance over one period / T)")
     reason = {

@@ -38,7 +38,7 @@ def suite(problem: ProblemCheck) -> ET.Element:
         case = ET.SubElement(node, "testcase", classname=classname, name="load and solve",
                              time="0")
         ET.SubElement(case, "error", message=_clean(problem.error or "bad file"),
-                      type="InputError").text = _clean(problem.error or "")
+                      type="InternalError" if problem.internal else "InputError").text = _clean(problem.error or "")
         errors = 1
     elif problem.status == "no expected answers":
         case = ET.SubElement(node, "testcase", classname=classname,

@@ -335,6 +335,9 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     if suffix.lower() not in FORMATS:
         raise InputError(f"plot format {suffix or '(none)'!r} not supported; name the file "
                          ".png, .svg or .pdf", file=path)
+    from ..core.files import refuse_special
+
+    refuse_special(path)  # a device, FIFO or directory: refused with or without --force
     if Path(path).exists() and not force:
         raise InputError("exists; not overwritten (use --force to replace it)", file=path)
     from ..physics.nutation import Start, Top

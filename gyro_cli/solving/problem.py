@@ -6,14 +6,14 @@ Errors name the file, the key, its YAML line and what was expected.
 from __future__ import annotations
 
 
-import os
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
 from .. import kinds
 from ..core import units
 from ..core.body import BODY_PARAMS
-from ..core.errors import InputError
+from ..core.errors import InputError, shown
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -65,32 +65,21 @@ def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
     return f"; did you mean {close[0]!r}?" if close else ""
 
 
-def read_yaml(path: str) -> tuple[Any, dict[str, int]]:
-    """Safe-load one YAML document; also the line of each key, two levels deep."""
+def read_yaml(path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, int]]:
+    """Safe-load one YAML document; also the line of each key, two levels deep.
+
+    Only a regular file of at most ``limit`` bytes is read; nesting and aliases
+    are limited before anything is built (safeyaml.py).
+    """
     import yaml
 
-    if not os.path.exists(path):
-        raise InputError("no such file", file=path)
-    if os.path.isdir(path):
-        raise InputError("is a directory, expected a problem file (.yaml)", file=path)
+    from ..core import safeyaml
+
+    text = safeyaml.read_text(path, limit)
     try:
-        if os.path.getsize(path) > MAX_FILE_BYTES:
-            raise InputError(f"file is larger than {MAX_FILE_BYTES} bytes; not a problem file",
-                             file=path)
-        with open(path, encoding="utf-8") as handle:
-            text = handle.read()
-    except UnicodeDecodeError:
-        raise InputError("is not UTF-8 text", file=path) from None
-    except OSError as err:
-        raise InputError(f"cannot read: {err.strerror}", file=path) from None
-    loader_class = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-    try:
-        loader = loader_class(text)
-        try:
-            node = loader.get_single_node()
-            data = loader.construct_document(node) if node is not None else None
-        finally:
-            loader.dispose()
+        data, node = safeyaml.load(text)
+    except InputError as err:
+        raise err.located(file=path) from None
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         what = f"{err.problem or err.context}"
@@ -215,12 +204,32 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
         if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
             text = "true" if text else "false"  # YAML reads `false` as a boolean
         if not isinstance(text, str) or text not in param.choices:
-            raise InputError(f"expected one of {', '.join(param.choices)}, got {text!r}"
+            raise InputError(f"expected one of {', '.join(param.choices)}, got {shown(text)}"
                              f"{suggest(str(text), param.choices)}", key=key)
         return text, text
     if param.dimension == "particles":
         return parse_particles(text, key), text
-    return units.parse(text, param.dimension, key, weight=param.name == "weight")
+    return guarded(units.parse, text, param.dimension, key, weight=param.name == "weight")
+
+
+def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> Any:
+    """A units call whose unexpected failure on odd text (the unit parser's own
+    exceptions) is bad input at ``key``, not a crash."""
+    if parse is units.check_unit and not isinstance(text, str):
+        raise InputError(f"expected a unit for this answer such as "
+                         f"'{units.si_text(dimension)}', got {shown(text)}", key=key)
+    if isinstance(text, float) and not math.isfinite(text):
+        written = ".nan" if text != text else ("-.inf" if text < 0 else ".inf")
+        raise InputError(f"expected a finite quantity such as '150 mm', got {written!r}",
+                         key=key)
+    try:
+        return parse(text, dimension, key, **options)
+    except InputError:
+        raise
+    except Exception as err:  # noqa: BLE001 - e.g. AssertionError, TokenError from pint
+        written = " ".join(str(text).split())[:60]
+        raise InputError(f"cannot read the unit in {written!r} ({type(err).__name__})",
+                         key=key) from None
 
 
 PARTICLE_KEYS = ("mass", "x", "y", "z")
@@ -260,6 +269,11 @@ def parse_particles(raw: Any, key: str) -> tuple[tuple[float, float, float, floa
 def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     """``find``: answer name -> unit to print it in (None for words or SI)."""
     if isinstance(raw, list):
+        for name in raw:
+            if not isinstance(name, str):
+                raise InputError(f"expected answer names (a list of words, or a mapping of "
+                                 f"names to units), got a {_type_name(name)} in the list",
+                                 key="find")
         raw = {name: None for name in raw}
     if not isinstance(raw, dict) or not raw:
         raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
@@ -277,8 +291,9 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
                                  key=f"find.{name}")
             find[answer.name] = None
         else:
-            find[answer.name] = (None if unit is None
-                                 else units.check_unit(unit, answer.dimension, f"find.{name}"))
+            find[answer.name] = (None if unit is None else
+                                 guarded(units.check_unit, unit, answer.dimension,
+                                         f"find.{name}"))
     return find
 
 
@@ -298,6 +313,8 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
 def _text(value: Any, key: str) -> str:
     if isinstance(value, (dict, list)):
         raise InputError(f"expected text, got a {_type_name(value)}", key=key)
+    if isinstance(value, float) and not math.isfinite(value):
+        return shown(value)  # `title: .nan` is the text .nan, not a number nan
     return "" if value is None else str(value)
 
 
@@ -307,7 +324,7 @@ def _notes(value: Any) -> list[str]:
     if isinstance(value, str):
         return [value]
     if isinstance(value, list) and all(isinstance(v, (str, int, float)) for v in value):
-        return [str(v) for v in value]
+        return [_text(v, "notes") for v in value]
     raise InputError("expected a list of lines of text", key="notes")
 
 

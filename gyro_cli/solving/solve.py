@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 from ..core import units
@@ -41,6 +42,11 @@ def solve(problem: Problem) -> Result:
     try:
         return _solve(problem)
     except InputError as err:
+        if _NOT_FINITE.search(re.sub(r"'[^'\n]*'", "''", err.message)):
+            # A kind's check whose message would print inf or nan (m l^2 = inf kg m^2):
+            # the data are past what double precision holds, and that is the message.
+            err.message = ("these data overflow double precision (a value past 1e308 in "
+                           "checking them); check the magnitudes and units")
         raise err.located(file=problem.file, line=problem.line(err.key)) from None
 
 
@@ -70,6 +76,7 @@ def _solve(problem: Problem) -> Result:
     body = problem.given.body
     if body is not None and body.per_kg:  # worked per kilogram: no answer that scales with m
         _drop_mass_answers(solution, problem.find)
+    _all_finite(solution)
     answers = {}
     for name, unit in problem.find.items():
         answer = solution.answers.get(name)
@@ -85,6 +92,11 @@ def _solve(problem: Problem) -> Result:
         else:
             unit = unit or answer.si_unit
             values = [units.convert(v, answer.dimension, unit) for v in answer.si_values]
+            if not all(math.isfinite(v) for v in values):
+                big = max(answer.si_values, key=abs)
+                raise InputError(f"{name} = {num(big)} {answer.si_unit} is too large to "
+                                 f"express in {unit}; ask for a larger unit",
+                                 key=f"find.{name}")
         answers[name] = Reported(name, answer.symbol, values, unit, list(answer.si_values),
                                  answer.si_unit, answer.labels)
     return Result(problem, solution, answers)
@@ -103,6 +115,27 @@ def _drop_mass_answers(solution, find) -> None:
                 raise InputError(f"{name} depends on the mass, which the rates do not need: "
                                  "give mass or weight", key="given.mass")
             del solution.answers[name]
+_NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
+
+
+def _all_finite(solution: Solution) -> None:
+    """Every number in the worked answer is finite: an overflow in a step (1e200 rpm
+    squared) is bad input for this kind, not a worked answer with inf in it."""
+    for section in solution.sections:
+        for step in section.steps:
+            where = step.symbol or section.title
+            if step.value is not None and not math.isfinite(step.value):
+                raise InputError(f"the step {where} is not a finite number for these data "
+                                 "(overflow or a degenerate case); check the magnitudes and "
+                                 "units", key="given")
+            for text in (step.formula, step.substitution, step.text):
+                if text and _NOT_FINITE.search(text):
+                    raise InputError(f"the step {where} overflows for these data; check "
+                                     "the magnitudes and units", key="given")
+    for text in [c.text for c in solution.checks] + list(solution.warnings):
+        if _NOT_FINITE.search(text):
+            raise InputError("a check of the answer overflows for these data; check the "
+                             "magnitudes and units", key="given")
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:

@@ -1,0 +1,205 @@
+"""Reading input a careless or hostile user wrote: limits before anything is built.
+
+Two guards sit in front of every problem file and answer sheet:
+
+- ``read_bytes`` reads only a regular file (a FIFO, a device such as
+  ``/dev/zero``, a socket or a directory is refused at once, without reading or
+  waiting), and never more than the size limit: it reads limit + 1 bytes and
+  refuses if it got them, so a file that grows or lies about its size cannot
+  make gyro read more.
+- ``load`` parses YAML in two passes. The first walks the parser's events
+  without building anything and refuses nesting deeper than ``MAX_DEPTH`` and
+  documents whose aliases would expand to more than ``MAX_NODES`` values (a
+  "billion laughs" bomb), or an alias inside its own anchor (a cycle). Only
+  then is the document built, with a loader that keeps dates as text (YAML
+  1.1 turns ``2024-02-31`` into a date, or an exception) and turns a value
+  PyYAML cannot construct (``!!bool maybe``, ``!!int 0x``, a 5000-digit
+  integer) into a YAML error at its line.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+from typing import Any
+
+from .errors import InputError
+
+MAX_DEPTH = 64          # nested mappings and lists; a problem file uses 3
+MAX_NODES = 100_000     # values after alias expansion; a problem file has ~50
+MAX_INT_DIGITS = 308    # beyond a double's range anyway
+
+_KINDS = ((stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISCHR, "a character device"),
+          (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"))
+
+
+def _not_regular(mode: int, what: str) -> str:
+    if stat.S_ISDIR(mode):
+        return f"is a directory, expected {what}"
+    name = next((text for test, text in _KINDS if test(mode)), "not a regular file")
+    return f"is {name}, not a regular file; gyro reads only regular files"
+
+
+def read_bytes(path: str, limit: int, what: str = "a problem file (.yaml)") -> bytes:
+    """The bytes of a regular file of at most ``limit`` bytes; InputError otherwise."""
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        raise InputError("no such file", file=path) from None
+    except (OSError, ValueError) as err:
+        raise InputError(f"cannot read: {getattr(err, 'strerror', None) or err}",
+                         file=path) from None
+    if not stat.S_ISREG(mode):
+        raise InputError(_not_regular(mode, what), file=path)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
+        | getattr(os, "O_BINARY", 0)
+    try:
+        fd = os.open(path, flags)
+    except OSError as err:
+        raise InputError(f"cannot read: {err.strerror}", file=path) from None
+    try:
+        mode = os.fstat(fd).st_mode  # the file opened, not the one stat'ed before
+        if not stat.S_ISREG(mode):
+            raise InputError(_not_regular(mode, what), file=path)
+        chunks = []
+        left = limit + 1
+        while left > 0:
+            chunk = os.read(fd, min(left, 1 << 20))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            left -= len(chunk)
+    except OSError as err:
+        raise InputError(f"cannot read: {err.strerror}", file=path) from None
+    finally:
+        os.close(fd)
+    data = b"".join(chunks)
+    if len(data) > limit:
+        raise InputError(f"file is larger than {limit} bytes; not {what}", file=path)
+    return data
+
+
+def read_text(path: str, limit: int, what: str = "a problem file (.yaml)",
+              encoding: str = "utf-8") -> str:
+    data = read_bytes(path, limit, what)
+    try:
+        return data.decode(encoding)
+    except UnicodeDecodeError:
+        raise InputError("is not UTF-8 text", file=path) from None
+
+
+# ---- YAML -------------------------------------------------------------------
+
+_loader_class: Any = None
+
+
+def loader_class() -> Any:
+    """A safe loader: dates stay text, unconstructible scalars are YAML errors."""
+    global _loader_class
+    if _loader_class is not None:
+        return _loader_class
+    import yaml
+    from yaml.constructor import ConstructorError
+
+    base = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+    class Loader(base):  # type: ignore[misc, valid-type]
+        pass
+
+    Loader.yaml_implicit_resolvers = {
+        first: [(tag, regexp) for tag, regexp in resolvers
+                if tag != "tag:yaml.org,2002:timestamp"]
+        for first, resolvers in base.yaml_implicit_resolvers.items()}
+
+    def guarded(method: Any, what: str) -> Any:
+        def construct(self: Any, node: Any) -> Any:
+            try:
+                value = method(self, node)
+            except ConstructorError:
+                raise
+            except Exception as err:  # ValueError, KeyError, binascii.Error, OverflowError
+                text = " ".join(str(node.value)[:40].split())
+                raise ConstructorError(None, None, f"cannot read {text!r} as {what} "
+                                       f"({type(err).__name__})", node.start_mark) from None
+            if isinstance(value, int) and not isinstance(value, bool) and \
+                    value.bit_length() > MAX_INT_DIGITS * 3.33:
+                raise ConstructorError(None, None, f"an integer of {len(str(node.value))} "
+                                       "digits is out of range", node.start_mark)
+            return value
+        return construct
+
+    for tag, what in (("int", "an integer"), ("float", "a number"), ("bool", "true/false"),
+                      ("binary", "base64 data")):
+        full = f"tag:yaml.org,2002:{tag}"
+        Loader.add_constructor(full, guarded(base.yaml_constructors[full], what))
+    Loader.add_constructor("tag:yaml.org,2002:timestamp",
+                           lambda self, node: str(self.construct_scalar(node)))
+    _loader_class = Loader
+    return Loader
+
+
+def prescan(text: str) -> None:
+    """Refuse deep nesting, alias bombs and alias cycles before anything is built.
+
+    Walks the parser's events (libyaml's parser keeps its own stack, so a
+    100,000-level file is read, not recursed into) and counts every value as
+    it would be after alias expansion.
+    """
+    import yaml
+
+    loader = loader_class()(text)
+    try:
+        sizes: dict[str, int] = {}
+        stack: list[list[Any]] = []  # [anchor, size so far]
+        total = 0
+        while loader.check_event():
+            event = loader.get_event()
+            if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+                if len(stack) >= MAX_DEPTH:
+                    raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file "
+                                     "needs three", line=event.start_mark.line + 1)
+                stack.append([event.anchor, 1])
+                total += 1
+                size = 0
+            elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+                anchor, size = stack.pop()
+                if anchor is not None:
+                    sizes[anchor] = size
+            elif isinstance(event, yaml.ScalarEvent):
+                size = 1
+                total += 1
+                if event.anchor is not None:
+                    sizes[event.anchor] = 1
+            elif isinstance(event, yaml.AliasEvent):
+                if any(entry[0] == event.anchor for entry in stack):
+                    raise InputError(f"alias *{event.anchor} refers to a value that contains "
+                                     "it (a cycle)", line=event.start_mark.line + 1)
+                size = sizes.get(event.anchor, 1)
+                total += size
+            else:
+                continue
+            if total > MAX_NODES:
+                raise InputError(f"aliases and values expand to more than {MAX_NODES} values; "
+                                 "refused (a problem file has about fifty)",
+                                 line=event.start_mark.line + 1)
+            if stack and not isinstance(event, (yaml.MappingStartEvent,
+                                                yaml.SequenceStartEvent)):
+                stack[-1][1] += size
+    finally:
+        loader.dispose()
+
+
+def load(text: str) -> tuple[Any, Any]:
+    """(data, root node) of one YAML document, after ``prescan``.
+
+    Raises yaml.YAMLError for malformed YAML and InputError (with a line) for
+    input refused by the limits.
+    """
+    prescan(text)
+    loader = loader_class()(text)
+    try:
+        node = loader.get_single_node()
+        data = loader.construct_document(node) if node is not None else None
+    finally:
+        loader.dispose()
+    return data, node
