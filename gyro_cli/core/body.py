@@ -210,8 +210,11 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
             raise InputError("a cone needs its height", key="given.height")
         subst = substitute(formula, m=qty(m, "kg"), r=qty(r, "m"), L=qty(along, "m"),
                            h=qty(along, "m"))
+        what = {"cylinder": "cylinder of length L", "cone": "cone of height h"}.get(shape, shape)
+        if shape == "cylinder" and "length" not in values:
+            what += ", not given: L = 0"
         return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
-                         note=f"({shape}, about its centre of mass)")
+                         note=f"({what}, about its centre of mass)")
     return None
 
 

@@ -53,14 +53,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
               "their spin vector points to the left (+y); each engine's points the same way "
               "(engine_sense: same) or the other way (opposite).")
-    work.text("couple on the rotors C = omega_p x H (Eq. 11.29); the vehicle feels the "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the turn's angular velocity, about the vertical); couple on the rotors C = omega_p x H (Eq. 11.29); the vehicle feels the "
               "reactive couple -C. Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")
     work.section("Rotating parts")
     work.step("sum I_w", wheel_text, value=wheel_total, unit="kg*m^2")
-    work.step("sum I_E", "engines I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
+    work.step("sum I_E", "n_E I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
               "kg*m^2")
     I_eq = work.step("I_eq", f"sum I_w {sign} G sum I_E", f"{qty(wheel_total, 'kg*m^2')} {sign} "
                      f"{num(G)} ({qty(engines * IE, 'kg*m^2')})",
@@ -152,7 +152,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
 def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
-    work.text("m g / 4 = (v^2 / (2 x R)) (I_eq / r_w + m h)")
+    work.text("at the limiting speed v_lim: m g / 4 = (v_lim^2 / (2 x R)) (I_eq / r_w + m h)")
     v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
     if v2 is None:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "

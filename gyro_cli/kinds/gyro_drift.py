@@ -30,10 +30,11 @@ def _h(x: float) -> str:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
     work.section("Conventions")
-    work.text("k: the spin axis; x: the gimbal axis about which the disturbing moment M acts; "
-              "y: the other gimbal axis, at right angles to both. a, b: small rotations of the "
-              "spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
-    work.text("Linearised gimbal equations: I_x a'' + H b' = M,  I_y b'' - H a' = 0. "
+    work.text("k: the spin axis; H: the rotor's angular momentum along it; x: the gimbal axis "
+              "about which the disturbing moment M acts; "
+              "y: the other gimbal axis, at right angles to both. alpha, beta: small rotations of "
+              "the spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
+    work.text("Linearised gimbal equations: I_x alpha'' + H beta' = M,  I_y beta'' - H alpha' = 0. "
               "The moment does not turn the rotor about x: the spin axis drifts about y.")
     H = _momentum(given, work)
     M, rate = _moment_and_rate(given, H, work)
@@ -146,18 +147,18 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
                    f"{qty(Iy, 'kg m^2')})", gd.nutation_frequency(abs(H), Ix, Iy), "rad/s",
                    note=f"= {num(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi))} Hz")
     period = work.step("T_n", "2 pi / w_n", f"2 pi / {qty(wn, 'rad/s')}", 2 * math.pi / wn, "s")
-    work.text("solution from rest: a(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
-              "b(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
+    work.text("solution from rest: alpha(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
+              "beta(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
     ax, ay = gd.nutation_amplitudes(M, H, Ix, Iy)
     work.step("A_x", "M I_y / H^2", f"{qty(M, 'N m')} ({qty(Iy, 'kg m^2')}) / ({_h(H)})^2",
-              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias)")
+              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias I)")
     work.step("A_y", "M sqrt(I_x I_y) / H^2", value=ay, unit="rad",
               note="about y, the drift axis: the ripple on the drift")
-    work.step("a_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
+    work.step("alpha_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
               note="largest deflection about x, reached every half period")
     quarter = period / 4
     residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
-    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x a'' + H b' = "
+    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x alpha'' + H beta' = "
                f"{qty(residual, 'N m')}, M = {qty(M, 'N m')}")
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
         work.warn(f"the nutation reaches {num(math.degrees(max(abs(2 * ax), abs(ay))))} deg: the "

@@ -149,6 +149,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     precession = _precession(given, J, I, spin, theta, work)
     work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
+    work.text("H: the angular momentum of the rotor about its centre of mass; Omega: the "
+              "precession rate about K")
     axial = work.step("omega_z", "psidot + Omega cos(theta)",
                       f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
                       spin + precession * cos, "rad/s", ref="Eq. 11.8")
@@ -307,9 +309,11 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
               "'up' components lie in the plane of K and k, positive toward +K (upward); 'side' "
               "components lie along n, positive toward the precession axis. Labelled A, B in "
               "that order.")
-    work.step("a", "AG", value=a, unit="m", note="(default: midway)" if "cg_position" not in
-              given else "")
+    work.step("a", value=a, unit="m", note="from bearing A to the centre of mass G along k"
+              + (" (default: midway)" if "cg_position" not in given else ""))
     work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
+    work.text("a_up, a_k: the acceleration of G upward and along k; G moves on a circle of "
+              "radius R about the precession axis, with the centripetal acceleration Omega^2 R")
     work.text(f"up:   F_A + F_B = {ms} (g sin(theta) + a_up);   a F_A - b F_B = M   "
               "(moments about G along n)")
     work.step("F_A,weight", f"{ms} g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "

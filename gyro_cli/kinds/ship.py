@@ -45,7 +45,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("ship axes: x forward (toward the bow), y to port (left, looking forward), z up. "
               "The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
               "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the turn's angular velocity, about the vertical); couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive "
               "couple -C. About -y it raises the bow; about +z it turns the ship to port.")
 
     if sense is None:
@@ -164,9 +164,10 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
                              "through 90 deg", key="given.amplitude")
         p = V.pitching(phi, T)
-        work.section("Pitching: simple harmonic, theta = phi sin(omega_1 t)")
+        work.section("Pitching: simple harmonic motion")
         work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
         work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
+        work.text("theta = phi sin(omega_1 t): the pitch angle at the time t")
         work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
                   "position (cos = 1)")
         rate = work.step("omega_p,max", "phi omega_1", f"{num(phi)} ({qty(p.frequency, 'rad/s')})",

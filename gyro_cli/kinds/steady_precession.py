@@ -106,7 +106,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.section("Conventions (errata)")
     work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the centre "
               "of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
-              "precessing frame, omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about "
+              "precessing frame, which turns about the vertical at the precession rate phidot; H: the angular momentum about the fixed point; omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about "
               "the fixed point")
     if body.I_pivot is None and cos == 0:
         work.text("theta = 90 deg: cos(theta) = 0, so the transverse inertia I drops out of "
@@ -450,7 +450,7 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        work.text("Newton's second law for the centre of mass, F + m g = m a_G: the support "
+        work.text("Newton's second law for the centre of mass, F + m g = m a_G, where F is the force of the support: it "
                   "carries the weight and supplies the centripetal force")
         values, names = [], []
         for i, (p, tag) in enumerate(zip(rates, tags)):
