@@ -1,0 +1,213 @@
+"""Every symbol of a worked answer is defined where it is first used (issue 9, item 3).
+
+The worked answer is read in the order a student reads it: the Given table, then
+each section's steps and lines of prose, then the checks. Formulas are parsed by
+the write-up's own parser (`render/mathparse.py`); a symbol counts as defined
+when it is in the Given table, when an earlier step computes it (``X = ...``),
+when an earlier line states it (``X = ...`` in prose) or names it in words (a
+lone symbol in a sentence: "K, the precession axis", "where D is ..."). A line
+may define a symbol it also uses ("T = 2 pi / Omega, where Omega is ...").
+Every bundled problem and every `gyro new KIND` example is walked.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from gyro_cli import kinds
+from gyro_cli.commands.authoring import template
+from gyro_cli.render.mathparse import FUNCTIONS, UNITS, dotted, spans, try_parse
+from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Pow,
+                                      Prime, Quantity, Rel, Sum, Sym, Tuple)
+from gyro_cli.solving.solve import solve_file
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
+
+#: constants and notation every reader knows: pi, e, the imaginary unit, d of d/dt, time t,
+#: Rx, Ry, Rz the rotations about x, y, z
+UNIVERSAL = {"pi", "e", "i", "d", "dt", "du", "t", "Rx", "Ry", "Rz"}
+
+
+def uses(node) -> list[str]:
+    """The symbols a formula uses, in reading order."""
+    out: list[str] = []
+
+    def walk(n) -> None:
+        if n is None:
+            return
+        if isinstance(n, Sym):
+            out.append(n.name)
+        elif isinstance(n, Call):
+            if n.name not in FUNCTIONS and not _rotation(n.name):
+                out.append(n.name)
+            for a in n.args:
+                walk(a)
+            walk(n.power)
+        elif isinstance(n, Quantity):
+            walk(n.value)
+        elif isinstance(n, Integral):
+            walk(n.lower)
+            walk(n.upper)
+            walk(n.body)
+        elif isinstance(n, Rel):
+            walk(n.first)
+            for _, rhs in n.rest:
+                walk(rhs)
+        elif isinstance(n, (Tuple,)):
+            for x in n.items:
+                walk(x)
+        elif isinstance(n, Matrix):
+            for row in n.rows:
+                for x in row:
+                    walk(x)
+        elif isinstance(n, Group) and n.open == "[" and set(uses(n.body)) <= UNITS:
+            return  # "[1/s^2]": the unit of a line, not symbols
+        elif isinstance(n, (Group, Abs, Sum, Neg, Prime)):
+            walk(n.body)
+        elif isinstance(n, BinOp):
+            walk(n.left)
+            walk(n.right)
+        elif isinstance(n, Pow):
+            walk(n.base)
+            walk(n.exp)
+    walk(node)
+    return out
+
+
+def _rotation(name: str) -> bool:
+    return name in ("Rx", "Ry", "Rz")
+
+
+def _heads(node) -> list[str]:
+    """The symbols a formula defines: the left side of ``X = ...`` (or of ``X, Y = ...``)."""
+    if isinstance(node, Sym):
+        return [node.name]
+    if isinstance(node, Call) and node.name not in ("sin", "cos"):
+        return [node.name]  # f(u) = ...
+    if isinstance(node, (Tuple,)):
+        return [h for x in node.items for h in _heads(x)]
+    if isinstance(node, (Group, Sum)):
+        return _heads(node.body)  # sum I_w: the wheels' I_w summed
+    if isinstance(node, Abs):
+        return _heads(node.body)
+    return []
+
+
+def _line_defs_uses(text: str) -> tuple[list[str], list[str]]:
+    """What a line of prose (or a bare equation) defines and uses."""
+    defs: list[str] = []
+    used: list[str] = []
+    parts = spans(text)
+    for is_math, part in parts:
+        if not is_math:
+            continue
+        if isinstance(part, Sym):  # named in words: "K, the precession axis"
+            defs.append(part.name)
+            continue
+        if not isinstance(part, Rel) and set(uses(part)) <= UNITS:
+            continue  # the tail of a unit after a word: "(0, 0) kg m^2/s", "[1/s^2]"
+        if isinstance(part, Rel):
+            # a chain a >= X = b: each member followed by "=" is defined by it
+            members = [part.first] + [rhs for _, rhs in part.rest]
+            ops = [op for op, _ in part.rest] + [""]
+            dummies: set[str] = set()  # Pi(n|m) = ... R_J(..., 1 - n): n and m are its own
+            here: list[str] = []
+            for node, op in zip(members, ops):
+                if op == "=" and _heads(node):
+                    defs += _heads(node)
+                    if isinstance(node, Call):
+                        args = [uses(x) for x in node.args]
+                        dummies |= {a[0] for a in args if len(a) == 1 and isinstance(
+                            node.args[args.index(a)], Sym)}
+                        here += [u for a in args for u in a]
+                else:
+                    here += uses(node)
+            used += [u for u in here if u not in dummies]
+            continue
+        used += uses(part)
+    return defs, used
+
+
+def _step_symbols(symbol: str) -> list[str]:
+    """The symbols a step's left side defines (``phidot_slow, phidot_fast``)."""
+    out = []
+    for piece in symbol.split(","):
+        tree = try_parse(piece.strip(), units=False)
+        out += _heads(tree) if tree is not None else []
+    # a name like F_A,weight is one symbol
+    tree = try_parse(symbol.strip(), units=False)
+    if tree is not None:
+        out += _heads(tree)
+        if not out:  # a step computing a combination, "G M_sun / a_sun^3 = ...", names it
+            out += uses(tree)
+    return out
+
+
+def undefined(solution) -> list[tuple[str, str]]:
+    """(symbol, where) for each symbol used before it is defined, in reading order."""
+    known = set(UNIVERSAL)
+    known.update(g.symbol for g in solution.given)
+    missing: list[tuple[str, str]] = []
+
+    def need(names, where):
+        for name in names:
+            if name not in known and not _derived(name, known):
+                missing.append((name, where))
+                known.add(name)  # report each once
+
+    lines = []
+    for section in solution.sections:
+        # a heading may announce the section's equation ("Moment on the rotor, dH/dt =
+        # Omega K x H"): it names what it defines, its other symbols come in the section
+        known.update(_line_defs_uses(section.title)[0])
+        lines += [(section.title, step) for step in section.steps]
+    lines += [("Check", step) for step in solution.checks]
+    for title, step in lines:
+        if step.symbol:
+            where = f"{title}: {step.as_text()}"
+            note_defs, note_uses = _line_defs_uses(step.text) if step.text else ([], [])
+            defs = _step_symbols(step.symbol)
+            known.update(note_defs)
+            for part in (step.formula, step.substitution):
+                tree = try_parse(part, units=part is step.substitution) if part else None
+                if tree is not None:
+                    need(uses(tree), where)
+            known.update(defs)
+            need(note_uses, where)
+        else:
+            defs, used = _line_defs_uses(step.text)
+            known.update(defs)
+            need(used, f"{title}: {step.text}")
+    return missing
+
+
+def _derived(name: str, known: set[str]) -> bool:
+    """d of a known symbol (``dH``, ``dtheta``) and its rates (``thetadot``, ``alphaddot``)
+    are notation, not new symbols."""
+    dot = dotted(name.split("_")[0].rstrip("0123456789"))
+    return name.startswith("d") and name[1:] in known or dot is not None and dot[0] in known
+
+
+def _solutions():
+    for path in PROBLEMS:
+        yield path.name, path
+    for name in kinds.names():
+        yield f"gyro new {name}", name
+
+
+CASES = list(_solutions())
+
+
+@pytest.mark.parametrize("label, source", CASES, ids=[c[0] for c in CASES])
+def test_every_symbol_is_defined_where_first_used(label, source, tmp_path):
+    if isinstance(source, Path):
+        path = source
+    else:
+        path = tmp_path / f"{source}.yaml"
+        path.write_text(template(source))
+    solution = solve_file(str(path)).solution
+    missing = undefined(solution)
+    assert missing == [], "\n".join(f"{name!r} in {where}" for name, where in missing)
