@@ -211,3 +211,33 @@ def test_every_symbol_is_defined_where_first_used(label, source, tmp_path):
     solution = solve_file(str(path)).solution
     missing = undefined(solution)
     assert missing == [], "\n".join(f"{name!r} in {where}" for name, where in missing)
+
+
+def test_the_walk_finds_what_the_issue_reported():
+    """Worked answers written by hand: 11/3's old check used D before any step defined it,
+    11/5 wrote a = AG with AG never said; defining them (a step, a line of prose naming the
+    symbol) makes the walk pass."""
+    from gyro_cli.core.work import GivenLine, Work
+
+    def solution(*lines, given=("m", "g", "l", "theta")):
+        work = Work()
+        work.given += [GivenLine(s, s, "1", 1.0, "") for s in given]
+        for kind, *args in lines:
+            getattr(work, kind)(*args)
+        return work.solution()
+
+    bad = solution(("step", "M", "m g l sin(theta)"), ("check", "applied D sin(theta) = 1 N m"))
+    assert [name for name, _ in undefined(bad)] == ["D"]
+    assert undefined(solution(("step", "D", "m g l"), ("check", "applied D sin(theta) = 1"))) == []
+    assert [n for n, _ in undefined(solution(("step", "a", "AG")))] == ["AG"]
+    named = solution(("text", "G: the centre of mass"),
+                     ("step", "a", "", "", 0.1, "m", "", "from bearing A to G"),
+                     ("step", "b", "L - a"), given=("L", "A"))
+    assert undefined(named) == []
+    # a line may define what it uses; a chain defines each member followed by '='
+    assert undefined(solution(("text", "T = 2 pi / Omega, where Omega is the rate"))) == []
+    assert undefined(solution(("text", "psidot >= psidot_min = 2 sqrt(m g l) / J"),
+                              given=("m", "g", "l", "J", "psidot"))) == []
+    # a rate of a known angle is notation; a new letter is not
+    assert undefined(solution(("text", "thetadot = 0"))) == []
+    assert [n for n, _ in undefined(solution(("text", "x = k theta")))] == ["k"]

@@ -233,7 +233,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
         tidal = _tidal(values, b, work)
         if tidal is None:
-            work.text(f"no {b}_* keys: {BODY_NAMES[b]} is left out")
+            work.text(f"no keys for {BODY_NAMES[b]}: it is left out")
             continue
         e = values.get(f"{b}_eccentricity", 0.0)
         i = values.get(f"{b}_inclination", 0.0)

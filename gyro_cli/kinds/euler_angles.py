@@ -428,7 +428,7 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
     if R is not None:
         fixed = ek.matvec(R, H)
         for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
-            work.step(name, value=value, unit="kg m^2/s", note="(R (H_x, H_y, H_z), in the fixed frame)")
+            work.step(name, value=value, unit="kg m^2/s", note="fixed-frame component of R H")
             work.answer(name, name, [value], "angular_momentum")
         work.check(f"|H| in the fixed frame = {qty(ek.norm(fixed), 'kg m^2/s')}")
     if Hmag > 0:
