@@ -146,8 +146,9 @@ def _step_symbols(symbol: str) -> list[str]:
     return out
 
 
-def undefined(solution) -> list[tuple[str, str]]:
-    """(symbol, where) for each symbol used before it is defined, in reading order."""
+def undefined(solution, asked=None) -> list[tuple[str, str]]:
+    """(symbol, where) for each symbol used before it is defined, in reading order; then
+    each answer's symbol, which the work must have defined."""
     known = set(UNIVERSAL)
     known.update(g.symbol for g in solution.given)
     missing: list[tuple[str, str]] = []
@@ -165,6 +166,29 @@ def undefined(solution) -> list[tuple[str, str]]:
         known.update(_line_defs_uses(section.title)[0])
         lines += [(section.title, step) for step in section.steps]
     lines += [("Check", step) for step in solution.checks]
+    _walk(lines, known, need)
+    # the answers' symbols, last: F with labels A, B is defined by F_A and F_B
+    for answer in solution.answers.values():
+        if asked is not None and answer.name not in asked:
+            continue  # not in the sheet
+        tree = try_parse(answer.symbol, units=False)
+        if tree is None:
+            continue  # a word: stability, motion
+        names = [n for n in uses(tree) if n not in known and not _derived(n, known)]
+        if names and answer.labels and all(_labelled(n, label) in known for n in names
+                                           for label in answer.labels):
+            continue
+        need(names, f"Answer: {answer.name} {answer.symbol}")
+    return missing
+
+
+def _labelled(name: str, label: str) -> str:
+    """F, A -> F_A; F_arm, A -> F_A,arm (the steps' names of one labelled value)."""
+    base, _, sub = name.partition("_")
+    return f"{base}_{label},{sub}" if sub else f"{base}_{label}"
+
+
+def _walk(lines, known: set[str], need) -> None:
     for title, step in lines:
         if step.symbol:
             where = f"{title}: {step.as_text()}"
@@ -181,7 +205,6 @@ def undefined(solution) -> list[tuple[str, str]]:
             defs, used = _line_defs_uses(step.text)
             known.update(defs)
             need(used, f"{title}: {step.text}")
-    return missing
 
 
 def _derived(name: str, known: set[str]) -> bool:
@@ -208,8 +231,8 @@ def test_every_symbol_is_defined_where_first_used(label, source, tmp_path):
     else:
         path = tmp_path / f"{source}.yaml"
         path.write_text(template(source))
-    solution = solve_file(str(path)).solution
-    missing = undefined(solution)
+    result = solve_file(str(path))
+    missing = undefined(result.solution, set(result.answers))
     assert missing == [], "\n".join(f"{name!r} in {where}" for name, where in missing)
 
 

@@ -332,7 +332,7 @@ KIND = Kind(
         Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet"),
         Param("J2", "dimensionless", "J2", "the planet's J2 = (C - A) / (M R^2) (with "
               "polar_moment_factor, instead of dynamical_ellipticity)"),
-        Param("polar_moment_factor", "dimensionless", "C/MR^2", "C / (M R^2) of the planet"),
+        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet"),
         Param("obliquity", "angle", "epsilon", "angle between the spin axis and the normal of the "
               "reference orbit plane (the ecliptic)"),
         Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet"),

@@ -84,7 +84,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
     work.answer("settles", "alpha_eq", ["north"], None)
     work.answer("directive_moment", "D", [D], "stiffness")
-    work.text("alpha = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
+    work.text("alpha_eq = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
               "unstable): the axis swings about north and, with any damping about the "
               "vertical, settles there.")
 

@@ -252,7 +252,8 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
     work.section("Sleeping top: the axis on the vertical (theta0 = "
                  f"{'0' if upright else '180'} deg, thetadot0 = 0)")
     work.text("u = " + ("1" if upright else "-1") + " is a double root of f(u); phi is undefined "
-              "on the vertical (phidot and psidot only add up to omega_z)")
+              "on the vertical (phidot and psidot only add up to omega_z); theta_max = "
+              "theta_min = theta0: the axis stays there")
     lhs = (top.J * omega_z) ** 2
     if upright:
         rhs = 4 * top.I * top.mgl

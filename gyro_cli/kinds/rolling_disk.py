@@ -287,14 +287,15 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
     work.text("I_G (I_G + m r^2) k = J (J + m r^2) omega_z^2 - I_G (3 J + m r^2) Omega omega_z "
               "sin(beta) + I_G^2 Omega^2 (1 + 2 sin^2(beta)) + I_G m r^2 Omega^2 cos^2(beta) - "
               "I_G m g r cos(beta); k > 0 stable (the tilt wobbles at sqrt(k)), k < 0 unstable "
-              "(it grows as exp(sqrt(-k) t))")
+              "(it grows as exp(sigma t), with the growth rate sigma = sqrt(-k); sigma = 0 when "
+              "stable)")
     words, rates = [], []
     for s in states:
         if not all(map(math.isfinite, (s.centre_radius, s.precession, s.spin, s.axial_rate))):
             raise OverflowError("the steady state itself overflows")
         verdict = disk_rolling(m, g, r, I, J, s.tilt, s.precession, s.axial_rate)
         detail = (f"wobbles at sqrt(k) = {qty(verdict.frequency, 'rad/s')}" if verdict.frequency
-                  else f"grows at sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
+                  else f"grows at sigma = sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
                   if verdict.growth_rate else "neutral to first order")
         work.step("k", value=verdict.k, unit="1/s^2",
                   note=f"beta = {num(math.degrees(s.tilt))} deg: {verdict.word}, {detail}")
@@ -312,7 +313,7 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
                         note="upright rolling in a straight line (beta = 0, Omega = 0) is "
                              "stable above this speed (k > 0)")
     work.answer("stability", "stability", words, None)
-    work.answer("growth_rate", "s", rates, "rate")
+    work.answer("growth_rate", "sigma", rates, "rate")
     work.answer("upright_speed", "v_upright", [upright], "speed")
 
 
@@ -342,7 +343,7 @@ KIND = Kind(
         AnswerSpec("precession", "rate", "Omega", "free: rate about the vertical, v / rho"),
         AnswerSpec("stability", None, "stability", "free: stable or unstable (tilt perturbed, "
                    "linearised rolling equations)"),
-        AnswerSpec("growth_rate", "rate", "s", "free: growth rate of the unstable mode, 1/s (0 "
+        AnswerSpec("growth_rate", "rate", "sigma", "free: growth rate of the unstable mode, 1/s (0 "
                    "when stable)"),
         AnswerSpec("upright_speed", "speed", "v_upright", "free: least speed at which upright "
                    "rolling in a straight line is stable"),

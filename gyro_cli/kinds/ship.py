@@ -196,7 +196,7 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
     work.section("Rolling: precession about the fore-and-aft axis")
     if rate:
-        work.step("omega_p", value=rate, unit="rad/s", note="rolling rate")
+        work.step("omega_p", "omega_r", value=rate, unit="rad/s", note="rolling rate")
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)

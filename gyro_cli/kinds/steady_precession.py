@@ -337,7 +337,9 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
     work.text("k = U_eff''(theta) / I = ((J omega_z - 2 I phidot cos(theta)) / I)^2 + "
               "phidot^2 sin^2(theta) >= 0 (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady "
               "precession of a heavy top about a fixed point is a minimum of U_eff, stable; a "
-              "change of p_phi or p_psi only moves it to a neighbouring steady precession")
+              "change of p_phi or p_psi only moves it to a neighbouring steady precession; an "
+              "unstable root (k < 0) would grow as exp(sigma t) with the growth rate "
+              "sigma = sqrt(-k), and sigma = 0 for a stable one")
     words, rates = [], []
     for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
                                     answer.labels or [""] * len(answer.si_values)):
@@ -352,7 +354,7 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
-    work.answer("growth_rate", "s", rates, "rate", answer.labels)
+    work.answer("growth_rate", "sigma", rates, "rate", answer.labels)
 def _approximation(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
                    work: Work) -> float:
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
@@ -519,7 +521,7 @@ KIND = Kind(
         AnswerSpec("min_spin", "rate", "psidot_min", "least spin for steady precession at theta"),
         AnswerSpec("stability", None, "stability", "stable or unstable, for each root (theta "
                    "perturbed, gravity alone)"),
-        AnswerSpec("growth_rate", "rate", "s", "growth rate of the unstable mode, 1/s (0 when "
+        AnswerSpec("growth_rate", "rate", "sigma", "growth rate of the unstable mode, 1/s (0 when "
                    "stable)"),
         AnswerSpec("precession_slow", "rate", "phidot_slow", "the slow root alone (the one "
                    "books quote)"),

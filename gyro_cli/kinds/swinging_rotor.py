@@ -165,7 +165,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   "reversing the spin swaps the two")
     work.answer("bearing_forces", "|F|", list(f.magnitudes), "force", ["A", "B"])
     work.answer("bearing_forces_arm", "F_arm", list(f.arm), "force", ["A", "B"])
-    work.answer("bearing_forces_normal", "F_n", list(f.normal), "force", ["A", "B"])
+    work.answer("bearing_forces_normal", "F_normal", list(f.normal), "force", ["A", "B"])
     work.answer("angular_rate", "thetadot", [f.thetadot], "rate")
     work.check(f"moments about O along i x k: b F_B,arm - a F_A,arm = "
                f"{qty(b * f.arm[1] - a * f.arm[0], 'N m')}; J p thetadot = "
@@ -193,7 +193,7 @@ KIND = Kind(
         AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces"),
         AnswerSpec("bearing_forces_arm", "force", "F_arm", "[A, B]: along the arm, shaft to "
                    "rotor positive"),
-        AnswerSpec("bearing_forces_normal", "force", "F_n", "[A, B]: perpendicular to the arm "
+        AnswerSpec("bearing_forces_normal", "force", "F_normal", "[A, B]: perpendicular to the arm "
                    "and shaft, upper side positive"),
         AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
     ),
