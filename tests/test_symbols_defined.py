@@ -100,7 +100,8 @@ def _line_defs_uses(text: str) -> tuple[list[str], list[str]]:
     """What a line of prose (or a bare equation) defines and uses."""
     defs: list[str] = []
     used: list[str] = []
-    parts = spans(text)
+    whole = try_parse(text)  # a line that is one formula is set as one (the write-up does)
+    parts = [(True, whole)] if whole is not None else spans(text)
     for is_math, part in parts:
         if not is_math:
             continue
@@ -199,6 +200,8 @@ def _walk(lines, known: set[str], need) -> None:
                 tree = try_parse(part, units=part is step.substitution) if part else None
                 if tree is not None:
                     need(uses(tree), where)
+                elif part:  # set piece by piece: the maths in it
+                    need(_line_defs_uses(part)[1], where)
             known.update(defs)
             need(note_uses, where)
         else:
@@ -264,3 +267,48 @@ def test_the_walk_finds_what_the_issue_reported():
     # a rate of a known angle is notation; a new letter is not
     assert undefined(solution(("text", "thetadot = 0"))) == []
     assert [n for n, _ in undefined(solution(("text", "x = k theta")))] == ["k"]
+
+
+#: data the model does not use: the frames' inertia about the lateral axis (Meijaard et al.
+#: 2007 need only the wheels' I_Ryy and I_Fyy), and g where gravity plays no part
+UNUSED = {("bicycle", "I_Byy"), ("bicycle", "I_Hyy")}
+
+
+def _all_uses(solution) -> set[str]:
+    used: set[str] = set()
+    for step in [s for sec in solution.sections for s in sec.steps] + solution.checks:
+        for part, units in ((step.formula, False), (step.substitution, True)):
+            tree = try_parse(part, units) if part else None
+            used.update(uses(tree) if tree is not None else
+                        _line_defs_uses(part)[1] if part else [])
+        if step.text:
+            defs, line = _line_defs_uses(step.text)
+            used.update(defs + line)
+    return used
+
+
+def _used(symbol: str, used: set[str]) -> bool:
+    """A symbol of the table is used; one written as an expression (C/(M R^2)) is used when
+    all its symbols are."""
+    tree = try_parse(symbol, units=False)
+    return symbol in used or tree is not None and not isinstance(tree, Sym) \
+        and set(uses(tree)) <= used
+
+
+@pytest.mark.parametrize("label, source", CASES, ids=[c[0] for c in CASES])
+def test_steps_use_the_given_tables_symbols(label, source, tmp_path):
+    """A datum of the Given table is worked with under the table's symbol: a step that
+    wrote the same quantity under another name (spin for psidot, eps for epsilon, drift
+    for the budget) leaves the table's symbol unused."""
+    if isinstance(source, Path):
+        path = source
+    else:
+        path = tmp_path / f"{source}.yaml"
+        path.write_text(template(source))
+    result = solve_file(str(path))
+    used = _all_uses(result.solution)
+    kind = result.problem.kind.name
+    unused = [g.symbol for g in result.solution.given
+              if not isinstance(g.si_value, str) and not _used(g.symbol, used)
+              and (kind, g.symbol) not in UNUSED and g.symbol != "g"]
+    assert unused == []

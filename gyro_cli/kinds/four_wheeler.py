@@ -47,7 +47,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     rw, R = given["wheel_radius"], given["turn_radius"]
     IE, G, sense = given["engine_inertia"], given["gear_ratio"], given.word("engine_sense", "same")
     sign = "+" if sense == "same" else "-"
-    wheel_total, wheel_text = _wheels(given)
+    wheel_total, wheel_text, wheel_numbers = _wheels(given)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
@@ -59,7 +59,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")
     work.section("Rotating parts")
-    work.step("sum I_w", wheel_text, value=wheel_total, unit="kg*m^2")
+    work.step("sum I_w", wheel_text, wheel_numbers, value=wheel_total, unit="kg*m^2")
     work.step("sum I_E", "n_E I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
               "kg*m^2")
     I_eq = work.step("I_eq", f"sum I_w {sign} G sum I_E", f"{qty(wheel_total, 'kg*m^2')} {sign} "
@@ -74,7 +74,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _limit(work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, I_eq)
 
 
-def _wheels(given: Given) -> tuple[float, str]:
+def _wheels(given: Given) -> tuple[float, str, str]:
     if ("wheel_inertia" in given) == ("axle_inertia" in given):
         raise InputError("give wheel_inertia (each of the four wheels) or axle_inertia (each of "
                          "the two axles with its pair of wheels and gears), one of them",
@@ -83,11 +83,11 @@ def _wheels(given: Given) -> tuple[float, str]:
         Iw = given["wheel_inertia"]
         if Iw < 0:
             raise InputError("wheel_inertia cannot be negative", key="given.wheel_inertia")
-        return 4 * Iw, f"4 I_w = 4 ({qty(Iw, 'kg*m^2')})"
+        return 4 * Iw, "4 I_w", f"4 ({qty(Iw, 'kg*m^2')})"
     Ia = given["axle_inertia"]
     if Ia < 0:
         raise InputError("axle_inertia cannot be negative", key="given.axle_inertia")
-    return 2 * Ia, f"2 I_axle = 2 ({qty(Ia, 'kg*m^2')})"
+    return 2 * Ia, "2 I_axle", f"2 ({qty(Ia, 'kg*m^2')})"
 
 
 def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, rw: float,
