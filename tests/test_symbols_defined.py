@@ -12,13 +12,14 @@ Every bundled problem and every `gyro new KIND` example is walked.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
 
 from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
-from gyro_cli.render.mathparse import FUNCTIONS, UNITS, dotted, spans, try_parse
+from gyro_cli.render.mathparse import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
 from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Pow,
                                       Prime, Quantity, Rel, Sum, Sym, Tuple)
 from gyro_cli.solving.solve import solve_file
@@ -100,13 +101,20 @@ def _line_defs_uses(text: str) -> tuple[list[str], list[str]]:
     """What a line of prose (or a bare equation) defines and uses."""
     defs: list[str] = []
     used: list[str] = []
+    # a key of the file is words in the write-up (sun_mass_ratio: "sun mass ratio")
+    text = re.sub(r"\b[a-z]+(?:_[a-z0-9]+)+\b",
+                  lambda m: m.group().replace("_", " ") if m.group().count("_") > 1
+                  or is_word(m.group()) else m.group(), text)
     whole = try_parse(text)  # a line that is one formula is set as one (the write-up does)
     parts = [(True, whole)] if whole is not None else spans(text)
-    for is_math, part in parts:
+    for k, (is_math, part) in enumerate(parts):
         if not is_math:
             continue
-        if isinstance(part, Sym):  # named in words: "K, the precession axis"
-            defs.append(part.name)
+        if isinstance(part, Sym):
+            if _named(parts, k):  # named in words: "K: the precession axis"
+                defs.append(part.name)
+            else:
+                used.append(part.name)
             continue
         if not isinstance(part, Rel) and set(uses(part)) <= UNITS:
             continue  # the tail of a unit after a word: "(0, 0) kg m^2/s", "[1/s^2]"
@@ -130,6 +138,25 @@ def _line_defs_uses(text: str) -> tuple[list[str], list[str]]:
             continue
         used += uses(part)
     return defs, used
+
+
+#: words after a symbol that say what it is: "K: the precession axis", "where D is the ...",
+#: "p, q, r: the components", "N of the plane", "u1, u2, u3 of f"
+_AFTER = re.compile(r"^\s*(:|,|\)|;|\.(\s|$)|\s+(is|are)\s+(the|a|an|its|their|about|along|taken|"
+                    r"measured)\b|\s+(of|from|and|the|its|\(|below|above|here|along|about|for|at|in|"
+                    r"forward|up|down|to|toward|aft)\b|\s*$)")
+#: words before a symbol that name it: "the precession rate phidot", "by the angle alpha"
+_BEFORE = re.compile(r"(\b[a-z]{3,}[a-z'-]*|\()\s*$")
+
+
+def _named(parts, k: int) -> bool:
+    """A lone symbol in a sentence is named there: words before it ("the rate phidot") or
+    after it ("K: the axis", "where D is the ...")."""
+    after = parts[k + 1][1] if k + 1 < len(parts) and not parts[k + 1][0] else ""
+    before = parts[k - 1][1] if k > 0 and not parts[k - 1][0] else ""
+    if isinstance(after, str) and _AFTER.match(after):
+        return True
+    return isinstance(before, str) and bool(_BEFORE.search(before))
 
 
 def _step_symbols(symbol: str) -> list[str]:
@@ -170,7 +197,7 @@ def undefined(solution, asked=None) -> list[tuple[str, str]]:
     _walk(lines, known, need)
     # the answers' symbols, last: F with labels A, B is defined by F_A and F_B
     for answer in solution.answers.values():
-        if asked is not None and answer.name not in asked:
+        if asked is not None and answer.name not in asked or not answer.si_values:
             continue  # not in the sheet
         tree = try_parse(answer.symbol, units=False)
         if tree is None:

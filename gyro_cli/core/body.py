@@ -212,7 +212,7 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
                            h=qty(along, "m"))
         what = {"cylinder": "cylinder of length L", "cone": "cone of height h"}.get(shape, shape)
         if shape == "cylinder" and "length" not in values:
-            what += ", not given: L = 0"
+            what = "cylinder; its length L not given, taken as 0"
         return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
                          note=f"({what}, about its centre of mass)")
     return None

@@ -66,7 +66,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sequence == "zxz":
         work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
                   "K, then by theta about the line of nodes i' = i'', then by psi about the "
-                  "body's k; i, j, k: the body axes. The body axes in the fixed frame are the "
+                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed frame are the "
                   "columns of R = Rz(phi) Rx(theta) Rz(psi). phidot, thetadot, psidot: the "
                   "rates of phi, theta, psi.")
     else:
@@ -349,8 +349,11 @@ def _check_rigid(matrix, key: str) -> None:
 
 def _from_particles(particles, work: Work):
     work.text("particles of mass m at the coordinates x, y, z in body axes from the fixed "
-              "point; the products as the "
-              "chapter defines them, I_xy = sum m x y (the matrix has -I_xy off the diagonal)")
+              "point; the products of inertia as the chapter defines them (the matrix has "
+              "their negatives off the diagonal):")
+    work.text("I_xy = sum m x y")
+    work.text("I_yz = sum m y z")
+    work.text("I_zx = sum m z x")
     for i, (m, x, y, z) in enumerate(particles[:MAX_LISTED]):
         work.text(f"  [{i}] m = {qty(m, 'kg')} at ({num(x)}, {num(y)}, {num(z)}) m")
     if len(particles) > MAX_LISTED:
@@ -374,7 +377,8 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
             work.step(name, value=value, unit="kg*m^2")
     moments = ek.principal_moments(matrix)
     if ek.is_diagonal(matrix):
-        work.text("the products of inertia are zero: x, y, z are principal axes")
+        work.text("the products of inertia are zero, I_xy = I_yz = I_zx = 0: x, y, z are principal "
+                  "axes")
     else:
         work.text("the products of inertia are not zero: x, y, z are NOT principal axes, and T "
                   "and H below use the whole inertia matrix, not Eq. 11.2's diagonal form")

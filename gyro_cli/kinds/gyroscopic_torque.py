@@ -340,7 +340,8 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
                   note="centripetal force of the centre of mass")
         work.step("F_B,side", f"{ms} Omega^2 R a / L", value=forces.side[1], unit="N")
     else:
-        work.text("no side forces (the centre of mass is not off the axis across the spin axis)")
+        work.text("F_A,side = F_B,side = 0: no side forces (the centre of mass is not off the axis "
+                  "across the spin axis)")
     work.step("T", f"{ms} (g cos(theta) + a_k)", value=forces.thrust, unit="N",
               note="axial, along k, taken by the thrust bearing")
     if min(forces.up) < 0:

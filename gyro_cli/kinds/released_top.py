@@ -87,7 +87,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 def _constants(top, start, nut, omega_z: float, work: Work) -> None:
     c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
     work.section("Constants of the motion at t = 0 (Eqs. 11.8, 11.14, 11.17, 11.18)")
-    work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the "
+    work.text("Euler angles z-x-z; phi: the azimuth of the axis about the vertical; theta "
+              "from the upward vertical to the axis through the "
               "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
               "precessing frame, which turns about the vertical at the precession rate phidot; "
               "thetadot: the rate of theta; the suffix 0 marks a value at t = 0")
