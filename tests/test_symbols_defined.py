@@ -187,14 +187,15 @@ def undefined(solution, asked=None) -> list[tuple[str, str]]:
                 missing.append((name, where))
                 known.add(name)  # report each once
 
-    lines = []
     for section in solution.sections:
         # a heading may announce the section's equation ("Moment on the rotor, dH/dt =
-        # Omega K x H"): it names what it defines, its other symbols come in the section
-        known.update(_line_defs_uses(section.title)[0])
-        lines += [(section.title, step) for step in section.steps]
-    lines += [("Check", step) for step in solution.checks]
-    _walk(lines, known, need)
+        # Omega K x H"): it defines what it names, and its other symbols are defined by the
+        # end of its section
+        defs, used = _line_defs_uses(section.title)
+        known.update(defs)
+        _walk([(section.title, step) for step in section.steps], known, need)
+        need(used, f"heading: {section.title}")
+    _walk([("Check", step) for step in solution.checks], known, need)
     # the answers' symbols, last: F with labels A, B is defined by F_A and F_B
     for answer in solution.answers.values():
         if asked is not None and answer.name not in asked or not answer.si_values:

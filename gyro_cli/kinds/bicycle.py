@@ -286,6 +286,7 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
         state = bike.motion(ev)
         work.section(f"At v = {speed:.12g} m/s: the eigenvalues of the state matrix "
                      "[[0, I], [-M^-1 (g K0 + v^2 K2), -M^-1 v C1]]")
+        work.text("I: the identity matrix; s: an eigenvalue")
         for e in ev:
             work.text(f"s = {num(e.real, 12)}" + (f" {'+' if e.imag > 0 else '-'} "
                       f"{num(abs(e.imag), 12)} i" if e.imag else "") + " 1/s")

@@ -238,7 +238,8 @@ def _inverse(sequence: str, a2: float, a3: float, omega, raise_singular: bool):
 
 def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3: float,
                  work: Work) -> None:
-    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz")
+    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz, with "
+                 "omega_xyz the body components")
     if sequence == "zxz":
         r1, r2, r3 = rates
         s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)

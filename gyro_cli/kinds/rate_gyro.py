@@ -74,7 +74,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at "
               "theta = 0; positive senses chosen so that a positive input rate deflects the "
               "gimbal positively. All results are for small gimbal angles.")
-    work.section("Gimbal equation (Eq. 11.29: Q_theta = J psidot phidot = H Omega)")
+    work.section("Gimbal equation (Eq. 11.29: Q_theta = H Omega about the output axis)")
     work.text("Omega: the input rate, about the input axis; theta: the gimbal's deflection "
               "about the output axis; I_g: the gimbal's moment of inertia about that axis; "
               "k: the spring's stiffness; c: the damping coefficient")

@@ -213,7 +213,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("beta: tilt of the disk's plane from the vertical, leaning toward the centre of "
               "the circle; rho: radius of the circle of the centre G; R = rho + r sin(beta): "
               "radius of the circle traced by the contact point (path_radius); Omega: the rate at "
-              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the disk's axis, pointing outward and up.")
+              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the disk's axis, pointing outward and up; "
+              "K: the upward vertical; H_G: the disk's angular momentum about G.")
     work.section("Steady rolling: rolling gives omega_z = -v / r; moments about G, "
                  "dH_G/dt = Omega K x H_G, with N = m g and friction m Omega^2 rho inward")
     work.text("m g r sin(beta) = Omega^2 cos(beta) [rho (m r + J / r) + I_G sin(beta)]")

@@ -139,10 +139,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               f"({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(s)}) / {qty(I_O / m, 'm^2')}",
               f.thetaddot, "rad/s^2", ref="moments about AB")
     work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
+    work.text("H_O = I_O thetadot i + J p k: the angular momentum about O, the centre of the "
+              "shaft; k turns about i at thetadot")
     work.step("J p thetadot / d", f"m ({kz2}) p thetadot / d",
               f"{qty(J, 'kg*m^2')} ({qty(p, 'rad/s')}) ({qty(f.thetadot, 'rad/s')}) / "
               f"{qty(d, 'm')}", f.couple, "N", note="+ at B, - at A, along the arm")
     work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
+    work.text("a_G: the acceleration of the rotor's centre G, L thetaddot across the arm and "
+              "L thetadot^2 toward the shaft")
     root = f"sqrt(2 g L (cos theta0 - cos theta) / ({kg2} + L^2))"
     arm_common = f"m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / ({kg2} + L^2)]"
     normal_common = f"m g sin(theta) ({kg2}) / ({kg2} + L^2)"

@@ -38,8 +38,8 @@ UNITS = {"kg", "m", "s", "N", "rad", "rpm", "deg", "mm", "cm", "km", "in", "ft",
          "knots", "t", "mph", "kN", "rps", "hr", "g", "dyne", "lbm", "gal", "psi"}
 RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 #: symbols that name vectors: between two of them a spaced ``x`` is a cross product
-VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "C", "M", "F", "Omega_E", "U",
-           "u", "s"}
+VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "H_G", "C", "M", "F",
+           "Omega_E", "U", "u", "s"}
 
 _TOKEN = re.compile(r"""
     (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
@@ -626,6 +626,11 @@ def _classify(toks: list[Token]) -> list[bool]:
                 classes.append(False)  # "A gyro wheel": the article opening a sentence
             elif before is not None and before.text == "'" and t.text == "s":
                 classes.append(False)  # possessive
+            elif len(t.text) == 1 and t.text.isupper() and after is not None \
+                    and after.kind == "num" and before is not None and (
+                        before.text == "." and pos[k] >= 2 and nxt(k, -2).text in ("Eq", "Eqs")
+                        or before.text == "-" and last_ref):
+                classes.append(False)  # "Eqs. A 1-A 5": equations of an appendix
             elif (before is not None and before.text == "-" and not before.space
                   and not t.space and k >= 2 and toks[k - 2].kind == "name"
                   and not classes[-1]):
