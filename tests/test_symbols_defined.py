@@ -22,6 +22,7 @@ from gyro_cli.commands.authoring import template
 from gyro_cli.render.mathparse import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
 from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Pow,
                                       Prime, Quantity, Rel, Sum, Sym, Tuple)
+from gyro_cli.render.writeup import file_keys
 from gyro_cli.solving.solve import solve_file
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -105,6 +106,8 @@ def _line_defs_uses(text: str) -> tuple[list[str], list[str]]:
     text = re.sub(r"\b[a-z]+(?:_[a-z0-9]+)+\b",
                   lambda m: m.group().replace("_", " ") if m.group().count("_") > 1
                   or is_word(m.group()) else m.group(), text)
+    if KEYS[0] is not None:  # the kind's keys are words in the write-up (I_cg: "I cg")
+        text = KEYS[0].sub("key", text)
     whole = try_parse(text)  # a line that is one formula is set as one (the write-up does)
     parts = [(True, whole)] if whole is not None else spans(text)
     for k, (is_math, part) in enumerate(parts):
@@ -159,6 +162,10 @@ def _named(parts, k: int) -> bool:
     return isinstance(before, str) and bool(_BEFORE.search(before))
 
 
+#: the keys of the kind being walked (writeup.file_keys)
+KEYS: list = [None]
+
+
 def _step_symbols(symbol: str) -> list[str]:
     """The symbols a step's left side defines (``phidot_slow, phidot_fast``)."""
     out = []
@@ -208,6 +215,10 @@ def undefined(solution, asked=None) -> list[tuple[str, str]]:
                                            for label in answer.labels):
             continue
         need(names, f"Answer: {answer.name} {answer.symbol}")
+    for warning in solution.warnings:  # printed after the answers
+        defs, used = _line_defs_uses(warning)
+        known.update(defs)
+        need(used, f"Warning: {warning}")
     return missing
 
 
@@ -263,7 +274,11 @@ def test_every_symbol_is_defined_where_first_used(label, source, tmp_path):
         path = tmp_path / f"{source}.yaml"
         path.write_text(template(source))
     result = solve_file(str(path))
-    missing = undefined(result.solution, set(result.answers))
+    KEYS[0] = file_keys(result.problem.kind)
+    try:
+        missing = undefined(result.solution, set(result.answers))
+    finally:
+        KEYS[0] = None
     assert missing == [], "\n".join(f"{name!r} in {where}" for name, where in missing)
 
 

@@ -385,7 +385,7 @@ def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float,
     """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
     value = _approximation(given, rate, J, theta, D, driver, work)
     work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
-              "`precession` is the gyroscopic approximation m g l / (J omega), not an exact "
+              "`precession` is the gyroscopic approximation phidot_approx, not an exact "
               "root of Eq. 11.13; the exact roots need I")
     cos = cos_theta(theta)
     spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
