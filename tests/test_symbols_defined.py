@@ -167,8 +167,13 @@ KEYS: list = [None]
 
 
 def _step_symbols(symbol: str) -> list[str]:
-    """The symbols a step's left side defines (``phidot_slow, phidot_fast``)."""
+    """The symbols a step's left side defines (``phidot_slow, phidot_fast``); a step of one
+    root, ``v_G (slow)``, defines v_G and v_G_slow."""
     out = []
+    labelled = re.match(r"^(.*\S)\s*\((\w+)\)$", symbol)
+    if labelled:
+        base = _step_symbols(labelled.group(1))
+        return base + [f"{b}_{labelled.group(2)}" for b in base]
     for piece in symbol.split(","):
         tree = try_parse(piece.strip(), units=False)
         out += _heads(tree) if tree is not None else []

@@ -190,7 +190,8 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
     """
     deg = round(math.degrees(theta))
     work.section("Spin axis along the precession axis")
-    work.text(f"theta = {deg} deg: the spin axis lies along the precession axis, so the "
+    work.text(f"k: the spin axis; K: the precession axis, upward; theta = {deg} deg: the spin "
+              "axis lies along the precession axis, so the "
               "precession only adds to (or takes from) the spin, omega_z = psidot + Omega "
               "cos(theta); H = J omega_z k stays along K and does not turn: dH/dt = Omega K x H "
               "= 0, no gyroscopic moment (sin(theta) = 0 in Eq. 11.29)")
@@ -207,7 +208,7 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
                          key=f"find.{sorted(wanted)[0]}")
     precession = _precession(given, 0.0, 0.0, given.get("spin", 0.0) or 0.0, theta, work)
     work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))", f"sin({deg} deg) = 0",
-              0.0, "N*m")
+              0.0, "N*m", note="whatever the transverse inertia I")
     work.answer("moment", "M", [0.0], "moment")
     work.answer("precession", "Omega", [precession], "rate")
 
@@ -244,6 +245,8 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                          f"{qty(R, 'm')}", sign * given["speed"] / R, "rad/s")
     M = given["moment"]
     work.section("Precession that the applied moment sustains (moment along n given)")
+    work.text("Omega: the precession rate sought; I: the transverse moment of inertia about the "
+              "centre of mass")
     work.text("(J - I) cos(theta) sin(theta) Omega^2 + J psidot sin(theta) Omega - M = 0")
     roots = precession_for_moment(J, I, spin, theta, M)
     if not roots:

@@ -267,7 +267,7 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
                       "stable; u3 = gamma^2/a - 1 > 1")
         else:
             u1 = nut.u_roots[0]
-            work.text("J^2 omega_z^2 <= 4 I m g l: NOT stable; the least disturbance lets the "
+            work.text("J^2 omega_z^2 <= 4 I m g l: not stable; the least disturbance lets the "
                       f"axis fall to u1 = gamma^2/a - 1 = {num(u1)}, theta = "
                       f"{_deg(math.acos(max(-1, u1)))}")
             least = 2 * math.sqrt(top.I * top.mgl) / top.J
