@@ -626,6 +626,9 @@ def _classify(toks: list[Token]) -> list[bool]:
                 classes.append(False)  # "A gyro wheel": the article opening a sentence
             elif before is not None and before.text == "'" and t.text == "s":
                 classes.append(False)  # possessive
+            elif t.text in ANGLE_WORDS and before is not None and before.text == "(" \
+                    and pos[k] >= 2 and nxt(k, -2).text in ("Rx", "Ry", "Rz"):
+                classes.append(True)  # Rz(yaw): the rotation by the yaw angle
             elif len(t.text) == 1 and t.text.isupper() and after is not None \
                     and after.kind == "num" and before is not None and (
                         before.text == "." and pos[k] >= 2 and nxt(k, -2).text in ("Eq", "Eqs")
