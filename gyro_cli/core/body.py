@@ -171,7 +171,8 @@ def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float 
             key = "k_pivot" if "k_pivot" in values else "I_pivot"
             work.warn(f"{key}: I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
                       f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no rigid body can have "
-                      "(parallel axes: I = I_G + m l^2, with I_G about the centre of mass); solved with the "
+                      "(parallel axes: I = I_G + m l^2, with I_G about the centre of mass); "
+                      "solved with the "
                       "data as given")
         if I_cg is None:
             I_cg = max(I_pivot - m * l * l, 0.0)

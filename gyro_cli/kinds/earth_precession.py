@@ -247,7 +247,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                        eccentricity_factor(e), "")
         fi = node_factor(i)
         if i:
-            work.step(f"1 - (3/2) sin^2(i_{b})", "", f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
+            work.step(f"1 - (3/2) sin^2(i_{b})", "",
+                      f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
                       "", note="node-averaged")
         rate = precession_rate(tidal, e, H, eps, omega, i)
         tail = f" (1 - (3/2) sin^2(i_{b}))" if i else ""

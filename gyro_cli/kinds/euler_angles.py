@@ -66,7 +66,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sequence == "zxz":
         work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
                   "K, then by theta about the line of nodes i' = i'', then by psi about the "
-                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed frame are the "
+                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed "
+                  "frame are the "
                   "columns of R = Rz(phi) Rx(theta) Rz(psi). phidot, thetadot, psidot: the "
                   "rates of phi, theta, psi.")
     else:

@@ -53,7 +53,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
               "their spin vector points to the left (+y); each engine's points the same way "
               "(engine_sense: same) or the other way (opposite).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the turn's angular velocity, about the vertical); couple on the rotors C = omega_p x H (Eq. 11.29); the vehicle feels the "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
+              "H (Eq. 11.29); the vehicle feels the "
               "reactive couple -C. Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "

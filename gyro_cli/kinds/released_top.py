@@ -137,7 +137,8 @@ def _roots(top, start, nut, work: Work) -> None:
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
     residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
-    work.check(f"at each root u_i, f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest coefficient) = "
+    work.check(f"at each root u_i, f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest "
+               f"coefficient) = "
                f"{residual:.1e}")
 
 

@@ -173,7 +173,8 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
               "is the disk's moment of inertia about the vertical through O")
     dH = work.step("dH_O/dt", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
                    f"({qty(Omega, 'rad/s')})", J * spin * Omega, "N*m", note="along n")
-    work.text("about n: gravity m g R (+), the plane's normal force N gives -N R; the pin force passes through O "
+    work.text("about n: gravity m g R (+), the plane's normal force N gives -N R; the pin force "
+              "passes through O "
               "and the plane is taken to give no radial friction (the pin holds the disk on "
               "its circle)")
     work.text("m g R - N R = J psidot Omega = -J Omega^2 R / r")
@@ -213,7 +214,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("beta: tilt of the disk's plane from the vertical, leaning toward the centre of "
               "the circle; rho: radius of the circle of the centre G; R = rho + r sin(beta): "
               "radius of the circle traced by the contact point (path_radius); Omega: the rate at "
-              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the disk's axis, pointing outward and up; "
+              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the "
+              "disk's axis, pointing outward and up; "
               "K: the upward vertical; H_G: the disk's angular momentum about G.")
     work.section("Steady rolling: rolling gives omega_z = -v / r; moments about G, "
                  "dH_G/dt = Omega K x H_G, with N = m g and friction m Omega^2 rho inward")

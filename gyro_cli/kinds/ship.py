@@ -45,7 +45,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("ship axes: x forward (toward the bow), y to port (left, looking forward), z up. "
               "The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
               "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the turn's angular velocity, about the vertical); couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotor C = omega_p x "
+              "H (Eq. 11.29); the ship feels the reactive "
               "couple -C. About -y it raises the bow; about +z it turns the ship to port.")
 
     if sense is None:

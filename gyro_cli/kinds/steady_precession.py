@@ -465,7 +465,8 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        work.text("Newton's second law for the centre of mass, F + m g = m a_G, where F is the force of the support: it "
+        work.text("Newton's second law for the centre of mass, F + m g = m a_G, where F is the "
+                  "force of the support: it "
                   "carries the weight and supplies the centripetal force")
         values, names = [], []
         for i, (p, tag) in enumerate(zip(rates, tags)):

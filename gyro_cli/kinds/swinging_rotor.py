@@ -120,7 +120,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     I_O = I_G + m * L * L
 
     work.section("Conventions")
-    work.text("i: along the shaft from A to B; the arm swings at the rate thetadot, its angular velocity +thetadot i "
+    work.text("i: along the shaft from A to B; the arm swings at the rate thetadot, its angular "
+              "velocity +thetadot i "
               "(counter-clockwise seen from B); k: along the arm from the shaft to the rotor; "
               "spin p positive about k (counter-clockwise seen from outside the rotor's face). "
               "n: perpendicular to the arm and the shaft on the upper side (against the swing).")
