@@ -338,7 +338,7 @@ def test_j_over_two_i_is_solved_with_a_warning(run, write, J, warned):
     path = write(tf("omega: 1 rad/s\n  omega_angle: 10 deg", f"J: {J} kg m^2\n  I_cg: 0.05 kg m^2"))
     result = run("solve", path)
     assert result.exit_code == 0, result.output
-    assert ("exceeds 2 I_G" in result.stdout and "no rigid body" in result.stdout) is warned
+    assert ("exceeds twice the transverse moment I_G" in result.stdout and "no rigid body" in result.stdout) is warned
 
 
 def test_radii_of_gyration_without_mass_give_the_rates(run, write):

@@ -127,8 +127,9 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
         m = values["mass"]
     elif per_kg:
         m = 1.0
-        work.text("no mass given: J, I and m g l are all proportional to m, so the rates do not "
-                  "depend on it; the work below is per kilogram (m = 1 kg)")
+        work.text("no mass given: the inertias and the gravity moment are all proportional to "
+                  "the mass m, so the rates do not depend on it; the work below is per "
+                  "kilogram (m = 1 kg)")
     elif "weight" not in values:
         m = None
     else:
@@ -170,15 +171,17 @@ def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float 
             key = "k_pivot" if "k_pivot" in values else "I_pivot"
             work.warn(f"{key}: I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
                       f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no rigid body can have "
-                      "(parallel axes: I = I_G + m l^2); solved with the data as given")
+                      "(parallel axes: I = I_G + m l^2, with I_G about the centre of mass); "
+                      "solved with the "
+                      "data as given")
         if I_cg is None:
             I_cg = max(I_pivot - m * l * l, 0.0)
     if J is not None and I_cg is not None and J > 2 * I_cg * (1 + INERTIA_SLACK):
         key = "J" if "J" in values else "k_axial" if "k_axial" in values else "shape"
-        work.warn(f"{key}: J = {qty(J, 'kg*m^2')} exceeds 2 I_G = {qty(2 * I_cg, 'kg*m^2')}, "
-                  "which no rigid body can have (the axial moment is at most the sum of the "
-                  "two transverse ones about the centre of mass); solved with the data as "
-                  "given")
+        work.warn(f"{key}: J = {qty(J, 'kg*m^2')} exceeds twice the transverse moment I_G about "
+                  f"the centre of mass, 2 I_G = {qty(2 * I_cg, 'kg*m^2')}, which no rigid body "
+                  "can have (the axial moment is at most the sum of the two transverse ones); "
+                  "solved with the data as given")
 
 
 def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:
@@ -210,8 +213,11 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
             raise InputError("a cone needs its height", key="given.height")
         subst = substitute(formula, m=qty(m, "kg"), r=qty(r, "m"), L=qty(along, "m"),
                            h=qty(along, "m"))
+        what = {"cylinder": "cylinder of length L", "cone": "cone of height h"}.get(shape, shape)
+        if shape == "cylinder" and "length" not in values:
+            what = "cylinder; its length L not given, taken as 0"
         return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
-                         note=f"({shape}, about its centre of mass)")
+                         note=f"({what}, about its centre of mass)")
     return None
 
 

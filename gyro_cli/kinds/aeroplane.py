@@ -50,7 +50,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("aeroplane axes: x forward (toward the nose), y to the left (looking forward), "
               "z up. The engine's axis lies fore and aft. A rotation that looks clockwise to an "
               "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("couple on the rotor C = omega_p x H (Eq. 11.29); the aeroplane feels the reactive "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotor C = omega_p x "
+              "H (Eq. 11.29); the aeroplane feels the reactive "
               "couple -C. About -y it raises the nose; about +y it dips it.")
 
     direction = V.spin_direction(sense) if sense else 1.0

@@ -184,8 +184,10 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section("Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)")
     work.text("x forward, y to the right, z down; origin at the rear wheel's contact point. "
-              "q = (phi, delta): lean to the right, steer to the right (rad). Small motions about "
-              "upright straight running at speed v, no rider torques:")
+              "phi: the lean to the right; delta: the steer to the right (rad); q = (phi, delta). "
+              "Small motions about upright straight running at speed v, no rider torques:")
+    work.text("M: the mass matrix; C1: the velocity matrix (times v); K0, K2: the stiffness "
+              "matrices of gravity (times g) and of speed (times v^2):")
     work.text("M q'' + v C1 q' + (g K0 + v^2 K2) q = 0    (Eq. 5.3)")
     if not gyroscopic:
         work.text("gyroscopic: false -- the wheels' spin angular momentum is removed: S_R = S_F "
@@ -201,7 +203,7 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.step("I_Txz", "I_Bxz + I_Hxz - m_B x_B z_B - m_H x_H z_H + m_F w r_F", value=t.ITxz,
               unit="kg*m^2")
     work.step("I_Tzz", "I_Rxx + I_Bzz + I_Hzz + I_Fxx + m_B x_B^2 + m_H x_H^2 + m_F w^2",
-              value=t.ITzz, unit="kg*m^2", note="wheels: I_zz = I_xx")
+              value=t.ITzz, unit="kg*m^2", note="for the wheels I_Rzz = I_Rxx and I_Fzz = I_Fxx")
 
     work.section("The front assembly A = front frame H + front wheel F (Eqs. A 6-A 15)")
     work.step("m_A", "m_H + m_F", value=t.mA, unit="kg")
@@ -246,7 +248,9 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     coeffs = bike.characteristic(m, g)
     work.section("The characteristic equation: det(M s^2 + v C1 s + g K0 + v^2 K2) = 0")
-    work.text("a4 s^4 + a3 s^3 + a2 s^2 + a1 s + a0 = 0, with (v in m/s, s in 1/s)")
+    work.text("a4 s^4 + a3 s^3 + a2 s^2 + a1 s + a0 = 0: the characteristic polynomial in the "
+              "eigenvalue s; its coefficients a_k, below, are a4, a3, a2, a1, a0 (v in m/s, s in "
+              "1/s)")
     for k in (4, 3, 2, 1, 0):
         work.text(f"a{k} = {_poly_text(coeffs[k])}")
     work.text("Routh-Hurwitz: all four roots have Re(s) < 0 iff every a_k > 0 and "
@@ -282,6 +286,7 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
         state = bike.motion(ev)
         work.section(f"At v = {speed:.12g} m/s: the eigenvalues of the state matrix "
                      "[[0, I], [-M^-1 (g K0 + v^2 K2), -M^-1 v C1]]")
+        work.text("I: the identity matrix; s: an eigenvalue")
         for e in ev:
             work.text(f"s = {num(e.real, 12)}" + (f" {'+' if e.imag > 0 else '-'} "
                       f"{num(abs(e.imag), 12)} i" if e.imag else "") + " 1/s")

@@ -51,7 +51,8 @@ PRESET_TEXT = {
     "dynamical_ellipticity": "0.003273795 (IERS 2010)",
     "obliquity": "84381.406 arcsec = 23.43928 deg (IERS 2010, J2000)",
     "rotation_period": "86164.0905 s (sidereal day)",
-    "planet_mass": "G M_E / G = 3.986004418e14 m^3/s^2 / G",
+    "planet_mass": "3.986004418e14 m^3/s^2 / G (the Earth's G M, IERS 2010; G: the constant "
+                   "of gravitation)",
     "sun_mass_ratio": "332946.0487 (IAU 2009)",
     "sun_orbital_period": "365.256363 d (sidereal year)",
     "sun_eccentricity": "0.0167086 (J2000)",
@@ -87,11 +88,15 @@ def _values(given: Given, work: Work) -> dict[str, float]:
             filled.append(key)
     work.section("preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)")
     for key in filled:
-        work.text(f"{key} = {PRESET_TEXT[key]}")
+        work.text(f"{key}: {_symbols()[key]} = {PRESET_TEXT[key]}")
     overridden = [k for k in given.values if k != "preset"]
     if overridden:
         work.text(f"given in the file instead of the preset: {', '.join(overridden)}")
     return values
+
+
+def _symbols() -> dict[str, str]:
+    return {p.name: p.symbol for p in KIND.params}
 
 
 def _positive(values: dict, key: str, what: str) -> float:
@@ -119,7 +124,7 @@ def _ellipticity(values: dict, work: Work) -> float:
             raise InputError(f"polar_moment_factor C / (M R^2) lies between 0 and 2/3 (a hollow "
                              f"shell; 0.4 for a uniform sphere), got {num(k)}",
                              key="given.polar_moment_factor")
-        H = work.step("H", "J2 / (C / (M R^2)) = (C - A) / C",
+        H = work.step("H", "J2 / (C / (M R^2))",
                       f"{num(J2)} / {num(k)}", J2 / k, "",
                       note="J2 = (C - A) / (M R^2)")
     else:
@@ -177,13 +182,14 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
     if orbit_key.endswith("_period"):
         q = a_value if planet is None else a_value / planet
         if planet is not None:
-            work.step(f"q_{b}", "M_b / M", f"{qty(a_value, 'kg')} / {qty(planet, 'kg')}", q, "")
-        return work.step(f"G M_{b} / a^3", "n^2 q / (1 + q),  n = 2 pi / P",
+            work.step(f"q_{b}", f"M_{b} / M", f"{qty(a_value, 'kg')} / {qty(planet, 'kg')}", q, "")
+        return work.step(f"G M_{b} / a_{b}^3", f"(2 pi / P_{b})^2 q_{b} / (1 + q_{b})",
                          f"(2 pi / {qty(o_value, 's')})^2 ({num(q)}) / (1 + {num(q)})",
                          tidal_from_period(o_value, q), "1/s^2", ref="Kepler III")
     gm = G * a_value if planet is None else G * planet * a_value
     mass_text = qty(a_value, "kg") if planet is None else f"{num(a_value)} ({qty(planet, 'kg')})"
-    return work.step(f"G M_{b} / a^3", "G M_b / a^3", f"G {mass_text} / ({qty(o_value, 'm')})^3",
+    return work.step(f"G M_{b} / a_{b}^3", f"G M_{b} / a_{b}^3" if planet is None else
+                     f"G q_{b} M / a_{b}^3", f"G {mass_text} / ({qty(o_value, 'm')})^3",
                      tidal_from_distance(gm, o_value), "1/s^2",
                      note=f"G = {G:g} m^3/(kg s^2)")
 
@@ -191,6 +197,9 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     values = _values(given, work)
     work.section("The planet")
+    work.text("A, C: the planet's moments of inertia about an equatorial axis and about its "
+              "polar axis; M, R: its mass and equatorial radius; H = (C - A) / C, its dynamical "
+              "ellipticity; omega: its rate of rotation; epsilon: its obliquity")
     H = _ellipticity(values, work)
     omega = _spin(values, work)
     if "obliquity" not in values:
@@ -205,13 +214,16 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(f"H = (C - A) / C = {num(H)}, epsilon = {num(math.degrees(eps))} deg, "
               f"omega = {qty(omega, 'rad/s')}")
     work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
-    work.text("MacCullagh: a body M_b at distance r, direction u, exerts on the planet the "
-              "torque T = (3 G M_b (C - A) / r^3) (u . s) (u x s), s the spin axis.")
-    work.text("Averaged over a Kepler orbit, a^3/r^3 becomes (1 - e^2)^(-3/2), and the "
+    work.text("MacCullagh: a body of mass M_b at distance r, in the direction u, exerts on the "
+              "planet the torque T = (3 G M_b (C - A) / r^3) (u . s) (u x s), where s is the "
+              "spin axis and G the constant of gravitation.")
+    work.text("Averaged over a Kepler orbit (semi-major axis a) of eccentricity e, a^3/r^3 "
+              "becomes (1 - e^2)^(-3/2), and the "
               "direction u is spread evenly round the orbit plane: the mean torque is "
               "T_mean = -(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(epsilon) (n x s), "
               "n the orbit normal.")
-    work.text("Steady precession (the chapter's dH/dt = T with H = C omega s): s turns about -n "
+    work.text("Steady precession (the chapter's dH/dt = T, the angular momentum being C omega s): "
+              "s turns about -n "
               "(westward, retrograde) at Omega_p = |T_mean| / (C omega sin(epsilon)) = "
               "(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon) / omega.")
     work.text("An orbit inclined at i whose node turns round quickly (the Moon's, in 18.6 years) "
@@ -221,7 +233,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
         tidal = _tidal(values, b, work)
         if tidal is None:
-            work.text(f"no {b}_* keys: {BODY_NAMES[b]} is left out")
+            work.text(f"no keys for {BODY_NAMES[b]}: it is left out")
             continue
         e = values.get(f"{b}_eccentricity", 0.0)
         i = values.get(f"{b}_inclination", 0.0)
@@ -231,15 +243,17 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if not -math.pi / 2 < i < math.pi / 2:
             raise InputError(f"inclination must lie within +-90 deg of the reference plane, got "
                              f"{num(math.degrees(i))} deg", key=f"given.{b}_inclination")
-        fe = work.step("(1 - e^2)^(-3/2)", "", f"(1 - {num(e)}^2)^(-3/2)",
+        fe = work.step(f"(1 - e_{b}^2)^(-3/2)", "", f"(1 - {num(e)}^2)^(-3/2)",
                        eccentricity_factor(e), "")
         fi = node_factor(i)
         if i:
-            work.step("1 - (3/2) sin^2(i)", "", f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
+            work.step(f"1 - (3/2) sin^2(i_{b})", "",
+                      f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
                       "", note="node-averaged")
         rate = precession_rate(tidal, e, H, eps, omega, i)
-        tail = " (1 - (3/2) sin^2(i))" if i else ""
-        work.step(f"Omega_{b}", f"(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon){tail} / omega",
+        tail = f" (1 - (3/2) sin^2(i_{b}))" if i else ""
+        work.step(f"Omega_{b}", f"(3/2) (G M_{b} / a_{b}^3) (1 - e_{b}^2)^(-3/2) H cos(epsilon)"
+                  f"{tail} / omega",
                   f"1.5 ({num(tidal)} 1/s^2) ({num(fe)}) ({num(H)}) ({num(math.cos(eps))})"
                   + (f" ({num(fi)})" if i else "") + f" / {qty(omega, 'rad/s')}",
                   rate, "rad/s")
@@ -271,7 +285,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         return
     if abs(total) > 1e-2 * omega:
         work.warn("the precession is not slow against the spin: the gyroscopic approximation "
-                  "H = C omega s (and so this rate) is not accurate")
+                  "(angular momentum C omega s, and so this rate) is not accurate")
     if eps == 0:
         work.warn("obliquity 0: the axis lies along the orbit normal; the torque vanishes and "
                   "the rate is that of a cone of zero width")
@@ -285,7 +299,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("precession_period", "T_p", [period], "time")
     work.answer("years_per_degree", "t_1deg", [1 / abs(total)], "time_per_angle")
     work.check(f"Omega_p / omega = {num(abs(total) / omega)}: the precession is slow against "
-               "the spin, so H = C omega s (the gyroscopic approximation) holds; T_p / t_1deg = "
+               "the spin, so the angular momentum is C omega s (the gyroscopic approximation); "
+               "T_p / t_1deg = "
                f"{num(period / (per_degree * JULIAN_YEAR))} deg")
 
 
@@ -318,8 +333,8 @@ KIND = Kind(
         Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet"),
         Param("J2", "dimensionless", "J2", "the planet's J2 = (C - A) / (M R^2) (with "
               "polar_moment_factor, instead of dynamical_ellipticity)"),
-        Param("polar_moment_factor", "dimensionless", "C/MR^2", "C / (M R^2) of the planet"),
-        Param("obliquity", "angle", "eps", "angle between the spin axis and the normal of the "
+        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet"),
+        Param("obliquity", "angle", "epsilon", "angle between the spin axis and the normal of the "
               "reference orbit plane (the ecliptic)"),
         Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet"),
         Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)"),

@@ -24,8 +24,8 @@ from ..core.work import Work, num, qty
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
 ANGLES = {"zxz": ("phi", "theta", "psi"), "zyx": ("yaw", "pitch", "roll")}
-SYMBOLS = {"phi": "phi", "theta": "theta", "psi": "psi", "yaw": "psi_y", "pitch": "theta_p",
-           "roll": "phi_r"}
+SYMBOLS = {"phi": "phi", "theta": "theta", "psi": "psi", "yaw": "yaw", "pitch": "pitch",
+           "roll": "roll"}
 INERTIA_SLACK = 0.01  # rounded data may break I_max <= I_a + I_b by this much
 MAX_LISTED = 12
 
@@ -66,13 +66,17 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sequence == "zxz":
         work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
                   "K, then by theta about the line of nodes i' = i'', then by psi about the "
-                  "body's k. The body axes in the fixed frame are the columns of "
-                  "R = Rz(phi) Rx(theta) Rz(psi).")
+                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed "
+                  "frame are the "
+                  "columns of R = Rz(phi) Rx(theta) Rz(psi). phidot, thetadot, psidot: the "
+                  "rates of phi, theta, psi.")
     else:
         work.text("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
-                  "the fixed frame by the yaw psi about Z, then by the pitch theta about the new "
-                  "y, then by the roll phi about the body's x. R = Rz(yaw) Ry(pitch) Rx(roll); "
-                  "p, q, r = omega_x, omega_y, omega_z.")
+                  "the fixed frame X, Y, Z by the yaw angle about Z, then by the pitch angle "
+                  "about the new y, then by the roll angle about the body's x. "
+                  "R = Rz(yaw) Ry(pitch) Rx(roll); yawdot, pitchdot, rolldot: the rates of "
+                  "the three angles; p, q, r: the components of omega along the body's x, y, z, "
+                  "also written omega_x, omega_y, omega_z.")
     work.text("omega: the body's angular velocity relative to the fixed frame; the origin is the "
               "fixed point, about which the moments of inertia are taken.")
 
@@ -235,7 +239,8 @@ def _inverse(sequence: str, a2: float, a3: float, omega, raise_singular: bool):
 
 def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3: float,
                  work: Work) -> None:
-    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz")
+    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz, with "
+                 "omega_xyz the body components")
     if sequence == "zxz":
         r1, r2, r3 = rates
         s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)
@@ -345,8 +350,12 @@ def _check_rigid(matrix, key: str) -> None:
 
 
 def _from_particles(particles, work: Work):
-    work.text("particles at (x, y, z) in body axes from the fixed point; the products as the "
-              "chapter defines them, I_xy = sum m x y (the matrix has -I_xy off the diagonal)")
+    work.text("particles of mass m at the coordinates x, y, z in body axes from the fixed "
+              "point; the products of inertia as the chapter defines them (the matrix has "
+              "their negatives off the diagonal):")
+    work.text("I_xy = sum m x y")
+    work.text("I_yz = sum m y z")
+    work.text("I_zx = sum m z x")
     for i, (m, x, y, z) in enumerate(particles[:MAX_LISTED]):
         work.text(f"  [{i}] m = {qty(m, 'kg')} at ({num(x)}, {num(y)}, {num(z)}) m")
     if len(particles) > MAX_LISTED:
@@ -370,7 +379,8 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
             work.step(name, value=value, unit="kg*m^2")
     moments = ek.principal_moments(matrix)
     if ek.is_diagonal(matrix):
-        work.text("the products of inertia are zero: x, y, z are principal axes")
+        work.text("the products of inertia are zero, I_xy = I_yz = I_zx = 0: x, y, z are principal "
+                  "axes")
     else:
         work.text("the products of inertia are not zero: x, y, z are NOT principal axes, and T "
                   "and H below use the whole inertia matrix, not Eq. 11.2's diagonal form")
@@ -424,7 +434,7 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
     if R is not None:
         fixed = ek.matvec(R, H)
         for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
-            work.step(name, value=value, unit="kg m^2/s", note="(R H_xyz)")
+            work.step(name, value=value, unit="kg m^2/s", note="fixed-frame component of R H")
             work.answer(name, name, [value], "angular_momentum")
         work.check(f"|H| in the fixed frame = {qty(ek.norm(fixed), 'kg m^2/s')}")
     if Hmag > 0:
@@ -452,13 +462,13 @@ KIND = Kind(
               "given)"),
         Param("theta_rate", "rate", "thetadot", "zxz: nutation rate"),
         Param("psi_rate", "rate", "psidot", "zxz: spin rate relative to the precessing frame"),
-        Param("yaw", "angle", "psi_y", "zyx: first rotation, about the fixed Z (needed only for "
+        Param("yaw", "angle", "yaw", "zyx: first rotation, about the fixed Z (needed only for "
               "fixed-frame answers)"),
-        Param("pitch", "angle", "theta_p", "zyx: second rotation, about the new y"),
-        Param("roll", "angle", "phi_r", "zyx: third rotation, about the body's x"),
-        Param("yaw_rate", "rate", "psi_ydot", "zyx: yaw rate"),
-        Param("pitch_rate", "rate", "theta_pdot", "zyx: pitch rate"),
-        Param("roll_rate", "rate", "phi_rdot", "zyx: roll rate"),
+        Param("pitch", "angle", "pitch", "zyx: second rotation, about the new y"),
+        Param("roll", "angle", "roll", "zyx: third rotation, about the body's x"),
+        Param("yaw_rate", "rate", "yawdot", "zyx: yaw rate"),
+        Param("pitch_rate", "rate", "pitchdot", "zyx: pitch rate"),
+        Param("roll_rate", "rate", "rolldot", "zyx: roll rate"),
         Param("omega_x", "rate", "omega_x", "inverse: body component of omega along x (p)"),
         Param("omega_y", "rate", "omega_y", "inverse: along y (q)"),
         Param("omega_z", "rate", "omega_z", "inverse: along z (r)"),
@@ -503,9 +513,9 @@ KIND = Kind(
         AnswerSpec("phi_rate", "rate", "phidot", "zxz: precession rate (inverse, or as given)"),
         AnswerSpec("theta_rate", "rate", "thetadot", "zxz: nutation rate"),
         AnswerSpec("psi_rate", "rate", "psidot", "zxz: spin rate"),
-        AnswerSpec("yaw_rate", "rate", "psi_ydot", "zyx: yaw rate"),
-        AnswerSpec("pitch_rate", "rate", "theta_pdot", "zyx: pitch rate"),
-        AnswerSpec("roll_rate", "rate", "phi_rdot", "zyx: roll rate"),
+        AnswerSpec("yaw_rate", "rate", "yawdot", "zyx: yaw rate"),
+        AnswerSpec("pitch_rate", "rate", "pitchdot", "zyx: pitch rate"),
+        AnswerSpec("roll_rate", "rate", "rolldot", "zyx: roll rate"),
     ),
     solve=solve,
     extra={"gravity": False, "example": {

@@ -47,20 +47,22 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     rw, R = given["wheel_radius"], given["turn_radius"]
     IE, G, sense = given["engine_inertia"], given["gear_ratio"], given.word("engine_sense", "same")
     sign = "+" if sense == "same" else "-"
-    wheel_total, wheel_text = _wheels(given)
+    wheel_total, wheel_text, wheel_numbers = _wheels(given)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
               "their spin vector points to the left (+y); each engine's points the same way "
               "(engine_sense: same) or the other way (opposite).")
-    work.text("couple on the rotors C = omega_p x H (Eq. 11.29); the vehicle feels the "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
+              "H (Eq. 11.29); the vehicle feels the "
               "reactive couple -C. Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")
     work.section("Rotating parts")
-    work.step("sum I_w", wheel_text, value=wheel_total, unit="kg*m^2")
-    work.step("sum I_E", "engines I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
+    work.step("sum I_w", wheel_text, wheel_numbers, value=wheel_total, unit="kg*m^2")
+    work.step("sum I_E", "n_E I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
               "kg*m^2")
     I_eq = work.step("I_eq", f"sum I_w {sign} G sum I_E", f"{qty(wheel_total, 'kg*m^2')} {sign} "
                      f"{num(G)} ({qty(engines * IE, 'kg*m^2')})",
@@ -74,7 +76,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _limit(work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, I_eq)
 
 
-def _wheels(given: Given) -> tuple[float, str]:
+def _wheels(given: Given) -> tuple[float, str, str]:
     if ("wheel_inertia" in given) == ("axle_inertia" in given):
         raise InputError("give wheel_inertia (each of the four wheels) or axle_inertia (each of "
                          "the two axles with its pair of wheels and gears), one of them",
@@ -83,11 +85,11 @@ def _wheels(given: Given) -> tuple[float, str]:
         Iw = given["wheel_inertia"]
         if Iw < 0:
             raise InputError("wheel_inertia cannot be negative", key="given.wheel_inertia")
-        return 4 * Iw, f"4 I_w = 4 ({qty(Iw, 'kg*m^2')})"
+        return 4 * Iw, "4 I_w", f"4 ({qty(Iw, 'kg*m^2')})"
     Ia = given["axle_inertia"]
     if Ia < 0:
         raise InputError("axle_inertia cannot be negative", key="given.axle_inertia")
-    return 2 * Ia, f"2 I_axle = 2 ({qty(Ia, 'kg*m^2')})"
+    return 2 * Ia, "2 I_axle", f"2 ({qty(Ia, 'kg*m^2')})"
 
 
 def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, rw: float,
@@ -152,7 +154,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
 def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
-    work.text("m g / 4 = (v^2 / (2 x R)) (I_eq / r_w + m h)")
+    work.text("at the limiting speed v_lim: m g / 4 = (v_lim^2 / (2 x R)) (I_eq / r_w + m h)")
     v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
     if v2 is None:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "

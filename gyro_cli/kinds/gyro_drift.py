@@ -30,16 +30,17 @@ def _h(x: float) -> str:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
     work.section("Conventions")
-    work.text("k: the spin axis; x: the gimbal axis about which the disturbing moment M acts; "
-              "y: the other gimbal axis, at right angles to both. a, b: small rotations of the "
-              "spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
-    work.text("Linearised gimbal equations: I_x a'' + H b' = M,  I_y b'' - H a' = 0. "
+    work.text("k: the spin axis; H: the rotor's angular momentum along it; x: the gimbal axis "
+              "about which the disturbing moment M acts; "
+              "y: the other gimbal axis, at right angles to both. alpha, beta: small rotations of "
+              "the spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
+    work.text("Linearised gimbal equations: I_x alpha'' + H beta' = M,  I_y beta'' - H alpha' = 0. "
               "The moment does not turn the rotor about x: the spin axis drifts about y.")
     H = _momentum(given, work)
     M, rate = _moment_and_rate(given, H, work)
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     work.answer("moment", "M", [M], "moment")
-    work.answer("drift_rate", "M / H", [rate], "rate")
+    work.answer("drift_rate", "Omega_d", [rate], "rate")
     if "duration" in given:
         t = given["duration"]
         if t < 0:
@@ -75,7 +76,7 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
     if ways == ["moment"]:
         M = given["moment"]
         work.section("Drift: steady precession of the spin axis about y (Eq. 11.29)")
-        rate = work.step("drift rate", "M / H", f"{qty(M, 'N m')} / {_h(H)}",
+        rate = work.step("Omega_d", "M / H", f"{qty(M, 'N m')} / {_h(H)}",
                          gd.drift_rate(M, H), "rad/s",
                          note=f"= {num(gd.drift_rate(M, H) / DEG_PER_HOUR)} deg/h")
         return M, rate
@@ -85,15 +86,15 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
             raise InputError(f"drift_period must be positive, got {qty(T, 's')}",
                              key="given.drift_period")
         work.section("Drift rate from the period of one full turn")
-        rate = work.step("drift rate", "2 pi / T_d", f"2 pi / {qty(T, 's')}", 2 * math.pi / T,
+        rate = work.step("Omega_d", "2 pi / T_d", f"2 pi / {qty(T, 's')}", 2 * math.pi / T,
                          "rad/s", note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
     else:
         rate = given["drift_rate"]
         if rate < 0:
             raise InputError("a drift budget is a magnitude: give it positive",
                              key="given.drift_rate")
-    work.section("Largest disturbing moment for the drift budget: M = H (drift rate)")
-    M = work.step("M", "H (drift rate)", f"{_h(abs(H))} ({qty(rate, 'rad/s')})",
+    work.section("Largest disturbing moment for the drift budget: M = H Omega_d")
+    M = work.step("M", "H Omega_d", f"{_h(abs(H))} ({qty(rate, 'rad/s')})",
                   gd.moment_for_drift(rate, abs(H)), "N*m")
     work.text("any larger moment about x makes the spin axis drift faster than the budget")
     return M, math.copysign(rate, H) if rate else 0.0
@@ -146,18 +147,18 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
                    f"{qty(Iy, 'kg m^2')})", gd.nutation_frequency(abs(H), Ix, Iy), "rad/s",
                    note=f"= {num(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi))} Hz")
     period = work.step("T_n", "2 pi / w_n", f"2 pi / {qty(wn, 'rad/s')}", 2 * math.pi / wn, "s")
-    work.text("solution from rest: a(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
-              "b(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
+    work.text("solution from rest: alpha(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
+              "beta(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
     ax, ay = gd.nutation_amplitudes(M, H, Ix, Iy)
     work.step("A_x", "M I_y / H^2", f"{qty(M, 'N m')} ({qty(Iy, 'kg m^2')}) / ({_h(H)})^2",
-              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias)")
+              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias I)")
     work.step("A_y", "M sqrt(I_x I_y) / H^2", value=ay, unit="rad",
               note="about y, the drift axis: the ripple on the drift")
-    work.step("a_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
+    work.step("alpha_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
               note="largest deflection about x, reached every half period")
     quarter = period / 4
     residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
-    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x a'' + H b' = "
+    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x alpha'' + H beta' = "
                f"{qty(residual, 'N m')}, M = {qty(M, 'N m')}")
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
         work.warn(f"the nutation reaches {num(math.degrees(max(abs(2 * ax), abs(ay))))} deg: the "
@@ -166,7 +167,7 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
     work.answer("nutation_period", "T_n", [period], "time")
     work.answer("nutation_amplitude", "A_x", [abs(ax)], "angle")
     work.answer("nutation_amplitude_drift", "A_y", [abs(ay)], "angle")
-    work.answer("max_deflection", "a_max", [abs(2 * ax)], "angle")
+    work.answer("max_deflection", "alpha_max", [abs(2 * ax)], "angle")
 
 
 def _a_dd(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
@@ -190,7 +191,7 @@ KIND = Kind(
               "(instead of J and spin)"),
         Param("moment", "moment", "M", "disturbing moment about a gimbal axis at right angles "
               "to the spin (friction, drag, imbalance)"),
-        Param("drift_rate", "rate", "drift", "drift budget (instead of moment), e.g. '0.1 deg/h'"),
+        Param("drift_rate", "rate", "Omega_d", "drift budget (instead of moment), e.g. '0.1 deg/h'"),
         Param("drift_period", "time", "T_d", "time for one full turn of drift (instead of "
               "drift_rate)"),
         Param("duration", "time", "t", "time the moment acts, for drift_angle"),
@@ -202,7 +203,7 @@ KIND = Kind(
     ),
     answers=(
         AnswerSpec("angular_momentum", "angular_momentum", "H", "spin angular momentum J psidot"),
-        AnswerSpec("drift_rate", "rate", "M / H", "drift (precession) rate of the spin axis"),
+        AnswerSpec("drift_rate", "rate", "Omega_d", "drift (precession) rate of the spin axis"),
         AnswerSpec("drift_angle", "angle", "(M / H) t", "drift after duration (the nutation "
                    "ripple of at most nutation_amplitude_drift aside)"),
         AnswerSpec("moment", "moment", "M", "the moment (given, or the largest the drift "
@@ -213,7 +214,7 @@ KIND = Kind(
                    "about the moment's axis (M I / H^2 for equal inertias)"),
         AnswerSpec("nutation_amplitude_drift", "angle", "A_y", "M sqrt(I_x I_y) / H^2 about "
                    "the drift axis"),
-        AnswerSpec("max_deflection", "angle", "a_max", "2 M I_y / H^2, the largest deflection "
+        AnswerSpec("max_deflection", "angle", "alpha_max", "2 M I_y / H^2, the largest deflection "
                    "about the moment's axis"),
     ),
     solve=solve,

@@ -58,15 +58,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("E, N, U: east, north, up at the site. The rotor's spin vector (right-hand rule) "
               "points along the horizontal axis at azimuth alpha, east of north positive; "
               "moments about the vertical are positive counter-clockwise seen from above.")
-    work.text("Earth rate: Omega_E = Omega (cos(lambda) N + sin(lambda) U); only the horizontal part "
-              "Omega cos(lambda) N can turn a horizontal spin vector.")
+    work.text("Earth rate: Omega_E = Omega (cos(lambda) N + sin(lambda) U), where Omega is the "
+              "Earth's rotation rate; only the horizontal part Omega cos(lambda) N can turn a "
+              "horizontal spin vector.")
     if H < 0:
         work.text("spin < 0: the spin vector points along the other end of the axis; that end "
                   "seeks north")
     work.section("Moment about the vertical (angular momentum about U on the rotating Earth)")
+    work.text("M_U: the moment about the vertical on the rotor and its gimbal; I_v: their "
+              "moment of inertia about the vertical; alphadot: the rate of the azimuth alpha")
     work.text("d/dt (H . U) = M_U + H . (Omega_E x U),  Omega_E x U = Omega cos(lambda) E,  "
               "H . U = I_v (Omega sin(lambda) - alphadot)")
-    work.text("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  (terms of order I Omega^2 "
+    work.text("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  (terms of order I_v Omega^2 "
               "dropped): a pendulum about north")
     D = work.step("D", "H Omega_E cos(lambda)", f"{qty(H_abs, 'kg m^2/s')} ({qty(Omega, 'rad/s')}) "
                   f"cos({num(math.degrees(lat))} deg)",
@@ -81,7 +84,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
     work.answer("settles", "alpha_eq", ["north"], None)
     work.answer("directive_moment", "D", [D], "stiffness")
-    work.text("alpha = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
+    work.text("alpha_eq = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
               "unstable): the axis swings about north and, with any damping about the "
               "vertical, settles there.")
 
@@ -103,7 +106,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         elif alpha:
             Ts = work.step("T(alpha)", "T (2 / pi) K(sin(alpha / 2))", value=swing_period(
                 I_v, H_abs, Omega, lat, alpha), unit="s", note="released at rest at alpha "
-                "(the pendulum's exact period)")
+                "(the pendulum's exact period; K is the complete elliptic integral of the first "
+                "kind)")
             work.answer("swing_period", "T(alpha)", [Ts], "time")
         work.check(f"I_v (2 pi / T)^2 = {qty(I_v * (2 * math.pi / T) ** 2, 'N m/rad')} = "
                    f"H Omega_E cos(lambda) = {qty(D, 'N m/rad')}")
@@ -141,7 +145,7 @@ KIND = Kind(
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
         Param("latitude", "angle", "lambda", "latitude of the site (north or south)"),
-        Param("spin", "rate", "spin", "spin of the rotor about its axis (with J, k_axial or a "
+        Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
               "(instead of spin)"),

@@ -149,6 +149,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     precession = _precession(given, J, I, spin, theta, work)
     work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
+    work.text("H: the angular momentum of the rotor about its centre of mass; Omega: the "
+              "precession rate about K")
     axial = work.step("omega_z", "psidot + Omega cos(theta)",
                       f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
                       spin + precession * cos, "rad/s", ref="Eq. 11.8")
@@ -188,7 +190,8 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
     """
     deg = round(math.degrees(theta))
     work.section("Spin axis along the precession axis")
-    work.text(f"theta = {deg} deg: the spin axis lies along the precession axis, so the "
+    work.text(f"k: the spin axis; K: the precession axis, upward; theta = {deg} deg: the spin "
+              "axis lies along the precession axis, so the "
               "precession only adds to (or takes from) the spin, omega_z = psidot + Omega "
               "cos(theta); H = J omega_z k stays along K and does not turn: dH/dt = Omega K x H "
               "= 0, no gyroscopic moment (sin(theta) = 0 in Eq. 11.29)")
@@ -205,7 +208,7 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
                          key=f"find.{sorted(wanted)[0]}")
     precession = _precession(given, 0.0, 0.0, given.get("spin", 0.0) or 0.0, theta, work)
     work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))", f"sin({deg} deg) = 0",
-              0.0, "N*m")
+              0.0, "N*m", note="whatever the transverse inertia I")
     work.answer("moment", "M", [0.0], "moment")
     work.answer("precession", "Omega", [precession], "rate")
 
@@ -242,6 +245,8 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                          f"{qty(R, 'm')}", sign * given["speed"] / R, "rad/s")
     M = given["moment"]
     work.section("Precession that the applied moment sustains (moment along n given)")
+    work.text("Omega: the precession rate sought; I: the transverse moment of inertia about the "
+              "centre of mass")
     work.text("(J - I) cos(theta) sin(theta) Omega^2 + J psidot sin(theta) Omega - M = 0")
     roots = precession_for_moment(J, I, spin, theta, M)
     if not roots:
@@ -307,9 +312,11 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
               "'up' components lie in the plane of K and k, positive toward +K (upward); 'side' "
               "components lie along n, positive toward the precession axis. Labelled A, B in "
               "that order.")
-    work.step("a", "AG", value=a, unit="m", note="(default: midway)" if "cg_position" not in
-              given else "")
+    work.step("a", value=a, unit="m", note="from bearing A to the centre of mass G along k"
+              + (" (default: midway)" if "cg_position" not in given else ""))
     work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
+    work.text("a_up, a_k: the acceleration of G upward and along k; G moves on a circle of "
+              "radius R about the precession axis, with the centripetal acceleration Omega^2 R")
     work.text(f"up:   F_A + F_B = {ms} (g sin(theta) + a_up);   a F_A - b F_B = M   "
               "(moments about G along n)")
     work.step("F_A,weight", f"{ms} g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
@@ -336,7 +343,8 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
                   note="centripetal force of the centre of mass")
         work.step("F_B,side", f"{ms} Omega^2 R a / L", value=forces.side[1], unit="N")
     else:
-        work.text("no side forces (the centre of mass is not off the axis across the spin axis)")
+        work.text("F_A,side = F_B,side = 0: no side forces (the centre of mass is not off the axis "
+                  "across the spin axis)")
     work.step("T", f"{ms} (g cos(theta) + a_k)", value=forces.thrust, unit="N",
               note="axial, along k, taken by the thrust bearing")
     if min(forces.up) < 0:

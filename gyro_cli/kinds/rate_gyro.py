@@ -74,7 +74,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at "
               "theta = 0; positive senses chosen so that a positive input rate deflects the "
               "gimbal positively. All results are for small gimbal angles.")
-    work.section("Gimbal equation (Eq. 11.29: Q_theta = J psidot phidot = H Omega)")
+    work.section("Gimbal equation (Eq. 11.29: Q_theta = H Omega about the output axis)")
+    work.text("Omega: the input rate, about the input axis; theta: the gimbal's deflection "
+              "about the output axis; I_g: the gimbal's moment of inertia about that axis; "
+              "k: the spring's stiffness; c: the damping coefficient")
     work.text("I_g thetaddot + c thetadot + k theta = H Omega   (small theta; exactly H Omega "
               "cos(theta) on the right)")
     label = {"spring": "spring-restrained rate gyro: steady theta = H Omega / k",
@@ -222,7 +225,7 @@ KIND = Kind(
             "rate-integrating gyro with a damper, or the bearing moment (Eq. 11.29)",
     chapter="Eqs. 11.27-11.29, the gyroscope as a detector of motion",
     params=(
-        Param("spin", "rate", "spin", "spin of the rotor (with J, k_axial or a shape)"),
+        Param("spin", "rate", "psidot", "spin of the rotor (with J, k_axial or a shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
               "(instead of spin and J)"),
         Param("stiffness", "stiffness", "k", "torsion spring on the gimbal (output) axis"),

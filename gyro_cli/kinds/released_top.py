@@ -87,16 +87,19 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 def _constants(top, start, nut, omega_z: float, work: Work) -> None:
     c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
     work.section("Constants of the motion at t = 0 (Eqs. 11.8, 11.14, 11.17, 11.18)")
-    work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the "
-              "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative")
-    work.step("omega_z", "psidot + phidot cos(theta0)", f"{qty(start.spin, 'rad/s')} + "
+    work.text("Euler angles z-x-z; phi: the azimuth of the axis about the vertical; theta "
+              "from the upward vertical to the axis through the "
+              "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
+              "precessing frame, which turns about the vertical at the precession rate phidot; "
+              "thetadot: the rate of theta; the suffix 0 marks a value at t = 0")
+    work.step("omega_z", "psidot + phidot0 cos(theta0)", f"{qty(start.spin, 'rad/s')} + "
               f"{qty(start.precession0, 'rad/s')} ({num(c0)})", omega_z, "rad/s", ref="Eq. 11.8")
     work.step("P2", "J omega_z", f"{qty(top.J, 'kg*m^2')} ({qty(omega_z, 'rad/s')})", nut.P2,
               "kg m^2/s", ref="Eq. 11.14")
-    work.step("P1", "I phidot sin^2(theta0) + P2 cos(theta0)", f"{qty(top.I, 'kg*m^2')} "
+    work.step("P1", "I phidot0 sin^2(theta0) + P2 cos(theta0)", f"{qty(top.I, 'kg*m^2')} "
               f"({qty(start.precession0, 'rad/s')}) ({num(s0)})^2 + "
               f"({qty(nut.P2, 'kg m^2/s')}) ({num(c0)})", nut.P1, "kg m^2/s", ref="Eq. 11.14")
-    work.step("h", "[I (thetadot^2 + phidot^2 sin^2(theta0)) + J omega_z^2] / 2 + m g l "
+    work.step("h", "[I (thetadot0^2 + phidot0^2 sin^2(theta0)) + J omega_z^2] / 2 + m g l "
               "cos(theta0)", f"[{qty(top.I, 'kg*m^2')} (({qty(start.theta_rate0, 'rad/s')})^2 "
               f"+ ({qty(start.precession0 * s0, 'rad/s')})^2) + {qty(top.J, 'kg*m^2')} "
               f"({qty(omega_z, 'rad/s')})^2] / 2 + ({qty(top.mgl, 'N*m')}) ({num(c0)})",
@@ -121,8 +124,9 @@ def _roots(top, start, nut, work: Work) -> None:
     work.text("       = a u^3 - (alpha + gamma^2) u^2 + (2 beta gamma - a) u + (alpha - beta^2)")
     work.text(f"       = ({num(a)}) u^3 - ({num(al + g * g)}) u^2 + ({num(2 * b * g - a)}) u"
               f" {'-' if al - b * b < 0 else '+'} {num(abs(al - b * b))}    [1/s^2]")
-    work.text("f(+-1) = -(beta -+ gamma)^2 <= 0 and f(u0) = sin^2(theta0) thetadot0^2 >= 0: "
-              "u1 <= u0 <= u2 in [-1, 1], u3 >= 1")
+    work.text("f(+-1) = -(beta -+ gamma)^2 <= 0 and f(u0) = sin^2(theta0) thetadot0^2 >= 0, "
+              "where u0 = cos(theta0): so the roots u1, u2, u3 of f lie u1 <= u0 <= u2 in "
+              "[-1, 1], u3 >= 1")
     for i, u in enumerate(nut.u_roots, 1):
         work.step(f"u{i}", value=u)
     if nut.motion == "sleeping":
@@ -133,7 +137,8 @@ def _roots(top, start, nut, work: Work) -> None:
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
     residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
-    work.check(f"f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest coefficient) = "
+    work.check(f"at each root u_i, f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest "
+               f"coefficient) = "
                f"{residual:.1e}")
 
 
@@ -151,7 +156,7 @@ def _released(top, start, nut, omega_z: float, work: Work) -> None:
               f"{num(g * g / (2 * a))} - sqrt({num(g ** 4 / (4 * a * a))} - {num(g * g / a)} "
               f"({num(u2)}) + 1)", u1, ref="Eq. 11.25")
     work.step("theta_1", "acos(u1)", value=math.acos(max(-1.0, min(1.0, u1))) / DEG, unit="deg",
-              note="the axis falls from theta0 = theta_2 to theta_1 and back")
+              note="the axis falls from theta_2 = theta0 to theta_1 and back")
     work.check(f"Eq. 11.25 u1 = {num(u1, 10)} against the root of Eq. 11.19 u1 = "
                f"{num(nut.u_roots[0], 10)}")
 
@@ -164,8 +169,9 @@ def _period(nut, work: Work) -> None:
     m = (d2 - d1) / (d3 - d1)
     K = complete_K(d1, d2, d3)
     work.section("Nutation period: f(u) = a (u - u1)(u - u2)(u - u3), u = u1 + (u2 - u1) sin^2 s")
-    work.text("T = 2 int_u1^u2 du / sqrt(f(u)) = 4 K(m) / sqrt(a (u3 - u1))  (complete "
-              "elliptic integral of the first kind)")
+    work.text("T = 2 int_u1^u2 du / sqrt(f(u)) = 4 K(m) / sqrt(a (u3 - u1)), where K is the "
+              "complete elliptic integral of the first kind and m, below, its parameter; the "
+              "substitution is u = u1 + (u2 - u1) sin^2 s for s from 0 to pi/2")
     work.step("m", "(u2 - u1) / (u3 - u1)", f"({num(u2)} - {num(u1)}) / ({num(u3)} - {num(u1)})",
               m)
     work.step("K(m)", value=K)
@@ -190,17 +196,18 @@ def _precession(nut, work: Work) -> None:
         m = (d2 - d1) / (d3 - d1)
         n1 = (u2 - u1) / (1 - u1) if u1 < 1 else math.inf
         n2 = (u2 - u1) / (1 + u1) if u1 > -1 else math.inf
-        work.text("phidot = 1/2 [(beta - gamma)/(1 - u) + (beta + gamma)/(1 + u)]; with "
-                  "1 - u = (1 - u1)(1 - n1 sin^2 s), 1 + u = (1 + u1)(1 + n2 sin^2 s):")
-        work.text("mean phidot = [(beta - gamma) Pi(n1|m) / (1 - u1) + (beta + gamma) Pi(-n2|m) "
-                  "/ (1 + u1)] / (2 K(m))  (complete elliptic integrals of the third kind, "
-                  "Pi(n|m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n))")
         def shown(n: float, pole: str) -> str:
             # On a pole (u1 = +-1) that term's coefficient beta -+ gamma is zero: no term.
             return num(n) if math.isfinite(n) else f"unbounded (u1 = {pole}: the term drops)"
 
-        work.text(f"    n1 = (u2 - u1)/(1 - u1) = {shown(n1, '1')}, n2 = (u2 - u1)/(1 + u1) = "
+        work.text(f"n1 = (u2 - u1)/(1 - u1) = {shown(n1, '1')}, n2 = (u2 - u1)/(1 + u1) = "
                   f"{shown(n2, '-1')}, m = {num(m)}")
+        work.text("phidot = 1/2 [(beta - gamma)/(1 - u) + (beta + gamma)/(1 + u)]; with "
+                  "1 - u = (1 - u1)(1 - n1 sin^2 s), 1 + u = (1 + u1)(1 + n2 sin^2 s):")
+        work.text("mean phidot = [(beta - gamma) Pi(n1|m) / (1 - u1) + (beta + gamma) Pi(-n2|m) "
+                  "/ (1 + u1)] / (2 K(m)), where Pi is the complete elliptic integral of the "
+                  "third kind, Pi(n|m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n), with "
+                  "Carlson's symmetric integrals R_F and R_J")
     work.step("phidot_mean", value=nut.mean_precession, unit="rad/s",
               note=f"({num(nut.mean_precession / RPM)} rpm; phi advance over one period / T)")
     reason = {
@@ -251,7 +258,8 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
     work.section("Sleeping top: the axis on the vertical (theta0 = "
                  f"{'0' if upright else '180'} deg, thetadot0 = 0)")
     work.text("u = " + ("1" if upright else "-1") + " is a double root of f(u); phi is undefined "
-              "on the vertical (phidot and psidot only add up to omega_z)")
+              "on the vertical (phidot and psidot only add up to omega_z); theta_max = "
+              "theta_min = theta0: the axis stays there")
     lhs = (top.J * omega_z) ** 2
     if upright:
         rhs = 4 * top.I * top.mgl
@@ -264,7 +272,7 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
                       "stable; u3 = gamma^2/a - 1 > 1")
         else:
             u1 = nut.u_roots[0]
-            work.text("J^2 omega_z^2 <= 4 I m g l: NOT stable; the least disturbance lets the "
+            work.text("J^2 omega_z^2 <= 4 I m g l: not stable; the least disturbance lets the "
                       f"axis fall to u1 = gamma^2/a - 1 = {num(u1)}, theta = "
                       f"{_deg(math.acos(max(-1, u1)))}")
             least = 2 * math.sqrt(top.I * top.mgl) / top.J

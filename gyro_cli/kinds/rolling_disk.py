@@ -169,9 +169,12 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
               "disk turns clockwise when Omega is counter-clockwise from above")
     work.section("Moments about the pin O: dH_O/dt = Omega K x (J psidot k + I_O Omega K) "
                  "= J psidot Omega n (Eq. 11.29)")
+    work.text("H_O = J psidot k + I_O Omega K: the angular momentum about the pin O, where I_O "
+              "is the disk's moment of inertia about the vertical through O")
     dH = work.step("dH_O/dt", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
                    f"({qty(Omega, 'rad/s')})", J * spin * Omega, "N*m", note="along n")
-    work.text("about n: gravity m g R (+), normal force -N R; the pin force passes through O "
+    work.text("about n: gravity m g R (+), the plane's normal force N gives -N R; the pin force "
+              "passes through O "
               "and the plane is taken to give no radial friction (the pin holds the disk on "
               "its circle)")
     work.text("m g R - N R = J psidot Omega = -J Omega^2 R / r")
@@ -210,8 +213,10 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.section("Conventions (disk rolling by itself)")
     work.text("beta: tilt of the disk's plane from the vertical, leaning toward the centre of "
               "the circle; rho: radius of the circle of the centre G; R = rho + r sin(beta): "
-              "radius of the circle traced by the contact point (path_radius); v = Omega rho: "
-              "speed of G. k: the disk's axis, pointing outward and up.")
+              "radius of the circle traced by the contact point (path_radius); Omega: the rate at "
+              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the "
+              "disk's axis, pointing outward and up; "
+              "K: the upward vertical; H_G: the disk's angular momentum about G.")
     work.section("Steady rolling: rolling gives omega_z = -v / r; moments about G, "
                  "dH_G/dt = Omega K x H_G, with N = m g and friction m Omega^2 rho inward")
     work.text("m g r sin(beta) = Omega^2 cos(beta) [rho (m r + J / r) + I_G sin(beta)]")
@@ -285,14 +290,15 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
     work.text("I_G (I_G + m r^2) k = J (J + m r^2) omega_z^2 - I_G (3 J + m r^2) Omega omega_z "
               "sin(beta) + I_G^2 Omega^2 (1 + 2 sin^2(beta)) + I_G m r^2 Omega^2 cos^2(beta) - "
               "I_G m g r cos(beta); k > 0 stable (the tilt wobbles at sqrt(k)), k < 0 unstable "
-              "(it grows as exp(sqrt(-k) t))")
+              "(it grows as exp(sigma t), with the growth rate sigma = sqrt(-k); sigma = 0 when "
+              "stable)")
     words, rates = [], []
     for s in states:
         if not all(map(math.isfinite, (s.centre_radius, s.precession, s.spin, s.axial_rate))):
             raise OverflowError("the steady state itself overflows")
         verdict = disk_rolling(m, g, r, I, J, s.tilt, s.precession, s.axial_rate)
         detail = (f"wobbles at sqrt(k) = {qty(verdict.frequency, 'rad/s')}" if verdict.frequency
-                  else f"grows at sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
+                  else f"grows at sigma = sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
                   if verdict.growth_rate else "neutral to first order")
         work.step("k", value=verdict.k, unit="1/s^2",
                   note=f"beta = {num(math.degrees(s.tilt))} deg: {verdict.word}, {detail}")
@@ -310,7 +316,7 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
                         note="upright rolling in a straight line (beta = 0, Omega = 0) is "
                              "stable above this speed (k > 0)")
     work.answer("stability", "stability", words, None)
-    work.answer("growth_rate", "s", rates, "rate")
+    work.answer("growth_rate", "sigma", rates, "rate")
     work.answer("upright_speed", "v_upright", [upright], "speed")
 
 
@@ -340,7 +346,7 @@ KIND = Kind(
         AnswerSpec("precession", "rate", "Omega", "free: rate about the vertical, v / rho"),
         AnswerSpec("stability", None, "stability", "free: stable or unstable (tilt perturbed, "
                    "linearised rolling equations)"),
-        AnswerSpec("growth_rate", "rate", "s", "free: growth rate of the unstable mode, 1/s (0 "
+        AnswerSpec("growth_rate", "rate", "sigma", "free: growth rate of the unstable mode, 1/s (0 "
                    "when stable)"),
         AnswerSpec("upright_speed", "speed", "v_upright", "free: least speed at which upright "
                    "rolling in a straight line is stable"),

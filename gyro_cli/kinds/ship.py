@@ -45,7 +45,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("ship axes: x forward (toward the bow), y to port (left, looking forward), z up. "
               "The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
               "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotor C = omega_p x "
+              "H (Eq. 11.29); the ship feels the reactive "
               "couple -C. About -y it raises the bow; about +z it turns the ship to port.")
 
     if sense is None:
@@ -164,9 +166,10 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
                              "through 90 deg", key="given.amplitude")
         p = V.pitching(phi, T)
-        work.section("Pitching: simple harmonic, theta = phi sin(omega_1 t)")
+        work.section("Pitching: simple harmonic motion")
         work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
         work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
+        work.text("theta = phi sin(omega_1 t): the pitch angle at the time t")
         work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
                   "position (cos = 1)")
         rate = work.step("omega_p,max", "phi omega_1", f"{num(phi)} ({qty(p.frequency, 'rad/s')})",
@@ -195,7 +198,7 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
     work.section("Rolling: precession about the fore-and-aft axis")
     if rate:
-        work.step("omega_p", value=rate, unit="rad/s", note="rolling rate")
+        work.step("omega_p", "omega_r", value=rate, unit="rad/s", note="rolling rate")
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)

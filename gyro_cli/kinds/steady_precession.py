@@ -104,10 +104,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "I_cg or k_cg (with cg_distance) or a shape (only at theta = 90 deg "
                          "does it drop out)", key="given.I_pivot")
     work.section("Conventions (errata)")
+    gravity = ", V = m g l cos(theta) (Eq. 11.11)" if "moment" not in given and body.l else ""
     work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the centre "
-              "of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
-              "precessing frame, omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about "
-              "the fixed point")
+              f"of mass{gravity}; spin psidot is relative to the precessing frame, which turns "
+              "about the vertical at the precession rate phidot; H: the angular momentum about "
+              "the fixed point; omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about the "
+              "fixed point")
     if body.I_pivot is None and cos == 0:
         work.text("theta = 90 deg: cos(theta) = 0, so the transverse inertia I drops out of "
                   "Eq. 11.13 and is not needed")
@@ -157,8 +159,9 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
                       " deg)", M / math.sin(theta), "N*m")
         return D, "D"
     if body.l == 0:
-        work.text("l = 0 and no applied moment: a torque-free body (D = 0)")
-        return 0.0, "m g l"
+        work.text("l = 0 and no applied moment: a torque-free body, D = 0, where D is the "
+                  "moment per unit sin(theta)")
+        return 0.0, "D"
     work.step("M", "m g l sin(theta)", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
               f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
               body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
@@ -209,10 +212,10 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         raise InputError(
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
             f"steady precession at theta = {num(math.degrees(theta))} deg: the least is "
-            f"{symbol}_min = {formula} = {qty(least, 'rad/s')} ({num(least / RPM)} rpm), "
+            f"{_least(symbol)} = {formula} = {qty(least, 'rad/s')} ({num(least / RPM)} rpm), "
             "Eq. 11.21", key=f"given.{rate}")
     if least > 0:
-        work.text(f"real roots exist because {symbol} >= {symbol}_min = {formula} = "
+        work.text(f"real roots exist because {symbol} >= {_least(symbol)} = {formula} = "
                   f"{qty(least, 'rad/s')}    (Eq. 11.21)")
     if len(roots) == 1:
         work.text("one root: the phidot^2 term vanishes" + (" (theta = 90 deg)"
@@ -230,6 +233,11 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     work.answer("precession", "phidot", roots, "rate", labels)
     spins = [spin] * len(roots) if spin is not None else \
         [given["axial_rate"] - p * cos for p in roots]
+    if spin is None:  # the spin at each root, from the given axial rate (Eq. 11.8)
+        for p, s, label in zip(roots, spins, labels or [""] * len(roots)):
+            work.step(f"psidot ({label})" if label else "psidot", "omega_z - phidot cos(theta)",
+                      f"{qty(given['axial_rate'], 'rad/s')} - {qty(p, 'rad/s')} ({num(cos)})",
+                      s, "rad/s", ref="Eq. 11.8")
     axials = [s + p * cos for s, p in zip(spins, roots)]
     work.answer("spin", "psidot", spins, "rate", labels)
     work.answer("axial_rate", "omega_z", axials, "rate", labels)
@@ -322,6 +330,11 @@ def _check(I: float, J: float, theta: float, spins: list[float], precessions: li
                    f"{qty(D * math.sin(theta), 'N m')}")
 
 
+def _least(symbol: str) -> str:
+    """The least value's symbol: psidot_min, omega_z,min (one subscript)."""
+    return f"{symbol},min" if "_" in symbol else f"{symbol}_min"
+
+
 def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
                work: Work) -> None:
     """Each root's stability in theta (physics/stability.py: theta'' + k theta = 0)."""
@@ -337,7 +350,9 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
     work.text("k = U_eff''(theta) / I = ((J omega_z - 2 I phidot cos(theta)) / I)^2 + "
               "phidot^2 sin^2(theta) >= 0 (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady "
               "precession of a heavy top about a fixed point is a minimum of U_eff, stable; a "
-              "change of p_phi or p_psi only moves it to a neighbouring steady precession")
+              "change of p_phi or p_psi only moves it to a neighbouring steady precession; an "
+              "unstable root (k < 0) would grow as exp(sigma t) with the growth rate "
+              "sigma = sqrt(-k), and sigma = 0 for a stable one")
     words, rates = [], []
     for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
                                     answer.labels or [""] * len(answer.si_values)):
@@ -352,7 +367,7 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
-    work.answer("growth_rate", "s", rates, "rate", answer.labels)
+    work.answer("growth_rate", "sigma", rates, "rate", answer.labels)
 def _approximation(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
                    work: Work) -> float:
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
@@ -383,7 +398,7 @@ def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float,
     """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
     value = _approximation(given, rate, J, theta, D, driver, work)
     work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
-              "`precession` is the gyroscopic approximation m g l / (J omega), not an exact "
+              "`precession` is the gyroscopic approximation phidot_approx, not an exact "
               "root of Eq. 11.13; the exact roots need I")
     cos = cos_theta(theta)
     spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
@@ -450,7 +465,8 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        work.text("Newton's second law for the centre of mass, F + m g = m a_G: the support "
+        work.text("Newton's second law for the centre of mass, F + m g = m a_G, where F is the "
+                  "force of the support: it "
                   "carries the weight and supplies the centripetal force")
         values, names = [], []
         for i, (p, tag) in enumerate(zip(rates, tags)):
@@ -475,6 +491,8 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                 axial = spin + p * cos_theta(theta)
                 rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
                 work.check(f"phidot = {qty(p, 'rad/s')}: moment of the pivot force about G, "
+                           f"with I_G = I - m l^2 = {qty(I_G, 'kg*m^2')} the transverse moment "
+                           "about G and H_G the angular momentum about G, "
                            f"l (F_vertical sin(theta) + F_horizontal cos(theta)) = "
                            f"{qty(l * (up * math.sin(theta) + toward * cos_theta(theta)), 'N m')}"
                            f"; dH_G/dt = phidot sin(theta) (J omega_z - I_G phidot cos(theta)) = "
@@ -519,7 +537,7 @@ KIND = Kind(
         AnswerSpec("min_spin", "rate", "psidot_min", "least spin for steady precession at theta"),
         AnswerSpec("stability", None, "stability", "stable or unstable, for each root (theta "
                    "perturbed, gravity alone)"),
-        AnswerSpec("growth_rate", "rate", "s", "growth rate of the unstable mode, 1/s (0 when "
+        AnswerSpec("growth_rate", "rate", "sigma", "growth rate of the unstable mode, 1/s (0 when "
                    "stable)"),
         AnswerSpec("precession_slow", "rate", "phidot_slow", "the slow root alone (the one "
                    "books quote)"),

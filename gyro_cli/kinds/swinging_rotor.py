@@ -120,7 +120,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     I_O = I_G + m * L * L
 
     work.section("Conventions")
-    work.text("i: along the shaft from A to B; the arm swings with angular velocity +thetadot i "
+    work.text("i: along the shaft from A to B; the arm swings at the rate thetadot, its angular "
+              "velocity +thetadot i "
               "(counter-clockwise seen from B); k: along the arm from the shaft to the rotor; "
               "spin p positive about k (counter-clockwise seen from outside the rotor's face). "
               "n: perpendicular to the arm and the shaft on the upper side (against the swing).")
@@ -139,10 +140,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               f"({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(s)}) / {qty(I_O / m, 'm^2')}",
               f.thetaddot, "rad/s^2", ref="moments about AB")
     work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
+    work.text("H_O = I_O thetadot i + J p k: the angular momentum about O, the centre of the "
+              "shaft; k turns about i at thetadot")
     work.step("J p thetadot / d", f"m ({kz2}) p thetadot / d",
               f"{qty(J, 'kg*m^2')} ({qty(p, 'rad/s')}) ({qty(f.thetadot, 'rad/s')}) / "
               f"{qty(d, 'm')}", f.couple, "N", note="+ at B, - at A, along the arm")
     work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
+    work.text("a_G: the acceleration of the rotor's centre G, L thetaddot across the arm and "
+              "L thetadot^2 toward the shaft")
     root = f"sqrt(2 g L (cos theta0 - cos theta) / ({kg2} + L^2))"
     arm_common = f"m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / ({kg2} + L^2)]"
     normal_common = f"m g sin(theta) ({kg2}) / ({kg2} + L^2)"
@@ -165,7 +170,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   "reversing the spin swaps the two")
     work.answer("bearing_forces", "|F|", list(f.magnitudes), "force", ["A", "B"])
     work.answer("bearing_forces_arm", "F_arm", list(f.arm), "force", ["A", "B"])
-    work.answer("bearing_forces_normal", "F_n", list(f.normal), "force", ["A", "B"])
+    work.answer("bearing_forces_normal", "F_normal", list(f.normal), "force", ["A", "B"])
     work.answer("angular_rate", "thetadot", [f.thetadot], "rate")
     work.check(f"moments about O along i x k: b F_B,arm - a F_A,arm = "
                f"{qty(b * f.arm[1] - a * f.arm[0], 'N m')}; J p thetadot = "
@@ -193,7 +198,7 @@ KIND = Kind(
         AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces"),
         AnswerSpec("bearing_forces_arm", "force", "F_arm", "[A, B]: along the arm, shaft to "
                    "rotor positive"),
-        AnswerSpec("bearing_forces_normal", "force", "F_n", "[A, B]: perpendicular to the arm "
+        AnswerSpec("bearing_forces_normal", "force", "F_normal", "[A, B]: perpendicular to the arm "
                    "and shaft, upper side positive"),
         AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
     ),

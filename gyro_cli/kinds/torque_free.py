@@ -51,12 +51,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _representable(state, known)
 
     work.section("Conventions")
-    work.text("No moment about the centre of mass G: H is fixed in space. Z: along H; k: the "
-              "symmetry axis, taken on the side of H, so that H has a positive component "
-              "along k; then omega_z > 0 and theta, beta < 90 deg. z-x-z Euler angles as in "
-              "the chapter (Eqs. 11.5-11.8): phi about "
-              "Z, theta from Z to k, psi about k; omega = phidot Z + psidot k, "
-              "omega_z = psidot + phidot cos(theta).")
+    work.text("No moment about the centre of mass G: H, the angular momentum about G, is fixed "
+              "in space. Z: along H; k: the symmetry axis, taken on the side of H, so that H "
+              "has a positive component along k. z-x-z Euler angles as in the chapter "
+              "(Eqs. 11.5-11.8): phi about Z, theta from Z to k, psi about k, with the rates "
+              "phidot (precession) and psidot (spin); omega = phidot Z + psidot k, "
+              "omega_z = psidot + phidot cos(theta); beta: the angle from k to omega. Then "
+              "omega_z > 0 and theta, beta < 90 deg.")
+    work.text("I = I_G: the transverse moment of inertia about G, the fixed point; "
+              "omega_e: the component of omega across k")
     work.text("Along k: J omega_z = H cos(theta); across k: I omega_e = H sin(theta) with "
               "omega_e = phidot sin(theta). Hence phidot = H / I, tan(theta) = (I / J) "
               "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")

@@ -59,7 +59,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("machine axes: x forward, y to the left, z up. Going forward the road wheels "
               "roll: their spin vector points to the left (+y). The engine's points the same "
               "way (engine_sense: same) or the other way (opposite).")
-    work.text("couple on the rotors C = omega_p x H (Eq. 11.29); the machine feels the reactive "
+    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
+              "H (Eq. 11.29); the machine feels the reactive "
               "couple -C. Couples below are about the fore-and-aft line through the contact "
               "points, positive overturning the machine outward (away from the centre).")
 

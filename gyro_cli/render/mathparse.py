@@ -38,7 +38,8 @@ UNITS = {"kg", "m", "s", "N", "rad", "rpm", "deg", "mm", "cm", "km", "in", "ft",
          "knots", "t", "mph", "kN", "rps", "hr", "g", "dyne", "lbm", "gal", "psi"}
 RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 #: symbols that name vectors: between two of them a spaced ``x`` is a cross product
-VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "C", "M", "F"}
+VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "H_G", "C", "M", "F",
+           "Omega_E", "U", "u", "s"}
 
 _TOKEN = re.compile(r"""
     (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
@@ -478,7 +479,8 @@ def is_symbol_name(name: str) -> bool:
 
 
 ANGLE_WORDS = {"yaw", "pitch", "roll", "heading", "bank"}
-UPPER_WORDS = {"US", "SI", "UK", "PDF", "CSV", "JSON", "YAML", "OK", "NB"}
+UPPER_WORDS = {"US", "SI", "UK", "PDF", "CSV", "JSON", "YAML", "OK", "NB", "IERS", "IAU",
+               "J2000"}
 WORDS_D = {"do", "dip", "die", "dies", "due", "down", "deg", "dot", "ddot"}
 
 
@@ -611,7 +613,9 @@ def _classify(toks: list[Token]) -> list[bool]:
             if t.text == "a":
                 # "a F_A - b F_B" is maths, "a complex pair" is prose
                 op_before = before is not None and before.kind == "op" \
-                    and before.text in ("=", "+", "-", "*", "/", "(", "^", ">=", "<=", "<", ">")
+                    and before.text in ("=", "+", "-", "*", "/", "(", "^", ">=", "<=", "<", ">") \
+                    and not (before.text == "-" and nxt(k, -2) is not None
+                             and nxt(k, -2).text == "-")  # "-- a real root": a dash
                 classes.append(op_before or after is not None and not (
                     after.kind == "name" and is_word(after.text))
                     and after.text not in (",", ".", ";", ":")
@@ -622,6 +626,14 @@ def _classify(toks: list[Token]) -> list[bool]:
                 classes.append(False)  # "A gyro wheel": the article opening a sentence
             elif before is not None and before.text == "'" and t.text == "s":
                 classes.append(False)  # possessive
+            elif t.text in ANGLE_WORDS and before is not None and before.text == "(" \
+                    and pos[k] >= 2 and nxt(k, -2).text in ("Rx", "Ry", "Rz"):
+                classes.append(True)  # Rz(yaw): the rotation by the yaw angle
+            elif len(t.text) == 1 and t.text.isupper() and after is not None \
+                    and after.kind == "num" and before is not None and (
+                        before.text == "." and pos[k] >= 2 and nxt(k, -2).text in ("Eq", "Eqs")
+                        or before.text == "-" and last_ref):
+                classes.append(False)  # "Eqs. A 1-A 5": equations of an appendix
             elif (before is not None and before.text == "-" and not before.space
                   and not t.space and k >= 2 and toks[k - 2].kind == "name"
                   and not classes[-1]):

@@ -20,7 +20,7 @@ import re
 
 from ..core.work import num
 from ..solving.solve import Result
-from .mathparse import spans, try_parse
+from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
 
@@ -47,10 +47,47 @@ def math(text: str, units: bool = True, display: bool = False) -> str:
 
 def _fallback(text: str) -> str:
     out = []
-    for is_math, part in spans(text):
-        out.append(LatexPrinter(False).doprint(part) if is_math
-                   else f"\\text{{{text_escape(part.replace('_', ' '))}}}")
+    for is_key, piece in _split_keys(text):
+        if is_key:
+            out.append(f"\\text{{{text_escape(piece)}}}")
+            continue
+        for is_math, part in spans(piece):
+            out.append(LatexPrinter(False).doprint(part) if is_math
+                       else f"\\text{{{text_escape(part.replace('_', ' '))}}}")
     return " ".join(out) or "\\text{}"
+
+
+# ---- the file's keys in prose -------------------------------------------------
+
+#: keys of the problem being written that hold an underscore and are not symbols of its
+#: kind (psi_rate, bearing_forces, engine_sense): in prose they are words, "psi rate"
+_KEYS: list[re.Pattern | None] = [None]
+
+
+def file_keys(kind) -> re.Pattern | None:
+    """A pattern matching the kind's given and answer names that are words, not symbols."""
+    from ..core.body import BODY_PARAMS
+
+    params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
+    names = {p.name for p in params} | {a.name for a in kind.answers}
+    symbols = {p.symbol for p in params} | {a.symbol for a in kind.answers}
+    keys = sorted((n for n in names if "_" in n and (n not in symbols or is_word(n))),
+                  key=len, reverse=True)
+    if not keys:
+        return None
+    return re.compile(r"(?<![\w.])(" + "|".join(map(re.escape, keys)) + r")(?!\w)")
+
+
+def _split_keys(text: str) -> list[tuple[bool, str]]:
+    """``text`` as (is_key, piece): a key comes out as words, ``psi rate``."""
+    pattern = _KEYS[0]
+    if pattern is None or not pattern.search(text):
+        return [(False, text)]
+    out, pos = [], 0
+    for m in pattern.finditer(text):
+        out += [(False, text[pos:m.start()]), (True, m.group().replace("_", " "))]
+        pos = m.end()
+    return out + [(False, text[pos:])]
 
 
 def _tex(text: str) -> Tex:
@@ -73,13 +110,18 @@ def _quantity(value: float, unit: str) -> str:
 
 
 def mixed(text: str, inline: tuple[str, str] = ("$", "$"), escape=text_escape) -> str:
-    """Prose with the maths in it set inline: words as text, each parsed span as maths."""
+    """Prose with the maths in it set inline: words as text, each parsed span as maths; a
+    key of the file (``psi_rate``) as words."""
     out = []
-    for is_math, part in spans(text):
-        if is_math:
-            out.append(f"{inline[0]}{LatexPrinter(False).doprint(part)}{inline[1]}")
-        else:
-            out.append(escape(part))
+    for is_key, piece in _split_keys(text):
+        if is_key:
+            out.append(escape(piece))
+            continue
+        for is_math, part in spans(piece):
+            if is_math:
+                out.append(f"{inline[0]}{LatexPrinter(False).doprint(part)}{inline[1]}")
+            else:
+                out.append(escape(part))
     return "".join(out)
 
 
@@ -353,6 +395,14 @@ def _si(g) -> str:
 
 def markdown(result: Result) -> str:
     """The worked answer as Markdown with $-delimited LaTeX maths."""
+    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
+    try:
+        return _markdown(result)
+    finally:
+        _KEYS[0] = saved
+
+
+def _markdown(result: Result) -> str:
     problem, solution = result.problem, result.solution
     lines = [f"## {problem.id}: {problem.title}".rstrip(": ") if problem.title
              else f"## {problem.id}", ""]
@@ -396,6 +446,14 @@ def _squeeze(text: str) -> str:
 
 def latex(result: Result, level: str = "subsection*") -> str:
     """The worked answer as a LaTeX fragment (needs amsmath) to paste into a solution sheet."""
+    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
+    try:
+        return _latex(result, level)
+    finally:
+        _KEYS[0] = saved
+
+
+def _latex(result: Result, level: str) -> str:
     problem, solution = result.problem, result.solution
     title = f"{problem.id}: {problem.title}" if problem.title else problem.id
     lines = ["% gyro solve --format latex: paste into a document that loads amsmath"
