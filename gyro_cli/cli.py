@@ -183,12 +183,13 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         if out or force:
             fail("--out and --force go with --answers SHEET")
         from .checking import check as checking
+        from .render import check_report
 
         result = checking.run(paths, strict=strict)
         for problem in result.problems:
             if problem.error:
                 click.echo(f"gyro: {problem.error}", err=True)
-        click.echo(checking.as_json(result) if fmt == "json" else checking.table(result),
+        click.echo(check_report.as_json(result) if fmt == "json" else check_report.table(result),
                    nl=fmt == "json")
         if junit_file:
             from .render import junit
@@ -202,10 +203,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if junit_file or strict:
         fail("--junit and --strict go with checking the answer key, not with --answers")
     from .checking import grades
+    from .render import grades_report
 
     try:
         graded = grades.grade(sheet, paths)
-        text = grades.csv_text(graded)
+        text = grades_report.csv_text(graded)
         if out:
             from .core.files import write_atomic
 
@@ -214,7 +216,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail(err)
     for line in graded.errors:
         click.echo(f"gyro: {line}", err=True)
-    click.echo(grades.as_json(graded) if fmt == "json" else grades.table(graded), nl=fmt == "json")
+    click.echo(grades_report.as_json(graded) if fmt == "json" else grades_report.table(graded),
+               nl=fmt == "json")
     if graded.errors:
         sys.exit(INTERNAL)
 

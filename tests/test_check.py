@@ -21,6 +21,9 @@ from pathlib import Path
 import pytest
 
 from gyro_cli.checking import check
+from gyro_cli.checking import expected
+from gyro_cli.checking import matching
+from gyro_cli.checking import tolerance
 from gyro_cli.core import units
 
 G = 9.81
@@ -266,29 +269,29 @@ def test_bad_tolerance_is_a_file_error(run, tmp_path, tolerance, message):
 
 
 def test_sig_figs_count_on_the_value_as_written():
-    tol = check.parse_tolerance("3 sig", "rate")
+    tol = tolerance.parse_tolerance("3 sig", "rate")
     # 45.1 rpm to 3 significant figures: half a unit in the last place is 0.05 rpm.
     assert tol.half_width(45.1 * RPM, 45.1) == pytest.approx(0.05 * RPM)
     assert tol.half_width(0.00451 * RPM, 0.00451) == pytest.approx(0.000005 * RPM)
-    assert check.parse_tolerance("1%", "rate").half_width(-10.0, -10.0) == pytest.approx(0.1)
-    absolute = check.parse_tolerance("6 rpm", "rate")
+    assert tolerance.parse_tolerance("1%", "rate").half_width(-10.0, -10.0) == pytest.approx(0.1)
+    absolute = tolerance.parse_tolerance("6 rpm", "rate")
     assert absolute.half_width(1000.0, 1.0) == pytest.approx(6 * RPM)
 
 
 # ---- matching roots as sets --------------------------------------------------
 
 def test_match_roots_pairs_nearest_and_uses_none_twice():
-    assert check.match_roots([533.5, 45.13], [45.13, 533.5]) == [(0, 1), (1, 0)]
+    assert matching.match_roots([533.5, 45.13], [45.13, 533.5]) == [(0, 1), (1, 0)]
     # two expected near the same root: the nearer takes it, the other gets the rest
-    assert check.match_roots([45.0, 45.2], [45.13, 533.5]) == [(0, 1), (1, 0)] or \
-        check.match_roots([45.0, 45.2], [45.13, 533.5]) == [(0, 0), (1, 1)]
-    pairs = check.match_roots([45.0, 45.2], [45.13, 533.5])
+    assert matching.match_roots([45.0, 45.2], [45.13, 533.5]) == [(0, 1), (1, 0)] or \
+        matching.match_roots([45.0, 45.2], [45.13, 533.5]) == [(0, 0), (1, 1)]
+    pairs = matching.match_roots([45.0, 45.2], [45.13, 533.5])
     assert sorted(j for _, j in pairs) == [0, 1]
     assert dict(pairs)[1] == 0  # 45.2 is nearer 45.13 than 45.0 is (log distance)
-    assert check.match_roots([1.0], [1.0, 2.0]) == [(0, 0), (None, 1)]
-    assert check.match_roots([1.0, 2.0], [2.0]) == [(0, None), (1, 0)]
+    assert matching.match_roots([1.0], [1.0, 2.0]) == [(0, 0), (None, 1)]
+    assert matching.match_roots([1.0, 2.0], [2.0]) == [(0, None), (1, 0)]
     # a slip (x10) still pairs with the root it spoils, not with a larger one
-    assert check.match_roots([4.513, 533.5], [45.13, 533.5]) == [(0, 0), (1, 1)]
+    assert matching.match_roots([4.513, 533.5], [45.13, 533.5]) == [(0, 0), (1, 1)]
 
 
 def test_roots_in_any_order_pass_and_a_missing_root_fails(run, tmp_path):
@@ -318,14 +321,14 @@ def test_an_answer_equal_for_both_roots_needs_one_expected_value(run, tmp_path):
 
 
 def test_diagnose_pure():
-    assert check.diagnose(10.0, -10.0, 0.1) .startswith("the sign")
-    assert "power of ten" in check.diagnose(10.0, 1000.0, 0.1)
-    assert "2 pi" in check.diagnose(1.0, 2 * math.pi, 0.01)
-    assert "60" in check.diagnose(1.0, 60.0, 0.01)
-    assert "degrees against radians" in check.diagnose(1.0, math.degrees(1.0), 0.01)
-    assert "mass against weight" in check.diagnose(2.0, 2.0 * 9.81, 0.02)
-    assert check.diagnose(10.0, 13.0, 0.1) is None  # 30% off: no known slip
-    assert "other root" in check.diagnose(5.0, 50.0, 0.05, [5.01])
+    assert matching.diagnose(10.0, -10.0, 0.1) .startswith("the sign")
+    assert "power of ten" in matching.diagnose(10.0, 1000.0, 0.1)
+    assert "2 pi" in matching.diagnose(1.0, 2 * math.pi, 0.01)
+    assert "60" in matching.diagnose(1.0, 60.0, 0.01)
+    assert "degrees against radians" in matching.diagnose(1.0, math.degrees(1.0), 0.01)
+    assert "mass against weight" in matching.diagnose(2.0, 2.0 * 9.81, 0.02)
+    assert matching.diagnose(10.0, 13.0, 0.1) is None  # 30% off: no known slip
+    assert "other root" in matching.diagnose(5.0, 50.0, 0.05, [5.01])
 
 
 # ---- reports, paths, exit codes -----------------------------------------------
@@ -409,10 +412,10 @@ def test_word_answers_compare_as_words():
     from gyro_cli.solving.solve import Reported
 
     motion = Reported("motion", "motion", ["cusps"], None, ["cusps"], None, [])
-    exact = check.parse_tolerance("1%", None)
-    good = check.compare("motion", check.parse_expected("Cusps", None, "expected.motion"), exact,
+    exact = tolerance.parse_tolerance("1%", None)
+    good = matching.compare("motion", expected.parse_expected("Cusps", None, "expected.motion"), exact,
                          motion)
-    bad = check.compare("motion", check.parse_expected(["loops"], None, "expected.motion"),
+    bad = matching.compare("motion", expected.parse_expected(["loops"], None, "expected.motion"),
                         exact, motion)
     assert [a.passed for a in good] == [True]
     assert [a.passed for a in bad] == [False] and "got cusps" in bad[0].message
@@ -422,9 +425,9 @@ def test_dimensionless_expected_may_be_a_bare_number():
     from gyro_cli.solving.solve import Reported
 
     ratio = Reported("u", "u", [0.5], "", [0.5], "", [])
-    values = check.parse_expected([0.501], "dimensionless", "expected.u")
+    values = expected.parse_expected([0.501], "dimensionless", "expected.u")
     assert values[0].si == 0.501
-    assert [a.passed for a in check.compare("u", values, check.parse_tolerance("1%", "x"),
+    assert [a.passed for a in matching.compare("u", values, tolerance.parse_tolerance("1%", "x"),
                                             ratio)] == [True]
 
 

@@ -27,12 +27,14 @@ from __future__ import annotations
 import csv
 import dataclasses
 import io
-import json
 import math
 from dataclasses import dataclass, field
 from typing import Any
 
 from . import check
+from .expected import parse_value
+from .matching import compare, diagnose
+from .tolerance import tolerance_for
 from ..core.errors import InputError
 from ..core.work import num
 
@@ -246,7 +248,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     """One student's answer to one question, against the solver's answer."""
     spec = problem.kind.answer(name)
     names = [a.name for a in problem.kind.answers]
-    tolerance = check.tolerance_for(problem.tolerance, name, spec.dimension, names)
+    tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
     correct = _correct_text(reported)
     row = GradeRow(student, problem.id, name, "", correct, None, "missing", 0.0)
     if not values:
@@ -258,7 +260,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     parsed = []
     for value in values:
         try:
-            parsed.append(check.parse_value(value, spec.dimension, name))
+            parsed.append(parse_value(value, spec.dimension, name))
         except InputError as err:
             row.result, row.note = "invalid", err.message
             return row
@@ -266,7 +268,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             row.result = "invalid"
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
             return row
-    lines = check.compare(name, parsed, tolerance, reported)
+    lines = compare(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
     row.points = round(passed / len(lines), 4) if lines else 0.0
     row.result = "correct" if passed == len(lines) else ("partial" if passed else "wrong")
@@ -289,7 +291,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             off = (submitted - truth) / abs(truth) * 100 if truth else math.inf
             note = (f"{line.expected}: off by {off:+.3g}%" if math.isfinite(off)
                     else f"{line.expected}: wrong")
-            slip = check.diagnose(truth, submitted, abs(truth) * 0.01, [])
+            slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
             if slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
             notes.append(note)
@@ -334,50 +336,3 @@ def _correct_text(reported: Any) -> str:
     if reported.unit is None and reported.si_unit is None:
         return "; ".join(str(v) for v in reported.values)
     return "; ".join(f"{num(v)} {reported.unit}" for v in reported.values)
-
-
-# ---- output -----------------------------------------------------------------
-
-def _cell(value: Any) -> str:
-    """A CSV cell a spreadsheet will not run as a formula (=, +, @, -letters)."""
-    text = "" if value is None else str(value)
-    if text[:1] in ("=", "+", "@", "\t", "\r") or (text[:1] == "-" and not
-                                                   text[1:2].replace(".", "").isdigit()):
-        return "'" + text
-    return text
-
-
-def csv_text(graded: Graded) -> str:
-    """The grades: one row per student and answer, then a score row per student."""
-    out = io.StringIO()
-    writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(OUT_COLUMNS)
-    for row in graded.rows:
-        rel = "" if row.relative_error is None else f"{row.relative_error:.6g}"
-        writer.writerow([_cell(row.student), _cell(row.problem), _cell(row.answer),
-                         _cell(row.submitted), _cell(row.correct), rel, row.result,
-                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)])
-    for student, (points, total) in graded.scores.items():
-        percent = 100 * points / total if total else 0.0
-        writer.writerow([_cell(student), "", "", "", "", "", "score", f"{points:g}",
-                         f"{total:g}", f"{percent:.1f}%"])
-    return out.getvalue()
-
-
-def table(graded: Graded) -> str:
-    lines = []
-    for row in graded.rows:
-        lines.append(f"{row.student:<12} {row.problem:<8} {row.answer:<12} {row.result:<8} "
-                     f"{row.points:>4g}  {row.submitted or '-'}  [solver: {row.correct}]"
-                     + (f"  {row.note}" if row.note and row.result != "correct" else ""))
-    lines.append("")
-    for student, (points, total) in graded.scores.items():
-        percent = 100 * points / total if total else 0.0
-        lines.append(f"{student:<12} score {points:g} / {total:g} ({percent:.1f}%)")
-    return "\n".join(lines) + "\n"
-
-
-def as_json(graded: Graded) -> str:
-    return json.dumps({"rows": [dataclasses.asdict(r) for r in graded.rows],
-                       "scores": {s: {"points": p, "max_points": t}
-                                  for s, (p, t) in graded.scores.items()}}, allow_nan=False)

@@ -313,7 +313,7 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     """``count`` variants of the problem in ``path``: (file name, YAML text) each."""
     import yaml
 
-    from ..checking import check
+    from ..checking.tolerance import tolerance_for
     from ..solving.problem import _build, load
     from ..solving.solve import solve
 
@@ -364,7 +364,7 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
         for name in keyed:
             answer = result.answers[name]
             spec = problem.kind.answer(name)
-            tol = check.tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
+            tol = tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
             widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
                       if isinstance(v, float) else 0.0
                       for si, v in zip(answer.si_values, answer.values)]

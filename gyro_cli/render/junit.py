@@ -12,7 +12,7 @@ from __future__ import annotations
 import os
 import xml.etree.ElementTree as ET
 
-from ..checking.check import CheckRun, ProblemCheck
+from ..checking.results import CheckRun, ProblemCheck
 
 # Characters XML 1.0 forbids even escaped; a file name or message could hold them.
 _FORBIDDEN = {c: None for c in range(32) if c not in (9, 10, 13)}

@@ -1,0 +1,208 @@
+"""Matching expected values to computed roots, and naming the likely slip when
+one is off: pure functions on SI floats, plus ``compare`` that makes AnswerChecks."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any
+
+from ..core.work import num
+from .expected import Expected
+from .results import AnswerCheck
+from .tolerance import Tolerance
+
+# ---- matching and diagnosis -------------------------------------------------
+
+def distance(expected: float, got: float) -> float:
+    """How far apart two values are for matching: |ln(|got| / |expected|)|.
+
+    On a log scale a slip (10x, 2 pi, the sign) stays nearest to the root it
+    spoils; a differing sign adds a hair so like signs pair first. A zero pairs
+    only by absolute difference, after every non-zero pair.
+    """
+    if expected == 0 or got == 0:
+        return 0.0 if expected == got else 1e6 + abs(got - expected)
+    # log|got| - log|expected|, not log(|got| / |expected|): the ratio of 1e-300 and
+    # 1e300 underflows to 0.
+    return abs(math.log(abs(got)) - math.log(abs(expected))) + \
+        (1e-9 if (got < 0) != (expected < 0) else 0)
+
+
+def match_roots(expected: list[float], computed: list[float],
+                passes: Any = None) -> list[tuple[int | None, int | None]]:
+    """Pairs (expected index, computed index): nearest first, none used twice.
+
+    ``passes(i, j)`` (optional) says whether the pair is within tolerance; such
+    pairs are taken before any other. Unpaired expected values come as
+    (i, None), unclaimed roots as (None, j); the list is in the order of the
+    expected values, then the extra roots.
+    """
+    pairs = sorted((not passes(i, j) if passes else False, distance(e, c), i, j)
+                   for i, e in enumerate(expected) for j, c in enumerate(computed))
+    of_expected: dict[int, int] = {}
+    used: set[int] = set()
+    for _, _, i, j in pairs:
+        if i not in of_expected and j not in used:
+            of_expected[i] = j
+            used.add(j)
+    out: list[tuple[int | None, int | None]] = [(i, of_expected.get(i))
+                                                for i in range(len(expected))]
+    out += [(None, j) for j in range(len(computed)) if j not in used]
+    return out
+
+
+# (factor, what it suggests); both directions are tried, and each with the sign.
+SLIPS: tuple[tuple[float, str], ...] = (
+    (2 * math.pi, "a factor of 2 pi: rad/s against rev/s (Hz)"),
+    (60 / (2 * math.pi), "a factor of 60/(2 pi) = 9.549: rpm against rad/s"),
+    (60.0, "a factor of 60: rpm against rev/s (Hz), or minutes against seconds"),
+    (9.81, "a factor of g = 9.81 m/s^2: mass against weight"),
+    (32.174, "a factor of g = 32.2 ft/s^2: mass against weight (lbm against slug or lbf)"),
+    (180 / math.pi, "a factor of 180/pi = 57.30: degrees against radians"),
+)
+
+
+def diagnose(expected: float, got: float, half_width: float,
+             other_roots: list[float] | None = None) -> str | None:
+    """The likely slip that turns ``expected`` into ``got``, or None.
+
+    Tried in order: another computed root of the same answer, the sign, a power
+    of ten, then the factors in SLIPS. A factor counts when got is within the
+    answer's relative tolerance (at least 0.5%, at most 2%) of expected times it.
+    """
+    for root in other_roots or []:
+        if abs(root - expected) <= half_width:
+            return f"the other root: expected matches the computed root {num(root)} (SI)"
+    if expected == 0 or got == 0 or not math.isfinite(got):
+        return None
+    window = min(max(half_width / abs(expected), 0.005), 0.02)
+    ratio = got / expected
+    if not math.isfinite(ratio) or ratio == 0 or not math.isfinite(window):
+        return None  # a denormal expected value: no slip to name
+    if abs(ratio + 1) <= window:
+        return "the sign: got is minus the expected value"
+    sign = " and the sign" if ratio < 0 else ""
+    size = abs(ratio)
+    power = round(math.log10(size))
+    if power and abs(size / 10.0 ** power - 1) <= window:
+        times = f"10^{power}" if abs(power) > 1 else ("10" if power == 1 else "1/10")
+        return f"a power of ten{sign}: got is {times} times expected (a unit prefix or a " \
+               "decimal point?)"
+    best: tuple[float, str] | None = None
+    for factor, what in SLIPS:
+        for f, direction in ((factor, "got is larger"), (1 / factor, "got is smaller")):
+            miss = abs(size / f - 1)
+            if miss <= window and (best is None or miss < best[0]):
+                best = (miss, f"{what} ({direction}){sign}")
+    return best[1] if best else None
+
+
+
+def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
+            strict: bool = True) -> list[AnswerCheck]:
+    """Compare the expected values of one answer with its computed roots (as sets).
+
+    With ``strict`` False a computed root that no expected value claims, where
+    every expected value found its root, is "not keyed": listed, not failed
+    (a book quotes the slow precession and not the fast one).
+    """
+    computed = list(reported.si_values)
+    if tolerance.magnitude and reported.si_unit is not None:
+        computed = [abs(c) for c in computed]
+        values = [dataclasses.replace(v, si=abs(float(v.si)), number=abs(v.number))
+                  for v in values]
+    labels = list(reported.labels)
+    out: list[AnswerCheck] = []
+    if reported.unit is None and reported.si_unit is None:  # a word answer
+        got = [str(v) for v in computed]
+        several = len(values) > 1
+        for i, value in enumerate(values):
+            ok = str(value.si).lower() in (g.lower() for g in got)
+            out.append(AnswerCheck(name, i + 1 if several else None, value.text, ", ".join(got),
+                                   ok, expected_value=value.text, got_value=", ".join(got),
+                                   expected_si=value.si, got_si=", ".join(got),
+                                   tolerance="exact", message="" if ok else
+                                   f"expected {value.text}, got {', '.join(got)}"))
+        return out
+    widths_si = [tolerance.half_width(float(v.si), v.number) for v in values]
+
+    def within(i: int, j: int) -> bool:
+        return abs(computed[j] - float(values[i].si)) <= widths_si[i] * (1 + 1e-12) + 1e-300
+
+    pairs = match_roots([float(v.si) for v in values], computed, within)
+    # A root equal to one an expected value already matched (the moment, the
+    # same for both precession rates) is covered by it, not a missing value.
+    pairs = [(i, j) for i, j in pairs
+             if i is not None or not any(within(k, j) for k in range(len(values)))]
+    all_found = all(j is not None and within(i, j) for i, j in pairs if i is not None)
+    several = len(values) > 1 or len(pairs) > 1
+    for position, (i, j) in enumerate(pairs):
+        index = position + 1 if several else None
+        label = f" ({labels[j]})" if j is not None and j < len(labels) and labels[j] else ""
+        if i is None:  # a computed root that no expected value claims
+            unit, factor = values[0].unit or reported.unit or "", values[0].factor
+            got_value = computed[j] / factor
+            if not strict and all_found:
+                out.append(AnswerCheck(
+                    name, index, None, f"{num(got_value)} {unit}".rstrip() + label, True,
+                    unit=unit, got_value=got_value, got_si=computed[j],
+                    si_unit=reported.si_unit, tolerance=tolerance.text, keyed=False,
+                    message="not keyed: the key quotes no value for this root "
+                            "(gyro check --strict fails it)"))
+                continue
+            out.append(AnswerCheck(
+                name, index, None, f"{num(got_value)} {unit}".rstrip() + label, False,
+                unit=unit, got_value=got_value, got_si=computed[j],
+                si_unit=reported.si_unit, tolerance=tolerance.text,
+                message=f"computed root {num(got_value)} {unit}{label} has no expected "
+                        f"value ({len(values)} expected, {len(computed)} computed)"))
+            continue
+        value = values[i]
+        unit = value.unit or reported.unit or ""
+        width_si = widths_si[i]
+        width = width_si / value.factor
+        check = AnswerCheck(name, index, value.text, None, False, unit=unit,
+                            expected_value=value.number, expected_si=value.si,
+                            si_unit=reported.si_unit, tolerance=tolerance.text,
+                            tolerance_value=width)
+        if j is None:
+            check.message = (f"expected {value.text} +- {num(width)} {unit}, got no root "
+                             f"({len(values)} expected, {len(computed)} computed)").replace(" ,", ",")
+            check.slip = diagnose(float(value.si), math.nan, width_si, computed)
+            if check.slip:
+                check.slip = _other_root(value, computed, width_si, unit)
+            out.append(check)
+            continue
+        got_si = computed[j]
+        got = got_si / value.factor
+        check.got_si, check.got_value = got_si, got
+        check.got = f"{num(got)} {unit}".rstrip() + label
+        if not math.isfinite(got):  # finite in SI, too large for the expected value's unit
+            check.got_value = None
+            check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
+        relative = (got_si - value.si) / abs(value.si) if value.si else None
+        check.relative_error = relative if relative is not None and abs(relative) < 1e300 \
+            else None  # in percent it would overflow
+        check.passed = within(i, j)
+        if not check.passed:
+            off = ("expected is 0" if not value.si else "more than 1e308 times the expected value" if
+                   check.relative_error is None else f"{check.relative_error * 100:+.3g}%")
+            check.message = (f"expected {value.text} +- {num(width)} {unit}, got "
+                             f"{num(got)} {unit}; off by {num(got - value.number)} {unit} "
+                             f"({off})").replace("  ", " ")
+            if not math.isfinite(got):
+                check.message = (f"expected {value.text}, got {check.got}: too large to "
+                                 f"express in {unit}")
+            others = [c for k, c in enumerate(computed) if k != j]
+            check.slip = diagnose(float(value.si), got_si, width_si, others)
+            if check.slip and check.slip.startswith("the other root"):
+                check.slip = _other_root(value, others, width_si, unit)
+        out.append(check)
+    return out
+
+
+def _other_root(value: Expected, roots: list[float], width_si: float, unit: str) -> str:
+    root = next(c for c in roots if abs(c - float(value.si)) <= width_si)
+    return (f"the other root: {value.text} is the computed root {num(root / value.factor)} "
+            f"{unit}, which another expected value took")
