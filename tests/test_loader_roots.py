@@ -189,6 +189,17 @@ def test_a_got_value_too_large_for_the_expected_values_unit(run, write):
     assert not NOT_FINITE.search(result.stdout)
 
 
+def test_a_tolerance_too_large_for_the_expected_unit(run, problems_dir, write):
+    """Found by the fuzz run: 1e300 rev/s in arcsec/yr printed '+-inf arcsec/yr'."""
+    text = (problems_dir / "11_3_equinoxes.yaml").read_text()
+    text = re.sub(r"tolerance:(.|\n)*", 'tolerance:\n  precession_rate: "1e300 rev/s"\n'
+                  '  default: 1%\n', text)
+    result = run("check", write(text))
+    assert result.exit_code == 2
+    assert "too large to express in arcsec/yr" in result.stderr
+    assert result.stderr.count("\n") == 1 and not NOT_FINITE.search(result.output)
+
+
 def test_inf_inside_a_step_is_not_printed(run, write):
     """A top thrown through the lowest point: n2 = (u2 - u1)/(1 + u1) has u1 = -1."""
     top = (PROBLEMS / "11_2_released_top.yaml").read_text()

@@ -7,6 +7,7 @@ import dataclasses
 import math
 from typing import Any
 
+from ..core.errors import InputError
 from ..core.work import num
 from .expected import Expected
 from .results import AnswerCheck
@@ -126,6 +127,10 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                                    f"expected {value.text}, got {', '.join(got)}"))
         return out
     widths_si = [tolerance.half_width(float(v.si), v.number) for v in values]
+    for v, width in zip(values, widths_si):
+        if not math.isfinite(width / v.factor):  # 1e300 rev/s in arcsec/yr
+            raise InputError(f"tolerance {tolerance.text!r} is too large to express in "
+                             f"{v.unit or reported.unit}; give a smaller one", key="tolerance")
 
     def within(i: int, j: int) -> bool:
         return abs(computed[j] - float(values[i].si)) <= widths_si[i] * (1 + 1e-12) + 1e-300
