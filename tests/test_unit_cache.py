@@ -141,3 +141,17 @@ def test_warm_solve_kinds_and_help_import_neither_pint_nor_numpy(tmp_path):
     for args in (["solve", "problems/11_3.yaml"], ["kinds"], ["--help"]):
         run = _gyro(args, tmp_path, probe)
         assert run.stderr.strip().splitlines()[-1] == "[]", (args, run.stderr)
+
+
+def test_warm_bicycle_solve_imports_no_numpy(tmp_path):
+    """The bicycle's eigenvalues and speeds are pure Python: a warm solve loads no numpy."""
+    probe = ("import sys\nfrom gyro_cli.cli import main\ntry:\n    main()\nexcept SystemExit:\n"
+             "    pass\nprint(sorted(m for m in ('pint', 'numpy', 'scipy', 'matplotlib') "
+             "if m in sys.modules), file=sys.stderr)")
+    args = ["solve", "problems/bicycle_benchmark.yaml"]
+    first = _gyro(args, tmp_path, probe)                      # fills the cache
+    assert first.returncode == 0, first.stderr
+    run = _gyro(args, tmp_path, probe)
+    assert run.returncode == 0, run.stderr
+    assert "v_w" in run.stdout and "motion" in run.stdout
+    assert run.stderr.strip().splitlines()[-1] == "[]", run.stderr

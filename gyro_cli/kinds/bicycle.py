@@ -64,7 +64,7 @@ Q = "(phi, delta)"
 
 def parameters(given: Given, work: Work) -> dict[str, float]:
     """The paper's parameters in SI: from `given`, the rest from `preset: benchmark`."""
-    from ..physics import bicycle as bike  # numpy: loaded only when a bicycle is solved
+    from ..physics import bicycle as bike
 
     preset = given.word("preset")
     p: dict[str, float] = {"g": given["g"]}
@@ -161,15 +161,6 @@ def _poly_text(coeffs, var: str = "v") -> str:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    import numpy as np
-
-    # Overflow or 0/0 in extreme data raises FloatingPointError (an ArithmeticError), which
-    # the solver reports as one line, instead of printing numpy's warnings.
-    with np.errstate(over="raise", invalid="raise", divide="raise"):
-        _solve(given, find, work)
-
-
-def _solve(given: Given, find: frozenset[str], work: Work) -> None:
     from ..physics import bicycle as bike
 
     p = parameters(given, work)
@@ -178,7 +169,7 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
     speed = given.get("speed")
     t = bike.totals(p, gyroscopic)
     m = bike.matrices(p, gyroscopic)
-    if not (m.M[0, 0] > 0 and float(m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2) > 0):
+    if not (m.M[0, 0] > 0 and m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2 > 0):
         raise InputError("the mass matrix M is not positive definite for these data; check the "
                          "inertias and their units", key="given")
 
@@ -308,7 +299,7 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.speed")
     for v in stab.weave + stab.capsize:
         work.check(f"v = {num(v, 10)} m/s: the eigenvalue nearest the imaginary axis has "
-                   f"|Re(s)| = {min(abs(bike.eigenvalues(m, v, g).real)):.2g} 1/s")
+                   f"|Re(s)| = {min(abs(x) for x in bike.eigenvalues(m, v, g).real):.2g} 1/s")
     work.answer("weave_speed", "v_w", stab.weave, "speed")
     work.answer("capsize_speed", "v_c", stab.capsize, "speed")
     ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
@@ -322,9 +313,9 @@ def _solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _char_value(coeffs, v: float, s: complex) -> complex:
-    from numpy.polynomial import polynomial as P
+    from ..physics.bicycle import polyval
 
-    a = [P.polyval(v, c) for c in coeffs]
+    a = [polyval(v, c) for c in coeffs]
     return sum(a[k] * s ** k for k in range(5)) / a[4]
 
 

@@ -24,18 +24,21 @@ wheels). ``gyroscopic=False`` sets S_R = S_F = 0: in C1 the terms mu S_T + S_F c
 of C1_phidelta and C1_deltaphi, in K2 the S_T of K2_phidelta and the S_F sin(lambda) of
 K2_deltadelta.
 
-Only numpy here: the eigenvalues of the 4x4 state matrix come from numpy.linalg.eigvals,
-and the speeds where the stability changes from the roots of polynomials in v^2
-(the characteristic polynomial's constant term and its Hurwitz determinant).
+Pure Python (math, cmath; no numpy, so solving a bicycle costs no numpy import). The
+eigenvalues at a speed are the roots of the quartic characteristic polynomial
+det(M s^2 + v C1 s + g K0 + v^2 K2) = det(M) det(s I - A) of the 4x4 state matrix A;
+the speeds where the stability changes are the roots of polynomials in v^2 (the
+characteristic polynomial's constant term and its Hurwitz determinant). One root finder
+serves both: Aberth-Ehrlich iteration in complex arithmetic, then Newton steps on the
+polynomial itself; a real polynomial's roots come out as exact reals or exact conjugate
+pairs. Polynomials are lists of coefficients, lowest power first.
 """
 
 from __future__ import annotations
 
+import cmath
 import math
 from dataclasses import dataclass
-
-import numpy as np
-from numpy.polynomial import polynomial as P
 
 # Table 1 of the paper, SI (lambda = pi/10 rad). g is the paper's 9.81 m/s^2.
 BENCHMARK: dict[str, float] = {
@@ -127,14 +130,57 @@ def totals(p: dict[str, float], gyroscopic: bool = True) -> Totals:
                   IAlz, mu, SR, SF, SR + SF, SA)
 
 
+class Matrix2(tuple):
+    """A 2x2 matrix of floats: a tuple of its two rows, read as a[i, j] or a[i][j]."""
+
+    __slots__ = ()
+
+    def __new__(cls, rows) -> "Matrix2":
+        return super().__new__(cls, tuple(tuple(float(x) for x in row) for row in rows))
+
+    def __getitem__(self, key):
+        if isinstance(key, tuple):
+            i, j = key
+            return tuple.__getitem__(self, i)[j]
+        return tuple.__getitem__(self, key)
+
+    def ravel(self) -> list[float]:
+        """The entries row by row: 11, 12, 21, 22."""
+        return [x for row in self for x in row]
+
+
+class Spectrum(tuple):
+    """Eigenvalues (complex), with .real and .imag: tuples of their real and imaginary parts."""
+
+    __slots__ = ()
+
+    @property
+    def real(self) -> tuple[float, ...]:
+        return tuple(e.real for e in self)
+
+    @property
+    def imag(self) -> tuple[float, ...]:
+        return tuple(e.imag for e in self)
+
+    def __mul__(self, factor: float) -> "Spectrum":     # scaled: every eigenvalue times factor
+        if isinstance(factor, (int, float, complex)) and not isinstance(factor, bool):
+            return Spectrum(e * factor for e in self)
+        return NotImplemented
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, divisor: float) -> "Spectrum":
+        return Spectrum(e / divisor for e in self)
+
+
 @dataclass(frozen=True)
 class Matrices:
-    """M (kg m^2), C1 (kg m), K0 (kg m), K2 (kg): 2x2 arrays, rows/columns (phi, delta)."""
+    """M (kg m^2), C1 (kg m), K0 (kg m), K2 (kg): 2x2 matrices, rows/columns (phi, delta)."""
 
-    M: np.ndarray
-    C1: np.ndarray
-    K0: np.ndarray
-    K2: np.ndarray
+    M: Matrix2
+    C1: Matrix2
+    K0: Matrix2
+    K2: Matrix2
 
 
 def matrices(p: dict[str, float], gyroscopic: bool = True) -> Matrices:
@@ -151,70 +197,226 @@ def matrices(p: dict[str, float], gyroscopic: bool = True) -> Matrices:
     t = totals(p, gyroscopic)
     w, lam = p["w"], p["lambda"]
     s, co = math.sin(lam), math.cos(lam)
-    M = np.array([[t.ITxx, t.IAlx + t.mu * t.ITxz],
-                  [t.IAlx + t.mu * t.ITxz, t.IAll + 2 * t.mu * t.IAlz + t.mu ** 2 * t.ITzz]])
-    K0 = np.array([[t.mT * t.zT, -t.SA], [-t.SA, -t.SA * s]])
-    K2 = np.array([[0.0, (t.ST - t.mT * t.zT) * co / w],
-                   [0.0, (t.SA + t.SF * s) * co / w]])
+    M = Matrix2([[t.ITxx, t.IAlx + t.mu * t.ITxz],
+                 [t.IAlx + t.mu * t.ITxz, t.IAll + 2 * t.mu * t.IAlz + t.mu ** 2 * t.ITzz]])
+    K0 = Matrix2([[t.mT * t.zT, -t.SA], [-t.SA, -t.SA * s]])
+    K2 = Matrix2([[0.0, (t.ST - t.mT * t.zT) * co / w],
+                  [0.0, (t.SA + t.SF * s) * co / w]])
     gyro = t.mu * t.ST + t.SF * co
-    C1 = np.array([[0.0, gyro + t.ITxz * co / w - t.mu * t.mT * t.zT],
-                   [-gyro, t.IAlz * co / w + t.mu * (t.SA + t.ITzz * co / w)]])
+    C1 = Matrix2([[0.0, gyro + t.ITxz * co / w - t.mu * t.mT * t.zT],
+                  [-gyro, t.IAlz * co / w + t.mu * (t.SA + t.ITzz * co / w)]])
     return Matrices(M, C1, K0, K2)
 
 
-def state_matrix(m: Matrices, v: float, g: float) -> np.ndarray:
+def state_matrix(m: Matrices, v: float, g: float) -> list[list[float]]:
     """The 4x4 A of x' = A x, x = (phi, delta, phi', delta'): Eq. 5.3 solved for q''."""
-    inv = np.linalg.inv(m.M)
-    A = np.zeros((4, 4))
-    A[:2, 2:] = np.eye(2)
-    A[2:, :2] = -inv @ (g * m.K0 + v * v * m.K2)
-    A[2:, 2:] = -inv @ (v * m.C1)
-    return A
+    (a, b), (c, d) = m.M
+    det = a * d - b * c
+    inv = ((d / det, -b / det), (-c / det, a / det))
+    K = [[g * m.K0[i][j] + v * v * m.K2[i][j] for j in range(2)] for i in range(2)]
+    C = [[v * m.C1[i][j] for j in range(2)] for i in range(2)]
+
+    def times(X):
+        return [[-(inv[i][0] * X[0][j] + inv[i][1] * X[1][j]) for j in range(2)]
+                for i in range(2)]
+
+    lower_left, lower_right = times(K), times(C)
+    return [[0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0],
+            lower_left[0] + lower_right[0], lower_left[1] + lower_right[1]]
 
 
-def eigenvalues(m: Matrices, v: float, g: float) -> np.ndarray:
+def eigenvalues(m: Matrices, v: float, g: float) -> Spectrum:
     """The four eigenvalues at speed v (complex), ascending real part, then imaginary part.
 
-    LAPACK returns a complex pair with bit-equal real parts, so the order is exact.
+    The roots of the characteristic quartic sum a_k(v) s^k; a complex pair comes out as
+    exact conjugates (bit-equal real parts), a real eigenvalue with imaginary part 0.0,
+    so the order is exact.
     """
-    ev = np.linalg.eigvals(state_matrix(m, v, g)).astype(complex)
-    ev = np.where(np.abs(ev.imag) <= 1e-14 * np.maximum(1.0, np.abs(ev)), ev.real + 0j, ev)
-    order = np.lexsort((ev.imag, ev.real))
-    return ev[order]
+    a = [polyval(v, c) for c in characteristic(m, g)]
+    ev = roots(a)
+    return Spectrum(sorted(ev, key=lambda e: (e.real, e.imag)))
+
+
+# ---- polynomials: lists of float coefficients, lowest power first ----------------
+
+def _trim(c: list[float]) -> list[float]:
+    """Without trailing (highest-power) zeros; [0.0] if every coefficient is 0."""
+    c = list(c)
+    while len(c) > 1 and c[-1] == 0:
+        c.pop()
+    return c or [0.0]
+
+
+def polyadd(a: list[float], b: list[float]) -> list[float]:
+    n = max(len(a), len(b))
+    return _trim([(a[k] if k < len(a) else 0.0) + (b[k] if k < len(b) else 0.0)
+                  for k in range(n)])
+
+
+def polysub(a: list[float], b: list[float]) -> list[float]:
+    n = max(len(a), len(b))
+    return _trim([(a[k] if k < len(a) else 0.0) - (b[k] if k < len(b) else 0.0)
+                  for k in range(n)])
+
+
+def polymul(a: list[float], b: list[float]) -> list[float]:
+    out = [0.0] * (len(a) + len(b) - 1)
+    for i, x in enumerate(a):
+        for j, y in enumerate(b):
+            out[i + j] += x * y
+    return _trim(out)
+
+
+def polyval(x, c: list[float]):
+    """c[0] + c[1] x + ... by Horner's rule (x real or complex)."""
+    value = c[-1] + x * 0
+    for coefficient in reversed(c[:-1]):
+        value = coefficient + value * x
+    return value
+
+
+def polyder(c: list[float]) -> list[float]:
+    return [k * c[k] for k in range(1, len(c))] or [0.0]
+
+
+_EPS = 2.220446049250313e-16
+
+
+def roots(c: list[float]) -> list[complex]:
+    """The roots of the real polynomial c[0] + c[1] x + ... + c[n] x^n (complex).
+
+    Aberth-Ehrlich simultaneous iteration from points on a circle that encloses every
+    root, then Newton steps on the polynomial. A root whose imaginary part is at the
+    rounding level is real (imaginary part 0.0, polished in real arithmetic); the others
+    come in exact conjugate pairs. Roots at 0 (zero low coefficients) are exact zeros.
+    """
+    c = _trim([float(x) for x in c])
+    zeros = 0
+    while len(c) > 1 and c[0] == 0:
+        c.pop(0)
+        zeros += 1
+    n = len(c) - 1
+    out = [0j] * zeros
+    if n < 1:
+        return out
+    if n == 1:
+        return out + [complex(-c[0] / c[1])]
+    lead = c[-1]
+    monic = [x / lead for x in c]
+    if not all(math.isfinite(x) for x in monic):
+        return out + [complex(math.nan, 0.0)] * n
+    radius = 2 * max(abs(monic[k]) ** (1.0 / (n - k)) for k in range(n))
+    z = [radius * cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)]
+    dmonic = polyder(monic)
+    for _ in range(500):
+        moved = False
+        for i in range(n):
+            zi = z[i]
+            value = polyval(zi, monic)
+            if value == 0:
+                continue
+            slope = polyval(zi, dmonic)
+            others = sum(1.0 / (zi - z[j]) for j in range(n) if j != i and zi != z[j])
+            ratio = value / slope if slope != 0 else complex(math.inf)
+            denominator = 1.0 - ratio * others
+            step = ratio if denominator == 0 else ratio / denominator
+            if not cmath.isfinite(step):
+                continue
+            z[i] = zi - step
+            if abs(step) > 4 * _EPS * abs(z[i]):
+                moved = True
+        if not moved:
+            break
+    d = polyder(c)
+    polished = []
+    for zi in z:
+        polished.append(_newton(zi, c, d))
+    # real roots: imaginary part at the rounding level
+    real, upper, lower = [], [], []
+    for zi in polished:
+        if abs(zi.imag) <= 1e-10 * max(1.0, abs(zi)):
+            real.append(zi.real)
+        elif zi.imag > 0:
+            upper.append(zi)
+        else:
+            lower.append(zi)
+    while len(upper) != len(lower):          # no partner: the one nearest the axis is real
+        side = upper if len(upper) > len(lower) else lower
+        nearest = min(side, key=lambda e: abs(e.imag))
+        side.remove(nearest)
+        real.append(nearest.real)
+    for x in real:
+        out.append(complex(_newton_real(x, c, d), 0.0))
+    for zu in upper:
+        partner = min(lower, key=lambda e: abs(e - zu.conjugate()))
+        lower.remove(partner)
+        zp = _newton(0.5 * (zu + partner.conjugate()), c, d)
+        zp = complex(zp.real, abs(zp.imag))
+        out.extend([zp, zp.conjugate()])
+    return out
+
+
+def _newton(z: complex, c: list[float], d: list[float], steps: int = 4) -> complex:
+    """Newton steps on c from z, kept while the residual does not grow."""
+    value = polyval(z, c)
+    for _ in range(steps):
+        slope = polyval(z, d)
+        if value == 0 or slope == 0:
+            break
+        trial = z - value / slope
+        new = polyval(trial, c)
+        if not abs(new) <= abs(value):
+            break
+        z, value = trial, new
+    return complex(z)
+
+
+def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> float:
+    value = polyval(x, c)
+    for _ in range(steps):
+        slope = polyval(x, d)
+        if value == 0 or slope == 0:
+            break
+        trial = x - value / slope
+        new = polyval(trial, c)
+        if not abs(new) <= abs(value):
+            break
+        x, value = trial, new
+    return float(x)
 
 
 # ---- the characteristic polynomial as polynomials in v ------------------------
 
-def characteristic(m: Matrices, g: float) -> list[np.ndarray]:
+def characteristic(m: Matrices, g: float) -> list[list[float]]:
     """[a0, a1, a2, a3, a4]: det(M s^2 + v C1 s + g K0 + v^2 K2) = sum a_k(v) s^k.
 
-    Each a_k is a numpy.polynomial coefficient array in v (lowest power first).
+    Each a_k is a list of coefficients in v (lowest power first).
     For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
       a3 = A11 B22 + B11 A22 - A12 B21 - B12 A21,
       a2 = A11 C22 + B11 B22 + C11 A22 - A12 C21 - B12 B21 - C12 A21,
       a1 = B11 C22 + C11 B22 - B12 C21 - C12 B21.
     """
-    A = [[np.array([m.M[i, j]]) for j in range(2)] for i in range(2)]
-    B = [[np.array([0.0, m.C1[i, j]]) for j in range(2)] for i in range(2)]
-    C = [[np.array([g * m.K0[i, j], 0.0, m.K2[i, j]]) for j in range(2)] for i in range(2)]
+    A = [[[m.M[i][j]] for j in range(2)] for i in range(2)]
+    B = [[[0.0, m.C1[i][j]] for j in range(2)] for i in range(2)]
+    C = [[[g * m.K0[i][j], 0.0, m.K2[i][j]] for j in range(2)] for i in range(2)]
 
     def cross(X, Y):
         """X11 Y22 + Y11 X22 - X12 Y21 - Y12 X21: the mixed term of det(X + Y)."""
-        return P.polysub(P.polyadd(P.polymul(X[0][0], Y[1][1]), P.polymul(Y[0][0], X[1][1])),
-                         P.polyadd(P.polymul(X[0][1], Y[1][0]), P.polymul(Y[0][1], X[1][0])))
+        return polysub(polyadd(polymul(X[0][0], Y[1][1]), polymul(Y[0][0], X[1][1])),
+                       polyadd(polymul(X[0][1], Y[1][0]), polymul(Y[0][1], X[1][0])))
 
     def det(X):
-        return P.polysub(P.polymul(X[0][0], X[1][1]), P.polymul(X[0][1], X[1][0]))
+        return polysub(polymul(X[0][0], X[1][1]), polymul(X[0][1], X[1][0]))
 
     a4 = det(A)
     a3 = cross(A, B)
-    a2 = P.polyadd(cross(A, C), det(B))
+    a2 = polyadd(cross(A, C), det(B))
     a1 = cross(B, C)
     a0 = det(C)
-    return [np.trim_zeros(a, "b") if np.any(a) else np.zeros(1) for a in (a0, a1, a2, a3, a4)]
+    return [_trim(a) for a in (a0, a1, a2, a3, a4)]
 
 
-def hurwitz(coeffs: list[np.ndarray]) -> np.ndarray:
+def hurwitz(coeffs: list[list[float]]) -> list[float]:
     """H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 as a polynomial in v.
 
     With a4 > 0, all four roots have negative real parts iff every a_k > 0 and
@@ -224,40 +426,39 @@ def hurwitz(coeffs: list[np.ndarray]) -> np.ndarray:
     and of H3(v) (a complex pair through the axis: weave-type).
     """
     a0, a1, a2, a3, a4 = coeffs
-    h = P.polysub(P.polymul(P.polymul(a1, a2), a3),
-                  P.polyadd(P.polymul(a0, P.polymul(a3, a3)), P.polymul(P.polymul(a1, a1), a4)))
-    return h
+    return polysub(polymul(polymul(a1, a2), a3),
+                   polyadd(polymul(a0, polymul(a3, a3)), polymul(polymul(a1, a1), a4)))
 
 
-def _positive_roots(poly: np.ndarray) -> list[float]:
+def _positive_roots(poly: list[float]) -> list[float]:
     """Real roots v > 0 of a polynomial in v that is even in v: solved in w = v^2.
 
-    Roots of the polynomial in w by numpy.roots, kept where real and positive,
-    then polished by Newton steps on the polynomial in v.
+    Roots of the polynomial in w, kept where real and positive, then polished by
+    Newton steps on the polynomial in v.
     """
-    poly = np.asarray(poly, dtype=float)
-    if not np.any(poly):
+    poly = [float(x) for x in poly]
+    if not any(poly):
         return []
-    even = poly[::2].copy()                  # coefficients of w^0, w^1, ...
+    even = poly[::2]                         # coefficients of w^0, w^1, ...
     # B = v C1 and C = g K0 + v^2 K2 have exact zero coefficients, so the factors of
     # w (roots at v = 0) come out as exact zeros, not as rounding noise.
-    while even.size and even[0] == 0:        # factors of w (v = 0 roots)
+    while even and even[0] == 0:             # factors of w (v = 0 roots)
         even = even[1:]
-    even = np.trim_zeros(even, "b")
-    if even.size < 2:
+    while even and even[-1] == 0:
+        even = even[:-1]
+    if len(even) < 2:
         return []
-    roots = np.roots(even[::-1])
     out = []
-    d = P.polyder(poly)
-    for r in roots:
+    d = polyder(poly)
+    for r in roots(even):
         if abs(r.imag) > 1e-9 * max(1.0, abs(r)) or r.real <= 0:
             continue
         v = math.sqrt(r.real)
         for _ in range(8):
-            slope = P.polyval(v, d)
+            slope = polyval(v, d)
             if slope == 0:
                 break
-            step = P.polyval(v, poly) / slope
+            step = polyval(v, poly) / slope
             v -= step
             if abs(step) <= 1e-16 * abs(v):
                 break
@@ -278,7 +479,7 @@ class Stability:
 
 def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
     """The largest real part of the eigenvalues at speed v."""
-    return float(np.max(eigenvalues(m, v, g).real))
+    return max(eigenvalues(m, v, g).real)
 
 
 def stability(m: Matrices, g: float) -> Stability:
@@ -292,14 +493,14 @@ def stability(m: Matrices, g: float) -> Stability:
     capsize, weave, other = [], [], []
     for v in _positive_roots(coeffs[0]):
         ev = eigenvalues(m, v, g)
-        if np.min(np.abs(ev)) <= 1e-6 * max(1.0, float(np.max(np.abs(ev)))):
+        if min(abs(e) for e in ev) <= 1e-6 * max(1.0, max(abs(e) for e in ev)):
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
     for v in _positive_roots(hurwitz(coeffs)):
         ev = eigenvalues(m, v, g)
-        scale = max(1.0, float(np.max(np.abs(ev))))
-        near = ev[np.argmin(np.abs(ev.real))]
+        scale = max(1.0, max(abs(e) for e in ev))
+        near = min(ev, key=lambda e: abs(e.real))
         if abs(near.real) <= 1e-6 * scale and abs(near.imag) > 1e-6 * scale:
             weave.append(v)                  # a pair +-i omega on the imaginary axis
         else:
@@ -317,11 +518,11 @@ def stability(m: Matrices, g: float) -> Stability:
     return Stability(weave, capsize, stable, other)
 
 
-def motion(ev: np.ndarray, tol: float = 1e-12) -> str:
+def motion(ev: Spectrum, tol: float = 1e-12) -> str:
     """stable, or which mode grows: capsize (a real eigenvalue > 0: the bicycle falls
     over without oscillating), weave (a complex pair with positive real part: an
     oscillation of lean and steer that grows), or 'capsize and weave'."""
-    scale = max(1.0, float(np.max(np.abs(ev))))
+    scale = max(1.0, max(abs(e) for e in ev))
     growing = [e for e in ev if e.real > tol * scale]
     real = any(abs(e.imag) <= tol * scale for e in growing)
     pair = any(abs(e.imag) > tol * scale for e in growing)
