@@ -163,6 +163,10 @@ class _Parser:
                 return left
 
     def _unit_after(self, node: Node) -> Node:
+        return self._with_unit(node)
+
+    def _with_unit(self, node: Node) -> Node:
+        """``node`` followed by unit words (``9.815 m/s^2``) is a Quantity."""
         if self.units:
             n = unit_run(self.toks, self.i)
             if n:
@@ -237,13 +241,7 @@ class _Parser:
                 and after.text == "1" or after.kind == "name" and after.text in UNITS):
             self.i += 1  # an imaginary part: 4.46 i, 3.07911i
             node = Num(t.text + "i")
-        if self.units:
-            n = unit_run(self.toks, self.i)
-            if n:
-                unit = _join(self.toks[self.i:self.i + n])
-                self.i += n
-                return Quantity(node, unit)
-        return node
+        return self._with_unit(node)
 
     def _name(self, t: Token) -> Node:
         name = t.text
