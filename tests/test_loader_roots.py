@@ -252,3 +252,26 @@ def test_check_directory_lists_every_file_with_one_line_per_bad_file(run, tmp_pa
         assert following.startswith("  ERROR  ") and name in following
     assert "a_good.yaml" in result.stdout and "PASS" in result.stdout
     assert "Traceback" not in result.output
+
+
+def test_inertia_about_the_centre_without_a_mass(run, write):
+    """Found by the fuzz run on merged main: J and I_cg given, cg_distance given and no
+    mass made the parallel-axis step format a missing mass (internal error, exit 3)."""
+    free = write("id: x\nkind: torque_free\ngiven:\n  J: 8e37 kg m^2\n  I_cg: 7.9e37 kg m^2\n"
+                 "  axial_rate: 7.3e-5 rad/s\n  omega_angle: 0.25 arcsec\n  cg_distance: 0 um\n"
+                 "find:\n  precession: rad/s\n", "free.yaml")
+    one_line(run("solve", free), "given.cg_distance", "does not apply")
+    # steady precession under an applied moment, balanced (l = 0): I about the pivot is I_G
+    top = write("id: y\nkind: steady_precession\ngiven:\n  J: 0.02 kg m^2\n  I_cg: 0.05 kg m^2\n"
+                "  cg_distance: 0 m\n  theta: 60 deg\n  spin: 100 rad/s\n  moment: 2 N m\n"
+                "find:\n  precession: rad/s\n", "top.yaml")
+    result = run("solve", "--format", "json", top)
+    assert result.exit_code == 0, result.output
+    import json
+    import math
+    # (J - I) cos(th) x^2 + J psidot x - M / sin(th) = 0, I = I_G = 0.05 (l = 0), by hand
+    a, b, c = (0.02 - 0.05) * 0.5, 0.02 * 100, -2 / math.sin(math.radians(60))
+    roots = sorted([(-b + math.sqrt(b * b - 4 * a * c)) / (2 * a),
+                    (-b - math.sqrt(b * b - 4 * a * c)) / (2 * a)])
+    got = json.loads(result.stdout)["answers"]["precession"]["si_values"]
+    assert got == pytest.approx(roots, rel=1e-12)

@@ -226,8 +226,14 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
     if "I_pivot" in values:
         return values["I_pivot"]
     if "k_pivot" in values:
+        if m is None:
+            return None  # needs the mass, which the kind did not ask for
         k = values["k_pivot"]
         return work.step("I", "m k_O^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
+    if I_cg is not None and l is not None and m is None:
+        # no mass given (none needed): only a fixed point at the centre of mass is known
+        return work.step("I", "I_G", value=I_cg, unit="kg*m^2",
+                         note="(l = 0: the fixed point is the centre of mass)") if l == 0 else None
     if I_cg is not None and l is not None:
         return work.step("I", "I_G + m l^2",
                          f"{qty(I_cg, 'kg*m^2')} + {qty(m, 'kg')} ({qty(l, 'm')})^2",
