@@ -60,7 +60,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotating parts")
     work.step("omega", value=spin, unit="rad/s", note="engine speed")
     work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin, "kg m^2/s")
-    H = V.scale(J * spin * direction, V.FORWARD)
+    H = V.spin_vector(J, spin, direction)
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'forward (toward the nose), +x' if direction > 0 else 'aft (toward the tail), -x'}"

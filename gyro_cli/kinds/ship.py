@@ -61,7 +61,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.section("Rotor")
     work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotor")
     work.step("omega", value=spin, unit="rad/s", note="rotor speed")
-    H = V.scale(J * spin * direction, V.FORWARD)
+    H = V.spin_vector(J, spin, direction)
     Hmag = work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
                      "kg m^2/s")
     if sense:

@@ -208,21 +208,6 @@ def matrices(p: dict[str, float], gyroscopic: bool = True) -> Matrices:
     return Matrices(M, C1, K0, K2)
 
 
-def state_matrix(m: Matrices, v: float, g: float) -> list[list[float]]:
-    """The 4x4 A of x' = A x, x = (phi, delta, phi', delta'): Eq. 5.3 solved for q''."""
-    (a, b), (c, d) = m.M
-    det = a * d - b * c
-    inv = ((d / det, -b / det), (-c / det, a / det))
-    K = [[g * m.K0[i][j] + v * v * m.K2[i][j] for j in range(2)] for i in range(2)]
-    C = [[v * m.C1[i][j] for j in range(2)] for i in range(2)]
-
-    def times(X):
-        return [[-(inv[i][0] * X[0][j] + inv[i][1] * X[1][j]) for j in range(2)]
-                for i in range(2)]
-
-    lower_left, lower_right = times(K), times(C)
-    return [[0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0],
-            lower_left[0] + lower_right[0], lower_left[1] + lower_right[1]]
 
 
 def eigenvalues(m: Matrices, v: float, g: float) -> Spectrum:

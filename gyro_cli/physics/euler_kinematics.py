@@ -94,8 +94,6 @@ def matvec(a: Matrix, v: Sequence[float]) -> Vector:
     return tuple(sum(a[i][k] * v[k] for k in range(3)) for i in range(3))  # type: ignore
 
 
-def transpose(a: Matrix) -> Matrix:
-    return tuple(tuple(a[j][i] for j in range(3)) for i in range(3))  # type: ignore
 
 
 def attitude(sequence: str, first: float, second: float, third: float) -> Matrix:

@@ -83,9 +83,9 @@ def spin_direction(sense: str) -> float:
     return away if looking_forward else -away
 
 
-def spin_vector(J: float, spin: float, sense: str) -> Vector:
-    """H = J omega s along the fore-and-aft axis (spin >= 0, its magnitude)."""
-    return scale(J * abs(spin) * spin_direction(sense), FORWARD)
+def spin_vector(J: float, spin: float, direction: float) -> Vector:
+    """H = J omega along the fore-and-aft axis; direction +1 forward, -1 aft (spin_direction)."""
+    return scale(J * spin * direction, FORWARD)
 
 
 # ---- the precession vector ------------------------------------------------------

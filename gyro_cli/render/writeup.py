@@ -125,9 +125,6 @@ def mixed(text: str, inline: tuple[str, str] = ("$", "$"), escape=text_escape) -
     return "".join(out)
 
 
-def is_prose(text: str) -> bool:
-    """A line that is not one formula (it is set as a sentence with maths inside)."""
-    return try_parse(text) is None
 
 
 # ---- width and breaking -----------------------------------------------------
