@@ -16,7 +16,7 @@ import click
 from . import __version__
 from .core.errors import InputError, internal_message
 
-FORMATS = ("text", "json", "markdown", "latex")
+FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
@@ -84,7 +84,8 @@ def _rendered(result, fmt: str) -> str:
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
               help="text: the worked answer; json: one JSON object per file, one per line; "
-                   "markdown, latex: a write-up for a solution sheet.")
+                   "markdown, latex: a write-up for a solution sheet; html: one self-contained "
+                   "page of all FILES (MathML formulas, inline pictures).")
 @click.option("--plot", "plot_file", metavar="FILE",
               help="released_top: also draw the axis's path, theta(t) and phidot(t) to FILE "
                    "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
@@ -124,7 +125,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                 from .render.us_units import to_us
 
                 result = to_us(result, given=fmt != "json")
-            text = None if standalone else _rendered(result, fmt)
+            text = None if standalone or fmt == "html" else _rendered(result, fmt)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -133,7 +134,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             internal(path, err)
             crashed += 1
             continue
-        if standalone:
+        if standalone or fmt == "html":
             document.append(result)
         else:
             if i and fmt in ("markdown", "latex"):
@@ -149,7 +150,15 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
-    if document:
+    if document and fmt == "html":
+        from .render import html
+
+        try:
+            click.echo(html.page(document), nl=False)
+        except Exception as err:  # a bug: one line, exit 3
+            internal(None, err)
+            crashed += 1
+    elif document:
         from .render import writeup
 
         click.echo(writeup.standalone(document), nl=False)

@@ -340,8 +340,15 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     refuse_special(path)  # a device, FIFO or directory: refused with or without --force
     if Path(path).exists() and not force:
         raise InputError("exists; not overwritten (use --force to replace it)", file=path)
+    return save(released_top_data(result, periods), path, force=force)
+
+
+def released_top_data(result, periods: float | None = None) -> PathData:
+    """What the picture of a solved released_top problem shows (by default enough
+    nutation periods for the axis to go once round the vertical)."""
     from ..physics.nutation import Start, Top
 
+    problem = result.problem
     given, body = problem.given, problem.given.body
     top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
     start = Start(theta0=given["theta0"], spin=given["spin"],
@@ -350,8 +357,7 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     title = f"{problem.id}  {problem.title}".strip()
     if periods is None:
         periods = _periods_for_one_turn(top, start)
-    data = with_rate_unit(from_analysis(top, start, periods=periods, title=title), problem)
-    return save(data, path, force=force)
+    return with_rate_unit(from_analysis(top, start, periods=periods, title=title), problem)
 
 
 def _periods_for_one_turn(top, start) -> float:

@@ -73,9 +73,7 @@ def plot_result(result, path: str, force: bool = False) -> Path:
 
     from ..core.errors import InputError
     from ..core.files import write_atomic
-    from ..kinds.bicycle import parameters
     from .picture_formats import FORMATS
-    from ..core.work import Work
 
     suffix = Path(path).suffix
     fmt = FORMATS.get(suffix.lower())
@@ -84,13 +82,21 @@ def plot_result(result, path: str, force: bool = False) -> Path:
                          ".png, .svg or .pdf", file=path)
     if Path(path).exists() and not force:
         raise InputError("exists; not overwritten (use --force to replace it)", file=path)
-    problem = result.problem
-    given = problem.given
-    p = parameters(given, Work())
-    title = f"{problem.id}  {problem.title}".strip()
-    fig = figure(p, given.word("gyroscopic", "true") == "true", given.get("speed"), title)
+    fig = result_figure(result)
     buffer = io.BytesIO()
     metadata = {"Software": None} if fmt == "png" else \
         ({"Date": None} if fmt == "svg" else {"CreationDate": None})
     fig.savefig(buffer, format=fmt, dpi=120, metadata=metadata)
     return write_atomic(path, buffer.getvalue(), force=force)
+
+
+def result_figure(result):
+    """The Figure of a solved bicycle problem (its parameters, wheel spin and speed)."""
+    from ..core.work import Work
+    from ..kinds.bicycle import parameters
+
+    problem = result.problem
+    given = problem.given
+    p = parameters(given, Work())
+    title = f"{problem.id}  {problem.title}".strip()
+    return figure(p, given.word("gyroscopic", "true") == "true", given.get("speed"), title)

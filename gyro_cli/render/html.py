@@ -1,0 +1,468 @@
+"""Worked answers as HTML: a self-contained, accessible page, and fragments for Jupyter.
+
+`gyro solve --format html` writes `page`; `gyro check --html` writes
+`check_page`; a `Result` in Jupyter shows `worked_answer`. Other tools that
+want the worked answer as HTML (quiz feedback, handouts) call
+`worked_answer(result)`: an ``<article>`` that needs no stylesheet to read.
+
+The page asks nothing of the network (no script, no web font, no stylesheet
+or image from elsewhere; a Content-Security-Policy says so to the browser).
+Formulas are MathML, which browsers render natively and screen readers speak;
+pictures are inline SVG with a title that says what they show. Headings,
+tables (with header cells) and lists are marked up as such, the language is
+declared, colours meet WCAG 2.1 AA contrast in light and dark schemes
+(``prefers-color-scheme``), the page reads at 360 px wide (long equations
+break into rows at their ``=`` and their sums' signs, and scroll in their own
+box where a single term is still wider), and it prints without its colours.
+Every string from a problem file is HTML-escaped.
+"""
+
+from __future__ import annotations
+
+import re
+from html import escape
+
+from ..core.work import num
+from ..solving.solve import Result
+from . import mathml
+from .mathprint import text as plain_text
+from .mathml import MathMLPrinter, math_element, symbol_mathml
+from .mathparse import spans, try_parse
+from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
+from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
+
+__all__ = ["worked_answer", "page", "check_page", "STYLE", "formula_mathml", "prose_html"]
+
+#: a step wider than this (characters of maths) is set as rows, one ``=`` a row
+ROW_WIDTH = 30
+#: inline maths wider than this may not fit a phone's line: it scrolls in its own box
+INLINE_WIDTH = 30
+
+STYLE = """
+:root { color-scheme: light dark; --fg: #1b1b1b; --bg: #ffffff; --muted: #4a4a4a;
+  --rule: #c8c8c8; --link: #0645ad; --note-bg: #fff4e0; --note-fg: #3d2600;
+  --fail: #a3001b; --pass: #1d5e20; --head-bg: #f0f0f0; }
+@media (prefers-color-scheme: dark) {
+  :root { --fg: #e8e8e8; --bg: #161616; --muted: #c4c4c4; --rule: #5a5a5a;
+    --link: #9cc3ff; --note-bg: #3b2a0a; --note-fg: #ffe4b0; --fail: #ff9a9a;
+    --pass: #8fdc8f; --head-bg: #262626; }
+}
+html { -webkit-text-size-adjust: 100%; }
+body { margin: 0; background: var(--bg); color: var(--fg);
+  font: 1rem/1.5 system-ui, -apple-system, "Segoe UI", Roboto, "Noto Sans", sans-serif; }
+main { max-width: 52rem; margin: 0 auto; padding: 1rem; }
+a { color: var(--link); }
+h1 { font-size: 1.5rem; line-height: 1.25; }
+h2 { font-size: 1.3rem; line-height: 1.3; margin-top: 2rem; }
+h3 { font-size: 1.1rem; margin: 1.4rem 0 0.4rem; }
+h4 { font-size: 1rem; margin: 1.2rem 0 0.3rem; }
+.gyro .meta, .gyro .eqno, .gyro .mi { display: inline-block; max-width: 100%; overflow-x: auto; overflow-y: hidden;
+  vertical-align: middle; }
+.gyro .stepnote { color: var(--muted); }
+.gyro .eq { display: flex; flex-wrap: wrap; align-items: baseline; column-gap: 1rem;
+  margin: 0.3rem 0; }
+.gyro .eq > .m { max-width: 100%; overflow-x: auto; overflow-y: hidden; }
+.gyro .eq math[display="block"] { display: block math; text-align: left; margin: 0.15rem 0; }
+.gyro .eq mtd { text-align: left; padding: 0.1em 0; }
+.gyro .mi { display: inline-block; max-width: 100%; overflow-x: auto; overflow-y: hidden;
+  vertical-align: middle; }
+.gyro .stepnote { margin: 0 0 0.4rem 1rem; }
+.gyro p { margin: 0.4rem 0; overflow-wrap: anywhere; }
+.gyro math { font-size: 1.15em; }
+.gyro .table { max-width: 100%; overflow-x: auto; }
+.gyro table { border-collapse: collapse; margin: 0.4rem 0; }
+.gyro th, .gyro td { border-bottom: 1px solid var(--rule); padding: 0.25rem 0.6rem 0.25rem 0;
+  text-align: left; vertical-align: baseline; }
+.gyro td { overflow-wrap: anywhere; }
+.gyro thead th { border-bottom: 2px solid var(--rule); }
+.gyro .warnings { background: var(--note-bg); color: var(--note-fg); padding: 0.3rem 1rem;
+  border-radius: 0.3rem; }
+.gyro .warnings a { color: inherit; }
+.gyro figure { margin: 1rem 0; }
+.gyro svg.picture { display: block; max-width: 100%; height: auto; background: #ffffff; }
+.gyro figcaption { color: var(--muted); font-size: 0.95rem; }
+.gyro .fail { color: var(--fail); font-weight: 600; }
+.gyro .pass { color: var(--pass); }
+.gyro .error { color: var(--fail); }
+.gyro blockquote { margin: 0.4rem 0 0.4rem 1rem; }
+.skip { position: absolute; left: -10000px; }
+.skip:focus { position: static; }
+@media print {
+  :root { --fg: #000; --bg: #fff; --muted: #333; --rule: #999; --link: #000;
+    --note-bg: #fff; --note-fg: #000; --fail: #000; --pass: #000; }
+  body { font-size: 10.5pt; }
+  main { max-width: none; padding: 0; }
+  .gyro .eq > .m, .gyro .table, .gyro .mi { overflow: visible; }
+  .gyro article.problem { break-before: page; }
+  .gyro article.problem:first-of-type { break-before: auto; }
+  .gyro h2, .gyro h3, .gyro h4 { break-after: avoid; }
+  .gyro .eq, .gyro figure, .gyro tr { break-inside: avoid; }
+  .gyro .warnings { border: 1px solid #000; }
+  .skip { display: none; }
+}
+"""
+
+# No request may leave the page: nothing loads from anywhere, styles are inline.
+CSP = "default-src 'none'; style-src 'unsafe-inline'; img-src data:"
+
+
+# ---- the switch: formulas -----------------------------------------------------
+
+def formula_mathml(node: Node, display: bool = True) -> str:
+    """The one place a formula becomes MathML (content of a <math> element)."""
+    return mathml.tree_mathml(node, display)
+
+
+def _math(node: Node, display: bool = False) -> str:
+    return math_element(formula_mathml(node, display), display=display)
+
+
+def prose_html(text: str) -> str:
+    """Prose with its maths as inline MathML; the file's keys (psi_rate) as words."""
+    out = []
+    for is_key, piece in _split_keys(text):
+        if is_key:
+            out.append(escape(piece))
+            continue
+        for is_math, part in spans(piece):
+            out.append(_inline(part) if is_math else escape(part))
+    return "".join(out)
+
+
+def _inline(node: Node) -> str:
+    """Inline maths; a long chain ``a = b = c`` as one <math> per link, so that the line
+    may wrap between them on a narrow screen."""
+    if isinstance(node, Rel) and node.first is not None and width(node) > 16:
+        return " ".join([_inline(node.first)] + [_inline(Rel(None, ((op, rhs),)))
+                                                  for op, rhs in node.rest])
+    if len(plain_text(node)) > INLINE_WIDTH:  # may be wider than a phone: its own sideways scroll
+        return (f'<span class="mi" tabindex="0" role="group" aria-label="formula (scrolls '
+                f'sideways)">{_math(node)}</span>')
+    return _math(node)
+
+
+def _unparsed(text: str) -> Node:
+    """Text that does not parse whole, set piece by piece (words as words)."""
+    from .mathtree import Tex
+
+    return Tex("", text)
+
+
+# ---- steps ----------------------------------------------------------------------
+
+def _terms(node: Node) -> list[tuple[str, Node]]:
+    """A sum as its signed terms, a product as its factors (the places a row may break)."""
+    if isinstance(node, BinOp) and node.op in ("+", "-"):
+        return _terms(node.left) + [(node.op, node.right)]
+    if isinstance(node, BinOp) and node.op in (" ", "*", ".", "x"):
+        left = _terms(node.left) if not _is_sum(node.left) else [("", node.left)]
+        if len(left) > 1 and any(sign in ("+", "-") for sign, _ in left[1:]):
+            return [("", node)]
+        return left + [(node.op, node.right)]
+    return [("", node)]
+
+
+def _is_sum(node: Node) -> bool:
+    return isinstance(node, BinOp) and node.op in ("+", "-")
+
+
+def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
+    """One right-hand side as MathML rows with their widths: whole, or broken at the signs
+    of its sum or between the factors of its product."""
+    printer = MathMLPrinter(True)
+    terms = _terms(piece)
+    if width(piece) <= budget or len(terms) == 1:
+        return [(printer.doprint(piece), width(piece))]
+    rows: list[tuple[str, float]] = []
+    line, used = "", 0.0
+    for sign, term in terms:
+        if sign in ("+", "-"):
+            # printed against a 0 that is then dropped: "<mrow><mn>0</mn><mo>+</mo>..."
+            text = printer.doprint(BinOp(sign, Num("0"), term)).replace("<mrow><mn>0</mn>",
+                                                                        "<mrow>", 1)
+        elif sign:
+            op = {" ": mathml.INVISIBLE_TIMES, "*": "<mo>⋅</mo>", ".": "<mo>⋅</mo>",
+                  "x": "<mo>×</mo>"}[sign]
+            factor = printer.parenthesize(term, mathml.PRECEDENCE["*"])
+            if sign == " " and line:
+                op = mathml.THIN + op
+            text = f"<mrow>{op}{factor}</mrow>"
+        else:
+            text = printer.doprint(term) if _is_sum(piece) else \
+                printer.parenthesize(term, mathml.PRECEDENCE["*"])
+        w = width(term) + (3 if sign in ("+", "-") else 1)
+        if line and used + w > budget:
+            rows.append((line, used))
+            line, used = "", 0.0
+        line += text
+        used += w
+    rows.append((line, used))
+    return rows
+
+
+def _equation(lhs: Node | None, pieces: list[Node], relation: str = "=") -> tuple[str, bool]:
+    """``lhs = p1 = p2 ...`` as one <math> element (rows in an <mtable> when wide);
+    also whether it may still be wider than a phone (then its box scrolls)."""
+    printer = MathMLPrinter(True)
+    left = printer.doprint(lhs) if lhs is not None else ""
+    rel = f"<mo>{mathml.RELATIONS[relation]}</mo>"
+    total = width(lhs) + sum(width(p) + 3 for p in pieces)
+    if total <= ROW_WIDTH:
+        body = left + "".join(rel + printer.doprint(p) for p in pieces)
+        return math_element(f"<mrow>{body}</mrow>", display=True), False
+    rows, wide = [], False
+    for k, piece in enumerate(pieces):
+        for j, (row, w) in enumerate(_piece_rows(piece, ROW_WIDTH)):
+            head = left if k == 0 and j == 0 else ""
+            op = rel if j == 0 else "<mspace width=\"1em\"/>"
+            wide = wide or w > ROW_WIDTH - 2
+            rows.append(f"<mtr><mtd><mrow>{head}</mrow></mtd><mtd><mrow>{op}{row}</mrow></mtd></mtr>")
+    wide = wide or width(lhs) > 12
+    return math_element(f"<mtable>{''.join(rows)}</mtable>", display=True), wide
+
+
+def _eq_div(math: str, wide: bool, tag: str = "", note: str = "") -> str:
+    """An equation's box: the maths (focusable when it may scroll), its chapter number."""
+    focus = ' tabindex="0" role="group" aria-label="equation (scrolls sideways)"' if wide else ""
+    out = f'<div class="eq"><div class="m"{focus}>{math}</div>'
+    if tag:
+        out += f'<span class="eqno">(Eq. {escape(tag)})</span>'
+    out += "</div>"
+    if note:
+        out += f'<p class="stepnote">{prose_html(note)}</p>'
+    return out
+
+
+def _step_html(step) -> str:
+    if step.symbol:
+        lhs, pieces = _step_pieces(step)
+        pieces = [_unparsed(p.plain) if type(p).__name__ == "Tex" else p for p in pieces]
+        if type(lhs).__name__ == "Tex":
+            lhs = _unparsed(lhs.plain)
+        tag, rest = _tag(step)
+        notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text else [])
+        math, wide = _equation(lhs, pieces)
+        return _eq_div(math, wide, tag, " ".join(notes))
+    text = step.text.strip()
+    tag = ""
+    cited = _CITED.search(text)
+    if cited and try_parse(text[:cited.start()]) is not None:
+        text, tag = text[:cited.start()], cited.group(1)
+    tree = try_parse(text)
+    if isinstance(tree, Rel) and tree.rest:
+        if len({op for op, _ in tree.rest}) == 1:
+            math, wide = _equation(tree.first, [rhs for _, rhs in tree.rest], tree.rest[0][0])
+        else:
+            math = _math(tree, display=True)
+            wide = width(tree) > ROW_WIDTH + 8
+        return _eq_div(math, wide, tag)
+    return f"<p>{prose_html(step.text.strip())}</p>"
+
+
+# ---- a worked answer --------------------------------------------------------------
+
+def _heading(level: int, text: str, ident: str | None = None) -> str:
+    level = min(max(level, 1), 6)
+    attr = f' id="{escape(ident)}"' if ident else ""
+    return f"<h{level}{attr}>{text}</h{level}>"
+
+
+def _quantity(value: float | str, unit: str | None) -> str:
+    if isinstance(value, str):
+        return escape(value.replace("_", " "))
+    unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(unit or "", unit or "")
+    node: Node = Quantity(Num(num(value)), unit) if unit else Num(num(value))
+    return _math(node)
+
+
+def _given_table(result: Result, level: int) -> str:
+    solution = result.solution
+    rows = []
+    for g in solution.given:
+        symbol = try_parse(g.symbol, units=False)
+        sym = _math(symbol) if symbol is not None else escape(g.symbol)
+        text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
+        note = f" ({escape(g.note)})" if g.note else ""
+        rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{escape(text)}{note}</td>"
+                    f"<td>{_quantity(g.si_value, g.si_unit)}</td></tr>")
+    return (_heading(level, "Given") + _table_box("Given") + '<table><thead><tr><th scope="col">symbol</th>'
+            f'<th scope="col">as given</th><th scope="col">{escape(solution.system)}</th>'
+            "</tr></thead><tbody>" + "".join(rows) + "</tbody></table></div>")
+
+
+def _answers_table(result: Result, level: int) -> str:
+    rows = []
+    for name, answer in result.answers.items():
+        parts = []
+        for i, value in enumerate(answer.values):
+            label = answer.labels[i] if i < len(answer.labels) else ""
+            parts.append(_quantity(value, answer.unit if not isinstance(value, str) else None)
+                         + (f" ({escape(label)})" if label else ""))
+        lhs = ""
+        if _answer_lhs(answer):
+            tree = try_parse(answer.symbol, units=False)
+            lhs = _math(tree) if tree is not None else ""
+        values = ", ".join(parts) if parts else "none"
+        rows.append(f'<tr id="{escape(_answer_id(result, name))}"><th scope="row">'
+                    f"{escape(name.replace('_', ' '))}</th><td>{lhs}</td><td>{values}</td></tr>")
+    return (_heading(level, "Answer") + _table_box("Answers") + '<table class="answers"><thead><tr><th scope="col">answer</th>'
+            '<th scope="col">symbol</th><th scope="col">value</th></tr></thead><tbody>'
+            + "".join(rows) + "</tbody></table></div>")
+
+
+def _table_box(label: str) -> str:
+    """A table's box: it scrolls sideways where the screen is narrower than the table, so it
+    can take the keyboard's focus (WCAG 2.1.1) and is named for screen readers."""
+    return f'<div class="table" role="region" tabindex="0" aria-label="{escape(label)} table">'
+
+
+def anchor(result_or_file) -> str:
+    """The id of a problem's worked answer on a page (from its file, else its id)."""
+    if isinstance(result_or_file, str):
+        key = result_or_file
+    else:
+        problem = result_or_file.problem
+        key = problem.file or str(problem.id)
+    return "p-" + re.sub(r"[^A-Za-z0-9_-]+", "-", key).strip("-")
+
+
+def _answer_id(result: Result, name: str) -> str:
+    return f"{anchor(result)}-{name}"
+
+
+def worked_answer(result: Result, level: int = 2, picture: bool = True,
+                  ident: str | None = None) -> str:
+    """One solved problem as an ``<article>``: title, source, notes, picture, Given table,
+    the steps with MathML formulas, the checks, the answers and the warnings.
+
+    ``level``: the heading level of the title (sections one below). Needs no
+    stylesheet to read; `STYLE` lays it out (rows, tables, dark mode).
+    """
+    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
+    try:
+        return _worked_answer(result, level, picture, ident or anchor(result))
+    finally:
+        _KEYS[0] = saved
+
+
+def _worked_answer(result: Result, level: int, picture: bool, ident: str) -> str:
+    problem, solution = result.problem, result.solution
+    title = f"{problem.id}: {problem.title}" if problem.title else str(problem.id)
+    out = [f'<article class="problem" aria-labelledby="{escape(ident)}">',
+           _heading(level, escape(title), ident)]
+    meta = f"Kind: {escape(problem.kind.name.replace('_', ' '))}."
+    if problem.source:
+        meta += f" Source: {escape(problem.source)}."
+    out.append(f'<p class="meta">{meta}</p>')
+    for note in problem.notes:
+        out.append(f"<blockquote><p>{prose_html(note)}</p></blockquote>")
+    if picture:
+        out.append(_figure(result, ident))
+    out.append(_given_table(result, level + 1))
+    for section in solution.sections:
+        out.append(_heading(level + 1, prose_html(section.title)))
+        out += [_step_html(step) for step in section.steps]
+    if solution.checks:
+        out.append(_heading(level + 1, "Check"))
+        out += [_step_html(step) for step in solution.checks]
+    out.append(_answers_table(result, level + 1))
+    if solution.warnings:
+        out.append(f'<section class="warnings" aria-label="warnings">'
+                   f"{_heading(level + 1, 'Warnings')}<ul>"
+                   + "".join(f"<li>{prose_html(w)}</li>" for w in solution.warnings)
+                   + "</ul></section>")
+    out.append("</article>")
+    return "\n".join(x for x in out if x)
+
+
+def _figure(result: Result, ident: str) -> str:
+    from .picture import KINDS, picture
+
+    if result.problem.kind.name not in KINDS:
+        return ""
+    pic = picture(result, prefix=f"{ident}-fig")
+    if pic is None:
+        return ""
+    return f"<figure>{pic.svg}<figcaption>{escape(pic.alt)}</figcaption></figure>"
+
+
+# ---- pages ------------------------------------------------------------------------
+
+def document(title: str, body: str) -> str:
+    """A whole HTML document around ``body`` (inside <main>)."""
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            f"<meta http-equiv=\"Content-Security-Policy\" content=\"{CSP}\">\n"
+            "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+            "<meta name=\"color-scheme\" content=\"light dark\">\n"
+            "<meta name=\"generator\" content=\"gyro\">\n"
+            f"<title>{escape(title)}</title>\n<style>{STYLE}</style>\n</head>\n"
+            "<body>\n<a class=\"skip\" href=\"#main\">Skip to the content</a>\n"
+            f"<main id=\"main\" class=\"gyro\">\n{body}\n</main>\n</body>\n</html>\n")
+
+
+def page(results: list[Result], title: str | None = None) -> str:
+    """One self-contained page: a single problem, or several with a contents list."""
+    if len(results) == 1:
+        r = results[0]
+        title = title or (f"{r.problem.id}: {r.problem.title}" if r.problem.title
+                          else str(r.problem.id))
+        return document(title, worked_answer(r, level=1))
+    title = title or "Worked solutions"
+    items = "".join(f'<li><a href="#{escape(anchor(r))}">{escape(str(r.problem.id))}'
+                    + (f": {escape(r.problem.title)}" if r.problem.title else "") + "</a></li>"
+                    for r in results)
+    body = [f"<h1>{escape(title)}</h1>",
+            f'<nav aria-label="problems"><h2>Problems</h2><ol>{items}</ol></nav>']
+    body += [worked_answer(r, level=2) for r in results]
+    return document(title, "\n".join(body))
+
+
+def check_page(run, results: dict[str, Result] | None = None,
+               title: str = "gyro check") -> str:
+    """`gyro check --html`: the check table as a page, failing answers (and bad files) first,
+    each linking to its worked answer further down the page."""
+    from .check_report import summary_line
+
+    results = results or {}
+    rows = []
+    order = {"error": 0, "fail": 1, "no expected answers": 3, "pass": 2}
+    for p in sorted(run.problems, key=lambda p: order.get(p.status, 9)):
+        where = escape(p.file) if p.file not in results else \
+            f'<a href="#{escape(anchor(results[p.file]))}">{escape(p.file)}</a>'
+        name = escape(f"{p.id}: {p.title}" if p.title else (p.id or ""))
+        if p.status == "error":
+            rows.append((0, f'<tr><td class="error">ERROR</td><td>{where}</td><td>{name}</td>'
+                            f'<td colspan="5">{escape(p.error or "")}</td></tr>'))
+            continue
+        if p.status == "no expected answers":
+            rows.append((3, f"<tr><td>----</td><td>{where}</td><td>{name}</td>"
+                            '<td colspan="5">no expected answers (not checked)</td></tr>'))
+            continue
+        for a in p.answers:
+            status = "PASS" if a.passed and a.keyed else "----" if a.passed else "FAIL"
+            cls = {"PASS": "pass", "FAIL": "fail"}.get(status, "")
+            target = results.get(p.file)
+            label = escape(a.label)
+            if target is not None and a.name in target.answers:
+                label = f'<a href="#{escape(_answer_id(target, a.name))}">{label}</a>'
+            note = a.message if not a.passed or not a.keyed else ""
+            if a.slip:
+                note += f"; likely slip: {a.slip}"
+            error = "" if a.relative_error is None else f"{a.relative_error * 100:+.2f}%"
+            rows.append((0 if status == "FAIL" else 2 if status == "PASS" else 1,
+                         f'<tr><td class="{cls}">{status}</td><td>{where}</td><td>{label}</td>'
+                         f"<td>{escape(a.expected or '-')}</td><td>{escape(a.got or '-')}</td>"
+                         f"<td>{escape(error)}</td><td>{escape(a.tolerance)}</td>"
+                         f"<td>{escape(note)}</td></tr>"))
+    rows.sort(key=lambda r: r[0])
+    table = (_table_box("Checked answers") + '<table><caption>Every checked answer, failing ones first'
+             '</caption><thead><tr><th scope="col">status</th><th scope="col">file</th>'
+             '<th scope="col">answer</th><th scope="col">expected</th><th scope="col">got</th>'
+             '<th scope="col">error</th><th scope="col">tolerance</th><th scope="col">note</th>'
+             "</tr></thead><tbody>" + "".join(r[1] for r in rows) + "</tbody></table></div>")
+    body = [f"<h1>{escape(title)}</h1>", f"<p><strong>{escape(summary_line(run))}</strong></p>",
+            "<h2>Answers</h2>", table]
+    if results:
+        body.append("<h2>Worked answers</h2>")
+        body += [worked_answer(r, level=3) for r in results.values()]
+    return document(title, "\n".join(body))
