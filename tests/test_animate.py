@@ -228,3 +228,75 @@ def test_html_animation_plays_in_chromium_without_console_errors(run, tmp_path):
         browser.close()
     assert errors == []
     assert drawn > 1000
+
+
+# ---- the rolling disk's integration (physics/rolling_motion.py) ----------------------
+
+def _hoop():
+    """problems/rolling_hoop_stable.yaml: a 0.35 m hoop at 3 m/s on a 20 m contact circle,
+    tilt 5.2523 deg (worked by hand in the file's notes); per unit mass J = r^2, I_G = r^2/2."""
+    from gyro_cli.physics import rolling_motion as rm
+
+    r = 0.35
+    d = rm.Disk(r, r * r, r * r / 2, 9.81)
+    tilt = math.radians(5.2523)
+    rho = 20.0 - r * math.sin(tilt)
+    return d, tilt, rho, 3.0 / rho
+
+
+def test_steady_rolling_stays_steady_when_undisturbed():
+    from gyro_cli.physics import rolling_motion as rm
+
+    d, tilt, rho, Om = _hoop()
+    t = np.linspace(0, 2 * math.pi / Om / 4, 50)      # a quarter lap
+    ys, drift = rm.integrate(d, rm.steady_start(d, tilt, rho, Om), t)
+    # the hand-worked tilt (5 significant figures) is steady to that precision
+    assert np.max(np.abs(rm.tilt_of(ys) - tilt)) < 2e-5
+    assert np.max(np.abs(np.hypot(ys[:, 9], ys[:, 10]) - rho)) < 1e-3
+    assert drift < 1e-9
+
+
+def test_disturbed_stable_rolling_wobbles_at_the_linearised_frequency():
+    from gyro_cli.physics import rolling_motion as rm
+    from gyro_cli.physics.stability import disk_rolling
+
+    d, tilt, rho, Om = _hoop()
+    v = disk_rolling(1.0, d.g, d.r, d.i, d.j, tilt, Om, -Om * rho / d.r)
+    assert v.word == "stable"
+    T = 2 * math.pi / v.frequency
+    t = np.linspace(0, 6 * T, 1201)
+    ys, drift = rm.integrate(d, rm.steady_start(d, tilt, rho, Om, kick=1e-4), t)
+    beta = rm.tilt_of(ys) - np.mean(rm.tilt_of(ys))
+    crossings = t[1:][np.sign(beta[1:]) != np.sign(beta[:-1])]
+    measured = 2 * np.mean(np.diff(crossings))
+    assert abs(measured - T) < 0.01 * T
+    assert drift < 1e-9
+
+
+def test_disturbed_unstable_rolling_grows_at_the_linearised_rate():
+    from gyro_cli.physics import rolling_motion as rm
+    from gyro_cli.physics.stability import disk_rolling
+
+    # problems/rolling_coin_upright.yaml: a quarter (r = 12.13 mm, thin disk) at 10 cm/s on a
+    # 1 m circle leans 0.08761 deg; Routh's upright speed is sqrt(g r / 3) = 0.199 m/s
+    from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
+
+    r = 0.01213
+    d = rm.Disk(r, r * r / 2, r * r / 4, 9.81)
+    (state,) = free_from_speed_and_path(1.0, d.g, r, d.j, d.i, 0.1, 1.0)
+    assert abs(math.degrees(state.tilt) - 0.08761) < 1e-5
+    tilt, rho, Om = state.tilt, state.centre_radius, state.precession
+    v = disk_rolling(1.0, d.g, r, d.i, d.j, tilt, Om, -Om * rho / r)
+    assert v.word == "unstable" and abs(v.growth_rate - 22.0) < 0.1
+    t = np.linspace(0, 0.4, 401)
+    ys, _ = rm.integrate(d, rm.steady_start(d, tilt, rho, Om, kick=1e-7), t)
+    dev = np.abs(rm.tilt_of(ys) - tilt)
+    window = (t > 0.1) & (t < 0.35)
+    rate = np.polyfit(t[window], np.log(dev[window]), 1)[0]
+    assert abs(rate - v.growth_rate) < 0.02 * v.growth_rate
+
+
+def test_rolling_disk_animation_is_integrated():
+    scene, runs = build_scene(str(PROBLEMS / "rolling_hoop_stable.yaml"), periods=1, fps=10)
+    assert any("Integrated" in n for n in scene.notes)
+    assert len(scene.panels) == 2      # the whole circle, and a close view of the hoop

@@ -246,38 +246,86 @@ def _rolling(problem, result, periods, speed, fps):
     if r is None or "precession" not in a and "precession" not in given:
         raise InputError("animating a rolling disk needs its radius and the steady motion",
                          file=problem.file)
-    pivot = given.word("arrangement", "free") == "axle_pivot"
-    if pivot:
-        precession, tilt, centre = given["precession"], 0.0, given["path_radius"]
-        spin = a["spin"].si_values[0] if "spin" in a else -precession * centre / r
-    else:
-        precession = a["precession"].si_values[0]
-        tilt = a["tilt"].si_values[0]
-        spin = a["spin"].si_values[0]
-        centre = a["path_radius"].si_values[0] - r * math.sin(tilt)
+    disk = cylinder(r, -0.04 * r, 0.04 * r)     # the body's own radius (disk or hoop)
+    if given.word("arrangement", "free") != "axle_pivot":
+        return _rolling_free(problem, result, periods, speed, fps, disk)
+    precession, centre = given["precession"], given["path_radius"]
+    spin = a["spin"].si_values[0] if "spin" in a else -precession * centre / r
     clock = make_clock(2 * math.pi / abs(precession), "laps", periods, speed, fps)
     t = clock.times
     phi = precession * t
-    R = zxz(phi, np.full_like(t, math.pi / 2 - tilt), spin * t)
+    R = zxz(phi, np.full_like(t, math.pi / 2), spin * t)
     position = np.column_stack([centre * np.sin(phi), -centre * np.cos(phi),
-                                np.full_like(t, r * math.cos(tilt))])
-    disk = cylinder(r, -0.04 * r, 0.04 * r)     # the body's own radius (disk or hoop)
-    a_ = np.linspace(0, 2 * math.pi, 121)
-    contact = centre + r * math.sin(tilt)
-    ground = np.column_stack([contact * np.cos(a_), contact * np.sin(a_), np.zeros_like(a_)])
-    labels = [[f"tilt {math.degrees(tilt):.2f} deg"]] * len(t)
-    panel = Panel("disk rolling on a circle", [Actor(disk, R, position)], None,
+                                np.full_like(t, r)])
+    panel = Panel("disk on an axle pinned to the shaft", [Actor(disk, R, position)], None,
                   radius=centre + r, extent=1.1 * (centre + 2 * r), sphere=False,
-                  vertical=False, lines=[(ground, "frame")], labels=labels)
-    panels = [panel]
-    if centre > 4 * r:      # the disk is small beside its circle: follow it too
-        here = np.column_stack([np.zeros_like(t), np.zeros_like(t), position[:, 2] - r])
+                  lines=[(_circle(centre), "frame")])
+    notes = ["The axle pinned to the shaft allows one motion, turning with the shaft: drawn "
+             "from the answer's rates (kinematics, not an integration)."]
+    return [panel], clock, notes, []
+
+
+def _circle(radius: float, z: float = 0.0) -> np.ndarray:
+    a = np.linspace(0, 2 * math.pi, 121)
+    return np.column_stack([radius * np.cos(a), radius * np.sin(a), np.full_like(a, z)])
+
+
+KICK = 0.02                # the disturbance: a tilt rate of KICK sqrt(g / r)
+
+
+def _rolling_free(problem, result, periods, speed, fps, disk):
+    """The free disk integrated (physics.rolling_motion) from its steady rolling, disturbed."""
+    from ..physics import rolling_motion as rm
+    from ..physics.stability import disk_rolling
+    from ..render.animate import Actor, Panel
+
+    body, a = problem.given.body, result.solution.answers
+    m, g, r, J, I = body.mass_for_rates, body.g, body.radius, body.J, body.I_cg
+    tilt, precession = a["tilt"].si_values[0], a["precession"].si_values[0]
+    rho = a["path_radius"].si_values[0] - r * math.sin(tilt)
+    lap = 2 * math.pi / abs(precession)
+    verdict = disk_rolling(m, g, r, I, J, tilt, precession, -precession * rho / r)
+    if verdict.growth_rate > 0:
+        period, meaning = min(lap, 3 / verdict.growth_rate), "growth times (x 3)"
+    elif verdict.frequency > 0:
+        period, meaning = min(lap, 2 * math.pi / verdict.frequency), "wobble periods"
+    else:
+        period, meaning = lap, "laps"
+    clock = make_clock(period, meaning, periods, speed, fps)
+    d = rm.Disk(r, J / m, I / m, g)
+    kick = KICK * math.sqrt(g / r)
+    try:
+        ys, drift = rm.integrate(d, rm.steady_start(d, tilt, rho, precession, kick),
+                                 clock.times)
+    except RuntimeError as err:
+        raise InputError(f"cannot simulate the rolling disk: {err}") from None
+    k, e = ys[:, 0:3], ys[:, 3:6]
+    k = k / np.linalg.norm(k, axis=1)[:, None]
+    e = e - np.sum(e * k, axis=1)[:, None] * k
+    e = e / np.linalg.norm(e, axis=1)[:, None]
+    R = np.stack([e, np.cross(k, e), k], axis=2)
+    beta = rm.tilt_of(ys)
+    position = np.column_stack([ys[:, 9], ys[:, 10], r * np.cos(beta)])
+    labels = [[f"tilt {math.degrees(b):.2f} deg"] for b in beta]
+    contact = rho + r * math.sin(tilt)
+    panels = [Panel("disk rolling on a circle", [Actor(disk, R, position)], None,
+                    radius=contact, extent=1.1 * (contact + 2 * r), sphere=False,
+                    vertical=False, lines=[(_circle(contact), "frame")], labels=labels)]
+    if rho > 4 * r:      # the disk is small beside its circle: follow it too
+        here = np.column_stack([np.zeros_like(beta), np.zeros_like(beta), position[:, 2] - r])
         panels.append(Panel("close up, following the disk", [Actor(disk, R, here)], None,
                             radius=r, extent=1.6 * r, sphere=False, vertical=False,
                             labels=labels))
-    notes = ["Steady rolling as solved (the kind's answer), drawn by its kinematics: not an "
-             "integration of the disk's equations of motion."]
-    return panels, clock, notes, []
+    stopped = np.flatnonzero(np.all(ys[1:] == ys[:-1], axis=1))
+    fell = stopped[:1] + 1 if len(stopped) else stopped
+    notes = [f"Integrated (Newton-Euler equations of the rolling disk) from the steady rolling "
+             f"solved, disturbed by a tilt rate of {num(kick)} rad/s: {verdict.word} "
+             f"(energy drift {drift:.1e})."]
+    if len(fell):
+        notes.append(f"Rolling contact ends at t = {num(float(clock.times[fell[0]]))} s (the "
+                     f"tilt passes {math.degrees(rm.FLAT):.0f} deg, or the plane would have to "
+                     "pull): the picture stops there.")
+    return panels, clock, notes, [ys]
 
 
 # ---- the bicycle: linear equations, exact steps ------------------------------------
