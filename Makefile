@@ -47,6 +47,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_check.py
 	$(BIN)/python benchmarks/bench_simulate.py
 	$(BIN)/python benchmarks/bench_motion.py
+	$(BIN)/python benchmarks/bench_animate.py
 
 fuzz: $(STAMP)
 	nice $(BIN)/python fuzz/fuzz.py --minutes $(MINUTES)

@@ -288,25 +288,47 @@ def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
 
 @main.command()
 @click.argument("file")
-@click.option("--periods", type=click.FloatRange(min=0, min_open=True, max=1e5), default=5.0,
-              show_default=True, help="How long: nutation periods (precession revolutions "
-                                      "for a steady top).")
+@click.option("--periods", type=click.FloatRange(min=0, min_open=True, max=1e5), default=None,
+              help="How long: nutation periods (precession revolutions for a steady top). "
+                   "Default 5, or 3 for --animate.")
 @click.option("--format", "fmt", type=click.Choice(("text", "json")), default="text",
               show_default=True, help="text: side-by-side table; json: one JSON object.")
 @click.option("--csv", "csv_file", metavar="FILE",
               help="Write the time series t, theta, phi, psi and their rates (SI) to FILE.")
 @click.option("--plot", "plot_file", metavar="FILE",
               help="Draw the axis's path, theta(t) and phidot(t) to FILE (.png, .svg, .pdf).")
+@click.option("--animate", "animate_file", metavar="FILE",
+              help="Animate the motion to FILE (.gif, .mp4 with ffmpeg, or .html): released "
+                   "top, steady precession, torque-free body, rotor on a turning base, rolling "
+                   "disk, bicycle.")
+@click.option("--speed", type=float, default=1.0, show_default=True,
+              help="Playback speed of --animate: 1 shows one period of the motion in 2 s.")
+@click.option("--fps", type=float, default=30.0, show_default=True,
+              help="Frames per second of --animate.")
 @click.option("--force", is_flag=True, help="Replace output files that exist.")
-def simulate(file: str, periods: float, fmt: str, csv_file: str | None,
-             plot_file: str | None, force: bool) -> None:
+def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
+             plot_file: str | None, animate_file: str | None, speed: float, fps: float,
+             force: bool) -> None:
     """Integrate the top of FILE (released_top or steady_precession) from Euler's
-    equations and compare with the analytic answer."""
+    equations and compare with the analytic answer; --animate draws the motion."""
     from .commands.simulate import simulate_file, terminal_progress
 
     try:
-        out = simulate_file(file, periods=periods, fmt=fmt, csv=csv_file, plot=plot_file,
-                            force=force, progress=terminal_progress())
+        out = ""
+        if animate_file:
+            from .commands.animate import animate_file as animate, check_output
+
+            check_output(animate_file, force)
+            text = animate(file, animate_file, periods=periods, speed=speed, fps=fps,
+                           force=force)
+            if csv_file or plot_file or fmt != "text":   # the comparison too, when asked
+                out = simulate_file(file, periods=periods or 5.0, fmt=fmt, csv=csv_file,
+                                    plot=plot_file, force=force)
+            if fmt == "text":
+                out += text
+        else:
+            out = simulate_file(file, periods=periods or 5.0, fmt=fmt, csv=csv_file,
+                                plot=plot_file, force=force, progress=terminal_progress())
     except InputError as err:
         fail(err)
     except Exception as err:

@@ -149,44 +149,57 @@ def prescan(text: str) -> None:
 
     loader = loader_class()(text)
     try:
-        sizes: dict[str, int] = {}
-        stack: list[list[Any]] = []  # [anchor, size so far]
-        total = 0
-        while loader.check_event():
-            event = loader.get_event()
-            if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
-                if len(stack) >= MAX_DEPTH:
-                    raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file "
-                                     "needs three", line=event.start_mark.line + 1)
-                stack.append([event.anchor, 1])
-                total += 1
-                size = 0
-            elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
-                anchor, size = stack.pop()
-                if anchor is not None:
-                    sizes[anchor] = size
-            elif isinstance(event, yaml.ScalarEvent):
-                size = 1
-                total += 1
-                if event.anchor is not None:
-                    sizes[event.anchor] = 1
-            elif isinstance(event, yaml.AliasEvent):
-                if any(entry[0] == event.anchor for entry in stack):
-                    raise InputError(f"alias *{event.anchor} refers to a value that contains "
-                                     "it (a cycle)", line=event.start_mark.line + 1)
-                size = sizes.get(event.anchor, 1)
-                total += size
-            else:
-                continue
-            if total > MAX_NODES:
-                raise InputError(f"aliases and values expand to more than {MAX_NODES} values; "
-                                 "refused (a problem file has about fifty)",
-                                 line=event.start_mark.line + 1)
-            if stack and not isinstance(event, (yaml.MappingStartEvent,
-                                                yaml.SequenceStartEvent)):
-                stack[-1][1] += size
+        _walk_events(loader, yaml)
+    except yaml.YAMLError as err:
+        # libyaml 0.2.6 (PyYAML 6.0.3+) stops deep flow collections itself: the
+        # same refusal as ours, in our words.
+        if "maximum nesting depth" not in str(err):
+            raise
+        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
+        raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file needs three",
+                         line=mark.line + 1 if mark else None) from None
     finally:
         loader.dispose()
+
+
+def _walk_events(loader: Any, yaml: Any) -> None:
+    """The event walk of ``prescan``: depth, cycles and the expanded size."""
+    sizes: dict[str, int] = {}
+    stack: list[list[Any]] = []  # [anchor, size so far]
+    total = 0
+    while loader.check_event():
+        event = loader.get_event()
+        if isinstance(event, (yaml.MappingStartEvent, yaml.SequenceStartEvent)):
+            if len(stack) >= MAX_DEPTH:
+                raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file "
+                                 "needs three", line=event.start_mark.line + 1)
+            stack.append([event.anchor, 1])
+            total += 1
+            size = 0
+        elif isinstance(event, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+            anchor, size = stack.pop()
+            if anchor is not None:
+                sizes[anchor] = size
+        elif isinstance(event, yaml.ScalarEvent):
+            size = 1
+            total += 1
+            if event.anchor is not None:
+                sizes[event.anchor] = 1
+        elif isinstance(event, yaml.AliasEvent):
+            if any(entry[0] == event.anchor for entry in stack):
+                raise InputError(f"alias *{event.anchor} refers to a value that contains "
+                                 "it (a cycle)", line=event.start_mark.line + 1)
+            size = sizes.get(event.anchor, 1)
+            total += size
+        else:
+            continue
+        if total > MAX_NODES:
+            raise InputError(f"aliases and values expand to more than {MAX_NODES} values; "
+                             "refused (a problem file has about fifty)",
+                             line=event.start_mark.line + 1)
+        if stack and not isinstance(event, (yaml.MappingStartEvent,
+                                            yaml.SequenceStartEvent)):
+            stack[-1][1] += size
 
 
 def load(text: str) -> tuple[Any, Any]:
