@@ -68,16 +68,15 @@ def main() -> None:
 
 
 def _rendered(result, fmt: str) -> str:
-    """One solved problem as the text, JSON, Markdown or LaTeX that solve prints."""
-    from .render import report
-
+    """One solved problem (an api.Result) as the text, JSON, Markdown or LaTeX that solve
+    prints."""
     if fmt == "json":
-        return report.as_json(result) + "\n"
-    if fmt in ("markdown", "latex"):
-        from .render import writeup
-
-        return getattr(writeup, fmt)(result)
-    return report.text(result)
+        return result.to_json() + "\n"
+    if fmt == "markdown":
+        return result.markdown()
+    if fmt == "latex":
+        return result.latex()
+    return result.text()
 
 
 @main.command()
@@ -105,9 +104,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     FILES may also be directories (every *.yaml and *.yml in them, as for
     `gyro check`) or quoted globs.
     """
+    from .api import solve_file as solve_problem
     from .render import report
     from .solving.paths import problem_files
-    from .solving.solve import solve_file
 
     files, missing = problem_files(files)
     for _, message in missing:
@@ -120,11 +119,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     document = []
     for i, path in enumerate(files):
         try:
-            result = solve_file(path)
-            if (system or result.problem.units) == "us":
-                from .render.us_units import to_us
-
-                result = to_us(result, given=fmt != "json")
+            result = solve_problem(path, units=system)
             text = None if standalone or fmt == "html" else _rendered(result, fmt)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
@@ -135,7 +130,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             crashed += 1
             continue
         if standalone or fmt == "html":
-            document.append(result)
+            document.append(result.solved)
         else:
             if i and fmt in ("markdown", "latex"):
                 text = "\n" + text
@@ -146,7 +141,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             from .render.plot import plot_result
 
             try:
-                plot_result(result, plot_file, force=force)
+                plot_result(result.solved, plot_file, force=force)
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
@@ -179,9 +174,12 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
-@click.option("--force", is_flag=True, help="With --out: replace FILE if it exists.")
+@click.option("--html", "html_file", metavar="FILE",
+              help="Also write the report as a self-contained HTML page to FILE: failing "
+                   "answers first, each linking to its worked answer.")
+@click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
-          sheet: str | None, out: str | None, force: bool) -> None:
+          sheet: str | None, out: str | None, force: bool, html_file: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -189,12 +187,19 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     nothing was compared), 2 when a file is bad (the others are still checked).
     """
     if sheet is None:
-        if out or force:
-            fail("--out and --force go with --answers SHEET")
-        from .checking import check as checking
+        if out or (force and not html_file):
+            fail("--out goes with --answers SHEET, --force with --out or --html")
         from .render import check_report
 
-        result = checking.run(paths, strict=strict)
+        if html_file:
+            from .api import check as check_api
+
+            report = check_api(*paths, strict=strict, worked=True)
+            result = report.run
+        else:
+            from .checking import check as checking
+
+            result = checking.run(paths, strict=strict)
         for problem in result.problems:
             if problem.error:
                 click.echo(f"gyro: {problem.error}", err=True)
@@ -208,9 +213,16 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
                 write_atomic(junit_file, junit.xml(result), force=True)
             except InputError as err:
                 fail(err)
+        if html_file:
+            from .core.files import write_atomic
+
+            try:
+                write_atomic(html_file, report.html(page=True), force=force)
+            except InputError as err:
+                fail(err)
         sys.exit(result.exit_code)
-    if junit_file or strict:
-        fail("--junit and --strict go with checking the answer key, not with --answers")
+    if junit_file or strict or html_file:
+        fail("--junit, --html and --strict go with checking the answer key, not with --answers")
     from .checking import grades
     from .render import grades_report
 

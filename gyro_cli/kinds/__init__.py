@@ -6,6 +6,8 @@ imported only when their kind is used, so start-up stays cheap.
 
 from __future__ import annotations
 
+import sys
+import types
 from importlib import import_module
 
 from ..core.errors import InputError
@@ -50,3 +52,13 @@ def get(name: object) -> Kind:
         raise InputError(f"unknown kind {shown(name)}; known kinds: {', '.join(names())}",
                          key="kind")
     return import_module(REGISTRY[name]).KIND
+
+
+class _Registry(types.ModuleType):
+    """This module, callable: ``gyro_cli.kinds()`` is every built kind by name."""
+
+    def __call__(self) -> dict[str, Kind]:
+        return {name: get(name) for name in names()}
+
+
+sys.modules[__name__].__class__ = _Registry

@@ -31,7 +31,7 @@ from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
 from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
 
-__all__ = ["worked_answer", "page", "check_page", "STYLE", "formula_mathml", "prose_html"]
+__all__ = ["worked_answer", "page", "document", "check_page", "check_body", "STYLE", "formula_mathml", "prose_html"]
 
 #: a step wider than this (characters of maths) is set as rows, one ``=`` a row
 ROW_WIDTH = 30
@@ -421,6 +421,12 @@ def check_page(run, results: dict[str, Result] | None = None,
                title: str = "gyro check") -> str:
     """`gyro check --html`: the check table as a page, failing answers (and bad files) first,
     each linking to its worked answer further down the page."""
+    return document(title, f"<h1>{escape(title)}</h1>\n" + check_body(run, results, level=2))
+
+
+def check_body(run, results: dict[str, Result] | None = None, level: int = 2) -> str:
+    """The check report without its page: summary, table, worked answers (headings from
+    ``level``)."""
     from .check_report import summary_line
 
     results = results or {}
@@ -460,9 +466,9 @@ def check_page(run, results: dict[str, Result] | None = None,
              '<th scope="col">answer</th><th scope="col">expected</th><th scope="col">got</th>'
              '<th scope="col">error</th><th scope="col">tolerance</th><th scope="col">note</th>'
              "</tr></thead><tbody>" + "".join(r[1] for r in rows) + "</tbody></table></div>")
-    body = [f"<h1>{escape(title)}</h1>", f"<p><strong>{escape(summary_line(run))}</strong></p>",
-            "<h2>Answers</h2>", table]
+    body = [f"<p><strong>{escape(summary_line(run))}</strong></p>",
+            _heading(level, "Answers"), table]
     if results:
-        body.append("<h2>Worked answers</h2>")
-        body += [worked_answer(r, level=3) for r in results.values()]
-    return document(title, "\n".join(body))
+        body.append(_heading(level, "Worked answers"))
+        body += [worked_answer(r, level=level + 1) for r in results.values()]
+    return "\n".join(body)

@@ -71,11 +71,21 @@ def read_yaml(path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, in
     Only a regular file of at most ``limit`` bytes is read; nesting and aliases
     are limited before anything is built (safeyaml.py).
     """
+    from ..core import safeyaml
+
+    return parse_yaml(safeyaml.read_text(path, limit), path, limit)
+
+
+def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, int]]:
+    """Safe-load YAML text (a file's, or text given to the Python API, named ``path`` in
+    messages); also the line of each key."""
     import yaml
 
     from ..core import safeyaml
 
-    text = safeyaml.read_text(path, limit)
+    if len(text) > limit:  # read_text has already held a file to its limit
+        raise InputError(f"longer than {limit:,} characters; a problem is at most that",
+                         file=path)
     try:
         data, node = safeyaml.load(text)
     except InputError as err:
@@ -129,6 +139,12 @@ def _once(lines: dict[str, int], name: str, key: Any) -> None:
 def load(path: str) -> Problem:
     """Read and check a problem file; InputError (located) on anything wrong."""
     data, lines = read_yaml(path)
+    return build(path, data, lines)
+
+
+def build(path: str, data: Any, lines: dict[str, int]) -> Problem:
+    """Check and parse a problem's data (from a file, YAML text or a mapping); InputError
+    located at the key and its line."""
     try:
         return _build(path, data, lines)
     except InputError as err:

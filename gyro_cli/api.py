@@ -1,0 +1,604 @@
+"""gyro's Python API: `solve`, `check`, `kinds`, `sweep`, and results that show themselves.
+
+    >>> import gyro_cli
+    >>> r = gyro_cli.solve("problems/11_3.yaml", spin="2000 rpm")
+    >>> r.answers["precession"]          # both roots, in the unit the file asks for
+    >>> r.answers["precession"].si       # the same in SI (rad/s)
+    >>> r                                # in Jupyter: the worked answer, MathML formulas
+
+A problem is a path, YAML text, or a mapping with the file's keys (values as
+strings with units, plain numbers in SI, or pint Quantities). Bad input raises
+`InputError` with ``key``, ``line`` and ``file``, the same one line the command
+prints. The command line is a client of this module (`gyro solve`).
+
+Nothing heavy is imported here: pint, numpy and the renderers load when a
+result is shown or a unit is first met, as for the command.
+"""
+
+from __future__ import annotations
+
+import copy
+import itertools
+import os
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
+
+from .core.errors import InputError
+
+if TYPE_CHECKING:
+    from .checking.results import CheckRun, ProblemCheck
+    from .core.spec import Kind
+    from .core.work import GivenLine, Section, Step
+    from .solving.problem import Problem
+    from .solving.solve import Reported
+    from .solving.solve import Result as _Solved
+
+__all__ = ["solve", "solve_file", "check", "kinds", "sweep", "load", "Result", "Answer", "CheckReport",
+           "Sweep", "InputError", "registry"]
+
+#: what `solve` and `check` accept as a problem
+Source = Union[str, "os.PathLike[str]", Mapping[str, Any]]
+
+
+# ---- reading a problem ------------------------------------------------------------
+
+def load(source: Source, /, *, path: bool = False, **given: Any) -> "Problem":
+    """The checked problem of ``source`` (path, YAML text or mapping), with ``given``
+    keys replaced (``spin="2000 rpm"``; ``None`` removes a key). ``path=True``: a
+    string is a file's path, never YAML text.
+
+    Numbers in SI and pint Quantities are accepted in a mapping and in ``given``;
+    a file or YAML text keeps the file format's rules (a length needs its unit).
+    """
+    from .solving import problem as loader
+
+    name, data, lines = _read(source, path)
+    changed: set[str] = set()
+    if given:
+        if not isinstance(data, dict) or not isinstance(data.get("given"), dict):
+            return loader.build(name, data, lines)  # the loader says what is wrong
+        data = dict(data, given=dict(data["given"]))
+        for key, value in given.items():
+            lines.pop(f"given.{key}", None)  # an override has no line in the file
+            if value is None:
+                data["given"].pop(key, None)
+            else:
+                data["given"][key] = value
+                changed.add(key)
+    if isinstance(data, dict) and (isinstance(source, Mapping) or changed):
+        data = _plain(data, None if isinstance(source, Mapping) else changed)
+    return loader.build(name, data, lines)
+
+
+def _read(source: Source, path: bool = False) -> tuple[str, Any, dict[str, int]]:
+    """(name for messages, data, line of each key) of a path, YAML text or mapping."""
+    from .solving import problem as loader
+
+    if isinstance(source, Mapping):
+        return "<dict>", copy.deepcopy(dict(source)), {}
+    if isinstance(source, os.PathLike):
+        source = os.fspath(source)
+    if not isinstance(source, str):
+        raise InputError(f"expected a path, YAML text or a mapping, got a "
+                         f"{type(source).__name__}")
+    if not path and not os.path.exists(source) and ("\n" in source
+                                                    or source.lstrip().startswith("{")):
+        data, lines = loader.parse_yaml(source, "<yaml>")
+        return "<yaml>", data, lines
+    data, lines = loader.read_yaml(source)
+    return source, data, lines
+
+
+def _is_quantity(value: Any) -> bool:
+    return hasattr(value, "magnitude") and hasattr(value, "units") and hasattr(value, "to")
+
+
+def _quantity_text(value: Any, key: str) -> str:
+    """A pint Quantity as the text a file would hold: ``1800.0 rpm``, ``0.01 kg * m ** 2``
+    (read back with gyro's own registry, where Hz on a rotor is revolutions per second)."""
+    try:
+        magnitude = float(value.magnitude)
+    except (TypeError, ValueError):
+        raise InputError(f"expected one quantity, got {type(value.magnitude).__name__} "
+                         "magnitudes", key=key) from None
+    return f"{magnitude!r} {value.units:~}".strip()
+
+
+def _si_number(value: Any, dimension: str) -> Any:
+    """A plain number of the API is in SI: ``0.3`` for a length is ``0.3 m``."""
+    from .core import units
+
+    if isinstance(value, bool) or not isinstance(value, (int, float)) \
+            or dimension in ("word", "particles", "dimensionless"):
+        return value
+    return f"{float(value)!r} {units.si_text(dimension)}".strip()
+
+
+def _plain(data: dict, only: set[str] | None = None) -> dict:
+    """The mapping as a file would hold it: Quantities and SI numbers become quantity
+    strings (what the loader checks), everything else stays as it is. ``only``: convert
+    just these given keys (the overrides of a file)."""
+    from . import kinds as registry
+    from .solving.problem import params_of
+
+    given = data.get("given")
+    try:
+        params = {p.name: p for p in params_of(registry.get(data.get("kind")))}
+    except InputError:
+        params = {}
+    if isinstance(given, dict):
+        out = {}
+        for key, value in given.items():
+            param = params.get(str(key))
+            where = f"given.{key}"
+            if only is not None and key not in only:
+                pass
+            elif _is_quantity(value):
+                value = _quantity_text(value, where)
+            elif param is not None and param.dimension == "particles" and isinstance(value, list):
+                value = [{k: _quantity_text(v, f"{where}.{k}") if _is_quantity(v) else
+                          _si_number(v, "mass" if k == "mass" else "length")
+                          for k, v in item.items()} if isinstance(item, dict) else item
+                         for item in value]
+            elif param is not None:
+                value = _si_number(value, param.dimension)
+            out[key] = value
+        data = dict(data, given=out)
+    if only is not None:
+        return data
+    find = data.get("find")
+    if isinstance(find, dict):
+        data = dict(data, find={k: f"{v:~}" if hasattr(v, "dimensionality") and
+                                not _is_quantity(v) else v for k, v in find.items()})
+    expected = data.get("expected")
+    if isinstance(expected, dict):
+        def text(v: Any, key: str) -> Any:
+            if _is_quantity(v):
+                return _quantity_text(v, key)
+            if isinstance(v, list):
+                return [text(x, key) for x in v]
+            return v
+        data = dict(data, expected={k: text(v, f"expected.{k}") for k, v in expected.items()})
+    return data
+
+
+# ---- answers and results ------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Answer:
+    """One answer: its values in the unit asked for (``values``, ``unit``) and in SI
+    (``si``). Several values (the two roots of a steady precession) are labelled
+    (``slow``, ``fast``); ``answer["slow"]`` or ``answer[0]`` picks one."""
+
+    name: str
+    symbol: str
+    values: tuple
+    unit: str | None
+    si_values: tuple
+    si_unit: str | None
+    labels: tuple = ()
+
+    @property
+    def value(self) -> float | str:
+        """The one value, in the unit asked for (ValueError when there are several)."""
+        if len(self.values) != 1:
+            raise ValueError(f"{self.name} has {len(self.values)} values "
+                             f"({self}); use .values or answer[i]")
+        return self.values[0]
+
+    @property
+    def si(self) -> float | str | tuple:
+        """The value in SI (``si_unit``); a tuple when there are several."""
+        return self.si_values[0] if len(self.si_values) == 1 else tuple(self.si_values)
+
+    def __float__(self) -> float:
+        return float(self.value)
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def __iter__(self) -> Iterator:
+        return iter(self.values)
+
+    def __getitem__(self, index: int | str) -> float | str:
+        if isinstance(index, str):
+            if index not in self.labels:
+                raise KeyError(f"{self.name} has no value labelled {index!r}; labels: "
+                               f"{', '.join(l for l in self.labels if l) or 'none'}")
+            index = self.labels.index(index)
+        return self.values[index]
+
+    def quantity(self) -> Any:
+        """The value(s) as a pint Quantity of gyro's registry (`registry()`)."""
+        if any(isinstance(v, str) for v in self.values):
+            raise ValueError(f"{self.name} is a word, not a quantity")
+        ureg = registry()
+        values = self.values[0] if len(self.values) == 1 else list(self.values)
+        try:
+            return ureg.Quantity(values, self.unit or self.si_unit or "")
+        except Exception:  # noqa: BLE001 - a unit pint spells otherwise: SI
+            si = self.si_values[0] if len(self.si_values) == 1 else list(self.si_values)
+            return ureg.Quantity(si, self.si_unit or "")
+
+    def __str__(self) -> str:
+        from .render.report import _answer_text
+
+        return _answer_text(list(self.values), self.unit, list(self.labels)).replace(
+            "   ", ", ")
+
+    def __repr__(self) -> str:
+        return f"<Answer {self.name} = {self}>"
+
+
+def _answer(reported: "Reported") -> Answer:
+    return Answer(reported.name, reported.symbol, tuple(reported.values), reported.unit,
+                  tuple(reported.si_values), reported.si_unit, tuple(reported.labels))
+
+
+class Result:
+    """A solved problem: ``answers`` (name -> `Answer`), ``steps`` (the worked answer's
+    sections of structured steps), ``checks``, ``given``, ``warnings``; `to_dict` is the
+    JSON of ``gyro solve --format json``. In Jupyter it shows the worked answer."""
+
+    def __init__(self, solved: "_Solved", units: str | None = None) -> None:
+        self._si = solved
+        self.units = (units or solved.problem.units or "si").lower()
+        self._shown: "_Solved | None" = None
+
+    # -- the solved problem, in the unit system asked for
+    @property
+    def solved(self) -> "_Solved":
+        """The solver's own result (in US units when asked for)."""
+        if self._shown is None:
+            if self.units == "us":
+                from .render.us_units import to_us
+
+                self._shown = to_us(self._si)
+            else:
+                self._shown = self._si
+        return self._shown
+
+    @property
+    def problem(self) -> "Problem":
+        return self._si.problem
+
+    @property
+    def id(self) -> str:
+        return str(self.problem.id)
+
+    @property
+    def kind(self) -> str:
+        return self.problem.kind.name
+
+    @property
+    def title(self) -> str:
+        return self.problem.title
+
+    @property
+    def file(self) -> str:
+        return self.problem.file
+
+    @property
+    def answers(self) -> dict[str, Answer]:
+        return {name: _answer(a) for name, a in self.solved.answers.items()}
+
+    @property
+    def steps(self) -> "list[Section]":
+        return list(self.solved.solution.sections)
+
+    @property
+    def checks(self) -> "list[Step]":
+        return list(self.solved.solution.checks)
+
+    @property
+    def given(self) -> "list[GivenLine]":
+        return list(self.solved.solution.given)
+
+    @property
+    def warnings(self) -> list[str]:
+        return list(self.solved.solution.warnings)
+
+    # -- outputs
+    def to_dict(self) -> dict[str, Any]:
+        """The JSON object of ``gyro solve --format json`` (full precision)."""
+        from .render import report
+
+        solved = self._si
+        if self.units == "us":
+            from .render.us_units import to_us
+
+            solved = to_us(self._si, given=False)  # JSON's si_value stays SI
+        return report.as_dict(solved)
+
+    def to_json(self) -> str:
+        import json
+
+        return json.dumps(self.to_dict(), allow_nan=False)
+
+    def text(self) -> str:
+        """The worked answer as ``gyro solve`` prints it."""
+        from .render import report
+
+        return report.text(self.solved)
+
+    def markdown(self) -> str:
+        from .render import writeup
+
+        return writeup.markdown(self.solved)
+
+    def latex(self) -> str:
+        from .render import writeup
+
+        return writeup.latex(self.solved)
+
+    def html(self, page: bool = False, picture: bool = True) -> str:
+        """The worked answer as HTML: an <article> (MathML formulas, the picture as inline
+        SVG), or with ``page=True`` the self-contained page of ``--format html``."""
+        from .render import html
+
+        if page:
+            return html.page([self.solved])
+        return html.worked_answer(self.solved, picture=picture)
+
+    def _repr_html_(self) -> str:
+        from .render import html
+
+        return (f"<div class=\"gyro\"><style>{html.STYLE}</style>"
+                f"{html.worked_answer(self.solved, level=3)}</div>")
+
+    def _repr_markdown_(self) -> str:
+        return self.markdown()
+
+    def _repr_latex_(self) -> str:
+        return self.latex()
+
+    def __str__(self) -> str:
+        return self.text()
+
+    def __repr__(self) -> str:
+        parts = "; ".join(f"{name} = {answer}" for name, answer in self.answers.items())
+        return f"<Result {self.id} [{self.kind}]: {parts}>"
+
+
+def solve(source: Source, /, *, units: str | None = None, **given: Any) -> Result:
+    """Solve a problem: a path, YAML text, or a mapping with the file's keys.
+
+    ``given`` replaces keys of the problem's ``given`` (``spin="2000 rpm"``,
+    ``spin=pint_quantity``, ``spin=209.4`` in SI; ``None`` removes the key).
+    ``units="us"`` works it in slug, ft and lbf. Raises `InputError` (with ``key``,
+    ``line`` and ``file``) for bad input, as the command exits 2.
+    """
+    from .solving.solve import solve as solve_problem
+
+    if units is not None and str(units).lower() not in ("si", "us"):
+        raise InputError(f"expected si or us, got {units!r}", key="units")
+    return Result(solve_problem(load(source, **given)), units)
+
+
+def solve_file(path: str, /, *, units: str | None = None, **given: Any) -> Result:
+    """`solve` for a file's path (a string here is never read as YAML text): what
+    ``gyro solve FILE`` runs."""
+    from .solving.solve import solve as solve_problem
+
+    if units is not None and str(units).lower() not in ("si", "us"):
+        raise InputError(f"expected si or us, got {units!r}", key="units")
+    return Result(solve_problem(load(path, path=True, **given)), units)
+
+
+def registry() -> Any:
+    """gyro's pint registry (Hz on a rate is revolutions per second), for Quantities
+    that mean what gyro means: ``u = gyro_cli.registry(); gyro_cli.solve(p, spin=30 *
+    u.Hz)``."""
+    from .core import units
+
+    return units.registry()
+
+
+# ---- sweeps --------------------------------------------------------------------------
+
+@dataclass
+class Point:
+    """One solve of a sweep: the values given, and the result or the error."""
+
+    given: dict[str, Any]
+    result: Result | None = None
+    error: InputError | None = None
+
+
+@dataclass
+class Sweep:
+    """Solves of one problem over a grid of given values; `records` gives rows for a
+    table (``pandas.DataFrame(sweep.records())``)."""
+
+    points: list[Point] = field(default_factory=list)
+
+    def __iter__(self) -> Iterator[Point]:
+        return iter(self.points)
+
+    def __len__(self) -> int:
+        return len(self.points)
+
+    @property
+    def results(self) -> list[Result | None]:
+        return [p.result for p in self.points]
+
+    def records(self) -> list[dict[str, Any]]:
+        """One dict per point: each swept key as given and in SI (``spin``, ``spin_si``),
+        each answer's value(s) in the unit asked for (``precession_slow``,
+        ``precession_fast``, ``min_spin``), and ``error`` (None, or the message)."""
+        rows = []
+        for point in self.points:
+            row: dict[str, Any] = {}
+            for key, value in point.given.items():
+                row[key] = str(value) if _is_quantity(value) else value
+                if point.result is not None:
+                    si = point.result.problem.given.values.get(key)
+                    row[f"{key}_si"] = si
+            if point.result is not None:
+                for name, answer in point.result.answers.items():
+                    if len(answer.values) == 1:
+                        row[name] = answer.values[0]
+                        continue
+                    for i, v in enumerate(answer.values):
+                        label = answer.labels[i] if i < len(answer.labels) and \
+                            answer.labels[i] else str(i + 1)
+                        row[f"{name}_{label}"] = v
+            row["error"] = None if point.error is None else point.error.message
+            rows.append(row)
+        return rows
+
+    def units(self) -> dict[str, str | None]:
+        """The unit of each answer column of `records`."""
+        out: dict[str, str | None] = {}
+        for result in self.results:
+            if result is None:
+                continue
+            for name, answer in result.answers.items():
+                out[name] = answer.unit
+        return out
+
+
+def sweep(source: Source, /, *, units: str | None = None, **values: Iterable[Any]) -> Sweep:
+    """Solve ``source`` at every combination of the given values:
+    ``sweep("top.yaml", spin=[f"{s} rpm" for s in range(1000, 3001, 250)])``.
+
+    A point that cannot be solved (a spin below the least one) is kept with its
+    error; the sweep goes on.
+    """
+    names = list(values)
+    grids = [list(values[name]) for name in names]
+    out = Sweep()
+    for combo in itertools.product(*grids):
+        given = dict(zip(names, combo))
+        try:
+            out.points.append(Point(given, solve(source, units=units, **given)))
+        except InputError as err:
+            out.points.append(Point(given, error=err))
+    return out
+
+
+# ---- checking ----------------------------------------------------------------------
+
+class CheckReport:
+    """What ``gyro check`` finds: ``problems`` (one ProblemCheck per file), ``passed``,
+    ``exit_code``, `to_dict` (the JSON of ``--format json``); in Jupyter the table,
+    failing answers first, each linking to its worked answer."""
+
+    def __init__(self, run: "CheckRun", worked: dict[str, "_Solved"]) -> None:
+        self.run = run
+        self.worked = worked
+
+    @property
+    def problems(self) -> "list[ProblemCheck]":
+        return list(self.run.problems)
+
+    @property
+    def exit_code(self) -> int:
+        return self.run.exit_code
+
+    @property
+    def passed(self) -> bool:
+        return self.run.exit_code == 0
+
+    @property
+    def counts(self) -> dict[str, int]:
+        return self.run.counts()
+
+    def to_dict(self) -> dict[str, Any]:
+        from .render import check_report
+
+        return check_report.as_dict(self.run)
+
+    def html(self, page: bool = True) -> str:
+        from .render import html
+
+        if page:
+            return html.check_page(self.run, self.worked)
+        return html.check_body(self.run, self.worked, level=3)
+
+    def _repr_html_(self) -> str:
+        from .render import html
+
+        return f"<div class=\"gyro\"><style>{html.STYLE}</style>{self.html(page=False)}</div>"
+
+    def __str__(self) -> str:
+        from .render import check_report
+
+        return check_report.table(self.run)
+
+    def __repr__(self) -> str:
+        from .render import check_report
+
+        return f"<CheckReport {check_report.summary_line(self.run)}>"
+
+
+def check(*sources: Source, strict: bool = False, worked: bool = True) -> CheckReport:
+    """Compare problems with their ``expected`` answers, as ``gyro check`` does: paths
+    (files, directories, globs), YAML text or mappings. ``worked``: also keep each
+    problem's worked answer (for the HTML report's links)."""
+    from .checking import check as checking
+    from .checking.results import CheckRun
+
+    problems = []
+    solved: dict[str, "_Solved"] = {}
+    paths = [os.fspath(s) for s in sources if isinstance(s, os.PathLike) or
+             isinstance(s, str) and "\n" not in s and not s.lstrip().startswith("{")]
+    files, errors = checking.collect(paths) if paths else ([], [])
+    problems += errors   # as gyro check: what names nothing first, then the files
+    for path in files:
+        result = checking.check_file(path, strict)
+        problems.append(result)
+        if worked and result.status != "error":
+            _keep(solved, path, lambda path=path: load(path, path=True))
+    for source in sources:
+        if isinstance(source, os.PathLike) or isinstance(source, str) and \
+                os.fspath(source) in paths:
+            continue
+        try:
+            problem = load(source)
+        except InputError as err:
+            from .checking.results import ProblemCheck
+
+            problems.append(ProblemCheck(err.file or "<input>", status="error",
+                                         error=str(err)))
+            continue
+        try:
+            result = checking.check_problem(problem, strict=strict)
+        except InputError as err:
+            from .checking.results import ProblemCheck
+
+            err.located(file=problem.file, line=problem.line(err.key))
+            result = ProblemCheck(problem.file, problem.id, problem.title, problem.kind.name,
+                                  status="error", error=str(err))
+        problems.append(result)
+        if worked and result.status != "error":
+            key = problem.file if problem.file not in solved else f"{problem.file}#{len(solved)}"
+            _keep(solved, key, lambda problem=problem: problem)
+            result.file = key
+    return CheckReport(CheckRun(problems, strict=strict), solved)
+
+
+def _keep(solved: dict, key: str, problem_of) -> None:
+    """The worked answer of a checked problem, its expected answers among its answers."""
+    import dataclasses
+
+    from .solving.solve import solve as solve_problem
+
+    try:
+        problem = problem_of()
+        find = dict(problem.find)
+        for name in problem.expected:
+            find.setdefault(name, None)
+        solved[key] = solve_problem(dataclasses.replace(problem, find=find))
+    except InputError:
+        pass
+
+
+# ---- kinds ---------------------------------------------------------------------------
+
+def kinds() -> dict[str, "Kind"]:
+    """Every problem kind by name (what ``gyro kinds`` lists): its ``summary``, ``params``
+    (the given keys; ``uses_body`` adds the body's keys), ``answers`` and ``chapter``."""
+    from . import kinds as registry
+
+    return registry()
