@@ -5,12 +5,13 @@
 #               apt-get install texlive-latex-base texlive-latex-recommended
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
 #   make fuzz   mutate the bundled problems for MINUTES (default 5), in-process
+#   make examples  the example pages docs/examples/*.html (gyro solve --format html)
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test check bench handout fuzz clean
+.PHONY: demo test check bench handout fuzz examples clean
 
 MINUTES ?= 5
 
@@ -19,7 +20,7 @@ $(BIN)/python:
 
 $(STAMP): $(BIN)/python pyproject.toml
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[dev]'
+	PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 $(BIN)/python -m pip install --quiet -e '.[dev]'
 	$(BIN)/python -m compileall -q gyro_cli   # bytecode even where PYTHONDONTWRITEBYTECODE is set
 	touch $(STAMP)
 
@@ -48,6 +49,10 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_simulate.py
 	$(BIN)/python benchmarks/bench_motion.py
 	$(BIN)/python benchmarks/bench_animate.py
+
+examples: $(STAMP)
+	$(BIN)/gyro solve --format html problems/11_3.yaml > docs/examples/11_3.html
+	$(BIN)/gyro solve --format html problems/11_2_released_top.yaml > docs/examples/11_2_released_top.html
 
 fuzz: $(STAMP)
 	nice $(BIN)/python fuzz/fuzz.py --minutes $(MINUTES)

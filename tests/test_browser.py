@@ -1,0 +1,184 @@
+"""The HTML pages in a real browser: headless Chromium (Debian's `chromium`), driven by
+Playwright through `executable_path` (no browser download), checked with axe-core.
+
+For the page of every bundled problem, a folder page and a `gyro check --html`
+report: no console error and no request leaving the page; no horizontal
+overflow at 360 px and at 1024 px; every <math> element laid out with a
+non-zero box; no axe-core violation of WCAG 2.1 A/AA (tags wcag2a, wcag2aa,
+wcag21a, wcag21aa) in the light scheme, and no contrast violation in the dark
+one (`prefers-color-scheme: dark`); a screenshot at 360 px written for the
+record to $GYRO_SCREENSHOT_DIR, else to pytest's temporary directory (never
+committed).
+
+One browser for the whole module; each page is loaded once and checked at both
+widths and in both schemes. The tests skip, saying why, where Chromium or
+Playwright is missing (`.ci/run` installs Chromium; `make test` installs the
+Python packages).
+"""
+
+from __future__ import annotations
+
+import glob
+import os
+import shutil
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = sorted(glob.glob(str(ROOT / "problems" / "*.yaml")))
+WCAG = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+
+
+def _chromium() -> str | None:
+    for candidate in (os.environ.get("GYRO_CHROMIUM"), shutil.which("chromium"),
+                      shutil.which("chromium-browser"), shutil.which("google-chrome")):
+        if candidate and os.path.exists(candidate):
+            return candidate
+    return None
+
+
+CHROMIUM = _chromium()
+try:
+    from playwright.sync_api import sync_playwright
+    from axe_playwright_python.sync_playwright import Axe
+except ImportError as err:  # pragma: no cover - the dev extra installs both
+    sync_playwright = Axe = None
+    MISSING = f"Playwright or axe-playwright-python is not installed ({err}): pip install -e '.[dev]'"
+else:
+    MISSING = None if CHROMIUM else (
+        "no Chromium found (apt-get install chromium, or set GYRO_CHROMIUM to its path); "
+        ".ci/run installs it")
+
+pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
+
+
+@pytest.fixture(scope="module")
+def browser():
+    os.environ.setdefault("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1")
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM,
+                              args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def shots(tmp_path_factory) -> Path:
+    where = os.environ.get("GYRO_SCREENSHOT_DIR")
+    path = Path(where) if where else tmp_path_factory.mktemp("screenshots")
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+@pytest.fixture(scope="module")
+def axe():
+    return Axe()
+
+
+@pytest.fixture(scope="module")
+def pages(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("pages")
+
+
+def _write(folder: Path, name: str, text: str) -> Path:
+    path = folder / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+_OVERFLOW = "() => document.documentElement.scrollWidth - document.documentElement.clientWidth"
+_MATH = """() => Array.from(document.querySelectorAll('math')).filter(m => {
+    const r = m.getBoundingClientRect(); return !(r.width > 0 && r.height > 0);
+  }).map(m => m.textContent.slice(0, 60))"""
+# Formulas take their colour from the text around them (axe leaves <math> out below,
+# for time: its contrast is then the contrast of that text, which axe checks).
+_MATH_COLOUR = """() => Array.from(document.querySelectorAll('math, math *')).filter(m => {
+    const own = getComputedStyle(m), up = getComputedStyle(m.parentElement);
+    return own.color !== up.color || (own.backgroundColor !== 'rgba(0, 0, 0, 0)');
+  }).length"""
+
+
+def _axe(page, only: dict) -> dict:
+    """axe-core's violations on the page as it is now (formulas left out, see above)."""
+    return page.evaluate("only => axe.run({exclude: [['math']]}, {runOnly: only, "
+                         "resultTypes: ['violations']})", only)
+
+
+def _inspect(browser, axe, path: Path, shots: Path) -> list[str]:
+    """Every check on one page; the list of what failed."""
+    problems: list[str] = []
+    page = browser.new_page(viewport={"width": 360, "height": 800}, color_scheme="light")
+    errors: list[str] = []
+    page.on("console", lambda m: errors.append(f"console {m.type}: {m.text}")
+            if m.type == "error" else None)
+    page.on("pageerror", lambda e: errors.append(f"page error: {e}"))
+    page.on("request", lambda r: errors.append(f"request left the page: {r.url}")
+            if not r.url.startswith(("file:", "data:", "about:")) else None)
+    try:
+        page.goto(path.as_uri(), wait_until="load")
+        for width in (360, 1024):
+            page.set_viewport_size({"width": width, "height": 800})
+            over = page.evaluate(_OVERFLOW)
+            if over > 0:
+                problems.append(f"{width} px: {over} px of horizontal overflow")
+            empty = page.evaluate(_MATH)
+            if empty:
+                problems.append(f"{width} px: <math> with an empty box: {empty[:3]}")
+            if width == 360:
+                page.screenshot(path=str(shots / f"{path.stem}-360.png"), full_page=True)
+        if page.evaluate("document.querySelectorAll('math').length") and \
+                page.evaluate(_MATH_COLOUR):
+            problems.append("a formula sets its own colour or background")
+        page.evaluate(axe.axe_script)  # axe-core, once per page
+        light = _axe(page, {"type": "tag", "values": WCAG})
+        page.emulate_media(color_scheme="dark")
+        if page.evaluate(_MATH_COLOUR):
+            problems.append("dark: a formula sets its own colour or background")
+        dark = _axe(page, {"type": "rule", "values": ["color-contrast"]})
+        for scheme, result in (("light", light), ("dark", dark)):
+            for v in result["violations"]:
+                node = v["nodes"][0]
+                problems.append(f"axe {scheme}: {v['id']} ({v['impact']}, {len(v['nodes'])} "
+                                f"nodes): {node['html'][:160]} {node.get('failureSummary', '')[:200]}")
+    finally:
+        page.close()
+    return errors + problems
+
+
+@pytest.mark.parametrize("path", PROBLEMS, ids=lambda p: Path(p).stem)
+def test_problem_page_in_chromium(browser, axe, pages, shots, path):
+    from gyro_cli.render import html
+    from gyro_cli.solving.solve import solve_file
+
+    page = _write(pages, Path(path).stem + ".html", html.page([solve_file(path)]))
+    assert _inspect(browser, axe, page, shots) == []
+
+
+def test_folder_page_and_check_report_in_chromium(browser, axe, pages, shots, tmp_path):
+    """A page of several problems (pictures among them), and a check report with a failing
+    answer first, linked to its worked answer."""
+    import gyro_cli
+    from gyro_cli.render import html
+    from gyro_cli.solving.solve import solve_file
+
+    names = ["11_3.yaml", "11_2_released_top.yaml", "bicycle_no_spin.yaml", "ship_rolling_6000kg.yaml"]
+    folder = _write(pages, "folder.html",
+                    html.page([solve_file(str(ROOT / "problems" / n)) for n in names]))
+    wrong = (ROOT / "problems" / "11_3.yaml").read_text().replace("533.5 rpm", "600 rpm")
+    (tmp_path / "wrong.yaml").write_text(wrong)
+    report = gyro_cli.check(str(tmp_path / "wrong.yaml"), str(ROOT / "problems" / "11_4.yaml"))
+    assert report.exit_code == 1
+    check = _write(pages, "check.html", report.html(page=True))
+    assert _inspect(browser, axe, folder, shots) == []
+    assert _inspect(browser, axe, check, shots) == []
+    page = browser.new_page(viewport={"width": 1024, "height": 800})
+    try:
+        page.goto(check.as_uri())
+        first = page.locator("tbody tr").first
+        assert first.locator("td").first.inner_text() == "FAIL"
+        first.locator("a").nth(1).click()
+        target = page.evaluate("location.hash")
+        assert target.endswith("-precession") and page.locator(target).is_visible()
+    finally:
+        page.close()
