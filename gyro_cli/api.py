@@ -20,7 +20,6 @@ from __future__ import annotations
 import copy
 import itertools
 import os
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
 
 from .core.errors import InputError
@@ -164,19 +163,25 @@ def _plain(data: dict, only: set[str] | None = None) -> dict:
 
 # ---- answers and results ------------------------------------------------------------
 
-@dataclass(frozen=True)
 class Answer:
     """One answer: its values in the unit asked for (``values``, ``unit``) and in SI
     (``si``). Several values (the two roots of a steady precession) are labelled
     (``slow``, ``fast``); ``answer["slow"]`` or ``answer[0]`` picks one."""
 
-    name: str
-    symbol: str
-    values: tuple
-    unit: str | None
-    si_values: tuple
-    si_unit: str | None
-    labels: tuple = ()
+    # a plain class, not a dataclass: `gyro solve` imports this module, and a dataclass
+    # costs its start-up a millisecond
+    __slots__ = ("name", "symbol", "values", "unit", "si_values", "si_unit", "labels")
+
+    def __init__(self, name: str, symbol: str, values: tuple, unit: str | None,
+                 si_values: tuple, si_unit: str | None, labels: tuple = ()) -> None:
+        self.name, self.symbol, self.values, self.unit = name, symbol, tuple(values), unit
+        self.si_values, self.si_unit, self.labels = tuple(si_values), si_unit, tuple(labels)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Answer) and all(
+            getattr(self, k) == getattr(other, k) for k in self.__slots__)
+
+    __hash__ = None  # type: ignore[assignment]
 
     @property
     def value(self) -> float | str:
@@ -396,21 +401,30 @@ def registry() -> Any:
 
 # ---- sweeps --------------------------------------------------------------------------
 
-@dataclass
 class Point:
     """One solve of a sweep: the values given, and the result or the error."""
 
-    given: dict[str, Any]
-    result: Result | None = None
-    error: InputError | None = None
+    __slots__ = ("given", "result", "error")
+
+    def __init__(self, given: dict[str, Any], result: Result | None = None,
+                 error: InputError | None = None) -> None:
+        self.given, self.result, self.error = given, result, error
+
+    def __repr__(self) -> str:
+        return f"<Point {self.given}: {self.result!r}>" if self.error is None else \
+            f"<Point {self.given}: InputError {self.error.message!r}>"
 
 
-@dataclass
 class Sweep:
     """Solves of one problem over a grid of given values; `records` gives rows for a
     table (``pandas.DataFrame(sweep.records())``)."""
 
-    points: list[Point] = field(default_factory=list)
+    def __init__(self, points: list[Point] | None = None) -> None:
+        self.points: list[Point] = list(points or [])
+
+    def __repr__(self) -> str:
+        bad = sum(p.error is not None for p in self.points)
+        return f"<Sweep of {len(self.points)} points, {bad} not solved>"
 
     def __iter__(self) -> Iterator[Point]:
         return iter(self.points)
