@@ -31,21 +31,23 @@ from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
 from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
 
-__all__ = ["worked_answer", "page", "document", "check_page", "check_body", "STYLE", "formula_mathml", "prose_html"]
+__all__ = ["worked_answer", "page", "document", "check_page", "check_body", "STYLE", "PAGE_STYLE",
+           "formula_mathml", "prose_html"]
 
 #: a step wider than this (characters of maths) is set as rows, one ``=`` a row
 ROW_WIDTH = 30
 #: inline maths wider than this may not fit a phone's line: it scrolls in its own box
 INLINE_WIDTH = 30
 
-STYLE = """
+#: the page: colours for both schemes, body, skip link, print (variables on :root)
+PAGE_STYLE = """
 :root { color-scheme: light dark; --fg: #1b1b1b; --bg: #ffffff; --muted: #4a4a4a;
   --rule: #c8c8c8; --link: #0645ad; --note-bg: #fff4e0; --note-fg: #3d2600;
-  --fail: #a3001b; --pass: #1d5e20; --head-bg: #f0f0f0; }
+  --fail: #a3001b; --pass: #1d5e20; }
 @media (prefers-color-scheme: dark) {
   :root { --fg: #e8e8e8; --bg: #161616; --muted: #c4c4c4; --rule: #5a5a5a;
     --link: #9cc3ff; --note-bg: #3b2a0a; --note-fg: #ffe4b0; --fail: #ff9a9a;
-    --pass: #8fdc8f; --head-bg: #262626; }
+    --pass: #8fdc8f; }
 }
 html { -webkit-text-size-adjust: 100%; }
 body { margin: 0; background: var(--bg); color: var(--fg);
@@ -54,11 +56,23 @@ main { max-width: 52rem; margin: 0 auto; padding: 1rem; }
 a { color: var(--link); }
 h1 { font-size: 1.5rem; line-height: 1.25; }
 h2 { font-size: 1.3rem; line-height: 1.3; margin-top: 2rem; }
-h3 { font-size: 1.1rem; margin: 1.4rem 0 0.4rem; }
-h4 { font-size: 1rem; margin: 1.2rem 0 0.3rem; }
-.gyro .meta, .gyro .eqno, .gyro .mi { display: inline-block; max-width: 100%; overflow-x: auto; overflow-y: hidden;
-  vertical-align: middle; }
-.gyro .stepnote { color: var(--muted); }
+.skip { position: absolute; left: -10000px; }
+.skip:focus { position: static; }
+@media print {
+  :root { --fg: #000; --bg: #fff; --muted: #333; --rule: #999; --link: #000;
+    --note-bg: #fff; --note-fg: #000; --fail: #000; --pass: #000; }
+  body { font-size: 10.5pt; }
+  main { max-width: none; padding: 0; }
+  .skip { display: none; }
+}
+"""
+
+#: the worked answer and the check table, scoped under .gyro; without the page's
+#: variables (in Jupyter) the text keeps the notebook's own colours
+STYLE = """
+.gyro h3 { font-size: 1.1rem; margin: 1.4rem 0 0.4rem; }
+.gyro h4 { font-size: 1rem; margin: 1.2rem 0 0.3rem; }
+.gyro .meta, .gyro .eqno, .gyro .stepnote, .gyro figcaption { color: var(--muted, inherit); }
 .gyro .eq { display: flex; flex-wrap: wrap; align-items: baseline; column-gap: 1rem;
   margin: 0.3rem 0; }
 .gyro .eq > .m { max-width: 100%; overflow-x: auto; overflow-y: hidden; }
@@ -71,34 +85,27 @@ h4 { font-size: 1rem; margin: 1.2rem 0 0.3rem; }
 .gyro math { font-size: 1.15em; }
 .gyro .table { max-width: 100%; overflow-x: auto; }
 .gyro table { border-collapse: collapse; margin: 0.4rem 0; }
-.gyro th, .gyro td { border-bottom: 1px solid var(--rule); padding: 0.25rem 0.6rem 0.25rem 0;
-  text-align: left; vertical-align: baseline; }
+.gyro th, .gyro td { border-bottom: 1px solid var(--rule, #c8c8c8);
+  padding: 0.25rem 0.6rem 0.25rem 0; text-align: left; vertical-align: baseline; }
 .gyro td { overflow-wrap: anywhere; }
-.gyro thead th { border-bottom: 2px solid var(--rule); }
-.gyro .warnings { background: var(--note-bg); color: var(--note-fg); padding: 0.3rem 1rem;
-  border-radius: 0.3rem; }
+.gyro thead th { border-bottom: 2px solid var(--rule, #c8c8c8); }
+.gyro .warnings { background: var(--note-bg, #fff4e0); color: var(--note-fg, #3d2600);
+  padding: 0.3rem 1rem; border-radius: 0.3rem; }
 .gyro .warnings a { color: inherit; }
 .gyro figure { margin: 1rem 0; }
 .gyro svg.picture { display: block; max-width: 100%; height: auto; background: #ffffff; }
-.gyro figcaption { color: var(--muted); font-size: 0.95rem; }
-.gyro .fail { color: var(--fail); font-weight: 600; }
-.gyro .pass { color: var(--pass); }
-.gyro .error { color: var(--fail); }
+.gyro figcaption { font-size: 0.95rem; }
+.gyro .fail { color: var(--fail, #a3001b); font-weight: 600; }
+.gyro .pass { color: var(--pass, #1d5e20); }
+.gyro .error { color: var(--fail, #a3001b); font-weight: 600; }
 .gyro blockquote { margin: 0.4rem 0 0.4rem 1rem; }
-.skip { position: absolute; left: -10000px; }
-.skip:focus { position: static; }
 @media print {
-  :root { --fg: #000; --bg: #fff; --muted: #333; --rule: #999; --link: #000;
-    --note-bg: #fff; --note-fg: #000; --fail: #000; --pass: #000; }
-  body { font-size: 10.5pt; }
-  main { max-width: none; padding: 0; }
   .gyro .eq > .m, .gyro .table, .gyro .mi { overflow: visible; }
   .gyro article.problem { break-before: page; }
   .gyro article.problem:first-of-type { break-before: auto; }
   .gyro h2, .gyro h3, .gyro h4 { break-after: avoid; }
   .gyro .eq, .gyro figure, .gyro tr { break-inside: avoid; }
   .gyro .warnings { border: 1px solid #000; }
-  .skip { display: none; }
 }
 """
 
@@ -395,7 +402,7 @@ def document(title: str, body: str) -> str:
             "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
             "<meta name=\"color-scheme\" content=\"light dark\">\n"
             "<meta name=\"generator\" content=\"gyro\">\n"
-            f"<title>{escape(title)}</title>\n<style>{STYLE}</style>\n</head>\n"
+            f"<title>{escape(title)}</title>\n<style>{PAGE_STYLE}{STYLE}</style>\n</head>\n"
             "<body>\n<a class=\"skip\" href=\"#main\">Skip to the content</a>\n"
             f"<main id=\"main\" class=\"gyro\">\n{body}\n</main>\n</body>\n</html>\n")
 
