@@ -112,16 +112,20 @@ def test_folder_page_has_unique_ids():
         assert ref in ids
 
 
-def test_user_strings_are_escaped(tmp_path):
-    source = (ROOT / "problems" / "11_3.yaml").read_text()
-    source = re.sub(r"^title:.*$", 'title: "<script>alert(1)</script> & <b>x</b>"', source,
-                    flags=re.M)
+@pytest.mark.parametrize("name", ["11_3.yaml", "11_2_released_top.yaml"])
+def test_user_strings_are_escaped(tmp_path, name):
+    """Also inside the picture, whose SVG carries the title as a comment."""
+    source = (ROOT / "problems" / name).read_text()
+    source = re.sub(r"^title:.*$", 'title: "--><script>alert(1)</script> & <b>x</b><!--"',
+                    source, flags=re.M)
     source = re.sub(r"^id:.*$", 'id: "a<i>b"', source, flags=re.M)
     path = tmp_path / "evil<x>.yaml"
     path.write_text(source)
     text = html.page([solve_file(str(path))])
     assert "<script>" not in text and "<b>x</b>" not in text and "a<i>b" not in text
-    assert "&lt;script&gt;alert(1)&lt;/script&gt; &amp; &lt;b&gt;x&lt;/b&gt;" in text
+    assert "--&gt;&lt;script&gt;alert(1)&lt;/script&gt; &amp; &lt;b&gt;x&lt;/b&gt;" in text
+    body = text.split("</style>", 1)[1]
+    assert body.count("<!--") == body.count("-->")   # no comment of the SVG closed early
     assert not _parsed(text).errors
 
 
@@ -145,3 +149,22 @@ def test_every_bundled_problem_renders(path):
     assert not tags.errors and not tags.stack, tags.errors
     for name, answer in result.answers.items():
         assert name.replace("_", " ") in text
+
+
+def test_cli_check_html_failing_first_and_linked(tmp_path):
+    wrong = (ROOT / "problems" / "11_3.yaml").read_text().replace("533.5 rpm", "600 rpm")
+    (tmp_path / "wrong.yaml").write_text(wrong)
+    report = tmp_path / "report.html"
+    args = [sys.executable, "-m", "gyro_cli", "check", "--html", str(report),
+            str(ROOT / "problems" / "11_4.yaml"), str(tmp_path / "wrong.yaml")]
+    out = subprocess.run(args, capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 1 and "FAILED" in out.stdout   # the table is still printed
+    text = report.read_text()
+    rows = re.findall(r"<tr><td[^>]*>(PASS|FAIL|----)</td>", text)
+    assert rows[0] == "FAIL" and rows.count("FAIL") == 1 and "PASS" in rows
+    first = text[text.index("<tbody>"):].split("</tr>")[0]
+    link = re.search(r'<a href="#([^"]+-precession)">', first).group(1)
+    assert f'id="{link}"' in text                     # the failing answer's worked answer
+    again = subprocess.run(args, capture_output=True, text=True, cwd=ROOT)
+    assert again.returncode == 2 and "exists; not overwritten" in again.stderr
+    assert subprocess.run(args + ["--force"], capture_output=True, cwd=ROOT).returncode == 1

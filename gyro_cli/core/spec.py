@@ -36,6 +36,9 @@ class Kind:
     chapter: str = ""
     extra: dict = field(default_factory=dict)
 
+    def __repr__(self) -> str:  # short: gyro_cli.kinds() lists sixteen of them
+        return f"<Kind {self.name}: {self.summary}>"
+
     def param(self, name: str) -> Param | None:
         return next((p for p in self.params if p.name == name), None)
 
