@@ -336,14 +336,15 @@ class Result:
 
         return writeup.latex(self.solved)
 
-    def html(self, page: bool = False, picture: bool = True) -> str:
+    def html(self, page: bool = False, picture: bool = True, level: int = 2) -> str:
         """The worked answer as HTML: an <article> (MathML formulas, the picture as inline
-        SVG), or with ``page=True`` the self-contained page of ``--format html``."""
+        SVG; its title a heading of ``level``), or with ``page=True`` the self-contained
+        page of ``--format html``."""
         from .render import html
 
         if page:
             return html.page([self.solved])
-        return html.worked_answer(self.solved, picture=picture)
+        return html.worked_answer(self.solved, level=level, picture=picture)
 
     def _repr_html_(self) -> str:
         from .render import html

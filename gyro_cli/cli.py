@@ -67,9 +67,11 @@ def main() -> None:
     """
 
 
-def _rendered(result, fmt: str) -> str:
+def _rendered(result, fmt: str, level: int = 2) -> str:
     """One solved problem (an api.Result) as the text, JSON, Markdown or LaTeX that solve
-    prints."""
+    prints (for html: its article, put on one page at the end)."""
+    if fmt == "html":
+        return result.html(level=level)
     if fmt == "json":
         return result.to_json() + "\n"
     if fmt == "markdown":
@@ -120,7 +122,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
-            text = None if standalone or fmt == "html" else _rendered(result, fmt)
+            text = None if standalone else _rendered(result, fmt, 1 if len(files) == 1 else 2)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -129,8 +131,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             internal(path, err)
             crashed += 1
             continue
-        if standalone or fmt == "html":
+        if standalone:
             document.append(result.solved)
+        elif fmt == "html":
+            document.append((result.solved, text))
         else:
             if i and fmt in ("markdown", "latex"):
                 text = "\n" + text
@@ -148,11 +152,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     if document and fmt == "html":
         from .render import html
 
-        try:
-            click.echo(html.page(document), nl=False)
-        except Exception as err:  # a bug: one line, exit 3
-            internal(None, err)
-            crashed += 1
+        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document]),
+                   nl=False)
     elif document:
         from .render import writeup
 

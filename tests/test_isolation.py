@@ -36,7 +36,7 @@ def batch(tmp_path):
     return [tmp_path / n for n in names]
 
 
-@pytest.mark.parametrize("fmt", ["text", "json", "markdown", "latex"])
+@pytest.mark.parametrize("fmt", ["text", "json", "markdown", "latex", "html"])
 def test_solve_goes_on_after_an_internal_error(run, batch, broken_torque, fmt):
     result = run("solve", "--format", fmt, *batch)
     assert result.exit_code == 3

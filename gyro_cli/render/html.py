@@ -407,20 +407,24 @@ def document(title: str, body: str) -> str:
             f"<main id=\"main\" class=\"gyro\">\n{body}\n</main>\n</body>\n</html>\n")
 
 
-def page(results: list[Result], title: str | None = None) -> str:
-    """One self-contained page: a single problem, or several with a contents list."""
+def page(results: list[Result], title: str | None = None,
+         articles: list[str] | None = None) -> str:
+    """One self-contained page: a single problem, or several with a contents list.
+    ``articles``: their `worked_answer`, already rendered (at level 1 for one problem, 2
+    for several: the command renders each file on its own, so that a failure is that
+    file's alone)."""
     if len(results) == 1:
         r = results[0]
         title = title or (f"{r.problem.id}: {r.problem.title}" if r.problem.title
                           else str(r.problem.id))
-        return document(title, worked_answer(r, level=1))
+        return document(title, worked_answer(r, level=1) if articles is None else articles[0])
     title = title or "Worked solutions"
     items = "".join(f'<li><a href="#{escape(anchor(r))}">{escape(str(r.problem.id))}'
                     + (f": {escape(r.problem.title)}" if r.problem.title else "") + "</a></li>"
                     for r in results)
     body = [f"<h1>{escape(title)}</h1>",
             f'<nav aria-label="problems"><h2>Problems</h2><ol>{items}</ol></nav>']
-    body += [worked_answer(r, level=2) for r in results]
+    body += articles if articles is not None else [worked_answer(r, level=2) for r in results]
     return document(title, "\n".join(body))
 
 
