@@ -163,7 +163,7 @@ def test_cli_check_html_failing_first_and_linked(tmp_path):
     rows = re.findall(r"<tr><td[^>]*>(PASS|FAIL|----)</td>", text)
     assert rows[0] == "FAIL" and rows.count("FAIL") == 1 and "PASS" in rows
     first = text[text.index("<tbody>"):].split("</tr>")[0]
-    link = re.search(r'<a href="#([^"]+-precession)">', first).group(1)
+    link = re.search(r'<a href="#([^"]+-precession)">precession\[2\]</a>', first).group(1)
     assert f'id="{link}"' in text                     # the failing answer's worked answer
     again = subprocess.run(args, capture_output=True, text=True, cwd=ROOT)
     assert again.returncode == 2 and "exists; not overwritten" in again.stderr

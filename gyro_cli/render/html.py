@@ -99,6 +99,12 @@ STYLE = """
 .gyro .pass { color: var(--pass, #1d5e20); }
 .gyro .error { color: var(--fail, #a3001b); font-weight: 600; }
 .gyro blockquote { margin: 0.4rem 0 0.4rem 1rem; }
+.gyro table.check td { overflow-wrap: break-word; min-width: 5.5rem; }
+.gyro table.check td:first-child { min-width: 0; }
+.gyro table.check td:last-child { min-width: 14rem; }
+.gyro table.check caption { text-align: left; }
+.gyro .file, .gyro .small { font-size: 0.9rem; }
+.gyro .file { color: var(--muted, inherit); overflow-wrap: anywhere; }
 @media print {
   .gyro .eq > .m, .gyro .table, .gyro .mi { overflow: visible; }
   .gyro article.problem { break-before: page; }
@@ -446,14 +452,14 @@ def check_body(run, results: dict[str, Result] | None = None, level: int = 2) ->
     for p in sorted(run.problems, key=lambda p: order.get(p.status, 9)):
         where = escape(p.file) if p.file not in results else \
             f'<a href="#{escape(anchor(results[p.file]))}">{escape(p.file)}</a>'
-        name = escape(f"{p.id}: {p.title}" if p.title else (p.id or ""))
+        problem = f'<span class="file">{where}</span>'
         if p.status == "error":
-            rows.append((0, f'<tr><td class="error">ERROR</td><td>{where}</td><td>{name}</td>'
-                            f'<td colspan="5">{escape(p.error or "")}</td></tr>'))
+            rows.append((0, f'<tr><td class="error">ERROR</td><td>{problem}</td>'
+                            f'<td colspan="3">{escape(p.error or "")}</td></tr>'))
             continue
         if p.status == "no expected answers":
-            rows.append((3, f"<tr><td>----</td><td>{where}</td><td>{name}</td>"
-                            '<td colspan="5">no expected answers (not checked)</td></tr>'))
+            rows.append((3, f"<tr><td>----</td><td>{problem}</td>"
+                            '<td colspan="3">no expected answers (not checked)</td></tr>'))
             continue
         for a in p.answers:
             status = "PASS" if a.passed and a.keyed else "----" if a.passed else "FAIL"
@@ -466,16 +472,18 @@ def check_body(run, results: dict[str, Result] | None = None, level: int = 2) ->
             if a.slip:
                 note += f"; likely slip: {a.slip}"
             error = "" if a.relative_error is None else f"{a.relative_error * 100:+.2f}%"
+            got = escape(a.got or "-") + (f'<br><span class="small">{escape(error)}, '
+                                          f'tolerance {escape(a.tolerance)}</span>'
+                                          if error else "")
             rows.append((0 if status == "FAIL" else 2 if status == "PASS" else 1,
-                         f'<tr><td class="{cls}">{status}</td><td>{where}</td><td>{label}</td>'
-                         f"<td>{escape(a.expected or '-')}</td><td>{escape(a.got or '-')}</td>"
-                         f"<td>{escape(error)}</td><td>{escape(a.tolerance)}</td>"
+                         f'<tr><td class="{cls}">{status}</td><td>{label}<br>{problem}</td>'
+                         f"<td>{escape(a.expected or '-')}</td><td>{got}</td>"
                          f"<td>{escape(note)}</td></tr>"))
     rows.sort(key=lambda r: r[0])
-    table = (_table_box("Checked answers") + '<table><caption>Every checked answer, failing ones first'
-             '</caption><thead><tr><th scope="col">status</th><th scope="col">file</th>'
-             '<th scope="col">answer</th><th scope="col">expected</th><th scope="col">got</th>'
-             '<th scope="col">error</th><th scope="col">tolerance</th><th scope="col">note</th>'
+    table = (_table_box("Checked answers") + '<table class="check"><caption>Every checked '
+             'answer, failing ones first</caption><thead><tr><th scope="col">status</th>'
+             '<th scope="col">answer and file</th><th scope="col">expected</th>'
+             '<th scope="col">got (error, tolerance)</th><th scope="col">note</th>'
              "</tr></thead><tbody>" + "".join(r[1] for r in rows) + "</tbody></table></div>")
     body = [f"<p><strong>{escape(summary_line(run))}</strong></p>",
             _heading(level, "Answers"), table]
