@@ -78,8 +78,8 @@ def _read(source: Source, path: bool = False) -> tuple[str, Any, dict[str, int]]
     if isinstance(source, os.PathLike):
         source = os.fspath(source)
     if not isinstance(source, str):
-        raise InputError(f"expected a path, YAML text or a mapping, got a "
-                         f"{type(source).__name__}")
+        raise InputError(f"expected a path, YAML text or a mapping, got {type(source).__name__} "
+                         f"{source!r:.40}")
     if not path and not os.path.exists(source) and ("\n" in source
                                                     or source.lstrip().startswith("{")):
         data, lines = loader.parse_yaml(source, "<yaml>")
