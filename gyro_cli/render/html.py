@@ -231,7 +231,8 @@ def _equation(lhs: Node | None, pieces: list[Node], relation: str = "=") -> tupl
             wide = wide or w > ROW_WIDTH - 2
             rows.append(f"<mtr><mtd><mrow>{head}</mrow></mtd><mtd><mrow>{op}{row}</mrow></mtd></mtr>")
     wide = wide or width(lhs) > 12
-    return math_element(f"<mtable>{''.join(rows)}</mtable>", display=True), wide
+    return math_element(f'<mtable displaystyle="true">{"".join(rows)}</mtable>',
+                        display=True), wide
 
 
 def _eq_div(math: str, wide: bool, tag: str = "", note: str = "") -> str:

@@ -152,7 +152,7 @@ def unit_mathml(unit: str) -> str:
         elif t.kind == "num":
             out.append(f"<mn>{escape(t.text)}</mn>")
         elif t.text == "/":
-            out.append(_mo("/"))
+            out.append('<mo lspace="0" rspace="0">/</mo>')
         elif t.text == "*":
             out.append(THIN)
         elif t.text in "()":
@@ -243,7 +243,10 @@ class MathMLPrinter(Printer):
             or (isinstance(base, Num) and "e" in base.text.lower())
         if needs and not isinstance(base, Group):
             text = self.brackets(text)
-        return f"<msup>{text}{_row(self._print(_strip(node.exp)))}</msup>"
+        exp = _row(self._print(_strip(node.exp)))
+        if isinstance(base, Sym) and text.startswith("<msub>") and text.endswith("</msub>"):
+            return "<msubsup>" + text[len("<msub>"):-len("</msub>")] + exp + "</msubsup>"
+        return f"<msup>{text}{exp}</msup>"
 
     def _print_Call(self, node: Call) -> str:
         sep = _mo("∣") if node.sep == "|" else _mo(",")
