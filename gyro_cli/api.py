@@ -616,4 +616,4 @@ def kinds() -> dict[str, "Kind"]:
     (the given keys; ``uses_body`` adds the body's keys), ``answers`` and ``chapter``."""
     from . import kinds as registry
 
-    return registry()
+    return {name: registry.get(name) for name in registry.names()}

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import re
 from html import escape
+from typing import cast
 
 from ..core.work import num
 from ..solving.solve import Result
@@ -138,7 +139,7 @@ def prose_html(text: str) -> str:
             out.append(escape(piece))
             continue
         for is_math, part in spans(piece):
-            out.append(_inline(part) if is_math else escape(part))
+            out.append(_inline(cast(Node, part)) if is_math else escape(str(part)))
     return "".join(out)
 
 
@@ -152,13 +153,6 @@ def _inline(node: Node) -> str:
         return (f'<span class="mi" tabindex="0" role="group" aria-label="formula (scrolls '
                 f'sideways)">{_math(node)}</span>')
     return _math(node)
-
-
-def _unparsed(text: str) -> Node:
-    """Text that does not parse whole, set piece by piece (words as words)."""
-    from .mathtree import Tex
-
-    return Tex("", text)
 
 
 # ---- steps ----------------------------------------------------------------------
@@ -249,10 +243,7 @@ def _eq_div(math: str, wide: bool, tag: str = "", note: str = "") -> str:
 
 def _step_html(step) -> str:
     if step.symbol:
-        lhs, pieces = _step_pieces(step)
-        pieces = [_unparsed(p.plain) if type(p).__name__ == "Tex" else p for p in pieces]
-        if type(lhs).__name__ == "Tex":
-            lhs = _unparsed(lhs.plain)
+        lhs, pieces = _step_pieces(step)  # what does not parse is a Tex node: its plain text
         tag, rest = _tag(step)
         notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text else [])
         math, wide = _equation(lhs, pieces)

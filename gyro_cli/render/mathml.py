@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 from html import escape
+from typing import cast
 
 from .mathparse import GREEK, _symbolic, dotted, spans, tokens, try_parse
 from .mathprint import PRECEDENCE, Printer, _fold, _rightmost, _strip, precedence, split_symbol
@@ -186,8 +187,8 @@ class MathMLPrinter(Printer):
         return f"<mtext>{escape(node.text)}</mtext>"
 
     def _print_Tex(self, node) -> str:
-        return _row(*(self._print(part) if is_math else f"<mtext>{escape(part)}</mtext>"
-                      for is_math, part in spans(node.plain)))
+        return _row(*(self._print(cast(Node, part)) if is_math else
+                      f"<mtext>{escape(str(part))}</mtext>" for is_math, part in spans(node.plain)))
 
     def _print_Quantity(self, node: Quantity) -> str:
         value = self._print(node.value)
@@ -220,20 +221,20 @@ class MathMLPrinter(Printer):
                 self.display = True
             return f"<mfrac>{_row(num)}{_row(den)}</mfrac>"
         left = self.parenthesize(node.left, PRECEDENCE["*"])
-        right = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
+        factor = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
         if isinstance(node.right, Neg):
-            right = self.brackets(right)
+            factor = self.brackets(factor)
         if op == "/":
-            return _row(left, _mo("/"), right)
+            return _row(left, _mo("/"), factor)
         if op == "x":
-            return _row(left, _mo("×"), right)
+            return _row(left, _mo("×"), factor)
         if op in (".", "*"):
-            return _row(left, _mo("⋅"), right)
+            return _row(left, _mo("⋅"), factor)
         if _starts_number(node.right):
-            return _row(left, _mo("⋅"), right)
+            return _row(left, _mo("⋅"), factor)
         if isinstance(_rightmost(node.left), Quantity) or _starts_function(node.right):
-            return _row(left, THIN, INVISIBLE_TIMES, right)
-        return _row(left, INVISIBLE_TIMES, right)
+            return _row(left, THIN, INVISIBLE_TIMES, factor)
+        return _row(left, INVISIBLE_TIMES, factor)
 
     def _print_Pow(self, node: Pow) -> str:
         base = node.base
@@ -359,7 +360,7 @@ def prose(text: str) -> str:
     out = []
     for is_math, part in spans(text):
         if is_math:
-            out.append(math_element(tree_mathml(part, False)))
+            out.append(math_element(tree_mathml(cast(Node, part), False)))
         else:
-            out.append(escape(part))
+            out.append(escape(str(part)))
     return "".join(out)
