@@ -462,6 +462,36 @@ class Sweep:
             rows.append(row)
         return rows
 
+    def _repr_html_(self) -> str:
+        """The records as an HTML table (Jupyter without pandas)."""
+        from html import escape
+
+        from .core.work import num
+
+        rows = self.records()
+        columns: list[str] = []
+        for row in rows:
+            columns += [c for c in row if c not in columns]
+        columns = [c for c in columns if c != "error"] + ["error"]
+        units = self.units()
+
+        def cell(value: Any) -> str:
+            if value is None:
+                return ""
+            if isinstance(value, float):
+                return num(value)
+            return escape(str(value))
+
+        def head(column: str) -> str:
+            unit = units.get(column) or units.get(column.rsplit("_", 1)[0])
+            return escape(column) + (f" ({escape(unit)})" if unit else "")
+
+        body = "".join("<tr>" + "".join(f"<td>{cell(row.get(c))}</td>" for c in columns)
+                       + "</tr>" for row in rows)
+        return ('<table class="gyro-sweep"><thead><tr>'
+                + "".join(f'<th scope="col">{head(c)}</th>' for c in columns)
+                + f"</tr></thead><tbody>{body}</tbody></table>")
+
     def units(self) -> dict[str, str | None]:
         """The unit of each answer column of `records`."""
         out: dict[str, str | None] = {}

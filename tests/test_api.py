@@ -98,6 +98,9 @@ def test_sweep_records_keep_errors():
     assert rows[1]["precession_slow"] == pytest.approx(45.13, rel=1e-3)
     assert rows[1]["spin_si"] == pytest.approx(1800 * RPM)
     assert sweep.units()["precession"] == "rpm"
+    table = sweep._repr_html_()
+    assert '<th scope="col">precession_slow (rpm)</th>' in table and "45.13" in table
+    assert table.index("<th scope=\"col\">error</th>") > table.index("min_spin")
 
 
 def test_bad_key_raises_input_error_naming_it_with_its_line(tmp_path):

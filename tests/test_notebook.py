@@ -37,6 +37,7 @@ def test_notebook_runs_and_shows_the_worked_answer(tmp_path):
     text = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
     assert "45.13 rpm (slow), 533.5 rpm (fast)" in text
     assert "given.spinn -> unknown key" in text
+    assert any("precession_slow" in h for h in html)             # the sweep's table
     assert any("image/png" in o.get("data", {}) for o in outputs)   # the sweep's plot
     assert any("PASS" in h for h in html)                        # the check report
     nbformat.write(nb, tmp_path / "executed.ipynb")
