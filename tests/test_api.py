@@ -142,6 +142,11 @@ def test_to_dict_is_the_json_of_the_command():
                          "problems/11_3.yaml"], capture_output=True, text=True, cwd=ROOT,
                         check=True)
     assert us.stdout == gyro_cli.solve("problems/11_3.yaml", units="us").text()
+    us_json = subprocess.run([sys.executable, "-m", "gyro_cli", "solve", "--units", "us",
+                              "--format", "json", "problems/11_3.yaml"], capture_output=True,
+                             text=True, cwd=ROOT, check=True)
+    assert json.loads(us_json.stdout) == gyro_cli.solve("problems/11_3.yaml",
+                                                         units="us").to_dict()
 
 
 def test_results_show_themselves():
