@@ -18,7 +18,7 @@ from typing import Any
 
 __version__ = "0.1.0"
 
-__all__ = ["solve", "solve_file", "check", "kinds", "sweep", "load", "registry", "Result",
+__all__ = ["solve", "solve_file", "check", "check_files", "kinds", "sweep", "load", "registry", "Result",
            "Answer", "CheckReport", "Sweep", "InputError", "__version__"]
 
 # Loaded by name on first use (type checkers read __init__.pyi): the core layer imports

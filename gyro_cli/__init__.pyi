@@ -5,6 +5,7 @@ from .api import CheckReport as CheckReport
 from .api import Result as Result
 from .api import Sweep as Sweep
 from .api import check as check
+from .api import check_files as check_files
 from .api import load as load
 from .api import registry as registry
 from .api import solve as solve

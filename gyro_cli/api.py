@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from .solving.solve import Reported
     from .solving.solve import Result as _Solved
 
-__all__ = ["solve", "solve_file", "check", "kinds", "sweep", "load", "Result", "Answer", "CheckReport",
+__all__ = ["solve", "solve_file", "check", "check_files", "kinds", "sweep", "load", "Result", "Answer", "CheckReport",
            "Sweep", "InputError", "registry"]
 
 #: what `solve` and `check` accept as a problem
@@ -584,17 +584,10 @@ def check(*sources: Source, strict: bool = False, worked: bool = True) -> CheckR
     from .checking import check as checking
     from .checking.results import CheckRun
 
-    problems = []
-    solved: dict[str, "_Solved"] = {}
     paths = [os.fspath(s) for s in sources if isinstance(s, os.PathLike) or
              isinstance(s, str) and "\n" not in s and not s.lstrip().startswith("{")]
-    files, errors = checking.collect(paths) if paths else ([], [])
-    problems += errors   # as gyro check: what names nothing first, then the files
-    for path in files:
-        result = checking.check_file(path, strict)
-        problems.append(result)
-        if worked and result.status != "error":
-            _keep(solved, path, lambda path=path: load(path, path=True))
+    report = check_files(paths, strict=strict, worked=worked)
+    problems, solved = list(report.run.problems), report.worked
     for source in sources:
         if isinstance(source, os.PathLike) or isinstance(source, str) and \
                 os.fspath(source) in paths:
@@ -620,6 +613,23 @@ def check(*sources: Source, strict: bool = False, worked: bool = True) -> CheckR
             key = problem.file if problem.file not in solved else f"{problem.file}#{len(solved)}"
             _keep(solved, key, lambda problem=problem: problem)
             result.file = key
+    return CheckReport(CheckRun(problems, strict=strict), solved)
+
+
+def check_files(paths: Iterable[str], /, *, strict: bool = False,
+                worked: bool = True) -> CheckReport:
+    """`check` for paths only (files, directories, globs; a string is never YAML text):
+    what ``gyro check PATHS`` runs."""
+    from .checking import check as checking
+    from .checking.results import CheckRun
+
+    solved: dict[str, "_Solved"] = {}
+    files, problems = checking.collect(list(paths))  # what names nothing first, as gyro check
+    for path in files:
+        result = checking.check_file(path, strict)
+        problems.append(result)
+        if worked and result.status != "error":
+            _keep(solved, path, lambda path=path: load(path, path=True))
     return CheckReport(CheckRun(problems, strict=strict), solved)
 
 

@@ -192,15 +192,10 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             fail("--out goes with --answers SHEET, --force with --out or --html")
         from .render import check_report
 
-        if html_file:
-            from .api import check as check_api
+        from .api import check_files
 
-            report = check_api(*paths, strict=strict, worked=True)
-            result = report.run
-        else:
-            from .checking import check as checking
-
-            result = checking.run(paths, strict=strict)
+        report = check_files(paths, strict=strict, worked=bool(html_file))
+        result = report.run
         for problem in result.problems:
             if problem.error:
                 click.echo(f"gyro: {problem.error}", err=True)
