@@ -14,7 +14,6 @@ and the command's start-up stay cheap:
 from __future__ import annotations
 
 from importlib import import_module
-from typing import Any
 
 __version__ = "0.1.0"
 
@@ -25,7 +24,7 @@ __all__ = ["solve", "solve_file", "check", "check_files", "kinds", "sweep", "loa
 # this package for its version, and must not see the API above it.
 
 
-def __getattr__(name: str) -> Any:
+def __getattr__(name: str) -> object:  # no typing import: start-up stays as it was
     if name == "InputError":
         return import_module(".core.errors", __name__).InputError
     if name == "kinds":  # the registry package, callable: gyro_cli.kinds() lists the kinds
