@@ -1,5 +1,5 @@
 # Types of the names gyro_cli/__init__.py loads on first use.
-from . import kinds as kinds
+from .api import kinds as kinds  # at run time the registry module, callable
 from .api import Answer as Answer
 from .api import CheckReport as CheckReport
 from .api import Result as Result
