@@ -1,5 +1,5 @@
-"""`gyro export`: question banks for Moodle, QTI 1.2 (Canvas, Blackboard, D2L) and
-PrairieLearn, every answer from the solver.
+"""`gyro export`: question banks for Moodle, QTI 1.2 (Canvas, D2L) and PrairieLearn,
+every answer from the solver.
 
 For each problem file: the problem as written, or with ``--variants N`` the N
 variants that ``gyro vary FILE --count N --seed S`` writes (the same values, drawn
@@ -229,7 +229,7 @@ def _refuse_directory(out: str) -> None:
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--to", "fmt", type=click.Choice(FORMATS), required=True,
               help="moodle: Moodle XML (a category per problem); qti: a QTI 1.2 zip for "
-                   "Canvas, Blackboard and D2L; prairielearn: a question directory per "
+                   "Canvas and D2L; prairielearn: a question directory per "
                    "problem.")
 @click.option("--variants", "count", type=click.IntRange(1, 10_000), default=1,
               show_default=True,
