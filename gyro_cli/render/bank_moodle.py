@@ -17,7 +17,7 @@ categories as ``<question type="category">``).
 from __future__ import annotations
 
 from .bank import (Blank, ProblemBank, Variant, blank_prompt, cdata, html_text, number_text,
-                   stable_uuid, xml_text)
+                   xml_text)
 
 #: the category every problem's category sits in
 TOP = "$course$/top/gyro"
@@ -55,12 +55,12 @@ def _name(bank: ProblemBank, variant: Variant) -> str:
 
 
 def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:
-    ident = stable_uuid(bank.id, variant.number)
+    # No <idnumber>: Moodle wants it unique in a category, and a second import of the
+    # same bank into the same category must not fail on it.
     return [f"    <name><text>{xml_text(_name(bank, variant))}</text></name>",
             f'    <questiontext format="html"><text>{cdata(text)}</text></questiontext>',
             f'    <generalfeedback format="html"><text>{cdata(variant.feedback_html)}'
-            "</text></generalfeedback>",
-            f"    <idnumber>{ident}</idnumber>"]
+            "</text></generalfeedback>"]
 
 
 def _question(bank: ProblemBank, variant: Variant) -> str:
