@@ -252,6 +252,78 @@ def test_qti_package_holds_the_solvers_answers(exported):
                 _same(numbers[n], want[n])
 
 
+#: the content model of every element an export writes, restated from the QTI 1.2 ASI
+#: schema (ims_qtiasiv1p2.xsd, IMS Global): a regular expression over the names of an
+#: element's children (each followed by a space); an element not listed is refused
+_VARS = "(not|and|or|unanswered|other|varequal|varlt|varlte|vargt|vargte|varsubset|" \
+        "varinside|varsubstring|durequal|durlt|durlte|durgt|durgte)"
+QTI_MODEL = {
+    "questestinterop": r"(qticomment )?(objectbank |assessment |((section|item) )+)",
+    "assessment": r"(qticomment )?(duration )?(qtimetadata )*(objectives )*"
+                  r"(assessmentcontrol )*(rubric )*(presentation_material )?"
+                  r"(outcomes_processing )*(assessproc_extension )?(assessfeedback )*"
+                  r"(selection_ordering )?(reference )?((sectionref|section) )+",
+    "section": r"(qticomment )?(duration )?(qtimetadata )*(objectives )*(sectioncontrol )*"
+               r"(sectionprecondition )*(sectionpostcondition )*(rubric )*"
+               r"(presentation_material )?(outcomes_processing )*(sectionproc_extension )?"
+               r"(sectionfeedback )*(selection_ordering )?(reference )?"
+               r"((itemref|item|sectionref|section) )*",
+    "item": r"(qticomment )?(duration )?(itemmetadata )?(objectives )*(itemcontrol )*"
+            r"(itemprecondition )*(itempostcondition )*((itemrubric|rubric) )*(presentation )?"
+            r"(resprocessing )*(itemproc_extension )?(itemfeedback )*(reference )?",
+    "itemmetadata": r"(qtimetadata )*",
+    "qtimetadata": r"(vocabulary )?(qtimetadatafield )+",
+    "qtimetadatafield": r"fieldlabel fieldentry ",
+    "presentation": r"(qticomment )?(flow |((material|response_lid|response_xy|response_str|"
+                    r"response_num|response_grp|response_extension) )+)",
+    "material": r"(qticomment )?((mattext|matemtext|matimage|mataudio|matvideo|matapplet|"
+                r"matapplication|matref|matbreak|mat_extension) )+(altmaterial )*",
+    "response_str": r"((material|material_ref) )?(render_choice|render_hotspot|render_slider|"
+                    r"render_fib|render_extension) ((material|material_ref) )?",
+    "render_fib": r"((material|material_ref|response_label|flow_label) )*(response_na )?",
+    "response_label": r"((qticomment|material|material_ref|flow_mat) )*",
+    "resprocessing": r"(qticomment )?outcomes ((respcondition|itemproc_extension) )+",
+    "outcomes": r"(qticomment )?(decvar (interpretvar )*)+",
+    "respcondition": r"(qticomment )?conditionvar (setvar )*(displayfeedback )*"
+                     r"(respcond_extension )?",
+    "conditionvar": rf"(({_VARS[1:-1]}|var_extension) )+",
+    "or": rf"({_VARS} )+", "and": rf"({_VARS} )+",
+    "itemfeedback": r"((flow_mat|material|solution|hint) )+",
+    "flow_mat": r"((flow_mat|material|material_ref) )+",
+    **{leaf: "" for leaf in ("mattext", "varequal", "vargte", "varlte", "setvar", "decvar",
+                             "displayfeedback", "fieldlabel", "fieldentry", "other")},
+}
+QTI_REQUIRED = {"assessment": {"ident"}, "section": {"ident"}, "item": {"ident"},
+                "itemfeedback": {"ident"}, "response_str": {"ident"},
+                "response_label": {"ident"}, "displayfeedback": {"linkrefid"},
+                "varequal": {"respident"}, "vargte": {"respident"}, "varlte": {"respident"}}
+QTI_ENUMS = {"fibtype": {"String", "Integer", "Decimal", "Scientific"},
+             "rcardinality": {"Single", "Multiple", "Ordered"}, "continue": {"Yes", "No"},
+             "vartype": {"Integer", "String", "Decimal", "Scientific", "Boolean",
+                         "Enumerated", "Set"},
+             "feedbacktype": {"Response", "Solution", "Hint"},
+             "action": {"Set", "Add", "Subtract", "Multiply", "Divide"}}
+
+
+def _qti_valid(element) -> None:
+    name = element.tag.removeprefix(QTI)
+    assert name in QTI_MODEL, f"<{name}> is not an element an export may write"
+    children = "".join(child.tag.removeprefix(QTI) + " " for child in element)
+    assert re.fullmatch(QTI_MODEL[name], children), f"<{name}> holds {children!r}"
+    assert QTI_REQUIRED.get(name, set()) <= set(element.attrib), (name, element.attrib)
+    for attribute, allowed in QTI_ENUMS.items():
+        assert element.get(attribute, next(iter(allowed))) in allowed, (name, attribute)
+    for child in element:
+        _qti_valid(child)
+
+
+def test_qti_files_follow_the_qti_1_2_schema(exported):
+    with zipfile.ZipFile(exported["qti"]) as archive:
+        for name in archive.namelist():
+            if name != "imsmanifest.xml":
+                _qti_valid(ET.fromstring(archive.read(name)))
+
+
 def test_qti_bounds_are_the_tolerance_and_the_zip_is_reproducible(exported, run, tmp_path):
     with zipfile.ZipFile(exported["qti"]) as archive:
         root = ET.fromstring(archive.read("11_3/11_3.xml"))
