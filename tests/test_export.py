@@ -348,6 +348,24 @@ def _generate(server: Path, seed: int) -> dict:
     return data
 
 
+#: pl-number-input's attributes (PrairieLearn docs/elements/pl-number-input.md)
+PL_NUMBER_INPUT = {"allow-blank", "allow-complex", "allow-fractions", "answers-name",
+                   "aria-label", "atol", "blank-value", "comparison", "correct-answer",
+                   "custom-format", "digits", "display", "initial-value", "label",
+                   "placeholder", "rtol", "show-correct-answer", "show-help-text",
+                   "show-placeholder", "show-score", "size", "suffix", "weight"}
+
+
+def _mustache(template: str, params: dict) -> str:
+    """The mustache a question.html uses, rendered: {{#params.ask.KEY}}...{{/...}}
+    sections kept where ``params["ask"]`` has KEY, {{{params.NAME}}} inserted as it is."""
+    def section(match: re.Match) -> str:
+        return match.group(2) if params["ask"].get(match.group(1)) else ""
+    out = re.sub(r"\{\{#params\.ask\.(\w+)\}\}(.*?)\{\{/params\.ask\.\1\}\}", section,
+                 template, flags=re.S)
+    return re.sub(r"\{\{\{params\.(\w+)\}\}\}", lambda m: params[m.group(1)], out)
+
+
 def test_prairielearn_questions_hold_the_solvers_answers(exported):
     reference = exported["reference"]
     root = exported["prairielearn"]
@@ -366,12 +384,19 @@ def test_prairielearn_questions_hold_the_solvers_answers(exported):
         assert len(inputs) == len(set(inputs))
         for name in inputs:  # each input shows only in the variants that ask it
             assert f"{{{{#params.ask.{name}}}}}" in html
+        for element in re.findall(r"<pl-number-input ([^>]*)>", html):
+            attributes = dict(re.findall(r'([\w-]+)="([^"]*)"', element))
+            assert set(attributes) <= PL_NUMBER_INPUT, attributes
+            assert attributes["comparison"] in ("relabs", "sigfig", "decdig")
         got = {}
         for seed in range(len(want)):
             data = _generate(question / "server.py", seed)
             answers = data["correct_answers"]
             assert set(answers) <= set(inputs) and set(answers) == set(data["params"]["ask"])
             assert "<math" in data["params"]["feedback"]
+            page = _mustache(html, data["params"])
+            assert re.findall(r'answers-name="(\w+)"', page) == list(answers)
+            assert data["params"]["statement"] in page and "{{" not in page
             got[seed + 1] = list(answers.values())
         for n in want:
             _same(got[n], want[n])
@@ -504,3 +529,26 @@ def test_bad_options_exit_2(run, tmp_path, args, message):
     done = run("export", PROBLEMS / "11_3.yaml", *args)
     assert done.exit_code == 2
     assert message in done.stderr
+
+
+def test_prairielearn_shows_each_variant_only_its_own_inputs(tmp_path):
+    """A variant at theta = 90 deg has one precession root where the others have two:
+    question.html holds the union, and each variant's page only the inputs it asks."""
+    from gyro_cli.render import bank_prairielearn
+    from gyro_cli.render.bank import Blank, ProblemBank, Variant
+
+    def blank(key: str, value: float) -> Blank:
+        return Blank(key, key, value, "rpm", 0.01 * value, "1%", "relative", 0.01)
+
+    two = Variant(1, "t-v1", {}, "<p>one</p>", "<p>worked</p>",
+                  [blank("precession_slow", 45.0), blank("precession_fast", 533.0)])
+    one = Variant(2, "t-v2", {}, "<p>two</p>", "<p>worked</p>", [blank("precession", 60.0)])
+    bank = ProblemBank("t", "T", "steady_precession", "", "t", "steady precession", [two, one])
+    for rel, text in bank_prairielearn.files([bank]).items():
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / rel).write_text(text)
+    html = (tmp_path / "t" / "question.html").read_text()
+    for seed, keys in ((0, ["precession_slow", "precession_fast"]), (1, ["precession"])):
+        data = _generate(tmp_path / "t" / "server.py", seed)
+        assert list(data["correct_answers"]) == keys
+        assert re.findall(r'answers-name="(\w+)"', _mustache(html, data["params"])) == keys
