@@ -202,6 +202,7 @@ def test_moodle_units_and_question_types(exported):
     assert spin.findtext("units/unit/unit_name") == "rpm"
     assert spin.findtext("units/unit/multiplier") == "1"
     assert "spin, in rpm" in spin.findtext("questiontext/text")
+    assert str(PROBLEMS) not in exported["moodle"].read_text()  # no local path in a bank
     names = [q.findtext("name/text") for q in root.findall("question")
              if q.get("type") != "category"]
     assert len(set(names)) == len(names) == len(root.findall("question")) - 60

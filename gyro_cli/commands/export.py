@@ -120,6 +120,8 @@ def variant_of(problem: "Problem", number: int, title: str,
                statement: str | None) -> "Variant":
     """One problem solved and laid out as a bank's variant."""
     from ..render import html
+    import dataclasses
+
     from ..render.bank import Variant, blank_prompt, statement_html
     from ..solving.solve import solve
 
@@ -134,7 +136,10 @@ def variant_of(problem: "Problem", number: int, title: str,
              for k, v in (problem.data.get("given") or {}).items()}
     text = statement_html(statement, title, _data_lines(solved),
                           [blank_prompt(b) for b in blanks], given)
-    feedback = f'<div class="gyro">{html.worked_answer(solved, level=3, picture=False)}</div>'
+    # The page's anchors come from the file's path, which has no business in a bank: from
+    # the problem id instead (11/3-v02 -> p-11-3-v02).
+    shown = dataclasses.replace(solved, problem=dataclasses.replace(solved.problem, file=""))
+    feedback = f'<div class="gyro">{html.worked_answer(shown, level=3, picture=False)}</div>'
     return Variant(number, str(problem.id), given, text, feedback, blanks)
 
 

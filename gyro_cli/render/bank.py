@@ -140,7 +140,9 @@ def statement_html(statement: str | None, title: str, data_lines: list[tuple[str
         filled = fill_statement(statement, given)
         paragraphs = [p for p in re.split(r"\n\s*\n", filled.strip()) if p.strip()]
         return "".join(f"<p>{html_text(' '.join(p.split()))}</p>" for p in paragraphs)
-    out = [f"<p>{html_text(title)}.</p>"] if title else []
+    title = " ".join(str(title).split())
+    out = [f"<p>{html_text(title)}{'' if title.endswith(('.', '?', '!')) else '.'}</p>"] \
+        if title else []
     if data_lines:
         out.append("<p>Data:</p><ul>" + "".join(
             f"<li>{html_text(what)}: {html_text(text)}</li>" for what, text in data_lines)
