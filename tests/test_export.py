@@ -553,3 +553,42 @@ def test_prairielearn_shows_each_variant_only_its_own_inputs(tmp_path):
         data = _generate(tmp_path / "t" / "server.py", seed)
         assert list(data["correct_answers"]) == keys
         assert re.findall(r'answers-name="(\w+)"', _mustache(html, data["params"])) == keys
+
+
+def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
+    """Each bundled problem (and gyro vary's variants of it) with its `expected` replaced by
+    the numbers of the PrairieLearn export passes `gyro check`: the bank's answers are
+    the ones gyro check verifies."""
+    written = 0
+    for question in sorted(p for p in exported["prairielearn"].iterdir() if p.is_dir()):
+        source = PROBLEMS / f"{question.name}.yaml"
+        data = yaml.safe_load(source.read_text())
+        if "vary" in data:
+            done = run("vary", source, "--count", VARIANTS, "--seed", 0, "-o",
+                       tmp_path / "v" / question.name)
+            assert done.exit_code == 0, done.output
+            files = sorted((tmp_path / "v" / question.name).glob("*.yaml"))
+        else:
+            files = [source]
+        server = _generate(question / "server.py", 0)  # loads VARIANTS
+        for seed, file in enumerate(files):
+            variant = yaml.safe_load(file.read_text())
+            answers = _generate(question / "server.py", seed)["correct_answers"]
+            names = list(variant["find"]) + list(variant.get("expected") or {})
+            html = (question / "question.html").read_text()
+            expected: dict[str, list[str]] = {}
+            for key, value in answers.items():
+                name = max((n for n in names if key == n or key.startswith(n + "_")), key=len)
+                unit = re.search(rf'answers-name="{key}"[^>]*?(?:suffix="([^"]*)")?>',
+                                 html).group(1) or ""
+                expected.setdefault(name, []).append(f"{value!r} {unit}".strip())
+            variant["expected"] = {n: v if len(v) > 1 else v[0] for n, v in expected.items()}
+            variant.pop("vary", None)
+            target = tmp_path / "checked" / f"{question.name}-{seed}.yaml"
+            target.parent.mkdir(exist_ok=True)
+            target.write_text(yaml.safe_dump(variant, sort_keys=False, allow_unicode=True))
+            written += 1
+        assert server["correct_answers"]
+    done = run("check", tmp_path / "checked")
+    assert done.exit_code == 0, done.output
+    assert written >= 60 and "FAIL" not in done.output
