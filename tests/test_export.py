@@ -570,7 +570,6 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
             files = sorted((tmp_path / "v" / question.name).glob("*.yaml"))
         else:
             files = [source]
-        server = _generate(question / "server.py", 0)  # loads VARIANTS
         for seed, file in enumerate(files):
             variant = yaml.safe_load(file.read_text())
             answers = _generate(question / "server.py", seed)["correct_answers"]
@@ -588,7 +587,6 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
             target.parent.mkdir(exist_ok=True)
             target.write_text(yaml.safe_dump(variant, sort_keys=False, allow_unicode=True))
             written += 1
-        assert server["correct_answers"]
     done = run("check", tmp_path / "checked")
     assert done.exit_code == 0, done.output
     assert written >= 60 and "FAIL" not in done.output
