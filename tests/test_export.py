@@ -520,6 +520,16 @@ def test_bad_files_are_one_line_each_and_the_others_exported(run, write, tmp_pat
     assert not (tmp_path / "none.xml").exists()
 
 
+def test_a_repeated_id_is_refused_for_the_second_file(run, tmp_path):
+    copy = tmp_path / "copy.yaml"
+    copy.write_text((PROBLEMS / "11_1.yaml").read_text())
+    out = tmp_path / "bank.xml"
+    done = run("export", "--to", "moodle", PROBLEMS / "11_1.yaml", copy, "-o", out)
+    assert done.exit_code == 2
+    assert f"{copy}: id (line 1): id '11/1' is already exported from" in done.stderr
+    assert len(_moodle(out)) == 1
+
+
 @pytest.mark.parametrize("args, message", [
     (["--to", "moodle", "-o", "{tmp}"], "is a directory"),
     (["--to", "excel", "-o", "{tmp}/x"], "Invalid value for '--to'"),

@@ -155,10 +155,17 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     errors = [message for _, message in missing]
     out: list[ProblemBank] = []
     slugs: set[str] = set()
+    ids: dict[str, str] = {}  # problem id -> the file it was exported from
     unvaried: list[str] = []
     for path in files:
         try:
             problem, problems = _variants_of(path, count, seed, unvaried)
+            if str(problem.id) in ids:
+                # One id, one category / QTI ident / PrairieLearn UUID: a second file with
+                # the same id would mix its variants with the first one's.
+                raise InputError(f"id {str(problem.id)!r} is already exported from "
+                                 f"{ids[str(problem.id)]}; ids must differ within a bank",
+                                 key="id", line=problem.line("id"))
             statement = _statement(problem)
             variants = [variant_of(p, n, problem.title, statement)
                         for n, p in enumerate(problems, 1)]
@@ -168,6 +175,7 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
         if not any(v.blanks for v in variants):
             warn(f"{path}: no numeric answer to ask (word answers are not exported); skipped")
             continue
+        ids[str(problem.id)] = path
         name = slug(os.path.splitext(os.path.basename(path))[0])
         unique, n = name, 2
         while unique in slugs:
