@@ -101,7 +101,10 @@ def exported(tmp_path_factory):
         out[fmt] = target
     reference = {}
     for path in sorted(PROBLEMS.glob("*.yaml")):
-        reference[path.stem] = _reference(path, tmp / "vary", run)
+        numbers = _reference(path, tmp / "vary", run)
+        if any(numbers.values()):  # a problem with word answers only is not exported
+            reference[path.stem] = numbers
+    assert len(reference) >= 60
     out["reference"] = reference
     return out
 
@@ -156,7 +159,7 @@ def _stem_of(title_or_slug: str, reference: dict) -> str:
 def test_moodle_export_holds_the_solvers_answers(exported):
     bank = _moodle(exported["moodle"])
     reference = exported["reference"]
-    assert len(bank) == len(reference) == 60
+    assert len(bank) == len(reference)
     by_id = {}
     for path in PROBLEMS.glob("*.yaml"):
         data = yaml.safe_load(path.read_text())
@@ -185,7 +188,7 @@ def test_moodle_tolerance_is_the_problems(exported, run, tmp_path):
     for path in PROBLEMS.glob("*.yaml"):
         data = yaml.safe_load(path.read_text())
         match = re.fullmatch(r"([\d.]+)%", str(data.get("tolerance", "1%")))
-        if not match:
+        if not match or path.stem not in exported["reference"]:
             continue
         title = f"{data['id']}: {data['title']}" if data.get("title") else str(data["id"])
         category = "$course$/top/gyro/" + " ".join(title.split()).replace("/", "//")
@@ -205,7 +208,8 @@ def test_moodle_units_and_question_types(exported):
     assert str(PROBLEMS) not in exported["moodle"].read_text()  # no local path in a bank
     names = [q.findtext("name/text") for q in root.findall("question")
              if q.get("type") != "category"]
-    assert len(set(names)) == len(names) == len(root.findall("question")) - 60
+    categories = len(root.findall("question[@type='category']"))
+    assert len(set(names)) == len(names) == len(root.findall("question")) - categories
 
 
 # ---- QTI 1.2 -------------------------------------------------------------------------
@@ -222,7 +226,7 @@ def test_qti_package_holds_the_solvers_answers(exported):
         manifest = ET.fromstring(archive.read("imsmanifest.xml"))
         assert manifest.tag == f"{CP}manifest"
         resources = manifest.findall(f"{CP}resources/{CP}resource")
-        assert len(resources) == 60
+        assert len(resources) == len(reference)
         assert set(archive.namelist()) == {"imsmanifest.xml"} | {r.get("href") for r in resources}
         for resource in resources:
             assert resource.get("type") == "imsqti_xmlv1p2"
@@ -371,7 +375,7 @@ def test_prairielearn_questions_hold_the_solvers_answers(exported):
     reference = exported["reference"]
     root = exported["prairielearn"]
     questions = sorted(p for p in root.iterdir() if p.is_dir())
-    assert len(questions) == 60
+    assert len(questions) == len(reference)
     uuids = set()
     for question in questions:
         info = json.loads((question / "info.json").read_text())
@@ -401,7 +405,7 @@ def test_prairielearn_questions_hold_the_solvers_answers(exported):
             got[seed + 1] = list(answers.values())
         for n in want:
             _same(got[n], want[n])
-    assert len(uuids) == 60
+    assert len(uuids) == len(reference)
 
 
 def test_prairielearn_tolerances_are_attributes(exported):
@@ -599,4 +603,4 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
             written += 1
     done = run("check", tmp_path / "checked")
     assert done.exit_code == 0, done.output
-    assert written >= 60 and "FAIL" not in done.output
+    assert written >= len(exported["reference"]) and "FAIL" not in done.output
