@@ -84,6 +84,7 @@ STYLE = """
 .gyro .stepnote { margin: 0 0 0.4rem 1rem; }
 .gyro p { margin: 0.4rem 0; overflow-wrap: anywhere; }
 .gyro math { font-size: 1.15em; }
+.gyro h2 math, .gyro h3 math, .gyro h4 math { font-size: 1em; }  /* a heading's formula fits 360 px */
 .gyro .table { max-width: 100%; overflow-x: auto; }
 .gyro table { border-collapse: collapse; margin: 0.4rem 0; }
 .gyro th, .gyro td { border-bottom: 1px solid var(--rule, #c8c8c8);
