@@ -99,8 +99,12 @@ def _rendered(result, fmt: str, level: int = 2) -> str:
               help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
                    "the file gives no unit for), as US textbooks do; si (the default, or the "
                    "file's `units` key).")
+@click.option("--animate", "embed", is_flag=True,
+              help="With --format html: embed an animation of the motion (as `gyro simulate "
+                   "--animate`) in the worked answer of each problem whose kind moves.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False, standalone: bool = False, system: str | None = None) -> None:
+          force: bool = False, standalone: bool = False, system: str | None = None,
+          embed: bool = False) -> None:
     """Solve problem FILES and print worked answers.
 
     FILES may also be directories (every *.yaml and *.yml in them, as for
@@ -117,12 +121,23 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
         fail("--standalone goes with --format latex")
+    if embed and fmt != "html":
+        fail("--animate goes with --format html (an animation file alone: gyro simulate "
+             "FILE --animate OUT)")
     bad, crashed = len(missing), 0
-    document = []
+    document, scripts = [], []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
-            text = None if standalone else _rendered(result, fmt, 1 if len(files) == 1 else 2)
+            level = 1 if len(files) == 1 else 2
+            if embed:
+                from .render.animate import player_script
+
+                motion = result.animation_html()
+                text = result.html(level=level, animation=motion)
+                scripts += [player_script(result.animation_id)] if motion else []
+            else:
+                text = None if standalone else _rendered(result, fmt, level)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -152,8 +167,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     if document and fmt == "html":
         from .render import html
 
-        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document]),
-                   nl=False)
+        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document],
+                             scripts=scripts), nl=False)
     elif document:
         from .render import writeup
 

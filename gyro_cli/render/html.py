@@ -337,21 +337,23 @@ def _answer_id(result: Result, name: str) -> str:
 
 
 def worked_answer(result: Result, level: int = 2, picture: bool = True,
-                  ident: str | None = None) -> str:
+                  ident: str | None = None, animation: str = "") -> str:
     """One solved problem as an ``<article>``: title, source, notes, picture, Given table,
     the steps with MathML formulas, the checks, the answers and the warnings.
 
-    ``level``: the heading level of the title (sections one below). Needs no
+    ``level``: the heading level of the title (sections one below); ``animation``: a
+    figure of the motion (render.animate.html_fragment) placed after the picture. Needs no
     stylesheet to read; `STYLE` lays it out (rows, tables, dark mode).
     """
     saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
     try:
-        return _worked_answer(result, level, picture, ident or anchor(result))
+        return _worked_answer(result, level, picture, ident or anchor(result), animation)
     finally:
         _KEYS[0] = saved
 
 
-def _worked_answer(result: Result, level: int, picture: bool, ident: str) -> str:
+def _worked_answer(result: Result, level: int, picture: bool, ident: str,
+                   animation: str = "") -> str:
     problem, solution = result.problem, result.solution
     title = f"{problem.id}: {problem.title}" if problem.title else str(problem.id)
     out = [f'<article class="problem" aria-labelledby="{escape(ident)}">',
@@ -364,6 +366,7 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str) -> str
         out.append(f"<blockquote><p>{prose_html(note)}</p></blockquote>")
     if picture:
         out.append(_figure(result, ident))
+    out.append(animation)
     out.append(_given_table(result, level + 1))
     for section in solution.sections:
         out.append(_heading(level + 1, prose_html(section.title)))
@@ -394,10 +397,24 @@ def _figure(result: Result, ident: str) -> str:
 
 # ---- pages ------------------------------------------------------------------------
 
-def document(title: str, body: str) -> str:
-    """A whole HTML document around ``body`` (inside <main>)."""
+def csp(scripts: list[str] = ()) -> str:
+    """The page's Content-Security-Policy: nothing leaves the page, and the only scripts
+    that run are ``scripts`` (the embedded animations' players), allowed by their hash."""
+    if not scripts:
+        return CSP
+    import base64
+    import hashlib
+
+    hashes = " ".join("'sha256-" + base64.b64encode(hashlib.sha256(s.encode()).digest())
+                      .decode() + "'" for s in scripts)
+    return f"{CSP}; script-src {hashes}"
+
+
+def document(title: str, body: str, scripts: list[str] = ()) -> str:
+    """A whole HTML document around ``body`` (inside <main>); ``scripts``: the inline
+    scripts of ``body`` the page may run."""
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-            f"<meta http-equiv=\"Content-Security-Policy\" content=\"{CSP}\">\n"
+            f"<meta http-equiv=\"Content-Security-Policy\" content=\"{csp(scripts)}\">\n"
             "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
             "<meta name=\"color-scheme\" content=\"light dark\">\n"
             "<meta name=\"generator\" content=\"gyro\">\n"
@@ -407,7 +424,7 @@ def document(title: str, body: str) -> str:
 
 
 def page(results: list[Result], title: str | None = None,
-         articles: list[str] | None = None) -> str:
+         articles: list[str] | None = None, scripts: list[str] = ()) -> str:
     """One self-contained page: a single problem, or several with a contents list.
     ``articles``: their `worked_answer`, already rendered (at level 1 for one problem, 2
     for several: the command renders each file on its own, so that a failure is that
@@ -416,7 +433,8 @@ def page(results: list[Result], title: str | None = None,
         r = results[0]
         title = title or (f"{r.problem.id}: {r.problem.title}" if r.problem.title
                           else str(r.problem.id))
-        return document(title, worked_answer(r, level=1) if articles is None else articles[0])
+        return document(title, worked_answer(r, level=1) if articles is None else articles[0],
+                        scripts)
     title = title or "Worked solutions"
     items = "".join(f'<li><a href="#{escape(anchor(r))}">{escape(str(r.problem.id))}'
                     + (f": {escape(r.problem.title)}" if r.problem.title else "") + "</a></li>"
@@ -424,7 +442,7 @@ def page(results: list[Result], title: str | None = None,
     body = [f"<h1>{escape(title)}</h1>",
             f'<nav aria-label="problems"><h2>Problems</h2><ol>{items}</ol></nav>']
     body += articles if articles is not None else [worked_answer(r, level=2) for r in results]
-    return document(title, "\n".join(body))
+    return document(title, "\n".join(body), scripts)
 
 
 def check_page(run, results: dict[str, Result] | None = None,
