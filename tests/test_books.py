@@ -107,3 +107,67 @@ def test_without_theta_answers_that_need_it_are_refused_in_one_line(run, write, 
     assert out.exit_code == 2, out.stdout
     assert out.stderr.count("\n") == 1 and "given.theta" in out.stderr
     assert "Traceback" not in out.stderr
+
+
+# ---- item 11: gyroscopic_torque without a mass; spin from speed; tilt from a drop ----
+
+def test_irodov_turbine_rail_force_without_a_mass(problems_dir):
+    # Irodov 1.299: F = 2 pi n I v / (l R), the couple I omega Omega shared by two rails l apart.
+    I, n, v, R, l = 240.0, 1500 / 60, 50 / 3.6, 250.0, 1.5
+    F = 2 * math.pi * n * I * v / (l * R)
+    assert F == pytest.approx(1396, abs=1)       # the book: 1.4 kN
+    result = solve_file(str(problems_dir / "irodov_turbine_locomotive.yaml"))
+    assert result.answers["bearing_forces"].si_values == [pytest.approx(F, rel=1e-9),
+                                                          pytest.approx(-F, rel=1e-9)]
+    assert result.answers["bearing_forces"].labels == ["A", "B"]
+    assert any("couple's share alone" in w for w in result.solution.warnings)
+
+
+def test_khurmi_wheel_drop_harmonic(problems_dir):
+    # The wheel falls 6 mm and rises in 0.1 s, y = 3 mm (1 - cos(2 pi t / 0.1 s)):
+    # its greatest speed 3 mm x 62.83 rad/s = 0.1885 m/s tilts the 1.5 m axle at 0.1257 rad/s.
+    J, v, r_w, L = 180.0, 95 / 3.6, 0.9, 1.5
+    spin = v / r_w                               # 29.32 rad/s, rolling without slip
+    tilt = 0.003 * (2 * math.pi / 0.1) / L
+    C = J * spin * tilt                          # the couple that turns H = J spin at tilt
+    assert C == pytest.approx(663.3, abs=0.2)    # the book: 663 N m
+    result = solve_file(str(problems_dir / "khurmi_wheel_drop.yaml"))
+    assert result.answers["moment"].si_values == [pytest.approx(C, rel=1e-9)]
+    assert result.answers["precession"].si_values == [pytest.approx(tilt, rel=1e-9)]
+    assert result.answers["couple_forces"].si_values == [pytest.approx(C / L, rel=1e-9),
+                                                         pytest.approx(-C / L, rel=1e-9)]
+
+
+def test_wheel_drop_over_a_length_at_a_speed(write):
+    # Rail wheels (J = 2 kg m^2 each pair), r_w = 0.5 m at 72 km/h; one wheel drops 10 mm
+    # over 2 m of track, gauge 1.5 m. The drop lasts 2 / 20 = 0.1 s, the axle turns through
+    # 0.010 / 1.5 rad in it: Omega = 0.06667 rad/s; spin = 20 / 0.5 = 40 rad/s;
+    # M = 2 x 40 x 0.06667 = 5.333 N m.
+    path = write("""\
+        id: x
+        kind: gyroscopic_torque
+        given: {J: 2 kg m^2, speed: 72 km/h, wheel_radius: 0.5 m, drop: 10 mm,
+                drop_length: 2 m, bearing_spacing: 1.5 m}
+        find: {moment: N m, precession: rad/s}
+        """)
+    assert si(path, "precession") == [pytest.approx(0.010 / 1.5 / 0.1, rel=1e-9)]
+    assert si(path, "moment") == [pytest.approx(2 * 40 * 0.010 / 1.5 / 0.1, rel=1e-9)]
+
+
+@pytest.mark.parametrize("given, key", [
+    ("mass: 0 kg, J: 240 kg m^2, spin: 1500 rpm, precession: 0.05 rad/s", "given.mass"),
+    ("J: 240 kg m^2, spin: 1500 rpm, precession: 0.05 rad/s, bearing_spacing: 1.5 m",
+     "given.mass"),
+    ("J: 180 kg m^2, spin: 30 rad/s, drop: 6 mm, bearing_spacing: 1.5 m", "given.drop_length"),
+    ("J: 180 kg m^2, wheel_radius: 0.9 m, precession: 0.1 rad/s", "given.speed"),
+    ("J: 180 kg m^2, spin: 30 rad/s, speed: 10 m/s", "given.turn_radius"),
+])
+def test_gyroscopic_torque_least_data_refusals_are_one_line(run, write, given, key):
+    find = "bearing_loads: N" if "bearing_spacing: 1.5 m}" in given or "0.05 rad/s, b" in \
+        given else "moment: N m"
+    path = write(f"id: x\nkind: gyroscopic_torque\ngiven: {{{given}}}\nfind: {{{find}}}\n")
+    out = run("solve", path)
+    assert out.exit_code == 2, out.stdout
+    assert out.stderr.count("\n") == 1 and key in out.stderr, out.stderr
+    if key == "given.mass" and "mass: 0" in given:
+        assert "leave mass out" in out.stderr

@@ -99,7 +99,9 @@ def _positive(values: dict, key: str, allow_zero: bool = False) -> None:
     value = values.get(key)
     if isinstance(value, float) and (value < 0 or (value == 0 and not allow_zero)):
         need = "zero or positive" if allow_zero else "positive"
-        raise InputError(f"must be {need}, got {value:g} (SI)", key=f"given.{key}")
+        hint = ("; where the mass plays no part (only a couple or a rate is asked), leave "
+                "mass out" if key in ("mass", "weight") and value == 0 else "")
+        raise InputError(f"must be {need}, got {value:g} (SI){hint}", key=f"given.{key}")
 
 
 def build_body(values: dict, us_customary: bool, work: Work) -> Body:
