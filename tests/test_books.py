@@ -171,3 +171,130 @@ def test_gyroscopic_torque_least_data_refusals_are_one_line(run, write, given, k
     assert out.stderr.count("\n") == 1 and key in out.stderr, out.stderr
     if key == "given.mass" and "mass: 0" in given:
         assert "leave mass out" in out.stderr
+
+
+# ---- item 5: the books' own words; a suggestion never flips a meaning ------------
+
+SHIP = """\
+id: x
+kind: ship
+given: {mass: 2.2 t, k_axial: 320 mm, spin: 1800 rpm, rotor_sense: %s,
+        speed: 25 km/h, turn_radius: 250 m, turn: %s}
+find: {couple: N*m, effect: null}
+"""
+
+
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def _steering_effect(H_forward: bool, turn_left: bool) -> str:
+    """By hand: ship axes x forward, y to port, z up; the ship feels -(omega_p x H).
+    About +y the couple carries x (the bow) toward -z: it lowers the bow."""
+    H = (1.0 if H_forward else -1.0, 0.0, 0.0)
+    wp = (0.0, 0.0, 1.0 if turn_left else -1.0)
+    on_ship = [-c for c in _cross(wp, H)]
+    return "lowers the bow" if on_ship[1] > 0 else "raises the bow"
+
+
+@pytest.mark.parametrize("sense, forward", [
+    ("anticlockwise_from_stern", False), ("anticlockwise from stern", False),
+    ("counter-clockwise from the stern", False), ("counterclockwise seen from aft", False),
+    ("Anti-clockwise when viewed from the rear", False), ("clockwise from aft", True),
+    ("clockwise when viewed from the aft", True), ("clockwise from the bow", False),
+    ("anticlockwise from the bow", True), ("anticlockwise from the front", True),
+    ("clockwise_from_stern", True),
+])
+@pytest.mark.parametrize("turn, left", [("port", True), ("starboard", False), ("left", True),
+                                        ("to starboard", False)])
+def test_ship_words_as_books_print_them(write, sense, forward, turn, left):
+    # Seen from the stern the observer looks forward: clockwise points forward
+    # (right-hand rule); seen from the bow, clockwise points aft.
+    result = solve_file(str(write(SHIP % (sense, turn))))
+    assert _steering_effect(forward, left) in result.answers["effect"].si_values[0]
+
+
+def test_bundled_6000kg_problem_in_its_own_words(problems_dir):
+    text = (problems_dir / "ship_pitching_6000kg.yaml").read_text()
+    assert "bow: descending" in text and "anticlockwise viewed from the bow" in text
+    # anticlockwise from the bow = clockwise from the stern: H forward (+x); the bow falling
+    # is a rotation about +y; omega_p x H = y x x = -z on the rotor, +z on the ship: to port.
+    H, wp = (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)
+    assert [-c for c in _cross(wp, H)][2] > 0
+    assert si(problems_dir / "ship_pitching_6000kg.yaml", "effect") == ["turns the ship to port"]
+
+
+@pytest.mark.parametrize("bow, word", [("descending", "falling"), ("ascending", "rising"),
+                                       ("rising", "rising"), ("falling", "falling")])
+def test_ship_bow_words(write, bow, word):
+    text = (SHIP % ("clockwise_from_stern", "left")).replace(
+        "speed: 25 km/h, turn_radius: 250 m, turn: left", f"motion: pitching, "
+        f"pitch_rate: 0.8 rad/s, bow: {bow}")
+    result = solve_file(str(write(text)))
+    # bow rising: rotation about -y; omega_p x H = (-y) x (+x) = +z on the rotor, -z on the
+    # ship: starboard. Falling: port.
+    assert result.answers["effect"].si_values == [
+        "turns the ship to starboard" if word == "rising" else "turns the ship to port"]
+
+
+@pytest.mark.parametrize("text, refused", [
+    ("anticlockwize_from_stern", "clockwise_from_stern'"), ("clockwise", "from_"),
+    ("anticlockwise", "'clockwise"), ("counterclockwise_from_stirn", "'clockwise"),
+])
+def test_a_suggestion_never_flips_a_meaning(run, write, text, refused):
+    out = run("solve", write(SHIP % (text, "left")))
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1
+    assert f"did you mean {refused}" not in out.stderr and "Traceback" not in out.stderr
+    if "did you mean" in out.stderr:
+        assert "counterclockwise" in out.stderr.split("did you mean")[1]
+
+
+def test_no_suggestion_of_any_word_key_flips_a_choice():
+    """Every word key of every kind: a one-letter slip in a choice, or the choice with its
+    opposite's prefix swapped in, is never answered with the opposite choice."""
+    from gyro_cli.core.params import flips, read_word, safe_choices
+
+    opposite = {"clockwise": "anticlockwise", "left": "right", "rising": "falling",
+                "stern": "bow", "rear": "front", "same": "opposite"}
+    from gyro_cli.core.body import BODY_PARAMS
+    from gyro_cli.kinds import get, names
+
+    for name in names():
+        for param in get(name).params + BODY_PARAMS:
+            for choice in param.choices:
+                assert read_word(param, choice) == choice
+                for i in range(1, len(choice) - 1):
+                    slip = choice[:i] + choice[i + 1:]
+                    assert all(not flips(choice, c) for c in safe_choices(slip, param.choices))
+                for word, other in opposite.items():
+                    if word in choice.split("_") and other not in choice:
+                        swapped = choice.replace(word, other)
+                        assert choice not in safe_choices(swapped, param.choices), swapped
+
+
+def test_the_docs_list_every_spelling_a_kind_accepts():
+    """Every other spelling a kind's word key accepts is listed in docs/real_problems.md,
+    and each one the page lists is read as the page says."""
+    from pathlib import Path
+    import re
+
+    from gyro_cli.core.body import BODY_PARAMS
+    from gyro_cli.core.params import normal_word, read_word
+    from gyro_cli.kinds import get, names
+
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "real_problems.md").read_text()
+    section = doc.split("## Words as the books print them")[1].split("\n## ")[0]
+    rows = re.findall(r"^\| `(\w+)` \| (.+?) \| `(.+?)` \|$", section, re.M)
+    assert rows
+    listed = set()
+    ship = {p.name: p for p in get("ship").params}
+    for key, written, reading in rows:
+        for word in re.findall(r"`([^`]+)`", written):
+            for turn in ("clockwise", "counterclockwise"):
+                text, want = word.replace("...", turn), reading.replace("...", turn)
+                assert read_word(ship[key], text) == want, (key, text, want)
+                listed.add(normal_word(text))
+    for name in names():
+        for param in get(name).params + BODY_PARAMS:
+            for spelling, _ in param.words:
+                assert spelling in listed, (name, param.name, spelling)

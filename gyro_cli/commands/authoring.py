@@ -199,7 +199,13 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             words: list = list(p.choices)
             if set(words) == {"true", "false"}:
                 words += [True, False]  # YAML reads `false` as a boolean
-            given[p.name] = {"enum": words, "description": p.doc}
+            if p.words or any("clockwise" in str(w) for w in words):
+                # the books' spellings: any case, spaces or hyphens, "anticlockwise",
+                # "seen from the" (docs/real_problems.md); gyro says if it reads none
+                given[p.name] = {"anyOf": [{"enum": words + [w for w, _ in p.words]},
+                                           {"type": "string"}], "description": p.doc}
+            else:
+                given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
             given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
         elif p.dimension == "particles":

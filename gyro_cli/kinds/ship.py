@@ -206,6 +206,19 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     return wp
 
 
+# The books' own words (Khurmi, Rattan): other spellings of each choice.
+_ENDS = {"stern": "stern", "aft": "stern", "rear": "stern", "back": "stern", "behind": "stern",
+         "astern": "stern", "bow": "bow", "front": "bow", "fore": "bow", "ahead": "bow"}
+SENSE_WORDS = tuple((f"{turn}_from_{end}", f"{turn}_from_{choice}")
+                    for turn in ("clockwise", "counterclockwise")
+                    for end, choice in _ENDS.items() if end != choice)
+TURN_WORDS = (("port", "left"), ("to_port", "left"), ("to_the_left", "left"),
+              ("starboard", "right"), ("to_starboard", "right"), ("to_the_right", "right"))
+BOW_WORDS = (("descending", "falling"), ("going_down", "falling"), ("dipping", "falling"),
+             ("ascending", "rising"), ("going_up", "rising"), ("lifting", "rising"),
+             ("bow_descending", "falling"), ("bow_falling", "falling"),
+             ("bow_ascending", "rising"), ("bow_rising", "rising"))
+
 KIND = Kind(
     name="ship",
     summary="a ship's fore-and-aft turbine rotor: gyroscopic couple and its effect in steering, "
@@ -214,20 +227,20 @@ KIND = Kind(
     params=(
         Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)"),
         Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
-              choices=V.SHIP_SENSES),
+              choices=V.SHIP_SENSES, words=SENSE_WORDS),
         Param("motion", "word", "motion", "steering (default), pitching or rolling",
               choices=("steering", "pitching", "rolling")),
         Param("speed", "speed", "v", "ship's speed (steering)"),
         Param("turn_radius", "length", "R", "radius of the turn (steering)"),
         Param("turn", "word", "turn", "left (to port, default) or right (to starboard)",
-              choices=("left", "right")),
+              choices=("left", "right"), words=TURN_WORDS),
         Param("amplitude", "angle", "phi", "pitching: largest angle from the mean position "
               "(half the total swing)"),
         Param("period", "time", "T", "pitching: period of the simple harmonic pitching"),
         Param("pitch_rate", "rate", "omega_p", "pitching: the pitching rate at the instant "
               "(instead of amplitude and period)"),
         Param("bow", "word", "bow", "pitching: the bow rising or falling at the instant asked",
-              choices=("rising", "falling")),
+              choices=("rising", "falling"), words=BOW_WORDS),
         Param("roll_rate", "rate", "omega_r", "rolling: the rolling rate (the couple is zero "
               "whatever it is)"),
     ),

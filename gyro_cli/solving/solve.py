@@ -145,7 +145,8 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         param = params[key]
         quantity = problem.quantities[key]
         if isinstance(value, str):
-            lines.append(GivenLine(key, param.symbol, value, value, ""))
+            lines.append(GivenLine(key, param.symbol, str(quantity) if isinstance(quantity, str)
+                                   else value, value, ""))
             continue
         if param.dimension == "particles":
             lines.append(GivenLine(key, param.symbol, f"{len(value)} particles",
