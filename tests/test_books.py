@@ -298,3 +298,47 @@ def test_the_docs_list_every_spelling_a_kind_accepts():
         for param in get(name).params + BODY_PARAMS:
             for spelling, _ in param.words:
                 assert spelling in listed, (name, param.name, spelling)
+
+
+# ---- item 6: pitching as the books give it -----------------------------------
+
+def test_khurmi_pitching_between_the_extremes(problems_dir):
+    # 12 deg between the extremes is an amplitude of 6 deg from the mean position.
+    J, omega = 3500 * 0.45 ** 2, 3000 * RPM                 # 708.75 kg m^2, 314.16 rad/s
+    phi, w1 = math.radians(12) / 2, 2 * math.pi / 40
+    # theta = phi sin(w1 t): its rate phi w1 cos(w1 t) is greatest at the mean position
+    rate = phi * w1
+    C = J * omega * rate
+    assert C == pytest.approx(3663, abs=1)                 # the book: 3.66 kN m
+    path = problems_dir / "ship_pitching_3500kg_extremes.yaml"
+    assert si(path, "couple") == [pytest.approx(C, rel=1e-9)]
+    assert si(path, "max_precession") == [pytest.approx(rate, rel=1e-9)]
+
+
+SHIP_PITCH = """\
+id: x
+kind: ship
+given: {mass: 3500 kg, k_axial: 0.45 m, spin: 3000 rpm, rotor_sense: clockwise_from_stern,
+        motion: pitching, bow: falling, %s}
+find: {couple: N*m}
+"""
+
+
+@pytest.mark.parametrize("keys", [
+    "amplitude: 6 deg, period: 40 s", "pitch_amplitude: 6 deg, period: 40 s",
+    "pitch_total: 12 deg, period: 40 s", "between_extremes: 12 deg, frequency: 0.025 Hz",
+    "amplitude: 6 deg, frequency: 0.15708 rad/s",
+])
+def test_pitching_amplitude_swing_period_or_frequency(write, keys):
+    C = 3500 * 0.45 ** 2 * 3000 * RPM * math.radians(6) * 2 * math.pi / 40
+    assert si(write(SHIP_PITCH % keys), "couple") == [pytest.approx(C, rel=1e-4)]
+
+
+@pytest.mark.parametrize("keys, key", [
+    ("amplitude: 6 deg, pitch_total: 12 deg, period: 40 s", "given.pitch_total"),
+    ("period: 40 s, frequency: 0.025 Hz, amplitude: 6 deg", "given.frequency"),
+    ("period: 40 s", "given.amplitude"),
+])
+def test_pitching_keys_refused_in_one_line(run, write, keys, key):
+    out = run("solve", write(SHIP_PITCH % keys))
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1 and key in out.stderr
