@@ -342,3 +342,79 @@ def test_pitching_amplitude_swing_period_or_frequency(write, keys):
 def test_pitching_keys_refused_in_one_line(run, write, keys, key):
     out = run("solve", write(SHIP_PITCH % keys))
     assert out.exit_code == 2 and out.stderr.count("\n") == 1 and key in out.stderr
+
+
+# ---- item 7: a ship's turning rate; a vehicle's weight; wheels by mass and k -----
+
+@pytest.mark.parametrize("rate, turn", [("0.1 rad/s", "left"), ("5.7296 deg/s", "port"),
+                                        ("0.1 rad/s", "starboard")])
+def test_ship_steering_from_a_turning_rate(write, rate, turn):
+    # Khurmi's 3500 kg rotor (k = 0.45 m, 3000 rpm clockwise from the stern) at 36 km/h on a
+    # 100 m curve turns at 10 / 100 = 0.1 rad/s: C = 708.75 x 314.16 x 0.1 = 22.27 kN m;
+    # left: raises the bow (H forward, omega_p up: z x x = +y on the rotor, -y on the ship).
+    path = write(f"""\
+        id: x
+        kind: ship
+        given: {{mass: 3500 kg, k_axial: 0.45 m, spin: 3000 rpm,
+                rotor_sense: clockwise_from_stern, turn_rate: {rate}, turn: {turn}}}
+        find: {{couple: N*m, effect: null}}
+        """)
+    result = solve_file(str(path))
+    assert result.answers["couple"].si_values == [pytest.approx(708.75 * 3000 * RPM * 0.1,
+                                                                rel=1e-4)]
+    left = turn in ("left", "port")
+    assert _steering_effect(True, left) in result.answers["effect"].si_values[0]
+
+
+def test_ship_turn_rate_with_speed_is_refused(run, write):
+    path = write("""\
+        id: x
+        kind: ship
+        given: {J: 700 kg m^2, spin: 3000 rpm, turn_rate: 0.1 rad/s, speed: 10 m/s}
+        find: {couple: N*m}
+        """)
+    out = run("solve", path)
+    assert out.exit_code == 2 and "given.speed" in out.stderr and out.stderr.count("\n") == 1
+
+
+def test_two_wheeler_by_its_weight_and_wheels_by_mass_and_k(problems_dir, write):
+    # The bundled 250 kg machine, stated as "weighs 2452.5 N" with each wheel 10 kg at
+    # k = 0.31623 m (I_w = 10 x 0.1 = 1 kg m^2). By hand: omega_w = 25 / 0.3 = 83.33 rad/s,
+    # omega_p = 25 / 50 = 0.5 rad/s; C_g = (2 x 1 + 5 x 0.3)(83.33)(0.5) = 145.8 N m;
+    # C_c = 250 x 25^2 x 0.6 / 50 = 1875 N m; tan(theta) = 2020.8 / (250 x 9.81 x 0.6).
+    text = (problems_dir / "two_wheeler_250kg.yaml").read_text()
+    text = text.replace("  mass: 250 kg\n", "  weight: 2452.5 N\n").replace(
+        "  wheel_inertia: 1 kg*m^2\n", "  wheel_mass: 10 kg\n  wheel_k: 0.316228 m\n")
+    path = write(text)
+    C_g = (2 * 1 + 5 * 0.3) * (25 / 0.3) * (25 / 50)
+    C_c = 250 * 25 ** 2 * 0.6 / 50
+    theta = math.atan((C_g + C_c) / (250 * 9.81 * 0.6))
+    assert si(path, "gyroscopic_couple") == [pytest.approx(C_g, rel=1e-5)]
+    assert si(path, "centrifugal_couple") == [pytest.approx(C_c, rel=1e-9)]
+    assert si(path, "heel_angle") == [pytest.approx(theta, rel=1e-5)]
+    assert math.degrees(theta) == pytest.approx(53.94, abs=0.01)
+
+
+def test_four_wheeler_by_weight_and_axles_by_mass_and_k(problems_dir, write):
+    # Khurmi's trolley: each axle with its wheels 200 kg at k = 0.3 m: I = 200 x 0.09 = 18.
+    text = (problems_dir / "four_wheeler_trolley_2500kg.yaml").read_text()
+    text = text.replace("  mass: 2500 kg\n", "  weight: 24.525 kN\n").replace(
+        "  axle_inertia: 18 kg*m^2\n", "  axle_mass: 200 kg\n  axle_k: 0.3 m\n")
+    result = solve_file(str(write(text)))
+    # outer and inner wheels, re-derived in the bundled file's notes: 7132 N and 5131 N
+    assert result.answers["wheel_reactions"].si_values == [pytest.approx(7132, abs=1),
+                                                           pytest.approx(5131, abs=1)]
+
+
+@pytest.mark.parametrize("extra, key", [
+    ("  weight: 2452.5 N\n", "given.weight"),                      # with mass too
+    ("  wheel_mass: 10 kg\n", "given.wheel_k"),                    # k missing
+    ("  wheel_k: 0.3 m\n", "given.wheel_mass"),
+])
+def test_vehicle_data_refusals(problems_dir, run, write, extra, key):
+    text = (problems_dir / "two_wheeler_250kg.yaml").read_text()
+    if "wheel" in extra:
+        text = text.replace("  wheel_inertia: 1 kg*m^2\n", "")
+    path = write(text.replace("  cg_height: 0.6 m\n", "  cg_height: 0.6 m\n" + extra))
+    out = run("solve", path)
+    assert out.exit_code == 2 and key in out.stderr and out.stderr.count("\n") == 1, out.stderr

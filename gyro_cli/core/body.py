@@ -267,3 +267,60 @@ def spin_angular_momentum(given, work: Work) -> float:
     spin = given["spin"]
     return work.step("H", "J psidot", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
                      "kg m^2/s", ref="angular momentum of the rotor, H = J omega_z")
+
+
+# ---- the vehicles' data as books give them ---------------------------------------
+
+def vehicle_params(*rotors: str) -> tuple[Param, ...]:
+    """The keys a vehicle kind adds for books' data: its weight, and each rotor (wheel,
+    axle, engine) by its mass and radius of gyration."""
+    params = [Param("weight", "force", "W", "instead of mass: the weight ('weighs 20 kN'); "
+                    "m = W / g")]
+    for rotor in rotors:
+        params += [Param(f"{rotor}_mass", "mass", f"m_{rotor[0]}", f"instead of "
+                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k"),
+                   Param(f"{rotor}_k", "length", f"k_{rotor[0]}", f"the {rotor}'s radius of "
+                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2")]
+    return tuple(params)
+
+
+def vehicle_data(given, work: Work, *rotors: str):
+    """A copy of ``given`` with ``mass`` from ``weight`` and each ``<rotor>_inertia`` from
+    ``<rotor>_mass`` and ``<rotor>_k``, each written as a step."""
+    from dataclasses import replace
+
+    values = dict(given.values)
+    steps = []
+    if "weight" in values:
+        if "mass" in values:
+            raise InputError("give mass or weight, not both", key="given.weight")
+        W, g = values["weight"], values["g"]
+        if W <= 0:
+            raise InputError("weight must be positive", key="given.weight")
+        values["mass"] = W / g
+        steps.append(("m", "W / g", f"{qty(W, 'N')} / {qty(g, 'm/s^2')}", W / g, "kg"))
+    for rotor in rotors:
+        mass_key, k_key, inertia_key = f"{rotor}_mass", f"{rotor}_k", f"{rotor}_inertia"
+        if mass_key not in values and k_key not in values:
+            continue
+        if mass_key not in values or k_key not in values:
+            missing = k_key if mass_key in values else mass_key
+            raise InputError(f"{inertia_key} from the mass needs {mass_key} and {k_key} "
+                             f"({inertia_key} = {mass_key} {k_key}^2)", key=f"given.{missing}")
+        if inertia_key in values and inertia_key not in given.defaulted:
+            raise InputError(f"give {inertia_key}, or {mass_key} with {k_key}, not both",
+                             key=f"given.{mass_key}")
+        m, k = values[mass_key], values[k_key]
+        if m < 0 or k < 0:
+            raise InputError(f"{mass_key} and {k_key} cannot be negative",
+                             key=f"given.{mass_key if m < 0 else k_key}")
+        symbol = {"wheel": "I_w", "engine": "I_E", "axle": "I_axle"}.get(rotor, inertia_key)
+        values[inertia_key] = m * k * k
+        steps.append((symbol, f"m_{rotor[0]} k_{rotor[0]}^2",
+                      f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2"))
+    if steps:
+        work.section("Data as given")
+        for symbol, formula, substitution, value, unit in steps:
+            work.step(symbol, formula, substitution, value, unit)
+    return replace(given, values=values, defaulted={k for k in given.defaulted
+                                                    if values.get(k) == given.values.get(k)})

@@ -111,6 +111,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 def _refuse_foreign(given: Given, motion: str) -> None:
     """Keys of another motion are refused rather than silently ignored."""
     belongs = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
+               "turn_rate": "steering",
                "bow": "pitching", "pitch_rate": "pitching", "roll_rate": "rolling",
                **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS}}
     for key, owner in belongs.items():
@@ -120,9 +121,27 @@ def _refuse_foreign(given: Given, motion: str) -> None:
 
 
 def _steering(given: Given, work: Work) -> V.Vector:
+    if "turn_rate" in given:
+        for key in ("speed", "turn_radius"):
+            if key in given:
+                raise InputError(f"give turn_rate, or speed and turn_radius (omega_p = v / R), "
+                                 f"not both", key=f"given.{key}")
+        rate = given["turn_rate"]
+        if rate <= 0:
+            raise InputError("turn_rate is a positive rate; say which way in turn (left or "
+                             "right)", key="given.turn_rate")
+        turn = given.word("turn", "left")
+        work.section("Steering: precession about the vertical")
+        work.step("omega_p", value=rate, unit="rad/s", note="the ship's rate of turn, as given")
+        wp = V.steering_precession(rate, 1.0, turn)
+        work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'}"
+                  f" seen from above): omega_p = {vec(wp, 'rad/s')}, along "
+                  f"{'+z' if turn == 'left' else '-z'}")
+        return wp
     for key in ("speed", "turn_radius"):
         if key not in given:
-            raise InputError("steering needs speed and turn_radius (omega_p = v / R)",
+            raise InputError("steering needs speed and turn_radius (omega_p = v / R), or "
+                             "turn_rate",
                              key=f"given.{key}")
     v, R = given["speed"], given["turn_radius"]
     if R <= 0:
@@ -269,6 +288,8 @@ KIND = Kind(
               choices=("steering", "pitching", "rolling")),
         Param("speed", "speed", "v", "ship's speed (steering)"),
         Param("turn_radius", "length", "R", "radius of the turn (steering)"),
+        Param("turn_rate", "rate", "omega_p", "steering: the ship's rate of turn (rad/s, deg/s), "
+              "instead of speed and turn_radius"),
         Param("turn", "word", "turn", "left (to port, default) or right (to starboard)",
               choices=("left", "right"), words=TURN_WORDS),
         Param("amplitude", "angle", "phi", "pitching: largest angle from the mean position "
