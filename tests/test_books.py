@@ -287,12 +287,13 @@ def test_the_docs_list_every_spelling_a_kind_accepts():
     rows = re.findall(r"^\| `(\w+)` \| (.+?) \| `(.+?)` \|$", section, re.M)
     assert rows
     listed = set()
-    ship = {p.name: p for p in get("ship").params}
+    params = {p.name: p for p in BODY_PARAMS}
+    params.update({p.name: p for p in get("ship").params})
     for key, written, reading in rows:
         for word in re.findall(r"`([^`]+)`", written):
             for turn in ("clockwise", "counterclockwise"):
                 text, want = word.replace("...", turn), reading.replace("...", turn)
-                assert read_word(ship[key], text) == want, (key, text, want)
+                assert read_word(params[key], text) == want, (key, text, want)
                 listed.add(normal_word(text))
     for name in names():
         for param in get(name).params + BODY_PARAMS:
@@ -418,3 +419,94 @@ def test_vehicle_data_refusals(problems_dir, run, write, extra, key):
     path = write(text.replace("  cg_height: 0.6 m\n", "  cg_height: 0.6 m\n" + extra))
     out = run("solve", path)
     assert out.exit_code == 2 and key in out.stderr and out.stderr.count("\n") == 1, out.stderr
+
+
+# ---- item 8: shapes -----------------------------------------------------------
+
+def _inertias_by_integration(shape: str, m: float, r: float = 0.0, r_i: float = 0.0,
+                             w: float = 0.0, L: float = 0.0, n: int = 400):
+    """J and I_G of a uniform body by midpoint sums over its volume (or surface), written
+    from the definitions J = sum dm (x^2 + y^2), I_G = sum dm (y^2 + z^2), z the axis."""
+    import numpy as np
+
+    u = (np.arange(n) + 0.5) / n
+    if shape == "shell":        # mass on the surface rho = r, z in [-L/2, L/2], phi uniform
+        z = (u - 0.5) * L
+        phi = 2 * np.pi * u
+        Z, P = np.meshgrid(z, phi)
+        x, y = r * np.cos(P), r * np.sin(P)
+        return m * np.mean(x ** 2 + y ** 2), m * np.mean(y ** 2 + Z ** 2)
+    if shape == "hollow_sphere":  # uniform on the sphere: cos(polar) uniform in [-1, 1]
+        c = 2 * u - 1
+        phi = 2 * np.pi * u
+        C, P = np.meshgrid(c, phi)
+        s = np.sqrt(1 - C ** 2)
+        x, y, z = r * s * np.cos(P), r * s * np.sin(P), r * C
+        return m * np.mean(x ** 2 + y ** 2), m * np.mean(y ** 2 + z ** 2)
+    if shape == "box":          # x, y in [-w/2, w/2], z in [-L/2, L/2]
+        a = (u - 0.5)
+        X, Y, Z = np.meshgrid(a * w, a * w, a[:: max(1, n // 100)] * L, sparse=True)
+        J = m * np.mean(X ** 2 + Y ** 2 + 0 * Z)
+        return J, m * np.mean(Y ** 2 + Z ** 2 + 0 * X)
+    if shape == "annulus":      # area element rho drho dphi dz, rho in [r_i, r]
+        rho = r_i + (r - r_i) * u
+        z = (u - 0.5) * L
+        R, Z = np.meshgrid(rho, z)
+        weight = R / R.mean()
+        J = m * np.mean(weight * R ** 2)
+        I = m * np.mean(weight * (R ** 2 / 2 + Z ** 2))   # <y^2> over phi is rho^2 / 2
+        return J, I
+    raise ValueError(shape)
+
+
+@pytest.mark.parametrize("shape, dims, keys", [
+    ("shell", dict(r=1.0, L=3.0), "radius: 1 m, length: 3 m"),
+    ("hollow_sphere", dict(r=0.2), "radius: 0.2 m"),
+    ("box", dict(w=0.3, L=0.5), "width: 0.3 m, length: 0.5 m"),
+    ("annulus", dict(r=0.3, r_i=0.1, L=0.2), "radius: 0.3 m, inner_radius: 0.1 m, length: 0.2 m"),
+])
+def test_new_shapes_against_integration(write, shape, dims, keys):
+    J, I_G = _inertias_by_integration(shape, 100.0, **dims)
+    path = write(f"""\
+        id: x
+        kind: steady_precession
+        given: {{mass: 100 kg, shape: {shape}, {keys}, cg_distance: 0.5 m, theta: 60 deg,
+                spin: 3000 rpm}}
+        find: {{precession: rad/s}}
+        """)
+    text = " ".join(s.as_text() for sec in solve_file(str(path)).solution.sections
+                    for s in sec.steps)
+    from gyro_cli.core.work import num
+    assert f"J = " in text
+    assert num(J) in text and num(I_G) in text, (J, I_G, text[:400])
+
+
+def test_curtis_shell_is_prolate_as_a_shell(problems_dir):
+    # Curtis 10.2: thin shell r = 1 m, L = 3 m, 100 kg: J = m r^2 = 100, I = m r^2/2 + m L^2/12
+    # = 125 kg m^2 > J: prolate, direct precession; omega_p = J psidot / ((I - J) cos(theta)).
+    J, I, theta, psidot = 100.0, 125.0, math.radians(20), 2 * math.pi / 60
+    precession = J * psidot / ((I - J) * math.cos(theta))
+    assert precession * 60 == pytest.approx(26.746, abs=1e-3)     # the book: 26.75 rad/min
+    assert si(problems_dir / "torque_free_shell.yaml", "precession") == \
+        [pytest.approx(precession, rel=1e-4)]
+
+
+@pytest.mark.parametrize("shape, keys, key, words", [
+    ("ring", "radius: 1 m, length: 3 m", "given.length", "shell"),
+    ("disk", "radius: 1 m, length: 3 m", "given.length", "cylinder"),
+    ("sphere", "radius: 1 m, inner_radius: 0.5 m", "given.inner_radius", "radius or diameter"),
+    ("box", "width: 1 m", "given.length", "width, length"),
+    ("annulus", "radius: 1 m", "given.inner_radius", "inner_radius"),
+    ("annulus", "radius: 1 m, inner_radius: 1.5 m", "given.inner_radius", "less than"),
+])
+def test_a_shape_refuses_a_key_it_does_not_use(run, write, shape, keys, key, words):
+    path = write(f"""\
+        id: x
+        kind: torque_free
+        given: {{mass: 100 kg, shape: {shape}, {keys}, nutation_angle: 20 deg,
+                spin: 1 rad/s}}
+        find: {{precession: rad/s}}
+        """)
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1
+    assert key in out.stderr and words in out.stderr, out.stderr

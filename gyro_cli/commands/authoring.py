@@ -199,11 +199,15 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             words: list = list(p.choices)
             if set(words) == {"true", "false"}:
                 words += [True, False]  # YAML reads `false` as a boolean
-            if p.words or any("clockwise" in str(w) for w in words):
-                # the books' spellings: any case, spaces or hyphens, "anticlockwise",
-                # "seen from the" (docs/real_problems.md); gyro says if it reads none
-                given[p.name] = {"anyOf": [{"enum": words + [w for w, _ in p.words]},
-                                           {"type": "string"}], "description": p.doc}
+            # the books' spellings (docs/real_problems.md), with _ or spaces
+            spelt = [w for w, _ in p.words] + [c for c in p.choices if "_" in c]
+            words += [w for w, _ in p.words] + [w.replace("_", " ") for w in spelt]
+            if any("clockwise" in str(w) for w in words):
+                # a sense of rotation, in any of the books' phrasings (anticlockwise,
+                # seen from the stern, ...): the loader reads it or says why not
+                given[p.name] = {"anyOf": [{"enum": words},
+                                           {"type": "string", "pattern": "[Cc][Ll][Oo][Cc][Kk]"}],
+                                 "description": p.doc}
             else:
                 given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
