@@ -510,3 +510,39 @@ def test_a_shape_refuses_a_key_it_does_not_use(run, write, shape, keys, key, wor
     out = run("solve", path)
     assert out.exit_code == 2 and out.stderr.count("\n") == 1
     assert key in out.stderr and words in out.stderr, out.stderr
+
+
+# ---- item 9: ordered answers are compared in order -----------------------------
+
+def test_swapped_wheel_reactions_fail_with_the_order_named(problems_dir, run, tmp_path):
+    # outer 6131 - 110.6 + 1111 = 7132 N, inner 6131 + 110.6 - 1111 = 5131 N (the file's
+    # notes): the key [inner, outer] is the swap a set comparison let pass.
+    text = (problems_dir / "four_wheeler_trolley_2500kg.yaml").read_text()
+    swapped = tmp_path / "swap.yaml"
+    swapped.write_text(text.replace("[7132 N, 5131 N]", "[5131 N, 7132 N]"))
+    out = run("check", swapped)
+    assert out.exit_code == 1
+    assert "the order: 5131 N is the computed inner" in out.stdout
+    assert run("check", problems_dir / "four_wheeler_trolley_2500kg.yaml").exit_code == 0
+
+
+def test_roots_are_still_matched_as_a_set(problems_dir, run, tmp_path):
+    # 11/3's two precession rates, keyed fast first: roots have no order.
+    text = (problems_dir / "11_3.yaml").read_text()
+    import re
+    found = re.search(r"precession: \[([^,\]]+), ([^\]]+)\]", text)
+    assert found, "11_3.yaml keys both roots"
+    swapped = tmp_path / "roots.yaml"
+    swapped.write_text(text.replace(found.group(0),
+                                    f"precession: [{found.group(2)}, {found.group(1)}]"))
+    assert run("check", swapped).exit_code == 0
+
+
+def test_ordered_and_root_labels():
+    from gyro_cli.checking.matching import match_in_order, ordered
+
+    assert ordered(["A", "B"]) and ordered(["outer", "inner"])
+    assert ordered(["vertical", "horizontal (slow)", "magnitude (slow)"])
+    assert not ordered(["slow", "fast"]) and not ordered([]) and not ordered(["approximation"])
+    assert match_in_order(2, 3) == [(0, 0), (1, 1), (None, 2)]
+    assert match_in_order(3, 2) == [(0, 0), (1, 1), (2, None)]
