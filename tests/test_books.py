@@ -288,7 +288,8 @@ def test_the_docs_list_every_spelling_a_kind_accepts():
     assert rows
     listed = set()
     params = {p.name: p for p in BODY_PARAMS}
-    params.update({p.name: p for p in get("ship").params})
+    for name in ("ship", "torque_free"):
+        params.update({p.name: p for p in get(name).params})
     for key, written, reading in rows:
         for word in re.findall(r"`([^`]+)`", written):
             for turn in ("clockwise", "counterclockwise"):
@@ -546,3 +547,44 @@ def test_ordered_and_root_labels():
     assert not ordered(["slow", "fast"]) and not ordered([]) and not ordered(["approximation"])
     assert match_in_order(2, 3) == [(0, 0), (1, 1), (None, 2)]
     assert match_in_order(3, 2) == [(0, 0), (1, 1), (2, None)]
+
+
+# ---- item 12: torque_free in the books' convention; Meriam's ratio n ---------------
+
+def test_oblate_satellite_with_the_books_positive_spin(problems_dir):
+    # J / I = 1.6, one precession every 2 s, spin 0.1 rad/s quoted positive (retrograde).
+    # Along k: J omega_z = H cos(theta); across: I phidot sin(theta) = H sin(theta), so
+    # H = I phidot. The spin relative to the precessing frame has magnitude
+    # (J - I) / I omega_z for J > I: omega_z = I p / (J - I) = 0.1 / 0.6 = 0.16667 rad/s.
+    J, I, phidot, p = 1.6, 1.0, math.pi, 0.1
+    omega_z = I * p / (J - I)
+    cos_theta = J * omega_z / (I * phidot)
+    assert math.degrees(math.acos(cos_theta)) == pytest.approx(85.131, abs=1e-3)
+    path = problems_dir / "torque_free_satellite.yaml"
+    assert si(path, "axial_rate") == [pytest.approx(omega_z, rel=1e-9)]
+    assert si(path, "spin_ratio") == [pytest.approx(p / phidot, rel=1e-9)]
+
+
+def test_spin_ratio_signed_without_the_words(write):
+    # A disk (J = 2 I), axis 1 deg from H: psidot = (I - J) / I omega_z = -omega_z and
+    # phidot = J omega_z / (I cos(theta)) = 2 omega_z / cos(theta): n = -cos(theta) / 2.
+    path = write("""\
+        id: x
+        kind: torque_free
+        given: {J: 2 kg m^2, I_cg: 1 kg m^2, axial_rate: 3 rad/s, nutation_angle: 1 deg}
+        find: {spin_ratio: null}
+        """)
+    assert si(path, "spin_ratio") == [pytest.approx(-math.cos(math.radians(1)) / 2, rel=1e-9)]
+
+
+@pytest.mark.parametrize("given, key, words", [
+    ("J: 1.6 kg m^2, I_cg: 1 kg m^2, precession: 0.5 rev/s, spin: 0.1 rad/s",
+     "given.spin", "precession_sense: retrograde"),
+    ("J: 1.6 kg m^2, I_cg: 1 kg m^2, precession: 0.5 rev/s, spin: 0.1 rad/s, "
+     "precession_sense: direct", "given.precession_sense", "oblate"),
+])
+def test_torque_free_sense_refusals(run, write, given, key, words):
+    path = write(f"id: x\nkind: torque_free\ngiven: {{{given}}}\nfind: {{omega: rad/s}}\n")
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1
+    assert key in out.stderr and words in out.stderr, out.stderr
