@@ -588,3 +588,38 @@ def test_torque_free_sense_refusals(run, write, given, key, words):
     out = run("solve", path)
     assert out.exit_code == 2 and out.stderr.count("\n") == 1
     assert key in out.stderr and words in out.stderr, out.stderr
+
+
+# ---- item 2: rolling_disk, how long for one lap ---------------------------------
+
+def test_coin_rolling_on_a_circle_one_lap(write):
+    # A coin (thin disk, J = m r^2 / 2, I_G = m r^2 / 4), r = 1.2 cm, rolling at 0.5 m/s with
+    # its centre on... given the contact circle R = 0.4 m and the tilt from the moment
+    # balance. Independently: with the tilt gyro finds, rho = R - r sin(beta) and the lap
+    # takes the distance round the centre's circle over the speed, 2 pi rho / v.
+    path = write("""\
+        id: x
+        kind: rolling_disk
+        given: {arrangement: free, shape: disk, radius: 1.2 cm, path_radius: 0.4 m,
+                speed: 0.5 m/s}
+        find: {tilt: deg, precession_period: s}
+        """)
+    result = solve_file(str(path))
+    beta = result.answers["tilt"].si_values[0]
+    r, R, v, g = 0.012, 0.4, 0.5, 9.81
+    rho = R - r * math.sin(beta)
+    # the moment balance per kilogram, m g r sin(b) = Omega^2 cos(b) [rho (m r + J/r) + I_G sin b]
+    Omega = v / rho
+    lhs = g * r * math.sin(beta)
+    rhs = Omega ** 2 * math.cos(beta) * (rho * (r + r / 2) + r * r / 4 * math.sin(beta))
+    assert lhs == pytest.approx(rhs, rel=1e-6)
+    assert result.answers["precession_period"].si_values == \
+        [pytest.approx(2 * math.pi * rho / v, rel=1e-9)]
+
+
+def test_disk_on_a_pinned_axle_one_lap(problems_dir, write):
+    # problem 11/6's shaft turns at 48 rpm: one lap of the circle takes 60 / 48 = 1.25 s.
+    text = (problems_dir / "11_6.yaml").read_text()
+    assert "precession: 48 rpm" in text
+    path = write(text.replace("\nfind:\n", "\nfind:\n  precession_period: s\n", 1))
+    assert si(path, "precession_period") == [pytest.approx(1.25, rel=1e-9)]
