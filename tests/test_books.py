@@ -623,3 +623,38 @@ def test_disk_on_a_pinned_axle_one_lap(problems_dir, write):
     assert "precession: 48 rpm" in text
     path = write(text.replace("\nfind:\n", "\nfind:\n  precession_period: s\n", 1))
     assert si(path, "precession_period") == [pytest.approx(1.25, rel=1e-9)]
+
+
+# ---- item 3: euler_angles asks for the angles only when an answer needs them -------
+
+def test_inertia_of_particles_needs_no_angles(problems_dir, write):
+    # The bundled cube of eight 0.5 kg masses (a = 0.2 m), written without angles or rates:
+    # I_z = sum m (x^2 + y^2): four corners at 0, a^2 (two), 2 a^2 -> 2 x 4 masses... by hand:
+    m, a = 0.5, 0.2
+    corners = [(x, y, z) for x in (0, a) for y in (0, a) for z in (0, a)]
+    I_z = sum(m * (x * x + y * y) for x, y, z in corners)        # 8 m a^2 = 0.16
+    I_xy = sum(m * x * y for x, y, z in corners)                 # 2 m a^2 = 0.04
+    assert (I_z, I_xy) == (pytest.approx(0.16), pytest.approx(0.04))
+    text = (problems_dir / "euler_cube_corners.yaml").read_text()
+    body = text.split("find:")[0]
+    for line in ("  theta: 90 deg\n", "  psi: 0 deg\n", "  psi_rate: 10 rad/s\n"):
+        body = body.replace(line, "")
+    path = write(body + "find:\n  I_z: kg*m^2\n  I_xy: kg*m^2\n  principal_moments: kg*m^2\n")
+    result = solve_file(str(path))
+    assert result.answers["I_z"].si_values == [pytest.approx(I_z)]
+    assert result.answers["I_xy"].si_values == [pytest.approx(I_xy)]
+    # eigenvalues of [[8, -2, -2], [-2, 8, -2], [-2, -2, 8]] m a^2: 4 (along the diagonal), 10, 10
+    assert result.answers["principal_moments"].si_values == [
+        pytest.approx(4 * m * a * a), pytest.approx(10 * m * a * a), pytest.approx(10 * m * a * a)]
+
+
+def test_euler_answers_that_need_the_angles_still_ask(run, write):
+    path = write("""\
+        id: x
+        kind: euler_angles
+        given:
+          particles: [{mass: 1 kg, x: 1 m, y: 0 m, z: 0 m}]
+        find: {I_x: kg*m^2, omega: rad/s}
+        """)
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1 and "given.theta" in out.stderr
