@@ -658,3 +658,41 @@ def test_euler_answers_that_need_the_angles_still_ask(run, write):
         """)
     out = run("solve", path)
     assert out.exit_code == 2 and out.stderr.count("\n") == 1 and "given.theta" in out.stderr
+
+
+# ---- item 10: the docs' stated readings agree with the code ------------------------
+
+def test_every_reading_the_docs_state_is_the_codes():
+    """Every "`360 kmph` = 100 m/s" in README.md and docs/*.md: both sides read by gyro's
+    own unit reader in the first dimension they share, and equal (to the digits printed)."""
+    import re
+    from pathlib import Path
+
+    from gyro_cli.core import units
+    from gyro_cli.core.errors import InputError
+
+    root = Path(__file__).resolve().parent.parent
+    pattern = re.compile(r"`([-0-9.e+]+ [^`]+)` = ([-0-9.e+]+ [A-Za-z/^0-9]+)")
+    found = []
+    for page in [root / "README.md", *sorted((root / "docs").glob("*.md"))]:
+        for left, right in pattern.findall(page.read_text()):
+            found.append((page.name, left, right))
+    assert any("kmph" in left for _, left, _ in found)
+    for page, left, right in found:
+        for dimension in ("speed", "rate", "mass", "force", "length", "moment", "time", "angle"):
+            try:
+                a = units.parse(left, dimension, "doc")[0]
+                b = units.parse(right, dimension, "doc")[0]
+            except InputError:
+                continue
+            assert a == pytest.approx(b, rel=5e-3), (page, left, right)
+            break
+        else:
+            pytest.fail(f"{page}: {left} = {right} is read in no dimension")
+
+
+def test_vehicles_page_no_longer_warns_against_kmph():
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "vehicles.md").read_text()
+    assert "Avoid `kmph`" not in text and "`kmph` is\nkilometres per hour" in text
