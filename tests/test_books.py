@@ -696,3 +696,62 @@ def test_vehicles_page_no_longer_warns_against_kmph():
 
     text = (Path(__file__).resolve().parent.parent / "docs" / "vehicles.md").read_text()
     assert "Avoid `kmph`" not in text and "`kmph` is\nkilometres per hour" in text
+
+
+# ---- a newcomer's polish -------------------------------------------------------
+
+def test_an_angular_frequency_asked_in_hz_is_printed_as_f(write):
+    # omega_n = sqrt(k / I_g) = sqrt(0.8 / 1e-4) = 89.44 rad/s; f_n = omega_n / (2 pi) = 14.24 Hz
+    path = write("""\
+        id: x
+        kind: rate_gyro
+        given: {J: 2e-4 kg m^2, spin: 24000 rpm, stiffness: 0.8 N m/rad,
+                gimbal_inertia: 1e-4 kg m^2, rate: 5 deg/s}
+        find: {natural_frequency: Hz}
+        """)
+    answer = solve_file(str(path)).answers["natural_frequency"]
+    assert answer.values == [pytest.approx(math.sqrt(0.8 / 1e-4) / (2 * math.pi), rel=1e-9)]
+    assert answer.symbol == "f_n"
+    in_rad = solve_file(str(write(path.read_text().replace("Hz", "rad/s"), "q.yaml")))
+    assert in_rad.answers["natural_frequency"].symbol == "omega_n"
+
+
+def test_no_default_g_for_a_rate_gyro_and_whole_numbers_as_written(problems_dir, run):
+    out = run("solve", problems_dir / "rate_gyro_reading.yaml")
+    assert out.exit_code == 0 and "(default)" not in out.stdout.split("\n\n")[1 if "Source" in
+                                                                           out.stdout else 0]
+    out = run("solve", problems_dir / "two_wheeler_250kg.yaml")
+    assert "5.00000" not in out.stdout and "\n  G            5 " in out.stdout
+
+
+def test_torque_free_has_no_empty_body_heading_and_one_beta(run, problems_dir):
+    out = run("solve", problems_dir / "torque_free_satellite.yaml").stdout
+    assert "\nBody\n\n" not in out and "\nBody\n" not in out
+    assert sum(1 for line in out.splitlines() if line.strip().startswith("beta =")) == 1
+
+
+def test_new_templates_carry_their_own_notes_and_keys(run):
+    rate = run("new", "rate_gyro").stdout
+    assert "precessing frame" not in rate and "I_pivot" not in rate and "  # g:" not in rate
+    top = run("new", "steady_precession").stdout
+    assert "precessing frame" in top and "I_pivot" in top
+    listing = run("new")
+    assert listing.exit_code == 0 and "steady_precession" in listing.stdout
+    assert "rate_gyro" in listing.stdout
+
+
+def test_grading_table_has_a_header_row(run, problems_dir, tmp_path):
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text("alice,11/3,precession,45.13 rpm; 533.5 rpm\n")
+    out = run("check", "--answers", sheet, problems_dir / "11_3.yaml")
+    first = out.stdout.splitlines()[0].split()
+    assert first[:5] == ["student", "problem", "answer", "result", "points"], out.stdout
+
+
+def test_readme_shows_latex_with_standalone():
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    quick = next(block for block in readme.split("```")[1::2] if "gyro solve" in block)
+    assert "--format latex --standalone" in quick
+    assert "or latex" not in quick and "latex FILE" not in quick

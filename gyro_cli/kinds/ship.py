@@ -322,7 +322,8 @@ KIND = Kind(
                    "'none' for rolling, ..."),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"mass": "8000 kg", "k_axial": "0.6 m", "spin": "1800 rpm",
                   "rotor_sense": "clockwise_from_stern", "motion": "steering",
                   "speed": "100 km/h", "turn_radius": "75 m", "turn": "left"},

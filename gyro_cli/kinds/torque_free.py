@@ -72,6 +72,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")
     if books:
         work.text(books)
+        for line in work.given:
+            if line.key == "spin":
+                line.note = f"a magnitude: psidot = {qty(known['spin'], 'rad/s')} ({sense})"
     _route(J, I, known, state, work)
     _results(J, I, state, work, magnitude=sense is not None)
 
@@ -156,10 +159,14 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
     work.section("Rates, angles and periods")
     Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
     beta, theta, wz, we = s.omega_angle, s.nutation_angle, s.axial_rate, s.transverse_rate
-    work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
-    work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
-              math.degrees(theta), "deg", note="angle from H to k")
-    work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
+    stated = {step.symbol for section in work.sections for step in section.steps}
+    if "beta" not in stated:  # worked out above from the data: not repeated
+        work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
+    if "theta" not in stated:
+        work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
+                  math.degrees(theta), "deg", note="angle from H to k")
+    if "omega_z" not in stated:
+        work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
     work.step("omega_e", "omega_z tan(beta)", f"{qty(wz, 'rad/s')} tan({_deg(beta)})", we,
               "rad/s", note="across the axis")
     work.step("omega", "sqrt(omega_z^2 + omega_e^2)", value=s.omega, unit="rad/s")
