@@ -255,13 +255,22 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
 
 @main.command("new")
-@click.argument("kind")
+@click.argument("kind", required=False)
 @click.option("-o", "--output", metavar="FILE", help="Write the template to FILE (not stdout).")
 @click.option("--force", is_flag=True, help="Replace FILE if it exists.")
-def new(kind: str, output: str | None, force: bool) -> None:
-    """Print (or write) a commented problem template with every key of KIND."""
+def new(kind: str | None, output: str | None, force: bool) -> None:
+    """Print (or write) a commented problem template with every key of KIND.
+
+    Without KIND, list the kinds to choose from."""
     from .commands.authoring import template
 
+    if kind is None:
+        from . import kinds as registry
+
+        click.echo("gyro new KIND writes a template; KIND is one of:")
+        for name in registry.names():
+            click.echo(f"  {name:<19} {registry.get(name).summary}")
+        return
     try:
         text = template(kind)
         if output:

@@ -14,6 +14,7 @@ from .. import kinds
 from ..core import units
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
+from ..core.params import normal_word, read_word, safe_choices
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -219,10 +220,13 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
     if param.dimension == "word":
         if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
             text = "true" if text else "false"  # YAML reads `false` as a boolean
-        if not isinstance(text, str) or text not in param.choices:
+        word = read_word(param, text) if isinstance(text, str) else None
+        if word is None:
+            safe = safe_choices(str(text), param.choices)
             raise InputError(f"expected one of {', '.join(param.choices)}, got {shown(text)}"
-                             f"{suggest(str(text), param.choices)}", key=key)
-        return text, text
+                             f"{suggest(normal_word(str(text)), safe) if safe else ''}",
+                             key=key)
+        return word, text
     if param.dimension == "particles":
         return parse_particles(text, key), text
     return guarded(units.parse, text, param.dimension, key, weight=param.name == "weight")
