@@ -212,7 +212,39 @@ def load(text: str) -> tuple[Any, Any]:
     loader = loader_class()(text)
     try:
         node = loader.get_single_node()
+        written = _mapping_values(node, yaml_module())
         data = loader.construct_document(node) if node is not None else None
+        # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
+        # merged ones first; give the node back the pairs as written, so that a key that
+        # overrides a merged one is not taken for a key written twice.
+        for mapping, pairs in written:
+            mapping.value = pairs
     finally:
         loader.dispose()
     return data, node
+
+
+def yaml_module() -> Any:
+    import yaml
+
+    return yaml
+
+
+def _mapping_values(node: Any, yaml: Any) -> list[tuple[Any, list]]:
+    """Every mapping node under ``node`` with its own list of pairs (iteratively; aliases
+    are the same node objects, visited once)."""
+    found: list[tuple[Any, list]] = []
+    seen: set[int] = set()
+    stack = [node] if node is not None else []
+    while stack:
+        item = stack.pop()
+        if id(item) in seen:
+            continue
+        seen.add(id(item))
+        if isinstance(item, yaml.MappingNode):
+            found.append((item, list(item.value)))
+            for key, value in item.value:
+                stack.extend((key, value))
+        elif isinstance(item, yaml.SequenceNode):
+            stack.extend(item.value)
+    return found
