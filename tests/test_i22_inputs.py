@@ -263,3 +263,174 @@ def test_i23_04_answer_units_as_printed(unit, shown):
     assert units.check_unit(unit, "rate", "find.spin") == shown
     assert units.convert(REV, "rate", shown) == pytest.approx(
         {"rpm": 60.0, "rps": 1.0, "cps": 1.0}[shown])
+
+
+# ---- item 16 (continued): the messages -------------------------------------------------
+
+def test_i22_16_negative_tolerance_says_it_must_be_positive(run, write):
+    path = write(TOP_11_3.replace("tolerance: 1%", "tolerance: -1%"))
+    result = run("check", path)
+    assert result.exit_code == 2
+    assert "must be positive" in result.stderr and "unexpected '%'" not in result.stderr
+
+
+def test_i22_16_value_in_find_says_a_unit_is_expected(run, write):
+    path = write(TOP_11_3.replace("  precession: rpm", "  precession: 45.13 rpm"))
+    line = _one_line_refusal(run("solve", path), "find.precession", "expected a unit",
+                             "not a value")
+    assert "'1 45.13 rpm'" not in line
+
+
+def test_i22_16_per_second_is_still_a_unit_in_find(run, write):
+    path = write(TOP_11_3.replace("  precession: rpm", "  precession: 1/s"))
+    result = run("solve", path)
+    assert result.exit_code == 0, result.output
+    # 45.13 rpm = 45.13 x 2 pi / 60 = 4.726 rad/s, printed per second
+    assert "4.726 1/s" in result.stdout
+
+
+def test_i22_16_simulate_a_millionth_of_a_period_is_too_short_to_classify(run):
+    for name in ("11_2_released_top.yaml", "11_3.yaml"):
+        result = run("simulate", ROOT / "problems" / name, "--periods", "1e-6",
+                     "--format", "json")
+        assert result.exit_code == 0, result.output
+        report = json.loads(result.stdout)
+        assert report["simulated"]["motion"] == "too short to classify", name
+        assert report["difference"]["motion"] is None
+
+
+def test_i22_16_newline_in_a_file_name_keeps_the_table_one_line_a_problem(run, tmp_path):
+    (tmp_path / "new\nline.yaml").write_text(TOP_11_3)
+    result = run("check", tmp_path)
+    assert result.exit_code == 0, result.output
+    heads = [line for line in result.stdout.splitlines() if "11/3" in line]
+    assert len(heads) == 1 and "new\\nline.yaml" in heads[0]
+    assert all(line.startswith(("  ", "OK")) for line in result.stdout.splitlines()
+               if "11/3" not in line)
+
+
+def _exit_with_reader_gone(*args: str) -> int:
+    """Run gyro with a stdout pipe whose reader has already left (as `| true`)."""
+    import os
+    import subprocess
+    import sys
+
+    read, write = os.pipe()
+    os.close(read)
+    try:
+        return subprocess.run([sys.executable, "-m", "gyro_cli", *args], stdout=write,
+                              stderr=subprocess.PIPE, timeout=120).returncode
+    finally:
+        os.close(write)
+
+
+def test_i22_16_help_into_a_closed_pipe_exits_as_the_commands_do():
+    command = _exit_with_reader_gone("kinds", "--help")
+    assert command == 141
+    assert _exit_with_reader_gone("--help") == command
+    assert _exit_with_reader_gone("--version") == command
+
+
+# ---- item 10: user strings escaped in every output ------------------------------------------
+
+HOSTILE = ('id: "x\\n\\\\input{/etc/hostname}\\n\\e[31mred"\n'
+           'title: "<script>alert(1)</script><img src=x onerror=alert(2)> \\e]0;pwned\\a\\u202e"\n'
+           'source: "<b>s</b> \\e[2J"\n'
+           'notes: ["<script>n</script>\\n\\\\input{x}\\n\\e[1m"]\n')
+
+
+def _hostile(write, name: str = "p.yaml"):
+    body = TOP_11_3.split("kind:", 1)[1]
+    return write(HOSTILE + "kind:" + body.replace("source: Chapter 11, problem 11/3\n", "")
+                 .replace("notes:\n  - Spin is the rate relative to the precessing frame "
+                          "(psidot).\n", ""), name)
+
+
+def test_i22_10_latex_id_newline_cannot_run_input(run, write):
+    result = run("solve", "--format", "latex", "--standalone", _hostile(write))
+    assert result.exit_code == 0, result.output
+    for line in result.stdout.splitlines():
+        code = line.split("%", 1)[0] if not line.startswith("%") else ""
+        assert not re.search(r"\\input\b", code), line
+        assert "\x1b" not in line and "\x07" not in line
+    assert "\\textbackslash{}input" in result.stdout
+
+
+def test_i22_10_markdown_carries_no_raw_html(run, write):
+    result = run("solve", "--format", "markdown", _hostile(write))
+    assert result.exit_code == 0, result.output
+    out = result.stdout
+    # a raw < opens HTML in Markdown; \< is a literal sign
+    assert not re.search(r"(?<!\\)<", out), out
+    assert "\\<script\\>" in out
+    assert "\x1b" not in out and "\u202e" not in out
+    heading = [line for line in out.splitlines() if line.startswith("## ")]
+    assert len(heading) == 1 and "alert(1)" in heading[0]  # the title, on its own line
+
+
+def test_i22_10_html_carries_no_raw_html(run, write):
+    result = run("solve", "--format", "html", _hostile(write))
+    assert result.exit_code == 0, result.output
+    assert "<script>alert" not in result.stdout and "<img src=x" not in result.stdout
+
+
+@pytest.mark.parametrize("command", [("solve",), ("check",)])
+def test_i22_10_terminal_output_has_no_escape_sequences(run, write, command):
+    result = run(*command, _hostile(write))
+    assert result.exit_code == 0, result.output
+    for text in (result.stdout, result.stderr):
+        for raw in ("\x1b", "\x07", "\u202e"):
+            assert raw not in text
+    assert "\\x1b[31mred" in result.stdout  # shown, not run
+
+
+def test_i22_10_file_name_and_message_escaped_on_stderr(run, tmp_path):
+    path = tmp_path / "bad\x1b[2J.yaml"
+    path.write_text("id: x\nkind: nope\ngiven: {}\nfind: [a]\n")
+    result = run("solve", path)
+    assert result.exit_code == 2
+    assert "\x1b" not in result.stderr and "\\x1b[2J" in result.stderr
+
+
+# ---- item 15: simulate bounds its cost from the whole motion ---------------------------------
+
+SLOW_TOP = (ROOT / "problems" / "11_2_released_top.yaml").read_text().replace(
+    "spin: 1800 rpm ", "spin: 60 rpm ")
+
+
+def test_i22_15_simulate_refuses_a_slow_top_before_starting(run, write, monkeypatch):
+    import scipy.integrate
+
+    def started(*args, **kwargs):
+        raise AssertionError("the integration started")
+
+    monkeypatch.setattr(scipy.integrate, "DOP853", started)
+    result = run("simulate", write(SLOW_TOP), "--periods", "5e4")
+    line = _one_line_refusal(result, "integration steps", "rad/s")
+    assert "fewer --periods" in line
+
+
+def test_i22_15_largest_rate_bounds_the_integrated_motion():
+    """The energy bound on |omega| holds along an integration that does not use it."""
+    import numpy as np
+
+    from gyro_cli.commands import simulate as command
+    from gyro_cli.physics import simulate as physics
+
+    path = ROOT / "problems" / "11_2_released_top.yaml"
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        slow = Path(folder) / "slow.yaml"
+        slow.write_text(SLOW_TOP)
+        setup = command.prepare(str(slow))
+    p = setup.params
+    sim = physics.simulate(p, p, 3 * setup.period, samples=3001)
+    omega_z = p.spin + p.precession0 * math.cos(p.theta0)
+    # |omega|^2 = thetadot^2 + phidot^2 sin^2(theta) + omega_z^2 (Eq. 11.8)
+    omega = np.sqrt(sim.theta_rate ** 2 + (sim.phidot * np.sin(sim.theta)) ** 2 + omega_z ** 2)
+    bound = physics.largest_rate(p, command._theta_range(setup.analytic))
+    assert omega.max() <= bound * (1 + 1e-9)
+    assert omega.max() >= 0.99 * bound           # reached at theta_max: the bound is tight
+    start = math.sqrt(omega_z ** 2 + (p.precession0 * math.sin(p.theta0)) ** 2)
+    assert omega.max() > 3 * start               # the starting |omega| alone was far off
+    assert path.exists()

@@ -568,6 +568,11 @@ def check_unit(text: Any, dimension: str, key: str) -> str:
     if not isinstance(text, str) or not text.strip():
         raise InputError(f"expected a unit for this answer such as '{si_text(dimension)}', "
                          f"got {text!r}", key=key)
+    value = _NUMBER.fullmatch(text)
+    if value and not value.group(2).lstrip().startswith("/"):  # 1/s is a unit
+        raise InputError(f"expected a unit for this answer such as '{si_text(dimension)}', not "
+                         f"a value: got {text!r} (an expected value goes under `expected`)",
+                         key=key)
     parse("1 " + text, dimension, key)
     return display(text.strip(), dimension, key)
 
