@@ -160,6 +160,20 @@ def test_i22_08_ids_11_1_and_11_10_stay_two_problems(run, write, tmp_path):
     assert ids == ["11.1", "11.10"]
 
 
+def test_i22_08_unquoted_problem_id_in_a_yaml_sheet_keeps_its_text(run, write, tmp_path):
+    problem = write(TOP_11_3.replace('id: "11/3"', "id: 11.10"), "p.yaml")
+    write(TOP_11_3.replace('id: "11/3"', "id: 11.1"), "q.yaml")
+    sheet = write("""\
+        ann:
+          11.10: {min_spin: 965.4 rpm}
+          11.1: {min_spin: 900 rpm}
+        """, "sheet.yaml")
+    result = run("check", "--answers", sheet, problem, tmp_path / "q.yaml", "--format", "json")
+    assert result.exit_code in (0, 1), result.output
+    rows = {row["problem"]: row["result"] for row in json.loads(result.stdout)["rows"]}
+    assert rows == {"11.10": "correct", "11.1": "wrong"}
+
+
 # ---- item 16: messages ----------------------------------------------------------------
 
 @pytest.mark.parametrize("text, si", [("1 mrad", 0.001), ("1 mdeg", math.pi / 180e3),

@@ -134,8 +134,24 @@ def loader_class() -> Any:
         Loader.add_constructor(full, guarded(base.yaml_constructors[full], what))
     Loader.add_constructor("tag:yaml.org,2002:timestamp",
                            lambda self, node: str(self.construct_scalar(node)))
+
+    def construct_mapping(self: Any, node: Any, deep: bool = False) -> Any:
+        # A key is a name (a key of the format, a student, a problem id): an unquoted
+        # `11.10:`, `011:` or `yes:` keeps the characters written, not 11.1, 9 or True.
+        self.flatten_mapping(node)
+        for key, _ in node.value:
+            if isinstance(key, yaml.ScalarNode) and key.style in (None, "") and \
+                    key.tag in _NAME_TAGS:
+                key.tag = "tag:yaml.org,2002:str"
+        return base.construct_mapping(self, node, deep)
+
+    Loader.construct_mapping = construct_mapping
     _loader_class = Loader
     return Loader
+
+
+# Plain scalars YAML 1.1 turns into something else than text; as a key, text is meant.
+_NAME_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("int", "float", "bool", "timestamp")}
 
 
 def prescan(text: str) -> None:
