@@ -324,9 +324,9 @@ def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
         except (pint.errors.PintError, ValueError, KeyError, AttributeError):
             candidates = ()
         power = _POWER_SUFFIX.fullmatch(name)
-        if not candidates and power and _lookup(power.group(1), weight) not in (None,):
+        base = _lookup(power.group(1), weight) if power and not candidates else None
+        if base is not None:
             # kg.m2, kg m2: a power written without its ^ (books print m2 for m^2)
-            base = _lookup(power.group(1), weight)
             found = base if base[0] == "refused" else \
                 (base[0] ** int(power.group(2)), f"{base[1]}^{power.group(2)}")
         elif not candidates and name not in ("°",):
