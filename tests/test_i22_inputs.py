@@ -388,9 +388,9 @@ def test_i22_10_html_carries_no_raw_html(run, write):
     assert "<script>alert" not in result.stdout and "<img src=x" not in result.stdout
 
 
-@pytest.mark.parametrize("command", [("solve",), ("check",)])
+@pytest.mark.parametrize("command", [("solve",), ("check",), ("simulate", "--periods", "1")])
 def test_i22_10_terminal_output_has_no_escape_sequences(run, write, command):
-    result = run(*command, _hostile(write))
+    result = run(command[0], _hostile(write), *command[1:])
     assert result.exit_code == 0, result.output
     for text in (result.stdout, result.stderr):
         for raw in ("\x1b", "\x07", "\u202e"):
@@ -448,3 +448,14 @@ def test_i22_15_largest_rate_bounds_the_integrated_motion():
     start = math.sqrt(omega_z ** 2 + (p.precession0 * math.sin(p.theta0)) ** 2)
     assert omega.max() > 3 * start               # the starting |omega| alone was far off
     assert path.exists()
+
+
+def test_i22_10_answer_sheet_text_reaches_the_terminal_escaped(run, write, tmp_path):
+    problem = write(TOP_11_3, "p.yaml")
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text("student,problem,answer,value\n"
+                     "\"ann\x1b]0;owned\x07\",11/3,min_spin,\"965.4 rpm \x1b[2J\"\n")
+    result = run("check", "--answers", sheet, problem)
+    for text in (result.stdout, result.stderr):
+        assert "\x1b" not in text and "\x07" not in text
+    assert "ann\\x1b]0;owned\\x07" in result.stdout

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from ..core.errors import InputError
+from ..core.errors import InputError, terminal_text
 from ..core.work import num
 
 RPM = 2 * math.pi / 60
@@ -296,7 +296,8 @@ def text(report: dict, periods: float) -> str:
         lines.append(f"Note: {note}")
     for kind, path in report.get("outputs", {}).items():
         lines.append(f"Wrote {kind}: {path}")
-    return "\n".join(lines) + "\n"
+    # the id and file names come from the user: no escape sequence reaches the terminal
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def csv_text(sim) -> str:
