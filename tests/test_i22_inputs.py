@@ -459,3 +459,13 @@ def test_i22_10_answer_sheet_text_reaches_the_terminal_escaped(run, write, tmp_p
     for text in (result.stdout, result.stderr):
         assert "\x1b" not in text and "\x07" not in text
     assert "ann\\x1b]0;owned\\x07" in result.stdout
+
+
+@pytest.mark.parametrize("raw, shown", [
+    ("plain θ title", "plain θ title"), ("a\nb", "a\\nb"), ("\x1b[31mred", "\\x1b[31mred"),
+    ("bell\x07", "bell\\x07"), ("rtl\u202eevil", "rtl\\u202eevil"), ("csi\x9b", "csi\\x9b"),
+    ("no\xa0break", "no break")])
+def test_i22_10_terminal_text_shows_controls_as_escapes(raw, shown):
+    from gyro_cli.core.errors import terminal_text
+
+    assert terminal_text(raw) == shown

@@ -57,15 +57,18 @@ def shown(value: object) -> str:
 def terminal_text(text: object) -> str:
     """Text from a file, a sheet or a file name, safe to print on a terminal: on one line,
     with line breaks, tabs, escape sequences (ESC), other control characters and bidi
-    overrides shown as escapes (``\\n``, ``\\x1b``, ``\\u202e``), never sent raw.
+    overrides shown as escapes (``\\n``, ``\\x1b``, ``\\u202e``), never sent raw; a
+    no-break or other wide space is a plain space.
 
     The one place every terminal output (reports, tables, messages) passes user strings
     through; JSON, HTML, Markdown and LaTeX have their own escaping."""
     text = str(text)
     if text.isprintable():
         return text
-    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
-                   for c in text)
+    import unicodedata
+
+    return "".join(c if c.isprintable() else " " if unicodedata.category(c) == "Zs"
+                   else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
 _one_line = terminal_text
