@@ -469,3 +469,11 @@ def test_i22_10_terminal_text_shows_controls_as_escapes(raw, shown):
     from gyro_cli.core.errors import terminal_text
 
     assert terminal_text(raw) == shown
+
+
+def test_i22_10_html_and_json_send_no_control_characters(run, write):
+    for fmt in ("html", "json"):
+        result = run("solve", "--format", fmt, _hostile(write))
+        assert result.exit_code == 0, result.output
+        for raw in ("\x1b", "\x07", "\u202e"):
+            assert raw not in result.stdout, (fmt, raw)
