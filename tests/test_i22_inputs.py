@@ -477,3 +477,28 @@ def test_i22_10_html_and_json_send_no_control_characters(run, write):
         assert result.exit_code == 0, result.output
         for raw in ("\x1b", "\x07", "\u202e"):
             assert raw not in result.stdout, (fmt, raw)
+
+
+def _first_table_spellings() -> list[str]:
+    """Every unit spelled in the first column of the docs' first units table."""
+    text = (ROOT / "docs" / "real_problems.md").read_text()
+    table = text.split("| written | read as |", 1)[1].split("\n\n", 1)[0]
+    spellings = []
+    for row in table.splitlines()[2:]:
+        first = row.split("|")[1]
+        spellings += [s for s in re.findall(r"`([^`]+)`", first) if s != "weight"]
+    assert len(spellings) >= 30
+    return spellings
+
+
+@pytest.mark.parametrize("spelling", _first_table_spellings())
+def test_i23_04_every_documented_spelling_is_accepted(spelling):
+    text = spelling if re.match(r"\d+ ", spelling) else f"1 {spelling}"  # `360 kmph`
+    readings = []
+    for dimension in ("rate", "angle", "speed", "mass", "force", "moment", "inverse_time"):
+        for weight in (False, True):
+            try:
+                readings.append(units.parse(text, dimension, "given.x", weight=weight)[0])
+            except InputError:
+                pass
+    assert readings, f"{spelling!r} is documented but read for no dimension"
