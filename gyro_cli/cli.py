@@ -14,7 +14,7 @@ import sys
 import click
 
 from . import __version__
-from .core.errors import InputError, internal_message
+from .core.errors import InputError, internal_message, terminal_text
 
 FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
@@ -45,17 +45,30 @@ class _Guarded(click.Group):
                 click.exceptions.Abort):
             raise
         except BrokenPipeError:
-            # The reader left (gyro solve ... | head): end quietly, as a program killed
-            # by SIGPIPE would (128 + 13), not with an internal error.
-            try:
-                devnull = os.open(os.devnull, os.O_WRONLY)
-                os.dup2(devnull, sys.stdout.fileno())
-            except (OSError, ValueError):
-                pass
-            sys.exit(141)
+            _reader_left()
         except Exception as err:
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
+
+    def make_context(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        # `gyro --help` and `gyro --version` print while the arguments are parsed, before
+        # invoke: a reader that left ends them as it ends every command (click's own
+        # handling would exit 1, which means "an answer is wrong").
+        try:
+            return super().make_context(*args, **kwargs)
+        except BrokenPipeError:
+            _reader_left()
+
+
+def _reader_left() -> None:
+    """The reader left (gyro solve ... | head): end quietly, as a program killed by SIGPIPE
+    would (128 + 13), not with an internal error."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    sys.exit(141)
 
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
@@ -116,7 +129,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 
     files, missing = problem_files(files)
     for _, message in missing:
-        click.echo(f"gyro: {message}", err=True)
+        click.echo(f"gyro: {terminal_text(message)}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
@@ -213,7 +226,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         result = report.run
         for problem in result.problems:
             if problem.error:
-                click.echo(f"gyro: {problem.error}", err=True)
+                click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
         click.echo(check_report.as_json(result) if fmt == "json" else check_report.table(result),
                    nl=fmt == "json")
         if junit_file:
@@ -247,7 +260,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     except InputError as err:
         fail(err)
     for line in graded.errors:
-        click.echo(f"gyro: {line}", err=True)
+        click.echo(f"gyro: {terminal_text(line)}", err=True)
     click.echo(grades_report.as_json(graded) if fmt == "json" else grades_report.table(graded),
                nl=fmt == "json")
     if graded.errors:
@@ -277,7 +290,7 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
             from .core.files import write_atomic
 
             write_atomic(output, text, force=force)
-            click.echo(f"wrote {output}", err=True)
+            click.echo(f"wrote {terminal_text(output)}", err=True)
         else:
             click.echo(text, nl=False)
     except InputError as err:

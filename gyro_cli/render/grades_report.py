@@ -9,6 +9,7 @@ import json
 from typing import Any
 
 from ..checking.grades import OUT_COLUMNS, Graded
+from ..core.errors import terminal_text
 
 # ---- output -----------------------------------------------------------------
 
@@ -54,7 +55,8 @@ def table(graded: Graded) -> str:
     for student, (points, total) in graded.scores.items():
         percent = 100 * points / total if total else 0.0
         lines.append(f"{student:<12} score {points:g} / {total:g} ({percent:.1f}%)")
-    return "\n".join(lines) + "\n"
+    # names and answers come from the sheet: no escape sequence reaches the terminal raw
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def as_json(graded: Graded) -> str:

@@ -20,7 +20,7 @@ Every string from a problem file is HTML-escaped.
 from __future__ import annotations
 
 import re
-from html import escape
+from html import escape as _escape
 from typing import cast
 
 from ..core.work import num
@@ -31,6 +31,17 @@ from .mathml import MathMLPrinter, math_element, symbol_mathml
 from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
 from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
+
+def escape(text: str, quote: bool = True) -> str:
+    """A string from a file in HTML (the one place they meet it): markup escaped, and a
+    control character or bidi override shown as an escape (\\x1b), so a page printed to a
+    terminal sends none raw. Line breaks and tabs stay."""
+    text = _escape(text, quote)
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() or c in "\n\t" else
+                   c.encode("unicode_escape").decode("ascii") for c in text)
+
 
 __all__ = ["worked_answer", "page", "document", "check_page", "check_body", "STYLE", "PAGE_STYLE",
            "formula_mathml", "prose_html"]
