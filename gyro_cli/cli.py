@@ -396,5 +396,9 @@ def kinds() -> None:
                "Nm, kN m (docs/real_problems.md)")
 
 
+from .commands.export import export as _export  # noqa: E402 - gyro export (docs/course.md)
+main.add_command(_export)
+
+
 if __name__ == "__main__":
     main()
