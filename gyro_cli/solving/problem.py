@@ -281,9 +281,10 @@ def representable(value: float, text: Any, dimension: str, key: str) -> float:
     if value != 0 and abs(value) < LEAST_MAGNITUDE:
         unit = units.si_text(dimension)
         raise InputError(f"{shown(text)} is {value:.3g}{' ' + unit if unit else ''}: a non-zero "
-                         f"value below {LEAST_MAGNITUDE:g} (SI) is refused, since products of a "
-                         "few such values underflow double precision (below 2.2e-308) to 0 "
-                         "and the answers would be wrong; check the unit, or use 0", key=key)
+                         f"value below {LEAST_MAGNITUDE:g} (SI) is refused, since products and "
+                         "quotients of a few such values overflow or underflow double precision "
+                         "(an underflow to 0 below 2.2e-308) and the answers would be wrong; "
+                         "check the unit, or use 0", key=key)
     return value
 
 
