@@ -165,7 +165,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 
 
 @main.command()
-@click.argument("paths", nargs=-1, required=True)
+@click.argument("paths", nargs=-1)
 @click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
               show_default=True, help="table: one line per answer; json: one document.")
 @click.option("--junit", "junit_file", metavar="FILE",
@@ -175,19 +175,27 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="With --answers: grade each student only on their own variants, as "
+                   "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
 @click.option("--html", "html_file", metavar="FILE",
               help="Also write the report as a self-contained HTML page to FILE: failing "
                    "answers first, each linking to its worked answer.")
 @click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
-          sheet: str | None, out: str | None, force: bool, html_file: str | None = None) -> None:
+          sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
+          assignment: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
     or globs. Exit 0 when every answer matches, 1 when one does not (or
     nothing was compared), 2 when a file is bad (the others are still checked).
     """
+    if not paths and not (sheet and assignment):
+        fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
+        if assignment:
+            fail("--assignment goes with --answers SHEET")
         if out or (force and not html_file):
             fail("--out goes with --answers SHEET, --force with --out or --html")
         from .render import check_report
@@ -223,7 +231,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     from .render import grades_report
 
     try:
-        graded = grades.grade(sheet, paths)
+        graded = grades.grade(sheet, paths, assignment=assignment)
         text = grades_report.csv_text(graded)
         if out:
             from .core.files import write_atomic
@@ -271,23 +279,41 @@ def schema() -> None:
 
 
 @main.command()
-@click.argument("file")
-@click.option("--count", "-n", type=int, required=True, help="How many variants.")
+@click.argument("files", nargs=-1, required=True, metavar="FILE...")
+@click.option("--count", "-n", type=int, default=None, help="How many variants (one FILE).")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="Instead of --count: one variant per student of ROSTER (a CSV with a "
+                   "student column) and problem FILE, and DIR/assignment.csv.")
 @click.option("--seed", "-s", type=int, default=0, show_default=True,
-              help="Random seed: the same seed gives the same files.")
+              help="Random seed: the same seed gives the same files (with --roster, the "
+                   "course seed: each student's numbers depend only on it and their id).")
 @click.option("-o", "--out-dir", "out_dir", metavar="DIR", required=True,
               help="Directory to write the variants into (created if needed).")
 @click.option("--force", is_flag=True, help="Replace variant files that exist.")
-def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
-    """Write COUNT variants of FILE with values drawn from its `vary:` block.
+def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: int,
+         out_dir: str, force: bool) -> None:
+    """Write COUNT variants of FILE with values drawn from its `vary:` block, or with
+    --roster one variant per student of each FILE.
 
     Each variant has its computed `expected` answers; draws with no real
     solution are rejected and drawn again.
     """
     from .commands.authoring import write_variants
 
+    if (count is None) == (roster is None):
+        fail("give --count N (variants of one FILE) or --roster ROSTER.csv (one per student)")
     try:
-        written = write_variants(file, count, seed, out_dir, force)
+        if roster is not None:
+            from .commands.roster import write_roster_variants
+
+            written = write_roster_variants(list(files), roster, seed, out_dir, force)
+            click.echo(f"wrote {len(written) - 1} variant file(s) and the assignment:",
+                       err=True)
+            click.echo(written[-1])
+            return
+        if len(files) != 1:
+            fail("--count varies one FILE; give --roster for several")
+        written = write_variants(files[0], count, seed, out_dir, force)
     except InputError as err:
         fail(err)
     for path in written:

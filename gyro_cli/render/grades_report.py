@@ -9,32 +9,27 @@ import json
 from typing import Any
 
 from ..checking.grades import OUT_COLUMNS, Graded
+from ..core.csvsafe import safe_cell as _cell
 
 # ---- output -----------------------------------------------------------------
-
-def _cell(value: Any) -> str:
-    """A CSV cell a spreadsheet will not run as a formula (=, +, @, -letters)."""
-    text = "" if value is None else str(value)
-    if text[:1] in ("=", "+", "@", "\t", "\r") or (text[:1] == "-" and not
-                                                   text[1:2].replace(".", "").isdigit()):
-        return "'" + text
-    return text
 
 
 def csv_text(graded: Graded) -> str:
     """The grades: one row per student and answer, then a score row per student."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(OUT_COLUMNS)
+    by_assignment = graded.assignment is not None  # then a last column: the variant
+    writer.writerow(OUT_COLUMNS + (("variant",) if by_assignment else ()))
     for row in graded.rows:
         rel = "" if row.relative_error is None else f"{row.relative_error:.6g}"
         writer.writerow([_cell(row.student), _cell(row.problem), _cell(row.answer),
                          _cell(row.submitted), _cell(row.correct), rel, row.result,
-                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)])
+                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)]
+                        + ([_cell(row.variant)] if by_assignment else []))
     for student, (points, total) in graded.scores.items():
         percent = 100 * points / total if total else 0.0
         writer.writerow([_cell(student), "", "", "", "", "", "score", f"{points:g}",
-                         f"{total:g}", f"{percent:.1f}%"])
+                         f"{total:g}", f"{percent:.1f}%"] + ([""] if by_assignment else []))
     return out.getvalue()
 
 
@@ -52,6 +47,13 @@ def table(graded: Graded) -> str:
 
 
 def as_json(graded: Graded) -> str:
-    return json.dumps({"rows": [dataclasses.asdict(r) for r in graded.rows],
+    return json.dumps({"rows": [_row_json(r, graded) for r in graded.rows],
                        "scores": {s: {"points": p, "max_points": t}
                                   for s, (p, t) in graded.scores.items()}}, allow_nan=False)
+
+
+def _row_json(row: Any, graded: Graded) -> dict[str, Any]:
+    data = dataclasses.asdict(row)
+    if graded.assignment is None:
+        data.pop("variant", None)
+    return data
