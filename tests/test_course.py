@@ -166,3 +166,24 @@ def test_unsafe_student_ids_make_safe_file_names(run, tmp_path):
     sheet = put(tmp_path, "s.csv", "\"=cmd|' /C calc'!A0\",11/3,min_spin,900 rpm\n")
     result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv")
     assert result.exit_code == 0, result.output
+
+
+def test_an_edited_variant_is_solved_again_not_graded_by_the_stored_key(run, tmp_path):
+    out = make_set(run, tmp_path, 2, TOP)
+    assert (out / "key.json").is_file()
+    path = out / "11_3" / "s000.yaml"
+    variant = yaml.safe_load(path.read_text())
+    variant["given"]["spin"] = "2500 rpm"  # the teacher changed this student's numbers
+    path.write_text(yaml.safe_dump(variant, sort_keys=False))
+    roots, least = by_hand(variant)
+    sheet = put(tmp_path, "s.csv", f"s000,11/3,precession,{roots[0]:.4g} rpm; "
+                                   f"{roots[1]:.4g} rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
+                 "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert '"result": "correct"' in result.stdout
+    # a damaged key is ignored (every variant solved), not an error
+    (out / "key.json").write_text("{not json")
+    result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
+                 "--format", "json")
+    assert result.exit_code == 0 and '"result": "correct"' in result.stdout

@@ -150,6 +150,48 @@ def read_assignment(path: str) -> Assignment:
     return out
 
 
+KEY_FORMAT = "gyro-roster-key/1"
+MAX_KEY_BYTES = 200_000_000
+
+
+def code_fingerprint() -> str:
+    """A hash of gyro's own source: answers stored by one version of the solver are not
+    trusted by another."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode() + b"\0")
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def file_digest(text: str | bytes) -> str:
+    return hashlib.sha256(text.encode("utf-8") if isinstance(text, str) else text).hexdigest()
+
+
+def read_key(path: str) -> dict | None:
+    """The stored answer key of a roster set (``key.json`` beside the assignment), or None
+    when it is absent, damaged, or written by other code (then every variant is solved)."""
+    import json
+
+    from ..core.safeyaml import read_bytes
+
+    if not os.path.isfile(path):
+        return None
+    try:
+        data = json.loads(read_bytes(path, MAX_KEY_BYTES, "a key file"))
+    except (InputError, ValueError):
+        return None
+    if not (isinstance(data, dict) and data.get("format") == KEY_FORMAT
+            and data.get("code") == code_fingerprint()
+            and isinstance(data.get("problems"), dict)
+            and isinstance(data.get("variants"), dict)):
+        return None
+    return data
+
+
 def file_names(students: list[str]) -> dict[str, str]:
     """A file name stem per student id: the id itself when it is a safe name, else its
     safe letters and a short hash; unique even on a case-insensitive file system."""

@@ -310,15 +310,22 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     """
     import os
 
-    from .assignment import read_assignment
+    from .assignment import read_assignment, read_key
     from ..solving.problem import load
     from ..solving.solve import solve
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
+    key = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
     variants: dict[str, Any] = {}
+    stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
     seen_files: dict[str, str] = {}
     for row in plan.rows:
+        seen_files[os.path.realpath(row.file)] = row.variant
+        keyed = _from_key(key, row) if key else None
+        if keyed is not None:
+            variants[row.variant], stored[row.variant] = keyed
+            continue
         try:
             problem = load(row.file)
         except InputError as err:
@@ -331,7 +338,6 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                              f"says variant {row.variant!r}", file=assignment_path,
                              line=row.line)
         variants[row.variant] = problem
-        seen_files[os.path.realpath(row.file)] = row.variant
     if paths:  # the originals (or the variants' folder): every assigned problem among them
         files, errors = check.collect(paths)
         if errors:
@@ -390,6 +396,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     graded = Graded([], assignment=plan)
     solved: dict[str, Any] = {}
     for variant, problem in variants.items():
+        if variant in stored:
+            solved[variant] = stored[variant]
+            continue
         find = dict(problem.find)
         for name in questions[plan.by_variant[variant].problem]:
             find.setdefault(name, None)
@@ -405,9 +414,10 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:
         extras_by_student.setdefault(s.student, []).append((s, own))
+    assigned_problems = plan.problems()
     for student in plan.students:
         total = maximum = 0.0
-        for own in (plan.by_item[(student, pid)] for pid in plan.problems()
+        for own in (plan.by_item[(student, pid)] for pid in assigned_problems
                     if (student, pid) in plan.by_item):
             problem = variants[own.variant]
             for name in questions[own.problem]:
@@ -450,6 +460,36 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                                         variant=own.variant))
         graded.scores[student] = (total, maximum)
     return graded
+
+
+def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
+    """A variant's problem and answers from the stored key, when its file is the one the
+    key was made with (same SHA-256); else None, and the file is read and solved."""
+    from types import SimpleNamespace
+
+    from .assignment import file_digest
+    from .. import kinds
+    from ..core.safeyaml import read_bytes
+    from ..solving.problem import MAX_FILE_BYTES
+    from ..solving.solve import Reported
+
+    entry = key["variants"].get(row.variant)
+    if not isinstance(entry, dict) or entry.get("problem") != row.problem:
+        return None
+    about = key["problems"].get(row.problem)
+    try:
+        if file_digest(read_bytes(row.file, MAX_FILE_BYTES)) != entry.get("sha256"):
+            return None
+        kind = kinds.get(about["kind"])
+        answers = {name: Reported(**value) for name, value in entry["answers"].items()}
+        questions = list(about["questions"])
+    except InputError:
+        return None  # the slow path says what is wrong with the file
+    except (KeyError, TypeError):
+        return None  # a damaged key: solve instead
+    problem = SimpleNamespace(id=row.variant, kind=kind, tolerance=about.get("tolerance"),
+                              file=row.file, find={q: None for q in questions}, expected={})
+    return problem, SimpleNamespace(answers=answers)
 
 
 class _RootIndex:

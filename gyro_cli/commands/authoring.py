@@ -371,9 +371,10 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
 
 def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.Random,
                  keyed: list[str], variant_id: str, title: str,
-                 source: str) -> dict[str, Any] | None:
+                 source: str, solved: list[Any] | None = None) -> dict[str, Any] | None:
     """One draw of every `vary` key from ``rng``, solved: the variant's data with its
-    computed `expected` answers, or None when the draw has no real solution."""
+    computed `expected` answers, or None when the draw has no real solution. The
+    solver's result is appended to ``solved`` when that is given."""
     from ..checking.tolerance import tolerance_for
     from ..solving.problem import _build
     from ..solving.solve import solve
@@ -407,6 +408,8 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
                   for si, v in zip(answer.si_values, answer.values)]
         expected[name] = _expected_text(answer.values, answer.unit, widths)
     data["expected"] = expected
+    if solved is not None:
+        solved.append(result)
     order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
              "expected", "tolerance"]
     return {k: data[k] for k in order if k in data}
