@@ -66,6 +66,9 @@ def template(kind_name: str) -> str:
            _line('title: "Describe the problem"', "optional"),
            _line(f"kind: {kind.name}", "required"),
            _line('source: ""', "optional: book, chapter, problem number"),
+           _line("statement: >-", "optional: the problem as students read it; {key} is "
+                 "the given value as written"),
+           "  " + _statement_example(kind, given_ex, find_ex),
            _line("notes:", "optional: lines printed with the worked answer"),
            "  - Spin is the rate relative to the precessing frame (psidot)."
            if (kind.param("spin") and kind.param("spin").symbol == "psidot")
@@ -118,6 +121,22 @@ def template(kind_name: str) -> str:
     return "\n".join(out) + "\n"
 
 
+def _statement_example(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> str:
+    """A statement for the template that names each given value by placeholder."""
+    import re
+
+    params = {p.name: p for p in list(kind.params) +
+              (list(BODY_PARAMS) if kind.uses_body else [])}
+    short = {k: re.sub(r"\s*\([^)]*\)", "", params[k].doc if k in params else k).split(";")[0]
+             for k in given}
+    data = [f"{short[k]} {{{k}}}" for k in given]
+    asked = ", ".join(re.sub(r"\s*\([^)]*\)", "", a.doc) for a in kind.answers
+                      if a.name in find) or kind.answers[0].doc
+    if not data:
+        return f"State the problem here; write {{key}} for a given value. Find {asked}."
+    return f"Given: {'; '.join(data)}. Find {asked}."
+
+
 def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
     """The example's answers as the solver gives them, for the template's `expected`."""
     from ..solving.problem import _build
@@ -167,6 +186,10 @@ def schema() -> dict[str, Any]:
         "properties": {
             "id": {"type": ["string", "number"], "description": "how reports name the problem"},
             "title": {"type": "string"},
+            "statement": {"type": "string", "minLength": 1,
+                          "description": "the problem as students read it; {key} is replaced "
+                                         "by the given value as written ({{ and }} for "
+                                         "braces)"},
             "kind": {"enum": kind_names, "description": "the problem kind (`gyro kinds`)"},
             "source": {"type": "string"},
             "notes": {"oneOf": [{"type": "string"},
