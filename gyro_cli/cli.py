@@ -175,6 +175,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
+@click.option("--out-format", "out_format", default="grades", show_default=True,
+              type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
+              help="With --out: gyro's grades CSV, a Canvas gradebook import CSV, or "
+                   "Gradescope's / PrairieLearn's results.json (one per student: FILE for "
+                   "one student, else a directory of STUDENT.json).")
 @click.option("--assignment", metavar="ASSIGNMENT.csv",
               help="With --answers: grade each student only on their own variants, as "
                    "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
@@ -184,7 +189,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
           sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
-          assignment: str | None = None) -> None:
+          assignment: str | None = None, out_format: str = "grades") -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -196,8 +201,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if sheet is None:
         if assignment:
             fail("--assignment goes with --answers SHEET")
-        if out or (force and not html_file):
-            fail("--out goes with --answers SHEET, --force with --out or --html")
+        if out or (force and not html_file) or out_format != "grades":
+            fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         from .render import check_report
 
         from .api import check_files
@@ -227,16 +232,15 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         sys.exit(result.exit_code)
     if junit_file or strict or html_file:
         fail("--junit, --html and --strict go with checking the answer key, not with --answers")
+    if out_format != "grades" and not out:
+        fail("--out-format goes with --out FILE")
     from .checking import grades
     from .render import grades_report
 
     try:
         graded = grades.grade(sheet, paths, assignment=assignment)
-        text = grades_report.csv_text(graded)
         if out:
-            from .core.files import write_atomic
-
-            write_atomic(out, text, force=force)
+            grades_report.write_out(graded, out, out_format, force)
     except InputError as err:
         fail(err)
     for line in graded.errors:

@@ -187,3 +187,65 @@ def test_an_edited_variant_is_solved_again_not_graded_by_the_stored_key(run, tmp
     result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
                  "--format", "json")
     assert result.exit_code == 0 and '"result": "correct"' in result.stdout
+
+
+def _graded_set(run, tmp_path):
+    """Three students (roster with Canvas's columns); s000 right, s001 half, s002 blank."""
+    r = put(tmp_path, "roster.csv", "student,name,sis_user_id,section\n"
+                                    "s000,Ann Lee,A100,L1\ns001,Bob Roy,A101,L2\n"
+                                    "s002,Cy Dee,,L1\n")
+    out = tmp_path / "hw"
+    assert run("vary", TOP, "--roster", r, "-o", out).exit_code == 0
+    lines = []
+    for student in ("s000", "s001"):
+        roots, least = by_hand(yaml.safe_load((out / "11_3" / f"{student}.yaml").read_text()))
+        lines.append(f"{student},11/3,precession,{roots[0]:.4g} rpm; {roots[1]:.4g} rpm")
+        lines.append(f"{student},11/3,min_spin,{least * (1 if student == 's000' else 2):.4g} rpm")
+    return put(tmp_path, "sheet.csv", "\n".join(lines) + "\n"), out / "assignment.csv"
+
+
+def test_grades_out_canvas_gradebook_csv(run, tmp_path):
+    sheet, assignment = _graded_set(run, tmp_path)
+    target = tmp_path / "HW 3.csv"
+    result = run("check", "--answers", sheet, "--assignment", assignment, "--out", target,
+                 "--out-format", "canvas")
+    assert result.exit_code == 0, result.output
+    with open(target, newline="") as handle:
+        rows = list(csv.reader(handle))
+    # Canvas's import: these five columns first, then the assignment; "Points Possible" row
+    assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "HW 3"]
+    assert rows[1][0].strip() == "Points Possible" and rows[1][5] == "2"
+    assert rows[2] == ["Ann Lee", "", "A100", "", "L1", "2"]
+    assert rows[3] == ["Bob Roy", "", "A101", "", "L2", "1"]
+    assert rows[4] == ["Cy Dee", "", "s002", "", "L1", "0"]  # gyro's id where the SIS id is blank
+
+
+def test_grades_out_gradescope_and_prairielearn_results(run, tmp_path):
+    import json
+
+    sheet, assignment = _graded_set(run, tmp_path)
+    for fmt in ("gradescope", "prairielearn"):
+        folder = tmp_path / fmt
+        result = run("check", "--answers", sheet, "--assignment", assignment, "--out", folder,
+                     "--out-format", fmt)
+        assert result.exit_code == 0, result.output
+        assert sorted(p.name for p in folder.iterdir()) == ["s000.json", "s001.json",
+                                                            "s002.json"]
+        bob = json.loads((folder / "s001.json").read_text())
+        if fmt == "gradescope":  # results.json of Gradescope's autograder specification
+            assert bob["score"] == 1
+            assert [(t["name"], t["score"], t["max_score"], t["status"]) for t in bob["tests"]] \
+                == [("11/3: precession", 1, 1, "passed"), ("11/3: min_spin", 0, 1, "failed")]
+            assert all(isinstance(t["output"], str) for t in bob["tests"])
+        else:  # PrairieLearn's external grader results: score a fraction, gradable
+            assert bob["gradable"] is True and bob["score"] == 0.5
+            assert [(t["name"], t["points"], t["max_points"]) for t in bob["tests"]] == \
+                [("11/3: precession", 1, 1), ("11/3: min_spin", 0, 1)]
+            assert "factor" in bob["tests"][1]["message"] or "off by" in bob["tests"][1]["message"]
+    # one student's sheet (as inside an autograder): --out is the results file itself
+    one = put(tmp_path, "one.csv", sheet.read_text().splitlines()[0] + "\n")
+    target = tmp_path / "results.json"
+    result = run("check", "--answers", one, "--assignment", assignment, "--out", target,
+                 "--out-format", "gradescope")
+    assert result.exit_code == 0
+    assert json.loads(target.read_text())["tests"]

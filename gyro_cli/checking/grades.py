@@ -87,6 +87,7 @@ class Graded:
     scores: dict[str, tuple[float, float]] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)  # internal errors, one line each
     assignment: Any = None  # checking.assignment.Assignment when graded by assignment
+    sheet_students: list[str] = field(default_factory=list)  # who the sheet holds answers of
 
 
 # ---- reading the sheet ------------------------------------------------------
@@ -270,6 +271,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
             graded.errors.append(internal_message(problem.file, err))
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
+    graded.sheet_students = students
     by_key = {(s.student, s.problem, s.answer): s for s in submissions}
     for student in students:
         total = 0.0
@@ -393,7 +395,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
         if note:
             notes.setdefault(key, []).append(note)
-    graded = Graded([], assignment=plan)
+    graded = Graded([], assignment=plan,
+                    sheet_students=list(dict.fromkeys(s.student for s in submissions)))
     solved: dict[str, Any] = {}
     for variant, problem in variants.items():
         if variant in stored:
