@@ -180,6 +180,12 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
               help="With --out: gyro's grades CSV, a Canvas gradebook import CSV, or "
                    "Gradescope's / PrairieLearn's results.json (one per student: FILE for "
                    "one student, else a directory of STUDENT.json).")
+@click.option("--credit", metavar="SLIP=SHARE,...",
+              help="With --answers: partial credit for a value off by a named slip, e.g. "
+                   "2pi=0.5,sign=0.5 (slips: 2pi, rpm, 60, g, deg, 10, sign).")
+@click.option("--feedback", "feedback_dir", metavar="DIR",
+              help="With --answers: write each student a short page (DIR/STUDENT.md): what "
+                   "was right, what was off and the likely slip.")
 @click.option("--assignment", metavar="ASSIGNMENT.csv",
               help="With --answers: grade each student only on their own variants, as "
                    "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
@@ -189,7 +195,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
           sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
-          assignment: str | None = None, out_format: str = "grades") -> None:
+          assignment: str | None = None, out_format: str = "grades",
+          credit: str | None = None, feedback_dir: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -199,8 +206,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if not paths and not (sheet and assignment):
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if assignment:
-            fail("--assignment goes with --answers SHEET")
+        if assignment or credit is not None or feedback_dir:
+            fail("--assignment, --credit and --feedback go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         from .render import check_report
@@ -238,9 +245,12 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     from .render import grades_report
 
     try:
-        graded = grades.grade(sheet, paths, assignment=assignment)
+        policy = grades.parse_credit(credit) if credit is not None else None
+        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy)
         if out:
             grades_report.write_out(graded, out, out_format, force)
+        if feedback_dir:
+            grades_report.write_feedback(graded, feedback_dir, force)
     except InputError as err:
         fail(err)
     for line in graded.errors:

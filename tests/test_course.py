@@ -249,3 +249,58 @@ def test_grades_out_gradescope_and_prairielearn_results(run, tmp_path):
                  "--out-format", "gradescope")
     assert result.exit_code == 0
     assert json.loads(target.read_text())["tests"]
+
+
+def _slipped_sheet(run, tmp_path):
+    """s000..s004 each give min_spin with one slip: none, x 2 pi, minus, minus x 2 pi, x 60."""
+    out = make_set(run, tmp_path, 5, TOP)
+    factors = {"s000": 1, "s001": 2 * math.pi, "s002": -1, "s003": -2 * math.pi, "s004": 60}
+    lines = []
+    for student, factor in factors.items():
+        _, least = by_hand(yaml.safe_load((out / "11_3" / f"{student}.yaml").read_text()))
+        lines.append(f"{student},11/3,min_spin,{least * factor:.5g} rpm")
+    return put(tmp_path, "slips.csv", "\n".join(lines) + "\n"), out / "assignment.csv"
+
+
+def test_credit_for_named_slips(run, tmp_path):
+    import json
+
+    sheet, assignment = _slipped_sheet(run, tmp_path)
+
+    def points(*extra):
+        result = run("check", "--answers", sheet, "--assignment", assignment, "--format",
+                     "json", *extra)
+        assert result.exit_code == 0, result.output
+        rows = json.loads(result.stdout)["rows"]
+        return {r["student"]: r["points"] for r in rows if r["answer"] == "min_spin"}
+
+    assert points() == {"s000": 1, "s001": 0, "s002": 0, "s003": 0, "s004": 0}
+    # 2 pi half, sign half; both slips at once: half of half; 60 is not in the policy
+    assert points("--credit", "2pi=0.5,sign=0.5") == \
+        {"s000": 1, "s001": 0.5, "s002": 0.5, "s003": 0.25, "s004": 0}
+    assert points("--credit", "2pi=0.5") == \
+        {"s000": 1, "s001": 0.5, "s002": 0, "s003": 0, "s004": 0}
+    for bad, message in (("pi=0.5", "with a slip among 2pi, rpm"), ("2pi=2", "between 0 and 1"),
+                         ("2pi", "expected slip=fraction")):
+        result = run("check", "--answers", sheet, "--assignment", assignment, "--credit", bad)
+        assert result.exit_code == 2 and message in result.stderr, result.output
+
+
+def test_feedback_pages(run, tmp_path):
+    sheet, assignment = _slipped_sheet(run, tmp_path)
+    folder = tmp_path / "feedback"
+    result = run("check", "--answers", sheet, "--assignment", assignment, "--feedback", folder,
+                 "--credit", "2pi=0.5")
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in folder.iterdir()) == [f"s00{k}.md" for k in range(5)]
+    ann = (folder / "s000.md").read_text()
+    assert "Score: 1 of 2 points (50.0%)" in ann
+    assert "## Right" in ann and "11/3, min\\_spin" in ann
+    assert "precession: not answered" in ann
+    bob = (folder / "s001.md").read_text()
+    assert "likely slip: a factor of 2 pi" in bob and "0.5 of 1 points" in bob
+    # the solver's value is not on the page (it can go out before the due date)
+    variant = yaml.safe_load((assignment.parent / "11_3" / "s001.yaml").read_text())
+    assert variant["expected"]["min_spin"].split()[0] not in bob
+    again = run("check", "--answers", sheet, "--assignment", assignment, "--feedback", folder)
+    assert again.exit_code == 2 and "exists; not overwritten" in again.stderr

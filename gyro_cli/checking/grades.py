@@ -229,7 +229,7 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
 
 
 def grade(sheet: str, paths: list[str] | tuple[str, ...],
-          assignment: str | None = None) -> Graded:
+          assignment: str | None = None, credit: dict[str, float] | None = None) -> Graded:
     """Grade every submission in ``sheet`` against the problems under ``paths``.
 
     With ``assignment`` (an assignment.csv from ``gyro vary --roster``) each student
@@ -238,7 +238,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     from ..solving.solve import solve
 
     if assignment is not None:
-        return grade_assigned(sheet, paths, assignment)
+        return grade_assigned(sheet, paths, assignment, credit)
 
     submissions = read_sheet(sheet)
     problems = load_problems(paths)
@@ -284,7 +284,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
             else:
                 try:
                     row = grade_item(student, problems[pid], name, solved[pid].answers[name],
-                                     values)
+                                     values, credit)
                 except Exception as err:  # a bug: this row is an error, the rest is graded
                     from ..core.errors import internal_message
 
@@ -299,8 +299,8 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     return graded
 
 
-def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str
-                   ) -> Graded:
+def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
+                   credit: dict[str, float] | None = None) -> Graded:
     """Each student graded on their own variant of each assigned problem only.
 
     The questions of a problem are the answers its variants ask for (`find`, and
@@ -434,7 +434,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 else:
                     try:
                         row = grade_item(student, problem, name,
-                                         solved[own.variant].answers[name], values)
+                                         solved[own.variant].answers[name], values, credit)
                     except Exception as err:  # a bug: this row is an error
                         from ..core.errors import internal_message
 
@@ -550,8 +550,12 @@ class _RootIndex:
 
 
 def grade_item(student: str, problem: Any, name: str, reported: Any,
-               values: list[Any] | None) -> GradeRow:
-    """One student's answer to one question, against the solver's answer."""
+               values: list[Any] | None, credit: dict[str, float] | None = None) -> GradeRow:
+    """One student's answer to one question, against the solver's answer.
+
+    ``credit``: the share of a value's point given when its likely slip is one of the
+    named slips (SLIP_NAMES), e.g. {"2pi": 0.5}; a slip with the sign as well needs both.
+    """
     spec = problem.kind.answer(name)
     names = [a.name for a in problem.kind.answers]
     tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
@@ -585,6 +589,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
     row.relative_error = max(errors, key=abs) if errors else None
     notes = []
+    credited = 0.0
     for line in lines:
         if line.passed:
             continue
@@ -600,9 +605,67 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
             if slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
+                share, named = slip_credit(slip, credit)
+                if share:
+                    credited += share
+                    note += f" [credit {share:g} for {' and '.join(named)}]"
             notes.append(note)
     row.note = "; ".join(notes)
+    if credited and lines:
+        row.points = round((passed + credited) / len(lines), 4)
+        row.result = "partial" if row.result == "wrong" else row.result
     return row
+
+
+# Named slips (the names of --credit) and the words of matching.diagnose that name them.
+SLIP_NAMES = {
+    "2pi": "a factor of 2 pi",
+    "rpm": "a factor of 60/(2 pi)",
+    "60": "a factor of 60:",
+    "g": "a factor of g",
+    "deg": "a factor of 180/pi",
+    "10": "a power of ten",
+    "sign": "the sign",
+}
+
+
+def parse_credit(text: str) -> dict[str, float]:
+    """``2pi=0.5,sign=0.5`` -> {"2pi": 0.5, "sign": 0.5}; InputError naming what is wrong."""
+    out: dict[str, float] = {}
+    for part in (p.strip() for p in text.split(",")):
+        if not part:
+            continue
+        name, eq, value = part.partition("=")
+        name = name.strip().lower()
+        if not eq or name not in SLIP_NAMES:
+            raise InputError(f"--credit: expected slip=fraction with a slip among "
+                             f"{', '.join(SLIP_NAMES)}, got {part!r}")
+        try:
+            share = float(value)
+        except ValueError:
+            share = math.nan
+        if not 0 <= share <= 1:
+            raise InputError(f"--credit: the share for {name} must lie between 0 and 1, "
+                             f"got {value.strip()!r}")
+        out[name] = share
+    return out
+
+
+def slip_credit(slip: str, credit: dict[str, float] | None) -> tuple[float, list[str]]:
+    """The share of a point a slip earns under ``credit`` (0 when a slip it involves is not
+    named there), and the slips' names."""
+    if not credit:
+        return 0.0, []
+    named = [name for name, words in SLIP_NAMES.items() if name != "sign" and words in slip]
+    if slip.startswith("the sign") or slip.endswith("and the sign") or \
+            " and the sign" in slip:
+        named.append("sign")
+    if not named or any(n not in credit for n in named):
+        return 0.0, named
+    share = 1.0
+    for n in named:
+        share *= credit[n]
+    return share, named
 
 
 def _submitted(values: list[Any] | None) -> str:

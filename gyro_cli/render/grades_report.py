@@ -186,3 +186,81 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
     for target, text in targets:
         write_atomic(target, text, force=force)
     return [t for t, _ in targets]
+
+
+# ---- feedback: a short page per student -------------------------------------------------
+
+RESULT_WORDS = {"correct": "right", "partial": "partly right", "wrong": "off",
+                "invalid": "not readable", "missing": "not answered", "extra": "not asked",
+                "error": "not graded (gyro failed on the problem)"}
+
+
+def feedback_text(graded: Graded, student: str) -> str:
+    """One student's feedback as Markdown: the score, then each answer: right, or what was
+    off and the likely slip (the grading note). The correct values are not printed, so the
+    page can go out before the due date."""
+    points, total = graded.scores.get(student, (0.0, 0.0))
+    percent = 100 * points / total if total else 0.0
+    lines = [f"# Feedback for {_md(student)}", "",
+             f"Score: {points:g} of {total:g} points ({percent:.1f}%).", ""]
+    rows = [r for r in graded.rows if r.student == student]
+    right = [r for r in rows if r.result == "correct"]
+    other = [r for r in rows if r.result != "correct"]
+    if right:
+        lines += ["## Right", ""]
+        lines += [f"- {_md(r.problem)}, {_md(r.answer)}: {_md(r.submitted)}" for r in right]
+        lines.append("")
+    if other:
+        lines += ["## To look at again", ""]
+        for r in other:
+            text = f"- {_md(r.problem)}, {_md(r.answer)}: {RESULT_WORDS.get(r.result, r.result)}"
+            if r.submitted:
+                text += f" (you gave {_md(r.submitted)})"
+            note = r.note if r.result != "missing" else ""
+            if note:
+                text += f". {_md(_without_truth(note))}"
+            lines.append(text + f"; {r.points:g} of {r.max_points:g} points.")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def _without_truth(note: str) -> str:
+    """A grading note without the solver's values (a missing root's value is the answer)."""
+    import re
+
+    return re.sub(r"missing root [^;]*", "a root is missing", note)
+
+
+def _md(text: Any) -> str:
+    """User text for Markdown: no raw HTML, no markup characters that change the page."""
+    import html as _html
+
+    out = _html.escape(" ".join(str(text).split()), quote=False)
+    for ch in "\\`*_[]#|<>!":
+        out = out.replace(ch, "\\" + ch) if ch not in "<>" else out
+    return out
+
+
+def write_feedback(graded: Graded, folder: str, force: bool) -> list[str]:
+    """``folder/<student>.md`` for every student graded; nothing over an existing file
+    without ``force`` (checked before anything is written)."""
+    import os
+
+    from ..checking.assignment import file_names
+    from ..core.errors import InputError
+    from ..core.files import write_atomic
+
+    names = file_names(list(graded.scores))
+    targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s))
+               for s in graded.scores]
+    if os.path.exists(folder) and not os.path.isdir(folder):
+        raise InputError("exists and is not a directory", file=folder)
+    if not force:
+        for target, _ in targets:
+            if os.path.exists(target):
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=target)
+    os.makedirs(folder, exist_ok=True)
+    for target, text in targets:
+        write_atomic(target, text, force=force)
+    return [t for t, _ in targets]
