@@ -1,4 +1,4 @@
-"""The command line: solve, check, simulate, new, schema, vary, kinds.
+"""The command line: solve, check, simulate, new, schema, vary, handout, kinds.
 
 Every command exits 0 on success, 1 when an answer does not match (check), 2 on
 bad input or usage, with a one-line message and never a traceback, and 3 when
@@ -383,6 +383,40 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
         internal(file, err)
         sys.exit(INTERNAL)
     click.echo(out, nl=False)
+
+
+@main.command()
+@click.argument("files", nargs=-1, metavar="FILES|DIR")
+@click.option("-o", "--output", "out", metavar="OUT", default="handout.html", show_default=True,
+              help="OUT.html, OUT.tex or OUT.pdf (pdflatex); per student OUT-STUDENT.ext and "
+                   "OUT-key.csv.")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="One sheet per student, each with their own numbers (as gyro vary --roster "
+                   "with the same --seed).")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="One sheet per student from gyro vary --roster's assignment (FILES not "
+                   "needed).")
+@click.option("--seed", "-s", type=int, default=0, show_default=True,
+              help="With --roster: the course seed.")
+@click.option("--solutions", is_flag=True, help="Add the worked answers.")
+@click.option("--course", default="", help="The course's name, on the cover.")
+@click.option("--title", default="Homework", show_default=True, help="The sheet's title.")
+@click.option("--force", is_flag=True, help="Replace files that exist.")
+def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: str | None,
+            seed: int, solutions: bool, course: str, title: str, force: bool) -> None:
+    """Write the students' question sheets: a cover and each problem's statement with
+    the student's numbers; --solutions adds the worked answers."""
+    from .commands.handout import write_handouts
+
+    if not files and not assignment:
+        fail("give the problem FILES (or a DIR), or --assignment")
+    try:
+        written = write_handouts(list(files), out, roster, assignment, seed, solutions,
+                                 course, title, force)
+    except InputError as err:
+        fail(err)
+    for path in written:
+        click.echo(path)
 
 
 @main.command()
