@@ -304,3 +304,11 @@ def test_feedback_pages(run, tmp_path):
     assert variant["expected"]["min_spin"].split()[0] not in bob
     again = run("check", "--answers", sheet, "--assignment", assignment, "--feedback", folder)
     assert again.exit_code == 2 and "exists; not overwritten" in again.stderr
+
+
+def test_a_student_id_with_a_line_break_is_refused(run, tmp_path):
+    # it would reach file names, variant ids and the LaTeX write-up's comment line
+    r = put(tmp_path, "r.csv", 'student\nann\n"x\n\\\\input{/etc/hostname}"\n')
+    result = run("vary", TOP, "--roster", r, "-o", tmp_path / "hw")
+    assert result.exit_code == 2 and "control character" in result.stderr
+    assert "line 3" in result.stderr and not (tmp_path / "hw").exists()

@@ -93,6 +93,16 @@ def read_table(path: str, what: str) -> tuple[list[str], list[tuple[int, list[st
     return header, out
 
 
+def _plain_id(text: str, path: str, line: int) -> None:
+    """An id goes into file names, variant ids and LaTeX: no line breaks or control
+    characters."""
+    bad = next((c for c in text if ord(c) < 32 or 0x7f <= ord(c) < 0xa0
+                or c in "\u2028\u2029"), None)
+    if bad is not None:
+        raise InputError(f"the id {' '.join(text.split())[:40]!r} holds a control character "
+                         f"({bad!r}); ids are one line of printable text", file=path, line=line)
+
+
 def read_roster(path: str) -> list[Student]:
     """The students of a roster CSV (a ``student`` column; the other columns kept)."""
     header, rows = read_table(path, "a roster (CSV with a student column)")
@@ -105,6 +115,7 @@ def read_roster(path: str) -> list[Student]:
         sid = cells[at]
         if not sid:
             raise InputError("empty student id", file=path, line=number)
+        _plain_id(sid, path, number)
         if sid in students:
             raise InputError(f"student {sid!r} is listed twice (lines {students[sid].line} "
                              f"and {number}); keep one", file=path, line=number)
@@ -130,6 +141,8 @@ def read_assignment(path: str) -> Assignment:
         if not (student and problem and variant and file):
             raise InputError("student, problem, variant and file must not be empty",
                              file=path, line=number)
+        for text in (student, problem, variant):
+            _plain_id(text, path, number)
         row = Assigned(student, problem, variant, os.path.join(folder, file), number)
         earlier = out.by_item.get((student, problem))
         if earlier is not None:
