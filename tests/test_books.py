@@ -755,3 +755,23 @@ def test_readme_shows_latex_with_standalone():
     quick = next(block for block in readme.split("```")[1::2] if "gyro solve" in block)
     assert "--format latex --standalone" in quick
     assert "or latex" not in quick and "latex FILE" not in quick
+
+
+# ---- acceptance: a folder of published problems in the books' own words -------------
+
+BOOKS_WORDS = ["toy_gyroscope_no_angle.yaml", "irodov_turbine_locomotive.yaml",
+               "khurmi_wheel_drop.yaml", "ship_steering_2200kg_aft.yaml",
+               "ship_pitching_6000kg.yaml", "ship_pitching_3500kg_extremes.yaml",
+               "torque_free_shell.yaml", "torque_free_satellite.yaml"]
+
+
+def test_gyro_check_passes_on_the_books_folder(run, problems_dir, tmp_path):
+    folder = tmp_path / "books"
+    folder.mkdir()
+    for name in BOOKS_WORDS:
+        text = (problems_dir / name).read_text()
+        assert "source:" in text and "expected:" in text, name
+        (folder / name).write_text(text)
+    out = run("check", folder)
+    assert out.exit_code == 0, out.stdout + out.stderr
+    assert f"in {len(BOOKS_WORDS)} problems" in out.stdout and "0 failed" in out.stdout
