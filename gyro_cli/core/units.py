@@ -97,16 +97,38 @@ _TO: dict[tuple[str, str], float] = {}
 
 
 def registry() -> Any:
-    """The program's one pint registry, created on first use with pint's cache."""
+    """The program's one pint registry, created on first use with pint's disk cache.
+
+    pint's cache lives in gyro's cache folder (unit_cache.pint_folder). When it
+    cannot be used (no cache, a read-only or missing HOME, a FIFO there) pint
+    runs without one; when pint fails on it (a truncated pickle, another gyro
+    writing it at the same moment) its files are removed, to be rebuilt by a
+    later run, and this run goes on without a cache. A cache never fails a run.
+    """
     global _registry
     if _registry is None:
         import pint
 
-        ureg = pint.UnitRegistry(cache_folder=":auto:", on_redefinition="ignore")
-        # A textbook's "Hz" on a rotor is revolutions per second, not 1/s.
-        ureg.define("hertz = revolution / second = Hz")
-        _registry = ureg
+        def make(folder: str | None) -> Any:
+            ureg = pint.UnitRegistry(cache_folder=folder, on_redefinition="ignore")
+            # A textbook's "Hz" on a rotor is revolutions per second, not 1/s.
+            ureg.define("hertz = revolution / second = Hz")
+            return ureg
+
+        folder = unit_cache.pint_folder()
+        try:
+            _registry = make(folder)
+        except Exception:  # noqa: BLE001 - any failure of a cache: work without it
+            if folder is None:
+                raise
+            unit_cache.clear_pint_folder(folder)
+            _registry = make(None)
     return _registry
+
+
+def unit_names(units: Any) -> set[str]:
+    """The names of the units in a pint Unit (public API: Quantity.unit_items)."""
+    return {name for name, _ in registry().Quantity(1, units).unit_items()}
 
 
 def si_unit(dimension: str) -> str:
@@ -471,12 +493,12 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
     pint_dim, si, words = DIMENSIONS[dimension]
     if quantity.dimensionality != ureg.get_dimensionality(pint_dim or "[]"):
         got = str(quantity.dimensionality)
-        if dimension != "angle" and set(units._units) & ANGLE_UNITS and got == "dimensionless":
+        if dimension != "angle" and unit_names(units) & ANGLE_UNITS and got == "dimensionless":
             got = "angle"
         raise InputError(f"expected {words}, got {text!r} (dimension {got})", key=key)
-    if dimension == "angle" and not (units._units and set(units._units) <= ANGLE_UNITS):
+    if dimension == "angle" and not (unit_names(units) and unit_names(units) <= ANGLE_UNITS):
         raise InputError(f"an angle needs a unit, deg or rad: got {text!r}", key=key)
-    if dimension == "time_per_angle" and not set(units._units) & ANGLE_UNITS:
+    if dimension == "time_per_angle" and not unit_names(units) & ANGLE_UNITS:
         # pint counts angles as plain numbers: `yr` alone would silently mean years per radian
         raise InputError(f"a time per angle needs an angle in its unit, such as 'yr/deg': got "
                          f"{text!r}", key=key)
@@ -484,7 +506,7 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
     if not math.isfinite(value):
         raise InputError(f"{text!r} is out of range", key=key)
     parsed = Parsed(number, f"{units:~}".replace(" ** ", "^").replace("**", "^"),
-                    bool(set(units._units) & US_MASS_OR_FORCE))
+                    bool(unit_names(units) & US_MASS_OR_FORCE))
     # Cache the unit's SI factor where the unit is a plain multiple (no offset), so a
     # directory of problems asks pint once per unit, not once per value.
     factor = float(ureg.Quantity(1.0, units).to(si or "dimensionless").magnitude)
