@@ -35,7 +35,7 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     parent = target.parent if str(target.parent) else Path(".")
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
-    data = text.encode("utf-8") if isinstance(text, str) else text
+    data = _utf8(text) if isinstance(text, str) else text
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=parent)
     except OSError as err:
@@ -127,7 +127,7 @@ def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list
     placed: list[Path] = []
     try:
         for target, (_, text) in zip(targets, items):
-            data = text.encode("utf-8") if isinstance(text, str) else text
+            data = _utf8(text) if isinstance(text, str) else text
             try:
                 fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
                                            dir=target.parent if str(target.parent) else ".")
@@ -196,6 +196,12 @@ def refuse_special(path: str | os.PathLike) -> None:
 
         message = _not_regular(mode, "a file to write").replace("reads", "writes")
         raise InputError(message, file=str(path))
+
+
+def _utf8(text: str) -> bytes:
+    """UTF-8 bytes; a lone surrogate (a file name that is not UTF-8, as Python keeps
+    it) is written as its escape ``\\udcff``, so the file stays valid UTF-8."""
+    return text.encode("utf-8", "backslashreplace")
 
 
 def _umask() -> int:

@@ -20,10 +20,12 @@ from __future__ import annotations
 
 import errno
 import os
+import re
 import signal
 import sys
 from typing import Any, Callable
 
+_SURROGATE = re.compile("[\ud800-\udfff]")
 EXIT_PIPE = 141   # 128 + SIGPIPE
 EXIT_USAGE = 2
 
@@ -52,7 +54,14 @@ class _Stream:
         if self._guard.failed(self._name):
             return len(data)
         try:
-            return self._stream.write(data)
+            try:
+                return self._stream.write(data)
+            except UnicodeEncodeError:
+                if not isinstance(data, str) or not _SURROGATE.search(data):
+                    raise
+                # A file name that is not UTF-8 (Python keeps its bytes as lone
+                # surrogates): shown escaped, as in gyro's one-line messages.
+                return self._stream.write(_SURROGATE.sub(_escaped, data))
         except (OSError, UnicodeEncodeError, ValueError) as err:
             if isinstance(err, ValueError) and not isinstance(err, UnicodeEncodeError) \
                     and "closed file" not in str(err):
@@ -147,6 +156,10 @@ class Guard:
         if _reader_left(err):
             return EXIT_PIPE
         return max(code, EXIT_USAGE)
+
+
+def _escaped(match: "re.Match[str]") -> str:
+    return match.group().encode("unicode_escape").decode("ascii")
 
 
 def _reader_left(err: BaseException) -> bool:
