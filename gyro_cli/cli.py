@@ -51,25 +51,27 @@ class _Guarded(click.Group):
         from .core.streams import Interrupted, guard_output, on_signals
 
         guard = guard_output()
-        undo = on_signals()
-        code: object = 0
         try:
+            undo = on_signals()
+            code: object = 0
             try:
-                super().main(*args, **kwargs)
-            except SystemExit as done:
-                code = done.code
-            except Interrupted as signalled:
-                code = signalled.exit_code
-                if signalled.exit_code == 130:
-                    click.echo("gyro: interrupted", err=True)
+                try:
+                    super().main(*args, **kwargs)
+                except SystemExit as done:
+                    code = done.code
+                except Interrupted as signalled:
+                    code = signalled.exit_code
+                    if signalled.exit_code == 130:
+                        click.echo("gyro: interrupted", err=True)
+            finally:
+                undo()
+            code = 0 if code is None else code if isinstance(code, int) else 1
+            message = guard.message()
+            if message:
+                click.echo(f"gyro: {message}", err=True)
+            code = guard.exit_code(code)
         finally:
-            undo()
-        code = 0 if code is None else code if isinstance(code, int) else 1
-        message = guard.message()
-        if message:
-            click.echo(f"gyro: {message}", err=True)
-        code = guard.exit_code(code)
-        guard.restore()
+            guard.restore()
         sys.exit(code)
 
     def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
