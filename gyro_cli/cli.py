@@ -36,7 +36,43 @@ def internal(file: str | None, error: BaseException) -> None:
 
 
 class _Guarded(click.Group):
-    """The last line of defence: an exception no command caught is one line and exit 3."""
+    """The last line of defence: an exception no command caught is one line and exit 3.
+
+    Around every command (``--help`` and ``--version`` too): a failing standard
+    output never stops the files asked for being written (core/streams.py: the
+    reader leaving is 141, any other failure one line and exit 2), and SIGINT,
+    SIGTERM and SIGHUP end gyro with 128 + the signal's number after its
+    ``finally`` blocks have removed any temporary file.
+    """
+
+    def main(self, *args, **kwargs):  # type: ignore[no-untyped-def, override]
+        if kwargs.get("standalone_mode", True) is False:
+            return super().main(*args, **kwargs)
+        from .core.streams import Interrupted, guard_output, on_signals
+
+        guard = guard_output()
+        try:
+            undo = on_signals()
+            code: object = 0
+            try:
+                try:
+                    super().main(*args, **kwargs)
+                except SystemExit as done:
+                    code = done.code
+                except Interrupted as signalled:
+                    code = signalled.exit_code
+                    if signalled.exit_code == 130:
+                        click.echo("gyro: interrupted", err=True)
+            finally:
+                undo()
+            code = 0 if code is None else code if isinstance(code, int) else 1
+            message = guard.message()
+            if message:
+                click.echo(f"gyro: {message}", err=True)
+            code = guard.exit_code(code)
+        finally:
+            guard.restore()
+        sys.exit(code)
 
     def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
         try:
@@ -78,6 +114,19 @@ def main() -> None:
 
     Write a problem as a YAML file with units, then `gyro solve FILE`.
     """
+
+
+def _outputs_apart(inputs: list[str] | tuple[str, ...], **outputs: str | None) -> None:
+    """Exit 2 with one line if an output file (by option name) is empty or would replace
+    one of the command's inputs (core/files.py: refuse_input_as_output)."""
+    from .core.files import refuse_input_as_output
+
+    for option, name in outputs.items():
+        if name is not None:
+            try:
+                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"))
+            except InputError as err:
+                fail(err)
 
 
 def _rendered(result, fmt: str, level: int = 2) -> str:
@@ -128,6 +177,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     from .solving.paths import problem_files
 
     files, missing = problem_files(files)
+    _outputs_apart(files, plot=plot_file)
     for _, message in missing:
         click.echo(f"gyro: {terminal_text(message)}", err=True)
     if plot_file and len(files) != 1:
@@ -238,6 +288,13 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             fail("--assignment, --credit and --feedback go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
+        if junit_file is not None or html_file is not None:
+            from .solving.paths import problem_files
+
+            _outputs_apart(problem_files(paths)[0], junit=junit_file, html=html_file)
+            if junit_file and html_file and os.path.abspath(junit_file) == \
+                    os.path.abspath(html_file):
+                fail("--junit and --html name the same file")
         from .render import check_report
 
         from .api import check_files
@@ -271,6 +328,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("--out-format goes with --out FILE")
     from .checking import grades
     from .render import grades_report
+
+    if out is not None:
+        from .solving.paths import problem_files
+
+        _outputs_apart(problem_files(paths)[0] + [sheet], out=out)
 
     try:
         policy = grades.parse_credit(credit) if credit is not None else None
@@ -307,6 +369,10 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
             click.echo(f"  {name:<19} {registry.get(name).summary}")
         return
     try:
+        if output is not None:
+            from .core.files import refuse_input_as_output
+
+            refuse_input_as_output(output, (), option="--output", yaml_output=True)
         text = template(kind)
         if output:
             from .core.files import write_atomic
@@ -398,6 +464,7 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
     equations and compare with the analytic answer; --animate draws the motion."""
     from .commands.simulate import simulate_file, terminal_progress
 
+    _outputs_apart([file], csv=csv_file, plot=plot_file, animate=animate_file)
     try:
         out = ""
         if animate_file:
