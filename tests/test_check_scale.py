@@ -1,0 +1,203 @@
+"""`gyro check` on a large bank: streamed reports, --jobs, --timeout, --shard and --merge.
+
+Independent references: the in-process run of one job is the reference for any
+number of workers (the outputs must be the same bytes); the whole run is the
+reference for its shards (each file in exactly one shard, the merged reports the
+same bytes as the whole); the JSON stream is compared with ``json.dumps`` of the
+whole document; a crash and a hang are injected into one file of a batch.
+"""
+
+from __future__ import annotations
+
+import faulthandler
+import json
+import os
+import shutil
+import signal
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from conftest import PROBLEMS
+from gyro_cli.checking import check
+from gyro_cli.checking.results import CheckRun
+from gyro_cli.render import check_report, junit
+
+from test_check import GYRO_PRECESSION, gyro_file, put
+
+
+@pytest.fixture(scope="module")
+def bank(tmp_path_factory) -> Path:
+    """Every bundled problem twice, in two folders, plus a failing answer, a bad file
+    and a problem without expected answers: every kind of entry a report has."""
+    root = tmp_path_factory.mktemp("bank")
+    for copy in ("a", "b"):
+        shutil.copytree(PROBLEMS, root / copy)
+    put(root, "a/wrong.yaml", gyro_file(f"precession: {GYRO_PRECESSION * 10:.6g} rad/s\n"))
+    put(root, "b/bad.yaml", gyro_file("precession: 3 m\n"))
+    put(root, "b/unkeyed.yaml", gyro_file())
+    return root
+
+
+def _outputs(run, bank: Path, tmp: Path, *options: str) -> tuple:
+    """(exit code, table, stderr, JSON, JUnit bytes) of one configuration."""
+    name = "-".join(o.replace("/", "of") for o in options) or "plain"
+    table = run("check", bank, "--junit", tmp / f"{name}.xml", *options)
+    document = run("check", bank, "--format", "json", *options)
+    assert document.exit_code == table.exit_code
+    return (table.exit_code, table.stdout, table.stderr, document.stdout,
+            (tmp / f"{name}.xml").read_bytes())
+
+
+def test_jobs_1_and_jobs_4_write_the_same_table_json_and_junit(run, bank, tmp_path):
+    one = _outputs(run, bank, tmp_path, "--jobs", "1")
+    four = _outputs(run, bank, tmp_path, "--jobs", "4")
+    assert one[0] == 2  # the bad file
+    assert one == four
+    files = [p["file"] for p in json.loads(one[3])["problems"]]
+    assert files == sorted(files) and len(files) == 2 * len(list(PROBLEMS.glob("*.yaml"))) + 3
+    assert one[2].splitlines() == [line for line in one[2].splitlines() if "bad.yaml" in line]
+
+
+def test_shards_cover_the_whole_once_and_merge_back_to_it(run, bank, tmp_path):
+    whole = _outputs(run, bank, tmp_path, "--jobs", "2")
+    reports, seen = [], []
+    for k in (1, 2, 3):
+        shard = run("check", bank, "--format", "json", "--shard", f"{k}/3")
+        assert shard.exit_code in (0, 1, 2)
+        document = json.loads(shard.stdout)
+        assert document["summary"]["shard"] == f"{k}/3"
+        seen += [p["file"] for p in document["problems"]]
+        reports.append(tmp_path / f"shard{k}.json")
+        reports[-1].write_text(shard.stdout)
+    whole_files = [p["file"] for p in json.loads(whole[3])["problems"]]
+    assert sorted(seen) == whole_files  # each file in exactly one shard
+    assert all(len(json.loads(r.read_text())["problems"]) > 10 for r in reports)  # spread
+    merged_table = run("check", "--merge", *reports, "--junit", tmp_path / "merged.xml")
+    merged_json = run("check", "--merge", *reports, "--format", "json")
+    assert merged_table.exit_code == merged_json.exit_code == whole[0]
+    assert merged_table.stdout == whole[1]
+    assert merged_json.stdout == whole[3]
+    assert (tmp_path / "merged.xml").read_bytes() == whole[4]
+    # the shard of a path is a property of the path alone
+    assert check.shard_of("sets/a/11_3.yaml", 3) == check.shard_of("./sets/a/11_3.yaml", 3)
+
+
+def test_merge_refuses_an_incomplete_set_of_shards_and_other_files(run, bank, tmp_path):
+    shard = run("check", bank, "--format", "json", "--shard", "2/3")
+    report = tmp_path / "shard2.json"
+    report.write_text(shard.stdout)
+    missing = run("check", "--merge", report)
+    assert missing.exit_code == 2
+    assert missing.stderr.splitlines() == [
+        "gyro: the reports are shards 2/3; expected each shard K/N of one N exactly once "
+        "(1/3, 2/3, 3/3)"]
+    not_json = run("check", "--merge", PROBLEMS / "11_3.yaml")
+    assert not_json.exit_code == 2 and len(not_json.stderr.splitlines()) == 1
+    assert "is not a JSON report of `gyro check --format json`" in not_json.stderr
+    assert "Traceback" not in not_json.output
+
+
+@pytest.mark.parametrize("shard", ["0/3", "4/3", "x", "1/0", "2"])
+def test_a_malformed_shard_is_one_line_and_exit_2(run, shard):
+    result = run("check", PROBLEMS, "--shard", shard)
+    assert result.exit_code == 2
+    assert result.stderr.splitlines() == [
+        f"gyro: --shard {shard!r}: expected K/N with 1 <= K <= N, e.g. 2/4"]
+    assert result.stdout == ""
+
+
+def test_the_json_stream_is_the_document_json_dumps_writes(bank):
+    files, missing = check.collect([str(bank), str(bank / "nothing-here" / "*.yaml")])
+    assert missing  # a pattern that matches nothing is an entry too
+    run_ = CheckRun(missing + [check.check_file(f) for f in files])
+    document = check_report.as_dict(run_)
+    expected = json.dumps(check_report._finite({"problems": document["problems"],
+                                                "summary": document["summary"]}), indent=1)
+    assert check_report.as_json(run_) == expected
+    empty = CheckRun([])
+    assert json.loads(check_report.as_json(empty))["problems"] == []
+
+
+def test_results_are_handed_on_before_the_last_file_is_checked(monkeypatch, bank):
+    """Streaming: the first result is out while later files are still to be checked."""
+    files = check.collect([str(bank / "a")])[0][:6]
+    started: list[str] = []
+    real = check.check_file
+
+    def logged(path, strict=False):
+        started.append(path)
+        return real(path, strict)
+
+    monkeypatch.setattr(check, "check_file", logged)
+    stream = check.checks(files, jobs=1)
+    first = next(stream)
+    assert first.file == files[0] and started == files[:1]
+    assert [p.file for p in stream] == files[1:]
+
+
+def _steady_bank(tmp_path: Path, count: int) -> list[str]:
+    """``count`` copies of problem 11/3 (a steady precession: no scipy, milliseconds)."""
+    for i in range(count):
+        shutil.copy(PROBLEMS / "11_3.yaml", tmp_path / f"p{i:02d}.yaml")
+    return check.collect([str(tmp_path)])[0]
+
+
+def test_a_file_that_kills_its_worker_costs_only_that_file(monkeypatch, tmp_path, run):
+    files = _steady_bank(tmp_path, 7)
+    real = check.check_file
+
+    def crashing(path, strict=False):
+        if path.endswith("p03.yaml"):
+            faulthandler.disable()  # pytest's dump of the stack: not needed here
+            os.kill(os.getpid(), signal.SIGSEGV)  # what a crash in compiled code does
+        return real(path, strict)
+
+    monkeypatch.setattr(check, "check_file", crashing)
+    result = run("check", tmp_path, "--jobs", "3", "--format", "json")
+    assert result.exit_code == 3
+    problems = json.loads(result.stdout)["problems"]
+    assert [p["file"] for p in problems] == files
+    assert [p["status"] for p in problems] == ["pass"] * 3 + ["error"] + ["pass"] * 3
+    assert problems[3]["internal"] is True
+    line = (f"gyro: {files[3]}: internal error: the worker process checking it died "
+            "(killed by signal 11) (please report)")
+    assert result.stderr.splitlines() == [line]
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_file_that_hangs_is_stopped_at_the_time_limit(monkeypatch, tmp_path, run, jobs):
+    files = _steady_bank(tmp_path, 4)
+    real = check.check_file
+
+    def hanging(path, strict=False):
+        if path.endswith("p01.yaml"):
+            time.sleep(120)
+        return real(path, strict)
+
+    monkeypatch.setattr(check, "check_file", hanging)
+    start = time.monotonic()
+    result = run("check", tmp_path, "--jobs", jobs, "--timeout", "4", "--junit",
+                 tmp_path / "out.xml")
+    assert time.monotonic() - start < 60
+    assert result.exit_code == 3
+    assert result.stderr.splitlines() == [
+        f"gyro: {files[1]}: internal error: took longer than the time limit of 4 s per file "
+        "(--timeout); stopped (please report)"]
+    assert result.stdout.count("  PASS  ") == 3 * 3  # the other files: two roots, min_spin
+    root = ET.parse(tmp_path / "out.xml").getroot()
+    assert [e.get("type") for e in root.iter("error")] == ["InternalError"]
+
+
+def test_junit_spool_is_the_document_of_the_whole_run(bank):
+    """The spooled JUnit parses, and its totals are the sums over its suites."""
+    files = check.collect([str(bank / "b")])[0]
+    text = junit.xml(CheckRun([check.check_file(f) for f in files]))
+    root = ET.fromstring(text.encode("utf-8"))
+    suites = root.findall("testsuite")
+    assert len(suites) == len(files)
+    for key in ("tests", "failures", "errors", "skipped"):
+        assert int(root.get(key)) == sum(int(s.get(key)) for s in suites)
+    assert root.get("errors") == "1" and root.get("skipped") == "1"
