@@ -22,6 +22,7 @@ import pytest
 
 from conftest import PROBLEMS
 from gyro_cli.checking import check
+from gyro_cli.core.errors import InputError
 from gyro_cli.checking.results import CheckRun
 from gyro_cli.render import check_report, junit
 
@@ -201,3 +202,54 @@ def test_junit_spool_is_the_document_of_the_whole_run(bank):
     for key in ("tests", "failures", "errors", "skipped"):
         assert int(root.get(key)) == sum(int(s.get(key)) for s in suites)
     assert root.get("errors") == "1" and root.get("skipped") == "1"
+
+
+# ---- less per file: the loader composes first when no anchor can expand ------
+
+def _both_ways(monkeypatch, text: str):
+    """(outcome with the event prescan, outcome composing first): data or the message."""
+    from gyro_cli.core import safeyaml
+    import yaml
+
+    outcomes = []
+    for compose_first in (False, True):
+        monkeypatch.setattr(safeyaml, "_COMPOSE_FIRST", compose_first)
+        try:
+            data, node = safeyaml.load(text)
+            outcomes.append(("data", data, node.start_mark.line if node is not None else None))
+        except (InputError, yaml.YAMLError) as err:
+            outcomes.append(("error", type(err).__name__, str(err)))
+    return outcomes
+
+
+HOSTILE = {
+    "deep flow": "a: " + "[" * 65 + "]" * 65 + "\n",
+    "deep flow past libyaml's limit": "a: " + "[" * 5000 + "]" * 5000 + "\n",
+    "deep block": "".join("  " * i + f"k{i}:\n" for i in range(70)) + "  " * 70 + "x: 1\n",
+    "at the limit": "a: " + "[" * 63 + "]" * 63 + "\n",
+    "too many values": "a: [" + ", ".join(["1"] * 100_001) + "]\n",
+    "just enough values": "a: [" + ", ".join(["1"] * 99_997) + "]\n",
+    "deep and long": "b: [" + ", ".join(["1"] * 100_500) + "]\na: " + "[" * 70 + "]" * 70,
+    "undefined alias": "a: *x\n",
+    "malformed": "a: [1, 2\nb: c\n",
+    "empty": "",
+    "a scalar": "just words\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(HOSTILE))
+def test_composing_first_refuses_what_the_event_walk_refuses(monkeypatch, name):
+    with_prescan, composed = _both_ways(monkeypatch, HOSTILE[name])
+    assert with_prescan == composed
+    refused = {"deep flow", "deep flow past libyaml's limit", "deep block", "too many values",
+               "deep and long", "undefined alias", "malformed"}
+    assert (composed[0] == "error") == (name in refused), composed
+
+
+def test_composing_first_reads_every_bundled_problem_alike(monkeypatch):
+    from gyro_cli.core import safeyaml
+
+    assert safeyaml._nests_itself()  # the installed libyaml bounds nesting (0.2.6+)
+    for path in sorted(PROBLEMS.glob("*.yaml")):
+        with_prescan, composed = _both_ways(monkeypatch, path.read_text())
+        assert with_prescan == composed and with_prescan[0] == "data", path
