@@ -110,16 +110,20 @@ def test_a_malformed_shard_is_one_line_and_exit_2(run, shard):
     assert result.stdout == ""
 
 
-def test_the_json_stream_is_the_document_json_dumps_writes(bank):
+def test_the_json_stream_is_one_document_with_a_line_per_problem(bank):
     files, missing = check.collect([str(bank), str(bank / "nothing-here" / "*.yaml")])
     assert missing  # a pattern that matches nothing is an entry too
     run_ = CheckRun(missing + [check.check_file(f) for f in files])
+    text = check_report.as_json(run_)
     document = check_report.as_dict(run_)
-    expected = json.dumps(check_report._finite({"problems": document["problems"],
-                                                "summary": document["summary"]}), indent=1)
-    assert check_report.as_json(run_) == expected
-    empty = CheckRun([])
-    assert json.loads(check_report.as_json(empty))["problems"] == []
+    assert json.loads(text) == json.loads(json.dumps(check_report._finite(document)))
+    lines = text.splitlines()
+    assert len(lines) == 1 + len(run_.problems) + 2  # head, problems, "]," and the summary
+    assert [json.loads(line.rstrip(","))["file"] for line in lines[1:-2]] \
+        == [p.file for p in run_.problems]
+    assert json.loads(lines[-1].removeprefix('"summary": ')[:-1]) == document["summary"]
+    empty = json.loads(check_report.as_json(CheckRun([])))
+    assert empty["problems"] == [] and empty["summary"]["exit_code"] == 1
 
 
 def test_results_are_handed_on_before_the_last_file_is_checked(monkeypatch, bank):

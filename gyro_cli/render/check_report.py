@@ -123,32 +123,41 @@ def as_json(run_: CheckRun) -> str:
         + stream.tail(run_.tally())
 
 
+def _dumps(value: Any) -> str:
+    """One line of JSON (the C encoder); a NaN or infinity (a solver overflow) as null."""
+    import json
+
+    try:
+        return json.dumps(value, allow_nan=False)
+    except ValueError:
+        return json.dumps(_finite(value), allow_nan=False)
+
+
 class JsonStream:
-    """The JSON report written as the files finish: ``{"problems": [`` first, one problem
-    at a time, then ``], "summary": {...}}`` once the counts are known. The text is what
-    ``json.dumps`` would give the whole document (problems before the summary, indent 1),
-    so a reader sees one ordinary JSON document."""
+    """The JSON report written as the files finish: ``{"problems": [`` first, then one
+    problem per line as each is known, then the summary once the counts are known::
+
+        {"problems": [
+        {"file": "problems/11_1.yaml", ...},
+        {"file": "problems/11_2.yaml", ...}
+        ],
+        "summary": {"files": 2, ...}}
+
+    One ordinary JSON document (``json.load`` reads it), and a line per problem for
+    ``grep`` and line-by-line readers."""
 
     def __init__(self) -> None:
         self._count = 0
 
     @staticmethod
     def head() -> str:
-        return '{\n "problems": ['
+        return '{"problems": ['
 
     def problem(self, p: ProblemCheck) -> str:
-        import json
-
-        text = json.dumps(_finite(problem_dict(p)), indent=1, allow_nan=False)
-        # Nested two levels deep; a newline inside a JSON string is always escaped.
-        text = text.replace("\n", "\n  ")
         self._count += 1
-        return ("," if self._count > 1 else "") + "\n  " + text
+        return ("," if self._count > 1 else "") + "\n" + _dumps(problem_dict(p))
 
     def tail(self, tally: Tally, shard: tuple[int, int] | None = None) -> str:
         """The end: the summary (with ``"shard": "K/N"`` for a shard's report)."""
-        import json
-
-        summary = json.dumps(_finite(_summary(tally, shard)), indent=1, allow_nan=False)
-        return ("\n ]" if self._count else "]") + ',\n "summary": ' \
-            + summary.replace("\n", "\n ") + "\n}"
+        return ("\n" if self._count else "") + '],\n"summary": ' \
+            + _dumps(_summary(tally, shard)) + "}"
