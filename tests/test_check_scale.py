@@ -257,3 +257,20 @@ def test_composing_first_reads_every_bundled_problem_alike(monkeypatch):
     for path in sorted(PROBLEMS.glob("*.yaml")):
         with_prescan, composed = _both_ways(monkeypatch, path.read_text())
         assert with_prescan == composed and with_prescan[0] == "data", path
+
+
+def test_a_warm_check_of_every_bundled_problem_imports_no_pint(tmp_path):
+    """A unit of three names (`kg m^2/s`, in find and expected) was asked of pint name by
+    name on every run, so each process (each worker) paid pint's import for it."""
+    import subprocess
+    import sys
+
+    probe = ("import sys\nfrom gyro_cli.cli import main\ntry:\n    main()\nexcept SystemExit:\n"
+             "    pass\nprint('pint' in sys.modules, file=sys.stderr)")
+    env = dict(os.environ, GYRO_CACHE_DIR=str(tmp_path))
+    runs = [subprocess.run([sys.executable, "-c", probe, "check", "--jobs", "1", str(PROBLEMS)],
+                           env=env, capture_output=True, text=True, timeout=300)
+            for _ in range(2)]  # the first fills the unit table, the second reads it
+    assert [r.returncode for r in runs] == [0, 0], runs[0].stderr
+    assert runs[0].stdout == runs[1].stdout
+    assert runs[1].stderr.splitlines()[-1] == "False"
