@@ -251,6 +251,7 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
     from .checking.results import Tally
     from .render import check_report, junit
 
+    checked = None
     try:
         if merge:
             results, shards = checking.merged(paths, strict), None
@@ -268,7 +269,8 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                 report = check_files([m.file for m in missing] + files, strict=strict)
                 results = iter(report.run.problems)
             else:
-                results = chain(missing, checking.checks(files, strict, jobs, timeout))
+                checked = checking.checks(files, strict, jobs, timeout)
+                results = chain(missing, checked)
         if junit_file:
             from .core.files import refuse_special
 
@@ -279,14 +281,18 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
     spool = junit.Spool() if junit_file else None
     stream = check_report.JsonStream() if fmt == "json" else None
     click.echo(stream.head() if stream else check_report.table_head(), nl=False)
-    for problem in results:
-        if problem.error:
-            click.echo(f"gyro: {problem.error}", err=True)
-        tally.add(problem)
-        if spool:
-            spool.add(problem)
-        click.echo(stream.problem(problem) if stream else check_report.table_rows(problem),
-                   nl=False)
+    try:
+        for problem in results:
+            if problem.error:
+                click.echo(f"gyro: {problem.error}", err=True)
+            tally.add(problem)
+            if spool:
+                spool.add(problem)
+            click.echo(stream.problem(problem) if stream else check_report.table_rows(problem),
+                       nl=False)
+    finally:
+        if checked is not None:
+            checked.close()  # a reader that left, or Ctrl-C: the workers end now
     click.echo(stream.tail(tally, shards) if stream else check_report.summary_line(tally))
     if spool:
         from .core.files import write_atomic
