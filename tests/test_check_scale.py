@@ -274,3 +274,56 @@ def test_a_warm_check_of_every_bundled_problem_imports_no_pint(tmp_path):
     assert [r.returncode for r in runs] == [0, 0], runs[0].stderr
     assert runs[0].stdout == runs[1].stdout
     assert runs[1].stderr.splitlines()[-1] == "False"
+
+
+def _scan_as_it_was(m, g, r, J, I, speed, path_radius):
+    """free_from_speed_and_path before it was made faster: free_residual called at every
+    point of the grid (the reference for 'the same answers, bit for bit')."""
+    import math
+
+    from gyro_cli.kinds.rolling_disk import free_residual, free_state
+
+    top = math.pi / 2 if path_radius >= r else math.asin(path_radius / r)
+
+    def f(tilt):
+        return free_residual(m, g, r, J, I, tilt, path_radius - r * math.sin(tilt), speed)
+
+    n = 4000
+    fine = [top / n * 10 ** (-k / 8) for k in range(96, 0, -1)]
+    grid = fine + [top * i / n for i in range(1, n)]
+    roots = []
+    values = [f(t) for t in grid]
+    for (t0, f0), (t1, f1) in zip(zip(grid, values), zip(grid[1:], values[1:])):
+        if f0 == 0:
+            roots.append(t0)
+        elif f0 * f1 < 0:
+            lo, hi, flo = t0, t1, f0
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                fm = f(mid)
+                if (fm < 0) == (flo < 0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+                if hi - lo < 1e-15:
+                    break
+            roots.append(0.5 * (lo + hi))
+    return [free_state(m, r, t, path_radius - r * math.sin(t), speed) for t in roots]
+
+
+def test_the_rolling_disks_faster_scan_finds_the_same_tilts_bit_for_bit():
+    import random
+
+    from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
+
+    rng = random.Random(26)
+    found = set()
+    for _ in range(60):
+        m, r = 10 ** rng.uniform(-2, 2), 10 ** rng.uniform(-2, 0.5)
+        J = m * r * r * rng.uniform(0.2, 1.0)
+        I = J * rng.uniform(0.3, 1.0)
+        speed, path = 10 ** rng.uniform(-2, 1.5), r * 10 ** rng.uniform(-1, 3)
+        states = free_from_speed_and_path(m, 9.81, r, J, I, speed, path)
+        assert states == _scan_as_it_was(m, 9.81, r, J, I, speed, path)
+        found.add(len(states))
+    assert found >= {0, 1, 2}  # no tilt, one, and two (a slow and a fast one)
