@@ -238,6 +238,10 @@ HOSTILE = {
     "malformed": "a: [1, 2\nb: c\n",
     "empty": "",
     "a scalar": "just words\n",
+    "an ampersand in prose": "source: Meijaard, Papadopoulos, Ruina & Schwab (2007)\nb: [a &]\n",
+    "an anchor without a name": "b: [&]\n",
+    "an anchor after prose": "source: Ruina & Schwab\nb: &x [1, 2]\nc: *x\n",
+    "a cycle": "x: &a [1, *a]\n",
 }
 
 
@@ -246,7 +250,8 @@ def test_composing_first_refuses_what_the_event_walk_refuses(monkeypatch, name):
     with_prescan, composed = _both_ways(monkeypatch, HOSTILE[name])
     assert with_prescan == composed
     refused = {"deep flow", "deep flow past libyaml's limit", "deep block", "too many values",
-               "deep and long", "undefined alias", "malformed"}
+               "deep and long", "undefined alias", "malformed", "a cycle",
+               "an anchor without a name"}
     assert (composed[0] == "error") == (name in refused), composed
 
 

@@ -20,6 +20,7 @@ Two guards sit in front of every problem file and answer sheet:
 from __future__ import annotations
 
 import os
+import re
 import stat
 from typing import Any
 
@@ -220,6 +221,9 @@ def _nests_itself() -> bool:
 
 
 _COMPOSE_FIRST: bool | None = None
+# An anchor is "&" and at least one character that is neither a space nor a flow
+# indicator (YAML 1.2, ns-anchor-name): "Ruina & Schwab" holds none.
+_ANCHOR = re.compile(r"&[^\s,\[\]{}]")
 
 
 def _check_tree(root: Any) -> None:
@@ -255,7 +259,7 @@ def _check_tree(root: Any) -> None:
 def load(text: str) -> tuple[Any, Any]:
     """(data, root node) of one YAML document, within the limits.
 
-    A document without anchors (no ``&`` anywhere: no alias can expand or loop) is
+    A document without anchors (no ``&name`` anywhere: no alias can expand or loop) is
     composed first, by a libyaml that bounds nesting itself, and its nodes counted
     (half the work of walking the parser's events, for the same refusals); any other
     goes through ``prescan``. Raises yaml.YAMLError for malformed YAML and InputError
@@ -264,7 +268,7 @@ def load(text: str) -> tuple[Any, Any]:
     global _COMPOSE_FIRST
     if _COMPOSE_FIRST is None:
         _COMPOSE_FIRST = _nests_itself()
-    compose_first = _COMPOSE_FIRST and "&" not in text
+    compose_first = _COMPOSE_FIRST and not _ANCHOR.search(text)
     if not compose_first:
         prescan(text)
     import yaml
