@@ -332,3 +332,33 @@ def test_the_rolling_disks_faster_scan_finds_the_same_tilts_bit_for_bit():
         assert states == _scan_as_it_was(m, 9.81, r, J, I, speed, path)
         found.add(len(states))
     assert found >= {0, 1, 2}  # no tilt, one, and two (a slow and a fast one)
+
+
+def test_the_spooled_junit_is_what_elementtree_writes_for_awkward_text():
+    """The spool writes each suite itself; ElementTree's own serializer is the reference."""
+    from gyro_cli.checking.results import AnswerCheck, ProblemCheck
+
+    awkward = 'a&b <c> "d" \'e\' \r\n\tf ü 中 ]]> \x01'
+    problems = [
+        ProblemCheck(f"dir/{awkward}.yaml", awkward, awkward, "steady_precession", status="fail",
+                     answers=[AnswerCheck("precession", 1, awkward, awkward, False,
+                                          message=f"expected {awkward}; off by", slip=awkward),
+                              AnswerCheck("moment", None, "1 N m", "1 N m", True)]),
+        ProblemCheck("bad.yaml", status="error", error=awkward, internal=True),
+        ProblemCheck("none.yaml", "x", status="no expected answers"),
+    ]
+    spool = junit.Spool()
+    for problem in problems:
+        spool.add(problem)
+    text = b"".join(spool.chunks()).decode("utf-8")
+    root = ET.Element("testsuites", name="gyro check")
+    for key, value in (("tests", "4"), ("failures", "1"), ("errors", "1"), ("skipped", "1"),
+                       ("time", "0")):
+        root.set(key, value)
+    for problem in problems:
+        root.append(junit.suite(problem))
+    ET.indent(root)
+    assert text == ('<?xml version="1.0" encoding="UTF-8"?>\n'
+                    + ET.tostring(root, encoding="unicode") + "\n")
+    assert ET.fromstring(text.encode("utf-8")).find(".//failure").get("message").startswith(
+        "expected a&b <c>")
