@@ -2,9 +2,12 @@
 
 The pure parts live beside it: tolerances (``tolerance.py``), expected values
 (``expected.py``), root matching and slip diagnosis (``matching.py``), the
-results as data (``results.py``). The runner loads and solves every file in
-this one process (one unit registry) and collects a CheckRun; render/ prints
-it (``check_report.py``: table and JSON; ``junit.py``).
+results as data (``results.py``). ``check_file`` loads, solves and compares one
+file; ``checks`` hands on each file's ProblemCheck in order as soon as it is
+known, from this process or from forked workers (``pool.py``), so the command
+streams its reports (render/: ``check_report.py`` table and JSON, ``junit.py``)
+and keeps only a Tally; ``shard_of`` and ``merged`` split a bank over CI jobs
+and join their JSON reports. ``run`` keeps every result (the Python API).
 
 Rules (see docs/check.md):
 - dimensions are checked before magnitudes: an expected value in the wrong
