@@ -19,13 +19,16 @@ import os
 import stat
 import tempfile
 from pathlib import Path
+from typing import Iterable
 
 from .errors import InputError
 
 
-def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False) -> Path:
+def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | bytes],
+                 force: bool = False) -> Path:
     """Write ``text`` to ``path`` atomically; InputError if it exists and not ``force``.
 
+    ``text`` may also be an iterable of pieces (a report too large to hold at once).
     The parent directory must exist. Returns the path written.
     """
     target = Path(path)
@@ -35,14 +38,15 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     parent = target.parent if str(target.parent) else Path(".")
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
-    data = _utf8(text) if isinstance(text, str) else text
+    pieces = [text] if isinstance(text, (str, bytes)) else text
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=parent)
     except OSError as err:
         raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
     try:
         with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
+            for piece in pieces:
+                handle.write(_utf8(piece) if isinstance(piece, str) else piece)
             handle.flush()
             os.fsync(handle.fileno())
         if not force:

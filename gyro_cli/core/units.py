@@ -279,8 +279,11 @@ def _names(unit: str) -> list[str]:
     return words
 
 
-def _split(text: Any, key: str) -> tuple[float, str]:
-    """Split a quantity into its number and its (checked) unit expression."""
+def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[float, str]:
+    """Split a quantity into its number and its (checked) unit expression.
+
+    ``known``: (dimension, weight) of a parse; a unit the disk table holds for them
+    passed these checks in an earlier run, so its names need no pint now."""
     if isinstance(text, bool) or text is None:
         raise InputError(f"expected a quantity, got {text!r}", key=key)
     if isinstance(text, (int, float)):
@@ -296,7 +299,7 @@ def _split(text: Any, key: str) -> tuple[float, str]:
         raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
     number, unit = match.group(1), match.group(2).strip()
     unit = WHOLE_UNITS.get(unit, unit)
-    if unit in _VALID:
+    if unit in _VALID or (known and unit_cache.get("parse", unit, known[0], int(known[1]))):
         return float(number), unit
     words = _names(unit)
     if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
@@ -507,7 +510,7 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     reading would have the wrong dimension). A unit met before, in this process
     or (through unit_cache) an earlier one, is not asked of pint again.
     """
-    number, unit = _split(text, key)
+    number, unit = _split(text, key, (dimension, weight))
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
     checked = _CHECKED.get((unit, dimension, weight))
