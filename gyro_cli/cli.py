@@ -1,4 +1,4 @@
-"""The command line: solve, check, simulate, new, schema, vary, kinds.
+"""The command line: solve, check, simulate, new, schema, vary, handout, kinds.
 
 Every command exits 0 on success, 1 when an answer does not match (check), 2 on
 bad input or usage, with a one-line message and never a traceback, and 3 when
@@ -14,7 +14,7 @@ import sys
 import click
 
 from . import __version__
-from .core.errors import InputError, internal_message
+from .core.errors import InputError, internal_message, terminal_text
 
 FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
@@ -36,7 +36,43 @@ def internal(file: str | None, error: BaseException) -> None:
 
 
 class _Guarded(click.Group):
-    """The last line of defence: an exception no command caught is one line and exit 3."""
+    """The last line of defence: an exception no command caught is one line and exit 3.
+
+    Around every command (``--help`` and ``--version`` too): a failing standard
+    output never stops the files asked for being written (core/streams.py: the
+    reader leaving is 141, any other failure one line and exit 2), and SIGINT,
+    SIGTERM and SIGHUP end gyro with 128 + the signal's number after its
+    ``finally`` blocks have removed any temporary file.
+    """
+
+    def main(self, *args, **kwargs):  # type: ignore[no-untyped-def, override]
+        if kwargs.get("standalone_mode", True) is False:
+            return super().main(*args, **kwargs)
+        from .core.streams import Interrupted, guard_output, on_signals
+
+        guard = guard_output()
+        try:
+            undo = on_signals()
+            code: object = 0
+            try:
+                try:
+                    super().main(*args, **kwargs)
+                except SystemExit as done:
+                    code = done.code
+                except Interrupted as signalled:
+                    code = signalled.exit_code
+                    if signalled.exit_code == 130:
+                        click.echo("gyro: interrupted", err=True)
+            finally:
+                undo()
+            code = 0 if code is None else code if isinstance(code, int) else 1
+            message = guard.message()
+            if message:
+                click.echo(f"gyro: {message}", err=True)
+            code = guard.exit_code(code)
+        finally:
+            guard.restore()
+        sys.exit(code)
 
     def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
         try:
@@ -45,17 +81,30 @@ class _Guarded(click.Group):
                 click.exceptions.Abort):
             raise
         except BrokenPipeError:
-            # The reader left (gyro solve ... | head): end quietly, as a program killed
-            # by SIGPIPE would (128 + 13), not with an internal error.
-            try:
-                devnull = os.open(os.devnull, os.O_WRONLY)
-                os.dup2(devnull, sys.stdout.fileno())
-            except (OSError, ValueError):
-                pass
-            sys.exit(141)
+            _reader_left()
         except Exception as err:
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
+
+    def make_context(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        # `gyro --help` and `gyro --version` print while the arguments are parsed, before
+        # invoke: a reader that left ends them as it ends every command (click's own
+        # handling would exit 1, which means "an answer is wrong").
+        try:
+            return super().make_context(*args, **kwargs)
+        except BrokenPipeError:
+            _reader_left()
+
+
+def _reader_left() -> None:
+    """The reader left (gyro solve ... | head): end quietly, as a program killed by SIGPIPE
+    would (128 + 13), not with an internal error."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    sys.exit(141)
 
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
@@ -65,6 +114,19 @@ def main() -> None:
 
     Write a problem as a YAML file with units, then `gyro solve FILE`.
     """
+
+
+def _outputs_apart(inputs: list[str] | tuple[str, ...], **outputs: str | None) -> None:
+    """Exit 2 with one line if an output file (by option name) is empty or would replace
+    one of the command's inputs (core/files.py: refuse_input_as_output)."""
+    from .core.files import refuse_input_as_output
+
+    for option, name in outputs.items():
+        if name is not None:
+            try:
+                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"))
+            except InputError as err:
+                fail(err)
 
 
 def _rendered(result, fmt: str, level: int = 2) -> str:
@@ -99,8 +161,12 @@ def _rendered(result, fmt: str, level: int = 2) -> str:
               help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
                    "the file gives no unit for), as US textbooks do; si (the default, or the "
                    "file's `units` key).")
+@click.option("--animate", "embed", is_flag=True,
+              help="With --format html: embed an animation of the motion (as `gyro simulate "
+                   "--animate`) in the worked answer of each problem whose kind moves.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False, standalone: bool = False, system: str | None = None) -> None:
+          force: bool = False, standalone: bool = False, system: str | None = None,
+          embed: bool = False) -> None:
     """Solve problem FILES and print worked answers.
 
     FILES may also be directories (every *.yaml and *.yml in them, as for
@@ -111,18 +177,30 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     from .solving.paths import problem_files
 
     files, missing = problem_files(files)
+    _outputs_apart(files, plot=plot_file)
     for _, message in missing:
-        click.echo(f"gyro: {message}", err=True)
+        click.echo(f"gyro: {terminal_text(message)}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
         fail("--standalone goes with --format latex")
+    if embed and fmt != "html":
+        fail("--animate goes with --format html (an animation file alone: gyro simulate "
+             "FILE --animate OUT)")
     bad, crashed = len(missing), 0
-    document = []
+    document, scripts = [], []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
-            text = None if standalone else _rendered(result, fmt, 1 if len(files) == 1 else 2)
+            level = 1 if len(files) == 1 else 2
+            if embed:
+                from .render.animate import player_script
+
+                motion = result.animation_html()
+                text = result.html(level=level, animation=motion)
+                scripts += [player_script(result.animation_id)] if motion else []
+            else:
+                text = None if standalone else _rendered(result, fmt, level)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -152,8 +230,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     if document and fmt == "html":
         from .render import html
 
-        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document]),
-                   nl=False)
+        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document],
+                             scripts=scripts), nl=False)
     elif document:
         from .render import writeup
 
@@ -164,96 +242,215 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         sys.exit(2)
 
 
+def _cpus() -> int:
+    """The CPUs this process may run on (its affinity, e.g. a CI container's share)."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 @main.command()
-@click.argument("paths", nargs=-1, required=True)
+@click.argument("paths", nargs=-1)
 @click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
               show_default=True, help="table: one line per answer; json: one document.")
 @click.option("--junit", "junit_file", metavar="FILE",
               help="Also write JUnit XML to FILE (a testsuite per file, a testcase per answer).")
 @click.option("--strict", is_flag=True,
               help="Count problems without expected answers as failures (exit 1).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None, metavar="N",
+              help="Check the files in N worker processes [default: the CPUs available].")
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=60.0,
+              show_default=True, metavar="SECONDS",
+              help="Time limit per file: a file that takes longer is an internal error, the "
+                   "others go on.")
+@click.option("--shard", metavar="K/N",
+              help="Check only the K-th of N stable parts of the files (by a hash of each "
+                   "path), for one job of a CI matrix of N jobs.")
+@click.option("--merge", is_flag=True,
+              help="PATHS are JSON reports (--format json) of shards: print them as one "
+                   "report (and --junit), with the summary and exit code of the whole.")
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
+@click.option("--out-format", "out_format", default="grades", show_default=True,
+              type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
+              help="With --out: gyro's grades CSV, a Canvas gradebook import CSV, or "
+                   "Gradescope's / PrairieLearn's results.json (one per student: FILE for "
+                   "one student, else a directory of STUDENT.json).")
+@click.option("--credit", metavar="SLIP=SHARE,...",
+              help="With --answers: partial credit for a value off by a named slip, e.g. "
+                   "2pi=0.5,sign=0.5 (slips: 2pi, rpm, 60, g, deg, 10, sign).")
+@click.option("--feedback", "feedback_dir", metavar="DIR",
+              help="With --answers: write each student a short page (DIR/STUDENT.md): what "
+                   "was right, what was off and the likely slip.")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="With --answers: grade each student only on their own variants, as "
+                   "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
 @click.option("--html", "html_file", metavar="FILE",
               help="Also write the report as a self-contained HTML page to FILE: failing "
                    "answers first, each linking to its worked answer.")
 @click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
-          sheet: str | None, out: str | None, force: bool, html_file: str | None = None) -> None:
+          sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
+          assignment: str | None = None, out_format: str = "grades",
+          credit: str | None = None, feedback_dir: str | None = None,
+          jobs: int | None = None, timeout: float = 60.0, shard: str | None = None,
+          merge: bool = False) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
     or globs. Exit 0 when every answer matches, 1 when one does not (or
     nothing was compared), 2 when a file is bad (the others are still checked).
+    Each file's lines are printed as soon as it is checked.
     """
+    if not paths and not (sheet and assignment):
+        fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if out or (force and not html_file):
-            fail("--out goes with --answers SHEET, --force with --out or --html")
-        from .render import check_report
+        if assignment or credit is not None or feedback_dir:
+            fail("--assignment, --credit and --feedback go with --answers SHEET")
+        if out or (force and not html_file) or out_format != "grades":
+            fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
+        if merge and (shard or html_file or jobs):
+            fail("--merge joins JSON reports: it goes with --format, --junit and --strict only")
+        if junit_file is not None or html_file is not None:
+            from .solving.paths import problem_files
 
-        from .api import check_files
-
-        report = check_files(paths, strict=strict, worked=bool(html_file))
-        result = report.run
-        for problem in result.problems:
-            if problem.error:
-                click.echo(f"gyro: {problem.error}", err=True)
-        click.echo(check_report.as_json(result) if fmt == "json" else check_report.table(result),
-                   nl=fmt == "json")
-        if junit_file:
-            from .render import junit
-            from .core.files import write_atomic
-
-            try:
-                write_atomic(junit_file, junit.xml(result), force=True)
-            except InputError as err:
-                fail(err)
-        if html_file:
-            from .core.files import write_atomic
-
-            try:
-                write_atomic(html_file, report.html(page=True), force=force)
-            except InputError as err:
-                fail(err)
-        sys.exit(result.exit_code)
-    if junit_file or strict or html_file:
-        fail("--junit, --html and --strict go with checking the answer key, not with --answers")
+            _outputs_apart(problem_files(paths)[0], junit=junit_file, html=html_file)
+            if junit_file and html_file and os.path.abspath(junit_file) == \
+                    os.path.abspath(html_file):
+                fail("--junit and --html name the same file")
+        _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or _cpus(), timeout,
+                   shard, merge)
+    if junit_file or strict or html_file or jobs or shard or merge:
+        fail("--junit, --html, --strict, --jobs, --shard and --merge go with checking the "
+             "answer key, not with --answers")
+    if out_format != "grades" and not out:
+        fail("--out-format goes with --out FILE")
     from .checking import grades
     from .render import grades_report
 
-    try:
-        graded = grades.grade(sheet, paths)
-        text = grades_report.csv_text(graded)
-        if out:
-            from .core.files import write_atomic
+    if out is not None:
+        from .solving.paths import problem_files
 
-            write_atomic(out, text, force=force)
+        _outputs_apart(problem_files(paths)[0] + [sheet], out=out)
+
+    try:
+        policy = grades.parse_credit(credit) if credit is not None else None
+        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy)
+        if out:
+            grades_report.write_out(graded, out, out_format, force)
+        if feedback_dir:
+            grades_report.write_feedback(graded, feedback_dir, force)
     except InputError as err:
         fail(err)
     for line in graded.errors:
-        click.echo(f"gyro: {line}", err=True)
+        click.echo(f"gyro: {terminal_text(line)}", err=True)
     click.echo(grades_report.as_json(graded) if fmt == "json" else grades_report.table(graded),
                nl=fmt == "json")
     if graded.errors:
         sys.exit(INTERNAL)
 
 
+def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
+               html_file: str | None, force: bool, jobs: int, timeout: float,
+               shard: str | None, merge: bool) -> None:
+    """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
+    as it comes, in the files' order, then the summary; exits with the run's code."""
+    from itertools import chain
+
+    from .checking import check as checking
+    from .checking.results import Tally
+    from .render import check_report, junit
+
+    checked = None
+    try:
+        if merge:
+            results, shards = checking.merged(paths, strict), None
+        else:
+            files, missing = checking.collect(paths)
+            if shard:
+                k, n = shards = checking.parse_shard(shard)
+                files = [f for f in files if checking.shard_of(f, n) == k]
+                missing = [m for m in missing if checking.shard_of(m.file, n) == k]
+            else:
+                shards = None
+            if html_file:  # the page needs every worked answer: checked here, kept
+                from .api import check_files
+
+                report = check_files([m.file for m in missing] + files, strict=strict)
+                results = iter(report.run.problems)
+            else:
+                checked = checking.checks(files, strict, jobs, timeout)
+                results = chain(missing, checked)
+        if junit_file:
+            from .core.files import refuse_special
+
+            refuse_special(junit_file)  # before the run, not after it
+    except InputError as err:
+        fail(err)
+    tally = Tally(strict)
+    spool = junit.Spool() if junit_file else None
+    stream = check_report.JsonStream() if fmt == "json" else None
+    click.echo(stream.head() if stream else check_report.table_head(), nl=False)
+    try:
+        for problem in results:
+            if problem.error:
+                click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
+            tally.add(problem)
+            if spool:
+                spool.add(problem)
+            click.echo(stream.problem(problem) if stream else check_report.table_rows(problem),
+                       nl=False)
+    finally:
+        if checked is not None:
+            checked.close()  # a reader that left, or Ctrl-C: the workers end now
+    click.echo(stream.tail(tally, shards) if stream else check_report.summary_line(tally))
+    if spool:
+        from .core.files import write_atomic
+
+        try:
+            write_atomic(junit_file, spool.chunks(), force=True)
+        except InputError as err:
+            fail(err)
+    if html_file:
+        from .core.files import write_atomic
+
+        try:
+            write_atomic(html_file, report.html(page=True), force=force)
+        except InputError as err:
+            fail(err)
+    sys.exit(tally.exit_code)
+
+
 @main.command("new")
-@click.argument("kind")
+@click.argument("kind", required=False)
 @click.option("-o", "--output", metavar="FILE", help="Write the template to FILE (not stdout).")
 @click.option("--force", is_flag=True, help="Replace FILE if it exists.")
-def new(kind: str, output: str | None, force: bool) -> None:
-    """Print (or write) a commented problem template with every key of KIND."""
+def new(kind: str | None, output: str | None, force: bool) -> None:
+    """Print (or write) a commented problem template with every key of KIND.
+
+    Without KIND, list the kinds to choose from."""
     from .commands.authoring import template
 
+    if kind is None:
+        from . import kinds as registry
+
+        click.echo("gyro new KIND writes a template; KIND is one of:")
+        for name in registry.names():
+            click.echo(f"  {name:<19} {registry.get(name).summary}")
+        return
     try:
+        if output is not None:
+            from .core.files import refuse_input_as_output
+
+            refuse_input_as_output(output, (), option="--output", yaml_output=True)
         text = template(kind)
         if output:
             from .core.files import write_atomic
 
             write_atomic(output, text, force=force)
-            click.echo(f"wrote {output}", err=True)
+            click.echo(f"wrote {terminal_text(output)}", err=True)
         else:
             click.echo(text, nl=False)
     except InputError as err:
@@ -271,23 +468,41 @@ def schema() -> None:
 
 
 @main.command()
-@click.argument("file")
-@click.option("--count", "-n", type=int, required=True, help="How many variants.")
+@click.argument("files", nargs=-1, required=True, metavar="FILE...")
+@click.option("--count", "-n", type=int, default=None, help="How many variants (one FILE).")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="Instead of --count: one variant per student of ROSTER (a CSV with a "
+                   "student column) and problem FILE, and DIR/assignment.csv.")
 @click.option("--seed", "-s", type=int, default=0, show_default=True,
-              help="Random seed: the same seed gives the same files.")
+              help="Random seed: the same seed gives the same files (with --roster, the "
+                   "course seed: each student's numbers depend only on it and their id).")
 @click.option("-o", "--out-dir", "out_dir", metavar="DIR", required=True,
               help="Directory to write the variants into (created if needed).")
 @click.option("--force", is_flag=True, help="Replace variant files that exist.")
-def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
-    """Write COUNT variants of FILE with values drawn from its `vary:` block.
+def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: int,
+         out_dir: str, force: bool) -> None:
+    """Write COUNT variants of FILE with values drawn from its `vary:` block, or with
+    --roster one variant per student of each FILE.
 
     Each variant has its computed `expected` answers; draws with no real
     solution are rejected and drawn again.
     """
     from .commands.authoring import write_variants
 
+    if (count is None) == (roster is None):
+        fail("give --count N (variants of one FILE) or --roster ROSTER.csv (one per student)")
     try:
-        written = write_variants(file, count, seed, out_dir, force)
+        if roster is not None:
+            from .commands.roster import write_roster_variants
+
+            written = write_roster_variants(list(files), roster, seed, out_dir, force)
+            click.echo(f"wrote {len(written) - 1} variant file(s) and the assignment:",
+                       err=True)
+            click.echo(written[-1])
+            return
+        if len(files) != 1:
+            fail("--count varies one FILE; give --roster for several")
+        written = write_variants(files[0], count, seed, out_dir, force)
     except InputError as err:
         fail(err)
     for path in written:
@@ -321,6 +536,7 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
     equations and compare with the analytic answer; --animate draws the motion."""
     from .commands.simulate import simulate_file, terminal_progress
 
+    _outputs_apart([file], csv=csv_file, plot=plot_file, animate=animate_file)
     try:
         out = ""
         if animate_file:
@@ -343,6 +559,40 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
         internal(file, err)
         sys.exit(INTERNAL)
     click.echo(out, nl=False)
+
+
+@main.command()
+@click.argument("files", nargs=-1, metavar="FILES|DIR")
+@click.option("-o", "--output", "out", metavar="OUT", default="handout.html", show_default=True,
+              help="OUT.html, OUT.tex or OUT.pdf (pdflatex); per student OUT-STUDENT.ext and "
+                   "OUT-key.csv.")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="One sheet per student, each with their own numbers (as gyro vary --roster "
+                   "with the same --seed).")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="One sheet per student from gyro vary --roster's assignment (FILES not "
+                   "needed).")
+@click.option("--seed", "-s", type=int, default=0, show_default=True,
+              help="With --roster: the course seed.")
+@click.option("--solutions", is_flag=True, help="Add the worked answers.")
+@click.option("--course", default="", help="The course's name, on the cover.")
+@click.option("--title", default="Homework", show_default=True, help="The sheet's title.")
+@click.option("--force", is_flag=True, help="Replace files that exist.")
+def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: str | None,
+            seed: int, solutions: bool, course: str, title: str, force: bool) -> None:
+    """Write the students' question sheets: a cover and each problem's statement with
+    the student's numbers; --solutions adds the worked answers."""
+    from .commands.handout import write_handouts
+
+    if not files and not assignment:
+        fail("give the problem FILES (or a DIR), or --assignment")
+    try:
+        written = write_handouts(list(files), out, roster, assignment, seed, solutions,
+                                 course, title, force)
+    except InputError as err:
+        fail(err)
+    for path in written:
+        click.echo(path)
 
 
 @main.command()

@@ -66,19 +66,27 @@ def template(kind_name: str) -> str:
            _line('title: "Describe the problem"', "optional"),
            _line(f"kind: {kind.name}", "required"),
            _line('source: ""', "optional: book, chapter, problem number"),
+           _line("statement: >-", "optional: the problem as students read it; {key} is "
+                 "the given value as written"),
+           "  " + _statement_example(kind, given_ex, find_ex),
            _line("notes:", "optional: lines printed with the worked answer"),
            "  - Spin is the rate relative to the precessing frame (psidot)."
-           if (kind.param("spin") and kind.param("spin").symbol == "psidot")
+           if kind.param("spin") and "precessing frame" in kind.param("spin").doc
            else "  - State here what the problem assumes.",
            "",
            _line("given:", "required: the data, each with its unit")]
     if not given_ex:
         out.append("  # (fill in: uncomment and edit the keys this problem gives)")
-    params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
+    body = [p for p in BODY_PARAMS if p.name in kind.extra.get(
+        "body_keys", [b.name for b in BODY_PARAMS]) and (p.name != "g" or kind.extra.get(
+            "gravity", True))] if kind.uses_body else []
+    params = list(kind.params) + body
     for i, p in enumerate(params):
         if kind.uses_body and i == len(kind.params):
-            out.append("  # the body: mass or weight; J or k_axial; I_pivot, k_pivot, I_cg, "
-                       "k_cg or shape; cg_distance")
+            out.append("  # the body: " + ("mass or weight; J or k_axial; I_pivot, k_pivot, "
+                                           "I_cg, k_cg or shape; cg_distance"
+                                           if "body_keys" not in kind.extra else
+                                           "the rotor's J, or k_axial with mass, or a shape"))
         what = p.dimension
         comment = f"{what}: {p.doc}" + (f" (default {p.default})" if p.default else "")
         if p.name in given_ex:
@@ -116,6 +124,22 @@ def template(kind_name: str) -> str:
     for key, value in vary_ex.items():
         out.append(f"  {key}: {value}" if example.get("vary") else f"#   {key}: {value}")
     return "\n".join(out) + "\n"
+
+
+def _statement_example(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> str:
+    """A statement for the template that names each given value by placeholder."""
+    import re
+
+    params = {p.name: p for p in list(kind.params) +
+              (list(BODY_PARAMS) if kind.uses_body else [])}
+    short = {k: re.sub(r"\s*\([^)]*\)", "", params[k].doc if k in params else k).split(";")[0]
+             for k in given}
+    data = [f"{short[k]} {{{k}}}" for k in given]
+    asked = ", ".join(re.sub(r"\s*\([^)]*\)", "", a.doc) for a in kind.answers
+                      if a.name in find) or kind.answers[0].doc
+    if not data:
+        return f"State the problem here; write {{key}} for a given value. Find {asked}."
+    return f"Given: {'; '.join(data)}. Find {asked}."
 
 
 def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
@@ -167,6 +191,10 @@ def schema() -> dict[str, Any]:
         "properties": {
             "id": {"type": ["string", "number"], "description": "how reports name the problem"},
             "title": {"type": "string"},
+            "statement": {"type": "string", "minLength": 1,
+                          "description": "the problem as students read it; {key} is replaced "
+                                         "by the given value as written ({{ and }} for "
+                                         "braces)"},
             "kind": {"enum": kind_names, "description": "the problem kind (`gyro kinds`)"},
             "source": {"type": "string"},
             "notes": {"oneOf": [{"type": "string"},
@@ -199,7 +227,17 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             words: list = list(p.choices)
             if set(words) == {"true", "false"}:
                 words += [True, False]  # YAML reads `false` as a boolean
-            given[p.name] = {"enum": words, "description": p.doc}
+            # the books' spellings (docs/real_problems.md), with _ or spaces
+            spelt = [w for w, _ in p.words] + [c for c in p.choices if "_" in c]
+            words += [w for w, _ in p.words] + [w.replace("_", " ") for w in spelt]
+            if any("clockwise" in str(w) for w in words):
+                # a sense of rotation, in any of the books' phrasings (anticlockwise,
+                # seen from the stern, ...): the loader reads it or says why not
+                given[p.name] = {"anyOf": [{"enum": words},
+                                           {"type": "string", "pattern": "[Cc][Ll][Oo][Cc][Kk]"}],
+                                 "description": p.doc}
+            else:
+                given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
             given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
         elif p.dimension == "particles":
@@ -311,11 +349,7 @@ def _expected_text(values: list, unit: str | None, tol_halfwidths: list[float]) 
 
 def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     """``count`` variants of the problem in ``path``: (file name, YAML text) each."""
-    import yaml
-
-    from ..checking.tolerance import tolerance_for
-    from ..solving.problem import _build, load
-    from ..solving.solve import solve
+    from ..solving.problem import load
 
     if not 1 <= count <= MAX_VARIANTS:
         raise InputError(f"--count must lie between 1 and {MAX_VARIANTS}, got {count}")
@@ -327,7 +361,6 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     base = copy.deepcopy(problem.data)
     base.pop("vary", None)
     keyed = list(problem.expected) or list(problem.find)
-    answer_names = [a.name for a in problem.kind.answers]
     rng = random.Random(seed)
     stem = os.path.splitext(os.path.basename(path))[0]
     width = max(2, len(str(count)))
@@ -339,63 +372,108 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
             raise InputError(f"only {len(out)} of {count} variants have a real solution after "
                              f"{draws} draws; narrow the ranges in `vary`", file=path, key="vary")
         draws += 1
-        data = copy.deepcopy(base)
-        for key, form, low, high, unit, _ in ranges:
-            value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
-            data["given"][key] = f"{number_text(value)} {unit}".strip()
         n = len(out) + 1
-        data["id"] = f"{problem.id}-v{n:0{width}d}"
-        if problem.title:
-            data["title"] = f"{problem.title} (variant {n})"
-        data["source"] = f"gyro vary {os.path.basename(path)} --seed {seed}: variant {n}" + \
-            (f" of {problem.source}" if problem.source else "")
-        find = dict(data["find"]) if isinstance(data["find"], dict) else \
-            {name: None for name in data["find"]}
-        for name in keyed:
-            find.setdefault(name, None)
-        data["find"] = find
-        data.pop("expected", None)
-        try:
-            candidate = _build(path, data, {})
-            result = solve(candidate)
-        except InputError:
+        data = draw_variant(problem, base, ranges, rng, keyed,
+                            variant_id=f"{problem.id}-v{n:0{width}d}",
+                            title=f"{problem.title} (variant {n})",
+                            source=f"gyro vary {os.path.basename(path)} --seed {seed}: "
+                                   f"variant {n}")
+        if data is None:
             continue  # no real solution (or an impossible body): draw again
-        expected = {}
-        for name in keyed:
-            answer = result.answers[name]
-            spec = problem.kind.answer(name)
-            tol = tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
-            widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
-                      if isinstance(v, float) else 0.0
-                      for si, v in zip(answer.si_values, answer.values)]
-            expected[name] = _expected_text(answer.values, answer.unit, widths)
-        data["expected"] = expected
-        order = ["id", "title", "kind", "source", "notes", "given", "find", "expected",
-                 "tolerance"]
-        data = {k: data[k] for k in order if k in data}
         text = (f"# Generated by `gyro vary {os.path.basename(path)} --count {count} "
-                f"--seed {seed}`: variant {n} of {count}.\n"
-                + yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100))
+                f"--seed {seed}`: variant {n} of {count}.\n" + variant_yaml(data))
         out.append((f"{stem}-v{n:0{width}d}.yaml", text))
     return out
 
 
 def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) -> list[str]:
-    """Write the variants into ``out_dir`` (created if needed); never overwrite without force."""
-    from ..core.files import write_atomic
+    """Write the variants into ``out_dir`` (created if needed); never overwrite without force.
 
+    The set is written whole or not at all (core/files.py: write_set): a full
+    disk or a signal leaves no variant and no temporary file, so a rerun starts
+    clean. A variant may not replace the file it is drawn from.
+    """
+    from ..core.files import refuse_input_as_output, write_set
+
+    if not out_dir.strip():
+        raise InputError("-o/--out-dir needs a directory name, got an empty one")
     made = variants(path, count, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise InputError("exists and is not a directory", file=out_dir)
-    os.makedirs(out_dir, exist_ok=True)
+    targets = [(os.path.join(out_dir, name), text) for name, text in made]
+    for target, _ in targets:
+        refuse_input_as_output(target, [path], option="a variant", yaml_output=True)
     if not force:
-        clash = [name for name, _ in made if os.path.exists(os.path.join(out_dir, name))]
+        clash = [name for name, _ in targets if os.path.lexists(name)]
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "variant file(s) already there)", file=os.path.join(out_dir, clash[0]))
-    written = []
-    for name, text in made:
-        target = os.path.join(out_dir, name)
-        write_atomic(target, text, force=force)
-        written.append(target)
-    return written
+                             "variant file(s) already there)", file=clash[0])
+    created = not os.path.isdir(out_dir)
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except (OSError, ValueError) as err:
+        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
+                         file=out_dir) from None
+    try:
+        write_set(targets, force=force)
+    except BaseException:
+        if created:
+            try:
+                os.rmdir(out_dir)  # only if empty: what this call made, nothing else
+            except OSError:
+                pass
+        raise
+    return [target for target, _ in targets]
+
+
+def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.Random,
+                 keyed: list[str], variant_id: str, title: str,
+                 source: str, solved: list[Any] | None = None) -> dict[str, Any] | None:
+    """One draw of every `vary` key from ``rng``, solved: the variant's data with its
+    computed `expected` answers, or None when the draw has no real solution. The
+    solver's result is appended to ``solved`` when that is given."""
+    from ..checking.tolerance import tolerance_for
+    from ..solving.problem import _build
+    from ..solving.solve import solve
+
+    answer_names = [a.name for a in problem.kind.answers]
+    data = copy.deepcopy(base)
+    for key, form, low, high, unit, _ in ranges:
+        value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
+        data["given"][key] = f"{number_text(value)} {unit}".strip()
+    data["id"] = variant_id
+    if problem.title:
+        data["title"] = title
+    data["source"] = source + (f" of {problem.source}" if problem.source else "")
+    find = dict(data["find"]) if isinstance(data["find"], dict) else \
+        {name: None for name in data["find"]}
+    for name in keyed:
+        find.setdefault(name, None)
+    data["find"] = find
+    data.pop("expected", None)
+    try:
+        result = solve(_build(problem.file, data, {}))
+    except InputError:
+        return None
+    expected = {}
+    for name in keyed:
+        answer = result.answers[name]
+        spec = problem.kind.answer(name)
+        tol = tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
+        widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
+                  if isinstance(v, float) else 0.0
+                  for si, v in zip(answer.si_values, answer.values)]
+        expected[name] = _expected_text(answer.values, answer.unit, widths)
+    data["expected"] = expected
+    if solved is not None:
+        solved.append(result)
+    order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
+             "expected", "tolerance"]
+    return {k: data[k] for k in order if k in data}
+
+
+def variant_yaml(data: dict[str, Any]) -> str:
+    """A variant's data as YAML, keys in the problem format's order."""
+    import yaml
+
+    return yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100)

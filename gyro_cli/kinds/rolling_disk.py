@@ -97,11 +97,21 @@ def free_from_speed_and_tilt(m: float, g: float, r: float, J: float, I: float, t
 
 def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, speed: float,
                              path_radius: float) -> list[FreeDisk]:
-    """Every tilt in (0, 90 deg) with rho > 0 for a given speed and contact circle."""
+    """Every tilt in (0, 90 deg) with rho > 0 for a given speed and contact circle.
+
+    The residual of ``free_residual`` is scanned on a grid and each change of sign
+    bisected. It is written out here with its constant factors taken out (the same
+    operations in the same order, so the same floats as ``free_residual``): the scan is
+    most of the time a rolling-disk problem takes.
+    """
     top = math.pi / 2 if path_radius >= r else math.asin(path_radius / r)
+    mgr, v2, inertia = m * g * r, speed * speed, m * r + J / r
+    sin, cos = math.sin, math.cos
 
     def f(tilt: float) -> float:
-        return free_residual(m, g, r, J, I, tilt, path_radius - r * math.sin(tilt), speed)
+        s = sin(tilt)
+        rho = path_radius - r * s
+        return mgr * s * rho * rho - v2 * cos(tilt) * (rho * inertia + I * s)
 
     n = 4000
     # evenly in tilt, and geometrically below the first step (a nearly upright disk on a
@@ -109,12 +119,16 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
     fine = [top / n * 10 ** (-k / 8) for k in range(96, 0, -1)]
     grid = fine + [top * i / n for i in range(1, n)]
     roots = []
-    values = [f(t) for t in grid]
-    for (t0, f0), (t1, f1) in zip(zip(grid, values), zip(grid[1:], values[1:])):
+    sines = list(map(sin, grid))
+    rhos = [path_radius - r * s for s in sines]
+    values = [mgr * s * rho * rho - v2 * c * (rho * inertia + I * s)
+              for s, c, rho in zip(sines, map(cos, grid), rhos)]
+    for k in range(len(grid) - 1):
+        f0 = values[k]
         if f0 == 0:
-            roots.append(t0)
-        elif f0 * f1 < 0:
-            lo, hi, flo = t0, t1, f0
+            roots.append(grid[k])
+        elif f0 * values[k + 1] < 0:
+            lo, hi, flo = grid[k], grid[k + 1], f0
             for _ in range(200):
                 mid = 0.5 * (lo + hi)
                 fm = f(mid)
@@ -188,8 +202,21 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("normal_force", "N", [N], "force")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("moment", "M", [moment], "moment")
+    if "precession_period" in find:
+        _lap_time([Omega], work)
     work.check(f"moments about O along n: m g R - N R = {qty(m * g * R - N * R, 'N m')}; "
                f"dH_O/dt = {qty(dH, 'N m')}")
+
+
+def _lap_time(rates: list[float], work: Work) -> None:
+    """The time for one lap of the circle: the disk turns once about the vertical."""
+    if any(rate == 0 for rate in rates):
+        raise InputError("the precession is 0: the disk never completes a lap",
+                         key="find.precession_period")
+    work.section("Time for one lap of the circle")
+    periods = [work.step("T", "2 pi / |Omega|", f"2 pi / {qty(abs(rate), 'rad/s')}",
+                         2 * math.pi / abs(rate), "s") for rate in rates]
+    work.answer("precession_period", "T", periods, "time")
 
 
 def _free(given: Given, find: frozenset[str], work: Work) -> None:
@@ -266,6 +293,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("speed", "v", [s.speed for s in states], "speed")
     work.answer("precession", "Omega", [s.precession for s in states], "rate")
     work.answer("spin", "psidot", [s.spin for s in states], "rate")
+    if "precession_period" in find:
+        _lap_time([st.precession for st in states], work)
     if body.per_kg and "normal_force" in find:
         raise InputError("the normal force depends on the mass, which the rates do not need: "
                          "give mass or weight", key="given.mass")
@@ -340,6 +369,8 @@ KIND = Kind(
                    "about the axle, outward positive)"),
         AnswerSpec("moment", "moment", "M", "axle_pivot: net moment of gravity and the normal "
                    "force about the pin, positive lifting the disk"),
+        AnswerSpec("precession_period", "time", "T", "time for one lap of the circle, "
+                   "2 pi / |Omega|"),
         AnswerSpec("tilt", "angle", "beta", "free: tilt from the vertical"),
         AnswerSpec("path_radius", "length", "R", "free: radius of the contact point's circle"),
         AnswerSpec("speed", "speed", "v", "free: speed of the centre"),

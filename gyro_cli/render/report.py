@@ -6,6 +6,7 @@ import json
 from typing import Any
 
 from ..solving.solve import Result
+from ..core.errors import terminal_text
 from ..core.work import num
 
 WIDTH = 78
@@ -31,7 +32,7 @@ def text(result: Result) -> str:
     lines = [f"{head}{' ' * max(2, WIDTH - len(head) - len(tag))}{tag}"]
     if problem.source:
         lines.append(f"Source: {problem.source}")
-    lines += [f"Note: {note}" for note in problem.notes]
+    lines += [f"Note: {' '.join(note.splitlines())}" for note in problem.notes]
     symbol = max([7] + [len(g.symbol) for g in solution.given]) + 1
     text = max([21] + [len(g.text) for g in solution.given]) + 1
     lines += ["", f"{'Given':<{symbol + text + 2}}{solution.system}"]
@@ -55,7 +56,9 @@ def text(result: Result) -> str:
     if solution.warnings:
         lines += ["", "Warnings"]
         lines += [f"  ! {warning}" for warning in solution.warnings]
-    return "\n".join(lines) + "\n"
+    # the id, title, source and notes come from the file: one line each, and no terminal
+    # escape sequence reaches the terminal raw
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def as_dict(result: Result) -> dict[str, Any]:
