@@ -437,6 +437,7 @@ def test_hostile_text_is_escaped_in_every_format(run, write, tmp_path):
         title: "{HOSTILE}"
         kind: steady_precession
         source: "]]><evil/>"
+        statement: "A <b>top</b> {{{{1:NUMERICAL:=1:0}}}} {{{{params.x}}}} spins at {{spin}}."
         notes: ["{HOSTILE}"]
         given:
           mass: 2 kg
@@ -458,7 +459,8 @@ def test_hostile_text_is_escaped_in_every_format(run, write, tmp_path):
     question = root.findall("question")[1]
     assert question.get("type") == "numerical"  # theta = 90 deg: one root
     text = question.findtext("questiontext/text")
-    assert "{1:NUMERICAL" not in text and "&lt;b&gt;bold" in text and "\x01" not in text
+    assert "{1:NUMERICAL" not in text and "&lt;b&gt;top" in text and "\x01" not in text
+    assert "&#123;1:NUMERICAL:=1:0&#125;" in text and "spins at 1800 rpm" in text
     assert root.find("question/category/text").text.startswith("$course$/top/gyro/x//1 <i>")
     with zipfile.ZipFile(tmp_path / "q.zip") as archive:
         for name in archive.namelist():
@@ -472,20 +474,38 @@ def test_hostile_text_is_escaped_in_every_format(run, write, tmp_path):
     compile((pl / "server.py").read_text(), "server.py", "exec")
     data = _generate(pl / "server.py", 0)
     assert "{1:NUMERICAL" not in data["params"]["statement"]
+    assert "{{params.x}}" not in data["params"]["statement"]
     assert "&lt;b&gt;" in data["params"]["statement"]
 
 
-def test_statement_placeholders_are_filled_from_given_as_written():
-    from gyro_cli.render.bank import fill_statement, statement_html
+def test_question_text_is_the_statement_with_each_variants_numbers(run, tmp_path):
+    """11/3's statement names {spin} and {theta}: as written the question reads 1800 rpm
+    and 30 deg, and each variant reads the numbers gyro vary gave it."""
+    statement = yaml.safe_load((PROBLEMS / "11_3.yaml").read_text())["statement"]
+    assert "{spin}" in statement and "{theta}" in statement
+    done = run("export", "--to", "moodle", PROBLEMS / "11_3.yaml", "-o", tmp_path / "a.xml")
+    assert done.exit_code == 0, done.output
+    text = ET.parse(tmp_path / "a.xml").getroot().findall("question")[1].findtext(
+        "questiontext/text")
+    assert "1800 rpm" in text and "30 deg" in text and "{" not in text.split("<ul>")[0]
+    done = run("export", "--to", "moodle", PROBLEMS / "11_3.yaml", "--variants", 3, "-o",
+               tmp_path / "v.xml")
+    assert done.exit_code == 0, done.output
+    done = run("vary", PROBLEMS / "11_3.yaml", "--count", 3, "-o", tmp_path / "v")
+    assert done.exit_code == 0, done.output
+    questions = ET.parse(tmp_path / "v.xml").getroot().findall("question")[1:]
+    for question, file in zip(questions, sorted((tmp_path / "v").glob("*.yaml"))):
+        given = yaml.safe_load(file.read_text())["given"]
+        text = question.findtext("questiontext/text")
+        assert given["spin"] in text and given["theta"] in text, (given, text)
 
-    given = {"spin": "1800 rpm", "theta": "30  deg"}
-    assert fill_statement("A top spins at {spin} with its axis {theta} from the vertical; "
-                          "{unknown} stays.", given) == \
-        "A top spins at 1800 rpm with its axis 30 deg from the vertical; {unknown} stays."
-    html = statement_html("First {spin} <b>.\n\nSecond.", "ignored", [], [], given)
-    assert html == "<p>First 1800 rpm &lt;b&gt;.</p><p>Second.</p>"
-    fallback = statement_html(None, "A top", [("spin", "1800 rpm")], ["precession, in rpm"],
-                              given)
+
+def test_question_text_without_a_statement_is_built_from_the_data():
+    from gyro_cli.render.bank import statement_html
+
+    assert statement_html("First <b>.\n\nSecond {1:NUMERICAL:=1}.", "ignored", [], []) == \
+        "<p>First &lt;b&gt;.</p><p>Second &#123;1:NUMERICAL:=1&#125;.</p>"
+    fallback = statement_html(None, "A top", [("spin", "1800 rpm")], ["precession, in rpm"])
     assert fallback == ("<p>A top.</p><p>Data:</p><ul><li>spin: 1800 rpm</li></ul>"
                         "<p>Find precession, in rpm.</p>")
 
@@ -532,6 +552,15 @@ def test_a_repeated_id_is_refused_for_the_second_file(run, tmp_path):
     assert done.exit_code == 2
     assert f"{copy}: id (line 1): id '11/1' is already exported from" in done.stderr
     assert len(_moodle(out)) == 1
+
+
+def test_an_input_is_never_the_output(run, tmp_path):
+    source = tmp_path / "p.yaml"
+    source.write_text((PROBLEMS / "11_1.yaml").read_text())
+    for fmt in ("moodle", "qti"):
+        done = run("export", "--to", fmt, source, "-o", source, "--force")
+        assert done.exit_code == 2 and "would replace an input file" in done.stderr
+    assert source.read_text() == (PROBLEMS / "11_1.yaml").read_text()
 
 
 @pytest.mark.parametrize("args, message", [

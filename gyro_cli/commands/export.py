@@ -111,17 +111,13 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
              + (f" ({g.note})" if g.note else "")) for g in solved.solution.given]
 
 
-def _statement(problem: "Problem") -> str | None:
-    text = getattr(problem, "statement", None) or problem.data.get("statement")
-    return text if isinstance(text, str) and text.strip() else None
-
-
-def variant_of(problem: "Problem", number: int, title: str,
-               statement: str | None) -> "Variant":
-    """One problem solved and laid out as a bank's variant."""
-    from ..render import html
+def variant_of(problem: "Problem", number: int, title: str) -> "Variant":
+    """One problem solved and laid out as a bank's variant; its question text is its
+    `statement` filled from its own given values (core/statement.py), else a sentence
+    built from ``title``, its data and what is asked."""
     import dataclasses
 
+    from ..render import html
     from ..render.bank import Variant, blank_prompt, statement_html
     from ..solving.solve import solve
 
@@ -134,8 +130,8 @@ def variant_of(problem: "Problem", number: int, title: str,
     blanks = _blanks(problem, solved)
     given = {str(k): v if isinstance(v, str) else str(v)
              for k, v in (problem.data.get("given") or {}).items()}
-    text = statement_html(statement, title, _data_lines(solved),
-                          [blank_prompt(b) for b in blanks], given)
+    text = statement_html(problem.statement_text() or None, title, _data_lines(solved),
+                          [blank_prompt(b) for b in blanks])
     # The page's anchors come from the file's path, which has no business in a bank: from
     # the problem id instead (11/3-v02 -> p-11-3-v02).
     shown = dataclasses.replace(solved, problem=dataclasses.replace(solved.problem, file=""))
@@ -166,9 +162,7 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
                 raise InputError(f"id {str(problem.id)!r} is already exported from "
                                  f"{ids[str(problem.id)]}; ids must differ within a bank",
                                  key="id", line=problem.line("id"))
-            statement = _statement(problem)
-            variants = [variant_of(p, n, problem.title, statement)
-                        for n, p in enumerate(problems, 1)]
+            variants = [variant_of(p, n, problem.title) for n, p in enumerate(problems, 1)]
         except InputError as err:
             errors.append(str(err.located(file=path)))
             continue
@@ -194,20 +188,23 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
 
 # ---- writing -----------------------------------------------------------------------
 
-def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool) -> list[str]:
+def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
+          inputs: list[str] | tuple[str, ...] = ()) -> list[str]:
     """Write the export to ``out`` (a file for moodle and qti, a directory for
-    prairielearn); never replace a file without ``force``. The paths written."""
-    from ..core.files import write_atomic
+    prairielearn): never one of the ``inputs`` (the problem files), never a file that
+    exists without ``force``, and the question directories all or nothing. The paths
+    written."""
+    from ..core.files import refuse_input_as_output, write_atomic, write_set
 
-    if fmt == "moodle":
-        from ..render import bank_moodle
-
+    if fmt in ("moodle", "qti"):
         _refuse_directory(out)
-        return [str(write_atomic(out, bank_moodle.xml(banks_), force=force))]
-    if fmt == "qti":
+        refuse_input_as_output(out, inputs, option="--output")
+        if fmt == "moodle":
+            from ..render import bank_moodle
+
+            return [str(write_atomic(out, bank_moodle.xml(banks_), force=force))]
         from ..render import bank_qti
 
-        _refuse_directory(out)
         return [str(write_atomic(out, bank_qti.package(banks_), force=force))]
     from ..render import bank_prairielearn
 
@@ -215,19 +212,18 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool) -> list[
         raise InputError("exists and is not a directory (PrairieLearn questions are "
                          "directories: give the course's questions/ folder or a new one)",
                          file=out)
-    made = bank_prairielearn.files(banks_)
+    items = [(os.path.join(out, rel), text)
+             for rel, text in bank_prairielearn.files(banks_).items()]
+    for target, _ in items:
+        refuse_input_as_output(target, inputs, option="--output", yaml_output=True)
     if not force:
-        clash = [rel for rel in made if os.path.lexists(os.path.join(out, rel))]
+        clash = [target for target, _ in items if os.path.lexists(target)]
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "file(s) of this export already there)",
-                             file=os.path.join(out, clash[0]))
-    written = []
-    for rel, text in made.items():
-        target = os.path.join(out, rel)
+                             "file(s) of this export already there)", file=clash[0])
+    for target, _ in items:
         os.makedirs(os.path.dirname(target), exist_ok=True)
-        written.append(str(write_atomic(target, text, force=force)))
-    return written
+    return [str(path) for path in write_set(items, force=force)]
 
 
 def _refuse_directory(out: str) -> None:
@@ -265,6 +261,8 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     def warn(line: str) -> None:
         click.echo(f"gyro: {line}", err=True)
 
+    from ..solving.paths import problem_files
+
     made, errors = banks(files, count, seed, warn)
     for line in errors:
         warn(line)
@@ -272,7 +270,7 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
         warn("nothing to export")
         sys.exit(2)
     try:
-        written = write(made, fmt, out, force)
+        written = write(made, fmt, out, force, problem_files(files)[0])
     except InputError as err:
         warn(str(err))
         sys.exit(2)

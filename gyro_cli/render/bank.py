@@ -12,7 +12,8 @@ none of them computes an answer.
 Everything from a problem file is text to escape here: `xml_text` and
 `xml_attr` drop the characters XML 1.0 cannot hold and escape the rest,
 `cdata` splits a ``]]>``, and `html_text` escapes HTML and the braces that a
-Moodle cloze question or a PrairieLearn (mustache) template would read.
+Moodle cloze question or a PrairieLearn (mustache) template would read (a
+statement's ``{{`` is a brace once filled in, and stays text here).
 """
 
 from __future__ import annotations
@@ -120,25 +121,13 @@ def number_text(value: float) -> str:
     return "0.0" if text == "-0.0" else text
 
 
-_PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")
-
-
-def fill_statement(text: str, given: dict[str, str]) -> str:
-    """The statement with each ``{key}`` replaced by the given value as written
-    (``{spin}`` -> ``1800 rpm``); a ``{name}`` that is no given key stays as it is."""
-    def value(match: re.Match) -> str:
-        key = match.group(1)
-        return " ".join(str(given[key]).split()) if key in given else match.group(0)
-    return _PLACEHOLDER.sub(value, str(text))
-
-
 def statement_html(statement: str | None, title: str, data_lines: list[tuple[str, str]],
-                   asked: list[str], given: dict[str, str]) -> str:
-    """The question text as HTML: the statement (its ``{key}``s filled, paragraphs at
-    blank lines), else the title, the data and what is asked, in sentences."""
+                   asked: list[str]) -> str:
+    """The question text as HTML: the statement (filled in already: Problem.statement_text,
+    core/statement.py; paragraphs at blank lines), else the title, the data and what is
+    asked, in sentences."""
     if statement:
-        filled = fill_statement(statement, given)
-        paragraphs = [p for p in re.split(r"\n\s*\n", filled.strip()) if p.strip()]
+        paragraphs = [p for p in re.split(r"\n\s*\n", statement.strip()) if p.strip()]
         return "".join(f"<p>{html_text(' '.join(p.split()))}</p>" for p in paragraphs)
     title = " ".join(str(title).split())
     out = [f"<p>{html_text(title)}{'' if title.endswith(('.', '?', '!')) else '.'}</p>"] \
