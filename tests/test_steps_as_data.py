@@ -1,0 +1,170 @@
+"""Worked steps as data (issue 21): every equation step of every bundled problem and
+`gyro new` example, re-evaluated from its JSON ``expr`` and ``symbols``; no negative
+number juxtaposed in a substitution, in text, Markdown or LaTeX."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+import yaml
+
+from gyro_cli.core.errors import InputError
+
+from gyro_cli.commands.authoring import template
+from gyro_cli.core.expr import python_names
+from gyro_cli.kinds import names as kind_names
+from gyro_cli.render import report, writeup
+from gyro_cli.solving.solve import solve_file
+
+ROOT = Path(__file__).resolve().parents[1]
+PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
+
+#: kinds whose every equation step is an expression tree (the others are migrating)
+#: (the "Body" section, written by core/body.py for every kind, is not yet)
+TREE_KINDS = {"aeroplane", "gyrocompass"}
+
+#: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
+#: division sign (a subtraction is spaced: ``a - 3``)
+TEXT_JUXTAPOSED = re.compile(r"(?:[\w)^]\s+|[/*^]\s*)-\d")
+#: LaTeX: a minus sign glued to a number after anything but an opening bracket, a brace,
+#: an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
+LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])\s*-\d")
+
+
+def _examples(tmp_path: Path) -> list[Path]:
+    out = []
+    for name in kind_names():
+        path = tmp_path / f"{name}.yaml"
+        path.write_text(template(name))
+        out.append(path)
+    return out
+
+
+def _eval(expr: str, symbols: dict[str, float]) -> float:
+    return eval(expr, {"__builtins__": {}}, python_names() | symbols)  # our own output
+
+
+def _check_equations(doc: dict, kind: str) -> int:
+    count = 0
+    for section in doc["steps"]:
+        for eq in section["equations"]:
+            if eq["expr"] is None:
+                assert kind not in TREE_KINDS or section["title"] == "Body", (doc["file"], eq)
+                continue
+            value = _eval(eq["expr"], eq["symbols"])
+            assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
+                (doc["file"], eq["symbol"], eq["expr"], value, eq["value"])
+            assert eq["formula"] and eq["formula_latex"] and eq["unit"] is not None
+            count += 1
+    return count
+
+
+def test_every_equation_step_re_evaluates_to_its_value(tmp_path):
+    files = PROBLEMS + _examples(tmp_path)
+    total = 0
+    for path in files:
+        result = solve_file(str(path))
+        total += _check_equations(report.as_dict(result), result.problem.kind.name)
+    assert total > 20
+
+
+def _negated(path: Path, tmp_path: Path) -> Path | None:
+    """The problem with its spin, precession, moment and axial rate negated."""
+    data = yaml.safe_load(path.read_text())
+    given = data.get("given") or {}
+    changed = False
+    for key in ("spin", "precession", "moment", "axial_rate", "spin_rate", "turn_rate"):
+        value = given.get(key)
+        if isinstance(value, str) and value.strip()[:1].isdigit():
+            given[key] = "-" + value.strip()
+            changed = True
+    if not changed:
+        return None
+    data.pop("expected", None)
+    out = tmp_path / f"neg_{path.name}"
+    out.write_text(yaml.safe_dump(data))
+    return out
+
+
+def _substitutions(result) -> tuple[list[str], list[str]]:
+    texts, latexes = [], []
+    for section in result.solution.sections:
+        for step in section.steps:
+            if step.substitution:
+                texts.append(step.substitution)
+                if step.expr is not None:
+                    lhs, pieces = writeup._step_pieces(step)
+                    latexes.append(writeup.LatexPrinter(True).doprint(pieces[1]))
+    return texts, latexes
+
+
+STEADY = pytest.mark.xfail(strict=True, reason="steady_precession writes its substitutions as "
+                            "text still (issue 21, being migrated): _moment and phidot_approx "
+                            "juxtapose a negative rate")
+
+
+@STEADY
+def test_no_substitution_juxtaposes_a_negative_number(tmp_path):
+    files = PROBLEMS + _examples(tmp_path)
+    files += [n for n in (_negated(p, tmp_path) for p in files) if n is not None]
+    seen = 0
+    for path in files:
+        try:
+            result = solve_file(str(path))
+        except InputError:  # a negated rate some kinds refuse (a speed, an engine's rate)
+            continue
+        texts, latexes = _substitutions(result)
+        for line in texts:
+            assert not TEXT_JUXTAPOSED.search(line), (path.name, line)
+        for line in latexes:
+            assert not LATEX_JUXTAPOSED.search(line), (path.name, line)
+        seen += len(texts)
+    assert seen > 300
+
+
+@STEADY
+def test_top_rev_per_s_divides_by_a_bracketed_negative_product():
+    """The slip the issue found: ``(0.0005120 kg m^2 -179.7 rad/s)`` set as a subtraction."""
+    doc = json.loads(report.as_json(solve_file(str(ROOT / "problems" / "top_rev_per_s.yaml"))))
+    lines = [line for s in doc["steps"] for line in s["lines"]]
+    assert not any(TEXT_JUXTAPOSED.search(line) for line in lines), lines
+
+
+@pytest.mark.parametrize("kind", sorted(TREE_KINDS))
+def test_migrated_kinds_parse_no_formula_text(kind, tmp_path, monkeypatch):
+    """A kind written as trees is typeset without the formula parser."""
+    path = tmp_path / f"{kind}.yaml"
+    path.write_text(template(kind))
+    result = solve_file(str(path))
+    calls: list[str] = []
+    real = writeup.try_parse
+    monkeypatch.setattr(writeup, "try_parse", lambda text, units=True: calls.append(text)
+                        or real(text, units))
+    for section in result.solution.sections:
+        for step in section.steps:
+            if step.formula and section.title != "Body":
+                writeup._step_pieces(step)
+    lhs = {step.symbol for section in result.solution.sections for step in section.steps}
+    assert set(calls) <= lhs, calls  # only the steps' left-hand sides, no formula
+
+
+def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
+    """The kind's steps are evaluated from their trees; physics/gyrocompass.py computes
+    the same quantities independently (the swing period by its own AGM)."""
+    from gyro_cli.physics import gyrocompass as P
+
+    result = solve_file(str(ROOT / "problems" / "gyrocompass_ship.yaml"))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    syms = {name: s.si for st in steps.values()
+            for name, s in __import__("gyro_cli.core.expr", fromlist=["symbols"]).symbols(
+                st.expr).items()}
+    H, W, lat, alpha, I_v = (syms[k] for k in ("H", "Omega_E", "lambda", "alpha", "I_v"))
+    assert steps["D"].value == pytest.approx(P.directive_stiffness(H, W, lat), rel=1e-12)
+    assert steps["M"].value == pytest.approx(P.north_seeking_moment(H, W, lat, alpha), rel=1e-12)
+    assert steps["T"].value == pytest.approx(P.period(I_v, H, W, lat), rel=1e-12)
+    assert steps["T(alpha)"].value == pytest.approx(
+        P.swing_period(I_v, H, W, lat, alpha), rel=1e-12)
