@@ -38,7 +38,7 @@ def test_formula_and_substitution_are_printed_from_the_same_tree():
     e = s["m"] * s["g"] * s["l"] * sin(s["theta"])
     assert E.formula(e) == "m g l sin(theta)"
     assert E.substitution(e) == "0.08498 kg (9.815 m/s^2) (0.03810 m) sin(30.00 deg)"
-    assert E.python(e) == "((m*g)*l)*sin(theta)"
+    assert E.python(e) == "m*g*l*sin(theta)"
 
 
 def test_a_negative_rate_in_a_product_is_bracketed():

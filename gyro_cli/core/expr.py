@@ -487,24 +487,31 @@ class PythonPrinter(Printer):
         return node.name
 
     def _print_Num(self, node: Num) -> str:
-        return node.text if node.si >= 0 else f"({node.text})"
+        return node.text
 
     def _print_Let(self, node: Let) -> str:
         return self._print(node.body)
 
-    def _wrap(self, text: str) -> str:
-        return f"({text})"
+    def _prec(self, node: Expr) -> int:
+        while isinstance(node, Let):
+            node = node.body
+        if isinstance(node, Num) and node.si < 0:
+            return NEG
+        return precedence(node, values=False)
 
     def _print_Neg(self, node: Neg) -> str:
-        return f"(-{self._wrap(self._print(node.arg))})"
+        inner = self._print(node.arg)
+        return f"-({inner})" if self._prec(node.arg) < POW else f"-{inner}"
 
     def _print_BinOp(self, node: BinOp) -> str:
         op = {"^": "**"}.get(node.op, node.op)
+        mine, lp, rp = self._prec(node), self._prec(node.left), self._prec(node.right)
         left, right = self._print(node.left), self._print(node.right)
-        if not isinstance(node.left, (Sym, Const, Num, Call)):
-            left = self._wrap(left)
-        if not isinstance(node.right, (Sym, Const, Num, Call)):
-            right = self._wrap(right)
+        if lp < mine or (isinstance(node, Pow) and lp <= POW):
+            left = f"({left})"
+        if rp < mine or (rp == mine and not isinstance(node, Pow)) or \
+                (isinstance(node, Pow) and rp < ATOM):
+            right = f"({right})"
         return f"{left}{op}{right}"
 
     def _print_Call(self, node: Call) -> str:
