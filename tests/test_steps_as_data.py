@@ -63,7 +63,8 @@ def _check_equations(doc: dict, kind: str) -> int:
             value = _eval(eq["expr"], eq["symbols"])
             assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
                 (doc["file"], eq["symbol"], eq["expr"], value, eq["value"])
-            assert eq["formula"] and eq["formula_latex"] and eq["unit"] is not None
+            assert (eq["formula"] or eq["substitution"]) and eq["unit"] is not None
+            assert bool(eq["formula"]) == bool(eq["formula_latex"])
             count += 1
     return count
 

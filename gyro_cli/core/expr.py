@@ -27,8 +27,11 @@ from typing import Callable, Union
 
 SIG = 4
 
-#: units shown differently from the SI value held: unit -> SI value of one unit
-SHOWN = {"deg": math.pi / 180}
+#: units shown differently from the SI value held: unit -> (SI value of one unit, SI unit)
+SHOWN = {"deg": (math.pi / 180, "rad"),
+         "arcsec/yr": (math.pi / 180 / 3600 / (365.25 * 86400.0), "rad/s"),  # Julian year
+         "yr": (365.25 * 86400.0, "s"), "min": (60.0, "s"), "h": (3600.0, "s"),
+         "d": (86400.0, "s")}
 
 #: kinds' spellings of units, as printed
 UNIT_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}
@@ -146,8 +149,8 @@ class Num(Expr):
 @dataclass(frozen=True, eq=False)
 class Let(Expr):
     """A quantity known from an earlier step: the formula shows ``body`` (its
-    definition), the substitution only the value of ``sym`` (``D`` for
-    ``H Omega_E cos(lambda)``)."""
+    definition), the substitution and ``expr`` only ``sym`` and its value (``D`` for
+    ``H Omega_E cos(lambda)``). The body's symbols may be names only (``si`` nan)."""
 
     sym: Sym
     body: Expr
@@ -285,12 +288,15 @@ absolute = _call("abs")
 
 
 def symbols(expr: Expr) -> dict[str, Sym]:
-    """The symbols of the formula (inside a `Let`, those of its definition), by name."""
+    """The symbols the value is computed from (of a `Let`, its symbol), by name."""
     out: dict[str, Sym] = {}
 
     def walk(node: Expr) -> None:
         if isinstance(node, Sym):
             out.setdefault(node.name, node)
+        elif isinstance(node, Let):
+            walk(node.sym)
+            return
         for child in node.children():
             walk(child)
 
@@ -383,6 +389,14 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
     return False
 
 
+def trig_power(node: Pow) -> str:
+    """``"2"`` for sin(x)^2 (printed sin^2(x)), else ""."""
+    if isinstance(node.left, Call) and node.left.name in ("sin", "cos", "tan") \
+            and isinstance(node.right, Num) and node.right.si in (2.0, 3.0):
+        return node.right.text
+    return ""
+
+
 def factors(node: Expr, values: bool) -> list[Expr]:
     """The factors of a product, left to right: ``(a b) (c d)`` -> [a, b, c, d] (and in
     the formula, those of a `Let`'s definition)."""
@@ -423,7 +437,7 @@ class Printer:
 def quantity_text(value: float, unit: str) -> str:
     """``0.5000 kg``; an angle held in rad and shown in deg is converted."""
     unit = UNIT_TEXT.get(unit, unit)
-    shown = value / SHOWN[unit] if unit in SHOWN else value
+    shown = value / SHOWN[unit][0] if unit in SHOWN else value
     return f"{num(shown)} {unit}".rstrip()
 
 
@@ -466,6 +480,11 @@ class TextPrinter(Printer):
         return f"{self.operand(node, node.left)} / {self.operand(node, node.right, True)}"
 
     def _print_Pow(self, node: Pow) -> str:
+        n = trig_power(node)
+        if n:  # sin^2(theta), as the chapter writes it
+            call = node.left
+            assert isinstance(call, Call)
+            return f"{call.name}^{n}({', '.join(self._print(a) for a in call.args)})"
         return f"{self.operand(node, node.left)}^{self.operand(node, node.right, True)}"
 
     def _print_Call(self, node: Call) -> str:
@@ -490,11 +509,11 @@ class PythonPrinter(Printer):
         return node.text
 
     def _print_Let(self, node: Let) -> str:
-        return self._print(node.body)
+        return python_name(node.sym.name)
 
     def _prec(self, node: Expr) -> int:
-        while isinstance(node, Let):
-            node = node.body
+        if isinstance(node, Let):
+            return ATOM
         if isinstance(node, Num) and node.si < 0:
             return NEG
         return precedence(node, values=False)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .expr import SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
+from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
 from .units import si_text
 
 __all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
@@ -151,12 +151,14 @@ class Work:
 
     def step(self, symbol: str, formula: str | Expr = "", substitution: str = "",
              value: float | None = None, unit: str = "", ref: str = "", note: str = "",
-             substitute: bool = True) -> float | None:
+             substitute: bool = True, state: bool = True) -> float | None:
         """Add ``symbol = formula = substitution = value``; returns value.
 
         ``formula`` is an expression tree (`core.expr`): the formula and the substitution
         are printed from it and the value is its evaluation (``substitute=False`` shows
-        no substitution). The older form, formula and substitution as text with the
+        no substitution, ``state=False`` no formula: the symbol is the formula). A unit
+        of `expr.SHOWN` (``deg``, ``arcsec/yr``, ``yr``) shows the SI value converted, and
+        returns it converted. The older form, formula and substitution as text with the
         value beside them, is kept for the kinds not yet written as trees.
         """
         if isinstance(formula, Expr):
@@ -165,9 +167,14 @@ class Work:
                                 "from the tree")
             tree = formula
             value = tree.value
+            si = None
+            if unit in SHOWN:
+                si = (value, SHOWN[unit][1])
+                value = value / SHOWN[unit][0]
             self._current().steps.append(Step(
-                symbol, tree_formula(tree), tree_substitution(tree) if substitute else "",
-                value, unit, ref, note, expr=tree))
+                symbol, tree_formula(tree) if state else "",
+                tree_substitution(tree) if substitute else "", value, unit, ref, note,
+                expr=tree, si=si))
             return value
         if " -" in substitution:
             substitution = fold_signs(substitution)

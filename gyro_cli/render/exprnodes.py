@@ -74,6 +74,11 @@ class NodePrinter:
         return BinOp("/", self.operand(node, node.left), self.operand(node, node.right, True))
 
     def _print_Pow(self, node: E.Pow) -> Node:
+        n = E.trig_power(node)
+        if n:  # sin^2(theta)
+            call = node.left
+            assert isinstance(call, E.Call)
+            return Call(call.name, tuple(self._print(a) for a in call.args), power=Num(n))
         return Pow(self.operand(node, node.left), self.operand(node, node.right, True))
 
     def _print_Call(self, node: E.Call) -> Node:

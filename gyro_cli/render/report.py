@@ -75,7 +75,7 @@ def as_dict(result: Result) -> dict[str, Any]:
                    "si_unit": g.si_unit} for g in solution.given],
         "steps": [{"title": s.title, "lines": [step.as_text() for step in s.steps],
                    "equations": [equation(step) for step in s.steps
-                                 if step.symbol and step.formula]}
+                                 if step.symbol and (step.formula or step.expr)]}
                   for s in solution.sections],
         "checks": [step.as_text() for step in solution.checks],
         "warnings": list(solution.warnings),
@@ -97,7 +97,7 @@ def equation(step: Step) -> dict[str, Any]:
     tree = step.shown
     assert tree is not None
     return out | {
-        "formula_latex": latex(tree),
+        "formula_latex": latex(tree) if step.formula else "",
         "substitution_latex": latex(tree, values=True) if step.substitution else "",
         "expr": python(step.expr),
         "symbols": {python_name(name): sym.si for name, sym in symbols(step.expr).items()}}

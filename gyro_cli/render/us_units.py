@@ -108,7 +108,7 @@ def _step(step: Step) -> Step:
         view = map_syms(step.expr, _us_symbol)
         return dataclasses.replace(step, substitution=substitution(view) if step.substitution
                                    else "", value=value, unit=unit, text=_text(step.text),
-                                   view=view, si=(step.value, step.unit))
+                                   view=view, si=step.si or (step.value, step.unit))
     return dataclasses.replace(step, substitution=_text(step.substitution), value=value,
                                unit=unit, text=_text(step.text))
 

@@ -234,7 +234,8 @@ def _step_pieces(step) -> tuple[Node | None, list[Node]]:
     pieces: list[Node] = []
     tree = getattr(step, "shown", None)
     if tree is not None:  # built from an expression tree: typeset from it, nothing parsed
-        pieces.append(formula_node(tree))
+        if step.formula:
+            pieces.append(formula_node(tree))
         if step.substitution:
             pieces.append(substitution_node(tree))
     else:
