@@ -25,7 +25,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (the "Body" section and H = J psidot, written by core/body.py for every kind, are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift"}
+TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -174,3 +174,34 @@ def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
     assert steps["T"].value == pytest.approx(P.period(I_v, H, W, lat), rel=1e-12)
     assert steps["T(alpha)"].value == pytest.approx(
         P.swing_period(I_v, H, W, lat, alpha), rel=1e-12)
+
+
+def _tree_steps(path: Path) -> tuple[dict, dict]:
+    from gyro_cli.core.expr import symbols
+
+    result = solve_file(str(path))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    syms = {name: s.si for st in steps.values() for name, s in symbols(st.expr).items()}
+    return steps, syms
+
+
+@pytest.mark.parametrize("name", ["11_3_equinoxes.yaml", "mars_precession.yaml"])
+def test_earth_precession_trees_agree_with_the_physics_functions(name):
+    """Each body's rate from its tree against physics/earth_precession.py's
+    precession_rate, and the tidal terms against Kepler III / G M / a^3."""
+    from gyro_cli.physics import earth_precession as P
+
+    steps, syms = _tree_steps(ROOT / "problems" / name)
+    H, omega, eps = syms["H"], syms["omega"], syms["epsilon"]
+    for b in ("sun", "moon"):
+        if f"Omega_{b}" not in steps:
+            continue
+        tidal = steps[f"G M_{b} / a_{b}^3"]
+        if f"P_{b}" in syms:
+            assert tidal.value == pytest.approx(
+                P.tidal_from_period(syms[f"P_{b}"], syms[f"q_{b}"]), rel=1e-12)
+        e, i = syms.get(f"e_{b}", 0.0), syms.get(f"i_{b}", 0.0)
+        assert steps[f"(1 - e_{b}^2)^(-3/2)"].value == pytest.approx(
+            P.eccentricity_factor(e), rel=1e-12)
+        expected = P.precession_rate(tidal.value, e, H, eps, omega, i)
+        assert steps[f"Omega_{b}"].value == pytest.approx(expected, rel=1e-12)

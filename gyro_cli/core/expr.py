@@ -31,6 +31,7 @@ SIG = 4
 SHOWN = {"deg": (math.pi / 180, "rad"),
          "arcsec/yr": (math.pi / 180 / 3600 / (365.25 * 86400.0), "rad/s"),  # Julian year
          "yr": (365.25 * 86400.0, "s"), "min": (60.0, "s"), "h": (3600.0, "s"),
+         "yr/deg": (365.25 * 86400.0 * 180 / math.pi, "s/rad"),
          "d": (86400.0, "s")}
 
 #: kinds' spellings of units, as printed
@@ -133,9 +134,14 @@ PI = Const("pi", math.pi)
 
 @dataclass(frozen=True, eq=False)
 class Num(Expr):
-    """An exact number of the formula: the 2 of ``2 pi``, the 4 of ``4 I m g l``."""
+    """An exact number of the formula: the 2 of ``2 pi``, the 4 of ``4 I m g l``;
+    ``label`` writes a fraction as the chapter does (``Num(1.5, "3/2")``)."""
 
     si: float
+    label: str = ""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "si", float(self.si))
 
     @property
     def value(self) -> float:
@@ -143,6 +149,8 @@ class Num(Expr):
 
     @property
     def text(self) -> str:
+        if self.label:
+            return self.label
         return str(int(self.si)) if self.si.is_integer() and abs(self.si) < 1e15 else repr(self.si)
 
 
@@ -339,9 +347,13 @@ def precedence(node: Expr, values: bool) -> int:
         return NEG
     if isinstance(node, Pow):
         return POW
-    if values and isinstance(node, (Sym, Num)):
+    if isinstance(node, Num) and node.label and not values:
+        return NEG if node.si < 0 else MUL
+    if (values or isinstance(node, Num)) and isinstance(node, (Sym, Num)):
         if node.value < 0:
             return NEG
+        if isinstance(node, Num) and node.label:
+            return MUL
         if isinstance(node, Sym) and node.unit:
             return MUL
     return ATOM
@@ -371,8 +383,8 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
         return c < p or (right and isinstance(parent, Sub) and c == p)
     if isinstance(parent, Mul):
         # ``child`` is one factor of the flattened product (`factors`); ``right``: not the first
-        if c < MUL or isinstance(node, Div):
-            return True  # (a + b) c, (M / H) t
+        if c < MUL or isinstance(node, Div) or (isinstance(node, Num) and "/" in node.label):
+            return True  # (a + b) c, (M / H) t, (3/2) H
         if right:
             # every factor after the first that is a quantity or a signed number:
             # 0.0005120 kg m^2 (-179.7 rad/s), 2 (0.5 kg)
@@ -503,7 +515,7 @@ class PythonPrinter(Printer):
         return python_name(node.name)
 
     def _print_Const(self, node: Const) -> str:
-        return node.name
+        return node.name if node.name == "pi" else repr(node.si)
 
     def _print_Num(self, node: Num) -> str:
         return node.text

@@ -49,7 +49,7 @@ class NodePrinter:
         return Sym(node.name)
 
     def _print_Num(self, node: E.Num) -> Node:
-        return Neg(Num(node.text.lstrip("-"))) if node.si < 0 else Num(node.text)
+        return Neg(Num(node.text.lstrip("-"))) if node.si < 0 else Num(node.text)  # 3/2 as is
 
     def _print_Let(self, node: E.Let) -> Node:
         return self._print(node.sym if self.values else node.body)
