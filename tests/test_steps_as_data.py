@@ -205,3 +205,39 @@ def test_earth_precession_trees_agree_with_the_physics_functions(name):
             P.eccentricity_factor(e), rel=1e-12)
         expected = P.precession_rate(tidal.value, e, H, eps, omega, i)
         assert steps[f"Omega_{b}"].value == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["11_2_released_top.yaml", "11_2_released_top_loops.yaml"])
+def test_released_top_trees_agree_with_the_physics(name):
+    """The constants of the motion and the fast-top estimates, evaluated from the step
+    trees, against physics/nutation.py (which computes them its own way)."""
+    from gyro_cli.physics import nutation as N
+
+    result = solve_file(str(ROOT / "problems" / name))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    v = _released_top_data(result)
+    top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
+    start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
+                    theta_rate0=v["thetadot0"])
+    nut = N.analyse(top, start)
+    omega_z = steps["omega_z"].value
+    for symbol, expected in (("P2", nut.P2), ("P1", nut.P1), ("h", nut.energy), ("a", nut.a),
+                             ("alpha", nut.alpha), ("beta", nut.beta), ("gamma", nut.gamma),
+                             ("T_fast", N.fast_nutation_period(top, omega_z)),
+                             ("phidot_fast", N.fast_mean_precession(top, omega_z))):
+        assert steps[symbol].value == pytest.approx(expected, rel=1e-12), symbol
+    if "dtheta_fast" in steps:
+        assert steps["dtheta_fast"].si[0] == pytest.approx(
+            N.fast_nutation_amplitude(top, omega_z, start.theta0), rel=1e-12)
+
+
+def _released_top_data(result):
+    """The data of the problem as the steps' symbols hold them (SI)."""
+    from gyro_cli.core.expr import symbols
+
+    syms = {}
+    for sec in result.solution.sections:
+        for s in sec.steps:
+            if s.expr is not None:
+                syms |= {k: v.si for k, v in symbols(s.expr).items()}
+    return syms
