@@ -241,3 +241,22 @@ def _released_top_data(result):
             if s.expr is not None:
                 syms |= {k: v.si for k, v in symbols(s.expr).items()}
     return syms
+
+
+@pytest.mark.parametrize("gyroscopic", [True, False])
+def test_bicycle_trees_agree_with_the_paper_totals(gyroscopic, tmp_path):
+    """Eqs. A 1-A 17 evaluated from the step trees against physics/bicycle.py's totals."""
+    from gyro_cli.physics import bicycle as B
+
+    path = tmp_path / "bike.yaml"
+    path.write_text("id: b\nkind: bicycle\ngiven:\n  preset: benchmark\n  speed: 5 m/s\n"
+                    f"  gyroscopic: {'true' if gyroscopic else 'false'}\nfind: [motion]\n")
+    result = solve_file(str(path))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps}
+    t = B.totals(dict(B.BENCHMARK), gyroscopic)
+    names = {"m_T": t.mT, "x_T": t.xT, "z_T": t.zT, "I_Txx": t.ITxx, "I_Txz": t.ITxz,
+             "I_Tzz": t.ITzz, "m_A": t.mA, "x_A": t.xA, "z_A": t.zA, "I_Axx": t.IAxx,
+             "I_Axz": t.IAxz, "I_Azz": t.IAzz, "u_A": t.uA, "I_All": t.IAll, "I_Alx": t.IAlx,
+             "I_Alz": t.IAlz, "mu": t.mu, "S_R": t.SR, "S_F": t.SF, "S_T": t.ST, "S_A": t.SA}
+    for symbol, expected in names.items():
+        assert steps[symbol].value == pytest.approx(expected, rel=1e-12, abs=1e-15), symbol

@@ -55,7 +55,18 @@ class NodePrinter:
         return self._print(node.sym if self.values else node.body)
 
     def _print_Neg(self, node: E.Neg) -> Node:
-        return Neg(self.operand(node, node.arg))
+        inner = self.operand(node, node.arg)
+        if isinstance(inner, BinOp) and inner.op == " ":
+            # -(a b) is set -a b, as the text reads: the sign on the first factor
+            chain = []
+            while isinstance(inner, BinOp) and inner.op == " ":
+                chain.append(inner.right)
+                inner = inner.left
+            out: Node = Neg(inner)
+            for right in reversed(chain):
+                out = BinOp(" ", out, right)
+            return out
+        return Neg(inner)
 
     def _print_Add(self, node: E.Add) -> Node:
         return BinOp("+", self.operand(node, node.left), self.operand(node, node.right, True))
