@@ -22,8 +22,10 @@ from __future__ import annotations
 
 import keyword
 import math
-from dataclasses import dataclass
-from typing import Callable, Union
+
+TYPE_CHECKING = False  # typing is not imported on the solve path (its import costs ms)
+if TYPE_CHECKING:
+    from collections.abc import Callable
 
 SIG = 4
 
@@ -48,10 +50,7 @@ def num(x: float, sig: int = SIG) -> str:
     return f"{mantissa}e{exponent}" if exponent else mantissa
 
 
-Operand = Union["Expr", float, int]
-
-
-def _node(x: Operand) -> "Expr":
+def _node(x: "Expr | float") -> "Expr":
     if isinstance(x, Expr):
         return x
     if isinstance(x, bool) or not isinstance(x, (int, float)):
@@ -64,31 +63,31 @@ class Expr:
 
     __slots__ = ()
 
-    def __add__(self, other: Operand) -> "Expr":
+    def __add__(self, other: "Expr | float") -> "Expr":
         return Add(self, _node(other))
 
-    def __radd__(self, other: Operand) -> "Expr":
+    def __radd__(self, other: "Expr | float") -> "Expr":
         return Add(_node(other), self)
 
-    def __sub__(self, other: Operand) -> "Expr":
+    def __sub__(self, other: "Expr | float") -> "Expr":
         return Sub(self, _node(other))
 
-    def __rsub__(self, other: Operand) -> "Expr":
+    def __rsub__(self, other: "Expr | float") -> "Expr":
         return Sub(_node(other), self)
 
-    def __mul__(self, other: Operand) -> "Expr":
+    def __mul__(self, other: "Expr | float") -> "Expr":
         return Mul(self, _node(other))
 
-    def __rmul__(self, other: Operand) -> "Expr":
+    def __rmul__(self, other: "Expr | float") -> "Expr":
         return Mul(_node(other), self)
 
-    def __truediv__(self, other: Operand) -> "Expr":
+    def __truediv__(self, other: "Expr | float") -> "Expr":
         return Div(self, _node(other))
 
-    def __rtruediv__(self, other: Operand) -> "Expr":
+    def __rtruediv__(self, other: "Expr | float") -> "Expr":
         return Div(_node(other), self)
 
-    def __pow__(self, other: Operand) -> "Expr":
+    def __pow__(self, other: "Expr | float") -> "Expr":
         return Pow(self, _node(other))
 
     def __neg__(self) -> "Expr":
@@ -102,27 +101,31 @@ class Expr:
         return ()
 
 
-@dataclass(frozen=True, eq=False)
 class Sym(Expr):
     """A named quantity: its SI value, the unit it is shown in (``deg`` shows radians in
     degrees; "" for a pure number) and its plain name (``theta``, ``omega_z``,
     ``psidot_min``), from which LaTeX and MathML names are made."""
 
-    name: str
-    si: float
-    unit: str = ""
+    __slots__ = ("name", "si", "unit")
+
+    def __init__(self, name: str, si: float, unit: str = "") -> None:
+        self.name, self.si, self.unit = name, si, unit
+
+    def __repr__(self) -> str:
+        return f"Sym({self.name!r}, {self.si!r}, {self.unit!r})"
 
     @property
     def value(self) -> float:
         return self.si
 
 
-@dataclass(frozen=True, eq=False)
 class Const(Expr):
     """A named constant printed by its name in substitutions too: ``pi``."""
 
-    name: str
-    si: float
+    __slots__ = ("name", "si")
+
+    def __init__(self, name: str, si: float) -> None:
+        self.name, self.si = name, si
 
     @property
     def value(self) -> float:
@@ -132,16 +135,14 @@ class Const(Expr):
 PI = Const("pi", math.pi)
 
 
-@dataclass(frozen=True, eq=False)
 class Num(Expr):
     """An exact number of the formula: the 2 of ``2 pi``, the 4 of ``4 I m g l``;
     ``label`` writes a fraction as the chapter does (``Num(1.5, "3/2")``)."""
 
-    si: float
-    label: str = ""
+    __slots__ = ("si", "label")
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "si", float(self.si))
+    def __init__(self, si: float, label: str = "") -> None:
+        self.si, self.label = float(si), label
 
     @property
     def value(self) -> float:
@@ -154,14 +155,15 @@ class Num(Expr):
         return str(int(self.si)) if self.si.is_integer() and abs(self.si) < 1e15 else repr(self.si)
 
 
-@dataclass(frozen=True, eq=False)
 class Let(Expr):
     """A quantity known from an earlier step: the formula shows ``body`` (its
     definition), the substitution and ``expr`` only ``sym`` and its value (``D`` for
     ``H Omega_E cos(lambda)``). The body's symbols may be names only (``si`` nan)."""
 
-    sym: Sym
-    body: Expr
+    __slots__ = ("sym", "body")
+
+    def __init__(self, sym: Sym, body: Expr) -> None:
+        self.sym, self.body = sym, body
 
     @property
     def value(self) -> float:
@@ -171,9 +173,11 @@ class Let(Expr):
         return (self.body,)
 
 
-@dataclass(frozen=True, eq=False)
 class Neg(Expr):
-    arg: Expr
+    __slots__ = ("arg",)
+
+    def __init__(self, arg: Expr) -> None:
+        self.arg = arg
 
     @property
     def value(self) -> float:
@@ -183,17 +187,19 @@ class Neg(Expr):
         return (self.arg,)
 
 
-@dataclass(frozen=True, eq=False)
 class BinOp(Expr):
-    left: Expr
-    right: Expr
+    __slots__ = ("left", "right")
     op = ""
+
+    def __init__(self, left: Expr, right: Expr) -> None:
+        self.left, self.right = left, right
 
     def children(self) -> tuple[Expr, ...]:
         return (self.left, self.right)
 
 
 class Add(BinOp):
+    __slots__ = ()
     op = "+"
 
     @property
@@ -202,6 +208,7 @@ class Add(BinOp):
 
 
 class Sub(BinOp):
+    __slots__ = ()
     op = "-"
 
     @property
@@ -210,6 +217,7 @@ class Sub(BinOp):
 
 
 class Mul(BinOp):
+    __slots__ = ()
     op = "*"
 
     @property
@@ -218,6 +226,7 @@ class Mul(BinOp):
 
 
 class Div(BinOp):
+    __slots__ = ()
     op = "/"
 
     @property
@@ -226,6 +235,7 @@ class Div(BinOp):
 
 
 class Pow(BinOp):
+    __slots__ = ()
     op = "^"
 
     @property
@@ -263,16 +273,15 @@ FUNCTIONS: dict[str, Callable[..., float]] = {
 SHOWN_NAMES = {"ellipk": "K", "ellipe": "E"}
 
 
-@dataclass(frozen=True, eq=False)
 class Call(Expr):
     """``name(args)`` for a function of `FUNCTIONS`."""
 
-    name: str
-    args: tuple[Expr, ...]
+    __slots__ = ("name", "args")
 
-    def __post_init__(self) -> None:
-        if self.name not in FUNCTIONS:
-            raise ValueError(f"unknown function {self.name!r}")
+    def __init__(self, name: str, args: tuple[Expr, ...]) -> None:
+        if name not in FUNCTIONS:
+            raise ValueError(f"unknown function {name!r}")
+        self.name, self.args = name, args
 
     @property
     def value(self) -> float:
@@ -283,7 +292,7 @@ class Call(Expr):
 
 
 def _call(name: str) -> Callable[..., Expr]:
-    def build(*args: Operand) -> Expr:
+    def build(*args: "Expr | float") -> Expr:
         return Call(name, tuple(_node(a) for a in args))
     build.__name__ = name
     return build
