@@ -139,3 +139,28 @@ def test_any_tree_expr_evaluates_to_its_value_and_brackets_negatives(tree):
     assert again == pytest.approx(value, rel=1e-9, abs=1e-300)
     assert not JUXTAPOSED.search(E.substitution(tree)), E.substitution(tree)
     assert not JUXTAPOSED.search(E.formula(tree)), E.formula(tree)
+
+
+def test_a_step_that_cannot_be_evaluated_is_bad_input_not_a_crash():
+    from gyro_cli.core.errors import InputError
+    from gyro_cli.core.work import Work
+
+    work = Work()
+    with pytest.raises(InputError, match="the step w = a / b cannot be evaluated"):
+        work.step("w", Sym("a", 1.0, "m") / Sym("b", 0.0, "s"), unit="m/s")
+    with pytest.raises(InputError, match="cannot be evaluated"):
+        work.step("p", Sym("a", 1e200) ** E.Num(3))
+    with pytest.raises(TypeError):
+        work.step("w", Sym("a", 1.0), "a substitution", 2.0)  # a tree carries its own
+
+
+def test_a_tree_step_keeps_the_tree_and_prints_the_line():
+    from gyro_cli.core.work import Work
+
+    work = Work()
+    s = top()
+    value = work.step("a", 2 * s["m"] * s["g"] * s["l"] / s["J"], unit="1/s^2", ref="Eq. 11.18")
+    step = work.sections[0].steps[0]
+    assert value == step.value == step.expr.value
+    assert step.as_text().startswith("a = 2 m g l / J = 2 (0.08498 kg) (9.815 m/s^2) (0.03810 m)")
+    assert step.as_text().endswith("1/s^2    (Eq. 11.18)")

@@ -166,7 +166,15 @@ class Work:
                 raise TypeError("a step built from a tree takes its substitution and value "
                                 "from the tree")
             tree = formula
-            value = tree.value
+            try:
+                value = tree.value
+            except (ZeroDivisionError, OverflowError, ValueError) as err:
+                from .errors import InputError
+
+                raise InputError(f"the step {symbol} = {tree_formula(tree)} cannot be evaluated "
+                                 f"for these data ({err}): a degenerate case, or magnitudes "
+                                 "beyond double precision; check the data and units",
+                                 key="given") from None
             si = None
             if unit in SHOWN:
                 si = (value, SHOWN[unit][1])
