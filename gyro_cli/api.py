@@ -336,15 +336,38 @@ class Result:
 
         return writeup.latex(self.solved)
 
-    def html(self, page: bool = False, picture: bool = True, level: int = 2) -> str:
+    def html(self, page: bool = False, picture: bool = True, level: int = 2,
+             animation: str = "") -> str:
         """The worked answer as HTML: an <article> (MathML formulas, the picture as inline
         SVG; its title a heading of ``level``), or with ``page=True`` the self-contained
-        page of ``--format html``."""
+        page of ``--format html``. ``animation``: a figure of the motion to embed
+        (`animation_html`)."""
         from .render import html
 
         if page:
             return html.page([self.solved])
-        return html.worked_answer(self.solved, level=level, picture=picture)
+        return html.worked_answer(self.solved, level=level, picture=picture,
+                                  animation=animation)
+
+    def animation_html(self, periods: float | None = None, speed: float = 1.0,
+                       fps: float = 30.0) -> str:
+        """A figure of the motion (a canvas and its player, drawn from a simulation, as
+        ``gyro simulate --animate OUT.html``) to embed in `html`; "" for a kind that does
+        not move. A page that shows it must allow its script (`animation_script`)."""
+        from .commands import animate
+        from .render.animate import html_fragment
+
+        if self.solved.problem.kind.name not in animate.KINDS:
+            return ""
+        scene, _ = animate.scene_of(self.solved.problem, self.solved, periods, speed, fps)
+        return html_fragment(scene, self.animation_id)
+
+    @property
+    def animation_id(self) -> str:
+        """The element id of the embedded animation (unique on a page of several)."""
+        from .render import html
+
+        return f"{html.anchor(self.solved)}-animation"
 
     def _repr_html_(self) -> str:
         from .render import html

@@ -14,7 +14,7 @@ import sys
 import click
 
 from . import __version__
-from .core.errors import InputError, internal_message
+from .core.errors import InputError, internal_message, terminal_text
 
 FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
@@ -45,17 +45,30 @@ class _Guarded(click.Group):
                 click.exceptions.Abort):
             raise
         except BrokenPipeError:
-            # The reader left (gyro solve ... | head): end quietly, as a program killed
-            # by SIGPIPE would (128 + 13), not with an internal error.
-            try:
-                devnull = os.open(os.devnull, os.O_WRONLY)
-                os.dup2(devnull, sys.stdout.fileno())
-            except (OSError, ValueError):
-                pass
-            sys.exit(141)
+            _reader_left()
         except Exception as err:
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
+
+    def make_context(self, *args, **kwargs):  # type: ignore[no-untyped-def]
+        # `gyro --help` and `gyro --version` print while the arguments are parsed, before
+        # invoke: a reader that left ends them as it ends every command (click's own
+        # handling would exit 1, which means "an answer is wrong").
+        try:
+            return super().make_context(*args, **kwargs)
+        except BrokenPipeError:
+            _reader_left()
+
+
+def _reader_left() -> None:
+    """The reader left (gyro solve ... | head): end quietly, as a program killed by SIGPIPE
+    would (128 + 13), not with an internal error."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    sys.exit(141)
 
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
@@ -99,8 +112,12 @@ def _rendered(result, fmt: str, level: int = 2) -> str:
               help="us: work the problem in slug, ft and lbf (steps, Given table, answers "
                    "the file gives no unit for), as US textbooks do; si (the default, or the "
                    "file's `units` key).")
+@click.option("--animate", "embed", is_flag=True,
+              help="With --format html: embed an animation of the motion (as `gyro simulate "
+                   "--animate`) in the worked answer of each problem whose kind moves.")
 def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
-          force: bool = False, standalone: bool = False, system: str | None = None) -> None:
+          force: bool = False, standalone: bool = False, system: str | None = None,
+          embed: bool = False) -> None:
     """Solve problem FILES and print worked answers.
 
     FILES may also be directories (every *.yaml and *.yml in them, as for
@@ -112,17 +129,28 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 
     files, missing = problem_files(files)
     for _, message in missing:
-        click.echo(f"gyro: {message}", err=True)
+        click.echo(f"gyro: {terminal_text(message)}", err=True)
     if plot_file and len(files) != 1:
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
         fail("--standalone goes with --format latex")
+    if embed and fmt != "html":
+        fail("--animate goes with --format html (an animation file alone: gyro simulate "
+             "FILE --animate OUT)")
     bad, crashed = len(missing), 0
-    document = []
+    document, scripts = [], []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
-            text = None if standalone else _rendered(result, fmt, 1 if len(files) == 1 else 2)
+            level = 1 if len(files) == 1 else 2
+            if embed:
+                from .render.animate import player_script
+
+                motion = result.animation_html()
+                text = result.html(level=level, animation=motion)
+                scripts += [player_script(result.animation_id)] if motion else []
+            else:
+                text = None if standalone else _rendered(result, fmt, level)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -152,8 +180,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     if document and fmt == "html":
         from .render import html
 
-        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document]),
-                   nl=False)
+        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document],
+                             scripts=scripts), nl=False)
     elif document:
         from .render import writeup
 
@@ -198,7 +226,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         result = report.run
         for problem in result.problems:
             if problem.error:
-                click.echo(f"gyro: {problem.error}", err=True)
+                click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
         click.echo(check_report.as_json(result) if fmt == "json" else check_report.table(result),
                    nl=fmt == "json")
         if junit_file:
@@ -232,7 +260,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     except InputError as err:
         fail(err)
     for line in graded.errors:
-        click.echo(f"gyro: {line}", err=True)
+        click.echo(f"gyro: {terminal_text(line)}", err=True)
     click.echo(grades_report.as_json(graded) if fmt == "json" else grades_report.table(graded),
                nl=fmt == "json")
     if graded.errors:
@@ -240,20 +268,29 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
 
 @main.command("new")
-@click.argument("kind")
+@click.argument("kind", required=False)
 @click.option("-o", "--output", metavar="FILE", help="Write the template to FILE (not stdout).")
 @click.option("--force", is_flag=True, help="Replace FILE if it exists.")
-def new(kind: str, output: str | None, force: bool) -> None:
-    """Print (or write) a commented problem template with every key of KIND."""
+def new(kind: str | None, output: str | None, force: bool) -> None:
+    """Print (or write) a commented problem template with every key of KIND.
+
+    Without KIND, list the kinds to choose from."""
     from .commands.authoring import template
 
+    if kind is None:
+        from . import kinds as registry
+
+        click.echo("gyro new KIND writes a template; KIND is one of:")
+        for name in registry.names():
+            click.echo(f"  {name:<19} {registry.get(name).summary}")
+        return
     try:
         text = template(kind)
         if output:
             from .core.files import write_atomic
 
             write_atomic(output, text, force=force)
-            click.echo(f"wrote {output}", err=True)
+            click.echo(f"wrote {terminal_text(output)}", err=True)
         else:
             click.echo(text, nl=False)
     except InputError as err:
@@ -357,6 +394,10 @@ def kinds() -> None:
                "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
                "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
                "Nm, kN m (docs/real_problems.md)")
+
+
+from .commands.export import export as _export  # noqa: E402 - gyro export (docs/course.md)
+main.add_command(_export)
 
 
 if __name__ == "__main__":

@@ -300,3 +300,23 @@ def test_rolling_disk_animation_is_integrated():
     scene, runs = build_scene(str(PROBLEMS / "rolling_hoop_stable.yaml"), periods=1, fps=10)
     assert any("Integrated" in n for n in scene.notes)
     assert len(scene.panels) == 2      # the whole circle, and a close view of the hoop
+
+
+def test_solve_html_embeds_the_animation_only_where_the_kind_moves(run, tmp_path):
+    """--animate with --format html: a canvas in the released top's article, none in a
+    kind that does not move, and the page allows exactly the embedded players' scripts."""
+    import base64
+    import hashlib
+    import re
+
+    out = run("solve", "--format", "html", "--animate", PROBLEMS / "11_2_released_top.yaml",
+              PROBLEMS / "gyrocompass_disc.yaml")
+    assert out.exit_code == 0, out.output
+    page = out.output
+    assert page.count("<canvas") == 1
+    scripts = [s for s in re.findall(r"<script>(.*?)</script>", page, re.S)]
+    assert len(scripts) == 1
+    digest = base64.b64encode(hashlib.sha256(scripts[0].encode()).digest()).decode()
+    assert f"script-src 'sha256-{digest}'" in page
+    refused = run("solve", "--format", "text", "--animate", PROBLEMS / "11_3.yaml")
+    assert refused.exit_code == 2 and "--format html" in refused.output

@@ -182,3 +182,30 @@ def test_folder_page_and_check_report_in_chromium(browser, axe, pages, shots, tm
         assert target.endswith("-precession") and page.locator(target).is_visible()
     finally:
         page.close()
+
+
+def test_solution_page_embeds_animations_that_play(browser, axe, pages, shots):
+    """`gyro solve --format html --animate`: each moving problem's article carries its
+    animation; the page's CSP lets exactly those players run (a blocked script would be a
+    console error), and every canvas is drawn."""
+    from click.testing import CliRunner
+
+    from gyro_cli.cli import main
+
+    names = ["11_2_released_top.yaml", "11_3.yaml", "11_1.yaml"]
+    out = CliRunner().invoke(main, ["solve", "--format", "html", "--animate"]
+                             + [str(ROOT / "problems" / n) for n in names])
+    assert out.exit_code == 0, out.output
+    assert out.output.count("<canvas") == 3 and "script-src 'sha256-" in out.output
+    path = _write(pages, "animated.html", out.output)
+    assert _inspect(browser, axe, path, shots) == []
+    page = browser.new_page(viewport={"width": 1024, "height": 800})
+    try:
+        page.goto(path.as_uri())
+        page.wait_for_timeout(400)
+        ink = page.evaluate("""() => Array.from(document.querySelectorAll('canvas')).map(c => {
+            const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; })""")
+    finally:
+        page.close()
+    assert len(ink) == 3 and min(ink) > 1000

@@ -367,7 +367,7 @@ find: {{couple: N*m, effect: null}}
      "cannot pitch through 90 deg"),
     (SHIP.format(extra="  motion: rolling\n  speed: 10 m/s"), "belongs to `motion: steering`"),
     (SHIP.format(extra="  motion: sideways"), "expected one of steering, pitching, rolling"),
-    (SHIP.replace("clockwise_from_stern", "clockwise_from_rear").format(
+    (SHIP.replace("clockwise_from_stern", "clockwise_from_port").format(
         extra="  speed: 1 m/s\n  turn_radius: 5 m"), "expected one of clockwise_from_stern"),
     (SHIP.replace("  rotor_sense: clockwise_from_stern\n", "").format(
         extra="  speed: 1 m/s\n  turn_radius: 5 m"), "rotor_sense"),

@@ -100,9 +100,29 @@ def diagnose(expected: float, got: float, half_width: float,
 
 
 
+# Labels of roots: values of one answer that a book may quote in any order, or one of.
+ROOT_LABELS = frozenset({"slow", "fast", "approximation", "rotor side heavier",
+                         "block side heavier"})
+
+
+def ordered(labels: list[str]) -> bool:
+    """Whether an answer's values have a fixed order (A then B, outer then inner, a
+    force's components, a matrix's entries): labelled, and not labelled as roots."""
+    return bool(labels) and not ROOT_LABELS & set(labels)
+
+
+def match_in_order(n_expected: int, n_computed: int) -> list[tuple[int | None, int | None]]:
+    """Pairs for an ordered answer: the i-th expected value with the i-th computed one."""
+    out: list[tuple[int | None, int | None]] = [(i, i if i < n_computed else None)
+                                                for i in range(n_expected)]
+    return out + [(None, j) for j in range(n_expected, n_computed)]
+
+
 def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
             strict: bool = True) -> list[AnswerCheck]:
-    """Compare the expected values of one answer with its computed roots (as sets).
+    """Compare the expected values of one answer with its computed values: roots as sets
+    (each expected value with its nearest root), an ordered answer (labelled A, B, outer,
+    inner, components) position by position.
 
     With ``strict`` False a computed root that no expected value claims, where
     every expected value found its root, is "not keyed": listed, not failed
@@ -135,11 +155,15 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     def within(i: int, j: int) -> bool:
         return abs(computed[j] - float(values[i].si)) <= widths_si[i] * (1 + 1e-12) + 1e-300
 
-    pairs = match_roots([float(v.si) for v in values], computed, within)
-    # A root equal to one an expected value already matched (the moment, the
-    # same for both precession rates) is covered by it, not a missing value.
-    pairs = [(i, j) for i, j in pairs
-             if i is not None or not any(within(k, j) for k in range(len(values)))]
+    in_order = ordered(labels)
+    if in_order:
+        pairs = match_in_order(len(values), len(computed))
+    else:
+        pairs = match_roots([float(v.si) for v in values], computed, within)
+        # A root equal to one an expected value already matched (the moment, the
+        # same for both precession rates) is covered by it, not a missing value.
+        pairs = [(i, j) for i, j in pairs
+                 if i is not None or not any(within(k, j) for k in range(len(values)))]
     all_found = all(j is not None and within(i, j) for i, j in pairs if i is not None)
     several = len(values) > 1 or len(pairs) > 1
     for position, (i, j) in enumerate(pairs):
@@ -201,7 +225,13 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                                  f"express in {unit}")
             others = [c for k, c in enumerate(computed) if k != j]
             check.slip = diagnose(float(value.si), got_si, width_si, others)
-            if check.slip and check.slip.startswith("the other root"):
+            if check.slip and check.slip.startswith("the other root") and in_order:
+                k = next(k for k, c in enumerate(computed)
+                         if k != j and abs(c - float(value.si)) <= width_si)
+                where = labels[k] if k < len(labels) and labels[k] else f"value {k + 1}"
+                check.slip = (f"the order: {value.text} is the computed {where}; this answer "
+                              f"lists {', '.join(labels)} in that order")
+            elif check.slip and check.slip.startswith("the other root"):
                 check.slip = _other_root(value, others, width_si, unit)
         out.append(check)
     return out

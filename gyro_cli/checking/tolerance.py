@@ -16,7 +16,7 @@ from .expected import _guarded
 DEFAULT_TOLERANCE = "1%"
 _SIG = re.compile(r"\s*(\d{1,2})\s*(?:sig|sf|s\.f\.|sig\s*figs?|significant\s+figures?)\s*",
                   re.I)
-_PERCENT = re.compile(r"\s*((?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)\s*"
+_PERCENT = re.compile(r"\s*([-+]?\s*(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)\s*"
                       r"(?:%|percent|per\s*cent|pct)\s*", re.I)
 _MAGNITUDE = re.compile(r"\s*,?\s*\b(?:magnitudes?|abs)\b\s*,?\s*", re.I)
 
@@ -65,7 +65,11 @@ def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> 
         return dataclasses.replace(one, magnitude=True, text=text)
     match = _PERCENT.fullmatch(text)
     if match:
-        fraction = float(match.group(1)) / 100
+        fraction = float(match.group(1).replace(" ", "")) / 100
+        if fraction < 0:
+            raise InputError(f"a relative tolerance must be positive (a width either side of "
+                             f"the expected value), got {text!r}; write e.g. "
+                             f"'{text.lstrip().lstrip('-').strip()}'", key=key)
         if not 0 <= fraction <= 1:
             raise InputError(f"a relative tolerance lies between 0% and 100%, got {text!r}",
                              key=key)

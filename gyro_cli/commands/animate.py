@@ -471,7 +471,6 @@ BUILDERS = {"released_top": _released, "steady_precession": _steady,
 def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
                 fps: float = 30.0):
     """(Scene, simulations) for a problem file; InputError if its kind does not move."""
-    from ..render.animate import Scene
     from ..solving.problem import load
     from ..solving.solve import solve
 
@@ -481,12 +480,19 @@ def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
                          f"is kind {problem.kind.name!r}", file=path, key="kind")
     if periods is not None and not (math.isfinite(periods) and periods > 0):
         raise InputError("--periods must be a positive number")
-    result = solve(problem)
+    return scene_of(problem, solve(problem), periods, speed, fps, path)
+
+
+def scene_of(problem, result, periods: float | None = None, speed: float = 1.0,
+             fps: float = 30.0, path: str | None = None):
+    """(Scene, simulations) for a problem already solved (its kind one of KINDS)."""
+    from ..render.animate import Scene
+
     try:
         panels, clock, notes, sims = BUILDERS[problem.kind.name](
             problem, result, periods or DEFAULT_PERIODS, speed, fps)
     except InputError as err:
-        raise err.located(file=path) from None
+        raise err.located(file=path or problem.file) from None
     title = f"{problem.id}  {problem.title}".strip()
     return Scene(title, panels, clock.times, fps, notes), sims
 

@@ -68,17 +68,22 @@ def template(kind_name: str) -> str:
            _line('source: ""', "optional: book, chapter, problem number"),
            _line("notes:", "optional: lines printed with the worked answer"),
            "  - Spin is the rate relative to the precessing frame (psidot)."
-           if (kind.param("spin") and kind.param("spin").symbol == "psidot")
+           if kind.param("spin") and "precessing frame" in kind.param("spin").doc
            else "  - State here what the problem assumes.",
            "",
            _line("given:", "required: the data, each with its unit")]
     if not given_ex:
         out.append("  # (fill in: uncomment and edit the keys this problem gives)")
-    params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
+    body = [p for p in BODY_PARAMS if p.name in kind.extra.get(
+        "body_keys", [b.name for b in BODY_PARAMS]) and (p.name != "g" or kind.extra.get(
+            "gravity", True))] if kind.uses_body else []
+    params = list(kind.params) + body
     for i, p in enumerate(params):
         if kind.uses_body and i == len(kind.params):
-            out.append("  # the body: mass or weight; J or k_axial; I_pivot, k_pivot, I_cg, "
-                       "k_cg or shape; cg_distance")
+            out.append("  # the body: " + ("mass or weight; J or k_axial; I_pivot, k_pivot, "
+                                           "I_cg, k_cg or shape; cg_distance"
+                                           if "body_keys" not in kind.extra else
+                                           "the rotor's J, or k_axial with mass, or a shape"))
         what = p.dimension
         comment = f"{what}: {p.doc}" + (f" (default {p.default})" if p.default else "")
         if p.name in given_ex:
@@ -199,7 +204,17 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             words: list = list(p.choices)
             if set(words) == {"true", "false"}:
                 words += [True, False]  # YAML reads `false` as a boolean
-            given[p.name] = {"enum": words, "description": p.doc}
+            # the books' spellings (docs/real_problems.md), with _ or spaces
+            spelt = [w for w, _ in p.words] + [c for c in p.choices if "_" in c]
+            words += [w for w, _ in p.words] + [w.replace("_", " ") for w in spelt]
+            if any("clockwise" in str(w) for w in words):
+                # a sense of rotation, in any of the books' phrasings (anticlockwise,
+                # seen from the stern, ...): the loader reads it or says why not
+                given[p.name] = {"anyOf": [{"enum": words},
+                                           {"type": "string", "pattern": "[Cc][Ll][Oo][Cc][Kk]"}],
+                                 "description": p.doc}
+            else:
+                given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
             given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
         elif p.dimension == "particles":

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from ..core.errors import InputError
+from ..core.errors import InputError, terminal_text
 from ..core.work import num
 
 RPM = 2 * math.pi / 60
@@ -157,9 +157,29 @@ def run(setup: Setup, periods: float, progress: Callable[[float], None] | None =
     t_end = periods * setup.period
     samples = int(min(MAX_SAMPLES, max(201, round(periods * SAMPLES_PER_PERIOD) + 1)))
     try:
-        return simulate(setup.params, setup.params, t_end, samples=samples, progress=progress)
+        return simulate(setup.params, setup.params, t_end, samples=samples, progress=progress,
+                        theta_range=_theta_range(setup.analytic))
     except (ValueError, RuntimeError) as err:
         raise InputError(f"cannot simulate: {err}", file=setup.problem.file) from None
+
+
+def _shortest_run(setup: Setup) -> float:
+    """The least run whose constant theta means a steady motion: a nutation would show
+    within 2 pi I / (J omega_z), the fast top's nutation period (or within one unit of
+    --periods, if shorter)."""
+    p = setup.params
+    omega_z = abs(p.spin + p.precession0 * math.cos(p.theta0))
+    fast = 2 * math.pi * p.I / (p.J * omega_z) if omega_z and p.J else math.inf
+    return min(setup.period, fast)
+
+
+def _theta_range(analytic: dict) -> tuple[float, float] | None:
+    """The analytic nutation bounds, if finite (they bound the rates of the whole run)."""
+    lo, hi = analytic.get("theta_min"), analytic.get("theta_max")
+    if lo is None or hi is None or not (math.isfinite(lo) and math.isfinite(hi)):
+        return None
+    # a hair of margin: the integrated theta may pass the bound by round-off
+    return max(0.0, min(lo, hi) - 1e-6), min(math.pi, max(lo, hi) + 1e-6)
 
 
 def comparison(setup: Setup, sim) -> dict:
@@ -169,7 +189,7 @@ def comparison(setup: Setup, sim) -> dict:
     simulated = {"theta_min": sim.theta_min, "theta_max": sim.theta_max,
                  "nutation_period": sim.nutation_period,
                  "mean_precession": sim.mean_precession if sim.precession_resolved else None,
-                 "motion": motion_of(sim)}
+                 "motion": motion_of(sim, shortest=_shortest_run(setup))}
     unreached = []
     if sim.theta_varies:
         # theta's largest (least) value in a run without a maximum (minimum) is at an end
@@ -276,7 +296,8 @@ def text(report: dict, periods: float) -> str:
         lines.append(f"Note: {note}")
     for kind, path in report.get("outputs", {}).items():
         lines.append(f"Wrote {kind}: {path}")
-    return "\n".join(lines) + "\n"
+    # the id and file names come from the user: no escape sequence reaches the terminal
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def csv_text(sim) -> str:

@@ -28,25 +28,126 @@ BODY_PARAMS: tuple[Param, ...] = (
     Param("k_pivot", "length", "k_O", "transverse radius of gyration about the fixed point"),
     Param("I_cg", "inertia", "I_G", "transverse moment of inertia about the centre of mass"),
     Param("k_cg", "length", "k_G", "transverse radius of gyration about the centre of mass"),
-    Param("shape", "word", "shape", "disk, ring, cylinder, sphere or cone (solid, apex at the "
-          "fixed point)", choices=("disk", "ring", "cylinder", "sphere", "cone")),
-    Param("radius", "length", "r", "radius of the shape"),
+    Param("shape", "word", "shape", "disk, ring, cylinder, sphere, cone (solid, apex at the "
+          "fixed point), shell (thin tube), rod, hollow_sphere, box (square section) or "
+          "annulus", choices=("disk", "ring", "cylinder", "sphere", "cone", "shell", "rod",
+                              "hollow_sphere", "box", "annulus"),
+          words=(("disc", "disk"), ("solid_disk", "disk"), ("solid_disc", "disk"),
+                 ("hoop", "ring"), ("thin_ring", "ring"), ("solid_cylinder", "cylinder"),
+                 ("solid_sphere", "sphere"), ("solid_cone", "cone"),
+                 ("thin_cylindrical_shell", "shell"), ("cylindrical_shell", "shell"),
+                 ("tube", "shell"), ("thin_tube", "shell"), ("spherical_shell", "hollow_sphere"),
+                 ("thin_spherical_shell", "hollow_sphere"), ("thin_rod", "rod"),
+                 ("slender_rod", "rod"), ("hollow_cylinder", "annulus"),
+                 ("thick_ring", "annulus"), ("washer", "annulus"), ("block", "box"))),
+    Param("radius", "length", "r", "radius of the shape (the outer radius of an annulus)"),
     Param("diameter", "length", "d", "diameter of the shape"),
-    Param("length", "length", "L", "length of a cylinder along its axis"),
+    Param("inner_radius", "length", "r_i", "inner radius of an annulus"),
+    Param("width", "length", "w", "side of a box's square cross-section"),
+    Param("length", "length", "L", "length of a cylinder, shell, rod, box or annulus along "
+          "its axis"),
     Param("height", "length", "h", "height of a cone, apex to base"),
     Param("cg_distance", "length", "l", "fixed point to centre of mass along the symmetry axis"),
 )
 
-# shape -> (J / (m r^2) with its formula text, I_G as a function of m, r, L, with its text)
-SHAPES: dict[str, tuple[float, str, Callable[[float, float, float], float], str]] = {
-    "disk": (0.5, "m r^2 / 2", lambda m, r, L: m * r * r / 4, "m r^2 / 4"),
-    "ring": (1.0, "m r^2", lambda m, r, L: m * r * r / 2, "m r^2 / 2"),
-    "cylinder": (0.5, "m r^2 / 2", lambda m, r, L: m * (3 * r * r + L * L) / 12,
-                 "m (3 r^2 + L^2) / 12"),
-    "sphere": (0.4, "2 m r^2 / 5", lambda m, r, L: 0.4 * m * r * r, "2 m r^2 / 5"),
-    "cone": (0.3, "3 m r^2 / 10", lambda m, r, h: m * (3 * r * r / 20 + 3 * h * h / 80),
-             "m (3 r^2 / 20 + 3 h^2 / 80)"),
+@dataclass(frozen=True)
+class Shape:
+    """A uniform body of revolution (or square section) about its symmetry axis.
+
+    ``J`` and ``I_G`` take the mass and the dimensions (r, r_i, w, L, h; SI) and give the
+    axial and the transverse moment about the centre of mass; ``needs`` and ``may`` are
+    the dimension keys it must and may have (radius stands for radius or diameter).
+    """
+
+    J_text: str
+    J: Callable[..., float]
+    I_G_text: str
+    I_G: Callable[..., float]
+    needs: tuple[str, ...]
+    may: tuple[str, ...] = ()
+
+
+def _sq(x: float) -> float:
+    """x^2 as a product: inf past the float range, where x ** 2 raises OverflowError."""
+    return x * x
+
+
+SHAPES: dict[str, Shape] = {
+    "disk": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
+                  "m r^2 / 4", lambda m, d: m * _sq(d["r"]) / 4, ("radius",)),
+    "ring": Shape("m r^2", lambda m, d: m * _sq(d["r"]),
+                  "m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2, ("radius",)),
+    "cylinder": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
+                      "m (3 r^2 + L^2) / 12", lambda m, d: m * (3 * _sq(d["r"]) + _sq(d["L"])) / 12,
+                      ("radius",), ("length",)),
+    "sphere": Shape("2 m r^2 / 5", lambda m, d: 0.4 * m * _sq(d["r"]),
+                    "2 m r^2 / 5", lambda m, d: 0.4 * m * _sq(d["r"]), ("radius",)),
+    "cone": Shape("3 m r^2 / 10", lambda m, d: 0.3 * m * _sq(d["r"]),
+                  "m (3 r^2 / 20 + 3 h^2 / 80)",
+                  lambda m, d: m * (3 * _sq(d["r"]) / 20 + 3 * _sq(d["h"]) / 80),
+                  ("radius", "height")),
+    # thin cylindrical tube: all its mass at r; a ring at each section, spread over L
+    "shell": Shape("m r^2", lambda m, d: m * _sq(d["r"]),
+                   "m r^2 / 2 + m L^2 / 12", lambda m, d: m * _sq(d["r"]) / 2 + m * _sq(d["L"]) / 12,
+                   ("radius", "length")),
+    "rod": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
+                 "m (3 r^2 + L^2) / 12", lambda m, d: m * (3 * _sq(d["r"]) + _sq(d["L"])) / 12,
+                 ("length",), ("radius",)),
+    "hollow_sphere": Shape("2 m r^2 / 3", lambda m, d: 2 * m * _sq(d["r"]) / 3,
+                           "2 m r^2 / 3", lambda m, d: 2 * m * _sq(d["r"]) / 3, ("radius",)),
+    "box": Shape("m w^2 / 6", lambda m, d: m * _sq(d["w"]) / 6,
+                 "m (w^2 + L^2) / 12", lambda m, d: m * (_sq(d["w"]) + _sq(d["L"])) / 12,
+                 ("width", "length")),
+    "annulus": Shape("m (r^2 + r_i^2) / 2", lambda m, d: m * (_sq(d["r"]) + _sq(d["r_i"])) / 2,
+                     "m (3 (r^2 + r_i^2) + L^2) / 12",
+                     lambda m, d: m * (3 * (_sq(d["r"]) + _sq(d["r_i"])) + _sq(d["L"])) / 12,
+                     ("radius", "inner_radius"), ("length",)),
 }
+
+DIMENSION_KEYS = {"radius": "r", "inner_radius": "r_i", "width": "w", "length": "L",
+                  "height": "h"}
+
+
+def _shape_keys(shape: str) -> str:
+    spec = SHAPES[shape]
+    names = [("radius or diameter" if k == "radius" else k) for k in spec.needs]
+    names += [("radius or diameter" if k == "radius" else k) + " (optional)" for k in spec.may]
+    return ", ".join(names)
+
+
+def _check_shape_keys(values: dict, shape: str | None) -> None:
+    """Every dimension a shape needs is there; none it does not use is (a ring's length)."""
+    if shape is None:
+        for key in ("inner_radius", "width", "height", "length"):
+            if key in values:
+                raise InputError(f"{key} is a dimension of a shape: give `shape` too (see "
+                                 "`gyro kinds`)", key=f"given.{key}")
+        return
+    spec = SHAPES[shape]
+    used = set(spec.needs) | set(spec.may)
+    for key in ("radius", "diameter", "inner_radius", "width", "length", "height"):
+        if key in values and ("radius" if key == "diameter" else key) not in used:
+            hint = {("ring", "length"): "; a thin tube with a length is `shape: shell`",
+                    ("disk", "length"): "; a disk with a length is `shape: cylinder`",
+                    ("disk", "inner_radius"): "; a disk with a hole is `shape: annulus`",
+                    ("ring", "inner_radius"): "; a thick ring is `shape: annulus`"}.get(
+                (shape, key), "")
+            raise InputError(f"shape {shape} does not use {key}: its keys are "
+                             f"{_shape_keys(shape)}{hint}", key=f"given.{key}")
+    for key in spec.needs:
+        if key == "radius" and "radius" not in values and "diameter" not in values:
+            raise InputError(f"shape {shape!r} needs radius or diameter (its keys: "
+                             f"{_shape_keys(shape)})", key="given.shape")
+        if key != "radius" and key not in values and not (shape == "cone"):
+            raise InputError(f"shape {shape} needs {key} (its keys: {_shape_keys(shape)})",
+                             key=f"given.{key}")
+    if shape == "annulus" and values["inner_radius"] >= _outer(values):
+        raise InputError("inner_radius must be less than the outer radius", 
+                         key="given.inner_radius")
+
+
+def _outer(values: dict) -> float:
+    return values["radius"] if "radius" in values else values["diameter"] / 2
 
 
 @dataclass(frozen=True)
@@ -99,13 +200,15 @@ def _positive(values: dict, key: str, allow_zero: bool = False) -> None:
     value = values.get(key)
     if isinstance(value, float) and (value < 0 or (value == 0 and not allow_zero)):
         need = "zero or positive" if allow_zero else "positive"
-        raise InputError(f"must be {need}, got {value:g} (SI)", key=f"given.{key}")
+        hint = ("; where the mass plays no part (only a couple or a rate is asked), leave "
+                "mass out" if key in ("mass", "weight") and value == 0 else "")
+        raise InputError(f"must be {need}, got {value:g} (SI){hint}", key=f"given.{key}")
 
 
 def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     """Make the Body from SI values; writes the 'Body' section of the answer."""
     for key in ("mass", "weight", "g", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg",
-                "radius", "diameter", "length", "height"):
+                "radius", "diameter", "length", "height", "inner_radius", "width"):
         _positive(values, key)
     _positive(values, "cg_distance", allow_zero=True)
     if "mass" in values and "weight" in values:
@@ -120,6 +223,7 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
                          key="given.mass")
     if "radius" in values and "diameter" in values:
         raise InputError("give radius or diameter, not both", key="given.diameter")
+    _check_shape_keys(values, values.get("shape"))
 
     work.section("Body")
     g = values.get("g", G_US if us_customary else G_SI)
@@ -144,8 +248,6 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     if shape == "cone" and l is None and "height" in values:
         l = work.step("l", "3 h / 4", f"3 ({qty(values['height'], 'm')}) / 4",
                       0.75 * values["height"], "m", note="apex at the fixed point")
-    if shape and r is None:
-        raise InputError(f"shape {shape!r} needs radius or diameter", key="given.shape")
     J = _axial(values, m, r, shape, work)
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
@@ -191,11 +293,21 @@ def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Wor
         k = values["k_axial"]
         return work.step("J", "m k_z^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
     if shape:
-        factor, formula, _, _ = SHAPES[shape]
-        return work.step("J", formula, substitute(formula, m=qty(m, "kg"), r=qty(r, "m")),
-                         factor * m * r * r, "kg*m^2",
-                         note=f"({shape})")
+        spec, dims = SHAPES[shape], _dimensions(values, r)
+        return work.step("J", spec.J_text, _substituted(spec.J_text, m, dims),
+                         spec.J(m, dims), "kg*m^2", note=f"({shape.replace('_', ' ')})")
     return None
+
+
+def _dimensions(values: dict, r: float | None) -> dict[str, float]:
+    """The shape's dimensions by symbol (r, r_i, w, L, h), 0 where not given."""
+    dims = {symbol: values.get(key, 0.0) for key, symbol in DIMENSION_KEYS.items()}
+    dims["r"] = r if r is not None else 0.0
+    return dims
+
+
+def _substituted(formula: str, m: float, dims: dict[str, float]) -> str:
+    return substitute(formula, m=qty(m, "kg"), **{k: qty(v, "m") for k, v in dims.items()})
 
 
 def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
@@ -207,16 +319,17 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
         return work.step("I_G", "m k_G^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k,
                          "kg*m^2")
     if shape:
-        _, _, inertia, formula = SHAPES[shape]
-        along = values.get("height" if shape == "cone" else "length", 0.0)
         if shape == "cone" and "height" not in values:
             raise InputError("a cone needs its height", key="given.height")
-        subst = substitute(formula, m=qty(m, "kg"), r=qty(r, "m"), L=qty(along, "m"),
-                           h=qty(along, "m"))
-        what = {"cylinder": "cylinder of length L", "cone": "cone of height h"}.get(shape, shape)
-        if shape == "cylinder" and "length" not in values:
-            what = "cylinder; its length L not given, taken as 0"
-        return work.step("I_G", formula, subst, inertia(m, r, along), "kg*m^2",
+        spec, dims = SHAPES[shape], _dimensions(values, r)
+        what = {"cylinder": "cylinder of length L", "cone": "cone of height h",
+                "shell": "thin tube of length L", "rod": "rod of length L",
+                "box": "box of square section w and length L",
+                "annulus": "annulus of length L"}.get(shape, shape.replace("_", " "))
+        if shape in ("cylinder", "annulus") and "length" not in values:
+            what = f"{shape}; its length L not given, taken as 0"
+        return work.step("I_G", spec.I_G_text, _substituted(spec.I_G_text, m, dims),
+                         spec.I_G(m, dims), "kg*m^2",
                          note=f"({what}, about its centre of mass)")
     return None
 
@@ -265,3 +378,60 @@ def spin_angular_momentum(given, work: Work) -> float:
     spin = given["spin"]
     return work.step("H", "J psidot", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
                      "kg m^2/s", ref="angular momentum of the rotor, H = J omega_z")
+
+
+# ---- the vehicles' data as books give them ---------------------------------------
+
+def vehicle_params(*rotors: str) -> tuple[Param, ...]:
+    """The keys a vehicle kind adds for books' data: its weight, and each rotor (wheel,
+    axle, engine) by its mass and radius of gyration."""
+    params = [Param("weight", "force", "W", "instead of mass: the weight ('weighs 20 kN'); "
+                    "m = W / g")]
+    for rotor in rotors:
+        params += [Param(f"{rotor}_mass", "mass", f"m_{rotor[0]}", f"instead of "
+                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k"),
+                   Param(f"{rotor}_k", "length", f"k_{rotor[0]}", f"the {rotor}'s radius of "
+                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2")]
+    return tuple(params)
+
+
+def vehicle_data(given, work: Work, *rotors: str):
+    """A copy of ``given`` with ``mass`` from ``weight`` and each ``<rotor>_inertia`` from
+    ``<rotor>_mass`` and ``<rotor>_k``, each written as a step."""
+    from dataclasses import replace
+
+    values = dict(given.values)
+    steps = []
+    if "weight" in values:
+        if "mass" in values:
+            raise InputError("give mass or weight, not both", key="given.weight")
+        W, g = values["weight"], values["g"]
+        if W <= 0:
+            raise InputError("weight must be positive", key="given.weight")
+        values["mass"] = W / g
+        steps.append(("m", "W / g", f"{qty(W, 'N')} / {qty(g, 'm/s^2')}", W / g, "kg"))
+    for rotor in rotors:
+        mass_key, k_key, inertia_key = f"{rotor}_mass", f"{rotor}_k", f"{rotor}_inertia"
+        if mass_key not in values and k_key not in values:
+            continue
+        if mass_key not in values or k_key not in values:
+            missing = k_key if mass_key in values else mass_key
+            raise InputError(f"{inertia_key} from the mass needs {mass_key} and {k_key} "
+                             f"({inertia_key} = {mass_key} {k_key}^2)", key=f"given.{missing}")
+        if inertia_key in values and inertia_key not in given.defaulted:
+            raise InputError(f"give {inertia_key}, or {mass_key} with {k_key}, not both",
+                             key=f"given.{mass_key}")
+        m, k = values[mass_key], values[k_key]
+        if m < 0 or k < 0:
+            raise InputError(f"{mass_key} and {k_key} cannot be negative",
+                             key=f"given.{mass_key if m < 0 else k_key}")
+        symbol = {"wheel": "I_w", "engine": "I_E", "axle": "I_axle"}.get(rotor, inertia_key)
+        values[inertia_key] = m * k * k
+        steps.append((symbol, f"m_{rotor[0]} k_{rotor[0]}^2",
+                      f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2"))
+    if steps:
+        work.section("Data as given")
+        for symbol, formula, substitution, value, unit in steps:
+            work.step(symbol, formula, substitution, value, unit)
+    return replace(given, values=values, defaulted={k for k in given.defaulted
+                                                    if values.get(k) == given.values.get(k)})

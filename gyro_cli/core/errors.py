@@ -35,7 +35,7 @@ class InputError(Exception):
             where.append(key)
         elif self.line:
             where.append(f"line {self.line}")
-        text = " ".join(self.message.split())  # always one line
+        text = _one_line(" ".join(self.message.split()))  # always one line, no escapes
         return ": ".join(where + [text])
 
 
@@ -54,13 +54,24 @@ def shown(value: object) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
-def _one_line(name: str) -> str:
-    """A file name or key as written, with line breaks and tabs shown as escapes."""
-    name = str(name)
-    if name.isprintable():
-        return name
-    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii")
-                   for c in name)
+def terminal_text(text: object) -> str:
+    """Text from a file, a sheet or a file name, safe to print on a terminal: on one line,
+    with line breaks, tabs, escape sequences (ESC), other control characters and bidi
+    overrides shown as escapes (``\\n``, ``\\x1b``, ``\\u202e``), never sent raw; a
+    no-break or other wide space is a plain space.
+
+    The one place every terminal output (reports, tables, messages) passes user strings
+    through; JSON, HTML, Markdown and LaTeX have their own escaping."""
+    text = str(text)
+    if text.isprintable():
+        return text
+    import unicodedata
+
+    return "".join(c if c.isprintable() else " " if unicodedata.category(c) == "Zs"
+                   else c.encode("unicode_escape").decode("ascii") for c in text)
+
+
+_one_line = terminal_text
 
 
 def internal_message(file: str | None, error: BaseException) -> str:

@@ -16,6 +16,7 @@ class Param:
     doc: str
     default: str | None = None  # a quantity string used when the key is absent
     choices: tuple[str, ...] = ()  # for word-valued keys (dimension "word")
+    words: tuple[tuple[str, str], ...] = ()  # other spellings of a choice: (spelling, choice)
 
 
 @dataclass(frozen=True)
@@ -26,3 +27,82 @@ class AnswerSpec:
     dimension: str | None
     symbol: str
     doc: str
+
+
+# ---- words as books write them ------------------------------------------------
+
+# Spellings of a rotation's sense and of a viewpoint, in every word-valued key.
+_PHRASES = (
+    ("anti_clockwise", "counterclockwise"), ("anticlockwise", "counterclockwise"),
+    ("counter_clockwise", "counterclockwise"), ("ccw", "counterclockwise"),
+    ("_when_seen_from_", "_from_"), ("_when_viewed_from_", "_from_"),
+    ("_as_seen_from_", "_from_"), ("_seen_from_", "_from_"), ("_viewed_from_", "_from_"),
+    ("_looking_from_", "_from_"), ("_from_the_", "_from_"),
+)
+
+# Opposite meanings: a suggestion never swaps one pole of these for the other.
+_POLES = (
+    (("anti", "counter", "ccw"), ("clockwise",)),
+    (("left", "port"), ("right", "starboard")),
+    (("ris", "ascend", "up"), ("fall", "descend", "down")),
+    (("stern", "aft", "rear", "back", "behind", "tail"), ("bow", "front", "fore", "nose")),
+    (("same",), ("opposite",)),
+)
+
+
+def normal_word(text: str) -> str:
+    """A word as a key's choices are written: lower case, ``_`` between words, the
+    rotation written ``counterclockwise`` (``anti-clockwise``, ``counter-clockwise``),
+    ``seen from the stern`` as ``from_stern``."""
+    word = "_".join(text.strip().lower().replace("-", " ").replace(".", " ").split())
+    word = f"_{word}_"
+    for spelling, choice in _PHRASES:
+        word = word.replace(spelling, choice)
+    return word.strip("_")
+
+
+def read_word(param: Param, text: str) -> str | None:
+    """The choice ``text`` names (a choice, or one of the param's other spellings), or None."""
+    word = normal_word(text)
+    if word in param.choices:
+        return word
+    return dict(param.words).get(word)
+
+
+def _pole(word: str, axis: tuple[tuple[str, ...], tuple[str, ...]]) -> int:
+    first, second = axis
+    if axis is _POLES[0]:  # counterclockwise contains clockwise: look at the prefix
+        if any(m in word for m in first):
+            return 0
+        token = next((t for t in word.split("_") if "clock" in t), None)
+        if token is None:
+            return -1
+        # "clockwise" alone is clockwise; anything before it ("couter", "ani") is a slip
+        # of counter- or anti-, never read as clockwise
+        return 1 if token.startswith("clock") else 0
+    has = [any(m in word for m in first), any(m in word for m in second)]
+    return -1 if has[0] == has[1] else (0 if has[0] else 1)
+
+
+def flips(text: str, choice: str) -> bool:
+    """Whether reading ``text`` as ``choice`` would turn a meaning into its opposite
+    (``anticlockwise_from_stern`` as ``clockwise_from_stern``, ``port`` as ``right``)."""
+    word = normal_word(text)
+    for axis in _POLES:
+        a, b = _pole(word, axis), _pole(choice, axis)
+        if a >= 0 and b >= 0 and a != b:
+            return True
+    return False
+
+
+def safe_choices(text: str, choices: tuple[str, ...]) -> list[str]:
+    """The choices a "did you mean" may offer for ``text``: none that flips its meaning, and
+    none that guesses a pole the text does not state where the choices differ on it
+    (``clockwise`` alone: from the stern or from the bow are opposite senses)."""
+    word = normal_word(text)
+    safe = [c for c in choices if not flips(text, c)]
+    for axis in _POLES:
+        poles = {_pole(c, axis) for c in safe}
+        if _pole(word, axis) < 0 and {0, 1} <= poles:
+            safe = [c for c in safe if _pole(c, axis) < 0]
+    return safe

@@ -134,8 +134,24 @@ def loader_class() -> Any:
         Loader.add_constructor(full, guarded(base.yaml_constructors[full], what))
     Loader.add_constructor("tag:yaml.org,2002:timestamp",
                            lambda self, node: str(self.construct_scalar(node)))
+
+    def construct_mapping(self: Any, node: Any, deep: bool = False) -> Any:
+        # A key is a name (a key of the format, a student, a problem id): an unquoted
+        # `11.10:`, `011:` or `yes:` keeps the characters written, not 11.1, 9 or True.
+        self.flatten_mapping(node)
+        for key, _ in node.value:
+            if isinstance(key, yaml.ScalarNode) and key.style in (None, "") and \
+                    key.tag in _NAME_TAGS:
+                key.tag = "tag:yaml.org,2002:str"
+        return base.construct_mapping(self, node, deep)
+
+    Loader.construct_mapping = construct_mapping
     _loader_class = Loader
     return Loader
+
+
+# Plain scalars YAML 1.1 turns into something else than text; as a key, text is meant.
+_NAME_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("int", "float", "bool", "timestamp")}
 
 
 def prescan(text: str) -> None:
@@ -212,7 +228,39 @@ def load(text: str) -> tuple[Any, Any]:
     loader = loader_class()(text)
     try:
         node = loader.get_single_node()
+        written = _mapping_values(node, yaml_module())
         data = loader.construct_document(node) if node is not None else None
+        # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
+        # merged ones first; give the node back the pairs as written, so that a key that
+        # overrides a merged one is not taken for a key written twice.
+        for mapping, pairs in written:
+            mapping.value = pairs
     finally:
         loader.dispose()
     return data, node
+
+
+def yaml_module() -> Any:
+    import yaml
+
+    return yaml
+
+
+def _mapping_values(node: Any, yaml: Any) -> list[tuple[Any, list]]:
+    """Every mapping node under ``node`` with its own list of pairs (iteratively; aliases
+    are the same node objects, visited once)."""
+    found: list[tuple[Any, list]] = []
+    seen: set[int] = set()
+    stack = [node] if node is not None else []
+    while stack:
+        item = stack.pop()
+        if id(item) in seen:
+            continue
+        seen.add(id(item))
+        if isinstance(item, yaml.MappingNode):
+            found.append((item, list(item.value)))
+            for key, value in item.value:
+                stack.extend((key, value))
+        elif isinstance(item, yaml.SequenceNode):
+            stack.extend(item.value)
+    return found

@@ -48,7 +48,8 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
 SI_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s", "kg*m": "kg m",
            "N*m/rad": "N m/rad", "N*m*s/rad": "N m s/rad"}
 
-ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
+ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian",
+               "grade"}
 US_MASS_OR_FORCE = {"pound", "ounce", "slug", "pound_force", "ounce_force", "ton", "short_ton",
                     "long_ton", "kip", "grain", "stone", "hundredweight", "short_hundredweight",
                     "long_hundredweight", "force_ounce", "force_pound", "force_ton", "dram"}
@@ -77,7 +78,26 @@ ALIASES: dict[str, tuple[str, str]] = {
     "kn": ("knot", "knot"), "kt": ("knot", "knot"), "kts": ("knot", "knot"),
     "Nm": ("newton * meter", "N m"), "kNm": ("kilonewton * meter", "kN m"),
     "t": ("metric_ton", "t"), "tonne": ("metric_ton", "t"), "tonnes": ("metric_ton", "t"),
+    # pint's cps is counts per second (1/s); on a rotor it is cycles (revolutions) per
+    # second, as Hz is: read with 2 pi, never silently as 1 rad/s.
+    "cps": ("revolution / second", "cps"), "CPS": ("revolution / second", "cps"),
 }
+# Whole units as books print them, with the dots of an abbreviation (the tokenizer would
+# read "r.p.m." as r * p * m) or a letter that alone means something else (pint's c is
+# the speed of light): the unit text is replaced by gyro's own spelling before reading.
+WHOLE_UNITS: dict[str, str] = {
+    "r.p.m.": "rpm", "r.p.m": "rpm", "R.P.M.": "rpm", "R.P.M": "rpm",
+    "r.p.s.": "rps", "r.p.s": "rps", "R.P.S.": "rps", "R.P.S": "rps",
+    "c/s": "cps", "c.p.s.": "cps", "c.p.s": "cps",
+}
+# Names refused with the readings they could have had: no wrong number is printed.
+REFUSED_NAMES: dict[str, str] = {
+    name: "a ton is ambiguous: a short ton (2000 lb = 907.2 kg), a long ton (2240 lb = "
+          "1016 kg) or a metric tonne (1000 kg); write short_ton, long_ton or t"
+    for name in ("ton", "tons", "Ton", "Tons", "TON")}
+# On an angular rate, a bare inverse minute or hour is a rotational frequency (ISO 80000-3:
+# n = 1450 min^-1 on a motor's plate is 1450 rev/min); pint would read it as rad/min.
+ISO_ROTATION_TIMES = {"minute": "rev/min", "hour": "rev/h"}
 # Units whose name already holds a quotient (rpm, mph): a prefix glued to one is refused.
 COMPOUND_UNITS = {"revolutions_per_minute", "revolutions_per_second", "mile_per_hour",
                   "kilometer_per_hour", "knot", "number_meter", "foot_per_second",
@@ -253,6 +273,7 @@ def _split(text: Any, key: str) -> tuple[float, str]:
     if not match:
         raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
     number, unit = match.group(1), match.group(2).strip()
+    unit = WHOLE_UNITS.get(unit, unit)
     if unit in _VALID:
         return float(number), unit
     words = _names(unit)
@@ -287,6 +308,8 @@ def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
     found: tuple[Any, str] | None
     if name == "1":
         found = (ureg.dimensionless, "1")
+    elif name in REFUSED_NAMES:
+        found = ("refused", REFUSED_NAMES[name])
     elif weight and name in WEIGHT_WORDS:
         target = WEIGHT_WORDS[name]
         found = (ureg.parse_units(target), "lbf" if target in ("lbf", "pound_force") else "ozf")
@@ -300,7 +323,13 @@ def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
             candidates = ureg.parse_unit_name(name)
         except (pint.errors.PintError, ValueError, KeyError, AttributeError):
             candidates = ()
-        if not candidates and name not in ("°",):
+        power = _POWER_SUFFIX.fullmatch(name)
+        base = _lookup(power.group(1), weight) if power and not candidates else None
+        if base is not None:
+            # kg.m2, kg m2: a power written without its ^ (books print m2 for m^2)
+            found = base if base[0] == "refused" else \
+                (base[0] ** int(power.group(2)), f"{base[1]}^{power.group(2)}")
+        elif not candidates and name not in ("°",):
             found = None
         elif candidates and all(prefix for prefix, _, _ in candidates) and \
                 any(unit in COMPOUND_UNITS for _, unit, _ in candidates):
@@ -315,6 +344,9 @@ def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
     if len(_NAMES) < 4096:
         _NAMES[cache_key] = found
     return found
+
+
+_POWER_SUFFIX = re.compile(r"([A-Za-z_]*[A-Za-z_])([2-4])")
 
 
 def _did_you_mean(name: str) -> str:
@@ -340,6 +372,7 @@ def _resolve(unit: str, key: str, text: Any, weight: bool = False) -> tuple[Any,
     ureg = registry()
     if not unit:
         return ureg.dimensionless, ""
+    unit = WHOLE_UNITS.get(unit, unit)
     tokens = tokenize(unit, text, key)
     single = len(tokens) == 1
     pos = 0
@@ -357,7 +390,8 @@ def _resolve(unit: str, key: str, text: Any, weight: bool = False) -> tuple[Any,
             raise InputError(f"unknown unit {value!r} in {text!r}{_did_you_mean(value)}",
                              key=key)
         if found[0] == "refused":
-            raise InputError(f"unknown unit {value!r} in {text!r}: {found[1]}", key=key)
+            what = "ambiguous" if value in REFUSED_NAMES else "unknown"
+            raise InputError(f"{what} unit {value!r} in {text!r}: {found[1]}", key=key)
         units, shown = found
         if not single and "/" in shown:  # km/h inside a product prints as kph
             shown = f"({shown})"
@@ -404,6 +438,10 @@ def _reading(unit: str, dimension: str, key: str, text: Any,
     ureg = registry()
     units, shown = _resolve(unit, key, text, weight)
     pint_dim = DIMENSIONS[dimension][0]
+    if dimension == "rate" and len(units._units) == 1:
+        (name, exponent), = units._units.items()
+        if exponent == -1 and name in ISO_ROTATION_TIMES:  # min^-1 on a rate: rev/min
+            return units * ureg.revolution, ISO_ROTATION_TIMES[name]
     if not weight and dimension in ("force", "moment") and \
             units.dimensionality != ureg.get_dimensionality(pint_dim) and \
             set(_names(unit)) & set(WEIGHT_WORDS):
@@ -471,12 +509,18 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
     pint_dim, si, words = DIMENSIONS[dimension]
     if quantity.dimensionality != ureg.get_dimensionality(pint_dim or "[]"):
         got = str(quantity.dimensionality)
-        if dimension != "angle" and set(units._units) & ANGLE_UNITS and got == "dimensionless":
+        if dimension != "angle" and _angles(units) and got == "dimensionless":
             got = "angle"
         raise InputError(f"expected {words}, got {text!r} (dimension {got})", key=key)
-    if dimension == "angle" and not (units._units and set(units._units) <= ANGLE_UNITS):
+    if dimension == "angle" and not (units._units and _angles(units) == set(units._units)):
         raise InputError(f"an angle needs a unit, deg or rad: got {text!r}", key=key)
-    if dimension == "time_per_angle" and not set(units._units) & ANGLE_UNITS:
+    if dimension == "dimensionless" and _angles(units):
+        # pint counts an angle as a plain number: `gear_ratio: 5 deg` would be 0.0873
+        would = quantity.to("dimensionless").magnitude
+        raise InputError(f"expected a plain number (a ratio or a count), got {text!r}: its "
+                         f"unit holds an angle ({', '.join(sorted(_angles(units)))}), which "
+                         f"would be read as {would:.4g}; write the number alone", key=key)
+    if dimension == "time_per_angle" and not _angles(units):
         # pint counts angles as plain numbers: `yr` alone would silently mean years per radian
         raise InputError(f"a time per angle needs an angle in its unit, such as 'yr/deg': got "
                          f"{text!r}", key=key)
@@ -498,6 +542,23 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
     return float(value), parsed
 
 
+def _angles(units: Any) -> set[str]:
+    """The names in ``units`` that are angles, prefixed or not (mrad, mdeg, grad)."""
+    ureg = registry()
+    found = set()
+    for name in units._units:
+        if name in ANGLE_UNITS:
+            found.add(name)
+            continue
+        try:
+            bases = {base for _, base, _ in ureg.parse_unit_name(name)}
+        except Exception:  # noqa: BLE001 - pint's own name lookup; no angle then
+            bases = set()
+        if bases & ANGLE_UNITS:
+            found.add(name)
+    return found
+
+
 def check_unit(text: Any, dimension: str, key: str) -> str:
     """Check a unit an answer is asked in (``find: {precession: rpm}``).
 
@@ -507,6 +568,11 @@ def check_unit(text: Any, dimension: str, key: str) -> str:
     if not isinstance(text, str) or not text.strip():
         raise InputError(f"expected a unit for this answer such as '{si_text(dimension)}', "
                          f"got {text!r}", key=key)
+    value = _NUMBER.fullmatch(text)
+    if value and not value.group(2).lstrip().startswith("/"):  # 1/s is a unit
+        raise InputError(f"expected a unit for this answer such as '{si_text(dimension)}', not "
+                         f"a value: got {text!r} (an expected value goes under `expected`)",
+                         key=key)
     parse("1 " + text, dimension, key)
     return display(text.strip(), dimension, key)
 

@@ -53,6 +53,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError(f"{wrong[0]} is a rate of the {'zyx' if sequence == 'zxz' else 'zxz'} "
                          f"sequence; this problem uses {sequence} ({first}_rate, {second}_rate, "
                          f"{third}_rate)", key=f"find.{wrong[0]}")
+    if find and find <= INERTIA_ONLY and not any(k in given for k in (second, third)):
+        # the inertia tensor needs no angles (Eq. 11.3): answer it alone
+        work.section("Conventions")
+        work.text("x, y, z: the body axes through the fixed point, about which the moments and "
+                  "products of inertia are taken; no angle or rate is needed for them")
+        if _inertia(given, find, work) is None:
+            raise InputError(f"{sorted(find)[0]} needs the body's inertia: give particles, "
+                             "I_x, I_y, I_z, or I and J", key="given.particles")
+        return
     for key in (second, third):
         if key not in given:
             raise InputError(f"Eq. 11.8 needs the angles {second} and {third}"
@@ -115,6 +124,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "about a line on which all its mass lies)", key="find.omega_H_angle")
 
 
+INERTIA_ONLY = frozenset({"I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx", "principal_moments"})
 FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z"}
 NEEDS_INERTIA = {"kinetic_energy", "H_x", "H_y", "H_z", "H_X", "H_Y", "H_Z", "angular_momentum",
                  "omega_H_angle", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx",

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 
+from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
@@ -32,6 +33,7 @@ from ..core.work import Work, num, qty
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    given = vehicle_data(given, work, 'wheel', 'axle', 'engine')
     for key in ("mass", "g", "cg_height", "track", "wheel_radius", "turn_radius"):
         if given[key] <= 0:
             raise InputError(f"{key} must be positive, got {num(given[key])}", key=f"given.{key}")
@@ -193,7 +195,7 @@ KIND = Kind(
         Param("turn_radius", "length", "R", "radius of the curve"),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
-    ),
+    ) + vehicle_params('wheel', 'axle', 'engine'),
     answers=(
         AnswerSpec("wheel_reactions", "force", "R", "[outer, inner]: vertical reaction on each "
                    "outer and each inner wheel"),

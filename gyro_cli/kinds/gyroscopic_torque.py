@@ -137,16 +137,20 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if cos != 0:
         body.require("I_cg")
     J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
-    if "spin" not in given:
-        raise InputError("give the rotor's spin relative to the frame", key="given.spin")
-    spin = given["spin"]
     work.section("Conventions")
-    work.text("K: the precession axis, upward (gravity along -K); k: the spin axis, from bearing "
-              "A to bearing B; spin and precession positive counter-clockwise seen from the tips "
-              "of k and of K (right-hand rule).")
+    work.text(("K: the precession axis, horizontal along the track (the axle tilts about it "
+               "while a wheel drops)" if "drop" in given else
+               "K: the precession axis, upward (gravity along -K)") +
+              "; k: the spin axis, from bearing A to bearing B; spin and precession positive "
+              "counter-clockwise seen from the tips of k and of K (right-hand rule).")
     work.text("n = K x k / sin(theta): the line of nodes, perpendicular to both the spin and "
-              "the precession axes (with k pointing east and K up, n points north).")
-
+              "the precession axes" + (" (vertical here)." if "drop" in given else
+                                       " (with k pointing east and K up, n points north)."))
+    if "drop" in given:
+        work.text("a wheel drops: the wheel set tilts about K at the rate Omega; k is the axle, "
+                  "from wheel A to wheel B, and the bearing_spacing L is the distance between "
+                  "the wheels (rails)")
+    spin = _spin(given, work)
     precession = _precession(given, J, I, spin, theta, work)
     work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
     work.text("H: the angular momentum of the rotor about its centre of mass; Omega: the "
@@ -175,9 +179,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if bearing_keys and "bearing_spacing" not in given:
         raise InputError(f"{bearing_keys[0]} is used only for bearing forces, which need "
                          "bearing_spacing", key="given.bearing_spacing")
-    if {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust"} & find \
+    if {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust",
+            "couple_forces"} & find \
             or "bearing_spacing" in given:
-        _bearings(given, M, precession, theta, work)
+        _bearings(given, find, M, precession, theta, work)
     if "counterweight_position" in find or "counterweight" in given:
         _counterweight(given, M, theta, work)
 
@@ -201,7 +206,7 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
                              "nothing to balance (the spin axis lies along the precession axis)",
                              key=f"given.{key}")
     wanted = find & {"bearing_forces", "bearing_side_forces", "bearing_loads", "axial_thrust",
-                     "counterweight_position"}
+                     "couple_forces", "counterweight_position"}
     if wanted:
         raise InputError(f"at theta = {deg} deg the gyroscopic moment is 0; {sorted(wanted)[0]} "
                          "is not computed for a spin axis along the precession axis",
@@ -213,24 +218,113 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
     work.answer("precession", "Omega", [precession], "rate")
 
 
+def _spin(given: Given, work: Work) -> float:
+    """psidot: given, or a road or rail wheel's v / r_w (rolling without slip)."""
+    if "wheel_radius" in given:
+        if "spin" in given:
+            raise InputError("give spin or wheel_radius (spin = v / r_w), not both",
+                             key="given.wheel_radius")
+        if "speed" not in given:
+            raise InputError("wheel_radius gives the spin with the vehicle's speed: "
+                             "psidot = v / r_w; give speed", key="given.speed")
+        r = given["wheel_radius"]
+        if r <= 0:
+            raise InputError(f"wheel_radius must be positive, got {num(r)} m",
+                             key="given.wheel_radius")
+        work.section("Spin of the wheels from the vehicle's speed")
+        work.text("psidot, the wheels' spin: they roll without slipping, so the axle's speed is "
+                  "v = psidot r_w")
+        return work.step("psidot", "v / r_w", f"{qty(given['speed'], 'm/s')} / {qty(r, 'm')}",
+                         given["speed"] / r, "rad/s")
+    if "spin" not in given:
+        raise InputError("give the rotor's spin relative to the frame (or the vehicle's speed "
+                         "and wheel_radius)", key="given.spin")
+    return given["spin"]
+
+
+def tilt_rate_uniform(drop: float, speed: float, drop_length: float, spacing: float) -> float:
+    """Tilt rate of an axle when one wheel drops ``drop`` evenly over ``drop_length`` of track
+    at ``speed``: the drop takes t = s / v, the axle turns through drop / L in it."""
+    return drop * speed / (drop_length * spacing)
+
+
+def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
+    """Greatest tilt rate when one wheel falls ``drop`` and rises again in ``drop_time`` with
+    simple harmonic motion: y = (drop / 2)(1 - cos(2 pi t / T)), so y' peaks at pi drop / T."""
+    return math.pi * drop / (drop_time * spacing)
+
+
+def _drop(given: Given, work: Work) -> float:
+    """Omega: the tilt rate of the axle while one wheel drops (Khurmi's defective ballasting)."""
+    if "bearing_spacing" not in given:
+        raise InputError("a wheel's drop tilts the axle at drop / L per unit time: give "
+                         "bearing_spacing, the distance between the wheels", 
+                         key="given.bearing_spacing")
+    h, L = given["drop"], given["bearing_spacing"]
+    if h <= 0 or L <= 0:
+        key = "drop" if h <= 0 else "bearing_spacing"
+        raise InputError(f"{key} must be positive", key=f"given.{key}")
+    how = [k for k in ("drop_length", "drop_time") if k in given]
+    if len(how) != 1:
+        raise InputError("give how the wheel drops: drop_length (the length of track over "
+                         "which it falls, with speed) or drop_time (the time in which it falls "
+                         "and rises again, simple harmonic)",
+                         key=f"given.{how[1]}" if how else "given.drop_length")
+    work.section("Tilt rate of the axle while the wheel drops")
+    if how == ["drop_length"]:
+        if "speed" not in given:
+            raise InputError("drop_length needs the vehicle's speed (the drop takes "
+                             "drop_length / v)", key="given.speed")
+        s, v = given["drop_length"], given["speed"]
+        if s <= 0:
+            raise InputError("drop_length must be positive", key="given.drop_length")
+        t = work.step("t", "s / v", f"{qty(s, 'm')} / {qty(v, 'm/s')}", s / v, "s",
+                      note="time the wheel takes to drop")
+        return work.step("Omega", "(h / L) / t", f"({qty(h, 'm')} / {qty(L, 'm')}) / "
+                         f"{qty(t, 's')}", tilt_rate_uniform(h, v, s, L), "rad/s",
+                         note="the axle turns through h / L (small angle) while the wheel drops")
+    T = given["drop_time"]
+    if T <= 0:
+        raise InputError("drop_time must be positive", key="given.drop_time")
+    work.text("the wheel falls h and rises again in the time T_d with simple harmonic motion: "
+              "y = (h / 2)(1 - cos(2 pi t / T_d)), whose greatest speed is (h / 2)(2 pi / T_d)")
+    y_dot = work.step("ydot_max", "(h / 2)(2 pi / T_d)", f"({qty(h, 'm')} / 2)(2 pi / "
+                      f"{qty(T, 's')})", math.pi * h / T, "m/s")
+    return work.step("Omega", "ydot_max / L", f"{qty(y_dot, 'm/s')} / {qty(L, 'm')}",
+                     tilt_rate_harmonic(h, T, L), "rad/s",
+                     note="greatest tilt rate of the axle")
+
+
 def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                 work: Work) -> float:
-    """Omega: given, from a path (v / R), or from an applied moment."""
-    ways = [k for k in ("precession", "speed", "moment") if k in given]
+    """Omega: given, from a path (v / R), from a wheel's drop, or from an applied moment."""
+    ways = [k for k in ("precession", "turn_radius", "drop", "moment") if k in given]
+    names = {"turn_radius": "speed with turn_radius", "drop": "a wheel's drop"}
     if len(ways) > 1:
-        raise InputError(f"give one of precession, speed (with turn_radius) or moment, not "
-                         f"{' and '.join(ways)}", key=f"given.{ways[1]}")
+        raise InputError(f"give one of precession, speed (with turn_radius), drop or moment, "
+                         f"not {' and '.join(names.get(w, w) for w in ways)}",
+                         key=f"given.{ways[1]}")
     if not ways:
-        raise InputError("give the precession (or speed and turn_radius, or the moment)",
-                         key="given.precession")
-    if "turn_radius" in given and ways != ["speed"]:
+        raise InputError("give the precession (or speed and turn_radius, a wheel's drop, or "
+                         "the moment)", key="given.turn_radius" if "speed" in given
+                         else "given.precession")
+    if "turn_radius" in given and "speed" not in given:
         raise InputError("turn_radius goes with speed (Omega = v / R)", key="given.turn_radius")
-    if "turn" in given and ways != ["speed"]:
+    if "speed" in given and not {"turn_radius", "wheel_radius", "drop_length"} & set(given.values):
+        raise InputError("speed gives the precession with turn_radius (Omega = v / R), the "
+                         "spin with wheel_radius (psidot = v / r_w) or a tilt rate with drop "
+                         "and drop_length", key="given.speed")
+    for key in ("drop_length", "drop_time"):
+        if key in given and ways != ["drop"]:
+            raise InputError(f"{key} goes with drop", key=f"given.{key}")
+    if "turn" in given and ways != ["turn_radius"]:
         raise InputError("turn (left or right) goes with speed and turn_radius",
                          key="given.turn")
     if ways == ["precession"]:
         return given["precession"]
-    if ways == ["speed"]:
+    if ways == ["drop"]:
+        return _drop(given, work)
+    if ways == ["turn_radius"]:
         R = given["turn_radius"]
         if R <= 0:
             raise InputError(f"turn_radius must be positive, got {num(R)} m",
@@ -275,7 +369,7 @@ def _sense(M: float, work: Work) -> None:
               "frame.")
 
 
-def _bearings(given: Given, M: float, precession: float, theta: float, work: Work) -> None:
+def _bearings(given: Given, find: frozenset[str], M: float, precession: float, theta: float, work: Work) -> None:
     body = given.body
     if "bearing_spacing" not in given:
         raise InputError("bearing forces need bearing_spacing (the distance AB)",
@@ -290,6 +384,16 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
         raise InputError(f"cg_position {num(a)} m puts the centre of mass outside the bearings "
                          f"(0 to {num(L)} m from A); write `arrangement: overhung` if the rotor "
                          "really overhangs a bearing", key="given.cg_position")
+    if "supported_mass" not in given and (body.mass is None or "drop" in given):
+        wanted = sorted(find & {"bearing_side_forces", "bearing_loads", "axial_thrust"})
+        if wanted:
+            raise InputError(f"{wanted[0]} needs the mass the bearings carry (mass, weight or "
+                             "supported_mass)" + (" and a vertical precession axis" if "drop"
+                                                  in given else "") +
+                             "; couple_forces needs none", key="given.mass"
+                             if "drop" not in given else f"find.{wanted[0]}")
+        _couple_only(given, M, L, "bearing_forces" in find, work)
+        return
     m = given["supported_mass"] if "supported_mass" in given else body.m
     if m <= 0:
         raise InputError("supported_mass must be positive", key="given.supported_mass")
@@ -351,12 +455,42 @@ def _bearings(given: Given, M: float, precession: float, theta: float, work: Wor
         work.text("a negative 'up' force pulls the rotor down: that bearing must hold the shaft "
                   "against lifting")
     work.answer("bearing_forces", "F", list(forces.up), "force", ["A", "B"])
+    work.answer("couple_forces", "F_couple", list(forces.couple), "force", ["A", "B"])
     work.answer("bearing_side_forces", "F_side", list(forces.side), "force", ["A", "B"])
     work.answer("bearing_loads", "|F|", list(forces.loads), "force", ["A", "B"])
     work.answer("axial_thrust", "T", [forces.thrust], "force")
     work.check(f"up: F_A + F_B = {qty(sum(forces.up), 'N')}, {ms} g sin(theta) + {ms} a_up = "
                f"{qty(m * g * sin + sum(forces.inertial), 'N')}; a F_A - b F_B = "
                f"{qty(a * forces.up[0] - b * forces.up[1], 'N m')}, M = {qty(M, 'N m')}")
+
+
+def couple_forces(moment: float, spacing: float) -> tuple[float, float]:
+    """The gyroscopic couple's share of the bearing (or rail) forces: +M / L at A, -M / L at B,
+    a pair of equal and opposite forces L apart whose moment is M."""
+    return moment / spacing, -moment / spacing
+
+
+def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> None:
+    """No mass (or a tilting axle): the couple's share of the bearing forces alone."""
+    why = ("the wheel set tilts about a horizontal axis, so the weight is not along K"
+           if "drop" in given else "no mass is given")
+    work.section("Forces of the gyroscopic couple on the bearings (rails)")
+    work.text(f"{why}: the forces below are the gyroscopic couple's share alone, equal and "
+              "opposite at A and B; the static load (the weight's share) is added to them "
+              "where the weight is known")
+    F_A, F_B = couple_forces(M, L)
+    work.step("F_A,couple", "+M / L", f"{qty(M, 'N*m')} / {qty(L, 'm')}", F_A, "N",
+              note="on the rotor at A, toward +K" if M >= 0 else "on the rotor at A")
+    work.step("F_B,couple", "-M / L", f"-({qty(M, 'N*m')}) / {qty(L, 'm')}", F_B, "N")
+    work.text("the rotor pushes each bearing (rail) the other way: one is loaded by |M| / L "
+              "more, the other relieved by as much")
+    work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
+    work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])
+    if warn:
+        work.warn(f"{why}: bearing_forces are the gyroscopic couple's share alone, +-M / L = "
+                  f"+-{qty(abs(F_A), 'N')}, without the weight's share"
+                  + ("" if "drop" in given else " (give mass for the whole force)"))
+    work.check(f"F_A,couple L = {qty(F_A * L, 'N m')} = M = {qty(M, 'N m')}; F_A + F_B = 0")
 
 
 def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
@@ -414,6 +548,14 @@ KIND = Kind(
               choices=("left", "right")),
         Param("moment", "moment", "M", "applied moment along the line of nodes, to find the "
               "precession it sustains"),
+        Param("wheel_radius", "length", "r_w", "radius of a road or rail wheel: spin = speed / "
+              "r_w (instead of spin)"),
+        Param("drop", "length", "h", "how far one wheel drops (the axle tilts about the track: "
+              "the precession)"),
+        Param("drop_length", "length", "s", "length of track over which the wheel drops at "
+              "speed: Omega = h v / (s L)"),
+        Param("drop_time", "time", "T_d", "time in which the wheel falls and rises again, "
+              "simple harmonic: greatest Omega = pi h / (T_d L)"),
         Param("bearing_spacing", "length", "L", "distance between bearings A and B on the spin "
               "axis"),
         Param("cg_position", "length", "a", "distance from bearing A to the centre of mass, "
@@ -444,6 +586,8 @@ KIND = Kind(
                    "forces"),
         AnswerSpec("axial_thrust", "force", "T", "force along the spin axis (A to B) on the "
                    "rotor"),
+        AnswerSpec("couple_forces", "force", "F_couple", "[A, B]: the gyroscopic couple's "
+                   "share of the bearing (rail) forces, +M / L and -M / L; needs no mass"),
         AnswerSpec("counterweight_position", "length", "b", "block positions for the "
                    "precession, ascending (one per spin sense)"),
     ),

@@ -259,7 +259,8 @@ KIND = Kind(
         AnswerSpec("angular_momentum", "angular_momentum", "H", "the rotor's J spin"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"J": "2e-4 kg m^2", "spin": "24000 rpm", "stiffness": "0.8 N m/rad",
                   "damping": "0.015 N m s/rad", "gimbal_inertia": "1e-4 kg m^2",
                   "rate": "5 deg/s"},

@@ -188,8 +188,21 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("normal_force", "N", [N], "force")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("moment", "M", [moment], "moment")
+    if "precession_period" in find:
+        _lap_time([Omega], work)
     work.check(f"moments about O along n: m g R - N R = {qty(m * g * R - N * R, 'N m')}; "
                f"dH_O/dt = {qty(dH, 'N m')}")
+
+
+def _lap_time(rates: list[float], work: Work) -> None:
+    """The time for one lap of the circle: the disk turns once about the vertical."""
+    if any(rate == 0 for rate in rates):
+        raise InputError("the precession is 0: the disk never completes a lap",
+                         key="find.precession_period")
+    work.section("Time for one lap of the circle")
+    periods = [work.step("T", "2 pi / |Omega|", f"2 pi / {qty(abs(rate), 'rad/s')}",
+                         2 * math.pi / abs(rate), "s") for rate in rates]
+    work.answer("precession_period", "T", periods, "time")
 
 
 def _free(given: Given, find: frozenset[str], work: Work) -> None:
@@ -266,6 +279,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("speed", "v", [s.speed for s in states], "speed")
     work.answer("precession", "Omega", [s.precession for s in states], "rate")
     work.answer("spin", "psidot", [s.spin for s in states], "rate")
+    if "precession_period" in find:
+        _lap_time([st.precession for st in states], work)
     if body.per_kg and "normal_force" in find:
         raise InputError("the normal force depends on the mass, which the rates do not need: "
                          "give mass or weight", key="given.mass")
@@ -340,6 +355,8 @@ KIND = Kind(
                    "about the axle, outward positive)"),
         AnswerSpec("moment", "moment", "M", "axle_pivot: net moment of gravity and the normal "
                    "force about the pin, positive lifting the disk"),
+        AnswerSpec("precession_period", "time", "T", "time for one lap of the circle, "
+                   "2 pi / |Omega|"),
         AnswerSpec("tilt", "angle", "beta", "free: tilt from the vertical"),
         AnswerSpec("path_radius", "length", "R", "free: radius of the contact point's circle"),
         AnswerSpec("speed", "speed", "v", "free: speed of the centre"),

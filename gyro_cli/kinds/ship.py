@@ -111,8 +111,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 def _refuse_foreign(given: Given, motion: str) -> None:
     """Keys of another motion are refused rather than silently ignored."""
     belongs = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
-               "amplitude": "pitching", "period": "pitching", "bow": "pitching",
-               "pitch_rate": "pitching", "roll_rate": "rolling"}
+               "turn_rate": "steering",
+               "bow": "pitching", "pitch_rate": "pitching", "roll_rate": "rolling",
+               **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS}}
     for key, owner in belongs.items():
         if key in given and owner != motion:
             raise InputError(f"{key} belongs to `motion: {owner}`, but motion is {motion}",
@@ -120,9 +121,27 @@ def _refuse_foreign(given: Given, motion: str) -> None:
 
 
 def _steering(given: Given, work: Work) -> V.Vector:
+    if "turn_rate" in given:
+        for key in ("speed", "turn_radius"):
+            if key in given:
+                raise InputError(f"give turn_rate, or speed and turn_radius (omega_p = v / R), "
+                                 f"not both", key=f"given.{key}")
+        rate = given["turn_rate"]
+        if rate <= 0:
+            raise InputError("turn_rate is a positive rate; say which way in turn (left or "
+                             "right)", key="given.turn_rate")
+        turn = given.word("turn", "left")
+        work.section("Steering: precession about the vertical")
+        work.step("omega_p", value=rate, unit="rad/s", note="the ship's rate of turn, as given")
+        wp = V.steering_precession(rate, 1.0, turn)
+        work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'}"
+                  f" seen from above): omega_p = {vec(wp, 'rad/s')}, along "
+                  f"{'+z' if turn == 'left' else '-z'}")
+        return wp
     for key in ("speed", "turn_radius"):
         if key not in given:
-            raise InputError("steering needs speed and turn_radius (omega_p = v / R)",
+            raise InputError("steering needs speed and turn_radius (omega_p = v / R), or "
+                             "turn_rate",
                              key=f"given.{key}")
     v, R = given["speed"], given["turn_radius"]
     if R <= 0:
@@ -142,7 +161,7 @@ def _steering(given: Given, work: Work) -> V.Vector:
 def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
     bow = given.word("bow")
     if "pitch_rate" in given:
-        if "amplitude" in given or "period" in given:
+        if any(k in given for k in AMPLITUDE_KEYS + PERIOD_KEYS):
             raise InputError("give either pitch_rate (the rate at the instant) or amplitude and "
                              "period (simple harmonic pitching), not both", key="given.pitch_rate")
         for name in ("max_precession", "max_angular_acceleration"):
@@ -153,22 +172,44 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
         work.section("Pitching at a given rate")
         work.step("omega_p", value=rate, unit="rad/s", note="pitching rate at the instant")
     else:
-        for key in ("amplitude", "period"):
-            if key not in given:
-                raise InputError("pitching needs amplitude (the largest angle from the mean "
-                                 "position, half the swing between the extremes) and period, "
-                                 "or pitch_rate", key=f"given.{key}")
-        phi, T = given["amplitude"], given["period"]
-        if phi <= 0 or T <= 0:
-            key = "amplitude" if phi <= 0 else "period"
+        amplitude_key = _one_of(given, AMPLITUDE_KEYS, "pitching needs its amplitude (the "
+                                "largest angle from the mean position: amplitude or "
+                                "pitch_amplitude) or the swing between the extremes "
+                                "(pitch_total or between_extremes, twice the amplitude), or "
+                                "pitch_rate")
+        period_key = _one_of(given, PERIOD_KEYS, "pitching needs its period (or frequency), "
+                             "or pitch_rate")
+        if given[amplitude_key] <= 0 or given[period_key] <= 0:
+            key = amplitude_key if given[amplitude_key] <= 0 else period_key
             raise InputError(f"{key} must be positive", key=f"given.{key}")
+        work.section("Pitching: simple harmonic motion")
+        if amplitude_key in ("pitch_total", "between_extremes"):
+            total = given[amplitude_key]
+            work.step("phi_total", value=math.degrees(total), unit="deg",
+                      note="the swing from one extreme to the other")
+            phi = total / 2
+            work.step("phi", "phi_total / 2", f"{num(math.degrees(total))} deg / 2",
+                      math.degrees(phi), "deg", note=f"= {num(phi)} rad, the amplitude, from "
+                      "the mean position")
+        else:
+            phi = given[amplitude_key]
+            work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
         if phi >= math.pi / 2:
             raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
-                             "through 90 deg", key="given.amplitude")
+                             "through 90 deg", key=f"given.{amplitude_key}")
+        if period_key == "frequency":
+            f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
+            T = work.step("T", "2 pi / omega_1", f"2 pi / {qty(f_rate, 'rad/s')}",
+                          2 * math.pi / f_rate, "s", note="from the frequency (1 Hz = "
+                          "one oscillation per second = 2 pi rad/s)")
+        else:
+            T = given["period"]
         p = V.pitching(phi, T)
-        work.section("Pitching: simple harmonic motion")
-        work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
-        work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
+        if period_key == "frequency":
+            work.step("omega_1", value=p.frequency, unit="rad/s", note="the circular "
+                      "frequency of the pitching")
+        else:
+            work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
         work.text("theta = phi sin(omega_1 t): the pitch angle at the time t")
         work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
                   "position (cos = 1)")
@@ -194,6 +235,21 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
     return wp
 
 
+AMPLITUDE_KEYS = ("amplitude", "pitch_amplitude", "pitch_total", "between_extremes")
+PERIOD_KEYS = ("period", "frequency")
+
+
+def _one_of(given: Given, keys: tuple[str, ...], missing: str) -> str:
+    """The one key of ``keys`` the file gives (refusing none or two)."""
+    present = [k for k in keys if k in given]
+    if not present:
+        raise InputError(missing, key=f"given.{keys[0]}")
+    if len(present) > 1:
+        raise InputError(f"give one of {', '.join(keys)}, not {' and '.join(present)}: "
+                         "they say the same thing", key=f"given.{present[1]}")
+    return present[0]
+
+
 def _rolling(given: Given, work: Work) -> V.Vector:
     rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
     work.section("Rolling: precession about the fore-and-aft axis")
@@ -206,6 +262,19 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     return wp
 
 
+# The books' own words (Khurmi, Rattan): other spellings of each choice.
+_ENDS = {"stern": "stern", "aft": "stern", "rear": "stern", "back": "stern", "behind": "stern",
+         "astern": "stern", "bow": "bow", "front": "bow", "fore": "bow", "ahead": "bow"}
+SENSE_WORDS = tuple((f"{turn}_from_{end}", f"{turn}_from_{choice}")
+                    for turn in ("clockwise", "counterclockwise")
+                    for end, choice in _ENDS.items() if end != choice)
+TURN_WORDS = (("port", "left"), ("to_port", "left"), ("to_the_left", "left"),
+              ("starboard", "right"), ("to_starboard", "right"), ("to_the_right", "right"))
+BOW_WORDS = (("descending", "falling"), ("going_down", "falling"), ("dipping", "falling"),
+             ("ascending", "rising"), ("going_up", "rising"), ("lifting", "rising"),
+             ("bow_descending", "falling"), ("bow_falling", "falling"),
+             ("bow_ascending", "rising"), ("bow_rising", "rising"))
+
 KIND = Kind(
     name="ship",
     summary="a ship's fore-and-aft turbine rotor: gyroscopic couple and its effect in steering, "
@@ -214,20 +283,28 @@ KIND = Kind(
     params=(
         Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)"),
         Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
-              choices=V.SHIP_SENSES),
+              choices=V.SHIP_SENSES, words=SENSE_WORDS),
         Param("motion", "word", "motion", "steering (default), pitching or rolling",
               choices=("steering", "pitching", "rolling")),
         Param("speed", "speed", "v", "ship's speed (steering)"),
         Param("turn_radius", "length", "R", "radius of the turn (steering)"),
+        Param("turn_rate", "rate", "omega_p", "steering: the ship's rate of turn (rad/s, deg/s), "
+              "instead of speed and turn_radius"),
         Param("turn", "word", "turn", "left (to port, default) or right (to starboard)",
-              choices=("left", "right")),
+              choices=("left", "right"), words=TURN_WORDS),
         Param("amplitude", "angle", "phi", "pitching: largest angle from the mean position "
               "(half the total swing)"),
+        Param("pitch_amplitude", "angle", "phi", "pitching: the amplitude, as `amplitude`"),
+        Param("pitch_total", "angle", "phi_total", "pitching: the total swing between the two "
+              "extremes, twice the amplitude (Khurmi: '12 deg between the extreme positions')"),
+        Param("between_extremes", "angle", "phi_total", "pitching: as pitch_total"),
         Param("period", "time", "T", "pitching: period of the simple harmonic pitching"),
+        Param("frequency", "rate", "omega_1", "pitching: its frequency, instead of the period "
+              "(0.025 Hz is one oscillation in 40 s; rad/s is 2 pi / T)"),
         Param("pitch_rate", "rate", "omega_p", "pitching: the pitching rate at the instant "
               "(instead of amplitude and period)"),
         Param("bow", "word", "bow", "pitching: the bow rising or falling at the instant asked",
-              choices=("rising", "falling")),
+              choices=("rising", "falling"), words=BOW_WORDS),
         Param("roll_rate", "rate", "omega_r", "rolling: the rolling rate (the couple is zero "
               "whatever it is)"),
     ),
@@ -245,7 +322,8 @@ KIND = Kind(
                    "'none' for rolling, ..."),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"mass": "8000 kg", "k_axial": "0.6 m", "spin": "1800 rpm",
                   "rotor_sense": "clockwise_from_stern", "motion": "steering",
                   "speed": "100 km/h", "turn_radius": "75 m", "turn": "left"},

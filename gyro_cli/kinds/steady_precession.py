@@ -76,6 +76,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J")
     J = body.J
+    if "theta" not in given:
+        _without_theta(given, find, work)
+        return
     theta = given["theta"]
     if abs(math.sin(theta)) < 1e-9:
         raise InputError("at theta = 0 or 180 deg the axis is vertical: the line of nodes, and "
@@ -144,6 +147,114 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             work.warn(f"{name} of {num(max(map(abs, fast)) / RPM)} rpm is more than any real top "
                       "or gyroscope reaches (about 1e5 rpm): the data describe no practical "
                       "motion")
+
+
+# What the introductory books' formula Omega = m g l / (J omega) answers without an angle.
+WITHOUT_THETA = {"precession", "precession_approx", "precession_period", "spin", "axial_rate"}
+SPREAD_ANGLES = (30.0, 60.0, 90.0)  # deg: how far the exact slow root moves with theta
+
+
+def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
+    """No theta: the gyroscopic approximation and its period, and how far the exact roots
+    would move with theta (introductory books: Omega = m g l / (J omega), no angle)."""
+    body = given.body
+    needs = sorted(find - WITHOUT_THETA)
+    if needs:
+        raise InputError(f"{needs[0]} needs the angle theta of the axis from the upward vertical; "
+                         "without it gyro answers only precession_approx, precession (the same "
+                         "approximation) and precession_period", key="given.theta")
+    if "moment" in given:
+        raise InputError("an applied moment gives the precession only with the angle: "
+                         "phidot = M / (J omega sin(theta)); give theta", key="given.theta")
+    rates = [k for k in ("spin", "axial_rate", "precession") if k in given]
+    if len(rates) != 1:
+        raise InputError("without theta give exactly one of spin, axial_rate and precession "
+                         f"(got {', '.join(rates) or 'none'})",
+                         key=f"given.{rates[-1]}" if rates else "given.spin")
+    if not body.l:
+        raise InputError("no theta and no gravity moment (cg_distance 0 or absent): the "
+                         "approximation m g l / (J omega) is 0; give cg_distance",
+                         key="given.cg_distance")
+    work.section("No angle given: the gyroscopic approximation")
+    symbol = {"spin": "psidot", "axial_rate": "omega_z", "precession": "psidot"}[rates[0]]
+    work.text("theta, the angle of the axis from the upward vertical, is not given; phidot, the "
+              "precession rate about the vertical; omega, the spin (here " + symbol + ")")
+    work.text("gravity's moment m g l sin(theta) turns the horizontal part J omega sin(theta) of "
+              "the spin angular momentum at phidot, so phidot = m g l / (J omega) whatever "
+              "theta is, once the I phidot cos(theta) term of Eq. 11.13 is dropped (exact at "
+              "theta = 90 deg, where cos(theta) = 0)")
+    D = work.step("D", "m g l", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
+                  f"({qty(body.l, 'm')})", body.mgl, "N*m", ref="Eq. 11.11, per unit sin(theta)")
+    rate = rates[0]
+    if rate == "precession":
+        precession = given["precession"]
+        if precession == 0:
+            raise InputError("a precession of 0 needs no spin: give a non-zero precession",
+                             key="given.precession")
+        omega = work.step("omega_approx", "m g l / (J phidot)", f"{qty(D, 'N*m')} / "
+                          f"({qty(body.J, 'kg*m^2')} {qty(precession, 'rad/s')})",
+                          D / (body.J * precession), "rad/s",
+                          note="the spin the approximation needs")
+        work.answer("spin", "psidot", [omega], "rate", ["approximation"])
+        work.answer("axial_rate", "omega_z", [omega], "rate", ["approximation"])
+        work.answer("precession", "phidot", [precession], "rate")
+    else:
+        omega = given[rate]
+        symbol = "psidot" if rate == "spin" else "omega_z"
+        if omega == 0:
+            raise InputError(f"the approximation m g l / (J {symbol}) needs a non-zero {rate}",
+                             key=f"given.{rate}")
+        precession = work.step("phidot_approx", f"m g l / (J {symbol})",
+                               f"{qty(D, 'N*m')} / ({qty(body.J, 'kg*m^2')} "
+                               f"{qty(omega, 'rad/s')})",
+                               steady.precession_approx(D, body.J, omega), "rad/s")
+        for name, symbol_ in (("precession_approx", "phidot_approx"), ("precession", "phidot")):
+            work.answer(name, symbol_, [precession], "rate", ["approximation"])
+        work.answer(rate, symbol, [omega], "rate")
+    if "precession_period" in find:
+        work.answer("precession_period", "T", [work.step(
+            "T", "2 pi / |phidot|", f"2 pi / {qty(abs(precession), 'rad/s')}",
+            steady.precession_period(precession), "s")], "time", ["approximation"])
+    missing = sorted(name for name in find if name not in work.answers)
+    if missing:
+        raise InputError(f"{missing[0]} needs the angle theta of the axis from the upward "
+                         "vertical (omega_z = psidot + phidot cos(theta))", key="given.theta")
+    work.warn("no theta given: the answers use the gyroscopic approximation m g l / (J omega), "
+              "exact only with the axis horizontal (theta = 90 deg); the exact roots of "
+              "Eq. 11.13 need theta" + _spread(body, rate, given[rate], D, work))
+
+
+def _spread(body, rate: str, value: float, D: float, work: Work) -> str:
+    """How far the exact slow root moves between 30 and 90 deg, as a clause for the warning."""
+    if body.I_pivot is None:
+        work.text("the exact roots need theta and the transverse inertia about the pivot "
+                  "(I_pivot, k_pivot, I_cg or k_cg, or a shape), neither given")
+        return " and the transverse inertia I"
+    I, J = body.I_pivot, body.J
+    slow = {}
+    for degrees in SPREAD_ANGLES:
+        theta = math.radians(degrees)
+        if rate == "precession":
+            slow[degrees] = spin_for_precession(I, J, theta, value, D)
+            continue
+        roots = precession_from_spin(I, J, theta, value, D) if rate == "spin" else \
+            precession_from_axial_rate(I, J, theta, value, D)
+        slow[degrees] = min(roots, key=abs) if roots else None
+    name = "spin" if rate == "precession" else "slow precession root"
+    work.text("for comparison, the exact " + name + " of Eq. 11.13 (thetaddot = 0) with the "
+              f"transverse inertia I = {qty(I, 'kg*m^2')} at three angles:")
+    for degrees, root in slow.items():
+        work.step(f"{'psidot' if rate == 'precession' else 'phidot_slow'} at {degrees:g} deg",
+                  value=root, unit="rad/s",
+                  note="exact, Eq. 11.13" if root is not None else
+                  "no steady precession: below the least spin (Eq. 11.21)")
+    exact = slow[90.0]
+    if slow[30.0] is None:
+        return (f"; for these data the exact {name} is {qty(exact, 'rad/s')} at 90 deg and "
+                "there is none at 30 deg (the spin is below the least, Eq. 11.21)")
+    apart = abs(slow[30.0] - exact) / abs(exact)
+    return (f"; for these data the exact {name} is {qty(slow[30.0], 'rad/s')} at 30 deg and "
+            f"{qty(exact, 'rad/s')} at 90 deg, {apart * 100:.2g}% apart")
 
 
 def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:

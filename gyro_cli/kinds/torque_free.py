@@ -41,6 +41,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.text("I about the apex is not used: a free body turns about its centre of mass, "
                   "so I = I_G")
     known = {k: given[k] for k in MOTION_KEYS if k in given}
+    sense = given.word("precession_sense")
+    books = _books_sense(J, I, sense, known) if sense is not None else ""
+    if sense is None and known.get("spin", 0.0) > 0 and J > I:
+        raise InputError("spin must be negative for this oblate (J > I) body in gyro's "
+                         "convention (psidot = (I - J) / I omega_z, retrograde precession); "
+                         "books (Meriam, Beer and Johnston) quote it positive with the sense "
+                         "in words: add `precession_sense: retrograde`", key="given.spin")
     try:
         state = solve_motion(J, I, known)
     except TorqueFreeError as err:
@@ -63,8 +70,30 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("Along k: J omega_z = H cos(theta); across k: I omega_e = H sin(theta) with "
               "omega_e = phidot sin(theta). Hence phidot = H / I, tan(theta) = (I / J) "
               "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")
+    if books:
+        work.text(books)
+        for line in work.given:
+            if line.key == "spin":
+                line.note = f"a magnitude: psidot = {qty(known['spin'], 'rad/s')} ({sense})"
     _route(J, I, known, state, work)
-    _results(J, I, state, work)
+    _results(J, I, state, work, magnitude=sense is not None)
+
+
+def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> str:
+    """The books' convention: the spin p as a magnitude, the sense of the precession in words
+    (direct: the spin and the precession turn the same way; retrograde: opposite ways)."""
+    body = "prolate (I > J)" if I > J else "oblate (J > I)"
+    if (sense == "direct") != (I > J):
+        raise InputError(f"{sense} precession needs {'a prolate (I > J)' if sense == 'direct' else 'an oblate (J > I)'} "
+                         f"body; this one is {body}, so its precession is "
+                         f"{'direct' if I > J else 'retrograde'}", key="given.precession_sense")
+    if "spin" not in known:
+        return f"the precession is {sense}, as the books say"
+    p = abs(known["spin"])
+    known["spin"] = p if sense == "direct" else -p
+    return (f"p, the spin as the books quote it: {qty(p, 'rad/s')}, a magnitude, with the "
+            f"precession {sense}; here psidot carries the sense (k on the side of H): psidot "
+            f"= {'+' if sense == 'direct' else '-'}p = {qty(known['spin'], 'rad/s')}")
 
 
 def _representable(s: FreeMotion, known: dict[str, float]) -> None:
@@ -126,14 +155,18 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
                   unit="deg")
 
 
-def _results(J: float, I: float, s: FreeMotion, work: Work) -> None:
+def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = False) -> None:
     work.section("Rates, angles and periods")
     Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
     beta, theta, wz, we = s.omega_angle, s.nutation_angle, s.axial_rate, s.transverse_rate
-    work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
-    work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
-              math.degrees(theta), "deg", note="angle from H to k")
-    work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
+    stated = {step.symbol for section in work.sections for step in section.steps}
+    if "beta" not in stated:  # worked out above from the data: not repeated
+        work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
+    if "theta" not in stated:
+        work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
+                  math.degrees(theta), "deg", note="angle from H to k")
+    if "omega_z" not in stated:
+        work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
     work.step("omega_e", "omega_z tan(beta)", f"{qty(wz, 'rad/s')} tan({_deg(beta)})", we,
               "rad/s", note="across the axis")
     work.step("omega", "sqrt(omega_z^2 + omega_e^2)", value=s.omega, unit="rad/s")
@@ -178,6 +211,18 @@ def _results(J: float, I: float, s: FreeMotion, work: Work) -> None:
     work.answer("body_cone_angle", "beta", [s.body_cone_angle], "angle")
     work.answer("space_cone_angle", "|theta - beta|", [s.space_cone_angle], "angle")
     work.answer("motion", "motion", [s.motion], None)
+    n = s.spin / s.precession
+    if magnitude:  # the books' convention: a ratio of magnitudes, the sense in words
+        n = work.step("n", "|psidot| / phidot", f"{qty(abs(s.spin), 'rad/s')} / "
+                      f"{qty(s.precession, 'rad/s')}", abs(n), "", note="the ratio of the "
+                      f"spin to the precession (Meriam's n), the precession {s.motion}")
+    else:
+        work.step("n", "psidot / phidot", f"{qty(s.spin, 'rad/s')} / "
+                  f"{qty(s.precession, 'rad/s')}", n, "", note="the ratio of the spin to the "
+                  "precession (Meriam's n); negative: retrograde")
+    work.answer("spin_ratio", "n", [n], "dimensionless")
+    work.check(f"(I - J) cos(theta) / J = {num((I - J) * math.cos(theta) / J)}; "
+               f"psidot / phidot = {num(s.spin / s.precession)}")
 
 
 KIND = Kind(
@@ -195,7 +240,14 @@ KIND = Kind(
               "(positive)"),
         Param("precession", "rate", "phidot", "rate of the symmetry axis about H (positive)"),
         Param("spin", "rate", "psidot", "spin relative to the precessing frame: positive for "
-              "I > J, negative for J > I"),
+              "I > J, negative for J > I (or a magnitude, with precession_sense)"),
+        Param("precession_sense", "word", "sense", "the books' words: direct (spin and "
+              "precession the same way, I > J) or retrograde (opposite, J > I); spin is then "
+              "a magnitude", choices=("direct", "retrograde"),
+              words=(("same", "direct"), ("same_sense", "direct"), ("prograde", "direct"),
+                     ("direct_precession", "direct"), ("opposite", "retrograde"),
+                     ("opposite_sense", "retrograde"), ("retrograde_precession",
+                                                        "retrograde"))),
     ),
     answers=(
         AnswerSpec("precession", "rate", "phidot", "precession of the axis about H, H / I"),
@@ -217,6 +269,9 @@ KIND = Kind(
                    "cone (omega about H)"),
         AnswerSpec("motion", None, "motion", "direct (prolate, I > J) or retrograde (oblate, "
                    "J > I)"),
+        AnswerSpec("spin_ratio", "dimensionless", "n", "psidot / phidot, the ratio of the spin "
+                   "to the precession (Meriam's n), (I - J) cos(theta) / J; negative when "
+                   "retrograde"),
     ),
     solve=solve,
     extra={"gravity": False, "example": {

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 
+from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
@@ -37,6 +38,7 @@ def positive(given: Given, *keys: str) -> None:
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
+    given = vehicle_data(given, work, 'wheel', 'engine')
     positive(given, "mass", "g", "cg_height", "wheel_radius", "turn_radius")
     for key in ("wheel_inertia", "engine_inertia", "gear_ratio", "speed"):
         if given[key] < 0:
@@ -137,7 +139,7 @@ KIND = Kind(
         Param("turn_radius", "length", "R", "radius of the curve"),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
-    ),
+    ) + vehicle_params('wheel', 'engine'),
     answers=(
         AnswerSpec("heel_angle", "angle", "theta", "lean from the vertical, toward the centre, "
                    "that balances both couples"),

@@ -282,32 +282,55 @@ def _phi(y: list[float]) -> float:
     return math.atan2(x * z + w * yy, w * x - yy * z)
 
 
-def estimated_steps(p: Params, t_end: float) -> float:
-    """Steps DOP853 will take to t_end: about STEPS_PER_TURN per turn of the body at its
-    angular speed |omega| (measured: 16,000 steps for 100 periods of the 11/3 top)."""
-    omega = math.sqrt(sum(v * v for v in initial_state(p)[4:]))
-    return STEPS_PER_TURN * t_end * omega / (2 * math.pi)
+def largest_rate(p: Params, theta_range: tuple[float, float] | None = None) -> float:
+    """The largest |omega| over the whole motion, from the energy (Eqs. 11.10-11.11).
+
+    J omega_z is constant (Euler's third equation), so T + V = E gives
+    I (omega_x^2 + omega_y^2) / 2 = T_0 + m g l (cos(theta0) - cos(theta)): the
+    transverse rate is largest where m g l cos(theta) is least over the theta the
+    top reaches (the nutation bounds ``theta_range``; without them, 0 .. pi).
+    """
+    w = initial_state(p)[4:]
+    lo, hi = theta_range if theta_range is not None else (0.0, math.pi)
+    least_potential = min(p.mgl * math.cos(lo), p.mgl * math.cos(hi))
+    transverse_sq = w[0] ** 2 + w[1] ** 2 + \
+        max(0.0, 2 * (p.mgl * math.cos(p.theta0) - least_potential) / p.I)
+    return math.sqrt(w[2] ** 2 + transverse_sq)
+
+
+def estimated_steps(p: Params, t_end: float,
+                    theta_range: tuple[float, float] | None = None) -> float:
+    """Steps DOP853 will take to t_end: at most STEPS_PER_TURN per turn of the body at
+    its largest angular speed over the motion (measured: 16,000 steps for 100 periods of
+    the 11/3 top; 49 a period for a 60 rpm top that falls from 30 to 174 deg, where the
+    starting |omega| alone predicted 12)."""
+    return STEPS_PER_TURN * t_end * largest_rate(p, theta_range) / (2 * math.pi)
 
 
 def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
-             rtol: float = RTOL, progress: Callable[[float], None] | None = None) -> Simulation:
+             rtol: float = RTOL, progress: Callable[[float], None] | None = None,
+             theta_range: tuple[float, float] | None = None) -> Simulation:
     """Integrate from t = 0 to t_end; ``samples`` evenly spaced output points.
 
     Steps with DOP853 (scipy's stepper, driven here so the continuous extension,
     three extra evaluations a step, is built only for steps that hold an output
     time, a sign change of thetadot or a large turn of phi). ``progress(fraction)``
-    is called about 100 times along the way.
+    is called about 100 times along the way. ``theta_range`` (the nutation bounds, when
+    known) sharpens the estimate of the cost, which is refused before starting when it
+    exceeds MAX_STEPS.
     """
     from scipy.integrate import DOP853
     from scipy.optimize import brentq
 
     p = as_params(top, start)
     _check(p, t_end, samples)
-    needed = estimated_steps(p, t_end)
+    needed = estimated_steps(p, t_end, theta_range)
     if needed > MAX_STEPS:
         raise ValueError(f"this run needs about {needed:.2g} integration steps, more than "
-                         f"{MAX_STEPS:,}: the body turns {needed / STEPS_PER_TURN:.3g} times "
-                         "in it; simulate fewer periods (--periods)")
+                         f"{MAX_STEPS:,}: the "
+                         f"body turns up to {needed / STEPS_PER_TURN:.3g} times in it, at up "
+                         f"to {largest_rate(p, theta_range):.4g} rad/s; simulate at most "
+                         f"{MAX_STEPS / needed * t_end:.3g} s (fewer --periods)")
     clock = time.process_time()
     y0 = initial_state(p)
     rate_scale = max(abs(v) for v in y0[4:]) or 1.0
@@ -480,7 +503,7 @@ def _check(p: Params, t_end: float, samples: int) -> None:
         raise ValueError("need at least 2 samples")
 
 
-def motion_of(sim: Simulation, zero: float = 1e-6) -> str:
+def motion_of(sim: Simulation, zero: float = 1e-6, shortest: float = 0.0) -> str:
     """The kind of path, read off the simulated motion (cf. Figs. 11-7 to 11-10).
 
     phidot = (P1 - P2 cos th) / (I sin^2 th) (Eq. 11.16) has a numerator linear in
@@ -492,12 +515,14 @@ def motion_of(sim: Simulation, zero: float = 1e-6) -> str:
     A run shorter than a nutation period is classified from the extrema it saw: one
     theta minimum and one maximum are enough (phidot's extreme signs are there). With
     extrema of one kind only, or none, theta's range is not known; phidot of both signs
-    along the run still means loops, else the answer is TOO_SHORT.
+    along the run still means loops, else the answer is TOO_SHORT. So is a constant
+    theta over a run shorter than ``shortest`` (a time in which a nutation would have
+    shown, such as 2 pi I / (J omega_z)): --periods 1e-6 sees no motion, not a steady one.
     """
     if sim.theta_max < 1e-9 or sim.theta_min > math.pi - 1e-9:
         return "sleeping"
     if not sim.theta_varies:
-        return "steady"
+        return "steady" if float(sim.t[-1]) >= shortest else TOO_SHORT
     if not sim.nutates and not (len(sim.t_theta_min) and len(sim.t_theta_max)):
         off_vertical = (sim.theta > 1e-6) & (sim.theta < math.pi - 1e-6)
         rates = sim.phidot[off_vertical]

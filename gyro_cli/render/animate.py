@@ -421,8 +421,14 @@ def html_fragment(scene: Scene, element_id: str = "gyro-animation") -> str:
             f'<figcaption>{escape(scene.title)} '
             f'<button type="button">Pause</button></figcaption>'
             f'<script type="application/json">{data}</script>'
-            f'<script>{_PLAYER}(document.getElementById({json.dumps(element_id)}));</script>'
+            f'<script>{player_script(element_id)}</script>'
             '</figure>')
+
+
+def player_script(element_id: str) -> str:
+    """The inline script that plays the figure ``element_id`` (a page's CSP allows it by
+    its hash)."""
+    return f"{_PLAYER}(document.getElementById({json.dumps(element_id)}));"
 
 
 def html_page(scene: Scene) -> str:

@@ -6,6 +6,7 @@ import math
 from typing import Any
 
 from ..checking.results import AnswerCheck, CheckRun
+from ..core.errors import terminal_text
 from ..core.work import num
 
 # ---- reports ----------------------------------------------------------------
@@ -55,6 +56,9 @@ def table(run_: CheckRun) -> str:
                          a.label, a.expected or "-",
                          a.got or "-", _percent(a), f"{a.tolerance}{tol}", note))
         rows += [("#", f"  ! {warning}") for warning in p.warnings]
+    # file names, ids, titles, answers and messages come from files: one line each, and no
+    # terminal escape sequence reaches the terminal raw
+    rows = [tuple(terminal_text(cell) for cell in row) for row in rows]
     widths = [0] * 6
     for row in rows:
         if row[0] != "#":

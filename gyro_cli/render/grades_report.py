@@ -9,6 +9,7 @@ import json
 from typing import Any
 
 from ..checking.grades import OUT_COLUMNS, Graded
+from ..core.errors import terminal_text
 
 # ---- output -----------------------------------------------------------------
 
@@ -39,16 +40,23 @@ def csv_text(graded: Graded) -> str:
 
 
 def table(graded: Graded) -> str:
-    lines = []
+    """The grades as a table with a header row, columns as wide as their longest cell."""
+    widths = [max([len(head)] + [len(str(getattr(row, name))) for row in graded.rows])
+              for head, name in (("student", "student"), ("problem", "problem"),
+                                 ("answer", "answer"), ("result", "result"))]
+    lines = [f"{'student':<{widths[0]}} {'problem':<{widths[1]}} {'answer':<{widths[2]}} "
+             f"{'result':<{widths[3]}} {'points':>6}  submitted  [solver: correct answer]"]
     for row in graded.rows:
-        lines.append(f"{row.student:<12} {row.problem:<8} {row.answer:<12} {row.result:<8} "
-                     f"{row.points:>4g}  {row.submitted or '-'}  [solver: {row.correct}]"
+        lines.append(f"{row.student:<{widths[0]}} {row.problem:<{widths[1]}} "
+                     f"{row.answer:<{widths[2]}} {row.result:<{widths[3]}} "
+                     f"{row.points:>6g}  {row.submitted or '-'}  [solver: {row.correct}]"
                      + (f"  {row.note}" if row.note and row.result != "correct" else ""))
     lines.append("")
     for student, (points, total) in graded.scores.items():
         percent = 100 * points / total if total else 0.0
         lines.append(f"{student:<12} score {points:g} / {total:g} ({percent:.1f}%)")
-    return "\n".join(lines) + "\n"
+    # names and answers come from the sheet: no escape sequence reaches the terminal raw
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def as_json(graded: Graded) -> str:

@@ -20,7 +20,7 @@ Every string from a problem file is HTML-escaped.
 from __future__ import annotations
 
 import re
-from html import escape
+from html import escape as _escape
 from typing import cast
 
 from ..core.work import num
@@ -31,6 +31,17 @@ from .mathml import MathMLPrinter, math_element, symbol_mathml
 from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
 from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
+
+def escape(text: str, quote: bool = True) -> str:
+    """A string from a file in HTML (the one place they meet it): markup escaped, and a
+    control character or bidi override shown as an escape (\\x1b), so a page printed to a
+    terminal sends none raw. Line breaks and tabs stay."""
+    text = _escape(text, quote)
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() or c in "\n\t" else
+                   c.encode("unicode_escape").decode("ascii") for c in text)
+
 
 __all__ = ["worked_answer", "page", "document", "check_page", "check_body", "STYLE", "PAGE_STYLE",
            "formula_mathml", "prose_html"]
@@ -84,6 +95,7 @@ STYLE = """
 .gyro .stepnote { margin: 0 0 0.4rem 1rem; }
 .gyro p { margin: 0.4rem 0; overflow-wrap: anywhere; }
 .gyro math { font-size: 1.15em; }
+.gyro h2 math, .gyro h3 math, .gyro h4 math { font-size: 1em; }  /* a heading's formula fits 360 px */
 .gyro .table { max-width: 100%; overflow-x: auto; }
 .gyro table { border-collapse: collapse; margin: 0.4rem 0; }
 .gyro th, .gyro td { border-bottom: 1px solid var(--rule, #c8c8c8);
@@ -336,21 +348,23 @@ def _answer_id(result: Result, name: str) -> str:
 
 
 def worked_answer(result: Result, level: int = 2, picture: bool = True,
-                  ident: str | None = None) -> str:
+                  ident: str | None = None, animation: str = "") -> str:
     """One solved problem as an ``<article>``: title, source, notes, picture, Given table,
     the steps with MathML formulas, the checks, the answers and the warnings.
 
-    ``level``: the heading level of the title (sections one below). Needs no
+    ``level``: the heading level of the title (sections one below); ``animation``: a
+    figure of the motion (render.animate.html_fragment) placed after the picture. Needs no
     stylesheet to read; `STYLE` lays it out (rows, tables, dark mode).
     """
     saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
     try:
-        return _worked_answer(result, level, picture, ident or anchor(result))
+        return _worked_answer(result, level, picture, ident or anchor(result), animation)
     finally:
         _KEYS[0] = saved
 
 
-def _worked_answer(result: Result, level: int, picture: bool, ident: str) -> str:
+def _worked_answer(result: Result, level: int, picture: bool, ident: str,
+                   animation: str = "") -> str:
     problem, solution = result.problem, result.solution
     title = f"{problem.id}: {problem.title}" if problem.title else str(problem.id)
     out = [f'<article class="problem" aria-labelledby="{escape(ident)}">',
@@ -363,6 +377,7 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str) -> str
         out.append(f"<blockquote><p>{prose_html(note)}</p></blockquote>")
     if picture:
         out.append(_figure(result, ident))
+    out.append(animation)
     out.append(_given_table(result, level + 1))
     for section in solution.sections:
         out.append(_heading(level + 1, prose_html(section.title)))
@@ -393,10 +408,24 @@ def _figure(result: Result, ident: str) -> str:
 
 # ---- pages ------------------------------------------------------------------------
 
-def document(title: str, body: str) -> str:
-    """A whole HTML document around ``body`` (inside <main>)."""
+def csp(scripts: list[str] = ()) -> str:
+    """The page's Content-Security-Policy: nothing leaves the page, and the only scripts
+    that run are ``scripts`` (the embedded animations' players), allowed by their hash."""
+    if not scripts:
+        return CSP
+    import base64
+    import hashlib
+
+    hashes = " ".join("'sha256-" + base64.b64encode(hashlib.sha256(s.encode()).digest())
+                      .decode() + "'" for s in scripts)
+    return f"{CSP}; script-src {hashes}"
+
+
+def document(title: str, body: str, scripts: list[str] = ()) -> str:
+    """A whole HTML document around ``body`` (inside <main>); ``scripts``: the inline
+    scripts of ``body`` the page may run."""
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-            f"<meta http-equiv=\"Content-Security-Policy\" content=\"{CSP}\">\n"
+            f"<meta http-equiv=\"Content-Security-Policy\" content=\"{csp(scripts)}\">\n"
             "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
             "<meta name=\"color-scheme\" content=\"light dark\">\n"
             "<meta name=\"generator\" content=\"gyro\">\n"
@@ -406,7 +435,7 @@ def document(title: str, body: str) -> str:
 
 
 def page(results: list[Result], title: str | None = None,
-         articles: list[str] | None = None) -> str:
+         articles: list[str] | None = None, scripts: list[str] = ()) -> str:
     """One self-contained page: a single problem, or several with a contents list.
     ``articles``: their `worked_answer`, already rendered (at level 1 for one problem, 2
     for several: the command renders each file on its own, so that a failure is that
@@ -415,7 +444,8 @@ def page(results: list[Result], title: str | None = None,
         r = results[0]
         title = title or (f"{r.problem.id}: {r.problem.title}" if r.problem.title
                           else str(r.problem.id))
-        return document(title, worked_answer(r, level=1) if articles is None else articles[0])
+        return document(title, worked_answer(r, level=1) if articles is None else articles[0],
+                        scripts)
     title = title or "Worked solutions"
     items = "".join(f'<li><a href="#{escape(anchor(r))}">{escape(str(r.problem.id))}'
                     + (f": {escape(r.problem.title)}" if r.problem.title else "") + "</a></li>"
@@ -423,7 +453,7 @@ def page(results: list[Result], title: str | None = None,
     body = [f"<h1>{escape(title)}</h1>",
             f'<nav aria-label="problems"><h2>Problems</h2><ol>{items}</ol></nav>']
     body += articles if articles is not None else [worked_answer(r, level=2) for r in results]
-    return document(title, "\n".join(body))
+    return document(title, "\n".join(body), scripts)
 
 
 def check_page(run, results: dict[str, Result] | None = None,

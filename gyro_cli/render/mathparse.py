@@ -625,6 +625,9 @@ def _classify(toks: list[Token]) -> list[bool]:
         elif t.kind == "op" and t.text == "'":
             classes.append(before is not None and before.kind == "name"
                            and not is_word(before.text))
+        elif t.kind == "op" and t.text == "-" and last_ref and not t.space \
+                and after is not None and after.kind == "num" and classes and not classes[-1]:
+            classes.append(False)  # "Eqs. 11.22-11.25": a range of references, not a minus
         elif t.kind == "op" and t.text == "-" and not t.space and after is not None \
                 and not after.space and before is not None and before.kind == "name" \
                 and after.kind in ("name", "num") and (is_word(before.text)

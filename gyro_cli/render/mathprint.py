@@ -93,10 +93,16 @@ UNICODE_TEXT = {"−": "-", "–": "--", "—": "---", "‘": "`", "’": "'", "
 
 def text_escape(text: str) -> str:
     """Plain text safe in LaTeX text mode (Greek and maths signs as inline maths; other
-    characters outside ASCII dropped to '?', which pdflatex can always set)."""
+    characters outside ASCII dropped to '?', which pdflatex can always set). A line break
+    or tab is a space and any other control character a '?': text from a file never ends
+    a comment or a line that LaTeX reads (the one place user strings meet LaTeX)."""
     out = []
     for c in text:
-        if c in _TEXT_ESCAPES:
+        if c in "\n\r\t\f\v":
+            out.append(" ")
+        elif ord(c) < 32 or ord(c) == 127:
+            out.append("?")
+        elif c in _TEXT_ESCAPES:
             out.append(_TEXT_ESCAPES[c])
         elif c in UNICODE_MATH:
             out.append(f"${UNICODE_MATH[c]}$")

@@ -6,6 +6,7 @@ import json
 from typing import Any
 
 from ..solving.solve import Result
+from ..core.errors import terminal_text
 from ..core.expr import UNIT_TEXT, python, python_name, symbols
 from ..core.work import Step, num
 
@@ -32,7 +33,7 @@ def text(result: Result) -> str:
     lines = [f"{head}{' ' * max(2, WIDTH - len(head) - len(tag))}{tag}"]
     if problem.source:
         lines.append(f"Source: {problem.source}")
-    lines += [f"Note: {note}" for note in problem.notes]
+    lines += [f"Note: {' '.join(note.splitlines())}" for note in problem.notes]
     symbol = max([7] + [len(g.symbol) for g in solution.given]) + 1
     text = max([21] + [len(g.text) for g in solution.given]) + 1
     lines += ["", f"{'Given':<{symbol + text + 2}}{solution.system}"]
@@ -56,7 +57,9 @@ def text(result: Result) -> str:
     if solution.warnings:
         lines += ["", "Warnings"]
         lines += [f"  ! {warning}" for warning in solution.warnings]
-    return "\n".join(lines) + "\n"
+    # the id, title, source and notes come from the file: one line each, and no terminal
+    # escape sequence reaches the terminal raw
+    return "\n".join(terminal_text(line) for line in lines) + "\n"
 
 
 def as_dict(result: Result) -> dict[str, Any]:
@@ -83,7 +86,7 @@ def as_dict(result: Result) -> dict[str, Any]:
 
 
 def equation(step: Step) -> dict[str, Any]:
-    """One equation step as data (docs/json.md): its value in SI at full precision and,
+    """One equation step as data (docs/steps.md): its value in SI at full precision and,
     for a step built from a tree, the formula as Python over its symbols' SI values."""
     value, unit = step.si if step.si is not None else (step.value, step.unit)
     out: dict[str, Any] = {"symbol": step.symbol, "value": value, "unit": UNIT_TEXT.get(unit, unit),

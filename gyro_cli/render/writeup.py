@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import re
 
+from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
 from .exprnodes import formula_node, substitution_node
@@ -360,8 +361,11 @@ def _breakable(tex: str) -> str:
 
 
 def _md_escape(text: str) -> str:
-    """Prose in Markdown: characters that Markdown would read as markup escaped."""
-    return re.sub(r"([*_`|<>\[\]\\$])", r"\\\1", text)
+    """Prose in Markdown: characters that Markdown would read as markup (or HTML: a
+    title's <script>) escaped, on one line, control characters shown as escapes (the one
+    place user strings meet Markdown)."""
+    text = terminal_text(" ".join(text.splitlines()))
+    return re.sub(r"([*_`|<>\[\]\\$&])", r"\\\1", text)
 
 
 def _answer_lhs(answer) -> str:
@@ -409,8 +413,8 @@ def markdown(result: Result) -> str:
 
 def _markdown(result: Result) -> str:
     problem, solution = result.problem, result.solution
-    lines = [f"## {problem.id}: {problem.title}".rstrip(": ") if problem.title
-             else f"## {problem.id}", ""]
+    lines = [f"## {_md_escape(problem.id)}: {_md_escape(problem.title)}".rstrip(": ")
+             if problem.title else f"## {_md_escape(problem.id)}", ""]
     meta = [f"Kind: `{problem.kind.name}`"] + ([f"Source: {_md_escape(problem.source)}"]
                                               if problem.source else [])
     lines += ["*" + ". ".join(meta) + ".*", ""]
@@ -462,7 +466,7 @@ def _latex(result: Result, level: str) -> str:
     problem, solution = result.problem, result.solution
     title = f"{problem.id}: {problem.title}" if problem.title else problem.id
     lines = ["% gyro solve --format latex: paste into a document that loads amsmath"
-             if level == "subsection*" else f"% {problem.id}",
+             if level == "subsection*" else f"% {text_escape(problem.id)}",
              f"\\{level}{{{text_escape(title)}}}"]
     meta = text_escape(f"Kind: {problem.kind.name.replace('_', ' ')}.")
     if problem.source:

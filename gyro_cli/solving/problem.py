@@ -14,6 +14,7 @@ from .. import kinds
 from ..core import units
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
+from ..core.params import normal_word, read_word, safe_choices
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -100,9 +101,44 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
     except yaml.YAMLError as err:
         raise InputError(f"YAML error: {err}", file=path) from None
     try:
+        _keep_written_text(data, node)
         return data, _key_lines(node)
     except InputError as err:
         raise err.located(file=path) from None
+
+
+TEXT_KEYS = ("id", "title", "source", "notes")
+
+
+def _keep_written_text(data: Any, node: Any) -> None:
+    """Give ``id``, ``title``, ``source`` and ``notes`` back the text the user wrote.
+
+    YAML 1.1 reads an unquoted ``11.10`` as the float 11.1, ``12:30`` as 750,
+    ``011`` as 9 and ``yes`` as True; these keys are text, so a plain scalar's
+    original characters (kept in its node) are used instead. ``null`` (or ``~``,
+    or nothing) stays None and is refused where a value is required (the id).
+    """
+    import yaml
+
+    if not isinstance(data, dict) or not isinstance(node, yaml.MappingNode):
+        return
+    for key_node, value_node in node.value:
+        name = key_node.value
+        if name not in TEXT_KEYS or name not in data:
+            continue
+        if isinstance(value_node, yaml.ScalarNode):
+            data[name] = _written(data[name], value_node)
+        elif isinstance(value_node, yaml.SequenceNode) and isinstance(data[name], list) and \
+                len(value_node.value) == len(data[name]):
+            data[name] = [_written(v, n) if isinstance(n, yaml.ScalarNode) else v
+                          for v, n in zip(data[name], value_node.value)]
+
+
+def _written(value: Any, node: Any) -> Any:
+    """A plain scalar that YAML turned into a number, a boolean or a date: its own text."""
+    if value is None or isinstance(value, str) or node.style not in (None, ""):
+        return value
+    return node.value
 
 
 def _key_lines(node: Any) -> dict[str, int]:
@@ -174,7 +210,7 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
                          key="given")
     given, quantities, us = parse_given(kind, data["given"])
     problem = Problem(
-        file=path, id=_text(data["id"], "id"), kind=kind, given=given, quantities=quantities,
+        file=path, id=_id(data["id"]), kind=kind, given=given, quantities=quantities,
         find=parse_find(kind, data["find"]), title=_text(data.get("title", ""), "title"),
         source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
         expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
@@ -219,13 +255,36 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
     if param.dimension == "word":
         if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
             text = "true" if text else "false"  # YAML reads `false` as a boolean
-        if not isinstance(text, str) or text not in param.choices:
+        word = read_word(param, text) if isinstance(text, str) else None
+        if word is None:
+            safe = safe_choices(str(text), param.choices)
             raise InputError(f"expected one of {', '.join(param.choices)}, got {shown(text)}"
-                             f"{suggest(str(text), param.choices)}", key=key)
-        return text, text
+                             f"{suggest(normal_word(str(text)), safe) if safe else ''}",
+                             key=key)
+        return word, text
     if param.dimension == "particles":
         return parse_particles(text, key), text
-    return guarded(units.parse, text, param.dimension, key, weight=param.name == "weight")
+    value, quantity = guarded(units.parse, text, param.dimension, key,
+                              weight=param.name == "weight")
+    return representable(value, text, param.dimension, key), quantity
+
+
+# The least magnitude (SI) of a given value that is not zero. The chapter's equations
+# multiply up to five given values (J^2 psidot^2 against 4 I m g l cos(theta)); a product of
+# five values of at least 1e-60 stays above the least normal double, 2.2e-308, where one of
+# 1e-170 kg would underflow to 0 and print 0 rpm or a wrong root without a word.
+LEAST_MAGNITUDE = 1e-60
+
+
+def representable(value: float, text: Any, dimension: str, key: str) -> float:
+    """``value`` unless it is non-zero and so small that products of it underflow."""
+    if value != 0 and abs(value) < LEAST_MAGNITUDE:
+        unit = units.si_text(dimension)
+        raise InputError(f"{shown(text)} is {value:.3g}{' ' + unit if unit else ''}: a non-zero "
+                         f"value below {LEAST_MAGNITUDE:g} (SI) is refused, since products of a "
+                         "few such values underflow double precision (below 2.2e-308) to 0 "
+                         "and the answers would be wrong; check the unit, or use 0", key=key)
+    return value
 
 
 def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> Any:
@@ -273,11 +332,13 @@ def parse_particles(raw: Any, key: str) -> tuple[tuple[float, float, float, floa
             if name not in item:
                 what = "its mass" if name == "mass" else f"its position {name} (body axes)"
                 raise InputError(f"this particle needs {what}", key=f"{where}.{name}")
-        m, _ = units.parse(item["mass"], "mass", f"{where}.mass")
+        m = representable(units.parse(item["mass"], "mass", f"{where}.mass")[0], item["mass"],
+                          "mass", f"{where}.mass")
         if m <= 0:
             raise InputError(f"a particle's mass must be positive, got {item['mass']!r}",
                              key=f"{where}.mass")
-        xyz = [units.parse(item[n], "length", f"{where}.{n}")[0] for n in ("x", "y", "z")]
+        xyz = [representable(units.parse(item[n], "length", f"{where}.{n}")[0], item[n],
+                             "length", f"{where}.{n}") for n in ("x", "y", "z")]
         out.append((m, *xyz))
     return tuple(out)
 
@@ -330,6 +391,16 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
     return dict(raw)
+
+
+def _id(value: Any) -> str:
+    """The problem's id, as text; an empty id is refused (answers and reports use it)."""
+    text = _text(value, "id")
+    if not text.strip():
+        raise InputError(f"the id is empty ({shown(value)}); write the problem's id, in quotes "
+                         "if it could be read as something else ('11.10', '12:30', 'null')",
+                         key="id")
+    return text
 
 
 def _text(value: Any, key: str) -> str:

@@ -73,6 +73,8 @@ def _solve(problem: Problem) -> Result:
         raise InputError(f"these data are outside what {kind.name} can compute reliably in "
                          f"double precision ({type(err).__name__}: {err}); check the magnitudes "
                          "and units", key="given") from None
+    # a heading with nothing under it (the Body of a kind given J and I directly) is left out
+    work.sections[:] = [section for section in work.sections if section.steps]
     solution = work.solution()
     body = problem.given.body
     if body is not None and body.per_kg:  # worked per kilogram: no answer that scales with m
@@ -98,9 +100,19 @@ def _solve(problem: Problem) -> Result:
                 raise InputError(f"{name} = {num(big)} {answer.si_unit} is too large to "
                                  f"express in {unit}; ask for a larger unit",
                                  key=f"find.{name}")
-        answers[name] = Reported(name, answer.symbol, values, unit, list(answer.si_values),
-                                 answer.si_unit, answer.labels)
+        answers[name] = Reported(name, _symbol_in(answer.symbol, answer.dimension, unit),
+                                 values, unit, list(answer.si_values), answer.si_unit,
+                                 answer.labels)
     return Result(problem, solution, answers)
+
+
+def _symbol_in(symbol: str, dimension: str | None, unit: str | None) -> str:
+    """The symbol for the unit asked: an angular frequency omega_n asked in Hz is the
+    frequency f_n = omega_n / (2 pi), and is printed so (89.44 rad/s is 14.24 Hz)."""
+    if dimension == "rate" and unit and unit.strip().lower() in ("hz", "hertz", "khz") \
+            and symbol.startswith("omega"):
+        return "f" + symbol[len("omega"):]
+    return symbol
 
 
 # Answers proportional to the mass (a per-kilogram solution cannot give them).
@@ -152,15 +164,20 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         param = params[key]
         quantity = problem.quantities[key]
         if isinstance(value, str):
-            lines.append(GivenLine(key, param.symbol, value, value, ""))
+            lines.append(GivenLine(key, param.symbol, str(quantity) if isinstance(quantity, str)
+                                   else value, value, ""))
             continue
         if param.dimension == "particles":
             lines.append(GivenLine(key, param.symbol, f"{len(value)} particles",
                                    "listed under Inertia", ""))
             continue
         raw = problem.data.get("given", {}).get(key, param.default)
-        text = " ".join(raw.split()) if isinstance(raw, str) else \
-            f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
+        if isinstance(raw, str):
+            text = " ".join(raw.split())
+        elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
+            text = f"{raw:g} {units.unit_text(quantity)}".rstrip()  # a bare number as written
+        else:
+            text = f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
         note = ""
         if key == "weight":
             note = "weight"

@@ -1,0 +1,163 @@
+"""Question banks for learning systems: what the three formats share.
+
+`gyro export` (commands/export.py) solves every variant of a problem and hands
+the renderers here a `ProblemBank`: per variant the question text (the problem's
+`statement`, else a sentence built from its title, data and answers), the
+worked answer as HTML (MathML formulas) for the feedback, and one `Blank` per
+number the student types, each with the solver's value in the unit the file
+asks for and the half-width the problem's tolerance allows around it. The
+renderers (`bank_moodle`, `bank_qti`, `bank_prairielearn`) only lay these out;
+none of them computes an answer.
+
+Everything from a problem file is text to escape here: `xml_text` and
+`xml_attr` drop the characters XML 1.0 cannot hold and escape the rest,
+`cdata` splits a ``]]>``, and `html_text` escapes HTML and the braces that a
+Moodle cloze question or a PrairieLearn (mustache) template would read.
+"""
+
+from __future__ import annotations
+
+import re
+import uuid
+from dataclasses import dataclass, field
+from html import escape
+
+#: the namespace of every UUID gyro writes into a bank (uuid5 of the problem id and
+#: variant): the same problem and variant get the same UUID in every export
+NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "gyro_cli/question-bank")
+
+
+@dataclass(frozen=True)
+class Blank:
+    """One number the student types: the solver's value and how far from it is right."""
+
+    key: str          # unique in its question: precession_slow, min_spin
+    label: str        # what is asked, in words: "precession (slow root)"
+    value: float      # the solver's answer, in ``unit``
+    unit: str         # as the file asks for it ("rpm"); "" for a pure number
+    half_width: float  # |typed - value| allowed, in ``unit`` (from the problem's tolerance)
+    tolerance: str    # the tolerance as written ("1%", "3 sig", "0.01 rad/s")
+    form: str         # "relative", "sig" or "absolute"
+    fraction: float   # relative: the fraction (0.01); sig: the digits; absolute: half_width
+
+
+@dataclass
+class Variant:
+    """One variant of a problem: its data, text, worked answer and blanks."""
+
+    number: int              # 1, 2, ... (1 alone: the problem as written)
+    ident: str               # the variant's problem id ("11/3" or "11/3-v02")
+    given: dict[str, str]    # the given values as written
+    statement_html: str
+    feedback_html: str
+    blanks: list[Blank] = field(default_factory=list)
+
+
+@dataclass
+class ProblemBank:
+    """A problem and its variants, as one category (Moodle), file (QTI) or question
+    directory (PrairieLearn)."""
+
+    id: str
+    title: str
+    kind: str
+    source: str
+    slug: str      # a file and directory name: letters, digits, - and _
+    topic: str     # the kind in words ("steady precession")
+    variants: list[Variant] = field(default_factory=list)
+
+    @property
+    def name(self) -> str:
+        return f"{self.id}: {self.title}" if self.title else self.id
+
+
+def stable_uuid(*parts: object) -> uuid.UUID:
+    """A UUID that depends only on ``parts`` (the problem id, the variant, the blank)."""
+    return uuid.uuid5(NAMESPACE, "\x1f".join(str(p) for p in parts))
+
+
+_NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+
+
+def xml_clean(text: str) -> str:
+    """``text`` without the characters XML 1.0 cannot hold (control characters, lone
+    surrogates, U+FFFE/U+FFFF)."""
+    return _NOT_XML.sub("", str(text))
+
+
+def xml_text(text: str) -> str:
+    """Element content: &, < and > escaped."""
+    return escape(xml_clean(text), quote=False)
+
+
+def xml_attr(text: str) -> str:
+    """An attribute value in double quotes: &, <, >, " and ' escaped; line breaks as
+    character references so a parser keeps them."""
+    return escape(xml_clean(text), quote=True).replace("\n", "&#10;").replace(
+        "\r", "&#13;").replace("\t", "&#9;")
+
+
+def cdata(text: str) -> str:
+    """``text`` as CDATA: a ``]]>`` inside is split over two sections."""
+    return "<![CDATA[" + xml_clean(text).replace("]]>", "]]]]><![CDATA[>") + "]]>"
+
+
+def html_text(text: str) -> str:
+    """Plain text as HTML: escaped, and braces as character references (a Moodle cloze
+    question reads ``{1:NUMERICAL:...}`` in its text, a mustache template ``{{...}}``)."""
+    return escape(xml_clean(text)).replace("{", "&#123;").replace("}", "&#125;")
+
+
+def slug(text: str) -> str:
+    """A file name from a problem id or file stem: 11/3 -> 11-3."""
+    out = re.sub(r"[^A-Za-z0-9_-]+", "-", str(text)).strip("-")
+    return out or "problem"
+
+
+def number_text(value: float) -> str:
+    """A number as the bank writes it: every digit the solver gives (repr of the float)."""
+    text = repr(float(value))
+    return "0.0" if text == "-0.0" else text
+
+
+_PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")
+
+
+def fill_statement(text: str, given: dict[str, str]) -> str:
+    """The statement with each ``{key}`` replaced by the given value as written
+    (``{spin}`` -> ``1800 rpm``); a ``{name}`` that is no given key stays as it is."""
+    def value(match: re.Match) -> str:
+        key = match.group(1)
+        return " ".join(str(given[key]).split()) if key in given else match.group(0)
+    return _PLACEHOLDER.sub(value, str(text))
+
+
+def statement_html(statement: str | None, title: str, data_lines: list[tuple[str, str]],
+                   asked: list[str], given: dict[str, str]) -> str:
+    """The question text as HTML: the statement (its ``{key}``s filled, paragraphs at
+    blank lines), else the title, the data and what is asked, in sentences."""
+    if statement:
+        filled = fill_statement(statement, given)
+        paragraphs = [p for p in re.split(r"\n\s*\n", filled.strip()) if p.strip()]
+        return "".join(f"<p>{html_text(' '.join(p.split()))}</p>" for p in paragraphs)
+    title = " ".join(str(title).split())
+    out = [f"<p>{html_text(title)}{'' if title.endswith(('.', '?', '!')) else '.'}</p>"] \
+        if title else []
+    if data_lines:
+        out.append("<p>Data:</p><ul>" + "".join(
+            f"<li>{html_text(what)}: {html_text(text)}</li>" for what, text in data_lines)
+            + "</ul>")
+    if asked:
+        out.append("<p>Find " + html_text(_join(asked)) + ".</p>")
+    return "".join(out)
+
+
+def _join(items: list[str]) -> str:
+    if len(items) <= 1:
+        return "".join(items)
+    return ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def blank_prompt(blank: Blank) -> str:
+    """What a blank asks, as plain text: ``precession (slow root), in rpm``."""
+    return f"{blank.label}, in {blank.unit}" if blank.unit else blank.label

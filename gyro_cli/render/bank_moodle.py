@@ -1,0 +1,112 @@
+"""A question bank as Moodle XML (Question bank > Import > Moodle XML format).
+
+One category per problem (``$course$/top/gyro/<id>: <title>``) holding its
+variants, so a quiz's "random question from this category" gives each student
+one variant. A variant that asks one number is a ``numerical`` question (the
+answer, its tolerance as Moodle's absolute +/- error, the unit); one that asks
+several (the two roots of a steady precession, a rotor's two bearing forces) is
+a ``cloze`` question with a ``{1:NUMERICAL:=value:error}`` blank for each, since
+a numerical question holds one number. The statement is the question text, the
+worked answer (MathML) the general feedback; both are HTML in CDATA.
+
+The elements and their meaning are those Moodle's importer reads
+(question/format/xml/format.php: ``import_numerical``, ``import_multianswer``,
+categories as ``<question type="category">``).
+"""
+
+from __future__ import annotations
+
+from .bank import (Blank, ProblemBank, Variant, blank_prompt, cdata, html_text, number_text,
+                   xml_text)
+
+#: the category every problem's category sits in
+TOP = "$course$/top/gyro"
+
+
+def category_path(bank: ProblemBank) -> str:
+    """The problem's category path; a slash inside a name is doubled (Moodle reads a
+    single ``/`` as a sub-category)."""
+    name = " ".join(bank.name.split()).replace("/", "//")
+    return f"{TOP}/{name}"
+
+
+def xml(banks: list[ProblemBank]) -> str:
+    """The Moodle XML file of ``banks``."""
+    out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
+    for bank in banks:
+        out.append(_category(bank))
+        for variant in bank.variants:
+            out.append(_question(bank, variant))
+    out.append("</quiz>")
+    return "\n".join(out) + "\n"
+
+
+def _category(bank: ProblemBank) -> str:
+    info = f"<p>{html_text(bank.name)}</p>" + (
+        f"<p>Source: {html_text(bank.source)}</p>" if bank.source else "")
+    return ('  <question type="category">\n'
+            f"    <category><text>{xml_text(category_path(bank))}</text></category>\n"
+            f'    <info format="html"><text>{cdata(info)}</text></info>\n'
+            "  </question>")
+
+
+def _name(bank: ProblemBank, variant: Variant) -> str:
+    return f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
+
+
+def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:
+    # No <idnumber>: Moodle wants it unique in a category, and a second import of the
+    # same bank into the same category must not fail on it.
+    return [f"    <name><text>{xml_text(_name(bank, variant))}</text></name>",
+            f'    <questiontext format="html"><text>{cdata(text)}</text></questiontext>',
+            f'    <generalfeedback format="html"><text>{cdata(variant.feedback_html)}'
+            "</text></generalfeedback>"]
+
+
+def _question(bank: ProblemBank, variant: Variant) -> str:
+    if len(variant.blanks) == 1:
+        return _numerical(bank, variant, variant.blanks[0])
+    return _cloze(bank, variant)
+
+
+def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
+    text = variant.statement_html + f"<p>{html_text(blank_prompt(blank))}:</p>"
+    lines = ['  <question type="numerical">', *_common(bank, variant, text),
+             "    <defaultgrade>1</defaultgrade>",
+             "    <penalty>0.3333333</penalty>",
+             "    <hidden>0</hidden>",
+             '    <answer fraction="100" format="plain_text">',
+             f"      <text>{number_text(blank.value)}</text>",
+             f"      <tolerance>{number_text(blank.half_width)}</tolerance>",
+             '      <feedback format="html"><text></text></feedback>',
+             "    </answer>"]
+    if blank.unit:
+        # units optional (unitgradingtype 0, showunits 0): a unit typed must be this one
+        lines += ["    <units>", "      <unit>", "        <multiplier>1</multiplier>",
+                  f"        <unit_name>{xml_text(blank.unit)}</unit_name>",
+                  "      </unit>", "    </units>",
+                  "    <unitgradingtype>0</unitgradingtype>",
+                  "    <unitpenalty>0.1</unitpenalty>",
+                  "    <showunits>0</showunits>",
+                  "    <unitsleft>0</unitsleft>"]
+    else:
+        lines.append("    <showunits>3</showunits>")
+    lines.append("  </question>")
+    return "\n".join(lines)
+
+
+def cloze_blank(blank: Blank) -> str:
+    """One cloze blank: ``{1:NUMERICAL:=45.13:0.45}`` (value and absolute error)."""
+    return f"{{1:NUMERICAL:={number_text(blank.value)}:{number_text(blank.half_width)}}}"
+
+
+def _cloze(bank: ProblemBank, variant: Variant) -> str:
+    rows = "".join(f"<li>{html_text(blank.label)}: {cloze_blank(blank)}"
+                   + (f" {html_text(blank.unit)}" if blank.unit else "") + "</li>"
+                   for blank in variant.blanks)
+    text = variant.statement_html + f"<ul>{rows}</ul>"
+    lines = ['  <question type="cloze">', *_common(bank, variant, text),
+             "    <penalty>0.3333333</penalty>",
+             "    <hidden>0</hidden>",
+             "  </question>"]
+    return "\n".join(lines)

@@ -1,0 +1,117 @@
+"""A question bank as PrairieLearn questions: a directory per problem with
+``info.json``, ``question.html`` and ``server.py``.
+
+``info.json`` carries the keys PrairieLearn's question schema requires (uuid,
+type, title, topic) and tags; the UUID is derived from the problem id, so a
+second export of the same problem updates the question instead of adding one.
+``question.html`` shows the statement, one ``pl-number-input`` per number asked
+(its ``answers-name``, the tolerance as ``rtol``/``atol`` or as significant
+``digits``, a ``label`` and the unit as ``suffix``) and the worked answer in the
+answer panel. ``server.py`` holds the variants computed at export (the solver's
+answers, so PrairieLearn needs no gyro) and its ``generate(data)`` picks one from
+``data["variant_seed"]``, setting ``data["params"]`` and
+``data["correct_answers"]``.
+
+The statement and the worked answer reach the page as ``params`` (mustache's
+triple braces insert them as they are, and nothing inside them is read as a
+template); every text written into ``question.html`` itself is escaped, braces
+included.
+"""
+
+from __future__ import annotations
+
+import json
+
+from .bank import Blank, ProblemBank, html_text, number_text, stable_uuid, xml_attr
+
+TOPIC = "Gyroscopic motion"
+
+
+def info(bank: ProblemBank) -> dict:
+    """The question's info.json."""
+    return {"uuid": str(stable_uuid(bank.id)), "type": "v3", "title": bank.name,
+            "topic": TOPIC, "tags": ["gyro", bank.kind],
+            "singleVariant": len(bank.variants) == 1}
+
+
+def _blanks(bank: ProblemBank) -> list[Blank]:
+    """Every blank some variant asks, in order (a variant at theta = 90 deg has one
+    precession root where the others have two)."""
+    seen: dict[str, Blank] = {}
+    for variant in bank.variants:
+        for blank in variant.blanks:
+            seen.setdefault(blank.key, blank)
+    return list(seen.values())
+
+
+def _input(blank: Blank) -> str:
+    if blank.form == "sig":
+        tolerance = f'comparison="sigfig" digits="{int(blank.fraction)}"'
+    elif blank.form == "relative":
+        tolerance = f'comparison="relabs" rtol="{number_text(blank.fraction)}" atol="0"'
+    else:
+        tolerance = f'comparison="relabs" rtol="0" atol="{number_text(blank.half_width)}"'
+    suffix = f' suffix="{_attr(blank.unit)}"' if blank.unit else ""
+    return (f"{{{{#params.ask.{blank.key}}}}}\n"
+            f'<pl-number-input answers-name="{blank.key}" {tolerance} '
+            f'label="{_attr(blank.label)} =" size="20"{suffix}></pl-number-input>\n'
+            f"{{{{/params.ask.{blank.key}}}}}")
+
+
+def _attr(text: str) -> str:
+    return xml_attr(text).replace("{", "&#123;").replace("}", "&#125;")
+
+
+def question_html(bank: ProblemBank) -> str:
+    """The question's template: statement, inputs, worked answer."""
+    inputs = "\n".join(_input(b) for b in _blanks(bank))
+    return (f"<!-- {html_text(bank.name).replace('--', '- -')}: written by gyro export "
+            "(the answers are gyro's) -->\n"
+            "<pl-question-panel>\n{{{params.statement}}}\n</pl-question-panel>\n\n"
+            f"{inputs}\n\n"
+            "<pl-answer-panel>\n{{{params.feedback}}}\n</pl-answer-panel>\n")
+
+
+SERVER = '''"""{doc}
+
+Written by `gyro export --to prairielearn`: the variants and their answers were
+computed by gyro's solver at export; generate() picks one from the variant seed.
+"""
+
+import json
+
+VARIANTS = json.loads({variants})
+
+
+def generate(data):
+    variant = VARIANTS[int(data["variant_seed"]) % len(VARIANTS)]
+    data["params"]["statement"] = variant["statement"]
+    data["params"]["feedback"] = variant["feedback"]
+    data["params"]["ask"] = {{key: True for key in variant["answers"]}}
+    for key, value in variant["answers"].items():
+        data["correct_answers"][key] = value
+'''
+
+
+def server_py(bank: ProblemBank) -> str:
+    """The question's server.py, with every variant's statement, feedback and answers."""
+    variants = [{"variant": v.number, "id": v.ident, "given": v.given,
+                 "statement": v.statement_html, "feedback": v.feedback_html,
+                 "answers": {b.key: b.value for b in v.blanks}}
+                for v in bank.variants]
+    doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
+    doc = doc.replace("\\", "/").replace('"', "'")
+    return SERVER.format(doc=f"{doc} ({bank.kind})",
+                         variants=repr(json.dumps(variants, ensure_ascii=True,
+                                                  allow_nan=False)))
+
+
+def files(banks: list[ProblemBank]) -> dict[str, str]:
+    """Relative path -> text of every file of the export."""
+    out = {}
+    for bank in banks:
+        out[f"{bank.slug}/info.json"] = json.dumps(info(bank), indent=2,
+                                                   ensure_ascii=False) + "\n"
+        out[f"{bank.slug}/question.html"] = question_html(bank)
+        out[f"{bank.slug}/server.py"] = server_py(bank)
+    return out

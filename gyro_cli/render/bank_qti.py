@@ -1,0 +1,154 @@
+"""A question bank as an IMS QTI 1.2 package (a zip with ``imsmanifest.xml``), the
+form Canvas (Classic Quizzes) and D2L import (Blackboard reads QTI 2.1, without
+numeric questions: docs/course.md).
+
+One QTI file per problem: an ``<assessment>`` named after the problem whose one
+section holds its items, so the system makes a quiz and a question bank of
+that name. Each item asks one number (these systems' numeric question holds
+one): a variant that asks several (two roots) gives one item per number, each
+with the whole statement. An item is written as Canvas writes a
+``numerical_question``: a ``response_str`` rendered as a decimal fill-in, and
+a condition that scores 100 when the response equals the answer or lies in
+[answer - error, answer + error], the error being the problem's tolerance;
+the worked answer is the item's general feedback (``itemfeedback`` ident
+``general_fb``). The element order is that of the QTI 1.2 ASI schema
+(ims_qtiasiv1p2: itemmetadata, presentation, resprocessing, itemfeedback).
+"""
+
+from __future__ import annotations
+
+import io
+import zipfile
+
+from .bank import (Blank, ProblemBank, Variant, blank_prompt, html_text, number_text,
+                   stable_uuid, xml_attr, xml_text)
+
+QTI_NS = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
+QTI_XSD = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2p1.xsd"
+CP_NS = "http://www.imsglobal.org/xsd/imscp_v1p1"
+CP_XSD = "http://www.imsglobal.org/xsd/imscp_v1p1.xsd"
+XSI = "http://www.w3.org/2001/XMLSchema-instance"
+#: a fixed time for every zip entry, so the same export gives the same bytes
+ZIP_TIME = (2000, 1, 1, 0, 0, 0)
+
+
+def ident(*parts: object) -> str:
+    """An identifier from the problem, variant and blank: ``g`` and 32 hex digits."""
+    return "g" + stable_uuid(*parts).hex
+
+
+def file_name(bank: ProblemBank) -> str:
+    return f"{bank.slug}/{bank.slug}.xml"
+
+
+def assessment(bank: ProblemBank) -> str:
+    """The QTI file of one problem."""
+    out = ['<?xml version="1.0" encoding="UTF-8"?>',
+           f'<questestinterop xmlns="{QTI_NS}" xmlns:xsi="{XSI}" '
+           f'xsi:schemaLocation="{QTI_NS} {QTI_XSD}">',
+           f'  <assessment ident="{ident(bank.id)}" title="{xml_attr(bank.name)}">',
+           "    <qtimetadata>",
+           _field("cc_maxattempts", "1"),
+           "    </qtimetadata>",
+           f'    <section ident="{ident(bank.id, "section")}" title="{xml_attr(bank.name)}">']
+    for variant in bank.variants:
+        for blank in variant.blanks:
+            out.append(_item(bank, variant, blank))
+    out += ["    </section>", "  </assessment>", "</questestinterop>"]
+    return "\n".join(out) + "\n"
+
+
+def _field(label: str, entry: str, indent: str = "      ") -> str:
+    return (f"{indent}<qtimetadatafield><fieldlabel>{xml_text(label)}</fieldlabel>"
+            f"<fieldentry>{xml_text(entry)}</fieldentry></qtimetadatafield>")
+
+
+def item_title(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
+    name = f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
+    return f"{name}: {blank.label}" if len(variant.blanks) > 1 else name
+
+
+def _item(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
+    low = blank.value - blank.half_width
+    high = blank.value + blank.half_width
+    text = variant.statement_html + f"<p>{html_text(blank_prompt(blank))}:</p>"
+    i = "      "
+    return "\n".join([
+        f'{i}<item ident="{ident(bank.id, variant.number, blank.key)}" '
+        f'title="{xml_attr(item_title(bank, variant, blank))}">',
+        f"{i}  <itemmetadata>",
+        f"{i}    <qtimetadata>",
+        _field("question_type", "numerical_question", i + "      "),
+        _field("points_possible", "1.0", i + "      "),
+        _field("gyro_answer", blank.key, i + "      "),
+        _field("gyro_unit", blank.unit, i + "      "),
+        _field("gyro_tolerance", blank.tolerance, i + "      "),
+        f"{i}    </qtimetadata>",
+        f"{i}  </itemmetadata>",
+        f"{i}  <presentation>",
+        f'{i}    <material><mattext texttype="text/html">{xml_text(text)}</mattext></material>',
+        f'{i}    <response_str ident="response1" rcardinality="Single">',
+        f'{i}      <render_fib fibtype="Decimal"><response_label ident="answer1"/></render_fib>',
+        f"{i}    </response_str>",
+        f"{i}  </presentation>",
+        f"{i}  <resprocessing>",
+        f"{i}    <outcomes>",
+        f'{i}      <decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>',
+        f"{i}    </outcomes>",
+        f'{i}    <respcondition continue="Yes">',
+        f"{i}      <conditionvar><other/></conditionvar>",
+        f'{i}      <displayfeedback feedbacktype="Response" linkrefid="general_fb"/>',
+        f"{i}    </respcondition>",
+        f'{i}    <respcondition continue="No">',
+        f"{i}      <conditionvar>",
+        f"{i}        <or>",
+        f'{i}          <varequal respident="response1">{number_text(blank.value)}</varequal>',
+        f"{i}          <and>",
+        f'{i}            <vargte respident="response1">{number_text(low)}</vargte>',
+        f'{i}            <varlte respident="response1">{number_text(high)}</varlte>',
+        f"{i}          </and>",
+        f"{i}        </or>",
+        f"{i}      </conditionvar>",
+        f'{i}      <setvar action="Set" varname="SCORE">100</setvar>',
+        f"{i}    </respcondition>",
+        f"{i}  </resprocessing>",
+        f'{i}  <itemfeedback ident="general_fb">',
+        f'{i}    <flow_mat><material><mattext texttype="text/html">'
+        f"{xml_text(variant.feedback_html)}</mattext></material></flow_mat>",
+        f"{i}  </itemfeedback>",
+        f"{i}</item>"])
+
+
+def manifest(banks: list[ProblemBank]) -> str:
+    """``imsmanifest.xml``: one resource (of type imsqti_xmlv1p2) per problem's file."""
+    out = ['<?xml version="1.0" encoding="UTF-8"?>',
+           f'<manifest identifier="{ident("manifest", *(b.id for b in banks))}" '
+           f'xmlns="{CP_NS}" xmlns:xsi="{XSI}" xsi:schemaLocation="{CP_NS} {CP_XSD}">',
+           "  <metadata>",
+           "    <schema>IMS Content</schema>",
+           "    <schemaversion>1.1.3</schemaversion>",
+           "  </metadata>",
+           "  <organizations/>",
+           "  <resources>"]
+    for bank in banks:
+        href = file_name(bank)
+        out += [f'    <resource identifier="{ident(bank.id, "resource")}" '
+                f'type="imsqti_xmlv1p2" href="{xml_attr(href)}">',
+                f'      <file href="{xml_attr(href)}"/>',
+                "    </resource>"]
+    out += ["  </resources>", "</manifest>"]
+    return "\n".join(out) + "\n"
+
+
+def package(banks: list[ProblemBank]) -> bytes:
+    """The zip: ``imsmanifest.xml`` and one QTI file per problem (same bytes each time)."""
+    buffer = io.BytesIO()
+    with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
+        entries = [("imsmanifest.xml", manifest(banks))]
+        entries += [(file_name(bank), assessment(bank)) for bank in banks]
+        for name, text in entries:
+            info = zipfile.ZipInfo(name, date_time=ZIP_TIME)
+            info.compress_type = zipfile.ZIP_DEFLATED
+            info.external_attr = 0o644 << 16
+            archive.writestr(info, text.encode("utf-8"))
+    return buffer.getvalue()
