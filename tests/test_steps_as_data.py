@@ -25,7 +25,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (the "Body" section and H = J psidot, written by core/body.py for every kind, are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession"}
+TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -108,12 +108,6 @@ def _substitutions(result) -> tuple[list[str], list[str]]:
     return texts, latexes
 
 
-STEADY = pytest.mark.xfail(strict=True, reason="steady_precession writes its substitutions as "
-                            "text still (issue 21, being migrated): _moment and phidot_approx "
-                            "juxtapose a negative rate")
-
-
-@STEADY
 def test_no_substitution_juxtaposes_a_negative_number(tmp_path):
     files = PROBLEMS + _examples(tmp_path)
     files += [n for n in (_negated(p, tmp_path) for p in files) if n is not None]
@@ -132,7 +126,6 @@ def test_no_substitution_juxtaposes_a_negative_number(tmp_path):
     assert seen > 300
 
 
-@STEADY
 def test_top_rev_per_s_divides_by_a_bracketed_negative_product():
     """The slip the issue found: ``(0.0005120 kg m^2 -179.7 rad/s)`` set as a subtraction."""
     doc = json.loads(report.as_json(solve_file(str(ROOT / "problems" / "top_rev_per_s.yaml"))))
@@ -260,3 +253,56 @@ def test_bicycle_trees_agree_with_the_paper_totals(gyroscopic, tmp_path):
              "I_Alz": t.IAlz, "mu": t.mu, "S_R": t.SR, "S_F": t.SF, "S_T": t.ST, "S_A": t.SA}
     for symbol, expected in names.items():
         assert steps[symbol].value == pytest.approx(expected, rel=1e-12, abs=1e-15), symbol
+
+
+STEADY_TOP = """\
+id: t
+kind: steady_precession
+given: {{mass: 2 kg, shape: disk, diameter: 150 mm, cg_distance: 600 mm, theta: {theta},
+        {rates}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("theta, rates, find", [
+    ("120 deg", "precession: 36 rpm", "spin, min_spin, precession_period, cg_speed, "
+                                      "pivot_force"),
+    ("60 deg", "spin: -3000 rpm, precession: -12 rpm", "moment"),
+    ("60 deg", "axial_rate: 9000 rpm", "precession, spin, precession_approx"),
+    ("90 deg", "spin: 3000 rpm", "precession")])
+def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_path):
+    """Each step from its tree against the kind's and physics/steady.py's functions, with
+    negative rates among them."""
+    from gyro_cli.core.expr import symbols
+    from gyro_cli.kinds import steady_precession as K
+    from gyro_cli.physics import steady
+
+    path = tmp_path / "t.yaml"
+    path.write_text(STEADY_TOP.format(theta=theta, rates=rates, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    v = {}
+    for s in steps:
+        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    m = 2.0
+    J, I = m * 0.075 ** 2 / 2, m * 0.075 ** 2 / 4 + m * 0.6 ** 2  # disk, parallel axes
+    th = v["theta"]
+    for s in steps:
+        if s.formula.startswith("phidot sin(theta) (J omega_z"):
+            assert s.value == pytest.approx(K.moment_required(I, J, th, v["psidot"],
+                                                              v["phidot"]), rel=1e-12)
+        if s.symbol == "psidot" and "D" in v and "phidot" in v:
+            assert s.value == pytest.approx(K.spin_for_precession(I, J, th, v["phidot"], v["D"]),
+                                            rel=1e-12)
+        if s.symbol == "psidot_min":
+            assert s.value == pytest.approx(K.min_spin(I, J, th, v["D"]), rel=1e-12)
+        if s.symbol == "phidot_approx":
+            omega = v.get("omega_z", v.get("psidot"))
+            assert s.value == pytest.approx(steady.precession_approx(v["D"], J, omega), rel=1e-12)
+        if s.symbol.startswith("T"):
+            assert s.value == pytest.approx(steady.precession_period(v["phidot"]), rel=1e-12)
+        if s.symbol.startswith("v_G"):
+            assert s.value == pytest.approx(steady.cg_speed(0.6, th, v["phidot"]), rel=1e-12)
+        if s.symbol == "phidot" and "M" in v:  # theta = 90 deg: M / (J psidot), exact
+            assert s.value == pytest.approx(v["M"] / (J * v["psidot"]), rel=1e-12)
+    assert steps

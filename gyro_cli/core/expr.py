@@ -509,6 +509,8 @@ class TextPrinter(Printer):
         return f"{self.operand(node, node.left)}^{self.operand(node, node.right, True)}"
 
     def _print_Call(self, node: Call) -> str:
+        if node.name == "abs":
+            return f"|{self._print(node.args[0])}|"
         name = SHOWN_NAMES.get(node.name, node.name)
         return f"{name}({', '.join(self._print(a) for a in node.args)})"
 

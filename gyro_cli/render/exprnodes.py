@@ -11,7 +11,7 @@ brackets the same places (a negative value after a factor or a sign included).
 from __future__ import annotations
 
 from ..core import expr as E
-from .mathtree import BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym
+from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym
 
 
 class NodePrinter:
@@ -93,6 +93,8 @@ class NodePrinter:
         return Pow(self.operand(node, node.left), self.operand(node, node.right, True))
 
     def _print_Call(self, node: E.Call) -> Node:
+        if node.name == "abs":
+            return Abs(self._print(node.args[0]))
         return Call(E.SHOWN_NAMES.get(node.name, node.name),
                     tuple(self._print(a) for a in node.args))
 
