@@ -24,12 +24,16 @@ ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
-#: (the "Body" section and H = J psidot, written by core/body.py for every kind, are not yet)
+#: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
-    return title == "Body" or (symbol, formula) == ("H", "J psidot")
+    """A shape's J or I_G (core/body.py's SHAPES are text still)."""
+    from gyro_cli.core.body import SHAPES
+
+    return title == "Body" and formula in {t for shape in SHAPES.values()
+                                           for t in (shape.J_text, shape.I_G_text)}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)

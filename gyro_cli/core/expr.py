@@ -240,7 +240,10 @@ class Pow(BinOp):
 
     @property
     def value(self) -> float:
-        return self.left.value ** self.right.value
+        base, power = self.left.value, self.right.value
+        if power == 2:
+            return base * base  # inf past the float range, as x * x; x ** 2 would raise
+        return base ** power
 
 
 def _ellipk(m: float) -> float:
@@ -400,8 +403,8 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
             return c in (MUL, NEG) or (values and isinstance(node, (Num, Sym)))
         return False
     if isinstance(parent, Div):
-        if right:  # a / (b c), a / (b / c), a / (-b); a quantity alone: M / 0.3 kg m^2/s
-            return c < MUL or c == NEG or isinstance(node, (Mul, Div))
+        if right:  # a / (b c), a / (b / c), a / (-b), a / (0.3 kg m^2/s)
+            return c <= MUL or c == NEG
         return c < MUL or isinstance(node, Div)
     if isinstance(parent, Pow):
         return c < ATOM or isinstance(node, (Pow,)) if not right else c < ATOM
