@@ -64,6 +64,15 @@ def load(source: Source, /, *, path: bool = False, **given: Any) -> "Problem":
             else:
                 data["given"][key] = value
                 changed.add(key)
+        if isinstance(data.get("statement"), str):
+            from .core.statement import StatementError, placeholders
+
+            try:
+                stale = set(placeholders(data["statement"])) - set(data["given"])
+            except StatementError:
+                stale = set()  # the loader says what is wrong with it
+            if stale:  # a key the statement names was removed: it no longer states this
+                data = {k: v for k, v in data.items() if k != "statement"}
     if isinstance(data, dict) and (isinstance(source, Mapping) or changed):
         data = _plain(data, None if isinstance(source, Mapping) else changed)
     return loader.build(name, data, lines)

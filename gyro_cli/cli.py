@@ -1,4 +1,4 @@
-"""The command line: solve, check, simulate, new, schema, vary, kinds.
+"""The command line: solve, check, simulate, new, schema, vary, handout, kinds.
 
 Every command exits 0 on success, 1 when an answer does not match (check), 2 on
 bad input or usage, with a one-line message and never a traceback, and 3 when
@@ -193,7 +193,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 
 
 @main.command()
-@click.argument("paths", nargs=-1, required=True)
+@click.argument("paths", nargs=-1)
 @click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
               show_default=True, help="table: one line per answer; json: one document.")
 @click.option("--junit", "junit_file", metavar="FILE",
@@ -203,21 +203,41 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
+@click.option("--out-format", "out_format", default="grades", show_default=True,
+              type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
+              help="With --out: gyro's grades CSV, a Canvas gradebook import CSV, or "
+                   "Gradescope's / PrairieLearn's results.json (one per student: FILE for "
+                   "one student, else a directory of STUDENT.json).")
+@click.option("--credit", metavar="SLIP=SHARE,...",
+              help="With --answers: partial credit for a value off by a named slip, e.g. "
+                   "2pi=0.5,sign=0.5 (slips: 2pi, rpm, 60, g, deg, 10, sign).")
+@click.option("--feedback", "feedback_dir", metavar="DIR",
+              help="With --answers: write each student a short page (DIR/STUDENT.md): what "
+                   "was right, what was off and the likely slip.")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="With --answers: grade each student only on their own variants, as "
+                   "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
 @click.option("--html", "html_file", metavar="FILE",
               help="Also write the report as a self-contained HTML page to FILE: failing "
                    "answers first, each linking to its worked answer.")
 @click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
-          sheet: str | None, out: str | None, force: bool, html_file: str | None = None) -> None:
+          sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
+          assignment: str | None = None, out_format: str = "grades",
+          credit: str | None = None, feedback_dir: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
     or globs. Exit 0 when every answer matches, 1 when one does not (or
     nothing was compared), 2 when a file is bad (the others are still checked).
     """
+    if not paths and not (sheet and assignment):
+        fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if out or (force and not html_file):
-            fail("--out goes with --answers SHEET, --force with --out or --html")
+        if assignment or credit is not None or feedback_dir:
+            fail("--assignment, --credit and --feedback go with --answers SHEET")
+        if out or (force and not html_file) or out_format != "grades":
+            fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         from .render import check_report
 
         from .api import check_files
@@ -247,16 +267,18 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         sys.exit(result.exit_code)
     if junit_file or strict or html_file:
         fail("--junit, --html and --strict go with checking the answer key, not with --answers")
+    if out_format != "grades" and not out:
+        fail("--out-format goes with --out FILE")
     from .checking import grades
     from .render import grades_report
 
     try:
-        graded = grades.grade(sheet, paths)
-        text = grades_report.csv_text(graded)
+        policy = grades.parse_credit(credit) if credit is not None else None
+        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy)
         if out:
-            from .core.files import write_atomic
-
-            write_atomic(out, text, force=force)
+            grades_report.write_out(graded, out, out_format, force)
+        if feedback_dir:
+            grades_report.write_feedback(graded, feedback_dir, force)
     except InputError as err:
         fail(err)
     for line in graded.errors:
@@ -308,23 +330,41 @@ def schema() -> None:
 
 
 @main.command()
-@click.argument("file")
-@click.option("--count", "-n", type=int, required=True, help="How many variants.")
+@click.argument("files", nargs=-1, required=True, metavar="FILE...")
+@click.option("--count", "-n", type=int, default=None, help="How many variants (one FILE).")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="Instead of --count: one variant per student of ROSTER (a CSV with a "
+                   "student column) and problem FILE, and DIR/assignment.csv.")
 @click.option("--seed", "-s", type=int, default=0, show_default=True,
-              help="Random seed: the same seed gives the same files.")
+              help="Random seed: the same seed gives the same files (with --roster, the "
+                   "course seed: each student's numbers depend only on it and their id).")
 @click.option("-o", "--out-dir", "out_dir", metavar="DIR", required=True,
               help="Directory to write the variants into (created if needed).")
 @click.option("--force", is_flag=True, help="Replace variant files that exist.")
-def vary(file: str, count: int, seed: int, out_dir: str, force: bool) -> None:
-    """Write COUNT variants of FILE with values drawn from its `vary:` block.
+def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: int,
+         out_dir: str, force: bool) -> None:
+    """Write COUNT variants of FILE with values drawn from its `vary:` block, or with
+    --roster one variant per student of each FILE.
 
     Each variant has its computed `expected` answers; draws with no real
     solution are rejected and drawn again.
     """
     from .commands.authoring import write_variants
 
+    if (count is None) == (roster is None):
+        fail("give --count N (variants of one FILE) or --roster ROSTER.csv (one per student)")
     try:
-        written = write_variants(file, count, seed, out_dir, force)
+        if roster is not None:
+            from .commands.roster import write_roster_variants
+
+            written = write_roster_variants(list(files), roster, seed, out_dir, force)
+            click.echo(f"wrote {len(written) - 1} variant file(s) and the assignment:",
+                       err=True)
+            click.echo(written[-1])
+            return
+        if len(files) != 1:
+            fail("--count varies one FILE; give --roster for several")
+        written = write_variants(files[0], count, seed, out_dir, force)
     except InputError as err:
         fail(err)
     for path in written:
@@ -380,6 +420,40 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
         internal(file, err)
         sys.exit(INTERNAL)
     click.echo(out, nl=False)
+
+
+@main.command()
+@click.argument("files", nargs=-1, metavar="FILES|DIR")
+@click.option("-o", "--output", "out", metavar="OUT", default="handout.html", show_default=True,
+              help="OUT.html, OUT.tex or OUT.pdf (pdflatex); per student OUT-STUDENT.ext and "
+                   "OUT-key.csv.")
+@click.option("--roster", metavar="ROSTER.csv",
+              help="One sheet per student, each with their own numbers (as gyro vary --roster "
+                   "with the same --seed).")
+@click.option("--assignment", metavar="ASSIGNMENT.csv",
+              help="One sheet per student from gyro vary --roster's assignment (FILES not "
+                   "needed).")
+@click.option("--seed", "-s", type=int, default=0, show_default=True,
+              help="With --roster: the course seed.")
+@click.option("--solutions", is_flag=True, help="Add the worked answers.")
+@click.option("--course", default="", help="The course's name, on the cover.")
+@click.option("--title", default="Homework", show_default=True, help="The sheet's title.")
+@click.option("--force", is_flag=True, help="Replace files that exist.")
+def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: str | None,
+            seed: int, solutions: bool, course: str, title: str, force: bool) -> None:
+    """Write the students' question sheets: a cover and each problem's statement with
+    the student's numbers; --solutions adds the worked answers."""
+    from .commands.handout import write_handouts
+
+    if not files and not assignment:
+        fail("give the problem FILES (or a DIR), or --assignment")
+    try:
+        written = write_handouts(list(files), out, roster, assignment, seed, solutions,
+                                 course, title, force)
+    except InputError as err:
+        fail(err)
+    for path in written:
+        click.echo(path)
 
 
 @main.command()

@@ -21,7 +21,8 @@ ROOT = Path(__file__).resolve().parents[1]
 REV = 2 * math.pi
 
 TWO_WHEELER = (ROOT / "problems" / "two_wheeler_250kg.yaml").read_text()
-TOP_11_3 = (ROOT / "problems" / "11_3.yaml").read_text()
+# without its statement, whose {weight} the tests below may replace by a mass
+TOP_11_3 = (ROOT / "problems" / "11_3.yaml").read_text().split("\nstatement:")[0] + "\n"
 
 
 def _json(result) -> dict:

@@ -438,13 +438,24 @@ def test_extreme_magnitudes_keep_the_words_or_exit_2(run, write):
     tiny = run("solve", "--format", "json", write("""
         id: t
         kind: ship
-        given: {mass: 1e-300 kg, k_axial: 1e-10 m, spin: 2400 rpm,
+        given: {mass: 1e-50 kg, k_axial: 1e-5 m, spin: 2400 rpm,
                 rotor_sense: clockwise_from_stern, speed: 200 km/h, turn_radius: 50 m}
         find: {effect: null}
         """))
     assert tiny.exit_code == 0
     assert json.loads(tiny.stdout)["answers"]["effect"]["values"] == [
         "raises the bow and lowers the stern"]
+    # below 1e-60 SI a given value is refused (issue 22 item 7): its products underflow
+    underflow = run("solve", write("""
+        id: t
+        kind: ship
+        given: {mass: 1e-300 kg, k_axial: 1e-10 m, spin: 2400 rpm,
+                rotor_sense: clockwise_from_stern, speed: 200 km/h, turn_radius: 50 m}
+        find: {effect: null}
+        """))
+    assert underflow.exit_code == 2
+    assert "given.mass" in underflow.stderr and "underflow" in underflow.stderr
+    assert len(underflow.stderr.strip().splitlines()) == 1
     for kind_text in ("""
         id: t
         kind: aeroplane

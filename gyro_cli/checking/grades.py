@@ -78,6 +78,7 @@ class GradeRow:
     points: float
     max_points: float = 1.0
     note: str = ""
+    variant: str = ""  # graded by assignment: the variant this student was given
 
 
 @dataclass
@@ -85,6 +86,8 @@ class Graded:
     rows: list[GradeRow]
     scores: dict[str, tuple[float, float]] = field(default_factory=dict)
     errors: list[str] = field(default_factory=list)  # internal errors, one line each
+    assignment: Any = None  # checking.assignment.Assignment when graded by assignment
+    sheet_students: list[str] = field(default_factory=list)  # who the sheet holds answers of
 
 
 # ---- reading the sheet ------------------------------------------------------
@@ -109,14 +112,27 @@ def _read_csv(path: str) -> list[Submission]:
     if rows and [HEADER_WORDS.get(c.strip().lower()) for c in rows[0][:4]] \
             and all(c.strip().lower() in HEADER_WORDS for c in rows[0] if c.strip()):
         order = [HEADER_WORDS[c.strip().lower()] for c in rows[0] if c.strip()]
+        for k, name in enumerate(order):
+            if name in order[:k]:
+                first = order.index(name)
+                raise InputError(f"the header has two {name} columns ({rows[0][first].strip()!r} "
+                                 f"in column {first + 1} and {rows[0][k].strip()!r} in column "
+                                 f"{k + 1}); keep one", file=path, line=1)
         if sorted(set(order)) != sorted(COLUMNS):
             raise InputError(f"the header must name the columns {', '.join(COLUMNS)}; got "
                              f"{', '.join(rows[0])}", file=path, line=1)
         start = 1
     merged: dict[tuple[str, str, str], Submission] = {}
+    seen: dict[tuple[str, ...], int] = {}
     for number, row in enumerate(rows[start:], start + 1):
         if not any(c.strip() for c in row):
             continue
+        same = tuple(" ".join(c.split()) for c in row)
+        if same in seen:  # a copy-paste slip: counted twice it would halve the point
+            raise InputError(f"this row repeats line {seen[same]} word for word; remove one "
+                             "(several roots go in one row separated by ';' or in rows with "
+                             "different values)", file=path, line=number)
+        seen[same] = number
         if len(row) < len(order) or any(c.strip() for c in row[len(order):]):
             raise InputError(f"expected {len(order)} columns ({', '.join(order)}), got "
                              f"{len(row)}", file=path, line=number)
@@ -137,6 +153,7 @@ def _read_yaml(path: str) -> list[Submission]:
     from ..solving.problem import read_yaml
 
     data, lines = read_yaml(path, MAX_SHEET_BYTES)
+    _refuse_repeated_keys(path)
     if not isinstance(data, dict):
         raise InputError("expected a mapping: student -> problem id -> answer -> value",
                          file=path)
@@ -154,6 +171,36 @@ def _read_yaml(path: str) -> list[Submission]:
                 out.append(Submission(str(student), str(problem), str(answer),
                                       [v for v in values if v is not None], where["line"]))
     return out
+
+
+def _refuse_repeated_keys(path: str) -> None:
+    """A key written twice at any depth of a YAML sheet is bad input (YAML keeps the last
+    one silently, so one of the student's answers would be dropped without a word)."""
+    import yaml
+
+    from ..core import safeyaml
+
+    text = safeyaml.read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)")
+    try:
+        _, node = safeyaml.load(text)
+    except Exception:  # read_yaml has already reported what is wrong with it
+        return
+    stack = [(node, "")]
+    while stack:
+        item, where = stack.pop()
+        if isinstance(item, yaml.MappingNode):
+            lines: dict[str, int] = {}
+            for key, value in item.value:
+                name = str(key.value)
+                line = key.start_mark.line + 1
+                if name in lines:
+                    raise InputError(f"{where + name!r} is written twice (lines {lines[name]} "
+                                     f"and {line}); YAML would keep only the last: keep one",
+                                     file=path, line=line)
+                lines[name] = line
+                stack.append((value, f"{where}{name} > "))
+        elif isinstance(item, yaml.SequenceNode):
+            stack.extend((v, where) for v in item.value)
 
 
 # ---- grading ----------------------------------------------------------------
@@ -181,9 +228,17 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
     return by_id
 
 
-def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
-    """Grade every submission in ``sheet`` against the problems under ``paths``."""
+def grade(sheet: str, paths: list[str] | tuple[str, ...],
+          assignment: str | None = None, credit: dict[str, float] | None = None) -> Graded:
+    """Grade every submission in ``sheet`` against the problems under ``paths``.
+
+    With ``assignment`` (an assignment.csv from ``gyro vary --roster``) each student
+    is graded only on their own variants (:func:`grade_assigned`).
+    """
     from ..solving.solve import solve
+
+    if assignment is not None:
+        return grade_assigned(sheet, paths, assignment, credit)
 
     submissions = read_sheet(sheet)
     problems = load_problems(paths)
@@ -216,6 +271,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
             graded.errors.append(internal_message(problem.file, err))
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
+    graded.sheet_students = students
     by_key = {(s.student, s.problem, s.answer): s for s in submissions}
     for student in students:
         total = 0.0
@@ -228,7 +284,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
             else:
                 try:
                     row = grade_item(student, problems[pid], name, solved[pid].answers[name],
-                                     values)
+                                     values, credit)
                 except Exception as err:  # a bug: this row is an error, the rest is graded
                     from ..core.errors import internal_message
 
@@ -243,9 +299,263 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...]) -> Graded:
     return graded
 
 
+def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
+                   credit: dict[str, float] | None = None) -> Graded:
+    """Each student graded on their own variant of each assigned problem only.
+
+    The questions of a problem are the answers its variants ask for (`find`, and
+    `expected`); one row per student and question, so rows and time grow with the
+    number of students. The sheet may name the original problem id (mapped to the
+    student's variant by the assignment) or the variant's id; a variant that is
+    another student's is graded against the student's own, with a note. A wrong
+    answer that matches another student's variant says whose numbers it used.
+    """
+    import os
+
+    from .assignment import read_assignment, read_key
+    from ..solving.problem import load
+    from ..solving.solve import solve
+
+    plan = read_assignment(assignment_path)
+    submissions = read_sheet(sheet)
+    key = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
+    variants: dict[str, Any] = {}
+    stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
+    seen_files: dict[str, str] = {}
+    for row in plan.rows:
+        seen_files[os.path.realpath(row.file)] = row.variant
+        keyed = _from_key(key, row) if key else None
+        if keyed is not None:
+            variants[row.variant], stored[row.variant] = keyed
+            continue
+        try:
+            problem = load(row.file)
+        except InputError as err:
+            raise err.located(file=row.file) from None
+        except Exception as err:  # a bug: reported (exit 3) naming the file
+            err.gyro_file = row.file  # type: ignore[attr-defined]
+            raise
+        if problem.id != row.variant:
+            raise InputError(f"{row.file} holds problem {problem.id!r}, but the assignment "
+                             f"says variant {row.variant!r}", file=assignment_path,
+                             line=row.line)
+        variants[row.variant] = problem
+    if paths:  # the originals (or the variants' folder): every assigned problem among them
+        files, errors = check.collect(paths)
+        if errors:
+            raise InputError(errors[0].error or "bad path")
+        originals = {load(f).id for f in files if os.path.realpath(f) not in seen_files}
+        if originals:
+            for pid in plan.problems():
+                if pid not in originals:
+                    raise InputError(f"the assignment's problem {pid!r} is not among the problem "
+                                     f"files given (ids: {', '.join(sorted(originals))})",
+                                     file=assignment_path)
+    questions: dict[str, list[str]] = {}
+    for row in plan.rows:
+        if row.problem not in questions:
+            problem = variants[row.variant]
+            questions[row.problem] = list(dict.fromkeys(list(problem.find) +
+                                                        list(problem.expected)))
+    items: dict[tuple[str, str, str], Submission] = {}
+    notes: dict[tuple[str, str, str], list[str]] = {}
+    extra: list[tuple[Submission, Any]] = []
+    for s in submissions:
+        where = dict(file=sheet, line=s.line)
+        if s.student not in plan.students:
+            raise InputError(f"student {s.student!r} is not in the assignment "
+                             f"{assignment_path}", **where)
+        own = plan.by_item.get((s.student, s.problem))
+        note = ""
+        if own is None:
+            other = plan.by_variant.get(s.problem)
+            if other is None:
+                raise InputError(f"problem {s.problem!r} (student {s.student!r}) is neither a "
+                                 f"problem of the assignment ({', '.join(plan.problems())}) nor "
+                                 "one of its variants", **where)
+            own = plan.by_item.get((s.student, other.problem))
+            if own is None:
+                raise InputError(f"student {s.student!r} is not assigned problem "
+                                 f"{other.problem!r}", **where)
+            if other.student != s.student:
+                note = (f"answered variant {other.variant} (student {other.student}'s numbers); "
+                        f"graded on their own variant {own.variant}")
+        problem = variants[own.variant]
+        if problem.kind.answer(s.answer) is None:
+            names = ", ".join(a.name for a in problem.kind.answers)
+            raise InputError(f"problem {own.problem!r} has no answer {s.answer!r} (answers: "
+                             f"{names})", **where)
+        if s.answer not in questions[own.problem]:
+            extra.append((s, own))
+            continue
+        key = (s.student, own.problem, s.answer)
+        if key in items:
+            items[key].values += s.values
+        else:
+            items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
+        if note:
+            notes.setdefault(key, []).append(note)
+    graded = Graded([], assignment=plan,
+                    sheet_students=list(dict.fromkeys(s.student for s in submissions)))
+    solved: dict[str, Any] = {}
+    for variant, problem in variants.items():
+        if variant in stored:
+            solved[variant] = stored[variant]
+            continue
+        find = dict(problem.find)
+        for name in questions[plan.by_variant[variant].problem]:
+            find.setdefault(name, None)
+        try:
+            solved[variant] = solve(dataclasses.replace(problem, find=find))
+        except InputError as err:
+            raise err.located(file=problem.file) from None
+        except Exception as err:  # a bug: this variant's rows are errors, the rest is graded
+            from ..core.errors import internal_message
+
+            graded.errors.append(internal_message(problem.file, err))
+    lookup = _RootIndex(plan, variants, solved)
+    extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
+    for s, own in extra:
+        extras_by_student.setdefault(s.student, []).append((s, own))
+    assigned_problems = plan.problems()
+    for student in plan.students:
+        total = maximum = 0.0
+        for own in (plan.by_item[(student, pid)] for pid in assigned_problems
+                    if (student, pid) in plan.by_item):
+            problem = variants[own.variant]
+            for name in questions[own.problem]:
+                key = (student, own.problem, name)
+                submission = items.get(key)
+                values = submission.values if submission else None
+                if own.variant not in solved:
+                    row = GradeRow(student, own.problem, name, _submitted(values), "", None,
+                                   "error", 0.0, note="internal error solving the problem "
+                                   "(please report)")
+                else:
+                    try:
+                        row = grade_item(student, problem, name,
+                                         solved[own.variant].answers[name], values, credit)
+                    except Exception as err:  # a bug: this row is an error
+                        from ..core.errors import internal_message
+
+                        line = internal_message(problem.file, err)
+                        if line not in graded.errors:
+                            graded.errors.append(line)
+                        row = GradeRow(student, own.problem, name, _submitted(values), "",
+                                       None, "error", 0.0, note=line)
+                    if row.result in ("wrong", "partial") and values:
+                        whose = lookup.whose(own, name, values)
+                        if whose:
+                            row.note = (f"these are the answers to student {whose.student}'s "
+                                        f"variant {whose.variant}, not to this student's own "
+                                        f"{own.variant}; " + row.note).rstrip("; ")
+                row.problem, row.variant = own.problem, own.variant
+                if notes.get(key):
+                    row.note = "; ".join(notes[key] + ([row.note] if row.note else []))
+                graded.rows.append(row)
+                total += row.points
+                maximum += row.max_points
+        for s, own in extras_by_student.get(student, []):
+            graded.rows.append(GradeRow(student, own.problem, s.answer, _submitted(s.values),
+                                        "", None, "extra", 0.0, 0.0,
+                                        note=f"not asked in problem {own.problem} (it asks: "
+                                             f"{', '.join(questions[own.problem])}); not graded",
+                                        variant=own.variant))
+        graded.scores[student] = (total, maximum)
+    return graded
+
+
+def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
+    """A variant's problem and answers from the stored key, when its file is the one the
+    key was made with (same SHA-256); else None, and the file is read and solved."""
+    from types import SimpleNamespace
+
+    from .assignment import file_digest
+    from .. import kinds
+    from ..core.safeyaml import read_bytes
+    from ..solving.problem import MAX_FILE_BYTES
+    from ..solving.solve import Reported
+
+    entry = key["variants"].get(row.variant)
+    if not isinstance(entry, dict) or entry.get("problem") != row.problem:
+        return None
+    about = key["problems"].get(row.problem)
+    try:
+        if file_digest(read_bytes(row.file, MAX_FILE_BYTES)) != entry.get("sha256"):
+            return None
+        kind = kinds.get(about["kind"])
+        answers = {name: Reported(**value) for name, value in entry["answers"].items()}
+        questions = list(about["questions"])
+    except InputError:
+        return None  # the slow path says what is wrong with the file
+    except (KeyError, TypeError):
+        return None  # a damaged key: solve instead
+    problem = SimpleNamespace(id=row.variant, kind=kind, tolerance=about.get("tolerance"),
+                              file=row.file, find={q: None for q in questions}, expected={})
+    return problem, SimpleNamespace(answers=answers)
+
+
+class _RootIndex:
+    """Every variant's computed values of each (problem, answer), sorted, to find in
+    O(log n) whose numbers a wrong answer used."""
+
+    def __init__(self, plan: Any, variants: dict[str, Any], solved: dict[str, Any]) -> None:
+        self.plan, self.variants, self.solved = plan, variants, solved
+        self.index: dict[tuple[str, str], tuple[list[float], list[str]]] = {}
+
+    def _table(self, problem_id: str, name: str) -> tuple[list[float], list[str]]:
+        table = self.index.get((problem_id, name))
+        if table is None:
+            pairs = []
+            for row in self.plan.rows:
+                if row.problem != problem_id or row.variant not in self.solved:
+                    continue
+                answer = self.solved[row.variant].answers.get(name)
+                if answer is None or answer.si_unit is None and answer.unit is None:
+                    continue
+                pairs += [(float(v), row.variant) for v in answer.si_values
+                          if isinstance(v, (int, float)) and math.isfinite(v)]
+            pairs.sort()
+            table = ([p[0] for p in pairs], [p[1] for p in pairs])
+            self.index[(problem_id, name)] = table
+        return table
+
+    def whose(self, own: Any, name: str, values: list[Any]) -> Any:
+        """The assignment row of another student whose variant every submitted value of
+        ``values`` matches (within the problem's tolerance), or None."""
+        import bisect
+
+        problem = self.variants[own.variant]
+        spec = problem.kind.answer(name)
+        if spec.dimension is None:
+            return None
+        names = [a.name for a in problem.kind.answers]
+        tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
+        keys, owners = self._table(own.problem, name)
+        common: set[str] | None = None
+        for value in values:
+            try:
+                si = float(parse_value(value, spec.dimension, name).si)
+            except Exception:
+                return None
+            width = max(tolerance.half_width(si, si), abs(si) * 1e-9)
+            lo, hi = bisect.bisect_left(keys, si - width), bisect.bisect_right(keys, si + width)
+            found = {owners[k] for k in range(lo, min(hi, lo + 50))} - {own.variant}
+            common = found if common is None else common & found
+            if not common:
+                return None
+        if not common:
+            return None
+        return self.plan.by_variant[sorted(common)[0]]
+
+
 def grade_item(student: str, problem: Any, name: str, reported: Any,
-               values: list[Any] | None) -> GradeRow:
-    """One student's answer to one question, against the solver's answer."""
+               values: list[Any] | None, credit: dict[str, float] | None = None) -> GradeRow:
+    """One student's answer to one question, against the solver's answer.
+
+    ``credit``: the share of a value's point given when its likely slip is one of the
+    named slips (SLIP_NAMES), e.g. {"2pi": 0.5}; a slip with the sign as well needs both.
+    """
     spec = problem.kind.answer(name)
     names = [a.name for a in problem.kind.answers]
     tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
@@ -279,6 +589,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
     row.relative_error = max(errors, key=abs) if errors else None
     notes = []
+    credited = 0.0
     for line in lines:
         if line.passed:
             continue
@@ -294,9 +605,67 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
             if slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
+                share, named = slip_credit(slip, credit)
+                if share:
+                    credited += share
+                    note += f" [credit {share:g} for {' and '.join(named)}]"
             notes.append(note)
     row.note = "; ".join(notes)
+    if credited and lines:
+        row.points = round((passed + credited) / len(lines), 4)
+        row.result = "partial" if row.result == "wrong" else row.result
     return row
+
+
+# Named slips (the names of --credit) and the words of matching.diagnose that name them.
+SLIP_NAMES = {
+    "2pi": "a factor of 2 pi",
+    "rpm": "a factor of 60/(2 pi)",
+    "60": "a factor of 60:",
+    "g": "a factor of g",
+    "deg": "a factor of 180/pi",
+    "10": "a power of ten",
+    "sign": "the sign",
+}
+
+
+def parse_credit(text: str) -> dict[str, float]:
+    """``2pi=0.5,sign=0.5`` -> {"2pi": 0.5, "sign": 0.5}; InputError naming what is wrong."""
+    out: dict[str, float] = {}
+    for part in (p.strip() for p in text.split(",")):
+        if not part:
+            continue
+        name, eq, value = part.partition("=")
+        name = name.strip().lower()
+        if not eq or name not in SLIP_NAMES:
+            raise InputError(f"--credit: expected slip=fraction with a slip among "
+                             f"{', '.join(SLIP_NAMES)}, got {part!r}")
+        try:
+            share = float(value)
+        except ValueError:
+            share = math.nan
+        if not 0 <= share <= 1:
+            raise InputError(f"--credit: the share for {name} must lie between 0 and 1, "
+                             f"got {value.strip()!r}")
+        out[name] = share
+    return out
+
+
+def slip_credit(slip: str, credit: dict[str, float] | None) -> tuple[float, list[str]]:
+    """The share of a point a slip earns under ``credit`` (0 when a slip it involves is not
+    named there), and the slips' names."""
+    if not credit:
+        return 0.0, []
+    named = [name for name, words in SLIP_NAMES.items() if name != "sign" and words in slip]
+    if slip.startswith("the sign") or slip.endswith("and the sign") or \
+            " and the sign" in slip:
+        named.append("sign")
+    if not named or any(n not in credit for n in named):
+        return 0.0, named
+    share = 1.0
+    for n in named:
+        share *= credit[n]
+    return share, named
 
 
 def _submitted(values: list[Any] | None) -> str:
@@ -317,6 +686,12 @@ def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
             row.result, row.note = "invalid", f"expected a word, got {value!r}"
             return row
         submitted.append(normal_word(value))
+    # A word written twice (`cusps; cusps`, or `cusp; cusps`) counts once (docs/check.md).
+    canonical = {}
+    for s in submitted:
+        canonical.setdefault(next((w.lower() for w in truth if s in
+                                   set(WORD_SYNONYMS.get(w.lower(), ())) | {w.lower()}), s), s)
+    submitted = list(canonical.values())
     hits = 0
     for word in truth:
         accepted = set(WORD_SYNONYMS.get(word.lower(), ())) | {word.lower()}

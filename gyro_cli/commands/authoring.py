@@ -66,6 +66,9 @@ def template(kind_name: str) -> str:
            _line('title: "Describe the problem"', "optional"),
            _line(f"kind: {kind.name}", "required"),
            _line('source: ""', "optional: book, chapter, problem number"),
+           _line("statement: >-", "optional: the problem as students read it; {key} is "
+                 "the given value as written"),
+           "  " + _statement_example(kind, given_ex, find_ex),
            _line("notes:", "optional: lines printed with the worked answer"),
            "  - Spin is the rate relative to the precessing frame (psidot)."
            if kind.param("spin") and "precessing frame" in kind.param("spin").doc
@@ -123,6 +126,22 @@ def template(kind_name: str) -> str:
     return "\n".join(out) + "\n"
 
 
+def _statement_example(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> str:
+    """A statement for the template that names each given value by placeholder."""
+    import re
+
+    params = {p.name: p for p in list(kind.params) +
+              (list(BODY_PARAMS) if kind.uses_body else [])}
+    short = {k: re.sub(r"\s*\([^)]*\)", "", params[k].doc if k in params else k).split(";")[0]
+             for k in given}
+    data = [f"{short[k]} {{{k}}}" for k in given]
+    asked = ", ".join(re.sub(r"\s*\([^)]*\)", "", a.doc) for a in kind.answers
+                      if a.name in find) or kind.answers[0].doc
+    if not data:
+        return f"State the problem here; write {{key}} for a given value. Find {asked}."
+    return f"Given: {'; '.join(data)}. Find {asked}."
+
+
 def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
     """The example's answers as the solver gives them, for the template's `expected`."""
     from ..solving.problem import _build
@@ -172,6 +191,10 @@ def schema() -> dict[str, Any]:
         "properties": {
             "id": {"type": ["string", "number"], "description": "how reports name the problem"},
             "title": {"type": "string"},
+            "statement": {"type": "string", "minLength": 1,
+                          "description": "the problem as students read it; {key} is replaced "
+                                         "by the given value as written ({{ and }} for "
+                                         "braces)"},
             "kind": {"enum": kind_names, "description": "the problem kind (`gyro kinds`)"},
             "source": {"type": "string"},
             "notes": {"oneOf": [{"type": "string"},
@@ -326,11 +349,7 @@ def _expected_text(values: list, unit: str | None, tol_halfwidths: list[float]) 
 
 def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     """``count`` variants of the problem in ``path``: (file name, YAML text) each."""
-    import yaml
-
-    from ..checking.tolerance import tolerance_for
-    from ..solving.problem import _build, load
-    from ..solving.solve import solve
+    from ..solving.problem import load
 
     if not 1 <= count <= MAX_VARIANTS:
         raise InputError(f"--count must lie between 1 and {MAX_VARIANTS}, got {count}")
@@ -342,7 +361,6 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
     base = copy.deepcopy(problem.data)
     base.pop("vary", None)
     keyed = list(problem.expected) or list(problem.find)
-    answer_names = [a.name for a in problem.kind.answers]
     rng = random.Random(seed)
     stem = os.path.splitext(os.path.basename(path))[0]
     width = max(2, len(str(count)))
@@ -354,43 +372,16 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
             raise InputError(f"only {len(out)} of {count} variants have a real solution after "
                              f"{draws} draws; narrow the ranges in `vary`", file=path, key="vary")
         draws += 1
-        data = copy.deepcopy(base)
-        for key, form, low, high, unit, _ in ranges:
-            value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
-            data["given"][key] = f"{number_text(value)} {unit}".strip()
         n = len(out) + 1
-        data["id"] = f"{problem.id}-v{n:0{width}d}"
-        if problem.title:
-            data["title"] = f"{problem.title} (variant {n})"
-        data["source"] = f"gyro vary {os.path.basename(path)} --seed {seed}: variant {n}" + \
-            (f" of {problem.source}" if problem.source else "")
-        find = dict(data["find"]) if isinstance(data["find"], dict) else \
-            {name: None for name in data["find"]}
-        for name in keyed:
-            find.setdefault(name, None)
-        data["find"] = find
-        data.pop("expected", None)
-        try:
-            candidate = _build(path, data, {})
-            result = solve(candidate)
-        except InputError:
+        data = draw_variant(problem, base, ranges, rng, keyed,
+                            variant_id=f"{problem.id}-v{n:0{width}d}",
+                            title=f"{problem.title} (variant {n})",
+                            source=f"gyro vary {os.path.basename(path)} --seed {seed}: "
+                                   f"variant {n}")
+        if data is None:
             continue  # no real solution (or an impossible body): draw again
-        expected = {}
-        for name in keyed:
-            answer = result.answers[name]
-            spec = problem.kind.answer(name)
-            tol = tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
-            widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
-                      if isinstance(v, float) else 0.0
-                      for si, v in zip(answer.si_values, answer.values)]
-            expected[name] = _expected_text(answer.values, answer.unit, widths)
-        data["expected"] = expected
-        order = ["id", "title", "kind", "source", "notes", "given", "find", "expected",
-                 "tolerance"]
-        data = {k: data[k] for k in order if k in data}
         text = (f"# Generated by `gyro vary {os.path.basename(path)} --count {count} "
-                f"--seed {seed}`: variant {n} of {count}.\n"
-                + yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100))
+                f"--seed {seed}`: variant {n} of {count}.\n" + variant_yaml(data))
         out.append((f"{stem}-v{n:0{width}d}.yaml", text))
     return out
 
@@ -414,3 +405,56 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
         write_atomic(target, text, force=force)
         written.append(target)
     return written
+
+
+def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.Random,
+                 keyed: list[str], variant_id: str, title: str,
+                 source: str, solved: list[Any] | None = None) -> dict[str, Any] | None:
+    """One draw of every `vary` key from ``rng``, solved: the variant's data with its
+    computed `expected` answers, or None when the draw has no real solution. The
+    solver's result is appended to ``solved`` when that is given."""
+    from ..checking.tolerance import tolerance_for
+    from ..solving.problem import _build
+    from ..solving.solve import solve
+
+    answer_names = [a.name for a in problem.kind.answers]
+    data = copy.deepcopy(base)
+    for key, form, low, high, unit, _ in ranges:
+        value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
+        data["given"][key] = f"{number_text(value)} {unit}".strip()
+    data["id"] = variant_id
+    if problem.title:
+        data["title"] = title
+    data["source"] = source + (f" of {problem.source}" if problem.source else "")
+    find = dict(data["find"]) if isinstance(data["find"], dict) else \
+        {name: None for name in data["find"]}
+    for name in keyed:
+        find.setdefault(name, None)
+    data["find"] = find
+    data.pop("expected", None)
+    try:
+        result = solve(_build(problem.file, data, {}))
+    except InputError:
+        return None
+    expected = {}
+    for name in keyed:
+        answer = result.answers[name]
+        spec = problem.kind.answer(name)
+        tol = tolerance_for(problem.tolerance, name, spec.dimension, answer_names)
+        widths = [tol.half_width(si, v) / (si / v if v and si else 1.0)
+                  if isinstance(v, float) else 0.0
+                  for si, v in zip(answer.si_values, answer.values)]
+        expected[name] = _expected_text(answer.values, answer.unit, widths)
+    data["expected"] = expected
+    if solved is not None:
+        solved.append(result)
+    order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
+             "expected", "tolerance"]
+    return {k: data[k] for k in order if k in data}
+
+
+def variant_yaml(data: dict[str, Any]) -> str:
+    """A variant's data as YAML, keys in the problem format's order."""
+    import yaml
+
+    return yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100)

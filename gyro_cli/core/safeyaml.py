@@ -228,7 +228,7 @@ def load(text: str) -> tuple[Any, Any]:
     loader = loader_class()(text)
     try:
         node = loader.get_single_node()
-        written = _mapping_values(node, yaml_module())
+        written = _mapping_values(node)
         data = loader.construct_document(node) if node is not None else None
         # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
         # merged ones first; give the node back the pairs as written, so that a key that
@@ -240,15 +240,11 @@ def load(text: str) -> tuple[Any, Any]:
     return data, node
 
 
-def yaml_module() -> Any:
-    import yaml
-
-    return yaml
-
-
-def _mapping_values(node: Any, yaml: Any) -> list[tuple[Any, list]]:
+def _mapping_values(node: Any) -> list[tuple[Any, list]]:
     """Every mapping node under ``node`` with its own list of pairs (iteratively; aliases
     are the same node objects, visited once)."""
+    import yaml
+
     found: list[tuple[Any, list]] = []
     seen: set[int] = set()
     stack = [node] if node is not None else []

@@ -9,33 +9,28 @@ import json
 from typing import Any
 
 from ..checking.grades import OUT_COLUMNS, Graded
+from ..core.csvsafe import safe_cell as _cell
 from ..core.errors import terminal_text
 
 # ---- output -----------------------------------------------------------------
-
-def _cell(value: Any) -> str:
-    """A CSV cell a spreadsheet will not run as a formula (=, +, @, -letters)."""
-    text = "" if value is None else str(value)
-    if text[:1] in ("=", "+", "@", "\t", "\r") or (text[:1] == "-" and not
-                                                   text[1:2].replace(".", "").isdigit()):
-        return "'" + text
-    return text
 
 
 def csv_text(graded: Graded) -> str:
     """The grades: one row per student and answer, then a score row per student."""
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(OUT_COLUMNS)
+    by_assignment = graded.assignment is not None  # then a last column: the variant
+    writer.writerow(OUT_COLUMNS + (("variant",) if by_assignment else ()))
     for row in graded.rows:
         rel = "" if row.relative_error is None else f"{row.relative_error:.6g}"
         writer.writerow([_cell(row.student), _cell(row.problem), _cell(row.answer),
                          _cell(row.submitted), _cell(row.correct), rel, row.result,
-                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)])
+                         f"{row.points:g}", f"{row.max_points:g}", _cell(row.note)]
+                        + ([_cell(row.variant)] if by_assignment else []))
     for student, (points, total) in graded.scores.items():
         percent = 100 * points / total if total else 0.0
         writer.writerow([_cell(student), "", "", "", "", "", "score", f"{points:g}",
-                         f"{total:g}", f"{percent:.1f}%"])
+                         f"{total:g}", f"{percent:.1f}%"] + ([""] if by_assignment else []))
     return out.getvalue()
 
 
@@ -60,6 +55,220 @@ def table(graded: Graded) -> str:
 
 
 def as_json(graded: Graded) -> str:
-    return json.dumps({"rows": [dataclasses.asdict(r) for r in graded.rows],
+    return json.dumps({"rows": [_row_json(r, graded) for r in graded.rows],
                        "scores": {s: {"points": p, "max_points": t}
                                   for s, (p, t) in graded.scores.items()}}, allow_nan=False)
+
+
+def _row_json(row: Any, graded: Graded) -> dict[str, Any]:
+    data = dataclasses.asdict(row)
+    if graded.assignment is None:
+        data.pop("variant", None)
+    return data
+
+
+# ---- grades out: the formats the course's tools import (docs/course.md) -----------------
+
+OUT_FORMATS = ("grades", "canvas", "gradescope", "prairielearn")
+CANVAS_COLUMNS = ("Student", "ID", "SIS User ID", "SIS Login ID", "Section")
+# The roster's columns (lower case, spaces or underscores) that fill Canvas's columns.
+CANVAS_FROM_ROSTER = {
+    "Student": ("name", "student name", "full name", "sortable name"),
+    "ID": ("id", "canvas id", "canvas user id", "user id"),
+    "SIS User ID": ("sis user id", "sis id"),
+    "SIS Login ID": ("sis login id", "login id", "login"),
+    "Section": ("section", "sections"),
+}
+
+
+def _roster_value(extra: dict[str, str], names: tuple[str, ...]) -> str:
+    for key, value in extra.items():
+        if key.replace("_", " ").strip().lower() in names and value:
+            return value
+    return ""
+
+
+def canvas_csv(graded: Graded, column: str) -> str:
+    """A Canvas gradebook import: Student, ID, SIS User ID, SIS Login ID, Section, then the
+    assignment's column (points), after a "Points Possible" row.
+
+    Names, ids and sections come from the roster's columns when the grades were made by
+    assignment; a student with none of ID, SIS User ID and SIS Login ID gets gyro's student
+    id as the SIS User ID, so that Canvas can match the row.
+    """
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(list(CANVAS_COLUMNS) + [column])
+    totals = {total for _, total in graded.scores.values()}
+    writer.writerow(["    Points Possible", "", "", "", "",
+                     f"{max(totals):g}" if totals else ""])
+    students = graded.assignment.students if graded.assignment is not None else {}
+    for student, (points, total) in graded.scores.items():
+        extra = students[student].extra if student in students else {}
+        cells = {name: _roster_value(extra, keys) for name, keys in CANVAS_FROM_ROSTER.items()}
+        cells["Student"] = cells["Student"] or student
+        if not (cells["ID"] or cells["SIS User ID"] or cells["SIS Login ID"]):
+            cells["SIS User ID"] = student
+        writer.writerow([_cell(cells[c]) for c in CANVAS_COLUMNS] + [f"{points:g}"])
+    return out.getvalue()
+
+
+def _student_rows(graded: Graded, student: str) -> list[Any]:
+    return [r for r in graded.rows if r.student == student]
+
+
+def _test_name(row: Any) -> str:
+    return f"{row.problem}: {row.answer}"
+
+
+def _test_output(row: Any) -> str:
+    text = f"submitted: {row.submitted or '(nothing)'}; result: {row.result}"
+    return text + (f"; {row.note}" if row.note else "")
+
+
+def gradescope_results(graded: Graded, student: str) -> str:
+    """Gradescope's autograder results.json for one student: a test per answer (name,
+    score, max_score, status, output) and the total score."""
+    rows = _student_rows(graded, student)
+    points, total = graded.scores.get(student, (0.0, 0.0))
+    tests = [{"name": _test_name(r), "score": r.points, "max_score": r.max_points,
+              "status": "passed" if r.points >= r.max_points > 0 else "failed",
+              "output": _test_output(r), "visibility": "visible"}
+             for r in rows if r.max_points > 0]
+    return json.dumps({"score": points, "output": f"{student}: {points:g} of {total:g} points "
+                       "(graded by gyro)", "visibility": "visible", "tests": tests},
+                      indent=2, allow_nan=False) + "\n"
+
+
+def prairielearn_results(graded: Graded, student: str) -> str:
+    """PrairieLearn's external-grader results.json for one student: gradable, score as a
+    fraction 0..1, a message, and a test per answer (name, points, max_points, message)."""
+    rows = _student_rows(graded, student)
+    points, total = graded.scores.get(student, (0.0, 0.0))
+    tests = [{"name": _test_name(r), "description": f"the answer {r.answer} of problem "
+              f"{r.problem}", "points": r.points, "max_points": r.max_points,
+              "message": r.note if r.result != "correct" else "correct",
+              "output": _test_output(r)}
+             for r in rows if r.max_points > 0]
+    return json.dumps({"gradable": True, "score": points / total if total else 0.0,
+                       "message": f"{points:g} of {total:g} points", "output": "",
+                       "tests": tests}, indent=2, allow_nan=False) + "\n"
+
+
+def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
+    """Write the grades to ``out`` in ``fmt``; the JSON formats are one file per student:
+    ``out`` itself when it ends in .json (the sheet must hold one student), else
+    ``out/<student>.json`` for every student graded."""
+    import os
+
+    from ..core.files import write_atomic
+
+    if fmt == "grades":
+        write_atomic(out, csv_text(graded), force=force)
+        return [out]
+    if fmt == "canvas":
+        column = os.path.splitext(os.path.basename(out))[0] or "gyro"
+        write_atomic(out, canvas_csv(graded, column), force=force)
+        return [out]
+    from ..core.errors import InputError
+
+    render = gradescope_results if fmt == "gradescope" else prairielearn_results
+    if out.endswith(".json"):  # one student's results, as inside an autograder
+        if len(graded.sheet_students) != 1:
+            raise InputError(f"a .json file holds one student's results; the sheet has "
+                             f"{len(graded.sheet_students)} students: give a directory",
+                             file=out)
+        write_atomic(out, render(graded, graded.sheet_students[0]), force=force)
+        return [out]
+    students = list(graded.scores)
+    from ..checking.assignment import file_names
+
+    names = file_names(students)
+    targets = [(os.path.join(out, names[s] + ".json"), render(graded, s)) for s in students]
+    if not force:
+        for target, _ in targets:
+            if os.path.exists(target):
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=target)
+    os.makedirs(out, exist_ok=True)
+    for target, text in targets:
+        write_atomic(target, text, force=force)
+    return [t for t, _ in targets]
+
+
+# ---- feedback: a short page per student -------------------------------------------------
+
+RESULT_WORDS = {"correct": "right", "partial": "partly right", "wrong": "off",
+                "invalid": "not readable", "missing": "not answered", "extra": "not asked",
+                "error": "not graded (gyro failed on the problem)"}
+
+
+def feedback_text(graded: Graded, student: str) -> str:
+    """One student's feedback as Markdown: the score, then each answer: right, or what was
+    off and the likely slip (the grading note). The correct values are not printed, so the
+    page can go out before the due date."""
+    points, total = graded.scores.get(student, (0.0, 0.0))
+    percent = 100 * points / total if total else 0.0
+    lines = [f"# Feedback for {_md(student)}", "",
+             f"Score: {points:g} of {total:g} points ({percent:.1f}%).", ""]
+    rows = [r for r in graded.rows if r.student == student]
+    right = [r for r in rows if r.result == "correct"]
+    other = [r for r in rows if r.result != "correct"]
+    if right:
+        lines += ["## Right", ""]
+        lines += [f"- {_md(r.problem)}, {_md(r.answer)}: {_md(r.submitted)}" for r in right]
+        lines.append("")
+    if other:
+        lines += ["## To look at again", ""]
+        for r in other:
+            text = f"- {_md(r.problem)}, {_md(r.answer)}: {RESULT_WORDS.get(r.result, r.result)}"
+            if r.submitted:
+                text += f" (you gave {_md(r.submitted)})"
+            note = r.note if r.result != "missing" else ""
+            if note:
+                text += f". {_md(_without_truth(note))}"
+            lines.append(text + f"; {r.points:g} of {r.max_points:g} points.")
+        lines.append("")
+    return "\n".join(lines)
+
+
+def _without_truth(note: str) -> str:
+    """A grading note without the solver's values (a missing root's value is the answer)."""
+    import re
+
+    return re.sub(r"missing root [^;]*", "a root is missing", note)
+
+
+def _md(text: Any) -> str:
+    """User text for Markdown: no raw HTML, no markup characters that change the page."""
+    import html as _html
+
+    out = _html.escape(" ".join(str(text).split()), quote=False)
+    for ch in "\\`*_[]#|<>!":
+        out = out.replace(ch, "\\" + ch) if ch not in "<>" else out
+    return out
+
+
+def write_feedback(graded: Graded, folder: str, force: bool) -> list[str]:
+    """``folder/<student>.md`` for every student graded; nothing over an existing file
+    without ``force`` (checked before anything is written)."""
+    import os
+
+    from ..checking.assignment import file_names
+    from ..core.errors import InputError
+    from ..core.files import write_atomic
+
+    names = file_names(list(graded.scores))
+    targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s))
+               for s in graded.scores]
+    if os.path.exists(folder) and not os.path.isdir(folder):
+        raise InputError("exists and is not a directory", file=folder)
+    if not force:
+        for target, _ in targets:
+            if os.path.exists(target):
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=target)
+    os.makedirs(folder, exist_ok=True)
+    for target, text in targets:
+        write_atomic(target, text, force=force)
+    return [t for t, _ in targets]

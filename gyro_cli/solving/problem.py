@@ -18,8 +18,8 @@ from ..core.params import normal_word, read_word, safe_choices
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
-TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "notes", "expected", "tolerance",
-            "vary", "units")
+TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
+            "tolerance", "vary", "units")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
 MAX_FILE_BYTES = 1_000_000
@@ -45,6 +45,14 @@ class Problem:
     lines: dict[str, int] = field(default_factory=dict)
     us_customary: bool = False
     units: str = "si"  # the worked answer's units: "si", or "us" (slug, ft, lbf)
+    statement: str = ""  # as written, with {key} placeholders (core/statement.py)
+
+    def statement_text(self) -> str:
+        """The statement with each {key} filled from `given` as written ("" if none)."""
+        from ..core.statement import fill_statement
+
+        return fill_statement(self.statement, self.data.get("given", {})) if self.statement \
+            else ""
 
     def line(self, key: str | None) -> int | None:
         return self.lines.get(key or "")
@@ -215,8 +223,25 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
         expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
         vary=data.get("vary"), data=data, lines=lines, us_customary=us,
-        units=_unit_system(data.get("units", "si")))
+        units=_unit_system(data.get("units", "si")),
+        statement=_statement(data.get("statement"), data["given"]))
     return problem
+
+
+def _statement(value: Any, given: dict) -> str:
+    """``statement``: text whose {key} placeholders are keys of `given` (checked here, so a
+    handout never meets a bad one)."""
+    from ..core.statement import StatementError, fill_statement
+
+    if value is None:
+        return ""
+    if not isinstance(value, str) or not value.strip():
+        raise InputError(f"expected the problem's text, got {shown(value)}", key="statement")
+    try:
+        fill_statement(value, given)
+    except StatementError as err:
+        raise InputError(str(err), key="statement") from None
+    return value.strip()
 
 
 def _unit_system(value: Any) -> str:
@@ -281,9 +306,10 @@ def representable(value: float, text: Any, dimension: str, key: str) -> float:
     if value != 0 and abs(value) < LEAST_MAGNITUDE:
         unit = units.si_text(dimension)
         raise InputError(f"{shown(text)} is {value:.3g}{' ' + unit if unit else ''}: a non-zero "
-                         f"value below {LEAST_MAGNITUDE:g} (SI) is refused, since products of a "
-                         "few such values underflow double precision (below 2.2e-308) to 0 "
-                         "and the answers would be wrong; check the unit, or use 0", key=key)
+                         f"value below {LEAST_MAGNITUDE:g} (SI) is refused, since products and "
+                         "quotients of a few such values overflow or underflow double precision "
+                         "(an underflow to 0 below 2.2e-308) and the answers would be wrong; "
+                         "check the unit, or use 0", key=key)
     return value
 
 

@@ -1,0 +1,219 @@
+"""Rosters and assignments: who answers which variant (`gyro vary --roster`,
+`gyro check --answers --assignment`).
+
+A roster is a CSV with a ``student`` column (a header row is required; other
+columns such as name, email, section or SIS ids are kept and carried into the
+assignment). An assignment (``DIR/assignment.csv``, written by
+``gyro vary FILE... --roster ROSTER.csv -o DIR``) has one row per student and
+problem: ``student, problem, variant, file`` (the original problem's id, the
+variant's id, the variant file relative to the assignment's folder), then the
+roster's other columns.
+
+Both are read strictly (docs/course.md): a header naming a column twice, a
+student listed twice, an empty student id, or a (student, problem) assigned
+twice is bad input naming the row.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import os
+import re
+from dataclasses import dataclass, field
+
+from ..core.csvsafe import plain_cell
+from ..core.errors import InputError
+
+ASSIGNMENT_COLUMNS = ("student", "problem", "variant", "file")
+MAX_ROSTER_BYTES = 20_000_000
+SAFE_NAME = re.compile(r"[^A-Za-z0-9._-]+")
+
+
+@dataclass
+class Student:
+    id: str
+    extra: dict[str, str] = field(default_factory=dict)  # the roster's other columns
+    line: int | None = None
+
+
+@dataclass
+class Assigned:
+    student: str
+    problem: str  # the original problem's id
+    variant: str  # the variant's id
+    file: str  # the variant file (resolved against the assignment's folder)
+    line: int | None = None
+
+
+@dataclass
+class Assignment:
+    path: str
+    rows: list[Assigned]
+    students: dict[str, Student]
+    by_item: dict[tuple[str, str], Assigned] = field(default_factory=dict)  # (student, problem)
+    by_variant: dict[str, Assigned] = field(default_factory=dict)
+
+    def problems(self) -> list[str]:
+        """The original problem ids, in assignment order."""
+        return list(dict.fromkeys(a.problem for a in self.rows))
+
+
+def read_table(path: str, what: str) -> tuple[list[str], list[tuple[int, list[str]]]]:
+    """A CSV file with a header row: (column names, [(line, cells)]), blank rows skipped.
+
+    A column named twice in the header is refused (which one would count?), and so is
+    a row with more cells than the header has names.
+    """
+    from ..core.safeyaml import read_text
+
+    text = read_text(path, MAX_ROSTER_BYTES, what, "utf-8-sig")
+    try:
+        rows = list(csv.reader(io.StringIO(text, newline="")))
+    except csv.Error as err:
+        raise InputError(f"not a CSV file: {err}", file=path) from None
+    if not rows:
+        raise InputError(f"empty; expected {what} with a header row", file=path)
+    header = [c.strip().lower() for c in rows[0]]
+    seen: dict[str, int] = {}
+    for k, name in enumerate(header, 1):
+        if name and name in seen:
+            raise InputError(f"the header names column {name!r} twice (columns {seen[name]} "
+                             f"and {k}); keep one", file=path, line=1)
+        seen[name] = k
+    out = []
+    for number, row in enumerate(rows[1:], 2):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) > len(header) and any(c.strip() for c in row[len(header):]):
+            raise InputError(f"{len(row)} cells but the header names {len(header)} columns",
+                             file=path, line=number)
+        out.append((number, [plain_cell(c.strip()) for c in row] + [""] * (len(header) - len(row))))
+    return header, out
+
+
+def _plain_id(text: str, path: str, line: int) -> None:
+    """An id goes into file names, variant ids and LaTeX: no line breaks or control
+    characters."""
+    bad = next((c for c in text if ord(c) < 32 or 0x7f <= ord(c) < 0xa0
+                or c in "\u2028\u2029"), None)
+    if bad is not None:
+        raise InputError(f"the id {' '.join(text.split())[:40]!r} holds a control character "
+                         f"({bad!r}); ids are one line of printable text", file=path, line=line)
+
+
+def read_roster(path: str) -> list[Student]:
+    """The students of a roster CSV (a ``student`` column; the other columns kept)."""
+    header, rows = read_table(path, "a roster (CSV with a student column)")
+    if "student" not in header:
+        raise InputError(f"no `student` column in the header (columns: {', '.join(header)})",
+                         file=path, line=1)
+    at = header.index("student")
+    students: dict[str, Student] = {}
+    for number, cells in rows:
+        sid = cells[at]
+        if not sid:
+            raise InputError("empty student id", file=path, line=number)
+        _plain_id(sid, path, number)
+        if sid in students:
+            raise InputError(f"student {sid!r} is listed twice (lines {students[sid].line} "
+                             f"and {number}); keep one", file=path, line=number)
+        extra = {h: c for h, c in zip(header, cells) if h and h != "student"}
+        students[sid] = Student(sid, extra, number)
+    if not students:
+        raise InputError("no students in the roster", file=path)
+    return list(students.values())
+
+
+def read_assignment(path: str) -> Assignment:
+    """An assignment CSV: who has which variant of which problem."""
+    header, rows = read_table(path, "an assignment (assignment.csv from gyro vary --roster)")
+    missing = [c for c in ASSIGNMENT_COLUMNS if c not in header]
+    if missing:
+        raise InputError(f"the header must name {', '.join(ASSIGNMENT_COLUMNS)}; missing "
+                         f"{', '.join(missing)}", file=path, line=1)
+    at = {c: header.index(c) for c in ASSIGNMENT_COLUMNS}
+    folder = os.path.dirname(path)
+    out = Assignment(path, [], {})
+    for number, cells in rows:
+        student, problem, variant, file = (cells[at[c]] for c in ASSIGNMENT_COLUMNS)
+        if not (student and problem and variant and file):
+            raise InputError("student, problem, variant and file must not be empty",
+                             file=path, line=number)
+        for text in (student, problem, variant):
+            _plain_id(text, path, number)
+        row = Assigned(student, problem, variant, os.path.join(folder, file), number)
+        earlier = out.by_item.get((student, problem))
+        if earlier is not None:
+            raise InputError(f"student {student!r} is assigned problem {problem!r} twice "
+                             f"(lines {earlier.line} and {number})", file=path, line=number)
+        other = out.by_variant.get(variant)
+        if other is not None:
+            raise InputError(f"variant {variant!r} is assigned twice (lines {other.line} and "
+                             f"{number}); each student has their own", file=path, line=number)
+        out.rows.append(row)
+        out.by_item[(student, problem)] = row
+        out.by_variant[variant] = row
+        if student not in out.students:
+            extra = {h: c for h, c in zip(header, cells) if h and h not in ASSIGNMENT_COLUMNS}
+            out.students[student] = Student(student, extra, number)
+    if not out.rows:
+        raise InputError("no rows: expected student, problem, variant, file", file=path)
+    return out
+
+
+KEY_FORMAT = "gyro-roster-key/1"
+MAX_KEY_BYTES = 200_000_000
+
+
+def code_fingerprint() -> str:
+    """A hash of gyro's own source: answers stored by one version of the solver are not
+    trusted by another."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        digest.update(path.relative_to(root).as_posix().encode() + b"\0")
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def file_digest(text: str | bytes) -> str:
+    return hashlib.sha256(text.encode("utf-8") if isinstance(text, str) else text).hexdigest()
+
+
+def read_key(path: str) -> dict | None:
+    """The stored answer key of a roster set (``key.json`` beside the assignment), or None
+    when it is absent, damaged, or written by other code (then every variant is solved)."""
+    import json
+
+    from ..core.safeyaml import read_bytes
+
+    if not os.path.isfile(path):
+        return None
+    try:
+        data = json.loads(read_bytes(path, MAX_KEY_BYTES, "a key file"))
+    except (InputError, ValueError):
+        return None
+    if not (isinstance(data, dict) and data.get("format") == KEY_FORMAT
+            and data.get("code") == code_fingerprint()
+            and isinstance(data.get("problems"), dict)
+            and isinstance(data.get("variants"), dict)):
+        return None
+    return data
+
+
+def file_names(students: list[str]) -> dict[str, str]:
+    """A file name stem per student id: the id itself when it is a safe name, else its
+    safe letters and a short hash; unique even on a case-insensitive file system."""
+    out: dict[str, str] = {}
+    taken: set[str] = set()
+    for sid in students:
+        stem = SAFE_NAME.sub("_", sid).strip("._-")[:60]
+        if stem != sid or not stem or stem.lower() in taken:
+            stem = f"{stem or 'student'}-{hashlib.sha256(sid.encode()).hexdigest()[:8]}"
+        out[sid] = stem
+        taken.add(stem.lower())
+    return out

@@ -1,0 +1,243 @@
+"""`gyro handout`: the students' question sheets, and with --solutions the worked answers.
+
+    gyro handout FILES|DIR [-o OUT.html|.tex|.pdf] [--solutions] [--course C] [--title T]
+    gyro handout FILES --roster ROSTER.csv [--seed S] ...      # one sheet per student
+    gyro handout --assignment DIR/assignment.csv ...            # the same, from gyro vary
+
+A sheet has a cover (course, title, the student's name and id) and each
+problem's statement (core/statement.py) with the student's numbers; a problem
+without a statement gets its title, its given data and what to find. With
+``--solutions`` each problem's worked answer follows its statement (the
+LaTeX write-up of `gyro solve --format latex`, or the HTML of `--format html`).
+
+With a roster or an assignment there is one file per student,
+``<OUT stem>-<student>.<ext>`` beside OUT, and ``<OUT stem>-key.csv`` for the
+teacher: each student's answers, as the solver gives them. ``--roster`` with a
+``--seed`` draws the same numbers as ``gyro vary --roster`` with that seed.
+A PDF needs pdflatex (the .tex is compiled in a temporary folder).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import os
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass, field
+from html import escape
+from typing import Any
+
+from ..core.csvsafe import safe_cell
+from ..core.errors import InputError
+
+FORMATS = (".html", ".tex", ".pdf")
+
+
+@dataclass
+class Sheet:
+    """One handout: for one student (or for everyone), the problems in order."""
+
+    student: str | None
+    name: str  # how the cover names the student ("" for everyone)
+    problems: list[Any] = field(default_factory=list)  # solving.problem.Problem
+    variants: list[str] = field(default_factory=list)  # the assigned problem id of each
+
+
+def _load_all(paths: list[str]) -> list[Any]:
+    from ..solving.paths import problem_files
+    from ..solving.problem import load
+
+    files, missing = problem_files(paths)
+    if missing:
+        raise InputError(missing[0][1])
+    if not files:
+        raise InputError("no problem files given")
+    return [load(f) for f in files]
+
+
+def sheets(paths: list[str], roster: str | None = None, assignment: str | None = None,
+           seed: int = 0) -> list[Sheet]:
+    """The handouts to write: one for everyone, or one per student."""
+    from ..solving.problem import build, parse_yaml
+
+    if roster and assignment:
+        raise InputError("give --roster or --assignment, not both")
+    if assignment:
+        from ..checking.assignment import read_assignment
+        from ..solving.problem import load
+
+        plan = read_assignment(assignment)
+        out: dict[str, Sheet] = {}
+        for row in plan.rows:
+            sheet = out.setdefault(row.student, Sheet(row.student, _name(
+                plan.students[row.student].extra, row.student)))
+            sheet.problems.append(load(row.file))
+            sheet.variants.append(row.problem)
+        return list(out.values())
+    if roster:
+        from ..checking.assignment import read_roster
+        from ..solving.paths import problem_files
+        from .roster import roster_variants
+
+        files, missing = problem_files(paths)
+        if missing:
+            raise InputError(missing[0][1])
+        students = {s.id: s for s in read_roster(roster)}
+        made, table, _ = roster_variants(files, roster, seed)
+        texts = dict(made)
+        out = {}
+        for row in csv.DictReader(io.StringIO(table)):
+            from ..core.csvsafe import plain_cell
+
+            sid = plain_cell(row["student"])
+            sheet = out.setdefault(sid, Sheet(sid, _name(students[sid].extra, sid)))
+            data, lines = parse_yaml(texts[row["file"]], row["file"])
+            sheet.problems.append(build(row["file"], data, lines))
+            sheet.variants.append(plain_cell(row["problem"]))
+        return list(out.values())
+    problems = _load_all(paths)
+    return [Sheet(None, "", problems, [p.id for p in problems])]
+
+
+def _name(extra: dict[str, str], student: str) -> str:
+    for key in ("name", "student name", "full name"):
+        for k, v in extra.items():
+            if k.replace("_", " ").lower() == key and v:
+                return f"{v} ({student})"
+    return student
+
+
+def statement_of(problem: Any) -> str:
+    """The problem as the student reads it: its statement filled in, or else its title,
+    data and what to find."""
+    text = problem.statement_text()
+    if text:
+        return text
+    given = "; ".join(f"{k} = {' '.join(str(v).split())}"
+                      for k, v in problem.data.get("given", {}).items())
+    asked = ", ".join(problem.find)
+    return f"{problem.title + '. ' if problem.title else ''}Given: {given}. Find: {asked}."
+
+
+# ---- LaTeX ------------------------------------------------------------------------------
+
+def latex_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
+    from ..render.mathprint import text_escape
+    from ..render.writeup import PREAMBLE, latex
+    from ..solving.solve import solve
+
+    heading = f"{course} -- {title}" if course else title
+    body = [PREAMBLE, f"\\title{{{text_escape(heading)}}}",
+            f"\\author{{{text_escape(sheet.name)}}}" if sheet.name else "\\author{}",
+            "\\date{}", "\\begin{document}", "\\maketitle", ""]
+    for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
+        body.append(f"\\section*{{Problem {k} ({text_escape(str(pid))})}}")
+        body.append(text_escape(statement_of(problem)))
+        body.append("")
+        if solutions:
+            body.append(latex(solve(problem), level="subsection*"))
+    body.append("\\end{document}")
+    return "\n".join(body) + "\n"
+
+
+def compile_pdf(tex: str) -> bytes:
+    """The PDF of a LaTeX document (pdflatex twice, in a temporary folder)."""
+    exe = shutil.which("pdflatex")
+    if exe is None:
+        raise InputError("a PDF needs pdflatex, which is not installed (Debian: apt-get "
+                         "install texlive-latex-base texlive-latex-recommended); write .tex or "
+                         ".html instead")
+    with tempfile.TemporaryDirectory(prefix="gyro-handout-") as folder:
+        source = os.path.join(folder, "handout.tex")
+        with open(source, "w", encoding="utf-8") as handle:
+            handle.write(tex)
+        for _ in range(2):
+            done = subprocess.run([exe, "-interaction=nonstopmode", "-halt-on-error",
+                                   "-no-shell-escape", "handout.tex"], cwd=folder,
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
+            if done.returncode != 0:
+                tail = done.stdout.decode("utf-8", "replace").strip().splitlines()[-1:]
+                raise InputError(f"pdflatex failed: {' '.join(tail)[:200]}")
+        with open(os.path.join(folder, "handout.pdf"), "rb") as handle:
+            return handle.read()
+
+
+# ---- HTML -------------------------------------------------------------------------------
+
+def html_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
+    from ..render import html
+    from ..solving.solve import solve
+
+    heading = f"{course}: {title}" if course else title
+    body = [f"<h1>{escape(heading)}</h1>"]
+    if sheet.name:
+        body.append(f"<p>For {escape(sheet.name)}</p>")
+    for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
+        body.append(f"<section aria-labelledby=\"p{k}\"><h2 id=\"p{k}\">Problem {k} "
+                    f"({escape(str(pid))})</h2>\n<p>{escape(statement_of(problem))}</p>")
+        if solutions:
+            body.append(html.worked_answer(solve(problem), level=3, ident=f"solution-{k}"))
+        body.append("</section>")
+    return html.document(heading + (f" ({sheet.name})" if sheet.name else ""), "\n".join(body))
+
+
+# ---- the files --------------------------------------------------------------------------
+
+def key_csv(sheets_: list[Sheet]) -> str:
+    """The teacher's key: student, problem, variant, answer, the solver's value."""
+    from ..checking.grades import _correct_text
+    from ..solving.solve import solve
+
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["student", "problem", "variant", "answer", "correct"])
+    for sheet in sheets_:
+        for problem, pid in zip(sheet.problems, sheet.variants):
+            result = solve(problem)
+            for name, answer in result.answers.items():
+                writer.writerow([safe_cell(c) for c in (sheet.student or "", pid, problem.id,
+                                                       name, _correct_text(answer))])
+    return out.getvalue()
+
+
+def write_handouts(paths: list[str], out: str, roster: str | None, assignment: str | None,
+                   seed: int, solutions: bool, course: str, title: str,
+                   force: bool) -> list[str]:
+    """Write the handout(s) and, per student, the key CSV; nothing over an existing file
+    without ``force`` (checked before anything is written)."""
+    from ..checking.assignment import file_names
+    from ..core.files import write_atomic
+
+    stem, ext = os.path.splitext(out)
+    if ext.lower() not in FORMATS:
+        raise InputError(f"the handout is .html, .tex or .pdf, got {ext or 'no extension'!r}",
+                         file=out)
+    todo = sheets(paths, roster, assignment, seed)
+    per_student = todo[0].student is not None
+    names = file_names([s.student for s in todo]) if per_student else {}
+    targets: list[tuple[str, Any]] = []
+    for sheet in todo:
+        target = f"{stem}-{names[sheet.student]}{ext}" if per_student else out
+        targets.append((target, sheet))
+    if per_student:
+        targets.append((f"{stem}-key.csv", None))
+    if not force:
+        for target, _ in targets:
+            if os.path.exists(target) or os.path.islink(target):
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=target)
+    written = []
+    for target, sheet in targets:
+        if sheet is None:
+            data: str | bytes = key_csv(todo)
+        elif ext.lower() == ".html":
+            data = html_sheet(sheet, course, title, solutions)
+        else:
+            data = latex_sheet(sheet, course, title, solutions)
+            if ext.lower() == ".pdf":
+                data = compile_pdf(data)
+        write_atomic(target, data, force=force)
+        written.append(target)
+    return written

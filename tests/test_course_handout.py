@@ -1,0 +1,105 @@
+"""`gyro handout` (issue 25.4): question sheets with each student's numbers, solutions, key.
+
+The numbers a sheet must show are read here from the student's variant as
+`gyro vary --roster` writes it with the same seed; LaTeX is compiled with
+pdflatex where it is installed (skipped with the reason otherwise).
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+import yaml
+
+from test_check import put
+
+ROOT = Path(__file__).resolve().parent.parent
+TOP, MOTOR = ROOT / "problems" / "11_3.yaml", ROOT / "problems" / "11_5.yaml"
+
+
+def roster(tmp_path: Path) -> Path:
+    return put(tmp_path, "roster.csv", "student,name\nann,Ann <b>Lee</b>\nbob,Bob & Roy\n")
+
+
+def test_handout_by_roster_with_solutions_end_to_end(run, tmp_path, monkeypatch):
+    r = roster(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    # the issue's command as it is: default output handout.html, a sheet per student
+    result = run("handout", TOP, MOTOR, "--roster", r, "--solutions")
+    assert result.exit_code == 0, result.output
+    assert sorted(os.listdir(tmp_path)) == ["handout-ann.html", "handout-bob.html",
+                                            "handout-key.csv", "roster.csv"]
+    assert run("vary", TOP, MOTOR, "--roster", r, "-o", tmp_path / "hw").exit_code == 0
+    for student in ("ann", "bob"):
+        page = (tmp_path / f"handout-{student}.html").read_text()
+        for stem in ("11_3", "11_5"):
+            given = yaml.safe_load((tmp_path / "hw" / stem / f"{student}.yaml").read_text())["given"]
+            assert f"spins at {given['spin']}" in page or f"turns at {given['spin']}" in page
+        assert page.count("<article") == 2  # the two worked answers
+        assert "<b>" not in page and "Ann &lt;b&gt;Lee&lt;/b&gt; (ann)" in page or \
+            student == "bob"
+    with open(tmp_path / "handout-key.csv", newline="") as handle:
+        key = list(csv.DictReader(handle))
+    assert [(k["student"], k["problem"], k["answer"]) for k in key][:2] == \
+        [("ann", "11/3", "precession"), ("ann", "11/3", "min_spin")]
+    ann = yaml.safe_load((tmp_path / "hw" / "11_3" / "ann.yaml").read_text())["expected"]
+    assert key[1]["correct"] == ann["min_spin"]
+    # written again: refused, nothing replaced
+    again = run("handout", TOP, MOTOR, "--roster", r)
+    assert again.exit_code == 2 and "exists; not overwritten" in again.stderr
+
+
+def test_handout_from_an_assignment_is_the_same_sheet(run, tmp_path):
+    r = roster(tmp_path)
+    assert run("vary", TOP, "--roster", r, "--seed", 5, "-o", tmp_path / "hw").exit_code == 0
+    a = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
+            tmp_path / "a" / "s.tex")
+    assert a.exit_code == 2 and "no such directory" in a.stderr
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    a = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
+            tmp_path / "a" / "s.tex")
+    b = run("handout", TOP, "--roster", r, "--seed", 5, "-o", tmp_path / "b" / "s.tex")
+    assert a.exit_code == 0 and b.exit_code == 0, a.output + b.output
+    assert (tmp_path / "a" / "s-ann.tex").read_text() == (tmp_path / "b" / "s-ann.tex").read_text()
+
+
+def test_one_handout_for_everyone_states_every_bundled_problem(run, tmp_path):
+    out = tmp_path / "all.tex"
+    result = run("handout", ROOT / "problems", "-o", out, "--course", "ME 301 & co", "--title",
+                 "Chapter 11 {all}")
+    assert result.exit_code == 0, result.output
+    tex = out.read_text()
+    assert tex.count("\\section*{Problem ") == len(list((ROOT / "problems").glob("*.yaml")))
+    assert "ME 301 \\& co -- Chapter 11 \\{all\\}" in tex
+    assert "A top of weight 3 oz has radii of gyration of 0.84 in" in tex
+    assert "{spin}" not in tex
+
+
+def test_handout_refuses_an_unknown_format_and_a_missing_pdflatex(run, tmp_path, monkeypatch):
+    result = run("handout", TOP, "-o", tmp_path / "h.docx")
+    assert result.exit_code == 2 and ".html, .tex or .pdf" in result.stderr
+    if shutil.which("pdflatex") is None:
+        result = run("handout", TOP, "-o", tmp_path / "h.pdf")
+        assert result.exit_code == 2 and "needs pdflatex" in result.stderr
+        assert not (tmp_path / "h.pdf").exists()
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None,
+                    reason="pdflatex is not installed (apt-get install texlive-latex-base "
+                           "texlive-latex-recommended texlive-latex-extra)")
+def test_handout_latex_compiles_clean(run, tmp_path):
+    out = tmp_path / "h.tex"
+    result = run("handout", TOP, MOTOR, "--roster", roster(tmp_path), "--solutions", "-o", out)
+    assert result.exit_code == 0, result.output
+    for tex in tmp_path.glob("h-*.tex"):
+        done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                               tex.name], cwd=tmp_path, capture_output=True, text=True,
+                              timeout=120)
+        assert done.returncode == 0, done.stdout[-2000:]
+        assert "Overfull \\hbox" not in done.stdout
