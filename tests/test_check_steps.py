@@ -43,3 +43,20 @@ def test_an_unknown_step_or_dimension_is_a_bad_file(run, write):
     assert out.exit_code == 2 and "expected.steps.omega_p" in out.output
     out = run("check", write(AEROPLANE.format(steps="").replace("steps: {}", "steps: [1]")))
     assert out.exit_code == 2 and "expected.steps" in out.output
+
+
+def test_the_schema_accepts_graded_steps():
+    import jsonschema
+    import yaml
+
+    from gyro_cli.commands.authoring import schema
+
+    doc = yaml.safe_load(AEROPLANE.format(steps="omega_p: 10.61 rpm"))
+    jsonschema.validate(doc, schema())
+    doc["expected"]["steps"] = {}
+    try:
+        jsonschema.validate(doc, schema())
+    except jsonschema.ValidationError:
+        pass
+    else:
+        raise AssertionError("an empty steps mapping should not validate")
