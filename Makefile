@@ -6,12 +6,14 @@
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
 #   make fuzz   mutate the bundled problems for MINUTES (default 5), in-process
 #   make examples  the example pages docs/examples/*.html (gyro solve --format html)
+#   make environment  pipes, signals, read-only HOME, FIFOs (docs/exit_codes.md): no root,
+#               run in a temporary folder that is removed afterwards
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test check bench handout fuzz examples clean
+.PHONY: demo test check bench handout fuzz examples environment clean
 
 MINUTES ?= 5
 
@@ -56,6 +58,12 @@ examples: $(STAMP)
 
 fuzz: $(STAMP)
 	nice $(BIN)/python fuzz/fuzz.py --minutes $(MINUTES)
+
+environment: $(STAMP)
+	@tmp=$$(mktemp -d) && \
+	TMPDIR=$$tmp GYRO_CACHE_DIR=$$tmp/cache $(BIN)/python -m pytest -q -p no:cacheprovider \
+		--basetemp=$$tmp/pytest tests/test_environment.py; status=$$?; \
+	rm -rf $$tmp; exit $$status
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache handout.tex handout.aux handout.log handout.pdf

@@ -36,7 +36,43 @@ def internal(file: str | None, error: BaseException) -> None:
 
 
 class _Guarded(click.Group):
-    """The last line of defence: an exception no command caught is one line and exit 3."""
+    """The last line of defence: an exception no command caught is one line and exit 3.
+
+    Around every command (``--help`` and ``--version`` too): a failing standard
+    output never stops the files asked for being written (core/streams.py: the
+    reader leaving is 141, any other failure one line and exit 2), and SIGINT,
+    SIGTERM and SIGHUP end gyro with 128 + the signal's number after its
+    ``finally`` blocks have removed any temporary file.
+    """
+
+    def main(self, *args, **kwargs):  # type: ignore[no-untyped-def, override]
+        if kwargs.get("standalone_mode", True) is False:
+            return super().main(*args, **kwargs)
+        from .core.streams import Interrupted, guard_output, on_signals
+
+        guard = guard_output()
+        try:
+            undo = on_signals()
+            code: object = 0
+            try:
+                try:
+                    super().main(*args, **kwargs)
+                except SystemExit as done:
+                    code = done.code
+                except Interrupted as signalled:
+                    code = signalled.exit_code
+                    if signalled.exit_code == 130:
+                        click.echo("gyro: interrupted", err=True)
+            finally:
+                undo()
+            code = 0 if code is None else code if isinstance(code, int) else 1
+            message = guard.message()
+            if message:
+                click.echo(f"gyro: {message}", err=True)
+            code = guard.exit_code(code)
+        finally:
+            guard.restore()
+        sys.exit(code)
 
     def invoke(self, ctx: click.Context):  # type: ignore[no-untyped-def]
         try:
@@ -78,6 +114,19 @@ def main() -> None:
 
     Write a problem as a YAML file with units, then `gyro solve FILE`.
     """
+
+
+def _outputs_apart(inputs: list[str] | tuple[str, ...], **outputs: str | None) -> None:
+    """Exit 2 with one line if an output file (by option name) is empty or would replace
+    one of the command's inputs (core/files.py: refuse_input_as_output)."""
+    from .core.files import refuse_input_as_output
+
+    for option, name in outputs.items():
+        if name is not None:
+            try:
+                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"))
+            except InputError as err:
+                fail(err)
 
 
 def _rendered(result, fmt: str, level: int = 2) -> str:
@@ -128,6 +177,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     from .solving.paths import problem_files
 
     files, missing = problem_files(files)
+    _outputs_apart(files, plot=plot_file)
     for _, message in missing:
         click.echo(f"gyro: {terminal_text(message)}", err=True)
     if plot_file and len(files) != 1:
@@ -192,6 +242,14 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         sys.exit(2)
 
 
+def _cpus() -> int:
+    """The CPUs this process may run on (its affinity, e.g. a CI container's share)."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 @main.command()
 @click.argument("paths", nargs=-1)
 @click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
@@ -200,6 +258,18 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
               help="Also write JUnit XML to FILE (a testsuite per file, a testcase per answer).")
 @click.option("--strict", is_flag=True,
               help="Count problems without expected answers as failures (exit 1).")
+@click.option("--jobs", "-j", type=click.IntRange(min=1), default=None, metavar="N",
+              help="Check the files in N worker processes [default: the CPUs available].")
+@click.option("--timeout", type=click.FloatRange(min=0, min_open=True), default=60.0,
+              show_default=True, metavar="SECONDS",
+              help="Time limit per file: a file that takes longer is an internal error, the "
+                   "others go on.")
+@click.option("--shard", metavar="K/N",
+              help="Check only the K-th of N stable parts of the files (by a hash of each "
+                   "path), for one job of a CI matrix of N jobs.")
+@click.option("--merge", is_flag=True,
+              help="PATHS are JSON reports (--format json) of shards: print them as one "
+                   "report (and --junit), with the summary and exit code of the whole.")
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
@@ -224,12 +294,15 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
           sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
           assignment: str | None = None, out_format: str = "grades",
-          credit: str | None = None, feedback_dir: str | None = None) -> None:
+          credit: str | None = None, feedback_dir: str | None = None,
+          jobs: int | None = None, timeout: float = 60.0, shard: str | None = None,
+          merge: bool = False) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
     or globs. Exit 0 when every answer matches, 1 when one does not (or
     nothing was compared), 2 when a file is bad (the others are still checked).
+    Each file's lines are printed as soon as it is checked.
     """
     if not paths and not (sheet and assignment):
         fail("give the problem files or directories to check (PATHS)")
@@ -238,39 +311,29 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             fail("--assignment, --credit and --feedback go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
-        from .render import check_report
+        if merge and (shard or html_file or jobs):
+            fail("--merge joins JSON reports: it goes with --format, --junit and --strict only")
+        if junit_file is not None or html_file is not None:
+            from .solving.paths import problem_files
 
-        from .api import check_files
-
-        report = check_files(paths, strict=strict, worked=bool(html_file))
-        result = report.run
-        for problem in result.problems:
-            if problem.error:
-                click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
-        click.echo(check_report.as_json(result) if fmt == "json" else check_report.table(result),
-                   nl=fmt == "json")
-        if junit_file:
-            from .render import junit
-            from .core.files import write_atomic
-
-            try:
-                write_atomic(junit_file, junit.xml(result), force=True)
-            except InputError as err:
-                fail(err)
-        if html_file:
-            from .core.files import write_atomic
-
-            try:
-                write_atomic(html_file, report.html(page=True), force=force)
-            except InputError as err:
-                fail(err)
-        sys.exit(result.exit_code)
-    if junit_file or strict or html_file:
-        fail("--junit, --html and --strict go with checking the answer key, not with --answers")
+            _outputs_apart(problem_files(paths)[0], junit=junit_file, html=html_file)
+            if junit_file and html_file and os.path.abspath(junit_file) == \
+                    os.path.abspath(html_file):
+                fail("--junit and --html name the same file")
+        _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or _cpus(), timeout,
+                   shard, merge)
+    if junit_file or strict or html_file or jobs or shard or merge:
+        fail("--junit, --html, --strict, --jobs, --shard and --merge go with checking the "
+             "answer key, not with --answers")
     if out_format != "grades" and not out:
         fail("--out-format goes with --out FILE")
     from .checking import grades
     from .render import grades_report
+
+    if out is not None:
+        from .solving.paths import problem_files
+
+        _outputs_apart(problem_files(paths)[0] + [sheet], out=out)
 
     try:
         policy = grades.parse_credit(credit) if credit is not None else None
@@ -287,6 +350,77 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
                nl=fmt == "json")
     if graded.errors:
         sys.exit(INTERNAL)
+
+
+def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
+               html_file: str | None, force: bool, jobs: int, timeout: float,
+               shard: str | None, merge: bool) -> None:
+    """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
+    as it comes, in the files' order, then the summary; exits with the run's code."""
+    from itertools import chain
+
+    from .checking import check as checking
+    from .checking.results import Tally
+    from .render import check_report, junit
+
+    checked = None
+    try:
+        if merge:
+            results, shards = checking.merged(paths, strict), None
+        else:
+            files, missing = checking.collect(paths)
+            if shard:
+                k, n = shards = checking.parse_shard(shard)
+                files = [f for f in files if checking.shard_of(f, n) == k]
+                missing = [m for m in missing if checking.shard_of(m.file, n) == k]
+            else:
+                shards = None
+            if html_file:  # the page needs every worked answer: checked here, kept
+                from .api import check_files
+
+                report = check_files([m.file for m in missing] + files, strict=strict)
+                results = iter(report.run.problems)
+            else:
+                checked = checking.checks(files, strict, jobs, timeout)
+                results = chain(missing, checked)
+        if junit_file:
+            from .core.files import refuse_special
+
+            refuse_special(junit_file)  # before the run, not after it
+    except InputError as err:
+        fail(err)
+    tally = Tally(strict)
+    spool = junit.Spool() if junit_file else None
+    stream = check_report.JsonStream() if fmt == "json" else None
+    click.echo(stream.head() if stream else check_report.table_head(), nl=False)
+    try:
+        for problem in results:
+            if problem.error:
+                click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
+            tally.add(problem)
+            if spool:
+                spool.add(problem)
+            click.echo(stream.problem(problem) if stream else check_report.table_rows(problem),
+                       nl=False)
+    finally:
+        if checked is not None:
+            checked.close()  # a reader that left, or Ctrl-C: the workers end now
+    click.echo(stream.tail(tally, shards) if stream else check_report.summary_line(tally))
+    if spool:
+        from .core.files import write_atomic
+
+        try:
+            write_atomic(junit_file, spool.chunks(), force=True)
+        except InputError as err:
+            fail(err)
+    if html_file:
+        from .core.files import write_atomic
+
+        try:
+            write_atomic(html_file, report.html(page=True), force=force)
+        except InputError as err:
+            fail(err)
+    sys.exit(tally.exit_code)
 
 
 @main.command("new")
@@ -307,6 +441,10 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
             click.echo(f"  {name:<19} {registry.get(name).summary}")
         return
     try:
+        if output is not None:
+            from .core.files import refuse_input_as_output
+
+            refuse_input_as_output(output, (), option="--output", yaml_output=True)
         text = template(kind)
         if output:
             from .core.files import write_atomic
@@ -398,6 +536,7 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
     equations and compare with the analytic answer; --animate draws the motion."""
     from .commands.simulate import simulate_file, terminal_progress
 
+    _outputs_apart([file], csv=csv_file, plot=plot_file, animate=animate_file)
     try:
         out = ""
         if animate_file:

@@ -16,6 +16,12 @@ from gyro_cli.solving.solve import solve_file
 RPM = 2 * math.pi / 60
 
 
+def _unstated(path) -> str:
+    """A bundled problem's text without its statement (placed last in the file), whose
+    {key}s would name keys the test takes out of `given`."""
+    return path.read_text().split("\nstatement:")[0] + "\n"
+
+
 def si(path, name):
     return solve_file(str(path)).answers[name].si_values
 
@@ -215,7 +221,7 @@ def test_ship_words_as_books_print_them(write, sense, forward, turn, left):
 
 
 def test_bundled_6000kg_problem_in_its_own_words(problems_dir):
-    text = (problems_dir / "ship_pitching_6000kg.yaml").read_text()
+    text = _unstated(problems_dir / "ship_pitching_6000kg.yaml")
     assert "bow: descending" in text and "anticlockwise viewed from the bow" in text
     # anticlockwise from the bow = clockwise from the stern: H forward (+x); the bow falling
     # is a rotation about +y; omega_p x H = y x x = -z on the rotor, +z on the ship: to port.
@@ -384,7 +390,7 @@ def test_two_wheeler_by_its_weight_and_wheels_by_mass_and_k(problems_dir, write)
     # k = 0.31623 m (I_w = 10 x 0.1 = 1 kg m^2). By hand: omega_w = 25 / 0.3 = 83.33 rad/s,
     # omega_p = 25 / 50 = 0.5 rad/s; C_g = (2 x 1 + 5 x 0.3)(83.33)(0.5) = 145.8 N m;
     # C_c = 250 x 25^2 x 0.6 / 50 = 1875 N m; tan(theta) = 2020.8 / (250 x 9.81 x 0.6).
-    text = (problems_dir / "two_wheeler_250kg.yaml").read_text()
+    text = _unstated(problems_dir / "two_wheeler_250kg.yaml")
     text = text.replace("  mass: 250 kg\n", "  weight: 2452.5 N\n").replace(
         "  wheel_inertia: 1 kg*m^2\n", "  wheel_mass: 10 kg\n  wheel_k: 0.316228 m\n")
     path = write(text)
@@ -399,7 +405,7 @@ def test_two_wheeler_by_its_weight_and_wheels_by_mass_and_k(problems_dir, write)
 
 def test_four_wheeler_by_weight_and_axles_by_mass_and_k(problems_dir, write):
     # Khurmi's trolley: each axle with its wheels 200 kg at k = 0.3 m: I = 200 x 0.09 = 18.
-    text = (problems_dir / "four_wheeler_trolley_2500kg.yaml").read_text()
+    text = _unstated(problems_dir / "four_wheeler_trolley_2500kg.yaml")
     text = text.replace("  mass: 2500 kg\n", "  weight: 24.525 kN\n").replace(
         "  axle_inertia: 18 kg*m^2\n", "  axle_mass: 200 kg\n  axle_k: 0.3 m\n")
     result = solve_file(str(write(text)))
@@ -414,7 +420,7 @@ def test_four_wheeler_by_weight_and_axles_by_mass_and_k(problems_dir, write):
     ("  wheel_k: 0.3 m\n", "given.wheel_mass"),
 ])
 def test_vehicle_data_refusals(problems_dir, run, write, extra, key):
-    text = (problems_dir / "two_wheeler_250kg.yaml").read_text()
+    text = _unstated(problems_dir / "two_wheeler_250kg.yaml")
     if "wheel" in extra:
         text = text.replace("  wheel_inertia: 1 kg*m^2\n", "")
     path = write(text.replace("  cg_height: 0.6 m\n", "  cg_height: 0.6 m\n" + extra))
@@ -518,7 +524,7 @@ def test_a_shape_refuses_a_key_it_does_not_use(run, write, shape, keys, key, wor
 def test_swapped_wheel_reactions_fail_with_the_order_named(problems_dir, run, tmp_path):
     # outer 6131 - 110.6 + 1111 = 7132 N, inner 6131 + 110.6 - 1111 = 5131 N (the file's
     # notes): the key [inner, outer] is the swap a set comparison let pass.
-    text = (problems_dir / "four_wheeler_trolley_2500kg.yaml").read_text()
+    text = _unstated(problems_dir / "four_wheeler_trolley_2500kg.yaml")
     swapped = tmp_path / "swap.yaml"
     swapped.write_text(text.replace("[7132 N, 5131 N]", "[5131 N, 7132 N]"))
     out = run("check", swapped)
@@ -529,7 +535,7 @@ def test_swapped_wheel_reactions_fail_with_the_order_named(problems_dir, run, tm
 
 def test_roots_are_still_matched_as_a_set(problems_dir, run, tmp_path):
     # 11/3's two precession rates, keyed fast first: roots have no order.
-    text = (problems_dir / "11_3.yaml").read_text()
+    text = _unstated(problems_dir / "11_3.yaml")
     import re
     found = re.search(r"precession: \[([^,\]]+), ([^\]]+)\]", text)
     assert found, "11_3.yaml keys both roots"
@@ -619,7 +625,7 @@ def test_coin_rolling_on_a_circle_one_lap(write):
 
 def test_disk_on_a_pinned_axle_one_lap(problems_dir, write):
     # problem 11/6's shaft turns at 48 rpm: one lap of the circle takes 60 / 48 = 1.25 s.
-    text = (problems_dir / "11_6.yaml").read_text()
+    text = _unstated(problems_dir / "11_6.yaml")
     assert "precession: 48 rpm" in text
     path = write(text.replace("\nfind:\n", "\nfind:\n  precession_period: s\n", 1))
     assert si(path, "precession_period") == [pytest.approx(1.25, rel=1e-9)]
@@ -635,7 +641,7 @@ def test_inertia_of_particles_needs_no_angles(problems_dir, write):
     I_z = sum(m * (x * x + y * y) for x, y, z in corners)        # 8 m a^2 = 0.16
     I_xy = sum(m * x * y for x, y, z in corners)                 # 2 m a^2 = 0.04
     assert (I_z, I_xy) == (pytest.approx(0.16), pytest.approx(0.04))
-    text = (problems_dir / "euler_cube_corners.yaml").read_text()
+    text = _unstated(problems_dir / "euler_cube_corners.yaml")
     body = text.split("find:")[0]
     for line in ("  theta: 90 deg\n", "  psi: 0 deg\n", "  psi_rate: 10 rad/s\n"):
         body = body.replace(line, "")
@@ -755,3 +761,23 @@ def test_readme_shows_latex_with_standalone():
     quick = next(block for block in readme.split("```")[1::2] if "gyro solve" in block)
     assert "--format latex --standalone" in quick
     assert "or latex" not in quick and "latex FILE" not in quick
+
+
+# ---- acceptance: a folder of published problems in the books' own words -------------
+
+BOOKS_WORDS = ["toy_gyroscope_no_angle.yaml", "irodov_turbine_locomotive.yaml",
+               "khurmi_wheel_drop.yaml", "ship_steering_2200kg_aft.yaml",
+               "ship_pitching_6000kg.yaml", "ship_pitching_3500kg_extremes.yaml",
+               "torque_free_shell.yaml", "torque_free_satellite.yaml"]
+
+
+def test_gyro_check_passes_on_the_books_folder(run, problems_dir, tmp_path):
+    folder = tmp_path / "books"
+    folder.mkdir()
+    for name in BOOKS_WORDS:
+        text = (problems_dir / name).read_text()
+        assert "source:" in text and "expected:" in text, name
+        (folder / name).write_text(text)
+    out = run("check", folder)
+    assert out.exit_code == 0, out.stdout + out.stderr
+    assert f"in {len(BOOKS_WORDS)} problems" in out.stdout and "0 failed" in out.stdout

@@ -2,9 +2,12 @@
 
 The pure parts live beside it: tolerances (``tolerance.py``), expected values
 (``expected.py``), root matching and slip diagnosis (``matching.py``), the
-results as data (``results.py``). The runner loads and solves every file in
-this one process (one unit registry) and collects a CheckRun; render/ prints
-it (``check_report.py``: table and JSON; ``junit.py``).
+results as data (``results.py``). ``check_file`` loads, solves and compares one
+file; ``checks`` hands on each file's ProblemCheck in order as soon as it is
+known, from this process or from forked workers (``pool.py``), so the command
+streams its reports (render/: ``check_report.py`` table and JSON, ``junit.py``)
+and keeps only a Tally; ``shard_of`` and ``merged`` split a bank over CI jobs
+and join their JSON reports. ``run`` keeps every result (the Python API).
 
 Rules (see docs/check.md):
 - dimensions are checked before magnitudes: an expected value in the wrong
@@ -21,7 +24,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from typing import Any
+from typing import Any, Iterator
 
 from ..core.errors import InputError
 from .expected import Expected, parse_expected
@@ -156,3 +159,133 @@ def run(paths: list[str] | tuple[str, ...], strict: bool = False) -> CheckRun:
     """Check every problem file under ``paths``, all in this process."""
     files, errors = collect(paths)
     return CheckRun(errors + [check_file(f, strict) for f in files], strict=strict)
+
+
+# ---- sharding: a stable part of the files for one job of a CI matrix --------
+
+def shard_of(path: str, count: int) -> int:
+    """Which of ``count`` shards (1..count) a path belongs to: CRC-32 of the path as
+    written (normalised, with forward slashes), the same on every machine and run."""
+    import zlib
+
+    key = os.path.normpath(path).replace(os.sep, "/")
+    return zlib.crc32(key.encode("utf-8", "surrogateescape")) % count + 1
+
+
+def parse_shard(text: str) -> tuple[int, int]:
+    """``"K/N"`` -> (K, N) with 1 <= K <= N; InputError otherwise."""
+    k, _, n = text.partition("/")
+    try:
+        shard, count = int(k), int(n)
+    except ValueError:
+        shard = count = 0
+    if not (1 <= shard <= count):
+        raise InputError(f"--shard {text!r}: expected K/N with 1 <= K <= N, e.g. 2/4")
+    return shard, count
+
+
+def merged(reports: list[str] | tuple[str, ...], strict: bool = False) -> Iterator[ProblemCheck]:
+    """The problems of several JSON reports (``--format json``, one per shard) as one run,
+    in path order. InputError for a file that is not such a report, or for shards that
+    do not make a whole (each K of N exactly once)."""
+    import json
+
+    from ..core.safeyaml import read_text
+    from .results import ProblemCheck
+
+    problems: list[ProblemCheck] = []
+    shards: list[str] = []
+    for path in reports:
+        text = read_text(path, 1 << 31, "a JSON report of gyro check")
+        try:
+            document = json.loads(text)
+            summary = document["summary"]
+            problems += [ProblemCheck.from_dict(p) for p in document["problems"]]
+        except (ValueError, KeyError, TypeError) as err:
+            raise InputError("is not a JSON report of `gyro check --format json` "
+                             f"({type(err).__name__}: {err})", file=path) from None
+        if isinstance(summary, dict) and summary.get("shard"):
+            shards.append(str(summary["shard"]))
+    if shards:
+        counts = {s.partition("/")[2] for s in shards}
+        whole = [f"{k}/{n}" for n in counts for k in range(1, int(n) + 1)] \
+            if len(counts) == 1 and next(iter(counts)).isdigit() else []
+        if len(shards) != len(reports) or sorted(shards) != sorted(whole):
+            raise InputError(f"the reports are shards {', '.join(sorted(shards)) or 'none'}; "
+                             "expected each shard K/N of one N exactly once "
+                             f"({', '.join(whole) or 'K/N'})")
+    problems.sort(key=lambda p: p.file)
+    return iter(problems)
+
+
+# ---- the run, file by file, in order ---------------------------------------
+
+TIMEOUT = 60.0  # seconds per file; a file takes milliseconds
+
+
+def timed_out(path: str, timeout: float) -> ProblemCheck:
+    """The entry of a file stopped at the time limit (a solver that does not end is a bug)."""
+    return ProblemCheck(path, status="error", internal=True,
+                        error=f"{path}: internal error: took longer than the time limit of "
+                              f"{timeout:g} s per file (--timeout); stopped (please report)")
+
+
+def crashed(path: str, exitcode: int | None) -> ProblemCheck:
+    """The entry of a file whose worker process died (a crash in compiled code)."""
+    how = f"killed by signal {-exitcode}" if exitcode and exitcode < 0 else \
+        f"exit status {exitcode}"
+    return ProblemCheck(path, status="error", internal=True,
+                        error=f"{path}: internal error: the worker process checking it died "
+                              f"({how}) (please report)")
+
+
+def checks(files: list[str], strict: bool = False, jobs: int = 1,
+           timeout: float | None = TIMEOUT) -> Iterator[ProblemCheck]:
+    """Each file's ProblemCheck, in the order of ``files``, as soon as it is known.
+
+    ``jobs`` > 1 spreads the files over that many worker processes (checking/pool.py);
+    then a file that crashes its worker or outlasts ``timeout`` costs only that file.
+    With one job the files are checked in this process, the time limit by an alarm signal.
+    """
+    if min(jobs, len(files)) > 1:
+        from . import pool  # multiprocessing, only for a pool
+
+        if pool.forks():
+            import functools
+
+            yield from pool.pooled(files, functools.partial(check_file, strict=strict),
+                                   min(jobs, len(files)), timeout, timed_out, crashed)
+            return
+    for path in files:
+        yield check_in_time(path, strict, timeout)
+
+
+class _Alarm(BaseException):
+    """The time limit of one file, raised by SIGALRM (a BaseException, so a kind's own
+    ``except Exception`` does not swallow it)."""
+
+
+def check_in_time(path: str, strict: bool, timeout: float | None) -> ProblemCheck:
+    """check_file under a per-file time limit where this process can set an alarm (Unix,
+    main thread); elsewhere without one."""
+    import signal
+    import threading
+
+    if not timeout or not hasattr(signal, "setitimer") \
+            or threading.current_thread() is not threading.main_thread():
+        return check_file(path, strict)
+
+    def ring(signum: int, frame: Any) -> None:
+        raise _Alarm()
+
+    previous = signal.signal(signal.SIGALRM, ring)
+    try:
+        signal.setitimer(signal.ITIMER_REAL, timeout)
+        try:
+            return check_file(path, strict)
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+    except _Alarm:
+        return timed_out(path, timeout)
+    finally:
+        signal.signal(signal.SIGALRM, previous)

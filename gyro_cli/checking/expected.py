@@ -38,7 +38,7 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     if isinstance(raw, (dict, list)):
         raise InputError(f"expected a quantity such as '45.1 rpm', got a "
                          f"{'mapping' if isinstance(raw, dict) else 'nested list'}", key=key)
-    number, unit = _guarded(lambda t, d, k: units._split(t, k), raw, dimension, key)
+    number, unit = _guarded(lambda t, d, k: units._split(t, k, (d, False)), raw, dimension, key)
     factor = _FACTORS.get((unit, dimension))
     if factor is None:
         _guarded(units.parse, raw, dimension, key)  # every check, with the text as written

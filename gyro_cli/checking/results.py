@@ -3,7 +3,7 @@ per file, one CheckRun per command; the reports in render/ print them."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 
 # ---- results ----------------------------------------------------------------
@@ -47,30 +47,50 @@ class ProblemCheck:
     answers: list[AnswerCheck] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
 
+    @classmethod
+    def from_dict(cls, data: dict) -> "ProblemCheck":
+        """A problem of a JSON report (``gyro check --format json``), for ``--merge``."""
+        answers = [AnswerCheck(**{k: v for k, v in a.items() if k in _ANSWER_FIELDS}
+                               | {"message": a.get("message") or ""})
+                   for a in data.get("answers") or []]
+        return cls(str(data["file"]), data.get("id") or "", data.get("title") or "",
+                   data.get("kind") or "", status=str(data["status"]), error=data.get("error"),
+                   internal=bool(data.get("internal")), answers=answers,
+                   warnings=list(data.get("warnings") or []))
 
-@dataclass
-class CheckRun:
-    problems: list[ProblemCheck]
-    strict: bool = False
+
+_ANSWER_FIELDS = {f.name for f in fields(AnswerCheck)}
+
+
+class Tally:
+    """The counts of a run, added to one problem at a time: what the summary line and the
+    exit code need, without keeping the problems (a run of any size in constant memory)."""
+
+    def __init__(self, strict: bool = False) -> None:
+        self.strict = strict
+        self._counts = dict.fromkeys(("files", "checked", "answers", "passed", "failed",
+                                      "bad_files", "internal_errors", "no_expected"), 0)
+
+    def add(self, problem: ProblemCheck) -> None:
+        c = self._counts
+        c["files"] += 1
+        c["checked"] += problem.status in ("pass", "fail")
+        c["bad_files"] += problem.status == "error"
+        c["internal_errors"] += problem.internal
+        c["no_expected"] += problem.status == "no expected answers"
+        for a in problem.answers:
+            if a.keyed:
+                c["answers"] += 1
+                c["passed" if a.passed else "failed"] += 1
 
     def counts(self) -> dict[str, int]:
-        answers = [a for p in self.problems for a in p.answers if a.keyed]
-        return {
-            "files": len(self.problems),
-            "checked": sum(p.status in ("pass", "fail") for p in self.problems),
-            "answers": len(answers),
-            "passed": sum(a.passed for a in answers),
-            "failed": sum(not a.passed for a in answers),
-            "bad_files": sum(p.status == "error" for p in self.problems),
-            "internal_errors": sum(p.internal for p in self.problems),
-            "no_expected": sum(p.status == "no expected answers" for p in self.problems),
-        }
+        return dict(self._counts)
 
     @property
     def exit_code(self) -> int:
         """3 if gyro failed on a file (a bug); else 2 if a file is bad; else 1 if an answer
         failed or nothing was compared; else 0."""
-        c = self.counts()
+        c = self._counts
         if c["internal_errors"]:
             return 3
         if c["bad_files"]:
@@ -78,3 +98,25 @@ class CheckRun:
         if c["failed"] or c["answers"] == 0 or (self.strict and c["no_expected"]):
             return 1
         return 0
+
+
+@dataclass
+class CheckRun:
+    """Every problem of a run, kept (the API's CheckReport, the HTML page); the command
+    itself streams them through a Tally."""
+
+    problems: list[ProblemCheck]
+    strict: bool = False
+
+    def tally(self) -> Tally:
+        tally = Tally(self.strict)
+        for problem in self.problems:
+            tally.add(problem)
+        return tally
+
+    def counts(self) -> dict[str, int]:
+        return self.tally().counts()
+
+    @property
+    def exit_code(self) -> int:
+        return self.tally().exit_code

@@ -393,24 +393,43 @@ def variants(path: str, count: int, seed: int) -> list[tuple[str, str]]:
 
 
 def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) -> list[str]:
-    """Write the variants into ``out_dir`` (created if needed); never overwrite without force."""
-    from ..core.files import write_atomic
+    """Write the variants into ``out_dir`` (created if needed); never overwrite without force.
 
+    The set is written whole or not at all (core/files.py: write_set): a full
+    disk or a signal leaves no variant and no temporary file, so a rerun starts
+    clean. A variant may not replace the file it is drawn from.
+    """
+    from ..core.files import refuse_input_as_output, write_set
+
+    if not out_dir.strip():
+        raise InputError("-o/--out-dir needs a directory name, got an empty one")
     made = variants(path, count, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise InputError("exists and is not a directory", file=out_dir)
-    os.makedirs(out_dir, exist_ok=True)
+    targets = [(os.path.join(out_dir, name), text) for name, text in made]
+    for target, _ in targets:
+        refuse_input_as_output(target, [path], option="a variant", yaml_output=True)
     if not force:
-        clash = [name for name, _ in made if os.path.exists(os.path.join(out_dir, name))]
+        clash = [name for name, _ in targets if os.path.lexists(name)]
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "variant file(s) already there)", file=os.path.join(out_dir, clash[0]))
-    written = []
-    for name, text in made:
-        target = os.path.join(out_dir, name)
-        write_atomic(target, text, force=force)
-        written.append(target)
-    return written
+                             "variant file(s) already there)", file=clash[0])
+    created = not os.path.isdir(out_dir)
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except (OSError, ValueError) as err:
+        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
+                         file=out_dir) from None
+    try:
+        write_set(targets, force=force)
+    except BaseException:
+        if created:
+            try:
+                os.rmdir(out_dir)  # only if empty: what this call made, nothing else
+            except OSError:
+                pass
+        raise
+    return [target for target, _ in targets]
 
 
 def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.Random,

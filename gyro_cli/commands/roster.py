@@ -122,8 +122,9 @@ def roster_variants(paths: list[str], roster: str, seed: int
 def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str,
                           force: bool) -> list[str]:
     """Write the set and ``out_dir/assignment.csv``; nothing over an existing file without
-    ``force`` (checked before anything is written)."""
-    from ..core.files import write_atomic
+    ``force`` (checked before anything is written). The set is written whole or not at
+    all (core/files.py: write_set), and never over one of its inputs."""
+    from ..core.files import refuse_input_as_output, write_set
 
     files, assignment, key = roster_variants(paths, roster, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
@@ -131,14 +132,29 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     targets = [(os.path.join(out_dir, name), text) for name, text in files]
     targets.append((os.path.join(out_dir, "key.json"), key))
     targets.append((os.path.join(out_dir, "assignment.csv"), assignment))
+    for target, _ in targets:
+        refuse_input_as_output(target, [*paths, roster], option="a variant", yaml_output=True)
     if not force:
-        clash = [t for t, _ in targets if os.path.exists(t)]
+        clash = [t for t, _ in targets if os.path.lexists(t)]
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
                              "file(s) of the set already there)", file=clash[0])
-    written = []
-    for target, text in targets:
-        os.makedirs(os.path.dirname(target) or ".", exist_ok=True)
-        write_atomic(target, text, force=force)
-        written.append(target)
-    return written
+    made = sorted({os.path.dirname(t) or "." for t, _ in targets} - {"."},
+                  key=lambda d: d.count(os.sep))
+    created = [d for d in made if not os.path.isdir(d)]
+    try:
+        for folder in created:
+            os.makedirs(folder, exist_ok=True)
+    except (OSError, ValueError) as err:
+        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
+                         file=out_dir) from None
+    try:
+        write_set(targets, force=force)
+    except BaseException:
+        for folder in reversed(created):
+            try:
+                os.rmdir(folder)  # only if empty: what this call made, nothing else
+            except OSError:
+                pass
+        raise
+    return [target for target, _ in targets]

@@ -19,13 +19,16 @@ import os
 import stat
 import tempfile
 from pathlib import Path
+from typing import Iterable
 
 from .errors import InputError
 
 
-def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False) -> Path:
+def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | bytes],
+                 force: bool = False) -> Path:
     """Write ``text`` to ``path`` atomically; InputError if it exists and not ``force``.
 
+    ``text`` may also be an iterable of pieces (a report too large to hold at once).
     The parent directory must exist. Returns the path written.
     """
     target = Path(path)
@@ -35,14 +38,15 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     parent = target.parent if str(target.parent) else Path(".")
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
-    data = text.encode("utf-8") if isinstance(text, str) else text
+    pieces = [text] if isinstance(text, (str, bytes)) else text
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=parent)
     except OSError as err:
         raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
     try:
         with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
+            for piece in pieces:
+                handle.write(_utf8(piece) if isinstance(piece, str) else piece)
             handle.flush()
             os.fsync(handle.fileno())
         if not force:
@@ -75,6 +79,116 @@ def write_atomic(path: str | os.PathLike, text: str | bytes, force: bool = False
     return target
 
 
+PROBLEM_SUFFIXES = (".yaml", ".yml")
+
+
+def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
+                           option: str = "the output", yaml_output: bool = False) -> None:
+    """InputError if writing ``output`` would replace one of the command's inputs.
+
+    ``inputs`` are the files the command reads (problem files, an answer sheet):
+    the output may not be any of them, by whatever path (a symlink, a hard link,
+    ``./x``). Unless the output itself is YAML (``vary``, ``new``), an existing
+    ``.yaml``/``.yml`` file is refused too: a report named like a problem file is
+    a shell glob that swallowed the report's name (``--junit pj/*.yaml``).
+    """
+    name = os.fspath(output)
+    if name.strip() == "":
+        raise InputError(f"{option} needs a file name, got an empty one")
+    try:
+        out = os.stat(name)
+    except (OSError, ValueError):
+        return  # a new path: it cannot be an input
+    for source in inputs:
+        try:
+            same = os.path.samestat(out, os.stat(source))
+        except (OSError, ValueError):
+            continue
+        if same:
+            raise InputError(f"{option} would replace an input file ({os.fspath(source)}); "
+                             "refused, give the output another name", file=name)
+    if not yaml_output and name.lower().endswith(PROBLEM_SUFFIXES):
+        raise InputError(f"{option} would replace a YAML file; refused (was the output's "
+                         "name left out, so that a shell glob filled it in?)", file=name)
+
+
+def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list[Path]:
+    """Write several files as one: every file is written, or none is (and nothing is left).
+
+    Each file is first written whole to a hidden temporary file beside it and
+    flushed to disk; only when all of them are there are they renamed into
+    place. A failure before (a full disk) removes the temporary files; a
+    failure while renaming removes the files this call created. Without
+    ``force`` an existing target is refused before anything is written.
+    """
+    targets = [Path(path) for path, _ in items]
+    for target in targets:
+        refuse_special(target)
+        if not force and (target.exists() or target.is_symlink()):
+            raise InputError("exists; not overwritten (use --force to replace it)",
+                             file=str(target))
+    temps: list[str] = []
+    placed: list[Path] = []
+    try:
+        for target, (_, text) in zip(targets, items):
+            data = _utf8(text) if isinstance(text, str) else text
+            try:
+                fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                                           dir=target.parent if str(target.parent) else ".")
+            except OSError as err:
+                raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
+            temps.append(tmp)
+            try:
+                with os.fdopen(fd, "wb") as handle:
+                    handle.write(data)
+                    handle.flush()
+                    os.fsync(handle.fileno())
+            except OSError as err:
+                raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                                 "written", file=str(target)) from None
+        mode = 0o666 & ~_umask()
+        for target, tmp in zip(targets, temps):
+            try:
+                if force:
+                    existed = target.exists()
+                    os.replace(tmp, target)
+                else:
+                    existed = False
+                    try:
+                        os.link(tmp, target)  # fails if the name was taken meanwhile
+                    except FileExistsError:
+                        raise
+                    except OSError:  # no hard links here: a checked rename
+                        if target.exists():
+                            raise FileExistsError from None
+                        os.replace(tmp, target)
+            except FileExistsError:
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=str(target)) from None
+            except OSError as err:
+                raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                                 "written", file=str(target)) from None
+            if not existed:
+                placed.append(target)
+            try:
+                os.chmod(target, mode)
+            except OSError:
+                pass
+        placed = []  # all in place: nothing to undo
+    finally:
+        for tmp in temps:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+        for target in placed:
+            try:
+                os.unlink(target)
+            except OSError:
+                pass
+    return targets
+
+
 def refuse_special(path: str | os.PathLike) -> None:
     """InputError unless ``path`` is a regular file (or its link) or does not exist."""
     try:
@@ -86,6 +200,12 @@ def refuse_special(path: str | os.PathLike) -> None:
 
         message = _not_regular(mode, "a file to write").replace("reads", "writes")
         raise InputError(message, file=str(path))
+
+
+def _utf8(text: str) -> bytes:
+    """UTF-8 bytes; a lone surrogate (a file name that is not UTF-8, as Python keeps
+    it) is written as its escape ``\\udcff``, so the file stays valid UTF-8."""
+    return text.encode("utf-8", "backslashreplace")
 
 
 def _umask() -> int:

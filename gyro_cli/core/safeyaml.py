@@ -20,6 +20,7 @@ Two guards sit in front of every problem file and answer sheet:
 from __future__ import annotations
 
 import os
+import re
 import stat
 from typing import Any
 
@@ -167,15 +168,19 @@ def prescan(text: str) -> None:
     try:
         _walk_events(loader, yaml)
     except yaml.YAMLError as err:
-        # libyaml 0.2.6 (PyYAML 6.0.3+) stops deep flow collections itself: the
-        # same refusal as ours, in our words.
-        if "maximum nesting depth" not in str(err):
-            raise
-        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
-        raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file needs three",
-                         line=mark.line + 1 if mark else None) from None
+        raise _too_deep(err) from None
     finally:
         loader.dispose()
+
+
+def _too_deep(err: Exception) -> Exception:
+    """libyaml 0.2.6 (PyYAML 6.0.3+) stops deep collections itself: the same refusal as
+    ours, in our words (any other YAML error as it is)."""
+    if "maximum nesting depth" not in str(err):
+        return err
+    mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
+    return InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file needs three",
+                      line=mark.line + 1 if mark else None)
 
 
 def _walk_events(loader: Any, yaml: Any) -> None:
@@ -218,16 +223,80 @@ def _walk_events(loader: Any, yaml: Any) -> None:
             stack[-1][1] += size
 
 
-def load(text: str) -> tuple[Any, Any]:
-    """(data, root node) of one YAML document, after ``prescan``.
+def _nests_itself() -> bool:
+    """Whether the parser refuses deep nesting on its own: libyaml 0.2.6 and later stop
+    both block and flow collections at 1000 levels, so composing is safe to recurse."""
+    try:
+        import yaml
+        from yaml import _yaml  # type: ignore[attr-defined]
 
-    Raises yaml.YAMLError for malformed YAML and InputError (with a line) for
-    input refused by the limits.
+        version = tuple(int(p) for p in _yaml.get_version_string().split("."))
+    except (ImportError, AttributeError, ValueError):
+        return False
+    return getattr(yaml, "CSafeLoader", None) is not None and version >= (0, 2, 6)
+
+
+_COMPOSE_FIRST: bool | None = None
+# An anchor is "&" and at least one character that is neither a space nor a flow
+# indicator (YAML 1.2, ns-anchor-name): "Ruina & Schwab" holds none.
+_ANCHOR = re.compile(r"&[^\s,\[\]{}]")
+
+
+def _check_tree(root: Any) -> None:
+    """``prescan``'s depth and size limits on a composed document without anchors (so
+    without aliases: every value is one node): the nodes in document order, the same
+    refusals at the same lines."""
+    import yaml
+
+    if root is None:
+        return
+    total = 0
+    todo = [(root, 1)]
+    while todo:
+        node, depth = todo.pop()
+        total += 1
+        if isinstance(node, yaml.MappingNode):
+            if depth > MAX_DEPTH:
+                raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file "
+                                 "needs three", line=node.start_mark.line + 1)
+            for key, value in reversed(node.value):
+                todo += ((value, depth + 1), (key, depth + 1))
+        elif isinstance(node, yaml.SequenceNode):
+            if depth > MAX_DEPTH:
+                raise InputError(f"nested deeper than {MAX_DEPTH} levels; a problem file "
+                                 "needs three", line=node.start_mark.line + 1)
+            todo += ((item, depth + 1) for item in reversed(node.value))
+        if total > MAX_NODES:
+            raise InputError(f"aliases and values expand to more than {MAX_NODES} values; "
+                             "refused (a problem file has about fifty)",
+                             line=node.start_mark.line + 1)
+
+
+def load(text: str) -> tuple[Any, Any]:
+    """(data, root node) of one YAML document, within the limits.
+
+    A document without anchors (no ``&name`` anywhere: no alias can expand or loop) is
+    composed first, by a libyaml that bounds nesting itself, and its nodes counted
+    (half the work of walking the parser's events, for the same refusals); any other
+    goes through ``prescan``. Raises yaml.YAMLError for malformed YAML and InputError
+    (with a line) for input refused by the limits.
     """
-    prescan(text)
+    global _COMPOSE_FIRST
+    if _COMPOSE_FIRST is None:
+        _COMPOSE_FIRST = _nests_itself()
+    compose_first = _COMPOSE_FIRST and not _ANCHOR.search(text)
+    if not compose_first:
+        prescan(text)
+    import yaml
+
     loader = loader_class()(text)
     try:
-        node = loader.get_single_node()
+        try:
+            node = loader.get_single_node()
+        except yaml.YAMLError as err:
+            raise _too_deep(err) from None
+        if compose_first:
+            _check_tree(node)
         written = _mapping_values(node)
         data = loader.construct_document(node) if node is not None else None
         # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the

@@ -2,13 +2,20 @@
 
 pint stays the one authority on units: an entry is only ever written from
 pint's own answer (a unit's SI factor, its printed form, whether it is US
-customary). The file is keyed by gyro's version and by the pint installed (the
-path and modification time of its package), so upgrading either starts a new
-table; a file that is unreadable, damaged, too large or written for another
-version is ignored and rebuilt. It lives in ``$GYRO_CACHE_DIR``, else
-``$XDG_CACHE_HOME/gyro``, else ``~/.cache/gyro``; ``GYRO_CACHE_DIR=""`` turns it
-off. It is written once, atomically, when the process ends, and only if a new
-unit was met.
+customary). The file is keyed by a hash of everything that decides a reading:
+gyro's version and its own unit sources (``core/unit*.py``: the aliases, the
+words, the registry's definitions) and the pint installed (its version, the
+path and modification time of its package and of its definitions file), so
+changing any of them starts a new table; a file that is unreadable, damaged,
+too large, not a regular file or written for another stamp is ignored and
+rebuilt. It lives in ``$GYRO_CACHE_DIR``, else ``$XDG_CACHE_HOME/gyro``, else
+``~/.cache/gyro``; ``GYRO_CACHE_DIR=""`` turns it off (and pint's own disk
+cache with it). It is written once, atomically, when the process ends, and only
+if a new unit was met; a cache never fails a run.
+
+pint's disk cache sits in ``pint/`` beside it (``pint_folder``), gyro's own, so
+that a read-only or missing HOME, or a damaged pickle, is never pint's problem
+to fail on: see ``units.registry``.
 """
 
 from __future__ import annotations
@@ -18,7 +25,7 @@ import json
 import math
 import os
 
-FORMAT = 1
+FORMAT = 2
 MAX_BYTES = 1 << 20      # a cache file larger than this is not read
 MAX_ENTRIES = 4096       # per table
 SEP = "\x1f"             # joins the parts of a key (never in a unit string)
@@ -29,12 +36,58 @@ _registered = False
 
 
 def directory() -> str | None:
-    """Where the cache lives, or None when it is switched off."""
+    """Where the cache lives, or None when it is switched off or has no home.
+
+    An XDG_CACHE_HOME that is not absolute is ignored (the XDG rule); a HOME
+    that is unset, empty, relative or not a directory means no cache, rather
+    than a ``.cache`` folder in the working directory or a HOME created anew.
+    """
     env = os.environ.get("GYRO_CACHE_DIR")
     if env is not None:
         return env or None
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return os.path.join(base, "gyro")
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    if xdg and os.path.isabs(xdg):
+        return os.path.join(xdg, "gyro")
+    home = os.path.expanduser("~")
+    if not (home and os.path.isabs(home) and os.path.isdir(home)):
+        return None
+    return os.path.join(home, ".cache", "gyro")
+
+
+def pint_folder() -> str | None:
+    """A folder for pint's own disk cache, or None: no cache, or one gyro cannot trust.
+
+    None when the cache is off, when the folder cannot be made, or when it holds
+    anything but regular files (a FIFO there would block pint's read).
+    """
+    folder = directory()
+    if folder is None:
+        return None
+    where = os.path.join(folder, "pint")
+    try:
+        os.makedirs(where, exist_ok=True)
+        with os.scandir(where) as entries:
+            for entry in entries:
+                if not entry.is_file(follow_symlinks=False):
+                    return None
+    except (OSError, ValueError):
+        return None
+    return where
+
+
+def clear_pint_folder(where: str) -> None:
+    """Remove pint's cache files from gyro's folder (damaged: pint rebuilds them)."""
+    try:
+        with os.scandir(where) as entries:
+            for entry in entries:
+                if entry.is_file(follow_symlinks=False) and \
+                        entry.name.endswith((".pickle", ".json")):
+                    try:
+                        os.unlink(entry.path)
+                    except OSError:
+                        pass
+    except OSError:
+        pass
 
 
 def path() -> str | None:
@@ -42,18 +95,63 @@ def path() -> str | None:
     return os.path.join(folder, "units.json") if folder else None
 
 
+_stamp: list | None = None
+
+
 def stamp() -> list | None:
-    """What the table was made with: gyro's version and the installed pint (path, mtime)."""
+    """What decides a reading, as [FORMAT, hash]; None when it cannot be told.
+
+    The hash covers gyro's version, the bytes of gyro's own unit sources
+    (every ``core/unit*.py``) and the installed pint: its version (from its
+    dist-info folder's name), and the path, size and modification time of its
+    package and of its unit definitions (``default_en.txt``). Computed once a
+    process, without importing pint.
+    """
+    global _stamp
+    if _stamp is not None:
+        return _stamp
     import importlib.util
+    import zlib  # CRC-32 and Adler-32: enough to tell an edit, and 10x cheaper to load
+                 # than hashlib on the start-up path
 
     from .. import __version__
 
+    class Digest:
+        def __init__(self, data: bytes) -> None:
+            self.crc, self.adler, self.size = 0, 1, 0
+            self.update(data)
+
+        def update(self, data: bytes) -> None:
+            self.crc = zlib.crc32(data, self.crc)
+            self.adler = zlib.adler32(data, self.adler)
+            self.size += len(data)
+
+        def hexdigest(self) -> str:
+            return f"{self.crc:08x}{self.adler:08x}{self.size:x}"
+
+    digest = Digest(f"{FORMAT}\0{__version__}".encode())
     try:
+        here = os.path.dirname(os.path.abspath(__file__))
+        for name in sorted(os.listdir(here)):
+            if name.startswith("unit") and name.endswith(".py"):
+                with open(os.path.join(here, name), "rb") as handle:
+                    digest.update(b"\0" + name.encode() + b"\0" + handle.read())
         spec = importlib.util.find_spec("pint")
         origin = spec.origin if spec else None
-        return [FORMAT, __version__, origin, os.stat(origin).st_mtime_ns] if origin else None
+        if not origin:
+            return None
+        package = os.path.dirname(origin)
+        for name in ("__init__.py", "default_en.txt"):
+            info = os.stat(os.path.join(package, name))
+            digest.update(f"\0{package}/{name}\0{info.st_size}\0{info.st_mtime_ns}".encode())
+        site = os.path.dirname(package)
+        versions = sorted(n for n in os.listdir(site)
+                          if n.startswith("pint-") and n.endswith((".dist-info", ".egg-info")))
+        digest.update(("\0" + "\0".join(versions)).encode())
     except (OSError, ImportError, ValueError):
         return None
+    _stamp = [FORMAT, digest.hexdigest()]
+    return _stamp
 
 
 def _valid(table: str, key: object, value: object) -> bool:
@@ -73,11 +171,13 @@ def _load() -> dict[str, dict]:
     where, made = path(), stamp()
     if where is None or made is None:
         return tables
+    from .errors import InputError
+    from .safeyaml import read_bytes
+
     try:
-        with open(where, "rb") as handle:
-            raw = handle.read(MAX_BYTES + 1)
-        data = json.loads(raw) if len(raw) <= MAX_BYTES else None
-    except (OSError, ValueError, RecursionError):
+        # Only a regular file, opened without blocking: a FIFO put there is ignored.
+        data = json.loads(read_bytes(where, MAX_BYTES, "a unit cache"))
+    except (InputError, OSError, ValueError, RecursionError):
         return tables
     if not isinstance(data, dict) or data.get("stamp") != made:
         return tables
@@ -144,5 +244,5 @@ def save() -> None:
 
 def forget() -> None:
     """Drop what is held in memory (tests: the next get reads the file again)."""
-    global _tables, _dirty
-    _tables, _dirty = None, False
+    global _tables, _dirty, _stamp
+    _tables, _dirty, _stamp = None, False, None

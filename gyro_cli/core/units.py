@@ -117,16 +117,38 @@ _TO: dict[tuple[str, str], float] = {}
 
 
 def registry() -> Any:
-    """The program's one pint registry, created on first use with pint's cache."""
+    """The program's one pint registry, created on first use with pint's disk cache.
+
+    pint's cache lives in gyro's cache folder (unit_cache.pint_folder). When it
+    cannot be used (no cache, a read-only or missing HOME, a FIFO there) pint
+    runs without one; when pint fails on it (a truncated pickle, another gyro
+    writing it at the same moment) its files are removed, to be rebuilt by a
+    later run, and this run goes on without a cache. A cache never fails a run.
+    """
     global _registry
     if _registry is None:
         import pint
 
-        ureg = pint.UnitRegistry(cache_folder=":auto:", on_redefinition="ignore")
-        # A textbook's "Hz" on a rotor is revolutions per second, not 1/s.
-        ureg.define("hertz = revolution / second = Hz")
-        _registry = ureg
+        def make(folder: str | None) -> Any:
+            ureg = pint.UnitRegistry(cache_folder=folder, on_redefinition="ignore")
+            # A textbook's "Hz" on a rotor is revolutions per second, not 1/s.
+            ureg.define("hertz = revolution / second = Hz")
+            return ureg
+
+        folder = unit_cache.pint_folder()
+        try:
+            _registry = make(folder)
+        except Exception:  # noqa: BLE001 - any failure of a cache: work without it
+            if folder is None:
+                raise
+            unit_cache.clear_pint_folder(folder)
+            _registry = make(None)
     return _registry
+
+
+def unit_names(units: Any) -> set[str]:
+    """The names of the units in a pint Unit (public API: Quantity.unit_items)."""
+    return {name for name, _ in registry().Quantity(1, units).unit_items()}
 
 
 def si_unit(dimension: str) -> str:
@@ -257,8 +279,11 @@ def _names(unit: str) -> list[str]:
     return words
 
 
-def _split(text: Any, key: str) -> tuple[float, str]:
-    """Split a quantity into its number and its (checked) unit expression."""
+def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[float, str]:
+    """Split a quantity into its number and its (checked) unit expression.
+
+    ``known``: (dimension, weight) of a parse; a unit the disk table holds for them
+    passed these checks in an earlier run, so its names need no pint now."""
     if isinstance(text, bool) or text is None:
         raise InputError(f"expected a quantity, got {text!r}", key=key)
     if isinstance(text, (int, float)):
@@ -274,7 +299,7 @@ def _split(text: Any, key: str) -> tuple[float, str]:
         raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
     number, unit = match.group(1), match.group(2).strip()
     unit = WHOLE_UNITS.get(unit, unit)
-    if unit in _VALID:
+    if unit in _VALID or (known and unit_cache.get("parse", unit, known[0], int(known[1]))):
         return float(number), unit
     words = _names(unit)
     if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
@@ -438,8 +463,9 @@ def _reading(unit: str, dimension: str, key: str, text: Any,
     ureg = registry()
     units, shown = _resolve(unit, key, text, weight)
     pint_dim = DIMENSIONS[dimension][0]
-    if dimension == "rate" and len(units._units) == 1:
-        (name, exponent), = units._units.items()
+    items = list(ureg.Quantity(1, units).unit_items())
+    if dimension == "rate" and len(items) == 1:
+        (name, exponent), = items
         if exponent == -1 and name in ISO_ROTATION_TIMES:  # min^-1 on a rate: rev/min
             return units * ureg.revolution, ISO_ROTATION_TIMES[name]
     if not weight and dimension in ("force", "moment") and \
@@ -484,7 +510,7 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     reading would have the wrong dimension). A unit met before, in this process
     or (through unit_cache) an earlier one, is not asked of pint again.
     """
-    number, unit = _split(text, key)
+    number, unit = _split(text, key, (dimension, weight))
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
     checked = _CHECKED.get((unit, dimension, weight))
@@ -512,7 +538,7 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
         if dimension != "angle" and _angles(units) and got == "dimensionless":
             got = "angle"
         raise InputError(f"expected {words}, got {text!r} (dimension {got})", key=key)
-    if dimension == "angle" and not (units._units and _angles(units) == set(units._units)):
+    if dimension == "angle" and not (unit_names(units) and _angles(units) == unit_names(units)):
         raise InputError(f"an angle needs a unit, deg or rad: got {text!r}", key=key)
     if dimension == "dimensionless" and _angles(units):
         # pint counts an angle as a plain number: `gear_ratio: 5 deg` would be 0.0873
@@ -528,7 +554,7 @@ def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: s
     if not math.isfinite(value):
         raise InputError(f"{text!r} is out of range", key=key)
     parsed = Parsed(number, f"{units:~}".replace(" ** ", "^").replace("**", "^"),
-                    bool(set(units._units) & US_MASS_OR_FORCE))
+                    bool(unit_names(units) & US_MASS_OR_FORCE))
     # Cache the unit's SI factor where the unit is a plain multiple (no offset), so a
     # directory of problems asks pint once per unit, not once per value.
     factor = float(ureg.Quantity(1.0, units).to(si or "dimensionless").magnitude)
@@ -546,7 +572,7 @@ def _angles(units: Any) -> set[str]:
     """The names in ``units`` that are angles, prefixed or not (mrad, mdeg, grad)."""
     ureg = registry()
     found = set()
-    for name in units._units:
+    for name in unit_names(units):
         if name in ANGLE_UNITS:
             found.add(name)
             continue

@@ -97,11 +97,21 @@ def free_from_speed_and_tilt(m: float, g: float, r: float, J: float, I: float, t
 
 def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, speed: float,
                              path_radius: float) -> list[FreeDisk]:
-    """Every tilt in (0, 90 deg) with rho > 0 for a given speed and contact circle."""
+    """Every tilt in (0, 90 deg) with rho > 0 for a given speed and contact circle.
+
+    The residual of ``free_residual`` is scanned on a grid and each change of sign
+    bisected. It is written out here with its constant factors taken out (the same
+    operations in the same order, so the same floats as ``free_residual``): the scan is
+    most of the time a rolling-disk problem takes.
+    """
     top = math.pi / 2 if path_radius >= r else math.asin(path_radius / r)
+    mgr, v2, inertia = m * g * r, speed * speed, m * r + J / r
+    sin, cos = math.sin, math.cos
 
     def f(tilt: float) -> float:
-        return free_residual(m, g, r, J, I, tilt, path_radius - r * math.sin(tilt), speed)
+        s = sin(tilt)
+        rho = path_radius - r * s
+        return mgr * s * rho * rho - v2 * cos(tilt) * (rho * inertia + I * s)
 
     n = 4000
     # evenly in tilt, and geometrically below the first step (a nearly upright disk on a
@@ -109,12 +119,16 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
     fine = [top / n * 10 ** (-k / 8) for k in range(96, 0, -1)]
     grid = fine + [top * i / n for i in range(1, n)]
     roots = []
-    values = [f(t) for t in grid]
-    for (t0, f0), (t1, f1) in zip(zip(grid, values), zip(grid[1:], values[1:])):
+    sines = list(map(sin, grid))
+    rhos = [path_radius - r * s for s in sines]
+    values = [mgr * s * rho * rho - v2 * c * (rho * inertia + I * s)
+              for s, c, rho in zip(sines, map(cos, grid), rhos)]
+    for k in range(len(grid) - 1):
+        f0 = values[k]
         if f0 == 0:
-            roots.append(t0)
-        elif f0 * f1 < 0:
-            lo, hi, flo = t0, t1, f0
+            roots.append(grid[k])
+        elif f0 * values[k + 1] < 0:
+            lo, hi, flo = grid[k], grid[k + 1], f0
             for _ in range(200):
                 mid = 0.5 * (lo + hi)
                 fm = f(mid)

@@ -37,6 +37,7 @@ pairs. Polynomials are lists of coefficients, lowest power first.
 from __future__ import annotations
 
 import cmath
+import functools
 import math
 from dataclasses import dataclass
 
@@ -375,6 +376,16 @@ def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> fl
 def characteristic(m: Matrices, g: float) -> list[list[float]]:
     """[a0, a1, a2, a3, a4]: det(M s^2 + v C1 s + g K0 + v^2 K2) = sum a_k(v) s^k.
 
+    Worked once per bicycle (``eigenvalues`` asks for it at every speed): a copy of the
+    remembered coefficients.
+    """
+    return [list(a) for a in _characteristic(m, g)]
+
+
+@functools.lru_cache(maxsize=64)
+def _characteristic(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """The coefficients of ``characteristic``.
+
     Each a_k is a list of coefficients in v (lowest power first).
     For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
       a3 = A11 B22 + B11 A22 - A12 B21 - B12 A21,
@@ -398,7 +409,7 @@ def characteristic(m: Matrices, g: float) -> list[list[float]]:
     a2 = polyadd(cross(A, C), det(B))
     a1 = cross(B, C)
     a0 = det(C)
-    return [_trim(a) for a in (a0, a1, a2, a3, a4)]
+    return tuple(tuple(_trim(a)) for a in (a0, a1, a2, a3, a4))
 
 
 def hurwitz(coeffs: list[list[float]]) -> list[float]:

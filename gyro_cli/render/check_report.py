@@ -5,13 +5,14 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..checking.results import AnswerCheck, CheckRun
+from ..checking.results import AnswerCheck, CheckRun, ProblemCheck, Tally
 from ..core.errors import terminal_text
 from ..core.work import num
 
 # ---- reports ----------------------------------------------------------------
 
-def summary_line(run_: CheckRun) -> str:
+def summary_line(run_: CheckRun | Tally) -> str:
+    """The last line: the counts and the verdict of the exit code."""
     c = run_.counts()
     parts = [f"{c['answers']} answer{'s' * (c['answers'] != 1)} in {c['checked']} problem"
              f"{'s' * (c['checked'] != 1)}: {c['passed']} passed, {c['failed']} failed"]
@@ -36,67 +37,77 @@ def _percent(check: AnswerCheck) -> str:
     return f"{percent:+.2f}%" if abs(percent) < 1e6 else f"{percent:+.3g}%"
 
 
-def table(run_: CheckRun) -> str:
-    """The terminal report: one line per answer under its file, then the summary."""
-    rows: list[tuple[str, ...]] = []
-    for p in run_.problems:
-        head = f"{p.file}" + (f"  {p.id}" if p.id else "") + (f"  {p.title}" if p.title else "")
-        rows.append(("#", head))
-        if p.status == "error":
-            rows.append(("#", f"  ERROR  {p.error}"))
-        elif p.status == "no expected answers":
-            rows.append(("#", "  ----   no expected answers (not checked)"))
-        for a in p.answers:
-            note = a.message if not a.passed or not a.keyed else ""
-            if a.slip:
-                note += f"; likely slip: {a.slip}"
-            tol = (f" (+-{num(a.tolerance_value)} {a.unit or ''})".replace(" )", ")")
-                   if a.tolerance_value is not None and a.tolerance_value >= 0 else "")
-            rows.append(("PASS" if a.passed and a.keyed else "----" if a.passed else "FAIL",
-                         a.label, a.expected or "-",
-                         a.got or "-", _percent(a), f"{a.tolerance}{tol}", note))
-        rows += [("#", f"  ! {warning}") for warning in p.warnings]
+# The table is printed as each file finishes, so its columns cannot wait for the widest
+# cell of the run: each column has a fixed width that fits nearly every answer of the
+# bundled problems, and a longer cell pushes only its own row to the right.
+_HEADER = ("", "answer", "expected", "got", "error", "tolerance")
+_WIDTHS = (4, 16, 14, 18, 8, 24)
+
+
+def table_head() -> str:
+    """The column titles, the table's first line."""
+    return "  " + "  ".join(h.ljust(w) for h, w in zip(_HEADER, _WIDTHS)).rstrip() + "\n"
+
+
+def table_rows(p: ProblemCheck) -> str:
+    """One file's lines of the table: its name, id and title, then one line per answer
+    (or its error), then its warnings."""
     # file names, ids, titles, answers and messages come from files: one line each, and no
     # terminal escape sequence reaches the terminal raw
-    rows = [tuple(terminal_text(cell) for cell in row) for row in rows]
-    widths = [0] * 6
-    for row in rows:
-        if row[0] != "#":
-            widths = [max(w, len(c)) for w, c in zip(widths, row[:6])]
-    lines = []
-    header = ("", "answer", "expected", "got", "error", "tolerance")
-    widths = [max(w, len(h)) for w, h in zip(widths, header)]
-    lines.append("  " + "  ".join(h.ljust(w) for h, w in zip(header, widths)).rstrip())
-    for row in rows:
-        if row[0] == "#":
-            lines.append(row[1])
-            continue
-        cells = [c.ljust(w) for c, w in zip(row[:6], widths)]
-        cells[4] = row[4].rjust(widths[4])
-        line = "  " + "  ".join(cells)
-        lines.append((line + ("  " + row[6] if row[6] else "")).rstrip())
-    lines.append(summary_line(run_))
+    t = terminal_text
+    lines = [t(f"{p.file}" + (f"  {p.id}" if p.id else "") + (f"  {p.title}" if p.title else ""))]
+    if p.status == "error":
+        lines.append(t(f"  ERROR  {p.error}"))
+    elif p.status == "no expected answers":
+        lines.append("  ----   no expected answers (not checked)")
+    for a in p.answers:
+        note = a.message if not a.passed or not a.keyed else ""
+        if a.slip:
+            note += f"; likely slip: {a.slip}"
+        tol = (f" (+-{num(a.tolerance_value)} {a.unit or ''})".replace(" )", ")")
+               if a.tolerance_value is not None and a.tolerance_value >= 0 else "")
+        row = tuple(t(c) for c in (
+            "PASS" if a.passed and a.keyed else "----" if a.passed else "FAIL",
+            a.label, a.expected or "-", a.got or "-", _percent(a), f"{a.tolerance}{tol}"))
+        cells = [c.ljust(w) for c, w in zip(row, _WIDTHS)]
+        cells[4] = row[4].rjust(_WIDTHS[4])
+        lines.append(("  " + "  ".join(cells) + ("  " + t(note) if note else "")).rstrip())
+    lines += [t(f"  ! {warning}") for warning in p.warnings]
     return "\n".join(lines) + "\n"
+
+
+def table(run_: CheckRun) -> str:
+    """The terminal report: one line per answer under its file, then the summary."""
+    return table_head() + "".join(table_rows(p) for p in run_.problems) \
+        + summary_line(run_) + "\n"
+
+
+def _summary(run_: CheckRun | Tally, shard: tuple[int, int] | None = None) -> dict[str, Any]:
+    summary = dict(run_.counts(), exit_code=run_.exit_code, text=summary_line(run_))
+    if shard:
+        summary["shard"] = f"{shard[0]}/{shard[1]}"
+    return summary
+
+
+def problem_dict(p: ProblemCheck) -> dict[str, Any]:
+    """One problem of the JSON report."""
+    return {
+        "file": p.file, "id": p.id or None, "title": p.title or None, "kind": p.kind or None,
+        "status": p.status, "error": p.error, "internal": p.internal,
+        "warnings": list(p.warnings),
+        "answers": [{
+            "name": a.name, "index": a.index, "passed": a.passed,
+            "expected": a.expected, "got": a.got, "unit": a.unit,
+            "expected_value": a.expected_value, "got_value": a.got_value,
+            "expected_si": a.expected_si, "got_si": a.got_si, "si_unit": a.si_unit,
+            "tolerance": a.tolerance, "tolerance_value": a.tolerance_value,
+            "relative_error": a.relative_error, "message": a.message or None,
+            "slip": a.slip, "keyed": a.keyed} for a in p.answers]}
 
 
 def as_dict(run_: CheckRun) -> dict[str, Any]:
     """The JSON report: every problem and answer, plus the summary."""
-    summary = dict(run_.counts(), exit_code=run_.exit_code, text=summary_line(run_))
-    problems = []
-    for p in run_.problems:
-        problems.append({
-            "file": p.file, "id": p.id or None, "title": p.title or None, "kind": p.kind or None,
-            "status": p.status, "error": p.error, "internal": p.internal,
-            "warnings": list(p.warnings),
-            "answers": [{
-                "name": a.name, "index": a.index, "passed": a.passed,
-                "expected": a.expected, "got": a.got, "unit": a.unit,
-                "expected_value": a.expected_value, "got_value": a.got_value,
-                "expected_si": a.expected_si, "got_si": a.got_si, "si_unit": a.si_unit,
-                "tolerance": a.tolerance, "tolerance_value": a.tolerance_value,
-                "relative_error": a.relative_error, "message": a.message or None,
-                "slip": a.slip, "keyed": a.keyed} for a in p.answers]})
-    return {"summary": summary, "problems": problems}
+    return {"summary": _summary(run_), "problems": [problem_dict(p) for p in run_.problems]}
 
 
 def _finite(value: Any) -> Any:
@@ -111,6 +122,47 @@ def _finite(value: Any) -> Any:
 
 
 def as_json(run_: CheckRun) -> str:
+    """The JSON report as one document (the same text ``JsonStream`` writes piece by piece)."""
+    stream = JsonStream()
+    return stream.head() + "".join(stream.problem(p) for p in run_.problems) \
+        + stream.tail(run_.tally())
+
+
+def _dumps(value: Any) -> str:
+    """One line of JSON (the C encoder); a NaN or infinity (a solver overflow) as null."""
     import json
 
-    return json.dumps(_finite(as_dict(run_)), indent=1, allow_nan=False)
+    try:
+        return json.dumps(value, allow_nan=False)
+    except ValueError:
+        return json.dumps(_finite(value), allow_nan=False)
+
+
+class JsonStream:
+    """The JSON report written as the files finish: ``{"problems": [`` first, then one
+    problem per line as each is known, then the summary once the counts are known::
+
+        {"problems": [
+        {"file": "problems/11_1.yaml", ...},
+        {"file": "problems/11_2.yaml", ...}
+        ],
+        "summary": {"files": 2, ...}}
+
+    One ordinary JSON document (``json.load`` reads it), and a line per problem for
+    ``grep`` and line-by-line readers."""
+
+    def __init__(self) -> None:
+        self._count = 0
+
+    @staticmethod
+    def head() -> str:
+        return '{"problems": ['
+
+    def problem(self, p: ProblemCheck) -> str:
+        self._count += 1
+        return ("," if self._count > 1 else "") + "\n" + _dumps(problem_dict(p))
+
+    def tail(self, tally: Tally, shard: tuple[int, int] | None = None) -> str:
+        """The end: the summary (with ``"shard": "K/N"`` for a shard's report)."""
+        return ("\n" if self._count else "") + '],\n"summary": ' \
+            + _dumps(_summary(tally, shard)) + "}"
