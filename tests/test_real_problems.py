@@ -106,7 +106,7 @@ def test_ninety_degrees_needs_no_transverse_inertia(run, write):
     out = run("solve", path)
     assert out.exit_code == 0, out.output
     M, J, spin = 2 * 9.81 * 0.1, 0.005, 3000 * RPM
-    assert "phidot = M / (J psidot) = 1.962 N m / (0.005000 kg m^2 314.2 rad/s) = 1.249 " \
+    assert "phidot = M / (J psidot) = 1.962 N m / (0.005000 kg m^2 (314.2 rad/s)) = 1.249 " \
            "rad/s" in out.stdout
     assert si(path, "precession") == [pytest.approx(M / (J * spin), rel=1e-12)]
 

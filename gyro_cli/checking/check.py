@@ -57,7 +57,11 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     # Validate everything in the file before solving: a bad key is exit 2 either way.
     validate_tolerance(problem.tolerance, kind)
     wanted: dict[str, tuple[list[Expected], Tolerance]] = {}
+    step_values = {}
     for name, raw in problem.expected.items():
+        if name == "steps" and kind.answer("steps") is None:
+            step_values = raw
+            continue
         dimension = kind.answer(name).dimension
         values = parse_expected(raw, dimension, f"expected.{name}")
         wanted[name] = (values, tolerance_for(problem.tolerance, name, dimension, answer_names))
@@ -67,14 +71,60 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     # Solved even without expected answers: a file that cannot be solved is a bad file.
     solved = solve(dataclasses.replace(problem, find=find))
     result.warnings = list(solved.solution.warnings)
-    if not wanted:
+    if not wanted and not step_values:
         result.status = "no expected answers"
         return result
     for name, (values, tolerance) in wanted.items():
         result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict)
+    for symbol, raw in step_values.items():
+        result.answers += _compare_step(str(symbol), raw, problem, solved.solution, answer_names)
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"
     return result
 
+
+
+def _graded_steps(solution: Any) -> dict[str, tuple[float, str, str]]:
+    """Each step symbol -> (SI value, SI unit, dimension), from the first step of that
+    symbol whose value is in an SI unit (a tree's, or one stated in SI)."""
+    from ..core import units
+    from ..core.expr import UNIT_TEXT
+
+    dimensions: dict[str, str] = {}
+    for dimension, (_, si, _) in units.DIMENSIONS.items():
+        dimensions.setdefault(units.SI_TEXT.get(si, si), dimension)
+    out: dict[str, tuple[float, str, str]] = {}
+    for section in solution.sections:
+        for step in section.steps:
+            if not step.symbol or step.value is None or step.symbol in out:
+                continue
+            value, unit = step.si if step.si is not None else (step.value, step.unit)
+            unit = UNIT_TEXT.get(unit, units.SI_TEXT.get(unit, unit))
+            if unit in dimensions:
+                out[step.symbol] = (value, unit, dimensions[unit])
+    return out
+
+
+def _compare_step(symbol: str, raw: Any, problem: Any, solution: Any,
+                  answer_names: list[str]) -> list:
+    """`expected.steps.<symbol>`: an intermediate value of the worked answer, graded as an
+    answer is (the file's tolerance, or its `default:`)."""
+    from types import SimpleNamespace
+
+    key = f"expected.steps.{symbol}"
+    steps = _graded_steps(solution)
+    if symbol not in steps:
+        from ..solving.problem import suggest
+
+        raise InputError(f"no step of the worked answer gives {symbol!r} in SI"
+                         f"{suggest(symbol, list(steps))} (steps: {', '.join(steps)})", key=key)
+    value, unit, dimension = steps[symbol]
+    values = parse_expected(raw, dimension, key)
+    spec = problem.tolerance
+    if isinstance(spec, dict):
+        spec = spec.get("default")
+    tolerance = tolerance_for(spec, symbol, dimension, answer_names)
+    reported = SimpleNamespace(si_values=[value], si_unit=unit, unit=unit, labels=[])
+    return compare(f"steps.{symbol}", values, tolerance, reported, strict=True)
 
 
 def check_file(path: str, strict: bool = False) -> ProblemCheck:

@@ -259,6 +259,12 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
                quantity)
         expected[a.name] = {"oneOf": [one, {"type": "array", "minItems": 1, "items": one}],
                             "description": a.doc}
+    if "steps" not in expected:
+        expected["steps"] = {"type": "object", "minProperties": 1,
+                             "additionalProperties": {"oneOf": [{"type": "number"}, quantity]},
+                             "description": "intermediate values graded by the step's symbol "
+                                            "in the worked answer, e.g. {omega_z: 1850 rpm} "
+                                            "(docs/check.md)"}
     return {
         "given": {"type": "object", "additionalProperties": False, "properties": given},
         "find": {"oneOf": [{"type": "object", "minProperties": 1, "additionalProperties": False,

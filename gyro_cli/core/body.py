@@ -13,6 +13,7 @@ from typing import Callable
 
 from .errors import InputError
 from .params import Param
+from .expr import Sym
 from .work import Work, qty, substitute
 
 G_SI = 9.81         # m/s^2, the format's default
@@ -237,17 +238,15 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     elif "weight" not in values:
         m = None
     else:
-        m = work.step("m", "W / g", f"{qty(values['weight'], 'N')} / {qty(g, 'm/s^2')}",
-                      values["weight"] / g, "kg")
+        m = work.step("m", Sym("W", values["weight"], "N") / Sym("g", g, "m/s^2"), unit="kg")
     r = values.get("radius")
     if r is None and "diameter" in values:
-        r = work.step("r", "d / 2", qty(values["diameter"], "m") + " / 2",
-                      values["diameter"] / 2, "m")
+        r = work.step("r", Sym("d", values["diameter"], "m") / 2, unit="m")
     shape = values.get("shape")
     l = values.get("cg_distance")
     if shape == "cone" and l is None and "height" in values:
-        l = work.step("l", "3 h / 4", f"3 ({qty(values['height'], 'm')}) / 4",
-                      0.75 * values["height"], "m", note="apex at the fixed point")
+        l = work.step("l", 3 * Sym("h", values["height"], "m") / 4, unit="m",
+                      note="apex at the fixed point")
     J = _axial(values, m, r, shape, work)
     I_cg = _transverse_cg(values, m, r, shape, work)
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
@@ -291,7 +290,7 @@ def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Wor
         return values["J"]
     if "k_axial" in values:
         k = values["k_axial"]
-        return work.step("J", "m k_z^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
+        return work.step("J", Sym("m", m, "kg") * Sym("k_z", k, "m") ** 2, unit="kg*m^2")
     if shape:
         spec, dims = SHAPES[shape], _dimensions(values, r)
         return work.step("J", spec.J_text, _substituted(spec.J_text, m, dims),
@@ -316,8 +315,7 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
         return values["I_cg"]
     if "k_cg" in values:
         k = values["k_cg"]
-        return work.step("I_G", "m k_G^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k,
-                         "kg*m^2")
+        return work.step("I_G", Sym("m", m, "kg") * Sym("k_G", k, "m") ** 2, unit="kg*m^2")
     if shape:
         if shape == "cone" and "height" not in values:
             raise InputError("a cone needs its height", key="given.height")
@@ -342,15 +340,14 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
         if m is None:
             return None  # needs the mass, which the kind did not ask for
         k = values["k_pivot"]
-        return work.step("I", "m k_O^2", f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2")
+        return work.step("I", Sym("m", m, "kg") * Sym("k_O", k, "m") ** 2, unit="kg*m^2")
     if I_cg is not None and l is not None and m is None:
         # no mass given (none needed): only a fixed point at the centre of mass is known
         return work.step("I", "I_G", value=I_cg, unit="kg*m^2",
                          note="(l = 0: the fixed point is the centre of mass)") if l == 0 else None
     if I_cg is not None and l is not None:
-        return work.step("I", "I_G + m l^2",
-                         f"{qty(I_cg, 'kg*m^2')} + {qty(m, 'kg')} ({qty(l, 'm')})^2",
-                         I_cg + m * l * l, "kg*m^2", note="(parallel axes, about the fixed point)")
+        return work.step("I", Sym("I_G", I_cg, "kg m^2") + Sym("m", m, "kg") * Sym("l", l, "m")
+                         ** 2, unit="kg*m^2", note="(parallel axes, about the fixed point)")
     return None
 
 
@@ -376,8 +373,8 @@ def spin_angular_momentum(given, work: Work) -> float:
         raise InputError("the rotor needs its axial inertia: J, k_axial or a shape (or give "
                          "angular_momentum)", key="given.J")
     spin = given["spin"]
-    return work.step("H", "J psidot", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
-                     "kg m^2/s", ref="angular momentum of the rotor, H = J omega_z")
+    return work.step("H", Sym("J", J, "kg m^2") * Sym("psidot", spin, "rad/s"), unit="kg m^2/s",
+                     ref="angular momentum of the rotor, H = J omega_z")
 
 
 # ---- the vehicles' data as books give them ---------------------------------------
@@ -409,7 +406,7 @@ def vehicle_data(given, work: Work, *rotors: str):
         if W <= 0:
             raise InputError("weight must be positive", key="given.weight")
         values["mass"] = W / g
-        steps.append(("m", "W / g", f"{qty(W, 'N')} / {qty(g, 'm/s^2')}", W / g, "kg"))
+        steps.append(("m", Sym("W", W, "N") / Sym("g", g, "m/s^2"), "kg"))
     for rotor in rotors:
         mass_key, k_key, inertia_key = f"{rotor}_mass", f"{rotor}_k", f"{rotor}_inertia"
         if mass_key not in values and k_key not in values:
@@ -427,11 +424,11 @@ def vehicle_data(given, work: Work, *rotors: str):
                              key=f"given.{mass_key if m < 0 else k_key}")
         symbol = {"wheel": "I_w", "engine": "I_E", "axle": "I_axle"}.get(rotor, inertia_key)
         values[inertia_key] = m * k * k
-        steps.append((symbol, f"m_{rotor[0]} k_{rotor[0]}^2",
-                      f"{qty(m, 'kg')} ({qty(k, 'm')})^2", m * k * k, "kg*m^2"))
+        steps.append((symbol, Sym(f"m_{rotor[0]}", m, "kg") * Sym(f"k_{rotor[0]}", k, "m") ** 2,
+                      "kg*m^2"))
     if steps:
         work.section("Data as given")
-        for symbol, formula, substitution, value, unit in steps:
-            work.step(symbol, formula, substitution, value, unit)
+        for symbol, tree, unit in steps:
+            work.step(symbol, tree, unit=unit)
     return replace(given, values=values, defaulted={k for k in given.defaulted
                                                     if values.get(k) == given.values.get(k)})

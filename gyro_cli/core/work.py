@@ -8,19 +8,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
 from .units import si_text
 
-SIG = 4
-
-
-def num(x: float, sig: int = SIG) -> str:
-    """A number to ``sig`` significant figures, trailing zeros kept (0.8340)."""
-    if x == 0:
-        return "0"
-    text = f"{x:#.{sig}g}"
-    mantissa, _, exponent = text.partition("e")
-    mantissa = mantissa.rstrip(".")
-    return f"{mantissa}e{exponent}" if exponent else mantissa
+__all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
+           "Work"]
 
 
 def qty(x: float, unit: str) -> str:
@@ -57,7 +49,10 @@ def fold_signs(text: str) -> str:
 class Step:
     """One line: ``symbol = formula = substitution = value unit  (ref)``.
 
-    A step with only ``text`` is a line of prose or a bare equation.
+    A step with only ``text`` is a line of prose or a bare equation. A step built from an
+    expression tree keeps it in ``expr`` (SI); ``formula`` and ``substitution`` are its
+    prints. ``--units us`` sets ``view``, the tree with its symbols in US units, and keeps
+    the SI value and unit in ``si``.
     """
 
     symbol: str = ""
@@ -67,6 +62,14 @@ class Step:
     unit: str = ""
     ref: str = ""
     text: str = ""
+    expr: Expr | None = None
+    view: Expr | None = None
+    si: tuple[float, str] | None = None
+
+    @property
+    def shown(self) -> Expr | None:
+        """The tree as printed (in US units under ``--units us``), if the step has one."""
+        return self.view if self.view is not None else self.expr
 
     def as_text(self) -> str:
         if not self.symbol:
@@ -146,9 +149,41 @@ class Work:
             self.section("Solution")
         return self.sections[-1]
 
-    def step(self, symbol: str, formula: str = "", substitution: str = "",
-             value: float | None = None, unit: str = "", ref: str = "", note: str = "") -> float | None:
-        """Add ``symbol = formula = substitution = value``; returns value."""
+    def step(self, symbol: str, formula: str | Expr = "", substitution: str = "",
+             value: float | None = None, unit: str = "", ref: str = "", note: str = "",
+             substitute: bool = True, state: bool = True) -> float | None:
+        """Add ``symbol = formula = substitution = value``; returns value.
+
+        ``formula`` is an expression tree (`core.expr`): the formula and the substitution
+        are printed from it and the value is its evaluation (``substitute=False`` shows
+        no substitution, ``state=False`` no formula: the symbol is the formula). A unit
+        of `expr.SHOWN` (``deg``, ``arcsec/yr``, ``yr``) shows the SI value converted, and
+        returns it converted. The older form, formula and substitution as text with the
+        value beside them, is kept for the kinds not yet written as trees.
+        """
+        if isinstance(formula, Expr):
+            if substitution or value is not None:
+                raise TypeError("a step built from a tree takes its substitution and value "
+                                "from the tree")
+            tree = formula
+            try:
+                value = tree.value
+            except (ZeroDivisionError, OverflowError, ValueError) as err:
+                from .errors import InputError
+
+                raise InputError(f"the step {symbol} = {tree_formula(tree)} cannot be evaluated "
+                                 f"for these data ({err}): a degenerate case, or magnitudes "
+                                 "beyond double precision; check the data and units",
+                                 key="given") from None
+            si = None
+            if unit in SHOWN:
+                si = (value, SHOWN[unit][1])
+                value = value / SHOWN[unit][0]
+            self._current().steps.append(Step(
+                symbol, tree_formula(tree) if state else "",
+                tree_substitution(tree) if substitute else "", value, unit, ref, note,
+                expr=tree, si=si))
+            return value
         if " -" in substitution:
             substitution = fold_signs(substitution)
         self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note))

@@ -20,6 +20,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import Sym
 from ..core.work import Work, num, qty, vec
 
 
@@ -59,7 +60,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.section("Engine and propeller")
     work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotating parts")
     work.step("omega", value=spin, unit="rad/s", note="engine speed")
-    work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin, "kg m^2/s")
+    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
+    work.step("H", J_ * omega, unit="kg m^2/s")
     H = V.spin_vector(J, spin, direction)
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
@@ -67,14 +69,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   f"; H = {vec(H, 'kg m^2/s')}")
 
     work.section("Turn: precession about the vertical")
-    rate = work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
+    rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
               f"from above): omega_p = {vec(wp, 'rad/s')}")
 
     work.section("Gyroscopic couple, C = omega_p x H")
-    C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                  f"({qty(rate, 'rad/s')})", J * spin * rate, "N*m", ref="Eq. 11.29")
+    C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
     if not math.isfinite(C):
         raise InputError("these data are outside what gyro can compute reliably in double "
                          "precision (a product overflows); check the magnitudes and units",

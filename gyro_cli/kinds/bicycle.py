@@ -23,6 +23,7 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import Expr, Sym, cos, sin
 from ..core.work import GivenLine, Work, num
 
 # key -> (dimension, symbol, meaning); order of Table 1.
@@ -185,43 +186,56 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   "= 0 wherever I_Ryy / r_R and I_Fyy / r_F enter (C1 and K2).")
 
     work.section("The whole bicycle T about the rear contact point (Eqs. A 1-A 5)")
-    work.step("m_T", "m_R + m_B + m_H + m_F", value=t.mT, unit="kg")
-    work.step("x_T", "(x_B m_B + x_H m_H + w m_F) / m_T", value=t.xT, unit="m")
-    work.step("z_T", "(-r_R m_R + z_B m_B + z_H m_H - r_F m_F) / m_T", value=t.zT, unit="m",
-              note="centre of mass of the whole bicycle")
-    work.step("I_Txx", "I_Rxx + I_Bxx + I_Hxx + I_Fxx + m_R r_R^2 + m_B z_B^2 + m_H z_H^2 + "
-              "m_F r_F^2", value=t.ITxx, unit="kg*m^2")
-    work.step("I_Txz", "I_Bxz + I_Hxz - m_B x_B z_B - m_H x_H z_H + m_F w r_F", value=t.ITxz,
-              unit="kg*m^2")
-    work.step("I_Tzz", "I_Rxx + I_Bzz + I_Hzz + I_Fxx + m_B x_B^2 + m_H x_H^2 + m_F w^2",
-              value=t.ITzz, unit="kg*m^2", note="for the wheels I_Rzz = I_Rxx and I_Fzz = I_Fxx")
+    S = _symbols(p)
+    mR, mB, mH, mF = S["mR"], S["mB"], S["mH"], S["mF"]
+    xB, zB, xH, zH, rR, rF, w, c, lam = (S[k] for k in ("xB", "zB", "xH", "zH", "rR", "rF",
+                                                        "w", "c", "lambda"))
+    I = {k: S[k] for k in S if k.startswith("I")}
+
+    def step(symbol: str, tree: Expr, unit: str, note: str = "") -> Sym:
+        """A formula step (the values are the paper's, printed in the Given table)."""
+        value = work.step(symbol, tree, unit=unit, note=note, substitute=False)
+        assert value is not None
+        return Sym(symbol, value, unit)
+
+    mT = step("m_T", mR + mB + mH + mF, "kg")
+    xT = step("x_T", (xB * mB + xH * mH + w * mF) / mT, "m")
+    step("z_T", (-(rR * mR) + zB * mB + zH * mH - rF * mF) / mT, "m",
+         note="centre of mass of the whole bicycle")
+    step("I_Txx", I["IRxx"] + I["IBxx"] + I["IHxx"] + I["IFxx"] + mR * rR ** 2 + mB * zB ** 2
+         + mH * zH ** 2 + mF * rF ** 2, "kg*m^2")
+    step("I_Txz", I["IBxz"] + I["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF, "kg*m^2")
+    step("I_Tzz", I["IRxx"] + I["IBzz"] + I["IHzz"] + I["IFxx"] + mB * xB ** 2 + mH * xH ** 2
+         + mF * w ** 2, "kg*m^2", note="for the wheels I_Rzz = I_Rxx and I_Fzz = I_Fxx")
 
     work.section("The front assembly A = front frame H + front wheel F (Eqs. A 6-A 15)")
-    work.step("m_A", "m_H + m_F", value=t.mA, unit="kg")
-    work.step("x_A", "(x_H m_H + w m_F) / m_A", value=t.xA, unit="m")
-    work.step("z_A", "(z_H m_H - r_F m_F) / m_A", value=t.zA, unit="m")
-    work.step("I_Axx", "I_Hxx + I_Fxx + m_H (z_H - z_A)^2 + m_F (r_F + z_A)^2", value=t.IAxx,
-              unit="kg*m^2")
-    work.step("I_Axz", "I_Hxz - m_H (x_H - x_A)(z_H - z_A) + m_F (w - x_A)(r_F + z_A)",
-              value=t.IAxz, unit="kg*m^2")
-    work.step("I_Azz", "I_Hzz + I_Fxx + m_H (x_H - x_A)^2 + m_F (w - x_A)^2", value=t.IAzz,
-              unit="kg*m^2")
-    work.step("u_A", "(x_A - w - c) cos(lambda) - z_A sin(lambda)", value=t.uA, unit="m",
+    mA = step("m_A", mH + mF, "kg")
+    xA = step("x_A", (xH * mH + w * mF) / mA, "m")
+    zA = step("z_A", (zH * mH - rF * mF) / mA, "m")
+    IAxx = step("I_Axx", I["IHxx"] + I["IFxx"] + mH * (zH - zA) ** 2 + mF * (rF + zA) ** 2,
+                "kg*m^2")
+    IAxz = step("I_Axz", I["IHxz"] - mH * (xH - xA) * (zH - zA) + mF * (w - xA) * (rF + zA),
+                "kg*m^2")
+    IAzz = step("I_Azz", I["IHzz"] + I["IFxx"] + mH * (xH - xA) ** 2 + mF * (w - xA) ** 2,
+                "kg*m^2")
+    uA = step("u_A", (xA - w - c) * cos(lam) - zA * sin(lam), "m",
               note="distance of A's centre of mass ahead of the steer axis")
-    work.step("I_All", "m_A u_A^2 + I_Axx sin^2(lambda) + 2 I_Axz sin(lambda) cos(lambda) + "
-              "I_Azz cos^2(lambda)", value=t.IAll, unit="kg*m^2", note="about the steer axis")
-    work.step("I_Alx", "-m_A u_A z_A + I_Axx sin(lambda) + I_Axz cos(lambda)", value=t.IAlx,
-              unit="kg*m^2")
-    work.step("I_Alz", "m_A u_A x_A + I_Axz sin(lambda) + I_Azz cos(lambda)", value=t.IAlz,
-              unit="kg*m^2")
-    work.step("mu", "c cos(lambda) / w", value=t.mu, unit="", note="trail ratio")
-    work.step("S_R", "I_Ryy / r_R" if gyroscopic else "0 (gyroscopic: false)", value=t.SR,
-              unit="kg m", note="rear wheel spin angular momentum per unit speed")
-    work.step("S_F", "I_Fyy / r_F" if gyroscopic else "0 (gyroscopic: false)", value=t.SF,
-              unit="kg m")
-    work.step("S_T", "S_R + S_F", value=t.ST, unit="kg m")
-    work.step("S_A", "m_A u_A + mu m_T x_T", value=t.SA, unit="kg m",
-              note="static moment of the steering assembly")
+    step("I_All", mA * uA ** 2 + IAxx * sin(lam) ** 2 + 2 * IAxz * sin(lam) * cos(lam)
+         + IAzz * cos(lam) ** 2, "kg*m^2", note="about the steer axis")
+    step("I_Alx", -(mA * uA * zA) + IAxx * sin(lam) + IAxz * cos(lam), "kg*m^2")
+    step("I_Alz", mA * uA * xA + IAxz * sin(lam) + IAzz * cos(lam), "kg*m^2")
+    mu = step("mu", c * cos(lam) / w, "", note="trail ratio")
+    if gyroscopic:
+        SR = step("S_R", I["IRyy"] / rR, "kg m",
+                  note="rear wheel spin angular momentum per unit speed")
+        SF = step("S_F", I["IFyy"] / rF, "kg m")
+        step("S_T", SR + SF, "kg m")
+    else:
+        work.step("S_R", "0 (gyroscopic: false)", value=t.SR, unit="kg m",
+                  note="rear wheel spin angular momentum per unit speed")
+        work.step("S_F", "0 (gyroscopic: false)", value=t.SF, unit="kg m")
+        work.step("S_T", "S_R + S_F", value=t.ST, unit="kg m")
+    step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
 
     work.section("The matrices (Eqs. A 20-A 23), rows and columns " + Q)
     work.text("M_pp = I_Txx;  M_pd = M_dp = I_Alx + mu I_Txz;  M_dd = I_All + 2 mu I_Alz + "
@@ -336,6 +350,18 @@ def _share_text(with_spin, without) -> str:
 
     return (f"the wheels' spin moves the lower end from {end(lo0)} to {end(lo1)} and the upper "
             f"end from {end(hi0)} to {end(hi1)}.")
+
+
+def _symbols(p: dict[str, float]) -> dict[str, Sym]:
+    """The paper's parameters as symbols: mR -> m_R (kg), IBxz -> I_Bxz (kg m^2)."""
+    out = {"w": Sym("w", p["w"], "m"), "c": Sym("c", p["c"], "m"),
+           "lambda": Sym("lambda", p["lambda"], "deg")}
+    for key, value in p.items():
+        if key[0] in "mxzr" and len(key) == 2:
+            out[key] = Sym(f"{key[0]}_{key[1]}", value, "kg" if key[0] == "m" else "m")
+        elif key[0] == "I":
+            out[key] = Sym(f"I_{key[1:]}", value, "kg m^2")
+    return out
 
 
 KIND = Kind(

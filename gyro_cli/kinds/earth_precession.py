@@ -17,14 +17,15 @@ The derivation is in gyro_cli/physics/earth_precession.py and docs/applications.
 from __future__ import annotations
 
 import math
+import operator
+from functools import reduce
 
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Const, Let, Num, Sym, cos, sin
 from ..core.work import Work, num, qty
-from ..physics.earth_precession import (ARCSEC, G, JULIAN_YEAR, eccentricity_factor,
-                                        node_factor, precession_rate, tidal_from_distance,
-                                        tidal_from_period)
+from ..physics.earth_precession import ARCSEC, G, JULIAN_YEAR
 
 DAY = 86400.0
 BODIES = ("sun", "moon")
@@ -99,6 +100,9 @@ def _symbols() -> dict[str, str]:
     return {p.name: p.symbol for p in KIND.params}
 
 
+NAN = float("nan")  # a symbol named in a definition, its value not needed
+
+
 def _positive(values: dict, key: str, what: str) -> float:
     v = values[key]
     if v <= 0:
@@ -124,9 +128,8 @@ def _ellipticity(values: dict, work: Work) -> float:
             raise InputError(f"polar_moment_factor C / (M R^2) lies between 0 and 2/3 (a hollow "
                              f"shell; 0.4 for a uniform sphere), got {num(k)}",
                              key="given.polar_moment_factor")
-        H = work.step("H", "J2 / (C / (M R^2))",
-                      f"{num(J2)} / {num(k)}", J2 / k, "",
-                      note="J2 = (C - A) / (M R^2)")
+        factor = Let(Sym("polar_moment_factor", k), Sym("C", NAN) / (Sym("M", NAN) * Sym("R", NAN) ** 2))
+        H = work.step("H", Sym("J2", J2) / factor, note="J2 = (C - A) / (M R^2)")
     else:
         raise InputError("give the planet's dynamical_ellipticity H = (C - A) / C (or J2 and "
                          "polar_moment_factor), or preset: earth",
@@ -148,7 +151,7 @@ def _spin(values: dict, work: Work) -> float:
         raise InputError("give the planet's rotation_period (sidereal) or rotation_rate",
                          key="given.rotation_period")
     P = _positive(values, "rotation_period", "rotation_period")
-    return work.step("omega", "2 pi / P_rot", f"2 pi / {qty(P, 's')}", 2 * math.pi / P, "rad/s")
+    return work.step("omega", 2 * PI / Sym("P_rot", P, "s"), unit="rad/s")
 
 
 def _tidal(values: dict, b: str, work: Work) -> float | None:
@@ -182,16 +185,14 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
     if orbit_key.endswith("_period"):
         q = a_value if planet is None else a_value / planet
         if planet is not None:
-            work.step(f"q_{b}", f"M_{b} / M", f"{qty(a_value, 'kg')} / {qty(planet, 'kg')}", q, "")
-        return work.step(f"G M_{b} / a_{b}^3", f"(2 pi / P_{b})^2 q_{b} / (1 + q_{b})",
-                         f"(2 pi / {qty(o_value, 's')})^2 ({num(q)}) / (1 + {num(q)})",
-                         tidal_from_period(o_value, q), "1/s^2", ref="Kepler III")
-    gm = G * a_value if planet is None else G * planet * a_value
-    mass_text = qty(a_value, "kg") if planet is None else f"{num(a_value)} ({qty(planet, 'kg')})"
-    return work.step(f"G M_{b} / a_{b}^3", f"G M_{b} / a_{b}^3" if planet is None else
-                     f"G q_{b} M / a_{b}^3", f"G {mass_text} / ({qty(o_value, 'm')})^3",
-                     tidal_from_distance(gm, o_value), "1/s^2",
-                     note=f"G = {G:g} m^3/(kg s^2)")
+            q = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
+        q_ = Sym(f"q_{b}", q)
+        return work.step(f"G M_{b} / a_{b}^3", (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
+                         / (1 + q_), unit="1/s^2", ref="Kepler III")
+    mass = Sym(f"M_{b}", a_value, "kg") if planet is None else \
+        Sym(f"q_{b}", a_value) * Sym("M", planet, "kg")
+    return work.step(f"G M_{b} / a_{b}^3", Const("G", G) * mass / Sym(f"a_{b}", o_value, "m") ** 3,
+                     unit="1/s^2", note=f"G = {G:g} m^3/(kg s^2)")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -243,20 +244,19 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if not -math.pi / 2 < i < math.pi / 2:
             raise InputError(f"inclination must lie within +-90 deg of the reference plane, got "
                              f"{num(math.degrees(i))} deg", key=f"given.{b}_inclination")
-        fe = work.step(f"(1 - e_{b}^2)^(-3/2)", "", f"(1 - {num(e)}^2)^(-3/2)",
-                       eccentricity_factor(e), "")
-        fi = node_factor(i)
+        three_halves = Num(1.5, "3/2")
+        fe_tree = (1 - Sym(f"e_{b}", e) ** 2) ** Num(-1.5, "-3/2")
+        fe = work.step(f"(1 - e_{b}^2)^(-3/2)", fe_tree, state=False)
+        fi_tree = 1 - three_halves * sin(Sym(f"i_{b}", i, "deg")) ** 2
+        fi = work.step(f"1 - (3/2) sin^2(i_{b})", fi_tree, state=False,
+                       note="node-averaged") if i else 1.0
+        tidal_ = Let(Sym(f"GM_a3_{b}", tidal, "1/s^2"),
+                     Const("G", G) * Sym(f"M_{b}", NAN) / Sym(f"a_{b}", NAN) ** 3)
+        tree = three_halves * tidal_ * Let(Sym(f"f_e_{b}", fe), fe_tree) * Sym("H", H) * cos(
+            Sym("epsilon", eps, "deg"))
         if i:
-            work.step(f"1 - (3/2) sin^2(i_{b})", "",
-                      f"1 - 1.5 sin^2({num(math.degrees(i))} deg)", fi,
-                      "", note="node-averaged")
-        rate = precession_rate(tidal, e, H, eps, omega, i)
-        tail = f" (1 - (3/2) sin^2(i_{b}))" if i else ""
-        work.step(f"Omega_{b}", f"(3/2) (G M_{b} / a_{b}^3) (1 - e_{b}^2)^(-3/2) H cos(epsilon)"
-                  f"{tail} / omega",
-                  f"1.5 ({num(tidal)} 1/s^2) ({num(fe)}) ({num(H)}) ({num(math.cos(eps))})"
-                  + (f" ({num(fi)})" if i else "") + f" / {qty(omega, 'rad/s')}",
-                  rate, "rad/s")
+            tree = tree * Let(Sym(f"f_i_{b}", fi), fi_tree)
+        rate = work.step(f"Omega_{b}", tree / Sym("omega", omega, "rad/s"), unit="rad/s")
         work.step(f"Omega_{b}", value=arcsec_per_year(rate), unit="arcsec/yr",
                   note="(1 yr = 365.25 d)")
         if fi < 0:
@@ -271,9 +271,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     total = sum(shares.values())
     work.section("Lunisolar precession" if len(shares) > 1 else "Precession")
     if len(shares) > 1 and total != 0:
-        work.step("Omega_p", " + ".join(f"Omega_{b}" for b in shares),
-                  " + ".join(qty(arcsec_per_year(r), "arcsec/yr") for r in shares.values()),
-                  arcsec_per_year(total), "arcsec/yr")
+        parts = [Sym(f"Omega_{b}", r, "arcsec/yr") for b, r in shares.items()]
+        work.step("Omega_p", reduce(operator.add, parts[1:], parts[0]), unit="arcsec/yr")
         for b, r in shares.items():
             work.text(f"{BODY_NAMES[b]}'s share: {num(100 * r / total)} %")
     work.step("Omega_p", value=total, unit="rad/s")
@@ -289,11 +288,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if eps == 0:
         work.warn("obliquity 0: the axis lies along the orbit normal; the torque vanishes and "
                   "the rate is that of a cone of zero width")
-    period = work.step("T_p", "2 pi / Omega_p", f"2 pi / {qty(total, 'rad/s')}",
-                       2 * math.pi / abs(total), "s")
+    period = work.step("T_p", 2 * PI / Sym("Omega_p", abs(total), "rad/s"), unit="s")
     work.step("T_p", value=period / JULIAN_YEAR, unit="yr")
-    per_degree = work.step("t_1deg", "T_p / 360", f"{num(period / JULIAN_YEAR)} yr / 360",
-                           period / JULIAN_YEAR / 360, "yr/deg")
+    # 360 (deg) is the full turn, 2 pi rad: the value is in s/rad, shown in yr/deg
+    per_degree = work.step("t_1deg", Sym("T_p", period, "yr") / Const("360", 2 * math.pi),
+                           unit="yr/deg")
     work.text("The chapter's 26,000 years; its '80 years' for 1 deg is a misprint: 26,000 / 360 "
               f"is about 72 (the errata), here {num(per_degree)} years.")
     work.answer("precession_period", "T_p", [period], "time")

@@ -17,6 +17,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import gyro_drift as gd
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Let, Sym, sqrt
 from ..core.work import Work, num, qty
 
 DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
@@ -46,8 +47,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if t < 0:
             raise InputError(f"duration must not be negative, got {qty(t, 's')}",
                              key="given.duration")
-        angle = work.step("drift angle", "(M / H) t", f"{qty(rate, 'rad/s')} ({qty(t, 's')})",
-                          rate * t, "rad", note=f"= {num(math.degrees(rate * t))} deg")
+        drift = Let(Sym("Omega_d", rate, "rad/s"), Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"))
+        angle = work.step("drift angle", drift * Sym("t", t, "s"), unit="rad",
+                          note=f"= {num(math.degrees(rate * t))} deg")
         work.answer("drift_angle", "(M / H) t", [angle], "angle")
     elif "drift_angle" in find:
         raise InputError("drift_angle needs the time the moment acts: give duration",
@@ -76,8 +78,7 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
     if ways == ["moment"]:
         M = given["moment"]
         work.section("Drift: steady precession of the spin axis about y (Eq. 11.29)")
-        rate = work.step("Omega_d", "M / H", f"{qty(M, 'N m')} / {_h(H)}",
-                         gd.drift_rate(M, H), "rad/s",
+        rate = work.step("Omega_d", Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"), unit="rad/s",
                          note=f"= {num(gd.drift_rate(M, H) / DEG_PER_HOUR)} deg/h")
         return M, rate
     if ways == ["drift_period"]:
@@ -86,16 +87,15 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
             raise InputError(f"drift_period must be positive, got {qty(T, 's')}",
                              key="given.drift_period")
         work.section("Drift rate from the period of one full turn")
-        rate = work.step("Omega_d", "2 pi / T_d", f"2 pi / {qty(T, 's')}", 2 * math.pi / T,
-                         "rad/s", note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
+        rate = work.step("Omega_d", 2 * PI / Sym("T_d", T, "s"), unit="rad/s",
+                         note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
     else:
         rate = given["drift_rate"]
         if rate < 0:
             raise InputError("a drift budget is a magnitude: give it positive",
                              key="given.drift_rate")
     work.section("Largest disturbing moment for the drift budget: M = H Omega_d")
-    M = work.step("M", "H Omega_d", f"{_h(abs(H))} ({qty(rate, 'rad/s')})",
-                  gd.moment_for_drift(rate, abs(H)), "N*m")
+    M = work.step("M", Sym("H", abs(H), "kg m^2/s") * Sym("Omega_d", rate, "rad/s"), unit="N*m")
     work.text("any larger moment about x makes the spin axis drift faster than the budget")
     return M, math.copysign(rate, H) if rate else 0.0
 
@@ -143,18 +143,18 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
         source = "the rotor alone (gimbals' inertia neglected)"
     work.section("Nutation, the moment switched on with the gyro at rest")
     work.text(f"transverse inertias: {source}")
-    wn = work.step("w_n", "H / sqrt(I_x I_y)", f"{_h(abs(H))} / sqrt({qty(Ix, 'kg m^2')} "
-                   f"{qty(Iy, 'kg m^2')})", gd.nutation_frequency(abs(H), Ix, Iy), "rad/s",
+    H_, I_x, I_y = Sym("H", abs(H), "kg m^2/s"), Sym("I_x", Ix, "kg m^2"), Sym("I_y", Iy, "kg m^2")
+    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s",
                    note=f"= {num(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi))} Hz")
-    period = work.step("T_n", "2 pi / w_n", f"2 pi / {qty(wn, 'rad/s')}", 2 * math.pi / wn, "s")
+    period = work.step("T_n", 2 * PI / Sym("w_n", wn, "rad/s"), unit="s")
     work.text("solution from rest: alpha(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
               "beta(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
-    ax, ay = gd.nutation_amplitudes(M, H, Ix, Iy)
-    work.step("A_x", "M I_y / H^2", f"{qty(M, 'N m')} ({qty(Iy, 'kg m^2')}) / ({_h(H)})^2",
-              ax, "rad", note="about x, the moment's axis (M I / H^2 for equal inertias I)")
-    work.step("A_y", "M sqrt(I_x I_y) / H^2", value=ay, unit="rad",
-              note="about y, the drift axis: the ripple on the drift")
-    work.step("alpha_max", "2 M I_y / H^2", value=2 * ax, unit="rad",
+    M_, H_ = Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")
+    ax = work.step("A_x", M_ * I_y / H_ ** 2, unit="rad",
+                   note="about x, the moment's axis (M I / H^2 for equal inertias I)")
+    ay = work.step("A_y", M_ * sqrt(I_x * I_y) / H_ ** 2, unit="rad", substitute=False,
+                   note="about y, the drift axis: the ripple on the drift")
+    work.step("alpha_max", 2 * M_ * I_y / H_ ** 2, unit="rad", substitute=False,
               note="largest deflection about x, reached every half period")
     quarter = period / 4
     residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)

@@ -21,6 +21,7 @@ from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Let, Sym, cos, ellipk, sin, sqrt
 from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
 from ..physics.gyrocompass import (directive_stiffness, north_seeking_moment, period,
@@ -71,13 +72,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "H . U = I_v (Omega sin(lambda) - alphadot)")
     work.text("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  (terms of order I_v Omega^2 "
               "dropped): a pendulum about north")
-    D = work.step("D", "H Omega_E cos(lambda)", f"{qty(H_abs, 'kg m^2/s')} ({qty(Omega, 'rad/s')}) "
-                  f"cos({num(math.degrees(lat))} deg)",
-                  directive_stiffness(H_abs, Omega, lat), "N m/rad",
+    H_, Omega_E = Sym("H", H_abs, "kg m^2/s"), Sym("Omega_E", Omega, "rad/s")
+    lam, alpha_ = Sym("lambda", lat, "deg"), Sym("alpha", alpha, "deg")
+    stiffness = H_ * Omega_E * cos(lam)  # directive_stiffness, Eq. in physics/gyrocompass.py
+    D = work.step("D", stiffness, unit="N m/rad",
                   note="north-seeking moment per radian of deviation")
-    M = work.step("M", "H Omega_E cos(lambda) sin(alpha)", f"{qty(D, 'N m/rad')} "
-                  f"sin({num(math.degrees(alpha))} deg)",
-                  north_seeking_moment(H_abs, Omega, lat, alpha), "N*m")
+    D_ = Sym("D", D, "N m/rad")
+    M = work.step("M", Let(D_, stiffness) * sin(alpha_), unit="N*m")
     if alpha:
         work.text(f"the moment turns the axis {'west' if alpha > 0 else 'east'}, back toward "
                   "north")
@@ -91,9 +92,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     I_v = _vertical_inertia(given, work)
     if I_v is not None:
         work.section("Swing about north")
-        T = work.step("T", "2 pi sqrt(I_v / (H Omega_E cos(lambda)))",
-                      f"2 pi sqrt({qty(I_v, 'kg*m^2')} / {qty(D, 'N m/rad')})",
-                      period(I_v, H_abs, Omega, lat), "s", note="small swings")
+        I_v_ = Sym("I_v", I_v, "kg m^2")
+        T = work.step("T", 2 * PI * sqrt(I_v_ / Let(D_, stiffness)), unit="s",
+                      note="small swings")
         work.step("T", value=T / 60, unit="min")
         work.answer("period", "T", [T], "time")
         if abs(alpha) > math.pi * (1 - 1e-9):
@@ -104,10 +105,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                                  "equilibrium (spin vector south): a swing released there at rest "
                                  "never returns, its period is unbounded", key="given.deviation")
         elif alpha:
-            Ts = work.step("T(alpha)", "T (2 / pi) K(sin(alpha / 2))", value=swing_period(
-                I_v, H_abs, Omega, lat, alpha), unit="s", note="released at rest at alpha "
-                "(the pendulum's exact period; K is the complete elliptic integral of the first "
-                "kind)")
+            Ts = work.step("T(alpha)", Sym("T", T, "s") * (2 / PI) * ellipk(
+                sin(alpha_ / 2) ** 2), unit="s", substitute=False, note="released at rest at "
+                "alpha (the pendulum's exact period; K is the complete elliptic integral of the "
+                "first kind, of parameter m = sin^2(alpha / 2))")
             work.answer("swing_period", "T(alpha)", [Ts], "time")
         work.check(f"I_v (2 pi / T)^2 = {qty(I_v * (2 * math.pi / T) ** 2, 'N m/rad')} = "
                    f"H Omega_E cos(lambda) = {qty(D, 'N m/rad')}")

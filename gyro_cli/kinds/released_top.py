@@ -12,6 +12,7 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Expr, Let, Sym, acos, cos, sin, sqrt
 from ..core.work import Work, num, qty
 
 RPM = 2 * math.pi / 60
@@ -92,28 +93,33 @@ def _constants(top, start, nut, omega_z: float, work: Work) -> None:
               "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
               "precessing frame, which turns about the vertical at the precession rate phidot; "
               "thetadot: the rate of theta; the suffix 0 marks a value at t = 0")
-    work.step("omega_z", "psidot + phidot0 cos(theta0)", f"{qty(start.spin, 'rad/s')} + "
-              f"{qty(start.precession0, 'rad/s')} ({num(c0)})", omega_z, "rad/s", ref="Eq. 11.8")
-    work.step("P2", "J omega_z", f"{qty(top.J, 'kg*m^2')} ({qty(omega_z, 'rad/s')})", nut.P2,
-              "kg m^2/s", ref="Eq. 11.14")
-    work.step("P1", "I phidot0 sin^2(theta0) + P2 cos(theta0)", f"{qty(top.I, 'kg*m^2')} "
-              f"({qty(start.precession0, 'rad/s')}) ({num(s0)})^2 + "
-              f"({qty(nut.P2, 'kg m^2/s')}) ({num(c0)})", nut.P1, "kg m^2/s", ref="Eq. 11.14")
-    work.step("h", "[I (thetadot0^2 + phidot0^2 sin^2(theta0)) + J omega_z^2] / 2 + m g l "
-              "cos(theta0)", f"[{qty(top.I, 'kg*m^2')} (({qty(start.theta_rate0, 'rad/s')})^2 "
-              f"+ ({qty(start.precession0 * s0, 'rad/s')})^2) + {qty(top.J, 'kg*m^2')} "
-              f"({qty(omega_z, 'rad/s')})^2] / 2 + ({qty(top.mgl, 'N*m')}) ({num(c0)})",
-              nut.energy, "J", ref="Eq. 11.17")
-    work.step("a", "2 m g l / I", f"2 ({qty(top.mgl, 'N*m')}) / {qty(top.I, 'kg*m^2')}",
-              nut.a, "1/s^2", ref="Eq. 11.18")
-    work.step("alpha", "2 h / I - P2^2 / (I J)", f"2 ({qty(nut.energy, 'J')}) / "
-              f"{qty(top.I, 'kg*m^2')} - ({qty(nut.P2, 'kg m^2/s')})^2 / "
-              f"(({qty(top.I, 'kg*m^2')}) ({qty(top.J, 'kg*m^2')}))", nut.alpha, "1/s^2",
-              ref="Eq. 11.18")
-    work.step("beta", "P1 / I", f"{qty(nut.P1, 'kg m^2/s')} / {qty(top.I, 'kg*m^2')}",
-              nut.beta, "rad/s", ref="Eq. 11.18")
-    work.step("gamma", "P2 / I", f"{qty(nut.P2, 'kg m^2/s')} / {qty(top.I, 'kg*m^2')}",
-              nut.gamma, "rad/s", ref="Eq. 11.18")
+    t = _syms(top, start, nut, omega_z)
+    th0 = cos(t["theta0"])
+    work.step("omega_z", t["psidot"] + t["phidot0"] * th0, unit="rad/s", ref="Eq. 11.8")
+    work.step("P2", t["J"] * t["omega_z"], unit="kg m^2/s", ref="Eq. 11.14")
+    work.step("P1", t["I"] * t["phidot0"] * sin(t["theta0"]) ** 2 + t["P2"] * th0,
+              unit="kg m^2/s", ref="Eq. 11.14")
+    work.step("h", (t["I"] * (t["thetadot0"] ** 2 + t["phidot0"] ** 2 * sin(t["theta0"]) ** 2)
+                    + t["J"] * t["omega_z"] ** 2) / 2 + t["mgl"] * th0, unit="J", ref="Eq. 11.17")
+    work.step("a", 2 * t["mgl"] / t["I"], unit="1/s^2", ref="Eq. 11.18")
+    work.step("alpha", 2 * Sym("h", nut.energy, "J") / t["I"] - t["P2"] ** 2 / (t["I"] * t["J"]),
+              unit="1/s^2", ref="Eq. 11.18")
+    work.step("beta", Sym("P1", nut.P1, "kg m^2/s") / t["I"], unit="rad/s", ref="Eq. 11.18")
+    work.step("gamma", t["P2"] / t["I"], unit="rad/s", ref="Eq. 11.18")
+
+
+def _syms(top, start, nut, omega_z: float) -> dict[str, Expr]:
+    """The symbols of the worked answer, SI values (m g l is one product, N m)."""
+    nan = math.nan
+    mgl = Let(Sym("mgl", top.mgl, "N m"), Sym("m", nan) * Sym("g", nan) * Sym("l", nan))
+    return {"J": Sym("J", top.J, "kg m^2"), "I": Sym("I", top.I, "kg m^2"), "mgl": mgl,
+            "theta0": Sym("theta0", start.theta0, "deg"),
+            "psidot": Sym("psidot", start.spin, "rad/s"),
+            "phidot0": Sym("phidot0", start.precession0, "rad/s"),
+            "thetadot0": Sym("thetadot0", start.theta_rate0, "rad/s"),
+            "omega_z": Sym("omega_z", omega_z, "rad/s"), "P2": Sym("P2", nut.P2, "kg m^2/s"),
+            "a": Sym("a", nut.a, "1/s^2"), "gamma": Sym("gamma", nut.gamma, "rad/s"),
+            "beta": Sym("beta", nut.beta, "rad/s")}
 
 
 def _roots(top, start, nut, work: Work) -> None:
@@ -222,34 +228,28 @@ def _precession(nut, work: Work) -> None:
 
 
 def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
-    from ..physics.nutation import (fast_mean_precession, fast_nutation_amplitude,
-                            fast_nutation_period)
-
     work.section("Fast-top approximation (gamma^2 >> a)")
     ratio = nut.gamma ** 2 / nut.a
     work.step("gamma^2 / a", value=ratio, note="(the approximation needs this >> 1)")
     work.text("u3 ~ gamma^2/a, so sqrt(a (u3 - u1)) ~ gamma: nutation at J omega_z / I; the "
               "slow root of Eq. 11.20 gives the mean precession a / (2 gamma) = m g l / "
               "(J omega_z)")
-    T = fast_nutation_period(top, omega_z)
-    work.step("T_fast", "2 pi I / (J omega_z)", f"2 pi {qty(top.I, 'kg*m^2')} / "
-              f"(({qty(top.J, 'kg*m^2')}) ({qty(omega_z, 'rad/s')}))", T, "s",
+    t = _syms(top, start, nut, omega_z)
+    Jw = t["J"] * t["omega_z"]
+    T = (2 * PI * t["I"] / Jw).value  # fast_nutation_period: a test holds the two together
+    work.step("T_fast", 2 * PI * t["I"] / Jw, unit="s",
               note=f"exact {num(nut.nutation_period)} s, error {_rel(T, nut.nutation_period)}")
-    mean = fast_mean_precession(top, omega_z)
-    work.step("phidot_fast", "m g l / (J omega_z)", f"{qty(top.mgl, 'N*m')} / "
-              f"(({qty(top.J, 'kg*m^2')}) ({qty(omega_z, 'rad/s')}))", mean, "rad/s",
+    mean = (t["mgl"] / Jw).value  # fast_mean_precession
+    work.step("phidot_fast", t["mgl"] / Jw, unit="rad/s",
               note=f"exact {num(nut.mean_precession)} rad/s, error "
                    f"{_rel(mean, nut.mean_precession)}")
     if released:
         work.text("Released from rest: a (1 - u^2) = gamma^2 (u2 - u) at u1 (Eq. 11.23); for "
                   "gamma^2 >> a, u2 - u1 ~ a sin^2(theta0) / gamma^2 and dtheta ~ du / "
                   "sin(theta0):")
-        amp = fast_nutation_amplitude(top, omega_z, start.theta0)
-        exact = nut.theta_max - nut.theta_min
-        work.step("dtheta_fast", "2 I m g l sin(theta0) / (J omega_z)^2",
-                  f"2 ({qty(top.I, 'kg*m^2')}) ({qty(top.mgl, 'N*m')}) "
-                  f"({num(math.sin(start.theta0))}) / (({qty(top.J, 'kg*m^2')}) "
-                  f"({qty(omega_z, 'rad/s')}))^2", amp / DEG, "deg",
+        tree = 2 * t["I"] * t["mgl"] * sin(t["theta0"]) / Jw ** 2  # fast_nutation_amplitude
+        amp, exact = tree.value, nut.theta_max - nut.theta_min
+        work.step("dtheta_fast", tree, unit="deg",
                   note=f"exact theta_max - theta_min = {_deg(exact)}, error {_rel(amp, exact)}")
 
 
@@ -260,13 +260,11 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
     work.text("u = " + ("1" if upright else "-1") + " is a double root of f(u); phi is undefined "
               "on the vertical (phidot and psidot only add up to omega_z); theta_max = "
               "theta_min = theta0: the axis stays there")
-    lhs = (top.J * omega_z) ** 2
+    t = _syms(top, start, nut, omega_z)
     if upright:
-        rhs = 4 * top.I * top.mgl
-        work.step("J^2 omega_z^2", f"({qty(top.J, 'kg*m^2')} {qty(omega_z, 'rad/s')})^2", value=lhs,
-                  unit="kg^2 m^4/s^2")
-        work.step("4 I m g l", f"4 ({qty(top.I, 'kg*m^2')}) ({qty(top.mgl, 'N*m')})",
-                  value=rhs, unit="kg^2 m^4/s^2")
+        work.step("J^2 omega_z^2", (t["J"] * t["omega_z"]) ** 2, unit="kg^2 m^4/s^2",
+                  state=False)
+        work.step("4 I m g l", 4 * t["I"] * t["mgl"], unit="kg^2 m^4/s^2", state=False)
         if nut.stable:
             work.text("J^2 omega_z^2 > 4 I m g l (Eq. 11.21 with theta0 = 0, i.e. gamma^2 > 2 a): "
                       "stable; u3 = gamma^2/a - 1 > 1")
@@ -281,11 +279,10 @@ def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work)
     else:
         work.text("hanging: always stable (gravity restores the axis)")
     if nut.stable:
-        beat = "gamma^2 - 2 a" if upright else "gamma^2 + 2 a"
-        work.step("T", f"2 pi / sqrt({beat})", f"2 pi / sqrt(({qty(nut.gamma, 'rad/s')})^2 "
-                  f"{'-' if upright else '+'} 2 ({qty(nut.a, '1/s^2')}))", nut.nutation_period,
-                  "s", note="nutation period of a slightly disturbed sleeping top "
-                            "(2 pi / sqrt(a (u3 - u1)))")
+        beat = t["gamma"] ** 2 - 2 * t["a"] if upright else t["gamma"] ** 2 + 2 * t["a"]
+        work.step("T", 2 * PI / sqrt(beat), unit="s",
+                  note="nutation period of a slightly disturbed sleeping top "
+                       "(2 pi / sqrt(a (u3 - u1)))")
     undefined = {"mean_precession", "max_precession", "min_precession"} & find
     if undefined:
         raise InputError(f"{sorted(undefined)[0]} is undefined for a sleeping top: the axis "
@@ -323,9 +320,8 @@ def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) ->
                 raise InputError(f"at {where} the axis is on the vertical, where phidot and "
                                  "psidot are undefined (only omega_z is)",
                                  key="find.spin_at_limits")
-            spins.append(work.step(f"psidot at {where}", "omega_z - phidot u",
-                                   f"{qty(omega_z, 'rad/s')} - ({qty(rate, 'rad/s')}) "
-                                   f"({num(u)})", omega_z - rate * u, "rad/s"))
+            spins.append(work.step(f"psidot at {where}", Sym("omega_z", omega_z, "rad/s")
+                                   - Sym("phidot", rate, "rad/s") * Sym("u", u), unit="rad/s"))
         work.answer("spin_at_limits", "psidot", spins, "rate", ["at theta_max", "at theta_min"])
     if "reversal_theta" in find:
         u_star = nut.beta / nut.gamma if nut.gamma else math.inf
@@ -336,11 +332,12 @@ def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) ->
                              "nutation limits (it changes sign only in loops, and touches 0 at "
                              "the cusps)", key="find.reversal_theta")
         u_star = min(max(u_star, -1.0), 1.0)
-        theta = work.step("theta_rev", "acos(beta / gamma)", f"acos({qty(nut.beta, 'rad/s')} / "
-                          f"{qty(nut.gamma, 'rad/s')})", math.acos(u_star) / DEG, "deg",
-                          note="phidot = 0 there" + (" (a cusp: phidot touches 0 and keeps its "
+        ratio = Sym("beta", nut.beta, "rad/s") / Sym("gamma", nut.gamma, "rad/s")
+        if abs(ratio.value) > 1:  # beta / gamma beyond +-1 by rounding, at a pole
+            ratio = Let(Sym("u*", u_star), ratio)
+        theta = work.step("theta_rev", acos(ratio), unit="deg", note="phidot = 0 there" + (" (a cusp: phidot touches 0 and keeps its "
                                                       "sign)" if nut.motion == "cusps" else ""))
-        work.answer("reversal_theta", "theta_rev", [theta * DEG], "angle")
+        work.answer("reversal_theta", "theta_rev", [theta * DEG], "angle")  # theta in deg
 
 
 def _answers(nut, work: Work) -> None:

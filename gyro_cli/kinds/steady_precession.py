@@ -22,10 +22,32 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
+from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, sin as sin_, sqrt
 from ..core.work import Work, num, qty
 from ..physics import steady
 
 RPM = 2 * math.pi / 60
+NAN = float("nan")  # a symbol named in a definition, its value not needed
+
+
+def _driver_tree(D: float, driver: str) -> Expr:
+    """D, the moment per unit sin(theta): printed m g l for gravity (its value in
+    substitutions), D for an applied moment."""
+    d = Sym("D", D, "N m")
+    return Let(d, Sym("m", NAN) * Sym("g", NAN) * Sym("l", NAN)) if driver == "m g l" else d
+
+
+def _rate(name: str, value: float) -> Sym:
+    return Sym(name, value, "rad/s")
+
+
+def _abs_rate(value: float) -> Expr:
+    """|phidot|, shown with its magnitude in substitutions."""
+    return Let(Sym("abs_phidot", abs(value), "rad/s"), absolute(Sym("phidot", NAN)))
+
+
+def _theta(theta: float) -> Sym:
+    return Sym("theta", theta, "deg")
 FASTEST_REAL_ROTOR = 1e5 * RPM  # beyond this no real top or gyroscope spins
 
 
@@ -183,18 +205,18 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
               "the spin angular momentum at phidot, so phidot = m g l / (J omega) whatever "
               "theta is, once the I phidot cos(theta) term of Eq. 11.13 is dropped (exact at "
               "theta = 90 deg, where cos(theta) = 0)")
-    D = work.step("D", "m g l", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
-                  f"({qty(body.l, 'm')})", body.mgl, "N*m", ref="Eq. 11.11, per unit sin(theta)")
+    D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
+                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11, per unit sin(theta)")
+    J_ = Sym("J", body.J, "kg m^2")
     rate = rates[0]
     if rate == "precession":
         precession = given["precession"]
         if precession == 0:
             raise InputError("a precession of 0 needs no spin: give a non-zero precession",
                              key="given.precession")
-        omega = work.step("omega_approx", "m g l / (J phidot)", f"{qty(D, 'N*m')} / "
-                          f"({qty(body.J, 'kg*m^2')} {qty(precession, 'rad/s')})",
-                          D / (body.J * precession), "rad/s",
-                          note="the spin the approximation needs")
+        omega = work.step("omega_approx", _driver_tree(D, "m g l") / (
+            J_ * _rate("phidot", precession)), unit="rad/s",
+            note="the spin the approximation needs")
         work.answer("spin", "psidot", [omega], "rate", ["approximation"])
         work.answer("axial_rate", "omega_z", [omega], "rate", ["approximation"])
         work.answer("precession", "phidot", [precession], "rate")
@@ -204,17 +226,14 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
         if omega == 0:
             raise InputError(f"the approximation m g l / (J {symbol}) needs a non-zero {rate}",
                              key=f"given.{rate}")
-        precession = work.step("phidot_approx", f"m g l / (J {symbol})",
-                               f"{qty(D, 'N*m')} / ({qty(body.J, 'kg*m^2')} "
-                               f"{qty(omega, 'rad/s')})",
-                               steady.precession_approx(D, body.J, omega), "rad/s")
+        precession = work.step("phidot_approx", _driver_tree(D, "m g l") / (
+            J_ * _rate(symbol, omega)), unit="rad/s")  # steady.precession_approx
         for name, symbol_ in (("precession_approx", "phidot_approx"), ("precession", "phidot")):
             work.answer(name, symbol_, [precession], "rate", ["approximation"])
         work.answer(rate, symbol, [omega], "rate")
     if "precession_period" in find:
         work.answer("precession_period", "T", [work.step(
-            "T", "2 pi / |phidot|", f"2 pi / {qty(abs(precession), 'rad/s')}",
-            steady.precession_period(precession), "s")], "time", ["approximation"])
+            "T", 2 * PI / _abs_rate(precession), unit="s")], "time", ["approximation"])
     missing = sorted(name for name in find if name not in work.answers)
     if missing:
         raise InputError(f"{missing[0]} needs the angle theta of the axis from the upward "
@@ -266,16 +285,15 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
             raise InputError("give an applied moment or gravity (cg_distance), not both: the "
                              "applied moment replaces gravity's", key="given.moment")
         M = given["moment"]
-        D = work.step("D", "M / sin(theta)", f"{qty(M, 'N*m')} / sin({num(math.degrees(theta))}"
-                      " deg)", M / math.sin(theta), "N*m")
+        D = work.step("D", Sym("M", M, "N m") / sin_(_theta(theta)), unit="N*m")
         return D, "D"
     if body.l == 0:
         work.text("l = 0 and no applied moment: a torque-free body, D = 0, where D is the "
                   "moment per unit sin(theta)")
         return 0.0, "D"
-    work.step("M", "m g l sin(theta)", f"{qty(body.mass_for_rates, 'kg')} ({qty(body.g, 'm/s^2')}) "
-              f"({qty(body.l, 'm')}) sin({num(math.degrees(theta))} deg)",
-              body.mgl * math.sin(theta), "N*m", ref="Eq. 11.11, gravity")
+    work.step("M", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
+              * Sym("l", body.l, "m") * sin_(_theta(theta)), unit="N*m",
+              ref="Eq. 11.11, gravity")
     return body.mgl, "m g l"
 
 
@@ -297,10 +315,9 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         axial = given["axial_rate"]
         work.text(f"phidot^2 cos(theta) - gamma phidot + a / 2 = 0, gamma = J omega_z / I, "
                   f"a = 2 {driver} / I    (Eq. 11.20)")
-        work.step("gamma", "J omega_z / I", f"{qty(J, 'kg*m^2')} ({qty(axial, 'rad/s')})"
-                          f" / {qty(I, 'kg*m^2')}", J * axial / I, "rad/s")
-        work.step("a", f"2 {driver} / I", f"2 ({qty(D, 'N*m')}) / {qty(I, 'kg*m^2')}",
-                  2 * D / I, "1/s^2")
+        J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+        work.step("gamma", J_ * _rate("omega_z", axial) / I_, unit="rad/s")
+        work.step("a", 2 * _driver_tree(D, driver) / I_, unit="1/s^2")
         roots = precession_from_axial_rate(I, J, theta, axial, D)
         least, formula = min_axial_rate(I, J, theta, D), f"2 sqrt(I {driver} cos(theta)) / J"
         symbol, spin = "omega_z", None
@@ -335,9 +352,8 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     if abs(cos) == 0 and len(roots) == 1 and D:
         omega = given["spin"] if rate == "spin" else given["axial_rate"]
         M = D * math.sin(theta)
-        roots = [work.step("phidot", "M / (J psidot)", f"{qty(M, 'N*m')} / ({qty(J, 'kg*m^2')}"
-                           f" {qty(omega, 'rad/s')})", M / (J * omega), "rad/s",
-                           ref="Eq. 11.13 at theta = 90 deg, exact")]
+        roots = [work.step("phidot", Sym("M", M, "N m") / (Sym("J", J, "kg m^2") * _rate(
+            "psidot", omega)), unit="rad/s", ref="Eq. 11.13 at theta = 90 deg, exact")]
     else:
         for root, label in zip(roots, labels):
             work.step(f"phidot ({label})" if label else "phidot", value=root, unit="rad/s")
@@ -346,9 +362,9 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         [given["axial_rate"] - p * cos for p in roots]
     if spin is None:  # the spin at each root, from the given axial rate (Eq. 11.8)
         for p, s, label in zip(roots, spins, labels or [""] * len(roots)):
-            work.step(f"psidot ({label})" if label else "psidot", "omega_z - phidot cos(theta)",
-                      f"{qty(given['axial_rate'], 'rad/s')} - {qty(p, 'rad/s')} ({num(cos)})",
-                      s, "rad/s", ref="Eq. 11.8")
+            work.step(f"psidot ({label})" if label else "psidot",
+                      _rate("omega_z", given["axial_rate"]) - _rate("phidot", p)
+                      * cos_(_theta(theta)), unit="rad/s", ref="Eq. 11.8")
     axials = [s + p * cos for s, p in zip(spins, roots)]
     work.answer("spin", "psidot", spins, "rate", labels)
     work.answer("axial_rate", "omega_z", axials, "rate", labels)
@@ -366,10 +382,9 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
         if abs(cos) < 1e-12:
             raise InputError("at theta = 90 deg omega_z = psidot whatever the precession: give "
                              "the precession itself", key="given.axial_rate")
-        precession = work.step("phidot", "(omega_z - psidot) / cos(theta)",
-                               f"({qty(given['axial_rate'], 'rad/s')} - "
-                               f"{qty(given['spin'], 'rad/s')}) / {num(cos)}",
-                               (given["axial_rate"] - given["spin"]) / cos, "rad/s")
+        precession = work.step("phidot", (_rate("omega_z", given["axial_rate"])
+                                          - _rate("psidot", given["spin"]))
+                               / cos_(_theta(theta)), unit="rad/s")
     if len(rates) == 2:
         spin = given["spin"] if "spin" in given else given["axial_rate"] - precession * cos
         _moment(I, J, theta, spin, precession, D, driver, work)
@@ -380,14 +395,11 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
                          "non-zero precession", key="given.precession")
     work.section("Spin for the given precession, Eq. 11.13 with thetaddot = 0 solved for psidot")
     work.text(f"J psidot phidot + (J - I) cos(theta) phidot^2 = {driver}")
-    spin = work.step("psidot", f"({driver} - (J - I) cos(theta) phidot^2) / (J phidot)",
-                     f"({qty(D, 'N*m')} - ({qty((J - I) * cos, 'kg*m^2')}) "
-                     f"({qty(precession, 'rad/s')})^2) / ({qty(J, 'kg*m^2')} "
-                     f"{qty(precession, 'rad/s')})",
-                     spin_for_precession(I, J, theta, precession, D), "rad/s")
-    axial = work.step("omega_z", "psidot + phidot cos(theta)",
-                      f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
-                      spin + precession * cos, "rad/s", ref="Eq. 11.8")
+    J_, I_, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
+    spin = work.step("psidot", (_driver_tree(D, driver) - (J_ - I_) * cos_(_theta(theta))
+                                * phidot ** 2) / (J_ * phidot), unit="rad/s")
+    axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(_theta(theta)),
+                      unit="rad/s", ref="Eq. 11.8")
     if spin < 0:
         work.text("psidot < 0: the body spins against the sense that precession alone would "
                   "need; the sign is the answer, not an error")
@@ -402,13 +414,12 @@ def _moment(I: float, J: float, theta: float, spin: float, precession: float, D:
             driver: str, work: Work) -> None:
     cos, sin = cos_theta(theta), math.sin(theta)
     work.section("Moment for the motion, Eq. 11.13 with thetaddot = 0 (dH/dt = M)")
-    axial = work.step("omega_z", "psidot + phidot cos(theta)", f"{qty(spin, 'rad/s')} + "
-                      f"{qty(precession, 'rad/s')} ({num(cos)})", spin + precession * cos,
-                      "rad/s", ref="Eq. 11.8")
-    M = work.step("M", "phidot sin(theta) (J omega_z - I phidot cos(theta))",
-                  f"{qty(precession, 'rad/s')} ({num(sin)}) ({qty(J, 'kg*m^2')} "
-                  f"{qty(axial, 'rad/s')} - {qty(I, 'kg*m^2')} {qty(precession, 'rad/s')} "
-                  f"({num(cos)}))", moment_required(I, J, theta, spin, precession), "N*m")
+    phidot, th = _rate("phidot", precession), _theta(theta)
+    axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th), unit="rad/s",
+                      ref="Eq. 11.8")
+    J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+    M = work.step("M", phidot * sin_(th) * (J_ * _rate("omega_z", axial) - I_ * phidot
+                                            * cos_(th)), unit="N*m")  # moment_required
     if D:
         work.text(f"of which {driver} sin(theta) = {qty(D * sin, 'N m')} is supplied; the rest, "
                   f"{qty(M - D * sin, 'N m')}, must be applied")
@@ -421,9 +432,12 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
     work.section("Least spin for steady precession (discriminant of Eq. 11.13; Eq. 11.21)")
     least = min_spin(I, J, theta, D)
     if least > 0:
-        work.step("psidot_min", f"2 sqrt((I - J) {driver} cos(theta)) / J", f"2 sqrt(({qty(I - J, 'kg*m^2')}"
-                  f") ({qty(D, 'N*m')}) ({num(cos_theta(theta))})) / {qty(J, 'kg*m^2')}", least,
-                  "rad/s")
+        J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+        # (I - J) and cos(theta) shown by value, as the chapter's Eq. 11.21 is worked
+        difference = Let(Sym("I_minus_J", I - J, "kg m^2"), I_ - J_)
+        cos_value = Let(Sym("cos_theta", cos_theta(theta)), cos_(_theta(theta)))
+        work.step("psidot_min", 2 * sqrt(difference * _driver_tree(D, driver) * cos_value) / J_,
+                  unit="rad/s")
     else:
         work.text(f"(I - J) {driver} cos(theta) <= 0: real roots for every spin, no least spin "
                   "(psidot_min = 0)")
@@ -488,9 +502,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
-    value = work.step("phidot_approx", f"{driver} / (J {symbol})",
-                      f"{qty(D, 'N*m')} / ({qty(J, 'kg*m^2')} {qty(omega, 'rad/s')})",
-                      steady.precession_approx(D, J, omega), "rad/s")
+    value = work.step("phidot_approx", _driver_tree(D, driver) / (
+        Sym("J", J, "kg m^2") * _rate(symbol, omega)), unit="rad/s")
     exact = work.answers.get("precession")
     if exact and exact.si_values and exact.labels != ["approximation"]:
         slow = min(exact.si_values, key=abs)
@@ -555,23 +568,19 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
             raise InputError("the precession rate is 0: it never completes a turn",
                              key="find.precession_period")
         for p, tag in zip(rates, tags):
-            work.step(f"T{tag}", "2 pi / |phidot|", f"2 pi / {qty(abs(p), 'rad/s')}",
-                      steady.precession_period(p), "s")
+            work.step(f"T{tag}", 2 * PI / _abs_rate(p), unit="s")
         work.answer("precession_period", "T", [steady.precession_period(p) for p in rates],
                     "time", answer.labels)
     if "cg_speed" in find:
         for p, tag in zip(rates, tags):
-            work.step(f"v_G{tag}", "l sin(theta) |phidot|", f"{qty(l, 'm')} "
-                      f"({num(math.sin(theta))}) {qty(abs(p), 'rad/s')}",
-                      steady.cg_speed(l, theta, p), "m/s")
+            work.step(f"v_G{tag}", Sym("l", l, "m") * sin_(_theta(theta)) * _abs_rate(p),
+                      unit="m/s")
         work.answer("cg_speed", "v_G", [steady.cg_speed(l, theta, p) for p in rates], "speed",
                     answer.labels)
     if "cg_acceleration" in find or "pivot_force" in find:
         for p, tag in zip(rates, tags):
-            work.step(f"a_G{tag}", "l sin(theta) phidot^2", f"{qty(l, 'm')} "
-                      f"({num(math.sin(theta))}) ({qty(p, 'rad/s')})^2",
-                      steady.cg_acceleration(l, theta, p), "m/s^2",
-                      note="toward the precession axis")
+            work.step(f"a_G{tag}", Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p)
+                      ** 2, unit="m/s^2", note="toward the precession axis")
         work.answer("cg_acceleration", "a_G", [steady.cg_acceleration(l, theta, p)
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
@@ -583,14 +592,16 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
         for i, (p, tag) in enumerate(zip(rates, tags)):
             up, toward, size = steady.pivot_force(m, g, l, theta, p)
             if i == 0:
-                work.step("F_vertical", "m g", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')})", up, "N",
+                work.step("F_vertical", Sym("m", m, "kg") * Sym("g", g, "m/s^2"), unit="N",
                           note="upward")
                 values.append(up)
                 names.append("vertical")
-            work.step(f"F_horizontal{tag}", "m l sin(theta) phidot^2", f"{qty(m, 'kg')} "
-                      f"({qty(steady.cg_acceleration(l, theta, p), 'm/s^2')})", toward, "N",
+            a_G = Let(Sym("a_G", steady.cg_acceleration(l, theta, p), "m/s^2"),
+                      Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p) ** 2)
+            work.step(f"F_horizontal{tag}", Sym("m", m, "kg") * a_G, unit="N",
                       note="toward the precession axis")
-            work.step(f"|F|{tag}", "sqrt(F_vertical^2 + F_horizontal^2)", value=size, unit="N")
+            size = work.step(f"|F|{tag}", sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
+                "F_horizontal", toward, "N") ** 2), unit="N", substitute=False)
             values += [toward, size]
             names += [f"horizontal{tag}", f"magnitude{tag}"]
         work.answer("pivot_force", "F", values, "force", names)

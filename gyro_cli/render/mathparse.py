@@ -21,14 +21,11 @@ what does not parse stays prose.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
+from .mathtree import GREEK, Token, _symbolic, dotted, tokens  # noqa: F401 (re-exported)
 from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
                        Quantity, Rel, Sum, Sym, Tuple)
 
-GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-         "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
-         "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega"}
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcsin", "arccos",
              "arctan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "det", "sqrt",
              "Re", "Im", "max", "min", "sign"}
@@ -41,38 +38,8 @@ RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "H_G", "C", "M", "F",
            "Omega_E", "U", "u", "s"}
 
-_TOKEN = re.compile(r"""
-    (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+(?:,[A-Za-z][A-Za-z0-9]*)?)?)
-  | (?P<op>>=|<=|->|>>|<<|\+-|-\+|!=|[-+*/=<>^(),;:.!?'|\[\]~])
-  | (?P<space>\s+)
-  | (?P<other>.)
-""", re.X | re.S)
-
-
 class ParseError(ValueError):
     pass
-
-
-@dataclass(frozen=True)
-class Token:
-    kind: str   # num, name, op, other, space
-    text: str
-    space: bool  # whitespace before it
-
-
-def tokens(text: str, keep_space: bool = False) -> list[Token]:
-    out: list[Token] = []
-    space = False
-    for m in _TOKEN.finditer(text):
-        if m.lastgroup == "space":
-            space = True
-            if keep_space:
-                out.append(Token("space", m.group(), False))
-            continue
-        out.append(Token(m.lastgroup, m.group(), space))
-        space = False
-    return out
 
 
 def parse(text: str, units: bool = True) -> Node:
@@ -447,16 +414,6 @@ SHORT_WORDS = {"a", "an", "as", "at", "be", "by", "if", "in", "is", "it", "no", 
                "so", "to", "we", "up", "iff", "and"}
 
 
-def dotted(name: str) -> tuple[str, str] | None:
-    """``phidot`` -> ("phi", "dot"), ``thetaddot`` -> ("theta", "ddot")."""
-    for suffix in ("ddot", "dot"):
-        base = name[: -len(suffix)]
-        if name.endswith(suffix) and base and (base in GREEK or len(base) == 1
-                                               or base in ("roll", "pitch", "yaw")):
-            return base, suffix
-    return None
-
-
 def is_symbol_name(name: str) -> bool:
     """A name that is a symbol, not an English word: ``theta0``, ``u1``, ``I_G``, ``phidot``,
     ``dH``, ``P2``, ``a0``."""
@@ -480,10 +437,6 @@ ANGLE_WORDS = {"yaw", "pitch", "roll", "heading", "bank"}
 UPPER_WORDS = {"US", "SI", "UK", "PDF", "CSV", "JSON", "YAML", "OK", "NB", "IERS", "IAU",
                "J2000"}
 WORDS_D = {"do", "dip", "die", "dies", "due", "down", "deg", "dot", "ddot"}
-
-
-def _symbolic(rest: str) -> bool:
-    return rest in GREEK or (len(rest) == 1 and rest.isalpha())
 
 
 def is_word(name: str) -> bool:

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import re
 
-from .mathparse import GREEK, _symbolic, dotted, tokens
+from .mathtree import GREEK, _symbolic, dotted, tokens
 from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sym, Text,
                        Tuple)
 

@@ -9,7 +9,58 @@ expected trees by hand).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
+
+# ---- names and tokens, shared by the parser and the printers ------------------------
+
+GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
+         "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
+         "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega"}
+_TOKEN = re.compile(r"""
+    (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
+  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+(?:,[A-Za-z][A-Za-z0-9]*)?)?)
+  | (?P<op>>=|<=|->|>>|<<|\+-|-\+|!=|[-+*/=<>^(),;:.!?'|\[\]~])
+  | (?P<space>\s+)
+  | (?P<other>.)
+""", re.X | re.S)
+
+
+@dataclass(frozen=True)
+class Token:
+    kind: str   # num, name, op, other, space
+    text: str
+    space: bool  # whitespace before it
+
+
+def tokens(text: str, keep_space: bool = False) -> list[Token]:
+    out: list[Token] = []
+    space = False
+    for m in _TOKEN.finditer(text):
+        if m.lastgroup == "space":
+            space = True
+            if keep_space:
+                out.append(Token("space", m.group(), False))
+            continue
+        out.append(Token(m.lastgroup, m.group(), space))
+        space = False
+    return out
+
+
+def dotted(name: str) -> tuple[str, str] | None:
+    """``phidot`` -> ("phi", "dot"), ``thetaddot`` -> ("theta", "ddot")."""
+    for suffix in ("ddot", "dot"):
+        base = name[: -len(suffix)]
+        if name.endswith(suffix) and base and (base in GREEK or len(base) == 1
+                                               or base in ("roll", "pitch", "yaw")):
+            return base, suffix
+    return None
+
+
+def _symbolic(rest: str) -> bool:
+    return rest in GREEK or (len(rest) == 1 and rest.isalpha())
+
+
 
 
 class Node:

@@ -7,7 +7,8 @@ from typing import Any
 
 from ..solving.solve import Result
 from ..core.errors import terminal_text
-from ..core.work import num
+from ..core.expr import UNIT_TEXT, python, python_name, symbols
+from ..core.work import Step, num
 
 WIDTH = 78
 
@@ -75,11 +76,34 @@ def as_dict(result: Result) -> dict[str, Any]:
             for name, a in result.answers.items()},
         "given": [{"key": g.key, "symbol": g.symbol, "text": g.text, "si_value": g.si_value,
                    "si_unit": g.si_unit} for g in solution.given],
-        "steps": [{"title": s.title, "lines": [step.as_text() for step in s.steps]}
+        "steps": [{"title": s.title, "lines": [step.as_text() for step in s.steps],
+                   "equations": [equation(step) for step in s.steps
+                                 if step.symbol and (step.formula or step.expr)]}
                   for s in solution.sections],
         "checks": [step.as_text() for step in solution.checks],
         "warnings": list(solution.warnings),
     } | ({"units": solution.system.lower()} if solution.system != "SI" else {})
+
+
+def equation(step: Step) -> dict[str, Any]:
+    """One equation step as data (docs/steps.md): its value in SI at full precision and,
+    for a step built from a tree, the formula as Python over its symbols' SI values."""
+    value, unit = step.si if step.si is not None else (step.value, step.unit)
+    out: dict[str, Any] = {"symbol": step.symbol, "value": value, "unit": UNIT_TEXT.get(unit, unit),
+                           "ref": step.ref, "formula": step.formula,
+                           "substitution": step.substitution}
+    if step.expr is None:  # a step still written as text
+        return out | {"formula_latex": None, "substitution_latex": None, "expr": None,
+                      "symbols": None}
+    from .exprnodes import latex
+
+    tree = step.shown
+    assert tree is not None
+    return out | {
+        "formula_latex": latex(tree) if step.formula else "",
+        "substitution_latex": latex(tree, values=True) if step.substitution else "",
+        "expr": python(step.expr),
+        "symbols": {python_name(name): sym.si for name, sym in symbols(step.expr).items()}}
 
 
 def as_json(result: Result) -> str:

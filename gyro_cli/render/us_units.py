@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from ..core.expr import Sym, map_syms, substitution
 from ..core.work import GivenLine, Section, Solution, Step, num
 from ..solving.solve import Reported, Result
 from .mathparse import spans, try_parse
@@ -95,9 +96,19 @@ def _has_si(node: Node) -> bool:
     return False
 
 
+def _us_symbol(sym: Sym) -> Sym:
+    value, unit = convert(sym.si, sym.unit)
+    return Sym(sym.name, value, unit)
+
+
 def _step(step: Step) -> Step:
     value, unit = (convert(step.value, step.unit) if step.value is not None
                    else (None, step.unit))
+    if step.expr is not None:  # the values inside the tree are converted, nothing parsed
+        view = map_syms(step.expr, _us_symbol)
+        return dataclasses.replace(step, substitution=substitution(view) if step.substitution
+                                   else "", value=value, unit=unit, text=_text(step.text),
+                                   view=view, si=step.si or (step.value, step.unit))
     return dataclasses.replace(step, substitution=_text(step.substitution), value=value,
                                unit=unit, text=_text(step.text))
 

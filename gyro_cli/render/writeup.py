@@ -21,6 +21,7 @@ import re
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
+from .exprnodes import formula_node, substitution_node
 from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
@@ -232,10 +233,17 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
 def _step_pieces(step) -> tuple[Node | None, list[Node]]:
     lhs = try_parse(step.symbol, units=False) or _tex(step.symbol)
     pieces: list[Node] = []
-    if step.formula:
-        pieces.append(try_parse(step.formula, units=False) or _tex(step.formula))
-    if step.substitution:
-        pieces.append(try_parse(step.substitution) or _tex(step.substitution))
+    tree = getattr(step, "shown", None)
+    if tree is not None:  # built from an expression tree: typeset from it, nothing parsed
+        if step.formula:
+            pieces.append(formula_node(tree))
+        if step.substitution:
+            pieces.append(substitution_node(tree))
+    else:
+        if step.formula:
+            pieces.append(try_parse(step.formula, units=False) or _tex(step.formula))
+        if step.substitution:
+            pieces.append(try_parse(step.substitution) or _tex(step.substitution))
     if step.value is not None:
         unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(step.unit,
                                                                               step.unit)

@@ -407,6 +407,12 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
         raise InputError("expected a mapping of answer names to values", key="expected")
     names = [a.name for a in kind.answers]
     for name in raw:
+        if name == "steps" and kind.answer("steps") is None:
+            steps = raw[name]
+            if not isinstance(steps, dict) or not steps:
+                raise InputError("expected a mapping of the worked answer's step symbols to "
+                                 "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
+            continue
         if kind.answer(str(name)) is None:
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from ..core import units
 from ..core.body import build_body
 from ..core.errors import InputError
+from ..core.expr import symbols
 from .problem import Problem, load, params_of
 from ..core.work import GivenLine, Solution, Work, num
 
@@ -140,7 +141,13 @@ def _all_finite(solution: Solution) -> None:
                 raise InputError(f"the step {where} is not a finite number for these data "
                                  "(overflow or a degenerate case); check the magnitudes and "
                                  "units", key="given")
-            for text in (step.formula, step.substitution, step.text):
+            if step.expr is not None:  # a tree: its symbols' values, no text to read
+                if not all(math.isfinite(sym.si) for sym in symbols(step.expr).values()):
+                    raise InputError(f"the step {where} overflows for these data; check "
+                                     "the magnitudes and units", key="given")
+            texts = (step.text,) if step.expr is not None else \
+                (step.formula, step.substitution, step.text)
+            for text in texts:
                 if text and _NOT_FINITE.search(text):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")

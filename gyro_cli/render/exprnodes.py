@@ -1,0 +1,114 @@
+"""A step's expression tree (`core.expr`) as the typesetting nodes of `mathtree`.
+
+The LaTeX and MathML printers (`mathprint.LatexPrinter`, `mathml.MathMLPrinter`)
+set `mathtree` nodes; this printer, one ``_print_<Class>`` method per node of
+`core.expr`, builds those nodes straight from the tree a kind wrote, so a
+formula and its substitution are never parsed from text. Brackets are placed by
+`core.expr.needs_brackets`, the rule the text printer follows, so every format
+brackets the same places (a negative value after a factor or a sign included).
+"""
+
+from __future__ import annotations
+
+from ..core import expr as E
+from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym
+
+
+class NodePrinter:
+    """``values``: the substitution (each symbol's value and unit), else the formula."""
+
+    def __init__(self, values: bool = False) -> None:
+        self.values = values
+
+    def doprint(self, node: E.Expr) -> Node:
+        return self._print(node)
+
+    def _print(self, node: E.Expr) -> Node:
+        for cls in type(node).__mro__:
+            method = getattr(self, f"_print_{cls.__name__}", None)
+            if method is not None:
+                return method(node)
+        raise TypeError(f"no printer for {type(node).__name__}")
+
+    def operand(self, parent: E.Expr, child: E.Expr, right: bool = False) -> Node:
+        node = self._print(child)
+        return Group("(", node) if E.needs_brackets(parent, child, right, self.values) else node
+
+    def _print_Sym(self, node: E.Sym) -> Node:
+        if not self.values:
+            return Sym(node.name)
+        text = E.quantity_text(node.si, node.unit)
+        number, _, unit = text.partition(" ")
+        negative = number.startswith("-")
+        shown: Node = Num(number.lstrip("-"))
+        if unit:
+            shown = Quantity(shown, unit)  # type: ignore[arg-type]
+        return Neg(shown) if negative else shown
+
+    def _print_Const(self, node: E.Const) -> Node:
+        return Sym(node.name)
+
+    def _print_Num(self, node: E.Num) -> Node:
+        return Neg(Num(node.text.lstrip("-"))) if node.si < 0 else Num(node.text)  # 3/2 as is
+
+    def _print_Let(self, node: E.Let) -> Node:
+        return self._print(node.sym if self.values else node.body)
+
+    def _print_Neg(self, node: E.Neg) -> Node:
+        inner = self.operand(node, node.arg)
+        if isinstance(inner, BinOp) and inner.op == " ":
+            # -(a b) is set -a b, as the text reads: the sign on the first factor
+            chain = []
+            while isinstance(inner, BinOp) and inner.op == " ":
+                chain.append(inner.right)
+                inner = inner.left
+            out: Node = Neg(inner)
+            for right in reversed(chain):
+                out = BinOp(" ", out, right)
+            return out
+        return Neg(inner)
+
+    def _print_Add(self, node: E.Add) -> Node:
+        return BinOp("+", self.operand(node, node.left), self.operand(node, node.right, True))
+
+    def _print_Sub(self, node: E.Sub) -> Node:
+        return BinOp("-", self.operand(node, node.left), self.operand(node, node.right, True))
+
+    def _print_Mul(self, node: E.Mul) -> Node:
+        parts = [self.operand(node, f, k > 0) for k, f in enumerate(E.factors(node, self.values))]
+        out = parts[0]
+        for part in parts[1:]:
+            out = BinOp(" ", out, part)
+        return out
+
+    def _print_Div(self, node: E.Div) -> Node:
+        return BinOp("/", self.operand(node, node.left), self.operand(node, node.right, True))
+
+    def _print_Pow(self, node: E.Pow) -> Node:
+        n = E.trig_power(node)
+        if n:  # sin^2(theta)
+            call = node.left
+            assert isinstance(call, E.Call)
+            return Call(call.name, tuple(self._print(a) for a in call.args), power=Num(n))
+        return Pow(self.operand(node, node.left), self.operand(node, node.right, True))
+
+    def _print_Call(self, node: E.Call) -> Node:
+        if node.name == "abs":
+            return Abs(self._print(node.args[0]))
+        return Call(E.SHOWN_NAMES.get(node.name, node.name),
+                    tuple(self._print(a) for a in node.args))
+
+
+def formula_node(expr: E.Expr) -> Node:
+    return NodePrinter(values=False).doprint(expr)
+
+
+def substitution_node(expr: E.Expr) -> Node:
+    return NodePrinter(values=True).doprint(expr)
+
+
+def latex(expr: E.Expr, values: bool = False) -> str:
+    """The formula (or its substitution) as LaTeX maths, fractions stacked."""
+    from .mathprint import LatexPrinter
+
+    return LatexPrinter(True).doprint(NodePrinter(values).doprint(expr))

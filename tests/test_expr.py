@@ -1,0 +1,166 @@
+"""The expression trees of core/expr.py: evaluation, the printers, the brackets."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from gyro_cli.core import expr as E
+from gyro_cli.core.expr import PI, Let, Sym, cos, ellipe, ellipk, sin, sqrt
+
+#: a negative number set right after a factor, a unit or a division sign, with no bracket:
+#: ``kg m^2 -179.7 rad/s``, ``/ -3`` (a folded subtraction is `` - 179.7``, spaced)
+JUXTAPOSED = re.compile(r"(?:[\w)^]\s+|[/^*]\s*)-\d")
+
+
+def top() -> dict[str, Sym]:
+    """11/3's data in SI: m = 3 oz / g, g = 32.2 ft/s^2, l = 1.5 in, J = m (0.84 in)^2."""
+    m = 0.1875 * 4.4482216152605 / 9.81456
+    return {"m": Sym("m", m, "kg"), "g": Sym("g", 9.81456, "m/s^2"),
+            "l": Sym("l", 1.5 * 0.0254, "m"), "J": Sym("J", m * (0.84 * 0.0254) ** 2, "kg m^2"),
+            "theta": Sym("theta", math.pi / 6, "deg"), "psidot": Sym("psidot", -179.7, "rad/s")}
+
+
+def test_a_tree_evaluates_itself_as_the_hand_calculation():
+    s = top()
+    moment = s["m"] * s["g"] * s["l"] * sin(s["theta"])
+    # by hand: 3 oz = 0.1875 lbf = 0.834 N; l = 0.0381 m; sin 30 deg = 1/2
+    assert moment.value == pytest.approx(0.1875 * 4.4482216152605 * 0.0381 * 0.5, rel=1e-12)
+    assert (2 * PI * sqrt(s["l"] / s["g"])).value == pytest.approx(
+        2 * 3.141592653589793 * (0.0381 / 9.81456) ** 0.5, rel=1e-12)
+
+
+def test_formula_and_substitution_are_printed_from_the_same_tree():
+    s = top()
+    e = s["m"] * s["g"] * s["l"] * sin(s["theta"])
+    assert E.formula(e) == "m g l sin(theta)"
+    assert E.substitution(e) == "0.08498 kg (9.815 m/s^2) (0.03810 m) sin(30.00 deg)"
+    assert E.python(e) == "m*g*l*sin(theta)"
+
+
+def test_a_negative_rate_in_a_product_is_bracketed():
+    """The slip of issue 21 (problems/top_rev_per_s.yaml): ``kg m^2 -179.7 rad/s`` read as
+    a subtraction."""
+    s = top()
+    e = s["m"] * s["g"] * s["l"] / (s["J"] * s["psidot"])
+    assert E.formula(e) == "m g l / (J psidot)"
+    assert E.substitution(e).endswith("/ (3.869e-05 kg m^2 (-179.7 rad/s))")
+    assert not JUXTAPOSED.search(E.substitution(e))
+
+
+def test_a_negative_value_after_a_sign_is_folded_into_it():
+    a, b = Sym("a", 2.0, "N m"), Sym("b", -0.5, "N m")
+    assert E.substitution(a + b) == "2.000 N m - 0.5000 N m"
+    assert E.substitution(a - b) == "2.000 N m + 0.5000 N m"
+    assert E.substitution(a - b * Sym("k", 3.0)) == "2.000 N m + 0.5000 N m (3.000)"
+    assert (a - b).value == 2.5 and (a + b).value == 1.5
+    assert E.substitution(-b) == "-(-0.5000 N m)"
+    assert E.substitution(a / b) == "2.000 N m / (-0.5000 N m)"
+    assert E.substitution(b ** 2) == "(-0.5000 N m)^2"
+
+
+def test_precedence_brackets():
+    a, b, c = Sym("a", 1.0), Sym("b", 2.0), Sym("c", 3.0)
+    assert E.formula((a + b) * c) == "(a + b) c"
+    assert E.formula(a - (b - c)) == "a - (b - c)"
+    assert E.formula(a - b - c) == "a - b - c"
+    assert E.formula((a / b) * c) == "(a / b) c"
+    assert E.formula(a / (b * c)) == "a / (b c)"
+    assert E.formula((a * b) ** 2) == "(a b)^2"
+    assert E.formula(a ** (b / c)) == "a^(b / c)"
+    assert E.formula(-(a + b)) == "-(a + b)"
+
+
+def test_a_known_quantity_shows_its_definition_in_the_formula_and_its_value_after():
+    """The gyrocompass's M = H Omega_E cos(lambda) sin(alpha) = D sin(alpha)."""
+    H, W, lat = Sym("H", 2.0, "kg m^2/s"), Sym("Omega_E", 7.292e-5, "rad/s"), Sym("lambda", 0.5, "deg")
+    D = Sym("D", (H * W * cos(lat)).value, "N m/rad")
+    e = Let(D, H * W * cos(lat)) * sin(Sym("alpha", 0.1, "deg"))
+    assert E.formula(e) == "H Omega_E cos(lambda) sin(alpha)"
+    assert E.substitution(e) == "0.0001280 N m/rad sin(5.730 deg)"
+    assert E.python(e) == "D*sin(alpha)"  # what the value is computed from
+    assert E.python(H * W * cos(lat)) == "H*Omega_E*cos(lambda_)"
+    names = {k: v.si for k, v in E.symbols(e).items()}
+    assert eval(E.python(e), {"__builtins__": {}}, E.python_names() | {
+        E.python_name(k): v for k, v in names.items()}) == pytest.approx(e.value, rel=1e-12)
+
+
+def test_the_complete_elliptic_integrals_against_tabulated_values():
+    """K(1/2) = 1.8540746773013719, E(1/2) = 1.3506438810476755 (Abramowitz and Stegun,
+    table 17.1, m = 0.5); K(0) = E(0) = pi/2, E(1) = 1."""
+    assert ellipk(0.5).value == pytest.approx(1.8540746773013719, rel=1e-14)
+    assert ellipe(0.5).value == pytest.approx(1.3506438810476755, rel=1e-14)
+    assert ellipk(0.0).value == pytest.approx(math.pi / 2, rel=1e-15)
+    assert ellipe(0.0).value == pytest.approx(math.pi / 2, rel=1e-15)
+    assert ellipe(1.0).value == pytest.approx(1.0, rel=1e-15)
+
+
+def test_python_names_are_identifiers():
+    assert E.python_name("lambda") == "lambda_"
+    assert E.python_name("F_A,weight") == "F_A_weight"
+    assert E.python_name("omega_z") == "omega_z"
+
+
+# ---- any tree: expr gives the value, no negative is juxtaposed -----------------
+
+_names = iter(range(10 ** 9))
+_units = st.sampled_from(["", "kg", "m/s", "kg m^2", "rad/s", "N m", "deg"])
+_leaf = st.one_of(
+    st.builds(lambda v, u: Sym(f"x{next(_names)}", v, u),
+              st.floats(-1e3, 1e3, allow_nan=False).filter(lambda v: abs(v) > 1e-3), _units),
+    st.builds(E.Num, st.sampled_from([2.0, 4.0, 0.5])),
+    st.just(PI))
+
+
+def _extend(children):
+    return st.one_of(
+        st.builds(lambda a, b: a + b, children, children),
+        st.builds(lambda a, b: a - b, children, children),
+        st.builds(lambda a, b: a * b, children, children),
+        st.builds(lambda a, b: a / b, children, children),
+        st.builds(lambda a: -a, children),
+        st.builds(lambda a: a ** 2, children),
+        st.builds(lambda a: sin(a), children),
+        st.builds(lambda a: sqrt(E.absolute(a)), children))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.recursive(_leaf, _extend, max_leaves=8))
+def test_any_tree_expr_evaluates_to_its_value_and_brackets_negatives(tree):
+    try:
+        value = tree.value
+    except (ZeroDivisionError, ValueError, OverflowError):
+        return
+    names = {E.python_name(k): s.si for k, s in E.symbols(tree).items()}
+    again = eval(E.python(tree), {"__builtins__": {}}, E.python_names() | names)
+    assert again == pytest.approx(value, rel=1e-9, abs=1e-300)
+    assert not JUXTAPOSED.search(E.substitution(tree)), E.substitution(tree)
+    assert not JUXTAPOSED.search(E.formula(tree)), E.formula(tree)
+
+
+def test_a_step_that_cannot_be_evaluated_is_bad_input_not_a_crash():
+    from gyro_cli.core.errors import InputError
+    from gyro_cli.core.work import Work
+
+    work = Work()
+    with pytest.raises(InputError, match="the step w = a / b cannot be evaluated"):
+        work.step("w", Sym("a", 1.0, "m") / Sym("b", 0.0, "s"), unit="m/s")
+    with pytest.raises(InputError, match="cannot be evaluated"):
+        work.step("p", Sym("a", 1e200) ** E.Num(3))
+    with pytest.raises(TypeError):
+        work.step("w", Sym("a", 1.0), "a substitution", 2.0)  # a tree carries its own
+
+
+def test_a_tree_step_keeps_the_tree_and_prints_the_line():
+    from gyro_cli.core.work import Work
+
+    work = Work()
+    s = top()
+    value = work.step("a", 2 * s["m"] * s["g"] * s["l"] / s["J"], unit="1/s^2", ref="Eq. 11.18")
+    step = work.sections[0].steps[0]
+    assert value == step.value == step.expr.value
+    assert step.as_text().startswith("a = 2 m g l / J = 2 (0.08498 kg) (9.815 m/s^2) (0.03810 m)")
+    assert step.as_text().endswith("1/s^2    (Eq. 11.18)")

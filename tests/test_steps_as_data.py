@@ -1,0 +1,312 @@
+"""Worked steps as data (issue 21): every equation step of every bundled problem and
+`gyro new` example, re-evaluated from its JSON ``expr`` and ``symbols``; no negative
+number juxtaposed in a substitution, in text, Markdown or LaTeX."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+import yaml
+
+from gyro_cli.core.errors import InputError
+
+from gyro_cli.commands.authoring import template
+from gyro_cli.core.expr import python_names
+from gyro_cli.kinds import names as kind_names
+from gyro_cli.render import report, writeup
+from gyro_cli.solving.solve import solve_file
+
+ROOT = Path(__file__).resolve().parents[1]
+PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
+
+#: kinds whose every equation step is an expression tree (the others are migrating)
+#: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
+TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
+
+
+def _from_body(title: str, symbol: str, formula: str) -> bool:
+    """A shape's J or I_G (core/body.py's SHAPES are text still)."""
+    from gyro_cli.core.body import SHAPES
+
+    return title == "Body" and formula in {t for shape in SHAPES.values()
+                                           for t in (shape.J_text, shape.I_G_text)}
+
+#: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
+#: division sign (a subtraction is spaced: ``a - 3``)
+TEXT_JUXTAPOSED = re.compile(r"(?:[\w)^]\s+|[/*^]\s*)-\d")
+#: LaTeX: a minus sign glued to a number after anything but an opening bracket, a brace,
+#: an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
+LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])\s*-\d")
+
+
+def _examples(tmp_path: Path) -> list[Path]:
+    out = []
+    for name in kind_names():
+        path = tmp_path / f"{name}.yaml"
+        path.write_text(template(name))
+        out.append(path)
+    return out
+
+
+def _eval(expr: str, symbols: dict[str, float]) -> float:
+    return eval(expr, {"__builtins__": {}}, python_names() | symbols)  # our own output
+
+
+def _check_equations(doc: dict, kind: str) -> int:
+    count = 0
+    for section in doc["steps"]:
+        for eq in section["equations"]:
+            if eq["expr"] is None:
+                assert kind not in TREE_KINDS or _from_body(section["title"], eq["symbol"],
+                                                            eq["formula"]), (doc["file"], eq)
+                continue
+            value = _eval(eq["expr"], eq["symbols"])
+            assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
+                (doc["file"], eq["symbol"], eq["expr"], value, eq["value"])
+            assert (eq["formula"] or eq["substitution"]) and eq["unit"] is not None
+            assert bool(eq["formula"]) == bool(eq["formula_latex"])
+            count += 1
+    return count
+
+
+def test_every_equation_step_re_evaluates_to_its_value(tmp_path):
+    files = PROBLEMS + _examples(tmp_path)
+    total = 0
+    for path in files:
+        result = solve_file(str(path))
+        total += _check_equations(report.as_dict(result), result.problem.kind.name)
+    assert total > 20
+
+
+def _negated(path: Path, tmp_path: Path) -> Path | None:
+    """The problem with its spin, precession, moment and axial rate negated."""
+    data = yaml.safe_load(path.read_text())
+    given = data.get("given") or {}
+    changed = False
+    for key in ("spin", "precession", "moment", "axial_rate", "spin_rate", "turn_rate"):
+        value = given.get(key)
+        if isinstance(value, str) and value.strip()[:1].isdigit():
+            given[key] = "-" + value.strip()
+            changed = True
+    if not changed:
+        return None
+    data.pop("expected", None)
+    out = tmp_path / f"neg_{path.name}"
+    out.write_text(yaml.safe_dump(data))
+    return out
+
+
+def _substitutions(result) -> tuple[list[str], list[str]]:
+    texts, latexes = [], []
+    for section in result.solution.sections:
+        for step in section.steps:
+            if step.substitution:
+                texts.append(step.substitution)
+                if step.expr is not None:
+                    lhs, pieces = writeup._step_pieces(step)
+                    latexes.append(writeup.LatexPrinter(True).doprint(pieces[1]))
+    return texts, latexes
+
+
+def test_no_substitution_juxtaposes_a_negative_number(tmp_path):
+    files = PROBLEMS + _examples(tmp_path)
+    files += [n for n in (_negated(p, tmp_path) for p in files) if n is not None]
+    seen = 0
+    for path in files:
+        try:
+            result = solve_file(str(path))
+        except InputError:  # a negated rate some kinds refuse (a speed, an engine's rate)
+            continue
+        texts, latexes = _substitutions(result)
+        for line in texts:
+            assert not TEXT_JUXTAPOSED.search(line), (path.name, line)
+        for line in latexes:
+            assert not LATEX_JUXTAPOSED.search(line), (path.name, line)
+        seen += len(texts)
+    assert seen > 300
+
+
+def test_top_rev_per_s_divides_by_a_bracketed_negative_product():
+    """The slip the issue found: ``(0.0005120 kg m^2 -179.7 rad/s)`` set as a subtraction."""
+    doc = json.loads(report.as_json(solve_file(str(ROOT / "problems" / "top_rev_per_s.yaml"))))
+    lines = [line for s in doc["steps"] for line in s["lines"]]
+    assert not any(TEXT_JUXTAPOSED.search(line) for line in lines), lines
+
+
+@pytest.mark.parametrize("kind", sorted(TREE_KINDS))
+def test_migrated_kinds_parse_no_formula_text(kind, tmp_path, monkeypatch):
+    """A kind written as trees is typeset without the formula parser."""
+    path = tmp_path / f"{kind}.yaml"
+    path.write_text(template(kind))
+    result = solve_file(str(path))
+    calls: list[str] = []
+    real = writeup.try_parse
+    monkeypatch.setattr(writeup, "try_parse", lambda text, units=True: calls.append(text)
+                        or real(text, units))
+    for section in result.solution.sections:
+        for step in section.steps:
+            if step.formula and not _from_body(section.title, step.symbol, step.formula):
+                writeup._step_pieces(step)
+    lhs = {step.symbol for section in result.solution.sections for step in section.steps}
+    assert set(calls) <= lhs, calls  # only the steps' left-hand sides, no formula
+
+
+def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
+    """The kind's steps are evaluated from their trees; physics/gyrocompass.py computes
+    the same quantities independently (the swing period by its own AGM)."""
+    from gyro_cli.physics import gyrocompass as P
+
+    result = solve_file(str(ROOT / "problems" / "gyrocompass_ship.yaml"))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    syms = {name: s.si for st in steps.values()
+            for name, s in __import__("gyro_cli.core.expr", fromlist=["symbols"]).symbols(
+                st.expr).items()}
+    H, W, lat, alpha, I_v = (syms[k] for k in ("H", "Omega_E", "lambda", "alpha", "I_v"))
+    assert steps["D"].value == pytest.approx(P.directive_stiffness(H, W, lat), rel=1e-12)
+    assert steps["M"].value == pytest.approx(P.north_seeking_moment(H, W, lat, alpha), rel=1e-12)
+    assert steps["T"].value == pytest.approx(P.period(I_v, H, W, lat), rel=1e-12)
+    assert steps["T(alpha)"].value == pytest.approx(
+        P.swing_period(I_v, H, W, lat, alpha), rel=1e-12)
+
+
+def _tree_steps(path: Path) -> tuple[dict, dict]:
+    from gyro_cli.core.expr import symbols
+
+    result = solve_file(str(path))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    syms = {name: s.si for st in steps.values() for name, s in symbols(st.expr).items()}
+    return steps, syms
+
+
+@pytest.mark.parametrize("name", ["11_3_equinoxes.yaml", "mars_precession.yaml"])
+def test_earth_precession_trees_agree_with_the_physics_functions(name):
+    """Each body's rate from its tree against physics/earth_precession.py's
+    precession_rate, and the tidal terms against Kepler III / G M / a^3."""
+    from gyro_cli.physics import earth_precession as P
+
+    steps, syms = _tree_steps(ROOT / "problems" / name)
+    H, omega, eps = syms["H"], syms["omega"], syms["epsilon"]
+    for b in ("sun", "moon"):
+        if f"Omega_{b}" not in steps:
+            continue
+        tidal = steps[f"G M_{b} / a_{b}^3"]
+        if f"P_{b}" in syms:
+            assert tidal.value == pytest.approx(
+                P.tidal_from_period(syms[f"P_{b}"], syms[f"q_{b}"]), rel=1e-12)
+        e, i = syms.get(f"e_{b}", 0.0), syms.get(f"i_{b}", 0.0)
+        assert steps[f"(1 - e_{b}^2)^(-3/2)"].value == pytest.approx(
+            P.eccentricity_factor(e), rel=1e-12)
+        expected = P.precession_rate(tidal.value, e, H, eps, omega, i)
+        assert steps[f"Omega_{b}"].value == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["11_2_released_top.yaml", "11_2_released_top_loops.yaml"])
+def test_released_top_trees_agree_with_the_physics(name):
+    """The constants of the motion and the fast-top estimates, evaluated from the step
+    trees, against physics/nutation.py (which computes them its own way)."""
+    from gyro_cli.physics import nutation as N
+
+    result = solve_file(str(ROOT / "problems" / name))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
+    v = _released_top_data(result)
+    top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
+    start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
+                    theta_rate0=v["thetadot0"])
+    nut = N.analyse(top, start)
+    omega_z = steps["omega_z"].value
+    for symbol, expected in (("P2", nut.P2), ("P1", nut.P1), ("h", nut.energy), ("a", nut.a),
+                             ("alpha", nut.alpha), ("beta", nut.beta), ("gamma", nut.gamma),
+                             ("T_fast", N.fast_nutation_period(top, omega_z)),
+                             ("phidot_fast", N.fast_mean_precession(top, omega_z))):
+        assert steps[symbol].value == pytest.approx(expected, rel=1e-12), symbol
+    if "dtheta_fast" in steps:
+        assert steps["dtheta_fast"].si[0] == pytest.approx(
+            N.fast_nutation_amplitude(top, omega_z, start.theta0), rel=1e-12)
+
+
+def _released_top_data(result):
+    """The data of the problem as the steps' symbols hold them (SI)."""
+    from gyro_cli.core.expr import symbols
+
+    syms = {}
+    for sec in result.solution.sections:
+        for s in sec.steps:
+            if s.expr is not None:
+                syms |= {k: v.si for k, v in symbols(s.expr).items()}
+    return syms
+
+
+@pytest.mark.parametrize("gyroscopic", [True, False])
+def test_bicycle_trees_agree_with_the_paper_totals(gyroscopic, tmp_path):
+    """Eqs. A 1-A 17 evaluated from the step trees against physics/bicycle.py's totals."""
+    from gyro_cli.physics import bicycle as B
+
+    path = tmp_path / "bike.yaml"
+    path.write_text("id: b\nkind: bicycle\ngiven:\n  preset: benchmark\n  speed: 5 m/s\n"
+                    f"  gyroscopic: {'true' if gyroscopic else 'false'}\nfind: [motion]\n")
+    result = solve_file(str(path))
+    steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps}
+    t = B.totals(dict(B.BENCHMARK), gyroscopic)
+    names = {"m_T": t.mT, "x_T": t.xT, "z_T": t.zT, "I_Txx": t.ITxx, "I_Txz": t.ITxz,
+             "I_Tzz": t.ITzz, "m_A": t.mA, "x_A": t.xA, "z_A": t.zA, "I_Axx": t.IAxx,
+             "I_Axz": t.IAxz, "I_Azz": t.IAzz, "u_A": t.uA, "I_All": t.IAll, "I_Alx": t.IAlx,
+             "I_Alz": t.IAlz, "mu": t.mu, "S_R": t.SR, "S_F": t.SF, "S_T": t.ST, "S_A": t.SA}
+    for symbol, expected in names.items():
+        assert steps[symbol].value == pytest.approx(expected, rel=1e-12, abs=1e-15), symbol
+
+
+STEADY_TOP = """\
+id: t
+kind: steady_precession
+given: {{mass: 2 kg, shape: disk, diameter: 150 mm, cg_distance: 600 mm, theta: {theta},
+        {rates}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("theta, rates, find", [
+    ("120 deg", "precession: 36 rpm", "spin, min_spin, precession_period, cg_speed, "
+                                      "pivot_force"),
+    ("60 deg", "spin: -3000 rpm, precession: -12 rpm", "moment"),
+    ("60 deg", "axial_rate: 9000 rpm", "precession, spin, precession_approx"),
+    ("90 deg", "spin: 3000 rpm", "precession")])
+def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_path):
+    """Each step from its tree against the kind's and physics/steady.py's functions, with
+    negative rates among them."""
+    from gyro_cli.core.expr import symbols
+    from gyro_cli.kinds import steady_precession as K
+    from gyro_cli.physics import steady
+
+    path = tmp_path / "t.yaml"
+    path.write_text(STEADY_TOP.format(theta=theta, rates=rates, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    v = {}
+    for s in steps:
+        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    m = 2.0
+    J, I = m * 0.075 ** 2 / 2, m * 0.075 ** 2 / 4 + m * 0.6 ** 2  # disk, parallel axes
+    th = v["theta"]
+    for s in steps:
+        if s.formula.startswith("phidot sin(theta) (J omega_z"):
+            assert s.value == pytest.approx(K.moment_required(I, J, th, v["psidot"],
+                                                              v["phidot"]), rel=1e-12)
+        if s.symbol == "psidot" and "D" in v and "phidot" in v:
+            assert s.value == pytest.approx(K.spin_for_precession(I, J, th, v["phidot"], v["D"]),
+                                            rel=1e-12)
+        if s.symbol == "psidot_min":
+            assert s.value == pytest.approx(K.min_spin(I, J, th, v["D"]), rel=1e-12)
+        if s.symbol == "phidot_approx":
+            omega = v.get("omega_z", v.get("psidot"))
+            assert s.value == pytest.approx(steady.precession_approx(v["D"], J, omega), rel=1e-12)
+        if s.symbol.startswith("T"):
+            assert s.value == pytest.approx(steady.precession_period(v["phidot"]), rel=1e-12)
+        if s.symbol.startswith("v_G"):
+            assert s.value == pytest.approx(steady.cg_speed(0.6, th, v["phidot"]), rel=1e-12)
+        if s.symbol == "phidot" and "M" in v:  # theta = 90 deg: M / (J psidot), exact
+            assert s.value == pytest.approx(v["M"] / (J * v["psidot"]), rel=1e-12)
+    assert steps
