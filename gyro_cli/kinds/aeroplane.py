@@ -114,7 +114,8 @@ KIND = Kind(
                    "and dips the tail' or 'dips the nose and raises the tail'"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"mass": "400 kg", "k_axial": "0.3 m", "spin": "2400 rpm",
                   "rotor_sense": "clockwise_from_rear", "speed": "200 km/h",
                   "turn_radius": "50 m", "turn": "left"},

@@ -218,7 +218,8 @@ KIND = Kind(
                    "about the moment's axis"),
     ),
     solve=solve,
-    extra={"gravity": False, "example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"J": "2.5e-4 kg m^2", "spin": "24000 rpm", "moment": "1e-7 N m",
                   "I": "2e-4 kg m^2", "duration": "1 h"},
         "find": {"drift_rate": "deg/h", "drift_angle": "deg", "nutation_frequency": "Hz",

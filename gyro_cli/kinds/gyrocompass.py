@@ -169,7 +169,8 @@ KIND = Kind(
                    "vector's end); a pole is refused with the reason"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
+           "example": {
         "given": {"mass": "2 kg", "shape": "disk", "radius": "60 mm", "spin": "12000 rpm",
                   "I_vertical": "0.004 kg m^2", "latitude": "50 deg", "deviation": "10 deg"},
         "find": {"period": "s", "moment": "N*m", "settles": None},
