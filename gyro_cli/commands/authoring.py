@@ -399,7 +399,7 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
     disk or a signal leaves no variant and no temporary file, so a rerun starts
     clean. A variant may not replace the file it is drawn from.
     """
-    from ..core.files import refuse_input_as_output, write_set
+    from ..core.files import refuse_input_as_output, write_set_in
 
     if not out_dir.strip():
         raise InputError("-o/--out-dir needs a directory name, got an empty one")
@@ -414,21 +414,7 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
                              "variant file(s) already there)", file=clash[0])
-    created = not os.path.isdir(out_dir)
-    try:
-        os.makedirs(out_dir, exist_ok=True)
-    except (OSError, ValueError) as err:
-        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
-                         file=out_dir) from None
-    try:
-        write_set(targets, force=force)
-    except BaseException:
-        if created:
-            try:
-                os.rmdir(out_dir)  # only if empty: what this call made, nothing else
-            except OSError:
-                pass
-        raise
+    write_set_in(out_dir, targets, force=force)
     return [target for target, _ in targets]
 
 

@@ -124,7 +124,7 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     """Write the set and ``out_dir/assignment.csv``; nothing over an existing file without
     ``force`` (checked before anything is written). The set is written whole or not at
     all (core/files.py: write_set), and never over one of its inputs."""
-    from ..core.files import refuse_input_as_output, write_set
+    from ..core.files import refuse_input_as_output, write_set_in
 
     files, assignment, key = roster_variants(paths, roster, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
@@ -139,22 +139,5 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
                              "file(s) of the set already there)", file=clash[0])
-    made = sorted({os.path.dirname(t) or "." for t, _ in targets} - {"."},
-                  key=lambda d: d.count(os.sep))
-    created = [d for d in made if not os.path.isdir(d)]
-    try:
-        for folder in created:
-            os.makedirs(folder, exist_ok=True)
-    except (OSError, ValueError) as err:
-        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
-                         file=out_dir) from None
-    try:
-        write_set(targets, force=force)
-    except BaseException:
-        for folder in reversed(created):
-            try:
-                os.rmdir(folder)  # only if empty: what this call made, nothing else
-            except OSError:
-                pass
-        raise
+    write_set_in(out_dir, targets, force=force)
     return [target for target, _ in targets]

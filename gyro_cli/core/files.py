@@ -112,6 +112,40 @@ def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
                          "name left out, so that a shell glob filled it in?)", file=name)
 
 
+def write_set_in(folder: str, items: list[tuple[str, str | bytes]],
+                 force: bool = False) -> list[Path]:
+    """`write_set` into ``folder`` and the folders below it, made as needed: on failure the
+    folders this call made are removed again (only if empty), so a rerun starts clean."""
+    made: list[str] = []
+    wanted = {os.path.normpath(os.path.dirname(path) or ".") for path, _ in items}
+    for parent in sorted(wanted | {os.path.normpath(folder)}, key=lambda d: d.count(os.sep)):
+        chain = []
+        while parent and parent not in (".", os.sep) and not os.path.isdir(parent):
+            chain.append(parent)
+            parent = os.path.dirname(parent)
+        made += [d for d in reversed(chain) if d not in made]
+    try:
+        for d in made:
+            os.mkdir(d)
+    except (OSError, ValueError) as err:
+        _remove_empty(made)
+        raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
+                         file=folder) from None
+    try:
+        return write_set(items, force=force)
+    except BaseException:
+        _remove_empty(made)
+        raise
+
+
+def _remove_empty(folders: list[str]) -> None:
+    for d in reversed(folders):
+        try:
+            os.rmdir(d)  # only if empty: what this call made, nothing else
+        except OSError:
+            pass
+
+
 def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list[Path]:
     """Write several files as one: every file is written, or none is (and nothing is left).
 
