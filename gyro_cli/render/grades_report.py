@@ -161,7 +161,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
     ``out/<student>.json`` for every student graded."""
     import os
 
-    from ..core.files import write_atomic
+    from ..core.files import write_atomic, write_set_in
 
     if fmt == "grades":
         write_atomic(out, csv_text(graded), force=force)
@@ -185,14 +185,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
 
     names = file_names(students)
     targets = [(os.path.join(out, names[s] + ".json"), render(graded, s)) for s in students]
-    if not force:
-        for target, _ in targets:
-            if os.path.exists(target):
-                raise InputError("exists; not overwritten (use --force to replace it)",
-                                 file=target)
-    os.makedirs(out, exist_ok=True)
-    for target, text in targets:
-        write_atomic(target, text, force=force)
+    write_set_in(out, targets, force=force)  # every student's file, or none
     return [t for t, _ in targets]
 
 
@@ -256,19 +249,12 @@ def write_feedback(graded: Graded, folder: str, force: bool) -> list[str]:
 
     from ..checking.assignment import file_names
     from ..core.errors import InputError
-    from ..core.files import write_atomic
+    from ..core.files import write_set_in
 
     names = file_names(list(graded.scores))
     targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s))
                for s in graded.scores]
     if os.path.exists(folder) and not os.path.isdir(folder):
         raise InputError("exists and is not a directory", file=folder)
-    if not force:
-        for target, _ in targets:
-            if os.path.exists(target):
-                raise InputError("exists; not overwritten (use --force to replace it)",
-                                 file=target)
-    os.makedirs(folder, exist_ok=True)
-    for target, text in targets:
-        write_atomic(target, text, force=force)
+    write_set_in(folder, targets, force=force)  # every student's file, or none
     return [t for t, _ in targets]
