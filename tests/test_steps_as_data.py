@@ -25,7 +25,8 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
+TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
+              "torque_free", "rate_gyro"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -38,9 +39,9 @@ def _from_body(title: str, symbol: str, formula: str) -> bool:
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
 TEXT_JUXTAPOSED = re.compile(r"(?:[\w)^]\s+|[/*^]\s*)-\d")
-#: LaTeX: a minus sign glued to a number after anything but an opening bracket, a brace,
-#: an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
-LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])\s*-\d")
+#: LaTeX: a minus sign glued to a number after anything but an opening bracket (``(``,
+#: ``\lvert`` of |-3|), a brace, an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
+LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])(?<!\\lvert)\s*-\d")
 
 
 def _examples(tmp_path: Path) -> list[Path]:
@@ -310,3 +311,71 @@ def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_
         if s.symbol == "phidot" and "M" in v:  # theta = 90 deg: M / (J psidot), exact
             assert s.value == pytest.approx(v["M"] / (J * v["psidot"]), rel=1e-12)
     assert steps
+
+
+def _si(step) -> float:
+    """A step's value in SI (an angle shown in deg, in rad)."""
+    return step.si[0] if step.si is not None else step.value
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in PROBLEMS
+                                        if p.name.startswith("torque_free")))
+def test_torque_free_trees_agree_with_the_physics(name):
+    """Each step from its tree against physics/torque_free.py's solve_motion, which finds
+    the motion its own way (atan2, hypot) from the two given quantities."""
+    from gyro_cli.physics import torque_free as P
+
+    result = solve_file(str(ROOT / "problems" / name))
+    steps, syms = _tree_steps(ROOT / "problems" / name)
+    given = {g.key: g.si_value for g in result.solution.given}
+    known = {k: given[k] for k in P.MOTION_KEYS if k in given}
+    if given.get("precession_sense") is not None and "spin" in known:
+        known["spin"] = abs(known["spin"]) * (1 if given["precession_sense"] == "direct" else -1)
+    s = P.solve_motion(syms["J"], syms["I"], known)
+    expected = {"beta": s.omega_angle, "theta": s.nutation_angle, "omega_z": s.axial_rate,
+                "omega_e": s.transverse_rate, "omega": s.omega, "H": s.angular_momentum,
+                "phidot": s.precession, "psidot": s.spin, "T_p": s.precession_period,
+                "T_w": s.body_wobble_period, "body cone": s.body_cone_angle,
+                "space cone": s.space_cone_angle, "n": s.spin / s.precession}
+    if given.get("precession_sense") is not None:
+        expected["n"] = abs(expected["n"])
+    for symbol, step in steps.items():
+        if symbol in expected:  # not the body's J, I_G
+            assert _si(step) == pytest.approx(expected[symbol], rel=1e-12), symbol
+    assert {"omega_e", "H", "phidot", "psidot", "T_p", "n"} <= set(steps)
+
+
+@pytest.mark.parametrize("name", ["rate_gyro_reading.yaml", "rate_gyro_turn.yaml",
+                                  "rate_integrating_gyro.yaml", "11_3_bearing_moment.yaml",
+                                  "template"])
+def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
+    """Each step from its tree against physics/rate_gyro.py; f_n (Hz) is omega_n (rad/s)
+    over 2 pi."""
+    from gyro_cli.physics import rate_gyro as P
+
+    path = ROOT / "problems" / name
+    if name == "template":
+        path = tmp_path / "rate_gyro.yaml"
+        path.write_text(template("rate_gyro"))
+    steps, v = _tree_steps(path)
+    H = v["H"]
+    if "Omega" in steps:  # from the measurement
+        O = steps["Omega"].value
+        if "M" in v and "k" not in v:
+            assert O == pytest.approx(P.rate_from_moment(H, v["M"]), rel=1e-12)
+    O = v["Omega"] if "Omega" in v else None
+    checks = {"M": lambda: H * O,
+              "theta": lambda: (P.steady_deflection(H, O, v["k"]) if "k" in v
+                                else H / v["c"] * v["phi"]),
+              "S": lambda: H / v["k"],
+              "omega_n": lambda: P.natural_frequency(v["k"], v["I_g"]),
+              "f_n": lambda: P.natural_frequency(v["k"], v["I_g"]) / (2 * math.pi),
+              "zeta": lambda: P.damping_ratio(v["c"], v["k"], v["I_g"]),
+              "thetadot": lambda: P.gimbal_rate(H, O, v["c"]),
+              "H / c": lambda: H / v["c"], "tau": lambda: v["I_g"] / v["c"]}
+    for symbol, step in steps.items():
+        if symbol in checks:
+            assert _si(step) == pytest.approx(checks[symbol](), rel=1e-12), symbol
+    if name == "template":
+        assert steps["f_n"].unit == "Hz" and steps["omega_n"].unit == "rad/s"
+        assert {"theta", "S", "omega_n", "f_n", "zeta"} <= set(steps)

@@ -22,12 +22,22 @@ from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Let, Sym, sqrt
 from ..core.work import Work, num, qty
-from ..physics.rate_gyro import (damping_ratio, gimbal_rate, large_angle_deflection,
-                                 natural_frequency, rate_from_moment, steady_deflection)
+from ..physics.rate_gyro import large_angle_deflection, steady_deflection
 
 SMALL_ANGLE = math.radians(5)
 DEG = math.pi / 180
+
+#: the symbols of the kind's steps, beside its Params: name -> the unit each is shown in
+UNITS = {"H": "kg m^2/s", "Omega": "rad/s", "M": "N*m", "k": "N m/rad", "c": "N m s/rad",
+         "I_g": "kg*m^2", "theta": "rad", "thetadot": "rad/s", "phi": "rad",
+         "omega_n": "rad/s", "H/c": ""}
+
+
+def _sym(name: str, value: float) -> Sym:
+    """The kind's symbol ``name`` holding ``value`` (SI)."""
+    return Sym(name, value, UNITS[name])
 
 
 def _angular_momentum(given: Given, work: Work) -> float:
@@ -93,8 +103,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         return
     rate = _input_rate(given, given_key, H, k, c, work)
     work.answer("rate", "Omega", [rate], "rate")
-    M = work.step("M", "H Omega", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')})", H * rate,
-                  "N*m", ref="Eq. 11.29", note="moment about the output axis")
+    H_, Omega = _sym("H", H), _sym("Omega", rate)
+    M = work.step("M", H_ * Omega, unit="N*m", ref="Eq. 11.29",
+                  note="moment about the output axis")
     work.answer("moment", "M", [M], "moment")
 
     if mode == "spring":
@@ -106,11 +117,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              "is far outside its range (the gimbal would pass 90 deg); the exact "
                              f"steady state, k theta = H Omega cos(theta), is {num(exact / DEG)} "
                              "deg: use a stiffer spring", key="given.rate")
-        theta = work.step("theta", "H Omega / k", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) / "
-                          f"{qty(k, 'N m/rad')}", linear, "rad")
+        k_ = _sym("k", k)
+        theta = work.step("theta", H_ * Omega / k_, unit="rad")  # steady_deflection
         work.step("theta", value=theta / DEG, unit="deg")
-        S = work.step("S", "H / k", f"{qty(H, 'kg m^2/s')} / {qty(k, 'N m/rad')}", H / k, "s",
-                      note="deflection per unit rate (rad per rad/s)")
+        S = work.step("S", H_ / k_, unit="s", note="deflection per unit rate (rad per rad/s)")
         work.answer("deflection", "theta", [theta], "angle")
         work.answer("sensitivity", "S", [S], "time")
         if abs(theta) > SMALL_ANGLE and given_key != "deflection":
@@ -120,14 +130,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.check(f"k theta = {qty(k * theta, 'N m')} = H Omega = {qty(M, 'N m')}")
         if I_g is not None:
             work.section("Dynamics of the gimbal")
-            wn = work.step("omega_n", "sqrt(k / I_g)", f"sqrt({qty(k, 'N m/rad')} / "
-                           f"{qty(I_g, 'kg*m^2')})", natural_frequency(k, I_g), "rad/s")
-            work.step("f_n", "omega_n / (2 pi)", value=wn / (2 * math.pi), unit="Hz")
+            I_g_ = _sym("I_g", I_g)
+            wn = work.step("omega_n", sqrt(k_ / I_g_), unit="rad/s")  # natural_frequency
+            # f_n in Hz from the angular frequency omega_n in rad/s
+            work.step("f_n", _sym("omega_n", wn) / (2 * PI), unit="Hz", substitute=False)
             work.answer("natural_frequency", "omega_n", [wn], "rate")
             if c is not None:
-                zeta = work.step("zeta", "c / (2 sqrt(k I_g))", f"{qty(c, 'N m s/rad')} / (2 "
-                                 f"sqrt({qty(k, 'N m/rad')} {qty(I_g, 'kg*m^2')}))",
-                                 damping_ratio(c, k, I_g), "")
+                zeta = work.step("zeta", _sym("c", c) / (2 * sqrt(k_ * I_g_)),
+                                 unit="")  # damping_ratio
                 work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
                 work.text("zeta near 0.7 lets the reading settle fastest without much overshoot"
                           if 0.5 <= zeta <= 1 else
@@ -137,9 +147,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             work.text("damping given without gimbal_inertia: the damping ratio needs I_g")
     elif mode == "integrating":
         work.section("Rate-integrating: gimbal rate and gain")
-        td = work.step("thetadot", "H Omega / c", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) "
-                       f"/ {qty(c, 'N m s/rad')}", gimbal_rate(H, rate, c), "rad/s")
-        gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "",
+        c_ = _sym("c", c)
+        td = work.step("thetadot", H_ * Omega / c_, unit="rad/s")  # gimbal_rate
+        gain = work.step("H / c", H_ / c_, unit="", state=False,
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
         work.answer("gain", "H/c", [gain], "dimensionless")
@@ -154,8 +164,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 def _time_constant(c: float, I_g: float | None, work: Work) -> None:
     if I_g is not None:
-        tau = work.step("tau", "I_g / c", f"{qty(I_g, 'kg*m^2')} / {qty(c, 'N m s/rad')}",
-                        I_g / c, "s", note="time for the gimbal rate to reach its value")
+        tau = work.step("tau", _sym("I_g", I_g) / _sym("c", c), unit="s",
+                        note="time for the gimbal rate to reach its value")
         work.answer("time_constant", "tau", [tau], "time")
 
 
@@ -164,10 +174,11 @@ def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work:
     work.section("Rate-integrating: gimbal angle for the angle turned")
     work.text("integrating c thetadot = H Omega over time: c theta = H phi, phi = integral of "
               "Omega dt (once the transient, time constant I_g / c, has passed)")
-    gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "")
+    H_c = _sym("H", H) / _sym("c", c)
+    gain = work.step("H / c", H_c, unit="", state=False)
     phi = given["input_angle"]
-    theta = work.step("theta", "(H / c) phi", f"({num(gain)}) {qty(phi, 'rad')}", gain * phi,
-                      "rad", note="phi: the angle the case turned")
+    theta = work.step("theta", Let(_sym("H/c", gain), H_c) * _sym("phi", phi), unit="rad",
+                      note="phi: the angle the case turned")
     work.step("theta", value=theta / DEG, unit="deg")
     work.answer("deflection", "theta", [theta], "angle")
     work.answer("gain", "H/c", [gain], "dimensionless")
@@ -208,15 +219,15 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
             work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
                       "tilted, k theta = H Omega cos(theta) gives Omega = "
                       f"{num(k * theta / (H * math.cos(theta)))} rad/s")
-        return work.step("Omega", "k theta / H", f"{qty(k, 'N m/rad')} ({qty(theta, 'rad')}) / "
-                         f"{qty(H, 'kg m^2/s')}", k * theta / H, "rad/s")
+        return work.step("Omega", _sym("k", k) * _sym("theta", theta) / _sym("H", H),
+                         unit="rad/s")
     if key == "moment":
         M = given["moment"]
-        return work.step("Omega", "M / H", f"{qty(M, 'N*m')} / {qty(H, 'kg m^2/s')}",
-                         rate_from_moment(H, M), "rad/s", ref="Eq. 11.29")
+        return work.step("Omega", _sym("M", M) / _sym("H", H), unit="rad/s",
+                         ref="Eq. 11.29")  # rate_from_moment
     td = given["gimbal_rate"]
-    return work.step("Omega", "c thetadot / H", f"{qty(c, 'N m s/rad')} ({qty(td, 'rad/s')}) "
-                     f"/ {qty(H, 'kg m^2/s')}", c * td / H, "rad/s")
+    return work.step("Omega", _sym("c", c) * _sym("thetadot", td) / _sym("H", H),
+                     unit="rad/s")
 
 
 KIND = Kind(
