@@ -20,6 +20,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import euler_kinematics as ek
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import Expr, Let, Num, Sym, cos, sin, sqrt
 from ..core.work import Work, num, qty
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
@@ -28,6 +29,41 @@ SYMBOLS = {"phi": "phi", "theta": "theta", "psi": "psi", "yaw": "yaw", "pitch": 
            "roll": "roll"}
 INERTIA_SLACK = 0.01  # rounded data may break I_max <= I_a + I_b by this much
 MAX_LISTED = 12
+
+#: the symbols of the kind's steps, beside its Params: angles are held in rad, shown in deg
+ANGLE_SYMBOLS = ("phi", "theta", "psi", "yaw", "pitch", "roll")
+HALF = Num(0.5, "1/2")
+
+
+def _sym(name: str, value: float) -> Sym:
+    """The kind's symbol ``name`` (an angle, a rate ``phidot``/``omega_x``/``p``, an inertia
+    ``I_x``/``I_xy``, or a moment of momentum ``H_x``) holding ``value`` (SI)."""
+    if name in ANGLE_SYMBOLS:
+        unit = "deg"
+    elif name.startswith("I_"):
+        unit = "kg m^2"
+    elif name.startswith("H_"):
+        unit = "kg m^2/s"
+    else:
+        unit = "rad/s"
+    return Sym(name, value, unit)
+
+
+def _sin(angle: Sym) -> Expr:
+    """sin(angle); at a multiple of 180 deg, where sin of the angle in floating point is
+    ~1e-16 and the physics takes it as exactly 0, the substitution shows that 0."""
+    exact = ek.sin_exact(angle.si)
+    if exact == math.sin(angle.si):
+        return sin(angle)
+    return Let(Sym(f"sin({angle.name})", exact), sin(angle))
+
+
+def _cos(angle: Sym) -> Expr:
+    """cos(angle); exactly 0 at an odd multiple of 90 deg, as `_sin`."""
+    exact = ek.cos_exact(angle.si)
+    if exact == math.cos(angle.si):
+        return cos(angle)
+    return Let(Sym(f"cos({angle.name})", exact), cos(angle))
 
 
 def _deg(x: float) -> str:
@@ -102,8 +138,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if asked:
             raise InputError(f"{asked[0]} (a fixed-frame component) depends on the first angle: "
                              f"give {first}", key=f"given.{first}")
-    work.step("|omega|", "sqrt(omega_x^2 + omega_y^2 + omega_z^2)", value=ek.norm(omega),
-              unit="rad/s")
+    wx, wy, wz = (_sym(n, v) for n, v in zip(("omega_x", "omega_y", "omega_z"), omega))
+    work.step("|omega|", sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
     for name, value in zip(("omega_x", "omega_y", "omega_z"), omega):
         work.answer(name, name, [value], "rate")
     work.answer("omega", "|omega|", [ek.norm(omega)], "rate")
@@ -160,29 +196,22 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         if sequence == "zxz":
             work.text("omega = phidot K + thetadot i'' + psidot k  (Eq. 11.5), with "
                       "i'' = cos(psi) i - sin(psi) j, K = cos(theta) k + sin(theta) j'' (Eq. 11.6)")
-            st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
             omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
-            work.step("omega_x", "phidot sin(theta) sin(psi) + thetadot cos(psi)",
-                      f"{_rate(r1)} ({num(st)}) ({num(sp)}) + {_rate(r2)} ({num(cp)})",
-                      omega[0], "rad/s", ref="Eq. 11.8")
-            work.step("omega_y", "phidot sin(theta) cos(psi) - thetadot sin(psi)",
-                      f"{_rate(r1)} ({num(st)}) ({num(cp)}) - {_rate(r2)} ({num(sp)})",
-                      omega[1], "rad/s", ref="Eq. 11.8")
-            work.step("omega_z", "phidot cos(theta) + psidot",
-                      f"{_rate(r1)} ({num(ct)}) + {_rate(r3)}", omega[2], "rad/s",
+            th, ps = _sym("theta", a2), _sym("psi", a3)
+            p1, p2, p3 = _sym("phidot", r1), _sym("thetadot", r2), _sym("psidot", r3)
+            work.step("omega_x", p1 * _sin(th) * _sin(ps) + p2 * _cos(ps), unit="rad/s",
                       ref="Eq. 11.8")
+            work.step("omega_y", p1 * _sin(th) * _cos(ps) - p2 * _sin(ps), unit="rad/s",
+                      ref="Eq. 11.8")
+            work.step("omega_z", p1 * _cos(th) + p3, unit="rad/s", ref="Eq. 11.8")
         else:
             work.text("omega = yawdot Z + pitchdot y' + rolldot x (each rate about its own axis)")
-            sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
             omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
-            work.step("p", "rolldot - yawdot sin(pitch)", f"{_rate(r3)} - {_rate(r1)} "
-                      f"({num(sq)})", omega[0], "rad/s")
-            work.step("q", "pitchdot cos(roll) + yawdot cos(pitch) sin(roll)",
-                      f"{_rate(r2)} ({num(cr)}) + {_rate(r1)} ({num(cq)}) ({num(sr)})",
-                      omega[1], "rad/s")
-            work.step("r", "-pitchdot sin(roll) + yawdot cos(pitch) cos(roll)",
-                      f"-{_rate(r2)} ({num(sr)}) + {_rate(r1)} ({num(cq)}) ({num(cr)})",
-                      omega[2], "rad/s")
+            pi_, ro = _sym("pitch", a2), _sym("roll", a3)
+            y1, y2, y3 = _sym("yawdot", r1), _sym("pitchdot", r2), _sym("rolldot", r3)
+            work.step("p", y3 - y1 * _sin(pi_), unit="rad/s")
+            work.step("q", y2 * _cos(ro) + y1 * _cos(pi_) * _sin(ro), unit="rad/s")
+            work.step("r", -y2 * _sin(ro) + y1 * _cos(pi_) * _cos(ro), unit="rad/s")
         back = _inverse(sequence, a2, a3, omega, raise_singular=False)
         if back is not None:
             work.check("the inverse of Eq. 11.8 gives back the rates: " + ", ".join(
@@ -197,25 +226,17 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
     if missing:
         work.text(f"not given, taken as zero: {', '.join(missing)}")
     if sequence == "zxz":
-        st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
-        work.step("thetadot", "omega_x cos(psi) - omega_y sin(psi)",
-                  f"{_rate(omega[0])} ({num(cp)}) - {_rate(omega[1])} ({num(sp)})", rates[1],
-                  "rad/s")
-        work.step("phidot", "(omega_x sin(psi) + omega_y cos(psi)) / sin(theta)",
-                  f"({_rate(omega[0])} ({num(sp)}) + {_rate(omega[1])} ({num(cp)})) / "
-                  f"{num(st)}", rates[0], "rad/s")
-        work.step("psidot", "omega_z - phidot cos(theta)",
-                  f"{_rate(omega[2])} - {_rate(rates[0])} ({num(ct)})", rates[2], "rad/s")
+        th, ps = _sym("theta", a2), _sym("psi", a3)
+        wx, wy, wz = (_sym(n, v) for n, v in zip(omega_keys, omega))
+        work.step("thetadot", wx * _cos(ps) - wy * _sin(ps), unit="rad/s")
+        work.step("phidot", (wx * _sin(ps) + wy * _cos(ps)) / _sin(th), unit="rad/s")
+        work.step("psidot", wz - _sym("phidot", rates[0]) * _cos(th), unit="rad/s")
     else:
-        sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
-        work.step("yawdot", "(q sin(roll) + r cos(roll)) / cos(pitch)",
-                  f"({_rate(omega[1])} ({num(sr)}) + {_rate(omega[2])} ({num(cr)})) / "
-                  f"{num(cq)}", rates[0], "rad/s")
-        work.step("pitchdot", "q cos(roll) - r sin(roll)",
-                  f"{_rate(omega[1])} ({num(cr)}) - {_rate(omega[2])} ({num(sr)})", rates[1],
-                  "rad/s")
-        work.step("rolldot", "p + yawdot sin(pitch)",
-                  f"{_rate(omega[0])} + {_rate(rates[0])} ({num(sq)})", rates[2], "rad/s")
+        pi_, ro = _sym("pitch", a2), _sym("roll", a3)
+        p, q, r = (_sym(n, v) for n, v in zip("pqr", omega))
+        work.step("yawdot", (q * _sin(ro) + r * _cos(ro)) / _cos(pi_), unit="rad/s")
+        work.step("pitchdot", q * _cos(ro) - r * _sin(ro), unit="rad/s")
+        work.step("rolldot", p + _sym("yawdot", rates[0]) * _sin(pi_), unit="rad/s")
     near = abs(ek.sin_exact(a2)) if sequence == "zxz" else abs(ek.cos_exact(a2))
     if near < math.sin(math.radians(1)):
         work.warn(f"{second} is within 1 deg of the singular attitude: the rates {first}_rate "
@@ -252,18 +273,13 @@ def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3
     work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz, with "
                  "omega_xyz the body components")
     if sequence == "zxz":
-        r1, r2, r3 = rates
-        s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)
+        p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
+        ph, th = _sym("phi", a1), _sym("theta", a2)
         work.text("equivalently omega = phidot K + thetadot (cos(phi) I + sin(phi) J) + psidot k, "
                   "k = sin(theta) sin(phi) I - sin(theta) cos(phi) J + cos(theta) K:")
-        work.step("omega_X", "thetadot cos(phi) + psidot sin(theta) sin(phi)",
-                  f"{_rate(r2)} ({num(c1)}) + {_rate(r3)} ({num(s2)}) ({num(s1)})", fixed[0],
-                  "rad/s")
-        work.step("omega_Y", "thetadot sin(phi) - psidot sin(theta) cos(phi)",
-                  f"{_rate(r2)} ({num(s1)}) - {_rate(r3)} ({num(s2)}) ({num(c1)})", fixed[1],
-                  "rad/s")
-        work.step("omega_Z", "phidot + psidot cos(theta)",
-                  f"{_rate(r1)} + {_rate(r3)} ({num(c2)})", fixed[2], "rad/s")
+        work.step("omega_X", p2 * _cos(ph) + p3 * _sin(th) * _sin(ph), unit="rad/s")
+        work.step("omega_Y", p2 * _sin(ph) - p3 * _sin(th) * _cos(ph), unit="rad/s")
+        work.step("omega_Z", p1 + p3 * _cos(th), unit="rad/s")
     else:
         work.text("R = Rz(yaw) Ry(pitch) Rx(roll) = [" + "; ".join(
             " ".join(num(v) for v in row) for row in R) + "]")
@@ -406,36 +422,32 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
 
 
 def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
-    wx, wy, wz = omega
     T = ek.kinetic_energy(matrix, omega)
     H = ek.angular_momentum(matrix, omega)
     work.section("Kinetic energy (Eq. 11.2) and angular momentum about the fixed point")
+    w = {n: _sym(f"omega_{n}", v) for n, v in zip("xyz", omega)}
+    I_ = {n: _sym(f"I_{n}", matrix[k][k]) for k, n in enumerate("xyz")}
     if ek.is_diagonal(matrix):
-        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
-        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2)",
-                  f"(1/2) ({qty(Ix, 'kg m^2')} ({_rate(wx)})^2 + {qty(Iy, 'kg m^2')} "
-                  f"({_rate(wy)})^2 + {qty(Iz, 'kg m^2')} ({_rate(wz)})^2)", T, "J",
-                  ref="Eq. 11.2")
-        for name, I, w, value in zip(("H_x", "H_y", "H_z"), (Ix, Iy, Iz), omega, H):
-            work.step(name, f"I_{name[-1]} omega_{name[-1]}", f"{qty(I, 'kg m^2')} ({_rate(w)})",
-                      value, "kg m^2/s")
+        work.step("T", HALF * (I_["x"] * w["x"] ** 2 + I_["y"] * w["y"] ** 2
+                               + I_["z"] * w["z"] ** 2), unit="J", ref="Eq. 11.2")
+        for n in "xyz":
+            work.step(f"H_{n}", I_[n] * w[n], unit="kg m^2/s")
     else:
-        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
-        Ixy, Iyz, Izx = -matrix[0][1], -matrix[1][2], -matrix[0][2]
-        I_ = lambda v: qty(v, "kg m^2")  # noqa: E731
-        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2 - 2 I_yz omega_y "
-                  "omega_z - 2 I_zx omega_z omega_x - 2 I_xy omega_x omega_y)",
-                  f"(1/2) ({I_(Ix)} ({_rate(wx)})^2 + {I_(Iy)} ({_rate(wy)})^2 + {I_(Iz)} "
-                  f"({_rate(wz)})^2 - 2 ({I_(Iyz)}) ({_rate(wy)}) ({_rate(wz)}) - 2 ({I_(Izx)}) "
-                  f"({_rate(wz)}) ({_rate(wx)}) - 2 ({I_(Ixy)}) ({_rate(wx)}) ({_rate(wy)}))",
-                  T, "J", ref="Eq. 11.2, first line, with the products")
-        work.step("H_x", "I_x omega_x - I_xy omega_y - I_zx omega_z", value=H[0], unit="kg m^2/s")
-        work.step("H_y", "-I_xy omega_x + I_y omega_y - I_yz omega_z", value=H[1],
-                  unit="kg m^2/s")
-        work.step("H_z", "-I_zx omega_x - I_yz omega_y + I_z omega_z", value=H[2],
-                  unit="kg m^2/s")
+        Ixy, Iyz, Izx = (_sym(n, v) for n, v in zip(PRODUCT_KEYS, (
+            -matrix[0][1], -matrix[1][2], -matrix[0][2])))
+        work.step("T", HALF * (I_["x"] * w["x"] ** 2 + I_["y"] * w["y"] ** 2
+                               + I_["z"] * w["z"] ** 2 - 2 * Iyz * w["y"] * w["z"]
+                               - 2 * Izx * w["z"] * w["x"] - 2 * Ixy * w["x"] * w["y"]),
+                  unit="J", ref="Eq. 11.2, first line, with the products")
+        work.step("H_x", I_["x"] * w["x"] - Ixy * w["y"] - Izx * w["z"], unit="kg m^2/s",
+                  substitute=False)
+        work.step("H_y", -Ixy * w["x"] + I_["y"] * w["y"] - Iyz * w["z"], unit="kg m^2/s",
+                  substitute=False)
+        work.step("H_z", -Izx * w["x"] - Iyz * w["y"] + I_["z"] * w["z"], unit="kg m^2/s",
+                  substitute=False)
     Hmag = ek.norm(H)
-    work.step("|H|", "sqrt(H_x^2 + H_y^2 + H_z^2)", value=Hmag, unit="kg m^2/s")
+    Hx, Hy, Hz = (_sym(n, v) for n, v in zip(("H_x", "H_y", "H_z"), H))
+    work.step("|H|", sqrt(Hx ** 2 + Hy ** 2 + Hz ** 2), unit="kg m^2/s", substitute=False)
     work.check(f"T = (1/2) omega . H = {qty(0.5 * ek.dot(omega, H), 'J')}")
     work.answer("kinetic_energy", "T", [T], "energy")
     for name, value in zip(("H_x", "H_y", "H_z"), H):
