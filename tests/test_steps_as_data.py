@@ -379,3 +379,59 @@ def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
     if name == "template":
         assert steps["f_n"].unit == "Hz" and steps["omega_n"].unit == "rad/s"
         assert {"theta", "S", "omega_n", "f_n", "zeta"} <= set(steps)
+
+
+#: euler_angles steps still text: the particle sums of Eq. 11.3 and the angle between
+#: omega and H (vector products) have no tree yet, and the principal moments no value
+EULER_TEXT = {"I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx", "principal moments",
+              "angle(omega, H)"}
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in PROBLEMS if p.name.startswith("euler"))
+                         + ["template"])
+def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
+    """Eq. 11.8 both ways, the fixed-frame rates (R omega), T and H from the step trees
+    against physics/euler_kinematics.py, which works with exact zeros, matrices and dot
+    products; every other equation step is a tree."""
+    from gyro_cli.physics import euler_kinematics as ek
+
+    path = ROOT / "problems" / name
+    if name == "template":
+        path = tmp_path / "euler_angles.yaml"
+        path.write_text(template("euler_angles"))
+    result = solve_file(str(path))
+    for section in report.as_dict(result)["steps"]:
+        for eq in section["equations"]:
+            assert eq["expr"] is not None or eq["symbol"] in EULER_TEXT, eq
+    steps, v = _tree_steps(path)
+    answers = {k: a.si_values for k, a in result.answers.items()}
+    zyx = "yaw" in v or "pitch" in v
+    a2, a3 = (v["pitch"], v["roll"]) if zyx else (v["theta"], v["psi"])
+    if any(k in steps for k in ("omega_x", "p")):  # forward
+        rates = [v.get(k, 0.0) for k in (("yawdot", "pitchdot", "rolldot") if zyx
+                                         else ("phidot", "thetadot", "psidot"))]
+        omega = (ek.body_rates_zyx if zyx else ek.body_rates_zxz)(a2, a3, *rates)
+        for sym, value in zip(("p", "q", "r") if zyx else ("omega_x", "omega_y", "omega_z"),
+                              omega):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    else:  # inverse
+        omega = tuple(v[k] for k in (("p", "q", "r") if zyx else ("omega_x", "omega_y",
+                                                                   "omega_z")))
+        rates = (ek.euler_rates_zyx if zyx else ek.euler_rates_zxz)(a2, a3, *omega)
+        for sym, value in zip(("yawdot", "pitchdot", "rolldot") if zyx
+                              else ("phidot", "thetadot", "psidot"), rates):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    if "omega_X" in steps and "phi" in v:
+        fixed = ek.matvec(ek.attitude("zxz", v["phi"], a2, a3), omega)
+        for sym, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    assert steps["|omega|"].value == pytest.approx(ek.norm(omega), rel=1e-12)
+    if "T" in steps:
+        matrix = ek.inertia_matrix(v["I_x"], v["I_y"], v["I_z"], v.get("I_xy", 0.0),
+                                   v.get("I_yz", 0.0), v.get("I_zx", 0.0))
+        assert steps["T"].value == pytest.approx(ek.kinetic_energy(matrix, omega), rel=1e-12)
+        H = ek.angular_momentum(matrix, omega)
+        for sym, value in zip(("H_x", "H_y", "H_z"), H):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+        assert steps["|H|"].value == pytest.approx(ek.norm(H), rel=1e-12)
+        assert answers["kinetic_energy"][0] == pytest.approx(steps["T"].value, rel=1e-12)
