@@ -137,8 +137,18 @@ def test_any_tree_expr_evaluates_to_its_value_and_brackets_negatives(tree):
     names = {E.python_name(k): s.si for k, s in E.symbols(tree).items()}
     again = eval(E.python(tree), {"__builtins__": {}}, E.python_names() | names)
     assert again == pytest.approx(value, rel=1e-9, abs=1e-300)
-    assert not JUXTAPOSED.search(E.substitution(tree)), E.substitution(tree)
-    assert not JUXTAPOSED.search(E.formula(tree)), E.formula(tree)
+    for text in (E.substitution(tree), E.formula(tree)):
+        assert not JUXTAPOSED.search(text), text
+        assert "--" not in text and "+ -" not in text and "- -" not in text, text
+
+
+def test_a_negated_product_with_a_negative_first_factor_is_bracketed():
+    """-(a sin(x)) with a = -2 rad/s once printed --2.000 rad/s sin(x)."""
+    a, x = Sym("a", -2.0, "rad/s"), Sym("x", 0.5, "rad")
+    assert E.substitution(-(a * sin(x))) == "-(-2.000 rad/s sin(0.5000 rad))"
+    assert E.substitution(-(a / x)) == "-(-2.000 rad/s / (0.5000 rad))"
+    assert E.substitution(-(-a * x)) == "-(-(-2.000 rad/s) (0.5000 rad))"
+    assert E.formula(-(a * sin(x))) == "-a sin(x)"
 
 
 def test_a_step_that_cannot_be_evaluated_is_bad_input_not_a_crash():

@@ -409,8 +409,16 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
     if isinstance(parent, Pow):
         return c < ATOM or isinstance(node, (Pow,)) if not right else c < ATOM
     if isinstance(parent, Neg):
-        return c < MUL or c == NEG
+        # -(-2.000 rad/s sin(x)): a product or quotient printed with a leading minus
+        return c < MUL or c == NEG or leading_negative(node, values)
     return False
+
+
+def leading_negative(node: Expr, values: bool) -> bool:
+    """A product or quotient whose printed text starts with a minus sign."""
+    while isinstance(node, (Mul, Div)):
+        node = leaf(factors(node, values)[0] if isinstance(node, Mul) else node.left, values)
+    return negative_leaf(node, values) or isinstance(node, Neg)
 
 
 def trig_power(node: Pow) -> str:
