@@ -385,13 +385,15 @@ find: [period]
 
 @pytest.mark.parametrize("extra, reason", [
     ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: -90 deg", "cannot settle"),
-    ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 100 deg", "between -90 and 90"),
+    ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 100 deg",
+     "expected -90 deg <= latitude <= 90 deg"),
     ("spin: 0 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 30 deg", "must spin"),
     ("spin: 2000 rad/s\n  latitude: 30 deg", "needs I_vertical"),
     ("I_vertical: 0.01 kg m^2\n  latitude: 30 deg", "give the rotor's spin"),
-    ("spin: 2000 rad/s\n  I_vertical: -0.01 kg m^2\n  latitude: 30 deg", "must be positive"),
+    ("spin: 2000 rad/s\n  I_vertical: -0.01 kg m^2\n  latitude: 30 deg",
+     "expected I_vertical > 0 kg m^2"),
     ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 30 deg\n  earth_rate: 0 rad/s",
-     "earth_rate must be positive"),
+     "expected earth_rate > 0 rad/s"),
 ])
 def test_compass_bad_input_exits_2_with_one_line(run, write, extra, reason):
     result = run("solve", write(COMPASS_BAD.format(extra=extra)))
