@@ -78,22 +78,29 @@ class Param:
     def expectation(self, unit: str = "") -> str:
         """The declared limits as one condition on the key: ``0 deg <= obliquity < 90 deg``,
         ``turn_radius > 0 m``; "" if none is declared."""
-        limits = self.limits_declared()
-        lower = [(op, x) for op, x in limits if op in (">", ">=")]
-        upper = [(op, x) for op, x in limits if op in ("<", "<=")]
-        parts = []
-        if len(lower) == 1 and len(upper) == 1:
-            (lo_op, lo), (hi_op, hi) = lower[0], upper[0]
-            parts.append(f"{self.limit_text(lo, unit)} {_FLIP[lo_op]} {self.name} {hi_op} "
-                         f"{self.limit_text(hi, unit)}")
-            limits = tuple(l for l in limits if l not in (lower[0], upper[0]))
-        parts += [f"{self.name} {op} {self.limit_text(x, unit)}" for op, x in limits]
+        def said(op: str, x: float) -> str:
+            return f"{self.name} {op} {self.limit_text(x, unit)}"
+
+        parts = [said(op, 0.0) for op, on in ((">", self.positive), (">=", self.nonnegative))
+                 if on]
+        if self.range is not None:
+            (lo, hi), (lo_op, hi_op) = self.range, (_FLIP[self.bounds[0]], _OPS_OF[self.bounds[1]])
+            if math.isfinite(lo) and math.isfinite(hi):
+                parts.append(f"{self.limit_text(lo, unit)} {lo_op} {self.name} {hi_op} "
+                             f"{self.limit_text(hi, unit)}")
+            elif math.isfinite(lo):
+                parts.append(said({"<": ">", "<=": ">="}[lo_op], lo))
+            elif math.isfinite(hi):
+                parts.append(said(hi_op, hi))
+        if self.nonzero:
+            parts.append(said("!=", 0.0))
         return " and ".join(parts)
 
 
 _OPS = {">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le,
         "!=": operator.ne}
-_FLIP = {">": "<", ">=": "<="}
+_FLIP = {"(": "<", "[": "<="}  # a range's lower end, read left to right
+_OPS_OF = {")": "<", "]": "<="}
 
 
 @dataclass(frozen=True)
