@@ -21,7 +21,7 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Sym
-from ..core.work import Work, num, qty, vec
+from ..core.work import Work, qty, vec
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -33,14 +33,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError("the aeroplane needs spin (engine speed), speed and turn_radius",
                              key=f"given.{key}")
     spin, v, R = given["spin"], given["speed"], given["turn_radius"]
-    if spin < 0:
-        raise InputError("give the engine speed as a positive rate and its sense in "
-                         "rotor_sense (e.g. clockwise_from_rear)", key="given.spin")
-    if R <= 0:
-        raise InputError(f"turn_radius must be positive, got {num(R)} m", key="given.turn_radius")
-    if v < 0:
-        raise InputError("speed must be positive (the aeroplane flies forward)",
-                         key="given.speed")
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:
         raise InputError("the effect needs the engine's sense: rotor_sense, one of "
@@ -100,11 +92,13 @@ KIND = Kind(
     chapter="Eq. 11.29 in vector form, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
     params=(
         Param("spin", "rate", "omega", "engine (propeller) speed, a positive rate; its sense in "
-              "rotor_sense"),
+              "rotor_sense", nonnegative=True, reason="give the engine speed as a positive "
+              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)"),
         Param("rotor_sense", "word", "sense", "sense of the engine seen from the front (nose) or "
               "the rear (tail, the pilot's view)", choices=V.AEROPLANE_SENSES),
-        Param("speed", "speed", "v", "flying speed"),
-        Param("turn_radius", "length", "R", "radius of the turn"),
+        Param("speed", "speed", "v", "flying speed", nonnegative=True,
+              reason="the aeroplane flies forward"),
+        Param("turn_radius", "length", "R", "radius of the turn", positive=True),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
     ),
     answers=(

@@ -57,6 +57,19 @@ KEYS: dict[str, tuple[str, str, str]] = {
 }
 SI = {"length": "m", "mass": "kg", "inertia": "kg m^2", "angle": "rad"}
 MASSES = ("mR", "mB", "mH", "mF")
+_WHEEL = "a wheel's inertia tensor diag(Ixx, Iyy, Ixx) is positive definite"
+_FRAME = "an inertia tensor is positive definite: its diagonal entries are positive"
+_ABOVE = "z points down from the road: a centre of mass above the road has z < 0"
+# key -> the limits its Param declares (the loader refuses a value outside them)
+LIMITS: dict[str, dict] = {
+    **{key: {"positive": True} for key in MASSES + ("w", "rR", "rF")},
+    "lambda": {"range": (-math.pi / 2, math.pi / 2), "bounds": "()",
+               "reason": "the steer axis tilt from the vertical"},
+    **{key: {"range": (-math.inf, 0.0), "bounds": "()", "reason": _ABOVE}
+       for key in ("zB", "zH")},
+    **{key: {"positive": True, "reason": _WHEEL} for key in ("IRxx", "IRyy", "IFxx", "IFyy")},
+    **{f"I{f}{a}": {"positive": True, "reason": _FRAME} for f in "BH" for a in ("xx", "yy", "zz")},
+}
 PRESET = "benchmark"
 Q = "(phi, delta)"
 
@@ -86,29 +99,10 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
 
 
 def _validate(p: dict[str, float]) -> None:
-    """Physically impossible data: exit 2 naming the key and the limit."""
-    for key in MASSES:
-        if p[key] <= 0:
-            raise InputError(f"a mass must be positive, got {num(p[key])} kg", key=f"given.{key}")
-    for key in ("w", "rR", "rF"):
-        if p[key] <= 0:
-            raise InputError(f"must be positive, got {num(p[key])} m", key=f"given.{key}")
-    if p["g"] <= 0:
-        raise InputError(f"gravity must be positive, got {num(p['g'])} m/s^2", key="given.g")
-    if not abs(p["lambda"]) < math.pi / 2:
-        raise InputError(f"the steer axis tilt lies between -90 and 90 deg, got "
-                         f"{num(math.degrees(p['lambda']))} deg", key="given.lambda")
-    for key in ("zB", "zH"):
-        if p[key] >= 0:
-            raise InputError(f"z points down from the road: a centre of mass above the road has "
-                             f"z < 0, got {num(p[key])} m", key=f"given.{key}")
+    """Physically impossible data that no one key shows (each key's own limits are declared
+    in LIMITS): exit 2 naming the key and the limit."""
     for wheel in ("R", "F"):
         xx, yy = p[f"I{wheel}xx"], p[f"I{wheel}yy"]
-        for key, value in ((f"I{wheel}xx", xx), (f"I{wheel}yy", yy)):
-            if value <= 0:
-                raise InputError(f"the wheel's inertia tensor diag(I{wheel}xx, I{wheel}yy, "
-                                 f"I{wheel}xx) must be positive definite, got {num(value)} kg m^2",
-                                 key=f"given.{key}")
         if yy > 2 * xx * (1 + 1e-9):
             raise InputError(f"a wheel's moment about its axle is at most twice its moment about "
                              f"a diameter (all mass in the wheel's plane): I{wheel}yy <= 2 "
@@ -116,10 +110,6 @@ def _validate(p: dict[str, float]) -> None:
                              key=f"given.I{wheel}yy")
     for frame in ("B", "H"):
         xx, yy, zz, xz = (p[f"I{frame}{a}"] for a in ("xx", "yy", "zz", "xz"))
-        for key, value in ((f"I{frame}xx", xx), (f"I{frame}yy", yy), (f"I{frame}zz", zz)):
-            if value <= 0:
-                raise InputError(f"the inertia tensor is not positive definite: a diagonal entry "
-                                 f"must be positive, got {num(value)} kg m^2", key=f"given.{key}")
         if xz * xz >= xx * zz:
             raise InputError(f"the inertia tensor [[I{frame}xx, 0, I{frame}xz], [0, I{frame}yy, "
                              f"0], [I{frame}xz, 0, I{frame}zz]] is not positive definite: "
@@ -374,11 +364,12 @@ KIND = Kind(
         Param("preset", "word", "preset", "benchmark: Table 1 of Meijaard et al. (2007) for "
               "every key not given", choices=(PRESET,)),
         Param("speed", "speed", "v", "forward speed (for the eigenvalues and the motion)"),
-        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
         Param("gyroscopic", "word", "gyroscopic", "true (default) or false: false removes the "
               "wheels' spin angular momentum (I_Ryy / r_R, I_Fyy / r_F)",
               choices=("true", "false")),
-    ) + tuple(Param(key, dim, symbol, doc) for key, (dim, symbol, doc) in KEYS.items()),
+    ) + tuple(Param(key, dim, symbol, doc, **LIMITS.get(key, {}))
+              for key, (dim, symbol, doc) in KEYS.items()),
     answers=(
         AnswerSpec("weave_speed", "speed", "v_w", "speed where the weave (a complex pair) "
                    "crosses the imaginary axis: the low end of the self-stable range"),

@@ -103,13 +103,6 @@ def _symbols() -> dict[str, str]:
 NAN = float("nan")  # a symbol named in a definition, its value not needed
 
 
-def _positive(values: dict, key: str, what: str) -> float:
-    v = values[key]
-    if v <= 0:
-        raise InputError(f"{what} must be positive, got {num(v)}", key=f"given.{key}")
-    return v
-
-
 def _ellipticity(values: dict, work: Work) -> float:
     if "dynamical_ellipticity" in values:
         if "J2" in values or "polar_moment_factor" in values:
@@ -122,21 +115,16 @@ def _ellipticity(values: dict, work: Work) -> float:
         if missing not in values:
             raise InputError(f"J2 and polar_moment_factor go together (H = J2 / (C / (M R^2))); "
                              f"give {missing} too", key=f"given.{missing}")
-        J2 = _positive(values, "J2", "J2 (the oblateness of the gravity field)")
-        k = values["polar_moment_factor"]
-        if not 0 < k <= 2 / 3:
-            raise InputError(f"polar_moment_factor C / (M R^2) lies between 0 and 2/3 (a hollow "
-                             f"shell; 0.4 for a uniform sphere), got {num(k)}",
-                             key="given.polar_moment_factor")
+        J2, k = values["J2"], values["polar_moment_factor"]  # their limits are declared
         factor = Let(Sym("polar_moment_factor", k), Sym("C", NAN) / (Sym("M", NAN) * Sym("R", NAN) ** 2))
         H = work.step("H", Sym("J2", J2) / factor, note="J2 = (C - A) / (M R^2)")
+        if not H < 1:  # two keys: each within its limits, their quotient may not be
+            raise InputError(f"J2 / polar_moment_factor gives a dynamical ellipticity (C - A) / C "
+                             f"of {num(H)}; it lies between 0 and 1 for an oblate planet",
+                             key="given.J2")
     else:
         raise InputError("give the planet's dynamical_ellipticity H = (C - A) / C (or J2 and "
                          "polar_moment_factor), or preset: earth",
-                         key="given.dynamical_ellipticity")
-    if not 0 < H < 1:
-        raise InputError(f"the dynamical ellipticity (C - A) / C must lie between 0 and 1 for an "
-                         f"oblate planet, got {num(H)}: a sphere (H = 0) feels no torque",
                          key="given.dynamical_ellipticity")
     return H
 
@@ -146,11 +134,11 @@ def _spin(values: dict, work: Work) -> float:
         raise InputError("give rotation_period or rotation_rate, not both",
                          key="given.rotation_rate")
     if "rotation_rate" in values:
-        return _positive(values, "rotation_rate", "rotation_rate")
+        return values["rotation_rate"]
     if "rotation_period" not in values:
         raise InputError("give the planet's rotation_period (sidereal) or rotation_rate",
                          key="given.rotation_period")
-    P = _positive(values, "rotation_period", "rotation_period")
+    P = values["rotation_period"]
     return work.step("omega", 2 * PI / Sym("P_rot", P, "s"), unit="rad/s")
 
 
@@ -171,17 +159,14 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
             which = what.split(" or ")[0].split(" ")[0]
             raise InputError(f"{name} needs its {what}", key=f"given.{b}_{which}")
     amount_key, orbit_key = amount[0], orbit[0]
-    a_value = values[amount_key]
-    if a_value < 0:
-        raise InputError(f"{amount_key} cannot be negative", key=f"given.{amount_key}")
-    o_value = _positive(values, orbit_key, orbit_key)
+    a_value, o_value = values[amount_key], values[orbit_key]
     planet = None
     if (amount_key.endswith("_mass") and orbit_key.endswith("_period")) or \
             (amount_key.endswith("_ratio") and orbit_key.endswith("_distance")):
         if "planet_mass" not in values:
             raise InputError(f"{amount_key} with {orbit_key} needs the planet's mass "
                              "(planet_mass)", key="given.planet_mass")
-        planet = _positive(values, "planet_mass", "planet_mass")
+        planet = values["planet_mass"]
     if orbit_key.endswith("_period"):
         q = a_value if planet is None else a_value / planet
         if planet is not None:
@@ -207,11 +192,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("give the obliquity (angle between the spin axis and the orbit "
                          "normal)", key="given.obliquity")
     eps = values["obliquity"]
-    if not 0 <= eps < math.pi / 2:
-        raise InputError(f"obliquity must lie in [0, 90) deg, got {num(math.degrees(eps))} deg "
-                         "(at 90 deg the bulge lies in the orbit plane and the mean torque "
-                         "vanishes; for a retrograde rotator give 180 deg minus its obliquity, "
-                         "the axis then moves the other way)", key="given.obliquity")
     work.text(f"H = (C - A) / C = {num(H)}, epsilon = {num(math.degrees(eps))} deg, "
               f"omega = {qty(omega, 'rad/s')}")
     work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
@@ -238,12 +218,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             continue
         e = values.get(f"{b}_eccentricity", 0.0)
         i = values.get(f"{b}_inclination", 0.0)
-        if not 0 <= e < 1:
-            raise InputError(f"an orbit's eccentricity lies in [0, 1), got {num(e)}",
-                             key=f"given.{b}_eccentricity")
-        if not -math.pi / 2 < i < math.pi / 2:
-            raise InputError(f"inclination must lie within +-90 deg of the reference plane, got "
-                             f"{num(math.degrees(i))} deg", key=f"given.{b}_inclination")
         three_halves = Num(1.5, "3/2")
         fe_tree = (1 - Sym(f"e_{b}", e) ** 2) ** Num(-1.5, "-3/2")
         fe = work.step(f"(1 - e_{b}^2)^(-3/2)", fe_tree, state=False)
@@ -307,16 +281,19 @@ def _body_params(b: str) -> tuple[Param, ...]:
     name = BODY_NAMES[b]
     return (
         Param(f"{b}_mass_ratio", "dimensionless", f"q_{b}", f"mass of {name} over the planet's "
-              "(0 leaves it out)"),
-        Param(f"{b}_mass", "mass", f"M_{b}", f"mass of {name} (instead of {b}_mass_ratio)"),
+              "(0 leaves it out)", nonnegative=True),
+        Param(f"{b}_mass", "mass", f"M_{b}", f"mass of {name} (instead of {b}_mass_ratio)",
+              nonnegative=True),
         Param(f"{b}_orbital_period", "time", f"P_{b}", f"sidereal period of {name}'s orbit "
-              "relative to the planet"),
+              "relative to the planet", positive=True),
         Param(f"{b}_distance", "length", f"a_{b}", f"semi-major axis of {name}'s orbit "
-              f"(instead of {b}_orbital_period)"),
+              f"(instead of {b}_orbital_period)", positive=True),
         Param(f"{b}_eccentricity", "dimensionless", f"e_{b}", f"eccentricity of {name}'s orbit "
-              "(0 if absent)"),
+              "(0 if absent)", range=(0.0, 1.0), bounds="[)", reason="an orbit is an ellipse"),
         Param(f"{b}_inclination", "angle", f"i_{b}", f"inclination of {name}'s orbit to the "
-              "reference plane, averaged over its turning node (0 if absent)"),
+              "reference plane, averaged over its turning node (0 if absent)",
+              range=(-math.pi / 2, math.pi / 2), bounds="()",
+              reason="within 90 deg of the reference plane"),
     )
 
 
@@ -329,16 +306,26 @@ KIND = Kind(
         Param("preset", "word", "preset", "earth: the Earth, Sun and Moon from the IERS "
               "Conventions (2010) and the IAU 2009 constants; keys in the file override it",
               choices=("earth",)),
-        Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet"),
+        Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet",
+              range=(0.0, 1.0), bounds="()", reason="an oblate planet; a sphere (H = 0) feels "
+              "no torque"),
         Param("J2", "dimensionless", "J2", "the planet's J2 = (C - A) / (M R^2) (with "
-              "polar_moment_factor, instead of dynamical_ellipticity)"),
-        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet"),
+              "polar_moment_factor, instead of dynamical_ellipticity)", positive=True,
+              reason="the oblateness of the gravity field"),
+        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet",
+              range=(0.0, 2 / 3), bounds="(]", limits=("0", "2/3"),
+              reason="2/3 for a hollow shell, 0.4 for a uniform sphere"),
         Param("obliquity", "angle", "epsilon", "angle between the spin axis and the normal of the "
-              "reference orbit plane (the ecliptic)"),
-        Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet"),
-        Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)"),
+              "reference orbit plane (the ecliptic)", range=(0.0, math.pi / 2), bounds="[)",
+              reason="at 90 deg the bulge lies in the orbit plane and the mean torque vanishes; "
+              "for a retrograde rotator give 180 deg minus its obliquity, the axis then moves "
+              "the other way"),
+        Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet",
+              positive=True),
+        Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)",
+              positive=True),
         Param("planet_mass", "mass", "M", "mass of the planet (only to go with a body's mass "
-              "and period, or mass_ratio and distance)"),
+              "and period, or mass_ratio and distance)", positive=True),
     ) + _body_params("sun") + _body_params("moon"),
     answers=(
         AnswerSpec("precession_rate", "rate", "Omega_p", "rate at which the spin axis turns "

@@ -44,9 +44,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("drift_rate", "Omega_d", [rate], "rate")
     if "duration" in given:
         t = given["duration"]
-        if t < 0:
-            raise InputError(f"duration must not be negative, got {qty(t, 's')}",
-                             key="given.duration")
         drift = Let(Sym("Omega_d", rate, "rad/s"), Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"))
         angle = work.step("drift angle", drift * Sym("t", t, "s"), unit="rad",
                           note=f"= {num(math.degrees(rate * t))} deg")
@@ -83,17 +80,11 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
         return M, rate
     if ways == ["drift_period"]:
         T = given["drift_period"]
-        if T <= 0:
-            raise InputError(f"drift_period must be positive, got {qty(T, 's')}",
-                             key="given.drift_period")
         work.section("Drift rate from the period of one full turn")
         rate = work.step("Omega_d", 2 * PI / Sym("T_d", T, "s"), unit="rad/s",
                          note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
     else:
         rate = given["drift_rate"]
-        if rate < 0:
-            raise InputError("a drift budget is a magnitude: give it positive",
-                             key="given.drift_rate")
     work.section("Largest disturbing moment for the drift budget: M = H Omega_d")
     M = work.step("M", Sym("H", abs(H), "kg m^2/s") * Sym("Omega_d", rate, "rad/s"), unit="N*m")
     work.text("any larger moment about x makes the spin axis drift faster than the budget")
@@ -112,17 +103,13 @@ def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | Non
             missing = "I_x" if "I_x" not in given else "I_y"
             raise InputError("give both I_x and I_y (or one I for both)", key=f"given.{missing}")
         Ix, Iy = given["I_x"], given["I_y"]
-    elif body.I_pivot is not None:
-        Ix = Iy = body.I_pivot
-    elif body.I_cg is not None:
-        Ix = Iy = body.I_cg
+    elif body.I_pivot is not None or body.I_cg is not None:  # I, I_x, I_y declare > 0
+        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.I_cg
+        if Ix <= 0:
+            raise InputError(f"a moment of inertia must be positive, got the rotor's "
+                             f"{qty(Ix, 'kg*m^2')}", key="given.I_pivot")
     else:
         return None
-    for key, value in (("I_x", Ix), ("I_y", Iy)):
-        if value <= 0:
-            name = "I" if "I" in given else key if key in given else "I_pivot"
-            raise InputError(f"a moment of inertia must be positive, got "
-                             f"{qty(value, 'kg*m^2')}", key=f"given.{name}")
     return Ix, Iy
 
 
@@ -191,15 +178,17 @@ KIND = Kind(
               "(instead of J and spin)"),
         Param("moment", "moment", "M", "disturbing moment about a gimbal axis at right angles "
               "to the spin (friction, drag, imbalance)"),
-        Param("drift_rate", "rate", "Omega_d", "drift budget (instead of moment), e.g. '0.1 deg/h'"),
+        Param("drift_rate", "rate", "Omega_d", "drift budget (instead of moment), e.g. "
+              "'0.1 deg/h'", nonnegative=True, reason="a drift budget is a magnitude"),
         Param("drift_period", "time", "T_d", "time for one full turn of drift (instead of "
-              "drift_rate)"),
-        Param("duration", "time", "t", "time the moment acts, for drift_angle"),
+              "drift_rate)", positive=True),
+        Param("duration", "time", "t", "time the moment acts, for drift_angle",
+              nonnegative=True),
         Param("I", "inertia", "I", "transverse inertia of rotor and gimbals about each gimbal "
-              "axis"),
+              "axis", positive=True),
         Param("I_x", "inertia", "I_x", "about the axis of the moment (where the outer gimbal "
-              "adds inertia)"),
-        Param("I_y", "inertia", "I_y", "about the drift axis"),
+              "adds inertia)", positive=True),
+        Param("I_y", "inertia", "I_y", "about the drift axis", positive=True),
     ),
     answers=(
         AnswerSpec("angular_momentum", "angular_momentum", "H", "spin angular momentum J psidot"),

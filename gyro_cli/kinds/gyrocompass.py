@@ -32,13 +32,7 @@ POLAR_WARNING_LATITUDE = math.radians(70)
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     lat = given["latitude"]
-    if not -math.pi / 2 <= lat <= math.pi / 2:
-        raise InputError(f"latitude lies between -90 and 90 deg, got {num(math.degrees(lat))} "
-                         "deg", key="given.latitude")
     Omega = given["earth_rate"]
-    if Omega <= 0:
-        raise InputError("earth_rate must be positive (the Earth's sidereal rate, 7.292e-5 "
-                         "rad/s)", key="given.earth_rate")
     if cos_theta(lat) == 0:
         raise InputError(f"at latitude {num(math.degrees(lat))} deg (a pole) a gyrocompass cannot "
                          "settle: the Earth's rate has no horizontal component (Omega_E "
@@ -51,9 +45,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "north-seeking moment", key="given.spin")
     H_abs = abs(H)
     alpha = given["deviation"]
-    if not -math.pi <= alpha <= math.pi:
-        raise InputError("deviation lies between -180 and 180 deg (east of north positive)",
-                         key="given.deviation")
 
     work.section("Conventions")
     work.text("E, N, U: east, north, up at the site. The rotor's spin vector (right-hand rule) "
@@ -125,8 +116,6 @@ def _vertical_inertia(given: Given, work: Work) -> float | None:
     body = given.body
     if "I_vertical" in given:
         I_v = given["I_vertical"]
-        if I_v <= 0:
-            raise InputError("I_vertical must be positive", key="given.I_vertical")
         if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):
             raise InputError(f"I_vertical = {qty(I_v, 'kg*m^2')} is less than the rotor's own "
                              f"moment about a diameter, I_G = {qty(body.I_cg, 'kg*m^2')}: the "
@@ -145,17 +134,21 @@ KIND = Kind(
             "(north-seeking moment, period of the swing about north)",
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
-        Param("latitude", "angle", "lambda", "latitude of the site (north or south)"),
+        Param("latitude", "angle", "lambda", "latitude of the site (north or south)",
+              range=(-math.pi / 2, math.pi / 2)),
         Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
               "(instead of spin)"),
         Param("I_vertical", "inertia", "I_v", "moment of inertia of the sensitive element "
-              "(rotor and its gimbal) about the vertical; default the rotor's I_cg"),
+              "(rotor and its gimbal) about the vertical; default the rotor's I_cg",
+              positive=True),
         Param("deviation", "angle", "alpha", "angle of the spin vector from north, east "
-              "positive", default="0 deg"),
+              "positive", default="0 deg", range=(-math.pi, math.pi),
+              reason="east of north positive"),
         Param("earth_rate", "rate", "Omega_E", "the Earth's rate of rotation (sidereal)",
-              default="7.292115e-5 rad/s"),
+              default="7.292115e-5 rad/s", positive=True,
+              reason="the Earth's sidereal rate is 7.292e-5 rad/s"),
     ),
     answers=(
         AnswerSpec("period", "time", "T", "period of small swings about north"),
