@@ -25,7 +25,8 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
+TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
+              "ship", "two_wheeler"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -310,3 +311,81 @@ def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_
         if s.symbol == "phidot" and "M" in v:  # theta = 90 deg: M / (J psidot), exact
             assert s.value == pytest.approx(v["M"] / (J * v["psidot"]), rel=1e-12)
     assert steps
+
+
+SHIP = """\
+id: s
+kind: ship
+given: {{mass: 6000 kg, k_axial: 450 mm, spin: 2400 rpm, rotor_sense: clockwise_from_stern,
+        {motion}}}
+find: [couple]
+"""
+
+
+@pytest.mark.parametrize("motion", [
+    "motion: steering, speed: 20 knot, turn_radius: 250 m, turn: right",
+    "motion: pitching, amplitude: 7.5 deg, period: 18 s, bow: rising",
+    "motion: pitching, between_extremes: 12 deg, frequency: 0.025 Hz, bow: falling",
+    "motion: rolling, roll_rate: 0.035 rad/s",
+    "motion: rolling"])
+def test_ship_trees_agree_with_the_physics_functions(motion, tmp_path):
+    """H, omega_p, the pitching's omega_1, omega_p,max and alpha_max and the couple, from
+    the step trees, against physics/vehicles.py's vectors and Pitching."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SHIP.format(motion=motion))
+    steps, syms = _tree_steps(path)
+    J, omega = syms["J"], syms["omega"]
+    H = V.spin_vector(J, omega, V.spin_direction("clockwise_from_stern"))
+    assert steps["H"].value == pytest.approx(V.norm(H), rel=1e-12)
+    if "steering" in motion:
+        wp = V.steering_precession(syms["v"], syms["R"], "right")
+        assert steps["omega_p"].value == pytest.approx(V.norm(wp), rel=1e-12)
+    elif "pitching" in motion:
+        phi = syms["phi"]
+        if "phi_total" in syms:
+            assert steps["phi"].si[0] == pytest.approx(syms["phi_total"] / 2, rel=1e-12)
+            assert steps["T"].value == pytest.approx(2 * math.pi / syms["omega_1"], rel=1e-12)
+        p = V.pitching(phi, steps["T"].value if "T" in steps else syms["T"])
+        if "omega_1" in steps:  # from the period (from a frequency it is given)
+            assert steps["omega_1"].value == pytest.approx(p.frequency, rel=1e-12)
+        assert steps["omega_p,max"].value == pytest.approx(p.max_precession, rel=1e-12)
+        assert steps["alpha_max"].value == pytest.approx(p.max_acceleration, rel=1e-12)
+        wp = V.pitching_precession(p.max_precession, "rising")
+    else:
+        wp = V.rolling_precession(syms["omega_p"])
+    assert steps["C"].value == pytest.approx(V.norm(V.couple_on_rotor(wp, H)), rel=1e-12,
+                                             abs=1e-9)
+
+
+TWO_WHEELER = """\
+id: t
+kind: two_wheeler
+given: {{mass: 250 kg, cg_height: 0.6 m, wheel_inertia: 1 kg*m^2, wheel_radius: 300 mm,
+        engine_inertia: 0.3 kg*m^2, gear_ratio: 5, engine_sense: {sense}, speed: 90 km/h,
+        turn_radius: 50 m}}
+find: [heel_angle]
+"""
+
+
+@pytest.mark.parametrize("sense", ["same", "opposite"])
+def test_two_wheeler_trees_agree_with_the_physics_functions(sense, tmp_path):
+    """The rates, the couples and the heel from the step trees against
+    physics/vehicles.py's two_wheeler (tan(theta) = (C_g + C_c) / (m g h)) and
+    spin_momentum."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TWO_WHEELER.format(sense=sense))
+    steps, v = _tree_steps(path)
+    s = V.two_wheeler(v["m"], v["g"], v["h"], v["I_w"], v["r_w"], v["I_E"], v["G"], sense,
+                      v["v"], v["R"])
+    assert steps["omega_w"].value == pytest.approx(s.wheel_rate, rel=1e-12)
+    assert steps["omega_E"].value == pytest.approx(v["G"] * s.wheel_rate, rel=1e-12)
+    assert steps["omega_p"].value == pytest.approx(s.precession, rel=1e-12)
+    assert steps["H"].value == pytest.approx(V.spin_momentum(
+        2 * v["I_w"], v["I_E"], v["G"], sense, s.wheel_rate), rel=1e-12)
+    assert steps["C_g"].value == pytest.approx(s.gyroscopic_couple, rel=1e-12)
+    assert steps["C_c"].value == pytest.approx(s.centrifugal_couple, rel=1e-12)
+    assert steps["theta"].si[0] == pytest.approx(s.heel, rel=1e-12)
