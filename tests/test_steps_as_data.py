@@ -26,7 +26,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
-              "ship", "two_wheeler"}
+              "ship", "two_wheeler", "four_wheeler"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -389,3 +389,35 @@ def test_two_wheeler_trees_agree_with_the_physics_functions(sense, tmp_path):
     assert steps["C_g"].value == pytest.approx(s.gyroscopic_couple, rel=1e-12)
     assert steps["C_c"].value == pytest.approx(s.centrifugal_couple, rel=1e-12)
     assert steps["theta"].si[0] == pytest.approx(s.heel, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["four_wheeler_trolley_2500kg.yaml",
+                                  "four_wheeler_trolley_2700kg.yaml",
+                                  "four_wheeler_railcar_limit.yaml"])
+def test_four_wheeler_trees_agree_with_the_physics_functions(name):
+    """The rotors' totals, the couples, each wheel's share and the limiting speed from the
+    step trees against physics/vehicles.py's four_wheeler and limiting_speed_squared."""
+    from gyro_cli.physics import vehicles as V
+
+    steps, v = _tree_steps(ROOT / "problems" / name)
+    data = yaml.safe_load((ROOT / "problems" / name).read_text())["given"]
+    sense = data.get("engine_sense", "same")
+    wheels = 4 * v["I_w"] if "I_w" in v else 2 * v["I_axle"]
+    engines = v["n_E"] * v["I_E"]
+    assert steps["sum I_w"].value == pytest.approx(wheels, rel=1e-12)
+    assert steps["sum I_E"].value == pytest.approx(engines, rel=1e-12)
+    assert steps["I_eq"].value == pytest.approx(V.spin_momentum(
+        wheels, engines, v["G"], sense, 1.0), rel=1e-12)
+    args = (v["m"], v["g"], v["h"], v["x"], v["r_w"])
+    if "speed" in data:
+        s = V.four_wheeler(*args, wheels, engines, v["G"], sense, v["v"], v["R"])
+        for symbol, expected in (("omega_w", s.wheel_rate), ("omega_p", s.precession),
+                                 ("H", s.gyroscopic_couple / s.precession),
+                                 ("C_g", s.gyroscopic_couple), ("C_c", s.centrifugal_couple),
+                                 ("P_w", s.weight_share), ("P_g", s.gyroscopic_share),
+                                 ("P_c", s.centrifugal_share), ("R_outer", s.outer),
+                                 ("R_inner", s.inner)):
+            assert steps[symbol].value == pytest.approx(expected, rel=1e-12), symbol
+    if "v_lim" in steps:
+        v2 = V.limiting_speed_squared(*args, wheels, engines, v["G"], sense, v["R"])
+        assert steps["v_lim"].value == pytest.approx(math.sqrt(v2), rel=1e-12)
