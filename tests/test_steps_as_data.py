@@ -26,7 +26,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
-              "ship", "two_wheeler", "four_wheeler"}
+              "ship", "two_wheeler", "four_wheeler", "rolling_disk"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -421,3 +421,63 @@ def test_four_wheeler_trees_agree_with_the_physics_functions(name):
     if "v_lim" in steps:
         v2 = V.limiting_speed_squared(*args, wheels, engines, v["G"], sense, v["R"])
         assert steps["v_lim"].value == pytest.approx(math.sqrt(v2), rel=1e-12)
+
+
+ROLLING = """\
+id: d
+kind: rolling_disk
+given: {{mass: 1.2 kg, shape: {shape}, radius: 0.35 m, {given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("shape, given, find", [
+    ("disk", "path_radius: 0.6 m, precession: 48 rpm", "normal_force, moment, precession_period"),
+    ("disk", "path_radius: 0.6 m, precession: -48 rpm", "normal_force, moment"),
+    ("ring", "arrangement: free, tilt: 5 deg, path_radius: 20 m", "speed, precession_period"),
+    ("ring", "arrangement: free, tilt: 5 deg, speed: 3 m/s", "path_radius"),
+    ("disk", "arrangement: free, speed: 3 m/s, path_radius: 20 m", "tilt, upright_speed")])
+def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path):
+    """Each step from its tree against the kind's float functions (axle_pivot_spin,
+    axle_pivot_normal_force, free_from_tilt_and_path, free_from_speed_and_tilt) and
+    physics/stability.py's disk_critical_axial_rate."""
+    from gyro_cli.core.expr import symbols
+    from gyro_cli.kinds import rolling_disk as K
+    from gyro_cli.physics.stability import disk_critical_axial_rate
+
+    path = tmp_path / "d.yaml"
+    path.write_text(ROLLING.format(shape=shape, given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    v = {}
+    for s in steps:
+        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    by = {s.symbol: s for s in steps}
+    m, g, r, J = v["m"], v["g"], v["r"], v["J"]
+    if "precession:" in given:
+        Omega, R = v["Omega"], v["R"]
+        assert by["psidot"].value == pytest.approx(K.axle_pivot_spin(Omega, R, r), rel=1e-12)
+        assert by["dH_O/dt"].value == pytest.approx(J * K.axle_pivot_spin(Omega, R, r) * Omega,
+                                                    rel=1e-12)
+        N = K.axle_pivot_normal_force(m, g, J, Omega, r)
+        assert by["N"].value == pytest.approx(N, rel=1e-12)
+        assert by["M"].value == pytest.approx(J * Omega ** 2 * R / r, rel=1e-9)
+        if "T" in by:
+            assert by["T"].value == pytest.approx(2 * math.pi / abs(Omega), rel=1e-12)
+        return
+    I = v["I_G"]
+    if "path_radius:" in given and "tilt:" in given:
+        s = K.free_from_tilt_and_path(m, g, r, J, I, v["beta"], v["R"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["Omega"].value == pytest.approx(s.precession, rel=1e-12)
+        assert by["v"].value == pytest.approx(s.speed, rel=1e-12)
+    elif "tilt:" in given:
+        s = K.free_from_speed_and_tilt(m, g, r, J, I, v["beta"], v["v"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["R"].value == pytest.approx(s.path_radius, rel=1e-12)
+    else:
+        [s] = K.free_from_speed_and_path(m, g, r, J, I, 3.0, 20.0)  # as given
+    assert by["omega_z"].value == pytest.approx(s.axial_rate, rel=1e-12)
+    assert by["psidot"].value == pytest.approx(s.spin, rel=1e-12)
+    assert by["v_upright"].value == pytest.approx(disk_critical_axial_rate(m, g, r, I, J) * r,
+                                                  rel=1e-12)
