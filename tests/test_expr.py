@@ -174,3 +174,15 @@ def test_a_tree_step_keeps_the_tree_and_prints_the_line():
     assert value == step.value == step.expr.value
     assert step.as_text().startswith("a = 2 m g l / J = 2 (0.08498 kg) (9.815 m/s^2) (0.03810 m)")
     assert step.as_text().endswith("1/s^2    (Eq. 11.18)")
+
+
+def test_a_total_over_rotors_is_set_as_a_sum():
+    """``sum I_w`` (four_wheeler's total of the wheels' inertias) is set \\sum I_w in LaTeX;
+    the text keeps the name and the JSON ``expr`` an identifier."""
+    from gyro_cli.render.exprnodes import latex
+
+    tree = Sym("sum I_w", 36.0, "kg m^2") - Sym("G", 5.0) * Sym("sum I_E", 24.0, "kg m^2")
+    assert latex(tree) == r"\sum I_{w} - G \sum I_{E}"
+    assert latex(tree, values=True).startswith(r"36.00\,\mathrm{kg\,m^{2}} - 5.000")
+    assert E.formula(tree) == "sum I_w - G sum I_E"
+    assert E.python(tree) == "sum_I_w-G*sum_I_E"

@@ -26,7 +26,8 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: kinds whose every equation step is an expression tree (the others are migrating)
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
-              "torque_free", "rate_gyro"}
+              "torque_free", "rate_gyro", "ship", "two_wheeler", "four_wheeler",
+              "rolling_disk"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -435,3 +436,173 @@ def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
             assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
         assert steps["|H|"].value == pytest.approx(ek.norm(H), rel=1e-12)
         assert answers["kinetic_energy"][0] == pytest.approx(steps["T"].value, rel=1e-12)
+
+
+SHIP = """\
+id: s
+kind: ship
+given: {{mass: 6000 kg, k_axial: 450 mm, spin: 2400 rpm, rotor_sense: clockwise_from_stern,
+        {motion}}}
+find: [couple]
+"""
+
+
+@pytest.mark.parametrize("motion", [
+    "motion: steering, speed: 20 knot, turn_radius: 250 m, turn: right",
+    "motion: pitching, amplitude: 7.5 deg, period: 18 s, bow: rising",
+    "motion: pitching, between_extremes: 12 deg, frequency: 0.025 Hz, bow: falling",
+    "motion: rolling, roll_rate: 0.035 rad/s",
+    "motion: rolling"])
+def test_ship_trees_agree_with_the_physics_functions(motion, tmp_path):
+    """H, omega_p, the pitching's omega_1, omega_p,max and alpha_max and the couple, from
+    the step trees, against physics/vehicles.py's vectors and Pitching."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SHIP.format(motion=motion))
+    steps, syms = _tree_steps(path)
+    J, omega = syms["J"], syms["omega"]
+    H = V.spin_vector(J, omega, V.spin_direction("clockwise_from_stern"))
+    assert steps["H"].value == pytest.approx(V.norm(H), rel=1e-12)
+    if "steering" in motion:
+        wp = V.steering_precession(syms["v"], syms["R"], "right")
+        assert steps["omega_p"].value == pytest.approx(V.norm(wp), rel=1e-12)
+    elif "pitching" in motion:
+        phi = syms["phi"]
+        if "phi_total" in syms:
+            assert steps["phi"].si[0] == pytest.approx(syms["phi_total"] / 2, rel=1e-12)
+            assert steps["T"].value == pytest.approx(2 * math.pi / syms["omega_1"], rel=1e-12)
+        p = V.pitching(phi, steps["T"].value if "T" in steps else syms["T"])
+        if "omega_1" in steps:  # from the period (from a frequency it is given)
+            assert steps["omega_1"].value == pytest.approx(p.frequency, rel=1e-12)
+        assert steps["omega_p,max"].value == pytest.approx(p.max_precession, rel=1e-12)
+        assert steps["alpha_max"].value == pytest.approx(p.max_acceleration, rel=1e-12)
+        wp = V.pitching_precession(p.max_precession, "rising")
+    else:
+        wp = V.rolling_precession(syms["omega_p"])
+    assert steps["C"].value == pytest.approx(V.norm(V.couple_on_rotor(wp, H)), rel=1e-12,
+                                             abs=1e-9)
+
+
+TWO_WHEELER = """\
+id: t
+kind: two_wheeler
+given: {{mass: 250 kg, cg_height: 0.6 m, wheel_inertia: 1 kg*m^2, wheel_radius: 300 mm,
+        engine_inertia: 0.3 kg*m^2, gear_ratio: 5, engine_sense: {sense}, speed: 90 km/h,
+        turn_radius: 50 m}}
+find: [heel_angle]
+"""
+
+
+@pytest.mark.parametrize("sense", ["same", "opposite"])
+def test_two_wheeler_trees_agree_with_the_physics_functions(sense, tmp_path):
+    """The rates, the couples and the heel from the step trees against
+    physics/vehicles.py's two_wheeler (tan(theta) = (C_g + C_c) / (m g h)) and
+    spin_momentum."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TWO_WHEELER.format(sense=sense))
+    steps, v = _tree_steps(path)
+    s = V.two_wheeler(v["m"], v["g"], v["h"], v["I_w"], v["r_w"], v["I_E"], v["G"], sense,
+                      v["v"], v["R"])
+    assert steps["omega_w"].value == pytest.approx(s.wheel_rate, rel=1e-12)
+    assert steps["omega_E"].value == pytest.approx(v["G"] * s.wheel_rate, rel=1e-12)
+    assert steps["omega_p"].value == pytest.approx(s.precession, rel=1e-12)
+    assert steps["H"].value == pytest.approx(V.spin_momentum(
+        2 * v["I_w"], v["I_E"], v["G"], sense, s.wheel_rate), rel=1e-12)
+    assert steps["C_g"].value == pytest.approx(s.gyroscopic_couple, rel=1e-12)
+    assert steps["C_c"].value == pytest.approx(s.centrifugal_couple, rel=1e-12)
+    assert steps["theta"].si[0] == pytest.approx(s.heel, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["four_wheeler_trolley_2500kg.yaml",
+                                  "four_wheeler_trolley_2700kg.yaml",
+                                  "four_wheeler_railcar_limit.yaml"])
+def test_four_wheeler_trees_agree_with_the_physics_functions(name):
+    """The rotors' totals, the couples, each wheel's share and the limiting speed from the
+    step trees against physics/vehicles.py's four_wheeler and limiting_speed_squared."""
+    from gyro_cli.physics import vehicles as V
+
+    steps, v = _tree_steps(ROOT / "problems" / name)
+    data = yaml.safe_load((ROOT / "problems" / name).read_text())["given"]
+    sense = data.get("engine_sense", "same")
+    wheels = 4 * v["I_w"] if "I_w" in v else 2 * v["I_axle"]
+    engines = v["n_E"] * v["I_E"]
+    assert steps["sum I_w"].value == pytest.approx(wheels, rel=1e-12)
+    assert steps["sum I_E"].value == pytest.approx(engines, rel=1e-12)
+    assert steps["I_eq"].value == pytest.approx(V.spin_momentum(
+        wheels, engines, v["G"], sense, 1.0), rel=1e-12)
+    args = (v["m"], v["g"], v["h"], v["x"], v["r_w"])
+    if "speed" in data:
+        s = V.four_wheeler(*args, wheels, engines, v["G"], sense, v["v"], v["R"])
+        for symbol, expected in (("omega_w", s.wheel_rate), ("omega_p", s.precession),
+                                 ("H", s.gyroscopic_couple / s.precession),
+                                 ("C_g", s.gyroscopic_couple), ("C_c", s.centrifugal_couple),
+                                 ("P_w", s.weight_share), ("P_g", s.gyroscopic_share),
+                                 ("P_c", s.centrifugal_share), ("R_outer", s.outer),
+                                 ("R_inner", s.inner)):
+            assert steps[symbol].value == pytest.approx(expected, rel=1e-12), symbol
+    if "v_lim" in steps:
+        v2 = V.limiting_speed_squared(*args, wheels, engines, v["G"], sense, v["R"])
+        assert steps["v_lim"].value == pytest.approx(math.sqrt(v2), rel=1e-12)
+
+
+ROLLING = """\
+id: d
+kind: rolling_disk
+given: {{mass: 1.2 kg, shape: {shape}, radius: 0.35 m, {given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("shape, given, find", [
+    ("disk", "path_radius: 0.6 m, precession: 48 rpm", "normal_force, moment, precession_period"),
+    ("disk", "path_radius: 0.6 m, precession: -48 rpm", "normal_force, moment"),
+    ("ring", "arrangement: free, tilt: 5 deg, path_radius: 20 m", "speed, precession_period"),
+    ("ring", "arrangement: free, tilt: 5 deg, speed: 3 m/s", "path_radius"),
+    ("disk", "arrangement: free, speed: 3 m/s, path_radius: 20 m", "tilt, upright_speed")])
+def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path):
+    """Each step from its tree against the kind's float functions (axle_pivot_spin,
+    axle_pivot_normal_force, free_from_tilt_and_path, free_from_speed_and_tilt) and
+    physics/stability.py's disk_critical_axial_rate."""
+    from gyro_cli.core.expr import symbols
+    from gyro_cli.kinds import rolling_disk as K
+    from gyro_cli.physics.stability import disk_critical_axial_rate
+
+    path = tmp_path / "d.yaml"
+    path.write_text(ROLLING.format(shape=shape, given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    v = {}
+    for s in steps:
+        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    by = {s.symbol: s for s in steps}
+    m, g, r, J = v["m"], v["g"], v["r"], v["J"]
+    if "precession:" in given:
+        Omega, R = v["Omega"], v["R"]
+        assert by["psidot"].value == pytest.approx(K.axle_pivot_spin(Omega, R, r), rel=1e-12)
+        assert by["dH_O/dt"].value == pytest.approx(J * K.axle_pivot_spin(Omega, R, r) * Omega,
+                                                    rel=1e-12)
+        N = K.axle_pivot_normal_force(m, g, J, Omega, r)
+        assert by["N"].value == pytest.approx(N, rel=1e-12)
+        assert by["M"].value == pytest.approx(J * Omega ** 2 * R / r, rel=1e-9)
+        if "T" in by:
+            assert by["T"].value == pytest.approx(2 * math.pi / abs(Omega), rel=1e-12)
+        return
+    I = v["I_G"]
+    if "path_radius:" in given and "tilt:" in given:
+        s = K.free_from_tilt_and_path(m, g, r, J, I, v["beta"], v["R"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["Omega"].value == pytest.approx(s.precession, rel=1e-12)
+        assert by["v"].value == pytest.approx(s.speed, rel=1e-12)
+    elif "tilt:" in given:
+        s = K.free_from_speed_and_tilt(m, g, r, J, I, v["beta"], v["v"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["R"].value == pytest.approx(s.path_radius, rel=1e-12)
+    else:
+        [s] = K.free_from_speed_and_path(m, g, r, J, I, 3.0, 20.0)  # as given
+    assert by["omega_z"].value == pytest.approx(s.axial_rate, rel=1e-12)
+    assert by["psidot"].value == pytest.approx(s.spin, rel=1e-12)
+    assert by["v_upright"].value == pytest.approx(disk_critical_axial_rate(m, g, r, I, J) * r,
+                                                  rel=1e-12)

@@ -30,9 +30,11 @@ from dataclasses import dataclass
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Let, Sym, absolute, cos, sin, sqrt
 from ..core.work import Work, num, qty
 
 RPM = 2 * math.pi / 60
+NAN = float("nan")  # a symbol named in a definition, its value not needed
 
 
 # ---- physics on floats ------------------------------------------------------
@@ -176,29 +178,29 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
               "the axle, from the pin O outward to the disk; n = K x k, horizontal, the way the "
               "disk's centre moves when Omega > 0. The contact point is directly below the "
               "centre, at R from the shaft.")
+    Omega_, R_, r_ = Sym("Omega", Omega, "rad/s"), Sym("R", R, "m"), Sym("r", r, "m")
+    m_, g_, J_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("J", J, "kg m^2")
     work.section("Rolling without slipping: v_contact = Omega R n + psidot r n = 0")
-    spin = work.step("psidot", "-Omega R / r", f"-{qty(Omega, 'rad/s')} {qty(R, 'm')} / "
-                     f"{qty(r, 'm')}", axle_pivot_spin(Omega, R, r), "rad/s")
+    spin = work.step("psidot", -Omega_ * R_ / r_, unit="rad/s")  # axle_pivot_spin
     work.text("negative: seen from outside the disk (looking along -k toward the shaft) the "
               "disk turns clockwise when Omega is counter-clockwise from above")
     work.section("Moments about the pin O: dH_O/dt = Omega K x (J psidot k + I_O Omega K) "
                  "= J psidot Omega n (Eq. 11.29)")
     work.text("H_O = J psidot k + I_O Omega K: the angular momentum about the pin O, where I_O "
               "is the disk's moment of inertia about the vertical through O")
-    dH = work.step("dH_O/dt", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                   f"({qty(Omega, 'rad/s')})", J * spin * Omega, "N*m", note="along n")
+    dH = work.step("dH_O/dt", J_ * Sym("psidot", spin, "rad/s") * Omega_, unit="N*m",
+                   note="along n")
     work.text("about n: gravity m g R (+), the plane's normal force N gives -N R; the pin force "
               "passes through O "
               "and the plane is taken to give no radial friction (the pin holds the disk on "
               "its circle)")
     work.text("m g R - N R = J psidot Omega = -J Omega^2 R / r")
-    N = work.step("N", "m g + J Omega^2 / r", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) + "
-                  f"{qty(J, 'kg*m^2')} ({qty(Omega, 'rad/s')})^2 / {qty(r, 'm')}",
-                  axle_pivot_normal_force(m, g, J, Omega, r), "N")
-    moment = work.step("M", "(N - m g) R = J Omega^2 R / r", f"({qty(N, 'N')} - "
-                       f"{qty(m * g, 'N')}) {qty(R, 'm')}", (N - m * g) * R, "N*m",
-                       note="net moment of gravity and the normal force about O, positive "
-                            "lifting the disk's outer side (it equals -dH_O/dt along n)")
+    N = work.step("N", m_ * g_ + J_ * Omega_ ** 2 / r_, unit="N")  # axle_pivot_normal_force
+    weight = Let(Sym("mg", m * g, "N"), Sym("m", NAN) * Sym("g", NAN))  # m g, shown by value
+    moment = work.step("M", (Sym("N", N, "N") - weight) * R_, unit="N*m",
+                       note="equal to J Omega^2 R / r; the net moment of gravity and the normal force "
+                            "about O, positive lifting the disk's outer side (it equals "
+                            "-dH_O/dt along n)")
     work.answer("normal_force", "N", [N], "force")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("moment", "M", [moment], "moment")
@@ -214,8 +216,9 @@ def _lap_time(rates: list[float], work: Work) -> None:
         raise InputError("the precession is 0: the disk never completes a lap",
                          key="find.precession_period")
     work.section("Time for one lap of the circle")
-    periods = [work.step("T", "2 pi / |Omega|", f"2 pi / {qty(abs(rate), 'rad/s')}",
-                         2 * math.pi / abs(rate), "s") for rate in rates]
+    periods = [work.step("T", 2 * PI / Let(Sym("abs_Omega", abs(rate), "rad/s"),
+                                           absolute(Sym("Omega", NAN))), unit="s")
+               for rate in rates]
     work.answer("precession_period", "T", periods, "time")
 
 
@@ -226,6 +229,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.precession")
     # J, I_G and m are all proportional to the mass where it is not given: the rates cancel it
     m, g, J, I, r = body.mass_for_rates, body.g, body.J, body.I_cg, body.radius
+    m_, g_, J_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("J", J, "kg m^2"), Sym("r", r, "m")
+    I_ = Sym("I_G", I, "kg m^2")
     known = [k for k in ("path_radius", "speed", "tilt") if k in given]
     if len(known) != 2:
         raise InputError(f"give exactly two of path_radius, speed and tilt (got "
@@ -256,18 +261,24 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                              "outside the axis: no steady rolling on this circle (take a larger "
                              "path_radius or a smaller tilt)", key="given.path_radius")
         s = states[0]
-        work.step("rho", "R - r sin(beta)", f"{qty(s.path_radius, 'm')} - {qty(r, 'm')} "
-                  f"sin({num(math.degrees(s.tilt))} deg)", s.centre_radius, "m")
-        work.step("Omega", "sqrt(m g r sin(beta) / (cos(beta) [rho (m r + J / r) + I_G "
-                  "sin(beta)]))", value=s.precession, unit="rad/s")
-        work.step("v", "Omega rho", value=s.speed, unit="m/s")
+        beta, R_ = Sym("beta", s.tilt, "deg"), Sym("R", given["path_radius"], "m")
+        rho = Sym("rho", work.step("rho", R_ - r_ * sin(beta), unit="m"), "m")
+        # the moment equation solved for Omega (free_from_tilt_and_path)
+        Omega = work.step("Omega", sqrt(m_ * g_ * r_ * sin(beta) / (cos(beta) * (
+            rho * (m_ * r_ + J_ / r_) + I_ * sin(beta)))), unit="rad/s", substitute=False)
+        work.step("v", Sym("Omega", Omega, "rad/s") * rho, unit="m/s", substitute=False)
     elif "tilt" in given:
         s = free_from_speed_and_tilt(m, g, r, J, I, given["tilt"], given["speed"])
         states = [s]
         work.text("a quadratic in rho: m g r sin(beta) rho^2 - v^2 cos(beta) (m r + J / r) rho "
                   "- v^2 cos(beta) I_G sin(beta) = 0; one positive root")
-        work.step("rho", "positive root", value=s.centre_radius, unit="m")
-        work.step("R", "rho + r sin(beta)", value=s.path_radius, unit="m")
+        beta, v_ = Sym("beta", s.tilt, "deg"), Sym("v", given["speed"], "m/s")
+        a = m_ * g_ * r_ * sin(beta)
+        b = v_ ** 2 * cos(beta) * (m_ * r_ + J_ / r_)
+        c = v_ ** 2 * cos(beta) * I_ * sin(beta)
+        rho = work.step("rho", (b + sqrt(b ** 2 + 4 * a * c)) / (2 * a), unit="m",
+                        substitute=False)
+        work.step("R", Sym("rho", rho, "m") + r_ * sin(beta), unit="m", substitute=False)
     else:
         states = free_from_speed_and_path(m, g, r, J, I, given["speed"], given["path_radius"])
         if not states:
@@ -281,9 +292,9 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                       note=f"rho = {qty(s.centre_radius, 'm')}, Omega = "
                            f"{qty(s.precession, 'rad/s')}")
     for s in states:
-        work.step("omega_z", "-v / r", f"-{qty(s.speed, 'm/s')} / {qty(r, 'm')}", s.axial_rate,
-                  "rad/s", note="rolling")
-        work.step("psidot", "-Omega R / r", value=s.spin, unit="rad/s",
+        work.step("omega_z", -Sym("v", s.speed, "m/s") / r_, unit="rad/s", note="rolling")
+        work.step("psidot", -Sym("Omega", s.precession, "rad/s") * Sym("R", s.path_radius, "m")
+                  / r_, unit="rad/s", substitute=False,
                   note="spin relative to the precessing frame")
         work.check(f"beta = {num(math.degrees(s.tilt))} deg: residual of the moment equation "
                    f"{free_residual(m, g, r, J, I, s.tilt, s.centre_radius, s.speed):.3g} "
@@ -312,7 +323,7 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
 def _stability(m: float, g: float, r: float, J: float, I: float, states: list[FreeDisk],
                work: Work) -> None:
     """Each steady state's stability: tilt perturbed, linearised (physics/stability.py)."""
-    from ..physics.stability import UNSTABLE, disk_critical_axial_rate, disk_rolling
+    from ..physics.stability import UNSTABLE, disk_rolling
 
     work.section("Stability: small changes of the tilt, linearised rolling equations "
                  "(betadot'' + k betadot = 0)")
@@ -338,12 +349,12 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
                       f"{qty(math.log(2) / verdict.growth_rate, 's')}")
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
-    upright = work.step("v_upright", "r sqrt(m g r I_G / (J (J + m r^2)))",
-                        f"{qty(r, 'm')} sqrt(({qty(m, 'kg')}) ({qty(g, 'm/s^2')}) ({qty(r, 'm')})"
-                        f" ({qty(I, 'kg*m^2')}) / (({qty(J, 'kg*m^2')}) ({qty(J + m * r * r, 'kg*m^2')})))",
-                        disk_critical_axial_rate(m, g, r, I, J) * r, "m/s",
-                        note="upright rolling in a straight line (beta = 0, Omega = 0) is "
-                             "stable above this speed (k > 0)")
+    m_, g_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("r", r, "m")
+    J_, I_ = Sym("J", J, "kg m^2"), Sym("I_G", I, "kg m^2")
+    # r times disk_critical_axial_rate
+    upright = work.step("v_upright", r_ * sqrt(m_ * g_ * r_ * I_ / (J_ * (J_ + m_ * r_ ** 2))),
+                        unit="m/s", note="upright rolling in a straight line (beta = 0, "
+                        "Omega = 0) is stable above this speed (k > 0)")
     work.answer("stability", "stability", words, None)
     work.answer("growth_rate", "sigma", rates, "rate")
     work.answer("upright_speed", "v_upright", [upright], "speed")

@@ -24,6 +24,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Num, Sym, sin
 from ..core.work import Work, num, qty, vec
 
 
@@ -62,8 +63,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotor")
     work.step("omega", value=spin, unit="rad/s", note="rotor speed")
     H = V.spin_vector(J, spin, direction)
-    Hmag = work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
-                     "kg m^2/s")
+    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
+    Hmag = work.step("H", J_ * omega, unit="kg m^2/s")
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'forward (toward the bow), +x' if direction > 0 else 'aft (toward the stern), -x'}"
@@ -83,11 +84,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if motion == "rolling":
         work.text("omega_p lies along x, parallel to H: omega_p x H = 0. Rolling gives no "
                   "gyroscopic couple.")
-        C = 0.0
-        work.step("C", "J omega omega_p sin(0)", value=0.0, unit="N*m")
+        # with no roll_rate any rate will do (V.rolling_precession takes 1 rad/s)
+        omega_p = Sym("omega_p", 1.0 if rate is None else rate, "rad/s")
+        C = work.step("C", J_ * omega * omega_p * sin(Num(0)), unit="N*m", substitute=False)
     else:
-        C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                      f"({qty(rate, 'rad/s')})", Hmag * rate, "N*m",
+        C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")
     if not (math.isfinite(C) and math.isfinite(Hmag)):
@@ -150,7 +151,7 @@ def _steering(given: Given, work: Work) -> V.Vector:
         raise InputError("speed must be positive (the ship goes ahead)", key="given.speed")
     turn = given.word("turn", "left")
     work.section("Steering: precession about the vertical")
-    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
+    work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
               f"seen from above): omega_p = {vec(wp, 'rad/s')}, along "
@@ -188,9 +189,8 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             work.step("phi_total", value=math.degrees(total), unit="deg",
                       note="the swing from one extreme to the other")
             phi = total / 2
-            work.step("phi", "phi_total / 2", f"{num(math.degrees(total))} deg / 2",
-                      math.degrees(phi), "deg", note=f"= {num(phi)} rad, the amplitude, from "
-                      "the mean position")
+            work.step("phi", Sym("phi_total", total, "deg") / 2, unit="deg",
+                      note=f"= {num(phi)} rad, the amplitude, from the mean position")
         else:
             phi = given[amplitude_key]
             work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
@@ -199,9 +199,9 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
                              "through 90 deg", key=f"given.{amplitude_key}")
         if period_key == "frequency":
             f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
-            T = work.step("T", "2 pi / omega_1", f"2 pi / {qty(f_rate, 'rad/s')}",
-                          2 * math.pi / f_rate, "s", note="from the frequency (1 Hz = "
-                          "one oscillation per second = 2 pi rad/s)")
+            T = work.step("T", 2 * PI / Sym("omega_1", f_rate, "rad/s"), unit="s",
+                          note="from the frequency (1 Hz = one oscillation per second = 2 pi "
+                          "rad/s)")
         else:
             T = given["period"]
         p = V.pitching(phi, T)
@@ -209,15 +209,14 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             work.step("omega_1", value=p.frequency, unit="rad/s", note="the circular "
                       "frequency of the pitching")
         else:
-            work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
+            work.step("omega_1", 2 * PI / Sym("T", T, "s"), unit="rad/s")
         work.text("theta = phi sin(omega_1 t): the pitch angle at the time t")
         work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
                   "position (cos = 1)")
-        rate = work.step("omega_p,max", "phi omega_1", f"{num(phi)} ({qty(p.frequency, 'rad/s')})",
-                         p.max_precession, "rad/s")
+        phi_, omega_1 = Sym("phi", phi), Sym("omega_1", p.frequency, "rad/s")  # phi in rad
+        rate = work.step("omega_p,max", phi_ * omega_1, unit="rad/s")
         work.text("alpha = -phi omega_1^2 sin(omega_1 t): largest at the extremes")
-        work.step("alpha_max", "phi omega_1^2", f"{num(phi)} ({qty(p.frequency, 'rad/s')})^2",
-                  p.max_acceleration, "rad/s^2")
+        work.step("alpha_max", phi_ * omega_1 ** 2, unit="rad/s^2")
         work.answer("max_precession", "omega_p,max", [p.max_precession], "rate")
         work.answer("max_angular_acceleration", "alpha_max", [p.max_acceleration],
                     "angular_acceleration")
@@ -254,7 +253,8 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
     work.section("Rolling: precession about the fore-and-aft axis")
     if rate:
-        work.step("omega_p", "omega_r", value=rate, unit="rad/s", note="rolling rate")
+        work.step("omega_p", Sym("omega_r", rate, "rad/s"), unit="rad/s", substitute=False,
+                  note="rolling rate")
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)

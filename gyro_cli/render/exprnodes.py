@@ -11,7 +11,7 @@ brackets the same places (a negative value after a factor or a sign included).
 from __future__ import annotations
 
 from ..core import expr as E
-from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym
+from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sum, Sym
 
 
 class NodePrinter:
@@ -36,6 +36,8 @@ class NodePrinter:
 
     def _print_Sym(self, node: E.Sym) -> Node:
         if not self.values:
+            if node.name.startswith("sum "):  # a total over rotors: ``sum I_w`` is set \sum I_w
+                return Sum(Sym(node.name[4:]))
             return Sym(node.name)
         text = E.quantity_text(node.si, node.unit)
         number, _, unit = text.partition(" ")
