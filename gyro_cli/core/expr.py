@@ -351,6 +351,9 @@ def precedence(node: Expr, values: bool) -> int:
     unary minus."""
     if isinstance(node, Let):
         return precedence(node.sym if values else node.body, values)
+    own = getattr(node, "binding", None)  # the typeset-only nodes of core/prose.py
+    if own is not None:
+        return own
     if isinstance(node, (Add, Sub)):
         return ADD
     if isinstance(node, (Mul, Div)):

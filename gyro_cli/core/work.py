@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
+from .prose import Prose
 from .units import si_text
 
 __all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
@@ -65,6 +66,7 @@ class Step:
     expr: Expr | None = None
     view: Expr | None = None
     si: tuple[float, str] | None = None
+    prose: Prose | None = None  # a line (or a step's note) written as words and trees
 
     @property
     def shown(self) -> Expr | None:
@@ -129,6 +131,14 @@ class Solution:
     system: str = "SI"  # the units of the steps: "SI", or "US" (slug, ft, lbf) on request
 
 
+def prose_step(pieces: tuple) -> Step:
+    """A line of words only, or of words and trees (`core.prose.Prose`)."""
+    if len(pieces) == 1 and isinstance(pieces[0], str):
+        return Step(text=pieces[0])
+    prose = Prose(tuple(pieces))
+    return Step(text=prose.text, prose=prose)
+
+
 class Work:
     """Builder the kinds write into."""
 
@@ -150,7 +160,8 @@ class Work:
         return self.sections[-1]
 
     def step(self, symbol: str, formula: str | Expr = "", substitution: str = "",
-             value: float | None = None, unit: str = "", ref: str = "", note: str = "",
+             value: float | None = None, unit: str = "", ref: str = "",
+             note: "str | tuple[str | Expr, ...]" = "",
              substitute: bool = True, state: bool = True) -> float | None:
         """Add ``symbol = formula = substitution = value``; returns value.
 
@@ -161,6 +172,10 @@ class Work:
         returns it converted. The older form, formula and substitution as text with the
         value beside them, is kept for the kinds not yet written as trees.
         """
+        prose = None
+        if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
+            prose = Prose(note)
+            note = prose.text
         if isinstance(formula, Expr):
             if substitution or value is not None:
                 raise TypeError("a step built from a tree takes its substitution and value "
@@ -182,20 +197,23 @@ class Work:
             self._current().steps.append(Step(
                 symbol, tree_formula(tree) if state else "",
                 tree_substitution(tree) if substitute else "", value, unit, ref, note,
-                expr=tree, si=si))
+                expr=tree, si=si, prose=prose))
             return value
         if " -" in substitution:
             substitution = fold_signs(substitution)
-        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note))
+        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note,
+                                          prose=prose))
         return value
 
-    def text(self, line: str) -> None:
-        """Add a line of prose or a bare equation to the current section."""
-        self._current().steps.append(Step(text=line))
+    def text(self, *pieces: str | Expr) -> None:
+        """Add a line of prose to the current section: words (strings) and maths (trees,
+        `core.prose`), printed by every format from the trees."""
+        self._current().steps.append(prose_step(pieces))
 
-    def check(self, line: str) -> None:
-        """An independent check of the answer (a residual, a balance)."""
-        self.checks.append(Step(text=line))
+    def check(self, *pieces: str | Expr) -> None:
+        """An independent check of the answer (a residual, a balance), as `text` writes
+        a line."""
+        self.checks.append(prose_step(pieces))
 
     def answer(self, name: str, symbol: str, si_values: list, dimension: str | None,
                labels: list[str] | None = None) -> None:

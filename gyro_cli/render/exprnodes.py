@@ -11,7 +11,9 @@ brackets the same places (a negative value after a factor or a sign included).
 from __future__ import annotations
 
 from ..core import expr as E
-from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sum, Sym
+from ..core import prose as P
+from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
+                       Tuple)
 
 
 class NodePrinter:
@@ -99,6 +101,52 @@ class NodePrinter:
             return Abs(self._print(node.args[0]))
         return Call(E.SHOWN_NAMES.get(node.name, node.name),
                     tuple(self._print(a) for a in node.args))
+
+
+    # ---- the typeset-only nodes of sentences (core/prose.py)
+
+    def _print_Rel(self, node: P.Rel) -> Node:
+        return Rel(self._print(node.first), tuple((op, self._print(rhs))
+                                                   for op, rhs in node.rest))
+
+    def _vector(self, node: E.BinOp) -> Node:
+        sides = []
+        for child in (node.left, node.right):
+            shown = self._print(child)
+            sides.append(Group("(", shown) if P.operand_brackets(node, child) else shown)
+        return BinOp(node.op, sides[0], sides[1])
+
+    def _print_Cross(self, node: P.Cross) -> Node:
+        return self._vector(node)
+
+    def _print_Dot(self, node: P.Dot) -> Node:
+        return self._vector(node)
+
+    def _print_Tup(self, node: P.Tup) -> Node:
+        return Group("(", Tuple(tuple(self._print(x) for x in node.items)))
+
+    def _print_Fn(self, node: P.Fn) -> Node:
+        if node.name == "d/dt":  # the rate of change of its argument
+            arg = self._print(node.args[0])
+            return BinOp(" ", BinOp("/", Sym("d"), Sym("dt")), Group("(", arg))
+        return Call(node.name, tuple(self._print(a) for a in node.args))
+
+    def _print_Total(self, node: P.Total) -> Node:
+        body = self._print(node.body)
+        return Sum(Group("(", body) if P.operand_brackets(node, node.body) else body)
+
+    def _print_Quantity(self, node: P.Quantity) -> Node:
+        number, _, unit = node.text.partition(" ")
+        shown: Node = Num(number.lstrip("-"))
+        if unit:
+            shown = Quantity(shown, unit)  # type: ignore[arg-type]
+        return Neg(shown) if number.startswith("-") else shown
+
+
+def prose_nodes(prose: P.Prose) -> list[str | Node]:
+    """A sentence's pieces: words as they are, each tree as typesetting nodes."""
+    printer = NodePrinter(values=False)
+    return [p if isinstance(p, str) else printer.doprint(p) for p in prose.pieces]
 
 
 def formula_node(expr: E.Expr) -> Node:

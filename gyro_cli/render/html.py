@@ -30,6 +30,7 @@ from .mathprint import text as plain_text
 from .mathml import MathMLPrinter, math_element, symbol_mathml
 from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
+from .exprnodes import prose_nodes
 from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
 
 def escape(text: str, quote: bool = True) -> str:
@@ -257,9 +258,16 @@ def _step_html(step) -> str:
     if step.symbol:
         lhs, pieces = _step_pieces(step)  # what does not parse is a Tex node: its plain text
         tag, rest = _tag(step)
-        notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text else [])
+        prose = getattr(step, "prose", None)
+        notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text and prose is None
+                                                   else [])
         math, wide = _equation(lhs, pieces)
-        return _eq_div(math, wide, tag, " ".join(notes))
+        out = _eq_div(math, wide, tag, " ".join(notes))
+        if prose is not None:  # a note of words and trees
+            out += f'<p class="stepnote">{prose_pieces_html(prose)}</p>'
+        return out
+    if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
+        return _prose_step_html(step.prose)
     text = step.text.strip()
     tag = ""
     cited = _CITED.search(text)
@@ -274,6 +282,37 @@ def _step_html(step) -> str:
             wide = width(tree) > ROW_WIDTH + 8
         return _eq_div(math, wide, tag)
     return f"<p>{prose_html(step.text.strip())}</p>"
+
+
+def _relation_html(tree: Node, tag: str = "") -> str:
+    """A displayed relation: one chain of one kind of relation in rows, else as it is."""
+    if isinstance(tree, Rel) and tree.rest and tree.first is not None \
+            and len({op for op, _ in tree.rest}) == 1:
+        math, wide = _equation(tree.first, [rhs for _, rhs in tree.rest], tree.rest[0][0])
+    else:
+        math = _math(tree, display=True)
+        wide = width(tree) > ROW_WIDTH + 8
+    return _eq_div(math, wide, tag)
+
+
+def _prose_step_html(prose) -> str:
+    """A line written as words and trees: a relation displayed, else a paragraph."""
+    equation = prose.equation()
+    if equation is not None:
+        rel, tag = equation
+        return _relation_html(prose_nodes(type(prose)((rel,)))[0], tag)
+    return f"<p>{prose_pieces_html(prose)}</p>"
+
+
+def prose_pieces_html(prose) -> str:
+    """A sentence's words escaped (a key of the file as words), its trees inline MathML."""
+    out = []
+    for piece in prose_nodes(prose):
+        if isinstance(piece, str):
+            out += [escape(part) for _, part in _split_keys(piece)]
+        else:
+            out.append(_inline(piece))
+    return "".join(out)
 
 
 # ---- a worked answer --------------------------------------------------------------

@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..core.expr import Sym, map_syms, substitution
+from ..core.prose import Quantity as Quantity_, map_values
 from ..core.work import GivenLine, Section, Solution, Step, num
 from ..solving.solve import Reported, Result
 from .mathparse import spans, try_parse
@@ -101,16 +102,27 @@ def _us_symbol(sym: Sym) -> Sym:
     return Sym(sym.name, value, unit)
 
 
+def _us_quantity(quantity: Quantity_) -> Quantity_:
+    value, unit = convert(quantity.si, quantity.unit)
+    return Quantity_(value, unit, quantity.exact and unit == quantity.unit)
+
+
 def _step(step: Step) -> Step:
     value, unit = (convert(step.value, step.unit) if step.value is not None
                    else (None, step.unit))
+    if step.prose is not None:  # words and trees: the quantities inside converted
+        prose = step.prose.map(lambda tree: map_values(tree, _us_symbol, _us_quantity))
+        step = dataclasses.replace(step, prose=prose, text=prose.text)
+        if not step.symbol:
+            return step
     if step.expr is not None:  # the values inside the tree are converted, nothing parsed
         view = map_syms(step.expr, _us_symbol)
         return dataclasses.replace(step, substitution=substitution(view) if step.substitution
-                                   else "", value=value, unit=unit, text=_text(step.text),
+                                   else "", value=value, unit=unit,
+                                   text=step.text if step.prose else _text(step.text),
                                    view=view, si=step.si or (step.value, step.unit))
     return dataclasses.replace(step, substitution=_text(step.substitution), value=value,
-                               unit=unit, text=_text(step.text))
+                               unit=unit, text=step.text if step.prose else _text(step.text))
 
 
 def _given(line: GivenLine) -> GivenLine:

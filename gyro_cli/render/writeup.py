@@ -21,7 +21,7 @@ import re
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
-from .exprnodes import formula_node, substitution_node
+from .exprnodes import formula_node, prose_nodes, substitution_node
 from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
@@ -267,9 +267,14 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     notes = []
     if rest:
         notes.append(f"({rest})")
-    if step.text:
+    if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
+    if getattr(step, "prose", None) is not None:  # a note of words and trees
+        if note:
+            after.append(note)
+        after.append(Typeset(prose_latex(step.prose, markdown)))
+        note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
@@ -302,9 +307,13 @@ def _steps(steps, markdown: bool) -> list[str]:
         if step.symbol:
             body, after = _step_display(step, markdown)
             out += _display(body, markdown)
-            out += [_prose(line, markdown) for line in after]
+            out += [line if isinstance(line, Typeset) else _prose(line, markdown)
+                    for line in after]
             if after:
                 out.append("")
+            continue
+        if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
+            out += _prose_step(step.prose, markdown)
             continue
         text = step.text.strip()
         tag = ""
@@ -322,6 +331,38 @@ def _steps(steps, markdown: bool) -> list[str]:
         else:
             out += [_prose(text, markdown), ""]
     return out
+
+
+class Typeset(str):
+    """A line already set (a note written as words and trees)."""
+
+
+def _prose_step(prose, markdown: bool) -> list[str]:
+    """A line written as words and trees: one relation displayed (with the chapter's
+    equation number it cites), else a paragraph with the maths inline."""
+    equation = prose.equation()
+    if equation is not None:
+        rel, tag = equation
+        tree = prose_nodes(type(prose)((rel,)))[0]
+        number = (f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}") if tag else ""
+        if width(tree) <= WIDTH or not isinstance(tree, Rel):
+            return _display(LatexPrinter(True).doprint(tree) + number, markdown)
+        return _display("\\begin{aligned}\n" + " \\\\\n".join(_rel_rows(tree)) +
+                        "\n\\end{aligned}" + number, markdown)
+    return [prose_latex(prose, markdown), ""]
+
+
+def prose_latex(prose, markdown: bool = False) -> str:
+    """A sentence's words escaped (a key of the file as words) and its trees as inline
+    maths."""
+    escape = _md_escape if markdown else text_escape
+    out = []
+    for piece in prose_nodes(prose):
+        if isinstance(piece, str):
+            out += [escape(part) for _, part in _split_keys(piece)]
+        else:
+            out.append(f"${LatexPrinter(False).doprint(piece)}$")
+    return "".join(out)
 
 
 def _is_equation(tree: Node) -> bool:

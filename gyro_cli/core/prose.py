@@ -1,0 +1,292 @@
+"""Sentences that hold formulas: a line of prose written as words and trees.
+
+A kind writes a sentence with maths in it as pieces: a string is words, a
+`core.expr` tree is maths, printed by every format from the tree (nothing
+parses the sentence back)::
+
+    I_v, alphaddot, H, W, lam, alpha = names("I_v alphaddot H Omega lambda alpha")
+    work.text("so ", rel(I_v * alphaddot, "=", -H * W * cos(lam) * sin(alpha)),
+              " (terms of order ", I_v * W**2, " neglected)")
+
+The nodes below are the ones only prose needs; nothing evaluates them: a
+relation chain (``a = b >= c``), the cross and dot products of vectors, a
+tuple, a function known by its name only (``f(u)``, ``R_z(psi)``), the sum
+over a body's particles, and a quantity written with its value
+(``0.0001280 N m``), which ``--units us`` converts.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .expr import (ATOM, MUL, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg, Sub, Sym,
+                   TextPrinter, _node, map_syms, precedence, quantity_text)
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+RELATIONS = ("=", "<", ">", "<=", ">=", "!=", "~", "->", ">>", "<<")
+
+
+class Typeset(Expr):
+    """A node of a sentence: printed, never evaluated."""
+
+    __slots__ = ()
+
+    @property
+    def value(self) -> float:
+        raise TypeError(f"{type(self).__name__} is typeset only: it has no value")
+
+
+class Rel(Typeset):
+    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain."""
+
+    __slots__ = ("first", "rest")
+    binding = 0  # looser than any operator (`expr.precedence`)
+
+    def __init__(self, first: Expr, rest: tuple[tuple[str, Expr], ...]) -> None:
+        for op, _ in rest:
+            if op not in RELATIONS:
+                raise ValueError(f"unknown relation {op!r}")
+        self.first, self.rest = first, rest
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.first,) + tuple(rhs for _, rhs in self.rest)
+
+
+class Cross(Typeset, BinOp):
+    """The cross product ``a x b`` of two vectors."""
+
+    __slots__ = ()
+    op = "x"
+    binding = MUL
+
+
+class Dot(Typeset, BinOp):
+    """The dot product ``a . b`` of two vectors."""
+
+    __slots__ = ()
+    op = "."
+    binding = MUL
+
+
+class Tup(Typeset):
+    """``(a, b, c)``: a vector by its components, a list of values."""
+
+    __slots__ = ("items",)
+
+    def __init__(self, items: tuple[Expr, ...]) -> None:
+        self.items = items
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.items
+
+
+class Fn(Typeset):
+    """``name(args)`` for a function known by its name only: ``f(u)``, ``R_z(psi)``."""
+
+    __slots__ = ("name", "args")
+
+    def __init__(self, name: str, args: tuple[Expr, ...]) -> None:
+        self.name, self.args = name, args
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.args
+
+
+class Total(Typeset):
+    """``sum body``: a sum over the particles of a body (Eq. 11.3)."""
+
+    __slots__ = ("body",)
+    binding = MUL
+
+    def __init__(self, body: Expr) -> None:
+        self.body = body
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
+
+
+class Quantity(Typeset):
+    """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
+    (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
+
+    __slots__ = ("si", "unit", "exact")
+
+    def __init__(self, si: float, unit: str = "", exact: bool = False) -> None:
+        self.si, self.unit, self.exact = si, unit, exact
+
+    @property
+    def text(self) -> str:
+        """``0.0001280 N m``; an exact quantity as few digits as it needs (``180 deg``)."""
+        if not self.exact:
+            return quantity_text(self.si, self.unit)
+        shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
+        return f"{round(shown, 9):g} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
+
+    @property
+    def binding(self) -> int:  # type: ignore[override]
+        return MUL if self.unit or self.si < 0 else ATOM
+
+
+# ---- building -----------------------------------------------------------------
+
+def names(text: str, unit: str = "") -> tuple[Sym, ...]:
+    """Symbols known by their names only (no value): ``names("I_v H Omega")``."""
+    return tuple(Sym(name, math.nan, unit) for name in text.split())
+
+
+def rel(first: Expr | float, *chain: str | Expr | float) -> Rel:
+    """``rel(a, "=", b, ">=", c)``: a relation chain."""
+    if len(chain) % 2:
+        raise ValueError("a relation chain alternates a relation and an expression")
+    rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
+    return Rel(_node(first), rest)
+
+
+def cross(a: Expr, b: Expr) -> Cross:
+    return Cross(a, b)
+
+
+def dot(a: Expr, b: Expr) -> Dot:
+    return Dot(a, b)
+
+
+def tup(*items: Expr | float) -> Tup:
+    return Tup(tuple(_node(x) for x in items))
+
+
+def fn(name: str, *args: Expr | float) -> Fn:
+    return Fn(name, tuple(_node(a) for a in args))
+
+
+def total(body: Expr) -> Total:
+    return Total(body)
+
+
+def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
+    """A value with its unit inside a sentence (SI value); ``exact``: a number of the
+    text such as 180 deg, printed with the digits it needs, not to 4 figures."""
+    return Quantity(si, unit, exact)
+
+
+# ---- a line of prose --------------------------------------------------------------
+
+Piece = "str | Expr"
+
+
+class Prose:
+    """A sentence as pieces: strings are words, trees are maths."""
+
+    __slots__ = ("pieces",)
+
+    def __init__(self, pieces: tuple) -> None:
+        for piece in pieces:
+            if not isinstance(piece, (str, Expr)):
+                raise TypeError(f"a piece of prose is words or a tree, not {piece!r}")
+        self.pieces = pieces
+
+    @property
+    def text(self) -> str:
+        printer = ProseText()
+        return "".join(p if isinstance(p, str) else printer.doprint(p) for p in self.pieces)
+
+    def equation(self) -> tuple[Rel, str] | None:
+        """The line as one displayed relation and the chapter equation it cites
+        (``rel(...)``, optionally followed by ``"  (Eq. 11.19)"``), else None."""
+        pieces = [p for p in self.pieces if not (isinstance(p, str) and not p.strip())]
+        tag = ""
+        if len(pieces) == 2 and isinstance(pieces[1], str):
+            words = pieces[1].strip()
+            if not (words.startswith("(Eq. ") and words.endswith(")")):
+                return None
+            tag = words[5:-1]
+            pieces = pieces[:1]
+        if len(pieces) == 1 and isinstance(pieces[0], Rel):
+            return pieces[0], tag
+        return None
+
+    def map(self, change: Callable[[Expr], Expr]) -> "Prose":
+        return Prose(tuple(p if isinstance(p, str) else change(p) for p in self.pieces))
+
+
+def map_values(expr: Expr, sym: Callable[[Sym], Sym],
+               quantity: Callable[[Quantity], Quantity]) -> Expr:
+    """The tree with each symbol and each quantity changed (``--units us``)."""
+    if isinstance(expr, Quantity):
+        return quantity(expr)
+    if isinstance(expr, Rel):
+        return Rel(map_values(expr.first, sym, quantity),
+                   tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
+    if isinstance(expr, (Cross, Dot)):
+        return type(expr)(map_values(expr.left, sym, quantity),
+                          map_values(expr.right, sym, quantity))
+    if isinstance(expr, Tup):
+        return Tup(tuple(map_values(x, sym, quantity) for x in expr.items))
+    if isinstance(expr, Fn):
+        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args))
+    if isinstance(expr, Total):
+        return Total(map_values(expr.body, sym, quantity))
+    if isinstance(expr, Neg):
+        return Neg(map_values(expr.arg, sym, quantity))
+    if isinstance(expr, BinOp):
+        return type(expr)(map_values(expr.left, sym, quantity),
+                          map_values(expr.right, sym, quantity))
+    if isinstance(expr, Call):
+        return Call(expr.name, tuple(map_values(a, sym, quantity) for a in expr.args))
+    if isinstance(expr, Let):
+        return Let(sym(expr.sym), map_values(expr.body, sym, quantity))
+    return map_syms(expr, sym)
+
+
+def operand_brackets(parent: Expr, child: Expr) -> bool:
+    """Brackets around an operand of a prose node: a sum or difference in a product
+    of vectors or under a sum sign, a quotient or product beside a cross or dot."""
+    if isinstance(parent, (Cross, Dot)):
+        return precedence(child, False) <= MUL and not isinstance(child, (Fn, Tup))
+    if isinstance(parent, Total):
+        return isinstance(child, (Add, Sub, Div, Rel))
+    return False
+
+
+# ---- printing -----------------------------------------------------------------
+
+class ProseText(TextPrinter):
+    """The plain text of a sentence's maths: symbols by name, quantities by value."""
+
+    def _print_Rel(self, node: Rel) -> str:
+        return " ".join([self._print(node.first)] + [f"{op} {self._print(rhs)}"
+                                                      for op, rhs in node.rest])
+
+    def _vector(self, node: BinOp) -> str:
+        parts = []
+        for child in (node.left, node.right):
+            text = self._print(child)
+            parts.append(f"({text})" if operand_brackets(node, child) else text)
+        return f" {node.op} ".join(parts)
+
+    def _print_Cross(self, node: Cross) -> str:
+        return self._vector(node)
+
+    def _print_Dot(self, node: Dot) -> str:
+        return self._vector(node)
+
+    def _print_Tup(self, node: Tup) -> str:
+        return "(" + ", ".join(self._print(x) for x in node.items) + ")"
+
+    def _print_Fn(self, node: Fn) -> str:
+        space = "" if node.name.isidentifier() else " "  # d/dt (H . U)
+        return f"{node.name}{space}({', '.join(self._print(a) for a in node.args)})"
+
+    def _print_Total(self, node: Total) -> str:
+        body = self._print(node.body)
+        return "sum " + (f"({body})" if operand_brackets(node, node.body) else body)
+
+    def _print_Quantity(self, node: Quantity) -> str:
+        return node.text
+
+
+def text(expr: Expr) -> str:
+    """The plain text of one piece of maths in a sentence."""
+    return ProseText().doprint(expr)

@@ -1,0 +1,136 @@
+"""Sentences written as words and trees (core/prose.py, issue 21 item 3): each format
+prints the maths of a sentence from its tree, and ``--units us`` converts the
+quantities inside; nothing parses the sentence back."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from gyro_cli.commands.authoring import template
+from gyro_cli.core.expr import PI, Sym, cos, sin
+from gyro_cli.core.prose import Prose, cross, dot, fn, names, q, rel, total, tup
+from gyro_cli.core.work import Work
+from gyro_cli.render import html, writeup
+from gyro_cli.render.mathparse import spans
+from gyro_cli.render.us_units import to_us
+from gyro_cli.solving.solve import solve_file
+
+#: kinds whose every line of prose that holds maths is written as words and trees
+PROSE_KINDS = {"gyrocompass"}
+
+H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
+
+
+def test_a_sentence_prints_its_maths_from_the_trees():
+    line = Prose(("so  ", rel(I_v * addot, "=", -H * W * cos(lam) * sin(alpha)),
+                  "  (terms of order ", I_v * W**2, " dropped)"))
+    assert line.text == ("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  "
+                         "(terms of order I_v Omega^2 dropped)")
+
+
+def test_vector_products_tuples_functions_and_sums():
+    M_U, OmE = names("M_U Omega_E")
+    assert Prose((rel(fn("d/dt", dot(H, U)), "=", M_U + dot(H, cross(OmE, U))),)).text == \
+        "d/dt (H . U) = M_U + H . (Omega_E x U)"
+    assert Prose((2 * cross(H, U),)).text == "2 (H x U)"
+    assert Prose((cross(H + U, U),)).text == "(H + U) x U"
+    assert Prose((fn("f", names("u")[0]),)).text == "f(u)"
+    m, y, z = names("m y z")
+    assert Prose((rel(names("I_x")[0], "=", total(m * (y**2 + z**2))),)).text == \
+        "I_x = sum m (y^2 + z^2)"
+    assert Prose((tup(0, q(458.1, "kg m^2/s"), 0),)).text == "(0, 458.1 kg m^2/s, 0)"
+
+
+def test_quantities_print_their_value_and_exact_ones_their_digits():
+    assert Prose((q(1.28e-4, "N m"),)).text == "0.0001280 N m"
+    assert Prose((q(math.pi / 6, "deg"),)).text == "30.00 deg"
+    assert Prose((q(math.pi, "deg", exact=True),)).text == "180 deg"
+    assert Prose((rel(alpha, "=", q(-2.5, "rad/s")),)).text == "alpha = -2.500 rad/s"
+
+
+def test_typeset_nodes_have_no_value_and_pieces_are_words_or_trees():
+    with pytest.raises(TypeError):
+        rel(H, "=", U).value
+    with pytest.raises(TypeError):
+        Prose(("a", 3.0))
+    with pytest.raises(ValueError):
+        rel(H, "=<", U)
+    with pytest.raises(ValueError):
+        rel(H, "=")
+
+
+def test_one_relation_citing_an_equation_is_a_displayed_equation():
+    line = Prose((rel(H, "=", I_v * W), "    (Eq. 11.4)"))
+    assert line.equation() is not None and line.equation()[1] == "11.4"
+    assert Prose(("so ", rel(H, "=", W))).equation() is None
+
+
+def _work_with_prose() -> Work:
+    work = Work()
+    work.section("Test")
+    work.text("Earth rate: ", rel(names("Omega_E")[0], "=", W * (cos(lam) * names("N")[0] +
+                                                                sin(lam) * U)), " & <b>")
+    work.text(rel(names("I_v")[0] * (2 * PI / names("T")[0])**2, "=", q(1.0, "N m")),
+              "    (Eq. 11.27)")
+    work.step("M", Sym("H", 2.0, "kg m^2/s") * Sym("Omega", 3.0, "rad/s"), unit="N m",
+              note=("with ", rel(alpha, "=", q(0.0, "deg", True))))
+    return work
+
+
+def test_latex_sets_words_as_text_and_trees_as_maths():
+    steps = _work_with_prose().sections[0].steps
+    latex = "\n".join(writeup._steps(steps, markdown=False))
+    assert r"Earth rate: $\Omega_{E} = \Omega (\cos \lambda N + \sin \lambda U)$ \& \textless{}b\textgreater{}" in latex
+    assert r"\tag{11.27}" in latex and r"\frac{2 \pi}{T}" in latex
+    assert r"$\alpha = 0^{\circ}$" in latex
+
+
+def test_html_sets_words_escaped_and_trees_as_mathml():
+    steps = _work_with_prose().sections[0].steps
+    page = "".join(html._step_html(step) for step in steps)
+    assert "&amp; &lt;b&gt;" in page and "<b>" not in page
+    assert page.count("<math") >= 3 and "(Eq. 11.27)" in page
+    assert '<p class="stepnote">with <math>' in page
+
+
+def test_us_units_convert_the_quantities_in_a_sentence(tmp_path):
+    path = tmp_path / "gc.yaml"
+    path.write_text(template("gyrocompass"))
+    result = solve_file(str(path))
+    checks = [s for s in result.solution.checks if s.prose is not None]
+    assert checks, "the gyrocompass check is a sentence of trees"
+    us = to_us(result)
+    before, after = checks[0].text, [s for s in us.solution.checks if s.prose][0].text
+    assert "N m/rad" in before and "N m/rad" in after  # a unit with no US form stays
+    work = Work()
+    work.text("a moment of ", q(1.3558179483314004, "N m"))
+    sol = dataclass_result(result, work)
+    assert to_us(sol).solution.sections[-1].steps[-1].text == "a moment of 1.000 lbf ft"
+
+
+def dataclass_result(result, work):
+    import dataclasses
+
+    sections = result.solution.sections + work.sections
+    return dataclasses.replace(result, solution=dataclasses.replace(result.solution,
+                                                                    sections=sections))
+
+
+@pytest.mark.parametrize("kind", sorted(PROSE_KINDS))
+def test_prose_kinds_write_every_formula_in_a_sentence_as_a_tree(kind, tmp_path):
+    """In a kind written as trees, a line of plain words holds no maths (the parser is
+    the oracle here: it would find a formula left in the words)."""
+    files = sorted(Path(__file__).resolve().parents[1].glob(f"problems/{kind}*.yaml"))
+    path = tmp_path / f"{kind}.yaml"
+    path.write_text(template(kind))
+    for file in files + [path]:
+        result = solve_file(str(file))
+        lines = [s for sec in result.solution.sections for s in sec.steps] + \
+            list(result.solution.checks)
+        for step in lines:
+            if step.prose is None and step.text:
+                maths = [str(p) for is_math, p in spans(step.text) if is_math]
+                assert not maths, (file.name, step.text, maths)
