@@ -134,3 +134,24 @@ def test_prose_kinds_write_every_formula_in_a_sentence_as_a_tree(kind, tmp_path)
             if step.prose is None and step.text:
                 maths = [str(p) for is_math, p in spans(step.text) if is_math]
                 assert not maths, (file.name, step.text, maths)
+
+
+def test_a_warning_of_words_and_trees_is_printed_from_them(tmp_path):
+    import dataclasses
+
+    path = tmp_path / "gc.yaml"
+    path.write_text(template("gyrocompass"))
+    result = solve_file(str(path))
+    work = Work()
+    work.warn("the moment ", rel(names("M")[0], "=", q(1.3558179483314004, "N m")),
+              " is small")
+    work.warn("the moment ", rel(names("M")[0], "=", q(1.3558179483314004, "N m")),
+              " is small")  # said once
+    solution = dataclasses.replace(result.solution, warnings=work.warnings,
+                                   warning_prose=work.warning_prose)
+    result = dataclasses.replace(result, solution=solution)
+    assert result.solution.warnings == ["the moment M = 1.356 N m is small"]
+    assert "$M = 1.356\\,\\mathrm{N\\,m}$" in writeup.latex(result)
+    us = to_us(result)
+    assert us.solution.warnings == ["the moment M = 1.000 lbf ft is small"]
+    assert "<li>the moment <math>" in html.worked_answer(us)

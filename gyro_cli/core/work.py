@@ -129,6 +129,8 @@ class Solution:
     warnings: list[str]
     checks: list[Step] = field(default_factory=list)
     system: str = "SI"  # the units of the steps: "SI", or "US" (slug, ft, lbf) on request
+    #: the warnings written as words and trees, by their text
+    warning_prose: dict[str, Prose] = field(default_factory=dict)
 
 
 def prose_step(pieces: tuple) -> Step:
@@ -148,6 +150,7 @@ class Work:
         self.answers: dict[str, Answer] = {}
         self.warnings: list[str] = []
         self.checks: list[Step] = []
+        self.warning_prose: dict[str, Prose] = {}
 
     def section(self, title: str) -> Section:
         """Start a section; later steps go into it."""
@@ -219,9 +222,14 @@ class Work:
                labels: list[str] | None = None) -> None:
         self.answers[name] = Answer(name, symbol, list(si_values), dimension, list(labels or []))
 
-    def warn(self, message: str) -> None:
-        if message not in self.warnings:
-            self.warnings.append(message)
+    def warn(self, *pieces: str | Expr) -> None:
+        """A warning: words, or words and trees as `text` takes them."""
+        step = prose_step(pieces)
+        if step.text not in self.warnings:
+            self.warnings.append(step.text)
+            if step.prose is not None:
+                self.warning_prose[step.text] = step.prose
 
     def solution(self) -> Solution:
-        return Solution(self.given, self.sections, self.answers, self.warnings, self.checks)
+        return Solution(self.given, self.sections, self.answers, self.warnings, self.checks,
+                        warning_prose=self.warning_prose)

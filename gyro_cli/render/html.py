@@ -304,6 +304,11 @@ def _prose_step_html(prose) -> str:
     return f"<p>{prose_pieces_html(prose)}</p>"
 
 
+def _warning_html(text: str, solution) -> str:
+    prose = solution.warning_prose.get(text)
+    return prose_html(text) if prose is None else prose_pieces_html(prose)
+
+
 def prose_pieces_html(prose) -> str:
     """A sentence's words escaped (a key of the file as words), its trees inline MathML."""
     out = []
@@ -428,7 +433,8 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str,
     if solution.warnings:
         out.append(f'<section class="warnings" aria-label="warnings">'
                    f"{_heading(level + 1, 'Warnings')}<ul>"
-                   + "".join(f"<li>{prose_html(w)}</li>" for w in solution.warnings)
+                   + "".join(f"<li>{_warning_html(w, solution)}</li>"
+                             for w in solution.warnings)
                    + "</ul></section>")
     out.append("</article>")
     return "\n".join(x for x in out if x)

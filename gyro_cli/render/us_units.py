@@ -125,6 +125,20 @@ def _step(step: Step) -> Step:
                                unit=unit, text=step.text if step.prose else _text(step.text))
 
 
+def _warnings(solution: Solution) -> tuple[list[str], dict]:
+    """The warnings in US units, and those written as words and trees by their new text."""
+    texts, proses = [], {}
+    for text in solution.warnings:
+        prose = solution.warning_prose.get(text)
+        if prose is None:
+            texts.append(_text(text))
+            continue
+        prose = prose.map(lambda tree: map_values(tree, _us_symbol, _us_quantity))
+        texts.append(prose.text)
+        proses[prose.text] = prose
+    return texts, proses
+
+
 def _given(line: GivenLine) -> GivenLine:
     if isinstance(line.si_value, str):
         return line
@@ -151,13 +165,14 @@ def to_us(result: Result, given: bool = True) -> Result:
         if unit in US:
             exact.setdefault((num(value), US[unit][0]), value)
     _Convert.exact = exact
+    warnings, warning_prose = _warnings(solution)
     converted = Solution(
         given=[_given(g) for g in solution.given] if given else list(solution.given),
         sections=[Section(s.title, [_step(step) for step in s.steps]) for s in solution.sections],
         answers=solution.answers,
-        warnings=[_text(w) for w in solution.warnings],
+        warnings=warnings,
         checks=[_step(step) for step in solution.checks],
-        system="US")
+        system="US", warning_prose=warning_prose)
     # an answer is converted only where the file asked for no unit (SI by default)
     answers = {name: _answer(a) if result.problem.find.get(name) is None else a
                for name, a in result.answers.items()}

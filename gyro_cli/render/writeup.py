@@ -365,6 +365,11 @@ def prose_latex(prose, markdown: bool = False) -> str:
     return "".join(out)
 
 
+def _warning(text: str, solution, markdown: bool) -> str:
+    prose = getattr(solution, "warning_prose", {}).get(text)
+    return _prose(text, markdown) if prose is None else prose_latex(prose, markdown)
+
+
 def _is_equation(tree: Node) -> bool:
     return isinstance(tree, Rel)
 
@@ -480,7 +485,7 @@ def _markdown(result: Result) -> str:
         lines.append(f"- **{name}**: " + ", ".join(parts))
     if solution.warnings:
         lines += ["", "### Warnings", ""]
-        lines += [f"- {_prose(w, True)}" for w in solution.warnings]
+        lines += [f"- {_warning(w, solution, True)}" for w in solution.warnings]
     return _squeeze("\n".join(lines)) + "\n"
 
 
@@ -540,7 +545,7 @@ def _latex(result: Result, level: str) -> str:
     lines.append("\\end{itemize}")
     if solution.warnings:
         lines += ["", "\\subsubsection*{Warnings}", "", "\\begin{itemize}"]
-        lines += [f"  \\item {_prose(w, False)}" for w in solution.warnings]
+        lines += [f"  \\item {_warning(w, solution, False)}" for w in solution.warnings]
         lines.append("\\end{itemize}")
     return _squeeze("\n".join(lines)) + "\n"
 
