@@ -68,7 +68,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if released:
         _released(top, start, nut, omega_z, work)
     _period(nut, work)
-    _precession(top, start, nut, work)
+    _precession(start, nut, work)
     _fast_top(top, start, nut, omega_z, released, work)
     _answers(nut, work)
     if find & {"spin_at_limits", "reversal_theta"}:
@@ -225,7 +225,7 @@ def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
             / Let(Sym(f"one_minus_{u}_squared", one_minus * one_plus), 1 - U ** 2))
 
 
-def _precession(top, start, nut, work: Work) -> None:
+def _precession(start, nut, work: Work) -> None:
     from ..physics.nutation import limit_precession_terms
 
     d1, d2, d3 = nut.d_roots
