@@ -24,18 +24,9 @@ ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
-#: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
-              "torque_free", "rate_gyro", "ship", "two_wheeler", "four_wheeler",
-              "rolling_disk"}
-
-
-def _from_body(title: str, symbol: str, formula: str) -> bool:
-    """A shape's J or I_G (core/body.py's SHAPES are text still)."""
-    from gyro_cli.core.body import SHAPES
-
-    return title == "Body" and formula in {t for shape in SHAPES.values()
-                                           for t in (shape.J_text, shape.I_G_text)}
+TREE_KINDS = {"aeroplane", "bicycle", "gyrocompass", "gyro_drift", "earth_precession",
+              "released_top", "steady_precession", "torque_free", "rate_gyro", "ship",
+              "two_wheeler", "four_wheeler", "rolling_disk"}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
@@ -63,8 +54,7 @@ def _check_equations(doc: dict, kind: str) -> int:
     for section in doc["steps"]:
         for eq in section["equations"]:
             if eq["expr"] is None:
-                assert kind not in TREE_KINDS or _from_body(section["title"], eq["symbol"],
-                                                            eq["formula"]), (doc["file"], eq)
+                assert kind not in TREE_KINDS, (doc["file"], eq)
                 continue
             value = _eval(eq["expr"], eq["symbols"])
             assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
@@ -151,7 +141,7 @@ def test_migrated_kinds_parse_no_formula_text(kind, tmp_path, monkeypatch):
                         or real(text, units))
     for section in result.solution.sections:
         for step in section.steps:
-            if step.formula and not _from_body(section.title, step.symbol, step.formula):
+            if step.formula:
                 writeup._step_pieces(step)
     lhs = {step.symbol for section in result.solution.sections for step in section.steps}
     assert set(calls) <= lhs, calls  # only the steps' left-hand sides, no formula
@@ -606,3 +596,184 @@ def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path)
     assert by["psidot"].value == pytest.approx(s.spin, rel=1e-12)
     assert by["v_upright"].value == pytest.approx(disk_critical_axial_rate(m, g, r, I, J) * r,
                                                   rel=1e-12)
+
+
+#: released tops near the sleeping limit and other hard cases: a tilt of 1e-6 deg, spins
+#: just above and below the least spin of the sleeping top (2 sqrt(I m g l) / J, about
+#: 1173 rpm here: m -> 1), hanging near the bottom, a fast top, a nearly steady one
+NEAR_LIMITS = [
+    "theta0: 0.000001 deg\n  spin: 1800 rpm",
+    "theta0: 0.01 deg\n  spin: 1180 rpm",
+    "theta0: 0.01 deg\n  spin: 1170 rpm",
+    "theta0: 0.5 deg\n  spin: 1174 rpm",
+    "theta0: 179.999 deg\n  spin: 1800 rpm",
+    "theta0: 30 deg\n  spin: 100000 rpm",
+    "theta0: 60 deg\n  spin: 1800 rpm\n  precession0: 4.6 rad/s",
+    "theta0: 60 deg\n  spin: 1800 rpm\n  precession0: 4.552618042746112 rad/s",
+    "theta0: 0 deg\n  spin: 1800 rpm\n  theta_rate0: 1 rad/s",
+    "theta0: 180 deg\n  spin: 1800 rpm\n  theta_rate0: 1 rad/s",
+]
+RELEASED_TOP = ("id: x\nkind: released_top\ngiven:\n  mass: 0.08498 kg\n  J: 3.869e-5 kg m^2\n"
+                "  I_pivot: 1.776e-4 kg m^2\n  cg_distance: 0.0381 m\n  {}\nfind: [theta_max]\n")
+
+
+def _released_top_files(tmp_path: Path) -> list[Path]:
+    out = sorted((ROOT / "problems").glob("11_2_*.yaml"))
+    example = tmp_path / "example.yaml"
+    example.write_text(template("released_top"))
+    out.append(example)
+    for k, given in enumerate(NEAR_LIMITS):
+        path = tmp_path / f"near_{k}.yaml"
+        path.write_text(RELEASED_TOP.format(given))
+        out.append(path)
+    return out
+
+
+def test_released_top_limits_period_and_precession_trees_agree_with_the_physics(tmp_path):
+    """The nutation limits, m, T and phidot at the limits, evaluated from their trees (the
+    JSON ``expr`` too), within 1e-9 of physics/nutation.py's answers for every bundled
+    released top, the `gyro new` example and tops near the sleeping limit; K(m) by the
+    tree's AGM against physics' R_F where m is not near 1, and phidot against Eq. 11.16
+    evaluated at the roots where u is not near a pole."""
+    from gyro_cli.core.expr import _ellipk
+    from gyro_cli.physics import nutation as N
+
+    seen = set()
+    for path in _released_top_files(tmp_path):
+        result = solve_file(str(path))
+        _check_equations(report.as_dict(result), "released_top")
+        steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps}
+        v = _released_top_data(result)
+        top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
+        start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
+                        theta_rate0=v["thetadot0"])
+        nut = N.analyse(top, start)
+        close = dict(rel=1e-9, abs=1e-300)
+        if nut.motion == "sleeping":
+            assert "theta_max" not in steps
+            continue
+        seen.add(nut.motion)
+        assert steps["theta_max"].si[0] == pytest.approx(nut.theta_max, **close), path.name
+        assert steps["theta_min"].si[0] == pytest.approx(nut.theta_min, **close), path.name
+        assert steps["T"].value == pytest.approx(nut.nutation_period, **close), path.name
+        m = steps["m"].value
+        if m < 0.9:
+            assert _ellipk(m) == pytest.approx(steps["K(m)"].value, rel=1e-12), path.name
+        for k, u in enumerate(("u1", "u2")):
+            rate = steps[f"phidot({u})"].value
+            assert rate == pytest.approx(nut.limit_precession[k], **close), path.name
+            root = nut.u_roots[k]
+            if 1 - abs(root) > 1e-3:  # Eq. 11.16 as written, well conditioned there
+                scale = abs(nut.beta) + abs(nut.gamma)
+                assert rate == pytest.approx(N.phidot(nut, root), abs=1e-9 * scale), path.name
+        if "theta_1" in steps:  # released from rest: Eq. 11.25 as printed
+            u1 = steps["u1"].value
+            assert u1 == pytest.approx(N.released_u1(top, start.theta0, v["omega_z"]),
+                                       rel=1e-9), path.name
+            assert u1 == pytest.approx(nut.u_roots[0], rel=1e-9), path.name
+            if 1 - abs(u1) > 1e-6:
+                assert steps["theta_1"].si[0] == pytest.approx(nut.theta_max, rel=1e-9)
+    assert {"cusps", "loops", "waves"} <= seen, seen
+
+
+def _moments(region, n: int = 48) -> tuple[float, float]:
+    """(J, I_G) per unit mass of a uniform body, by Gauss-Legendre quadrature over
+    ``region``: (coordinates, weights) of its points as arrays, the axis along z."""
+    (x, y, z), weight = region(n)
+    mass = weight.sum()
+    zc = (weight * z).sum() / mass
+    J = (weight * (x * x + y * y)).sum() / mass
+    I_G = (weight * (y * y + (z - zc) ** 2)).sum() / mass
+    return J, I_G
+
+
+def _gauss(a, b, n):
+    import numpy as np
+
+    t, w = np.polynomial.legendre.leggauss(n)
+    return (a + b) / 2 + (b - a) / 2 * t, (b - a) / 2 * w
+
+
+def _revolution(z0, z1, s_lo, s_hi):
+    """A body of revolution: s_lo(z) <= s <= s_hi(z), z0 <= z <= z1 (dm ~ s ds dz, taken in
+    the plane y = 0 with <x^2> = <y^2> = s^2 / 2 by symmetry)."""
+    import numpy as np
+
+    def region(n):
+        zs, wz = _gauss(z0, z1, n)
+        pts, ws = [], []
+        for zk, wk in zip(zs, wz):
+            s, w = _gauss(s_lo(zk), s_hi(zk), n)
+            pts.append(np.stack([s / np.sqrt(2), s / np.sqrt(2), np.full_like(s, zk)]))
+            ws.append(wk * w * s)
+        return np.concatenate(pts, axis=1), np.concatenate(ws)
+    return region
+
+
+def _spherical(r_in, r_out):
+    """A spherical shell r_in <= rho <= r_out (dm ~ rho^2 sin(phi) drho dphi)."""
+    import numpy as np
+
+    def region(n):
+        rho, wr = _gauss(r_in, r_out, n)
+        phi, wp = _gauss(0.0, np.pi, 2 * n)
+        R, P = np.meshgrid(rho, phi)
+        W = np.outer(wp, wr) * R ** 2 * np.sin(P)
+        s = R * np.sin(P)
+        return np.stack([s / np.sqrt(2), s / np.sqrt(2), R * np.cos(P)]).reshape(3, -1), W.ravel()
+    return region
+
+
+def _box(w, L):
+    import numpy as np
+
+    def region(n):
+        a, wa = _gauss(-w / 2, w / 2, n)
+        c, wc = _gauss(0.0, L, n)
+        X, Y, Z = np.meshgrid(a, a, c, indexing="ij")
+        W = np.einsum("i,j,k->ijk", wa, wa, wc)
+        return np.stack([X, Y, Z]).reshape(3, -1), W.ravel()
+    return region
+
+
+THIN = 1e-10  # the thickness of a thin shape (ring, tube, spherical shell, disk), relative
+
+
+@pytest.mark.parametrize("shape", ["disk", "ring", "cylinder", "sphere", "cone", "shell", "rod",
+                                   "hollow_sphere", "box", "annulus"])
+def test_body_shape_trees_agree_with_integrals_over_the_body(shape):
+    """core/body.py's J and I_G of each shape, evaluated from their trees, against the
+    moments integrated over the uniform solid by quadrature (a thin shape as a solid of
+    relative thickness 1e-10)."""
+    from gyro_cli.core.body import build_body
+    from gyro_cli.core.work import Work
+
+    m, r, ri, L, h, w = 2.0, 0.1, 0.06, 0.3, 0.2, 0.08
+    values = {"mass": m, "shape": shape}
+    region = {
+        "disk": ({"radius": r}, _revolution(0.0, THIN * r, lambda z: 0.0, lambda z: r)),
+        "ring": ({"radius": r}, _revolution(0.0, THIN * r, lambda z: r * (1 - THIN),
+                                           lambda z: r)),
+        "cylinder": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: 0.0,
+                                                             lambda z: r)),
+        "rod": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: 0.0, lambda z: r)),
+        "sphere": ({"radius": r}, _spherical(0.0, r)),
+        "hollow_sphere": ({"radius": r}, _spherical(r * (1 - THIN), r)),
+        "cone": ({"radius": r, "height": h}, _revolution(0.0, h, lambda z: 0.0,
+                                                         lambda z: r * z / h)),
+        "shell": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: r * (1 - THIN),
+                                                          lambda z: r)),
+        "box": ({"width": w, "length": L}, _box(w, L)),
+        "annulus": ({"radius": r, "inner_radius": ri, "length": L},
+                    _revolution(0.0, L, lambda z: ri, lambda z: r)),
+    }[shape]
+    values |= region[0]
+    work = Work()
+    body = build_body(values, False, work)
+    J, I_G = _moments(region[1])
+    assert body.J == pytest.approx(m * J, rel=1e-9)
+    assert body.I_cg == pytest.approx(m * I_G, rel=1e-9)
+    steps = {s.symbol: s for s in work.sections[0].steps}
+    assert steps["J"].expr is not None and steps["I_G"].expr is not None
+    if shape == "cone":  # the apex at the fixed point: the centre of mass at 3 h / 4
+        assert body.l == pytest.approx(0.75 * h, rel=1e-12)

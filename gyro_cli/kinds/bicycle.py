@@ -220,11 +220,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   note="rear wheel spin angular momentum per unit speed")
         SF = step("S_F", I["IFyy"] / rF, "kg m")
         step("S_T", SR + SF, "kg m")
-    else:
-        work.step("S_R", "0 (gyroscopic: false)", value=t.SR, unit="kg m",
-                  note="rear wheel spin angular momentum per unit speed")
-        work.step("S_F", "0 (gyroscopic: false)", value=t.SF, unit="kg m")
-        work.step("S_T", "S_R + S_F", value=t.ST, unit="kg m")
+    else:  # the spin terms removed: a datum of the problem (0), not a formula
+        work.step("S_R", value=t.SR, unit="kg m",
+                  note="gyroscopic: false; rear wheel spin angular momentum per unit speed")
+        work.step("S_F", value=t.SF, unit="kg m", note="gyroscopic: false")
+        step("S_T", Sym("S_R", t.SR, "kg m") + Sym("S_F", t.SF, "kg m"), "kg m")
     step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
 
     work.section("The matrices (Eqs. A 20-A 23), rows and columns " + Q)
@@ -256,12 +256,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     stab = bike.stability(m, g)
     work.section("Self-stable speeds (v > 0)")
     work.text(f"H3(v) = {_poly_text(bike.hurwitz(coeffs))}")
+    # the speeds are roots of H3(v) and a0(v), conditions rather than formulas: value steps
     for v in stab.weave:
-        work.step("v_w", "H3(v) = 0, a complex pair on the imaginary axis", value=v,
-                  unit="m/s", note=f"weave speed, {v:.12g} m/s")
+        work.step("v_w", value=v, unit="m/s", note=f"weave speed, {v:.12g} m/s: H3(v) = 0, a "
+                  "complex pair on the imaginary axis")
     for v in stab.capsize:
-        work.step("v_c", "a0(v) = 0, a real eigenvalue at 0", value=v, unit="m/s",
-                  note=f"capsize speed, {v:.12g} m/s")
+        work.step("v_c", value=v, unit="m/s", note=f"capsize speed, {v:.12g} m/s: a0(v) = 0, a "
+                  "real eigenvalue at 0")
     work.text(f"stable (every Re(s) < 0): {_speeds_text(stab.stable)}")
     if not stab.stable:
         work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "

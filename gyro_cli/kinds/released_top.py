@@ -12,8 +12,8 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Expr, Let, Sym, acos, cos, sin, sqrt
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Expr, Let, Sym, acos, asin, cos, ellipk, sin, sqrt
+from ..core.work import Work, num
 
 RPM = 2 * math.pi / 60
 DEG = math.pi / 180
@@ -68,7 +68,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if released:
         _released(top, start, nut, omega_z, work)
     _period(nut, work)
-    _precession(nut, work)
+    _precession(start, nut, work)
     _fast_top(top, start, nut, omega_z, released, work)
     _answers(nut, work)
     if find & {"spin_at_limits", "reversal_theta"}:
@@ -137,8 +137,9 @@ def _roots(top, start, nut, work: Work) -> None:
         work.step(f"u{i}", value=u)
     if nut.motion == "sleeping":
         return
-    work.step("theta_max", "acos(u1)", value=nut.theta_max / DEG, unit="deg")
-    work.step("theta_min", "acos(u2)", value=nut.theta_min / DEG, unit="deg")
+    one_minus, one_plus = nut.one_minus_u0, nut.one_plus_u0
+    for symbol, u, d in (("theta_max", "u1", nut.d_roots[0]), ("theta_min", "u2", nut.d_roots[1])):
+        work.step(symbol, _theta(u, one_minus - d, one_plus + d), unit="deg", substitute=False)
     from ..physics.nutation import f_of_u
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
@@ -148,56 +149,95 @@ def _roots(top, start, nut, work: Work) -> None:
                f"{residual:.1e}")
 
 
+def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
+    """theta = acos(u) as physics/nutation.py computes it, from 1 - u and 1 + u (the roots'
+    offsets, no cancellation): 2 asin(sqrt((1 - u) / 2)) for u >= 0, pi - 2 asin(sqrt((1 + u)
+    / 2)) below; acos(u) of a rounded u loses the digits of a small angle."""
+    one_minus, one_plus = min(max(one_minus, 0.0), 2.0), min(max(one_plus, 0.0), 2.0)
+    if one_minus <= one_plus:
+        return 2 * asin(sqrt(Let(Sym(f"one_minus_{u}", one_minus), 1 - Sym(u, math.nan)) / 2))
+    return PI - 2 * asin(sqrt(Let(Sym(f"one_plus_{u}", one_plus), 1 + Sym(u, math.nan)) / 2))
+
+
 def _released(top, start, nut, omega_z: float, work: Work) -> None:
     from ..physics.nutation import released_u1
 
-    a, g = nut.a, nut.gamma
-    u2 = math.cos(start.theta0)
     work.section("Released from rest (phidot0 = thetadot0 = 0): Eqs. 11.22-11.25")
     work.text("P1 = P2 u2 (Eq. 11.22), alpha = a u2, f(u) = (u2 - u)[a (1 - u^2) - gamma^2 "
               "(u2 - u)] (Eq. 11.23)")
     work.text("Eq. 11.24 as corrected in the errata: gamma^2/a u2 under the root, not gamma^2/2")
-    u1 = released_u1(top, start.theta0, omega_z)
-    work.step("u1", "gamma^2/(2a) - sqrt(gamma^4/(4a^2) - gamma^2/a cos(theta0) + 1)",
-              f"{num(g * g / (2 * a))} - sqrt({num(g ** 4 / (4 * a * a))} - {num(g * g / a)} "
-              f"({num(u2)}) + 1)", u1, ref="Eq. 11.25")
-    work.step("theta_1", "acos(u1)", value=math.acos(max(-1.0, min(1.0, u1))) / DEG, unit="deg",
+    t = _syms(top, start, nut, omega_z)
+    g, a = t["gamma"], t["a"]
+    # as printed; released_u1 computes it without cancellation (a test holds the two together)
+    u1 = work.step("u1", g ** 2 / (2 * a) - sqrt(g ** 4 / (4 * a ** 2) - g ** 2 / a
+                                                  * cos(t["theta0"]) + 1), ref="Eq. 11.25")
+    assert u1 is not None
+    work.step("theta_1", acos(Sym("u1", max(-1.0, min(1.0, u1)))), unit="deg", substitute=False,
               note="the axis falls from theta_2 = theta0 to theta_1 and back")
     work.check(f"Eq. 11.25 u1 = {num(u1, 10)} against the root of Eq. 11.19 u1 = "
                f"{num(nut.u_roots[0], 10)}")
+
+
+def _differences(nut) -> tuple[Expr, Expr]:
+    """u2 - u1 and u3 - u1 as the differences of the roots' offsets d_i = u_i - u0, which
+    physics/nutation.py computes without cancellation (u1 and u2 agree to many digits in a
+    fast or nearly steady top)."""
+    d1, d2, d3 = nut.d_roots
+    u1, u2, u3 = (Sym(f"u{i}", math.nan) for i in (1, 2, 3))
+    return (Let(Sym("u2_minus_u1", d2 - d1), u2 - u1), Let(Sym("u3_minus_u1", d3 - d1), u3 - u1))
 
 
 def _period(nut, work: Work) -> None:
     from ..physics.nutation import complete_K
 
     d1, d2, d3 = nut.d_roots
-    u1, u2, u3 = nut.u_roots
-    m = (d2 - d1) / (d3 - d1)
     K = complete_K(d1, d2, d3)
+    width, span = _differences(nut)
     work.section("Nutation period: f(u) = a (u - u1)(u - u2)(u - u3), u = u1 + (u2 - u1) sin^2 s")
     work.text("T = 2 int_u1^u2 du / sqrt(f(u)) = 4 K(m) / sqrt(a (u3 - u1)), where K is the "
               "complete elliptic integral of the first kind and m, below, its parameter; the "
               "substitution is u = u1 + (u2 - u1) sin^2 s for s from 0 to pi/2")
-    work.step("m", "(u2 - u1) / (u3 - u1)", f"({num(u2)} - {num(u1)}) / ({num(u3)} - {num(u1)})",
-              m)
+    m = work.step("m", width / span)
     work.step("K(m)", value=K)
-    work.step("T", "4 K(m) / sqrt(a (u3 - u1))", f"4 ({num(K)}) / sqrt(({qty(nut.a, '1/s^2')}) "
-              f"({num(u3 - u1)}))", nut.nutation_period, "s",
+    # K(m) from R_F with 1 - m = (u3 - u2) / (u3 - u1) exact; ellipk(m) would lose it as m -> 1
+    K_m = Let(Sym("K", K), ellipk(Sym("m", m if m is not None else math.nan)))
+    work.step("T", 4 * K_m / sqrt(Sym("a", nut.a, "1/s^2") * span), unit="s",
               note="theta_max -> theta_min -> theta_max")
     if nut.motion == "steady":
         work.text("u1 = u2 (to rounding): no nutation; T is the period of small oscillations "
                   "about theta0, the m -> 0 limit 2 pi / sqrt(a (u3 - u1))")
 
 
-def _precession(nut, work: Work) -> None:
+def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
+    """phidot = (beta - gamma u) / (1 - u^2) at a nutation limit (Eq. 11.16), numerator and
+    denominator from the roots' offsets (physics/nutation.limit_precession_terms: beta -
+    gamma u vanishes exactly at a cusp). On a pole, where both vanish, the limit gamma / 2
+    (u = 1) or -gamma / 2 (u = -1)."""
+    numerator, one_minus, one_plus = terms
+    U = Sym(u, math.nan)
+    gamma = Sym("gamma", nut.gamma, "rad/s")
+    if one_minus <= 0:
+        return gamma / 2
+    if one_plus <= 0:
+        return -gamma / 2
+    return (Let(Sym(f"beta_minus_gamma_{u}", numerator),
+                Sym("beta", math.nan) - Sym("gamma", math.nan) * U)
+            / Let(Sym(f"one_minus_{u}_squared", one_minus * one_plus), 1 - U ** 2))
+
+
+def _precession(start, nut, work: Work) -> None:
+    from ..physics.nutation import limit_precession_terms
+
     d1, d2, d3 = nut.d_roots
     u1, u2, _ = nut.u_roots
     work.section("Precession: phidot = (beta - gamma u) / (1 - u^2) (Eqs. 11.16, 11.26)")
-    at = dict(zip(("u1", "u2"), nut.limit_precession))
-    work.step("phidot(u1)", "(beta - gamma u1) / (1 - u1^2)", value=at["u1"], unit="rad/s",
-              note=f"at theta_max ({num(at['u1'] / RPM)} rpm)")
-    work.step("phidot(u2)", "(beta - gamma u2) / (1 - u2^2)", value=at["u2"], unit="rad/s",
-              note=f"at theta_min ({num(at['u2'] / RPM)} rpm)")
+    for u, terms, where in zip(("u1", "u2"), limit_precession_terms(nut, start),
+                               ("theta_max", "theta_min")):
+        tree = _limit_precession(nut, u, terms)
+        pole = "; the limit of (beta - gamma u) / (1 - u^2) on the pole" if min(terms[1:]) <= 0 \
+            else ""
+        work.step(f"phidot({u})", tree, unit="rad/s", substitute=False,
+                  note=f"at {where} ({num(tree.value / RPM)} rpm){pole}")
     if nut.motion != "steady":
         m = (d2 - d1) / (d3 - d1)
         n1 = (u2 - u1) / (1 - u1) if u1 < 1 else math.inf
