@@ -11,7 +11,7 @@ brackets the same places (a negative value after a factor or a sign included).
 from __future__ import annotations
 
 from ..core import expr as E
-from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sum, Sym
+from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym
 
 
 class NodePrinter:
@@ -99,6 +99,12 @@ class NodePrinter:
             return Abs(self._print(node.args[0]))
         return Call(E.SHOWN_NAMES.get(node.name, node.name),
                     tuple(self._print(a) for a in node.args))
+
+    def _print_Chain(self, node: E.Chain) -> Node:
+        if self.values:
+            return self._print(node.forms[-1])
+        return Rel(self._print(node.forms[0]), tuple(("=", self._print(f))
+                                                     for f in node.forms[1:]))
 
 
 def formula_node(expr: E.Expr) -> Node:
