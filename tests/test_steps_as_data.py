@@ -27,7 +27,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
               "torque_free", "rate_gyro", "ship", "two_wheeler", "four_wheeler",
-              "rolling_disk"}
+              "rolling_disk", "gyroscopic_torque"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -606,3 +606,83 @@ def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path)
     assert by["psidot"].value == pytest.approx(s.spin, rel=1e-12)
     assert by["v_upright"].value == pytest.approx(disk_critical_axial_rate(m, g, r, I, J) * r,
                                                   rel=1e-12)
+
+
+TORQUE = """\
+id: t
+kind: gyroscopic_torque
+given: {{{given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("given, find", [
+    ("mass: 2.5 kg, k_axial: 35 mm, supported_mass: 10 kg, spin: -1725 rpm, precession: 48 rpm, "
+     "bearing_spacing: 200 mm", "bearing_forces, moment"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: -3000 rpm, precession: 40 rpm, "
+     "theta: 60 deg, bearing_spacing: 150 mm, cg_position: 50 mm, cg_radius: 120 mm, "
+     "cg_offset: along", "moment, bearing_forces, axial_thrust"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: 3000 rpm, precession: -40 rpm, "
+     "theta: 120 deg, bearing_spacing: 150 mm, cg_radius: 120 mm", "bearing_side_forces"),
+    ("mass: 400 kg, k_axial: 0.3 m, spin: -2400 rpm, speed: 200 km/h, turn_radius: 50 m, "
+     "turn: right, bearing_spacing: 1 m, cg_position: 0.3 m", "bearing_loads, axial_thrust"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: 2000 rpm, moment: 3 N m, theta: 60 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: -2000 rpm, moment: 3 N m, theta: 130 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, spin: 2000 rpm, moment: -3 N m", "precession"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_time: 0.1 s, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_length: 2 m, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("mass: 2.2 kg, k_axial: 60 mm, spin: 1725 rpm, precession: 0.2 rad/s, counterweight: 0.5 kg, "
+     "balance_position: 180 mm", "counterweight_position"),
+])
+def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
+    """Each step from its tree against gyroscopic_torque's physics functions (Eq. 11.29
+    generalised, the slow root, the free body of the rotor, the wheel's drop), with
+    negative rates and angles past 90 deg among them."""
+    from gyro_cli.kinds import gyroscopic_torque as K
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TORQUE.format(given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s.value for s in steps}
+    v = _released_top_data(result)
+    th = v.get("theta", math.pi / 2)
+    J, I = v["J"], v.get("I", 0.0)
+    if "psidot" in by and "v" in v and "r_w" in v:
+        assert by["psidot"] == pytest.approx(v["v"] / v["r_w"], rel=1e-12)
+    if "t" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_uniform(v["h"], v["v"], v["s"], v["L"]),
+                                            rel=1e-12)
+    if "ydot_max" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_harmonic(v["h"], v["T_d"], v["L"]),
+                                            rel=1e-12)
+    if "R" in v and "Omega" in by:
+        sign = -1 if "right" in given else 1
+        assert by["Omega"] == pytest.approx(sign * v["v"] / v["R"], rel=1e-12)
+    if "moment:" in given:
+        roots = K.precession_for_moment(J, I, v["psidot"], th, v["M"])
+        assert by["Omega"] == pytest.approx(min(roots, key=abs), rel=1e-12)
+    Omega = by.get("Omega", v.get("Omega"))
+    M = K.gyroscopic_moment(J, I, v["psidot"], Omega, th)
+    assert by["M"] == pytest.approx(M, rel=1e-12)
+    if "F_A,weight" in by:
+        m = v.get("m_s", v.get("m"))
+        forces = K.bearing_forces(m, v["g"], M, v["L"], v["a"], Omega, th, v.get("R", 0.0),
+                                  "along" if "along" in given else "across")
+        assert (by["F_A,weight"], by["F_B,weight"]) == pytest.approx(forces.weight, rel=1e-12)
+        assert (by["F_A"], by["F_B"]) == pytest.approx(forces.up, rel=1e-12)
+        assert by["T"] == pytest.approx(forces.thrust, rel=1e-12, abs=1e-12)
+        if "F_A,accel" in by:
+            assert (by["F_A,accel"], by["F_B,accel"]) == pytest.approx(forces.inertial, rel=1e-12)
+        if "F_A,side" in by:
+            assert (by["F_A,side"], by["F_B,side"]) == pytest.approx(forces.side, rel=1e-12)
+    if "F_A,couple" in by:
+        assert (by["F_A,couple"], by["F_B,couple"]) == pytest.approx(
+            K.couple_forces(M, v["L"]), rel=1e-12)
+    if "db" in by:
+        assert by["db"] == pytest.approx(K.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
+    assert steps
