@@ -27,7 +27,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
 TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
               "torque_free", "rate_gyro", "ship", "two_wheeler", "four_wheeler",
-              "rolling_disk", "gyroscopic_torque"}
+              "rolling_disk", "gyroscopic_torque", "swinging_rotor"}
 
 
 def _from_body(title: str, symbol: str, formula: str) -> bool:
@@ -686,3 +686,66 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
     if "db" in by:
         assert by["db"] == pytest.approx(K.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
     assert steps
+
+
+SWING = """\
+id: s
+kind: swinging_rotor
+given: {{{given}}}
+find: [bearing_forces, angular_rate]
+"""
+
+
+def _lets(node):
+    """Every `Let` of a tree (a quantity shown by its definition in the formula)."""
+    from gyro_cli.core import expr as E
+
+    if isinstance(node, E.Let):
+        yield node
+    for child in node.children():
+        yield from _lets(child)
+
+
+@pytest.mark.parametrize("given", [
+    "mass: 2 kg, shape: disk, radius: 100 mm, spin: 300 rad/s, arm_length: 250 mm, "
+    "bearing_spacing: 200 mm, theta: 90 deg",
+    "mass: 3 kg, shape: ring, radius: 120 mm, spin: -200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, arm_position: 60 mm, theta: 135 deg, theta0: 30 deg",
+    "mass: 3 kg, k_axial: 50 mm, k_cg: 40 mm, spin: 200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, theta: 200 deg, theta0: 10 deg",
+])
+def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
+    """Each step from its tree (both forms of the two-form steps) against swing_forces,
+    and every part shown by its definition (the expanded formulas of 11/8) evaluated from
+    that definition against the value it stands for."""
+    from gyro_cli.core import expr as E
+    from gyro_cli.kinds import swinging_rotor as K
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SWING.format(given=given))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s for s in steps}
+    v = _released_top_data(result)
+    m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
+    th0, th = v["theta0"], v["theta"]
+    J, I_G = v["J"], v["I_G"]
+    a = v["a/d"] * d
+    f = K.swing_forces(m, g, J, I_G, p, L, d, a, th0, th)
+    I_O = I_G + m * L * L
+    assert by["I_O"].value == pytest.approx(I_O, rel=1e-12)
+    for symbol, expected in (("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
+                             ("thetaddot", K.swing_acceleration(m, g, L, I_O, th))):
+        chain = by[symbol].expr
+        assert isinstance(chain, E.Chain) and len(chain.forms) == 2
+        for form in chain.forms:
+            assert form.value == pytest.approx(expected, rel=1e-12, abs=1e-12), symbol
+    assert by["J p thetadot / d"].value == pytest.approx(f.couple, rel=1e-12, abs=1e-12)
+    for k, end in enumerate("AB"):
+        assert by[f"F_{end},arm"].value == pytest.approx(f.arm[k], rel=1e-12)
+        assert by[f"F_{end},normal"].value == pytest.approx(f.normal[k], rel=1e-12, abs=1e-12)
+        assert by[f"|F_{end}|"].value == pytest.approx(f.magnitudes[k], rel=1e-12)
+    lets = [let for s in steps for let in _lets(s.expr)]
+    assert {let.sym.name for let in lets} >= {"I_O/m", "S_arm", "S_normal", "F_couple", "b/d"}
+    for let in lets:
+        assert let.body.value == pytest.approx(let.sym.si, rel=1e-9, abs=1e-12), let.sym.name
