@@ -26,7 +26,8 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 #: kinds whose every equation step is an expression tree (the others are migrating)
 TREE_KINDS = {"aeroplane", "bicycle", "gyrocompass", "gyro_drift", "earth_precession",
               "released_top", "steady_precession", "torque_free", "rate_gyro", "ship",
-              "two_wheeler", "four_wheeler", "rolling_disk"}
+              "two_wheeler", "four_wheeler", "rolling_disk", "gyroscopic_torque",
+              "swinging_rotor"}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
@@ -777,3 +778,146 @@ def test_body_shape_trees_agree_with_integrals_over_the_body(shape):
     assert steps["J"].expr is not None and steps["I_G"].expr is not None
     if shape == "cone":  # the apex at the fixed point: the centre of mass at 3 h / 4
         assert body.l == pytest.approx(0.75 * h, rel=1e-12)
+
+
+TORQUE = """\
+id: t
+kind: gyroscopic_torque
+given: {{{given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("given, find", [
+    ("mass: 2.5 kg, k_axial: 35 mm, supported_mass: 10 kg, spin: -1725 rpm, precession: 48 rpm, "
+     "bearing_spacing: 200 mm", "bearing_forces, moment"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: -3000 rpm, precession: 40 rpm, "
+     "theta: 60 deg, bearing_spacing: 150 mm, cg_position: 50 mm, cg_radius: 120 mm, "
+     "cg_offset: along", "moment, bearing_forces, axial_thrust"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: 3000 rpm, precession: -40 rpm, "
+     "theta: 120 deg, bearing_spacing: 150 mm, cg_radius: 120 mm", "bearing_side_forces"),
+    ("mass: 400 kg, k_axial: 0.3 m, spin: -2400 rpm, speed: 200 km/h, turn_radius: 50 m, "
+     "turn: right, bearing_spacing: 1 m, cg_position: 0.3 m", "bearing_loads, axial_thrust"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: 2000 rpm, moment: 3 N m, theta: 60 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: -2000 rpm, moment: 3 N m, theta: 130 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, spin: 2000 rpm, moment: -3 N m", "precession"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_time: 0.1 s, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_length: 2 m, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("mass: 2.2 kg, k_axial: 60 mm, spin: 1725 rpm, precession: 0.2 rad/s, counterweight: 0.5 kg, "
+     "balance_position: 180 mm", "counterweight_position"),
+])
+def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
+    """Each step from its tree against gyroscopic_torque's physics functions (Eq. 11.29
+    generalised, the slow root, the free body of the rotor, the wheel's drop), with
+    negative rates and angles past 90 deg among them."""
+    from gyro_cli.kinds import gyroscopic_torque as K
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TORQUE.format(given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s.value for s in steps}
+    v = _released_top_data(result)
+    th = v.get("theta", math.pi / 2)
+    J, I = v["J"], v.get("I", 0.0)
+    if "psidot" in by and "v" in v and "r_w" in v:
+        assert by["psidot"] == pytest.approx(v["v"] / v["r_w"], rel=1e-12)
+    if "t" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_uniform(v["h"], v["v"], v["s"], v["L"]),
+                                            rel=1e-12)
+    if "ydot_max" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_harmonic(v["h"], v["T_d"], v["L"]),
+                                            rel=1e-12)
+    if "R" in v and "Omega" in by:
+        sign = -1 if "right" in given else 1
+        assert by["Omega"] == pytest.approx(sign * v["v"] / v["R"], rel=1e-12)
+    if "moment:" in given:
+        roots = K.precession_for_moment(J, I, v["psidot"], th, v["M"])
+        assert by["Omega"] == pytest.approx(min(roots, key=abs), rel=1e-12)
+    Omega = by.get("Omega", v.get("Omega"))
+    M = K.gyroscopic_moment(J, I, v["psidot"], Omega, th)
+    assert by["M"] == pytest.approx(M, rel=1e-12)
+    if "F_A,weight" in by:
+        m = v.get("m_s", v.get("m"))
+        forces = K.bearing_forces(m, v["g"], M, v["L"], v["a"], Omega, th, v.get("R", 0.0),
+                                  "along" if "along" in given else "across")
+        assert (by["F_A,weight"], by["F_B,weight"]) == pytest.approx(forces.weight, rel=1e-12)
+        assert (by["F_A"], by["F_B"]) == pytest.approx(forces.up, rel=1e-12)
+        assert by["T"] == pytest.approx(forces.thrust, rel=1e-12, abs=1e-12)
+        if "F_A,accel" in by:
+            assert (by["F_A,accel"], by["F_B,accel"]) == pytest.approx(forces.inertial, rel=1e-12)
+        if "F_A,side" in by:
+            assert (by["F_A,side"], by["F_B,side"]) == pytest.approx(forces.side, rel=1e-12)
+    if "F_A,couple" in by:
+        assert (by["F_A,couple"], by["F_B,couple"]) == pytest.approx(
+            K.couple_forces(M, v["L"]), rel=1e-12)
+    if "db" in by:
+        assert by["db"] == pytest.approx(K.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
+    assert steps
+
+
+SWING = """\
+id: s
+kind: swinging_rotor
+given: {{{given}}}
+find: [bearing_forces, angular_rate]
+"""
+
+
+def _lets(node):
+    """Every `Let` of a tree (a quantity shown by its definition in the formula)."""
+    from gyro_cli.core import expr as E
+
+    if isinstance(node, E.Let):
+        yield node
+    for child in node.children():
+        yield from _lets(child)
+
+
+@pytest.mark.parametrize("given", [
+    "mass: 2 kg, shape: disk, radius: 100 mm, spin: 300 rad/s, arm_length: 250 mm, "
+    "bearing_spacing: 200 mm, theta: 90 deg",
+    "mass: 3 kg, shape: ring, radius: 120 mm, spin: -200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, arm_position: 60 mm, theta: 135 deg, theta0: 30 deg",
+    "mass: 3 kg, k_axial: 50 mm, k_cg: 40 mm, spin: 200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, theta: 200 deg, theta0: 10 deg",
+])
+def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
+    """Each step from its tree (both forms of the two-form steps) against swing_forces,
+    and every part shown by its definition (the expanded formulas of 11/8) evaluated from
+    that definition against the value it stands for."""
+    from gyro_cli.core import expr as E
+    from gyro_cli.kinds import swinging_rotor as K
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SWING.format(given=given))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s for s in steps}
+    v = _released_top_data(result)
+    m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
+    th0, th = v["theta0"], v["theta"]
+    J, I_G = v["J"], v["I_G"]
+    a = v["a/d"] * d
+    f = K.swing_forces(m, g, J, I_G, p, L, d, a, th0, th)
+    I_O = I_G + m * L * L
+    assert by["I_O"].value == pytest.approx(I_O, rel=1e-12)
+    for symbol, expected in (("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
+                             ("thetaddot", K.swing_acceleration(m, g, L, I_O, th))):
+        chain = by[symbol].expr
+        assert isinstance(chain, E.Chain) and len(chain.forms) == 2
+        for form in chain.forms:
+            assert form.value == pytest.approx(expected, rel=1e-12, abs=1e-12), symbol
+    assert by["J p thetadot / d"].value == pytest.approx(f.couple, rel=1e-12, abs=1e-12)
+    for k, end in enumerate("AB"):
+        assert by[f"F_{end},arm"].value == pytest.approx(f.arm[k], rel=1e-12)
+        assert by[f"F_{end},normal"].value == pytest.approx(f.normal[k], rel=1e-12, abs=1e-12)
+        assert by[f"|F_{end}|"].value == pytest.approx(f.magnitudes[k], rel=1e-12)
+    lets = [let for s in steps for let in _lets(s.expr)]
+    assert {let.sym.name for let in lets} >= {"I_O/m", "S_arm", "S_normal", "F_couple", "b/d"}
+    for let in lets:
+        assert let.body.value == pytest.approx(let.sym.si, rel=1e-9, abs=1e-12), let.sym.name

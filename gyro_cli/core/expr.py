@@ -51,6 +51,8 @@ def num(x: float, sig: int = SIG) -> str:
 
 
 def _node(x: "Expr | float") -> "Expr":
+    if isinstance(x, Chain):
+        raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
     if isinstance(x, Expr):
         return x
     if isinstance(x, bool) or not isinstance(x, (int, float)):
@@ -294,6 +296,40 @@ class Call(Expr):
         return self.args
 
 
+class Chain(Expr):
+    """One quantity written in equal forms, ``A = B``: ``m g L sin(theta) / I_O = g L
+    sin(theta) / (k_G^2 + L^2)``. The formula prints every form, joined by ``=``; the
+    substitution, the value and ``expr`` are the last form's. A chain is a step's whole
+    tree, never an operand. Its value evaluates every form and refuses forms that disagree
+    beyond 1e-9 relative (a slip in one form, or magnitudes beyond double precision)."""
+
+    __slots__ = ("forms",)
+
+    def __init__(self, *forms: "Expr | float") -> None:
+        if len(forms) < 2:
+            raise ValueError("a chain holds two forms or more")
+        self.forms = tuple(_node(f) for f in forms)
+
+    def _refuse(self, *other: object) -> "Expr":
+        raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
+
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _refuse
+    __truediv__ = __rtruediv__ = __pow__ = __neg__ = _refuse
+
+    @property
+    def value(self) -> float:
+        values = [f.value for f in self.forms]
+        last = values[-1]
+        for k, v in enumerate(values[:-1]):
+            if v != last and not math.isclose(v, last, rel_tol=1e-9):
+                raise ValueError(f"its forms disagree: form {k + 1} gives {v!r}, the last "
+                                 f"{last!r}")
+        return last
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.forms
+
+
 def _call(name: str) -> Callable[..., Expr]:
     def build(*args: "Expr | float") -> Expr:
         return Call(name, tuple(_node(a) for a in args))
@@ -317,6 +353,9 @@ def symbols(expr: Expr) -> dict[str, Sym]:
         elif isinstance(node, Let):
             walk(node.sym)
             return
+        elif isinstance(node, Chain):  # the value and `expr` are the last form's
+            walk(node.forms[-1])
+            return
         for child in node.children():
             walk(child)
 
@@ -336,6 +375,8 @@ def map_syms(expr: Expr, change: Callable[[Sym], Sym]) -> Expr:
         return type(expr)(map_syms(expr.left, change), map_syms(expr.right, change))
     if isinstance(expr, Call):
         return Call(expr.name, tuple(map_syms(a, change) for a in expr.args))
+    if isinstance(expr, Chain):
+        return Chain(*(map_syms(f, change) for f in expr.forms))
     return expr
 
 
@@ -495,6 +536,11 @@ class TextPrinter(Printer):
     def _print_Neg(self, node: Neg) -> str:
         return "-" + self.operand(node, node.arg)
 
+    def _print_Chain(self, node: Chain) -> str:
+        if self.values:
+            return self._print(node.forms[-1])
+        return " = ".join(self._print(f) for f in node.forms)
+
     def _sum(self, node: BinOp, op: str) -> str:
         left = self.operand(node, node.left)
         right = self.operand(node, node.right, right=True)
@@ -572,6 +618,9 @@ class PythonPrinter(Printer):
 
     def _print_Call(self, node: Call) -> str:
         return f"{node.name}({', '.join(self._print(a) for a in node.args)})"
+
+    def _print_Chain(self, node: Chain) -> str:
+        return self._print(node.forms[-1])
 
 
 def python_name(name: str) -> str:

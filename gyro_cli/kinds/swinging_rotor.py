@@ -27,6 +27,7 @@ import math
 from dataclasses import dataclass
 
 from ..core.errors import InputError
+from ..core.expr import Chain, Expr, Let, Sym, cos, sin, sqrt
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
@@ -90,6 +91,16 @@ def _inertia_texts(body) -> tuple[str, str]:
     return "k_G^2", "k_z^2"
 
 
+def _inertia_trees(body, m: float) -> tuple[Expr, Expr]:
+    """I_G / m and J / m as trees in the rotor's own symbols (r^2 / 4 and r^2 / 2 for a
+    disk, else the radii of gyration k_G^2 and k_z^2)."""
+    if body.shape in ("disk", "ring"):
+        r = Sym("r", body.radius, "m")
+        return (r ** 2 / 4, r ** 2 / 2) if body.shape == "disk" else (r ** 2 / 2, r ** 2)
+    return (Sym("k_G", math.sqrt(body.I_cg / m), "m") ** 2,
+            Sym("k_z", math.sqrt(body.J / m), "m") ** 2)
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J", "I_cg")
@@ -129,42 +140,47 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "(from the shaft toward the rotor positive), 'normal' components along n. "
               "Labelled A, B in that order. The bearings exert no moment about AB.")
     work.section("Swing: energy and moments about AB")
-    work.step("I_O", "I_G + m L^2", f"{qty(I_G, 'kg*m^2')} + {qty(m, 'kg')} ({qty(L, 'm')})^2",
-              I_O, "kg*m^2", note=f"= m ({kg2} + L^2)")
-    work.step("thetadot^2", f"2 m g L (cos theta0 - cos theta) / I_O = 2 g L (cos theta0 - "
-              f"cos theta) / ({kg2} + L^2)", f"2 ({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(c0)} "
-              f"- {num(c)}) / {qty(I_O / m, 'm^2')}", f.thetadot ** 2, "rad^2/s^2",
-              ref="energy")
+    m_, g_, L_, d_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("d", d, "m")
+    th, th0, p_ = Sym("theta", theta, "deg"), Sym("theta0", theta0, "deg"), Sym("p", p, "rad/s")
+    kG2_, kz2_ = _inertia_trees(body, m)
+    I_O_ = Sym("I_O", work.step("I_O", Sym("I_G", I_G, "kg m^2") + m_ * L_ ** 2, unit="kg*m^2",
+                                note=f"= m ({kg2} + L^2)"), "kg m^2")
+    # I_O / m in the rotor's own symbols, its value from I_O as swing_forces takes it
+    per_m = Let(Sym("I_O/m", I_O / m, "m^2"), kG2_ + L_ ** 2)
+    drop = cos(th0) - cos(th)  # cos theta0 - cos theta: the centre's fall is L times it
+    work.step("thetadot^2", Chain(2 * m_ * g_ * L_ * drop / I_O_, 2 * g_ * L_ * drop / per_m),
+              unit="rad^2/s^2", ref="energy")
     work.step("thetadot", value=f.thetadot, unit="rad/s")
-    work.step("thetaddot", f"m g L sin(theta) / I_O = g L sin(theta) / ({kg2} + L^2)",
-              f"({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(s)}) / {qty(I_O / m, 'm^2')}",
-              f.thetaddot, "rad/s^2", ref="moments about AB")
+    work.step("thetaddot", Chain(m_ * g_ * L_ * sin(th) / I_O_, g_ * L_ * sin(th) / per_m),
+              unit="rad/s^2", ref="moments about AB")
     work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
     work.text("H_O = I_O thetadot i + J p k: the angular momentum about O, the centre of the "
               "shaft; k turns about i at thetadot")
-    work.step("J p thetadot / d", f"m ({kz2}) p thetadot / d",
-              f"{qty(J, 'kg*m^2')} ({qty(p, 'rad/s')}) ({qty(f.thetadot, 'rad/s')}) / "
-              f"{qty(d, 'm')}", f.couple, "N", note="+ at B, - at A, along the arm")
+    thetadot = Sym("thetadot", f.thetadot, "rad/s")
+    couple = work.step("J p thetadot / d", Let(Sym("J", J, "kg m^2"), m_ * kz2_) * p_ * thetadot
+                       / d_, unit="N", note="+ at B, - at A, along the arm")
     work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
     work.text("a_G: the acceleration of the rotor's centre G, L thetaddot across the arm and "
               "L thetadot^2 toward the shaft")
-    root = f"sqrt(2 g L (cos theta0 - cos theta) / ({kg2} + L^2))"
-    arm_common = f"m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / ({kg2} + L^2)]"
-    normal_common = f"m g sin(theta) ({kg2}) / ({kg2} + L^2)"
-    common_arm = m * (g * c - L * f.thetadot ** 2)
-    common_normal = m * (g * s - L * f.thetaddot)
+    # the common parts, shown by their definitions in the formula and by value after it
+    per_m_sq = kG2_ + L_ ** 2
+    arm_part = Let(Sym("S_arm", m * (g * c - L * f.thetadot ** 2), "N"),
+                   m_ * g_ * (cos(th) - 2 * L_ ** 2 * drop / per_m_sq))
+    normal_part = Let(Sym("S_normal", m * (g * s - L * f.thetaddot), "N"),
+                      m_ * g_ * sin(th) * kG2_ / per_m_sq)
+    couple_part = Let(Sym("F_couple", couple, "N"),
+                      m_ * kz2_ * p_ * sqrt(2 * g_ * L_ * drop / per_m_sq) / d_)
+    b_d = Let(Sym("b/d", b / d), Sym("b", b, "m") / d_)
+    a_d = Let(Sym("a/d", a / d), Sym("a", a, "m") / d_)
     work.text(f"a = {qty(a, 'm')} (A to the arm), b = d - a = {qty(b, 'm')}; b/d = {num(b / d)}, "
               f"a/d = {num(a / d)}")
-    work.step("F_A,arm", f"(b/d) {arm_common} - m ({kz2}) p {root} / d",
-              f"({num(b / d)}) ({qty(common_arm, 'N')}) - {qty(f.couple, 'N')}", f.arm[0], "N")
-    work.step("F_B,arm", f"(a/d) {arm_common} + m ({kz2}) p {root} / d",
-              f"({num(a / d)}) ({qty(common_arm, 'N')}) + {qty(f.couple, 'N')}", f.arm[1], "N")
-    work.step("F_A,normal", f"(b/d) {normal_common}", f"({num(b / d)}) "
-              f"({qty(common_normal, 'N')})", f.normal[0], "N")
-    work.step("F_B,normal", f"(a/d) {normal_common}", f"({num(a / d)}) "
-              f"({qty(common_normal, 'N')})", f.normal[1], "N")
-    work.step("|F_A|", "sqrt(F_A,arm^2 + F_A,normal^2)", value=f.magnitudes[0], unit="N")
-    work.step("|F_B|", "sqrt(F_B,arm^2 + F_B,normal^2)", value=f.magnitudes[1], unit="N")
+    forces = {"F_A,arm": b_d * arm_part - couple_part, "F_B,arm": a_d * arm_part + couple_part,
+              "F_A,normal": b_d * normal_part, "F_B,normal": a_d * normal_part}
+    values = {name: work.step(name, tree, unit="N") for name, tree in forces.items()}
+    for end in "AB":
+        arm, normal = (Sym(f"F_{end},{part}", values[f"F_{end},{part}"], "N")
+                       for part in ("arm", "normal"))
+        work.step(f"|F_{end}|", sqrt(arm ** 2 + normal ** 2), unit="N", substitute=False)
     if abs(f.couple) > 0:
         work.text("the gyroscopic couple pushes B along +k and A along -k when p thetadot > 0; "
                   "reversing the spin swaps the two")

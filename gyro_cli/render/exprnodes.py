@@ -102,6 +102,12 @@ class NodePrinter:
         return Call(E.SHOWN_NAMES.get(node.name, node.name),
                     tuple(self._print(a) for a in node.args))
 
+    def _print_Chain(self, node: E.Chain) -> Node:
+        if self.values:
+            return self._print(node.forms[-1])
+        return Rel(self._print(node.forms[0]), tuple(("=", self._print(f))
+                                                     for f in node.forms[1:]))
+
 
     # ---- the typeset-only nodes of sentences (core/prose.py)
 
