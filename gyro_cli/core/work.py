@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
-from .prose import Prose
+from .prose import Prose, text as prose_text
 from .units import si_text
 
 __all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
@@ -67,6 +67,7 @@ class Step:
     view: Expr | None = None
     si: tuple[float, str] | None = None
     prose: Prose | None = None  # a line (or a step's note) written as words and trees
+    symbol_expr: Expr | None = None  # a symbol that is not one name: ``H / c``, ``|F|``
 
     @property
     def shown(self) -> Expr | None:
@@ -103,6 +104,7 @@ class Answer:
     si_values: list
     dimension: str | None
     labels: list[str] = field(default_factory=list)
+    symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
 
     @property
     def si_unit(self) -> str | None:
@@ -162,7 +164,7 @@ class Work:
             self.section("Solution")
         return self.sections[-1]
 
-    def step(self, symbol: str, formula: str | Expr = "", substitution: str = "",
+    def step(self, symbol: str | Expr, formula: str | Expr = "", substitution: str = "",
              value: float | None = None, unit: str = "", ref: str = "",
              note: "str | tuple[str | Expr, ...]" = "",
              substitute: bool = True, state: bool = True) -> float | None:
@@ -175,6 +177,9 @@ class Work:
         returns it converted. The older form, formula and substitution as text with the
         value beside them, is kept for the kinds not yet written as trees.
         """
+        symbol_expr = None
+        if isinstance(symbol, Expr):  # a symbol that is not one name: H / c, |F|, K(m)
+            symbol_expr, symbol = symbol, prose_text(symbol)
         prose = None
         if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
             prose = Prose(note)
@@ -200,12 +205,12 @@ class Work:
             self._current().steps.append(Step(
                 symbol, tree_formula(tree) if state else "",
                 tree_substitution(tree) if substitute else "", value, unit, ref, note,
-                expr=tree, si=si, prose=prose))
+                expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
         if " -" in substitution:
             substitution = fold_signs(substitution)
         self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note,
-                                          prose=prose))
+                                          prose=prose, symbol_expr=symbol_expr))
         return value
 
     def text(self, *pieces: str | Expr) -> None:
@@ -218,9 +223,13 @@ class Work:
         a line."""
         self.checks.append(prose_step(pieces))
 
-    def answer(self, name: str, symbol: str, si_values: list, dimension: str | None,
+    def answer(self, name: str, symbol: str | Expr, si_values: list, dimension: str | None,
                labels: list[str] | None = None) -> None:
-        self.answers[name] = Answer(name, symbol, list(si_values), dimension, list(labels or []))
+        """An answer; its symbol is one name (``phidot``) or a tree (``abs(F)``)."""
+        tree = symbol if isinstance(symbol, Expr) else None
+        text = prose_text(symbol) if tree is not None else symbol
+        self.answers[name] = Answer(name, text, list(si_values), dimension, list(labels or []),
+                                    symbol_expr=tree)
 
     def warn(self, *pieces: str | Expr) -> None:
         """A warning: words, or words and trees as `text` takes them."""

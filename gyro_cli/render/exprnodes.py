@@ -10,6 +10,8 @@ brackets the same places (a negative value after a factor or a sign included).
 
 from __future__ import annotations
 
+import re
+
 from ..core import expr as E
 from ..core import prose as P
 from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
@@ -147,6 +149,20 @@ class NodePrinter:
         if unit:
             shown = Quantity(shown, unit)  # type: ignore[arg-type]
         return Neg(shown) if number.startswith("-") else shown
+
+
+#: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)
+NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*(,[A-Za-z0-9_]+)?\Z")
+
+
+def symbol_node(text: str, tree: E.Expr | None = None) -> Node | None:
+    """A step's, an answer's or a given's symbol: its tree where the kind wrote one, one
+    name as that name; None for anything else (not a symbol gyro writes)."""
+    if tree is not None:
+        return NodePrinter(values=False).doprint(tree)
+    if NAME.match(text):
+        return Sym(text)
+    return None
 
 
 def prose_nodes(prose: P.Prose) -> list[str | Node]:

@@ -31,7 +31,7 @@ from .mathml import MathMLPrinter, math_element, symbol_mathml
 from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
 from .exprnodes import prose_nodes
-from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
+from .writeup import _CITED, _KEYS, _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, file_keys, width
 
 def escape(text: str, quote: bool = True) -> str:
     """A string from a file in HTML (the one place they meet it): markup escaped, and a
@@ -361,7 +361,7 @@ def _answers_table(result: Result, level: int) -> str:
                          + (f" ({escape(label)})" if label else ""))
         lhs = ""
         if _answer_lhs(answer):
-            tree = try_parse(answer.symbol, units=False)
+            tree = answer_symbol(answer)
             lhs = _math(tree) if tree is not None else ""
         values = ", ".join(parts) if parts else "none"
         rows.append(f'<tr id="{escape(_answer_id(result, name))}"><th scope="row">'

@@ -21,7 +21,7 @@ import re
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
-from .exprnodes import formula_node, prose_nodes, substitution_node
+from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
 from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
@@ -231,7 +231,8 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
 # ---- steps ------------------------------------------------------------------
 
 def _step_pieces(step) -> tuple[Node | None, list[Node]]:
-    lhs = try_parse(step.symbol, units=False) or _tex(step.symbol)
+    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or \
+        try_parse(step.symbol, units=False) or _tex(step.symbol)
     pieces: list[Node] = []
     tree = getattr(step, "shown", None)
     if tree is not None:  # built from an expression tree: typeset from it, nothing parsed
@@ -417,11 +418,18 @@ def _md_escape(text: str) -> str:
 def _answer_lhs(answer) -> str:
     """``symbol = `` before an answer's values; nothing when the symbol is the name in words
     (``motion: retrograde``)."""
-    if try_parse(answer.symbol, units=False) is None or answer.symbol == answer.name \
+    tree = answer_symbol(answer)
+    if tree is None or answer.symbol == answer.name \
             and not (answer.values and not isinstance(answer.values[0], str)) \
             and answer.symbol.isalpha() and len(answer.symbol) > 2:
         return ""
-    return math(answer.symbol, units=False) + " = "
+    return LatexPrinter(False).doprint(tree) + " = "
+
+
+def answer_symbol(answer) -> Node | None:
+    """An answer's symbol as typesetting nodes (its tree, or its one name)."""
+    return symbol_node(answer.symbol, getattr(answer, "symbol_expr", None)) or \
+        try_parse(answer.symbol, units=False)
 
 
 def _answer_parts(answer) -> list[tuple[str, str]]:
@@ -539,7 +547,7 @@ def _latex(result: Result, level: str) -> str:
         lhs = _answer_lhs(answer)
         parts = [f"${lhs}{body}$" + (f" ({text_escape(label)})" if label else "")
                  for body, label in _answer_parts(answer)]
-        head = "" if lhs and symbol_tex(name) == math(answer.symbol, units=False) else \
+        head = "" if lhs and symbol_tex(name) + " = " == lhs else \
             f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
         lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
