@@ -155,3 +155,26 @@ def test_a_warning_of_words_and_trees_is_printed_from_them(tmp_path):
     us = to_us(result)
     assert us.solution.warnings == ["the moment M = 1.000 lbf ft is small"]
     assert "<li>the moment <math>" in html.worked_answer(us)
+
+
+def test_a_section_title_of_words_and_trees():
+    work = Work()
+    work.section("Steady precession, Eq. 11.13 with ", rel(names("thetaddot")[0], "=", 0))
+    work.text("x")
+    section = work.sections[0]
+    assert section.title == "Steady precession, Eq. 11.13 with thetaddot = 0"
+    result = _result_with(work)
+    assert r"with $\ddot{\theta} = 0$" in writeup.latex(result)
+    assert "with <math>" in html.worked_answer(result)
+
+
+def _result_with(work):
+    import dataclasses
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "gc.yaml"
+        path.write_text(template("gyrocompass"))
+        result = solve_file(str(path))
+    return dataclasses.replace(result, solution=dataclasses.replace(
+        result.solution, sections=work.sections))

@@ -93,6 +93,7 @@ class Step:
 class Section:
     title: str
     steps: list[Step] = field(default_factory=list)
+    prose: Prose | None = None  # a title written as words and trees
 
 
 @dataclass
@@ -154,9 +155,11 @@ class Work:
         self.checks: list[Step] = []
         self.warning_prose: dict[str, Prose] = {}
 
-    def section(self, title: str) -> Section:
-        """Start a section; later steps go into it."""
-        self.sections.append(Section(title))
+    def section(self, *pieces: str | Expr) -> Section:
+        """Start a section; later steps go into it. Its title is words, or words and trees
+        as `text` takes them."""
+        line = prose_step(pieces)
+        self.sections.append(Section(line.text, prose=line.prose))
         return self.sections[-1]
 
     def _current(self) -> Section:

@@ -424,7 +424,8 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str,
     out.append(animation)
     out.append(_given_table(result, level + 1))
     for section in solution.sections:
-        out.append(_heading(level + 1, prose_html(section.title)))
+        out.append(_heading(level + 1, prose_html(section.title) if section.prose is None
+                            else prose_pieces_html(section.prose)))
         out += [_step_html(step) for step in section.steps]
     if solution.checks:
         out.append(_heading(level + 1, "Check"))

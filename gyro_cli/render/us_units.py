@@ -168,7 +168,8 @@ def to_us(result: Result, given: bool = True) -> Result:
     warnings, warning_prose = _warnings(solution)
     converted = Solution(
         given=[_given(g) for g in solution.given] if given else list(solution.given),
-        sections=[Section(s.title, [_step(step) for step in s.steps]) for s in solution.sections],
+        sections=[Section(s.title, [_step(step) for step in s.steps], prose=s.prose)
+                  for s in solution.sections],
         answers=solution.answers,
         warnings=warnings,
         checks=[_step(step) for step in solution.checks],

@@ -366,6 +366,11 @@ def prose_latex(prose, markdown: bool = False) -> str:
     return "".join(out)
 
 
+def _title(section, markdown: bool) -> str:
+    prose = getattr(section, "prose", None)
+    return _prose(section.title, markdown) if prose is None else prose_latex(prose, markdown)
+
+
 def _warning(text: str, solution, markdown: bool) -> str:
     prose = getattr(solution, "warning_prose", {}).get(text)
     return _prose(text, markdown) if prose is None else prose_latex(prose, markdown)
@@ -480,7 +485,7 @@ def _markdown(result: Result) -> str:
         lines.append(f"| ${math(g.symbol, units=False)}$ | "
                      f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
     for section in solution.sections:
-        lines += ["", f"### {_prose(section.title, True)}", ""]
+        lines += ["", f"### {_title(section, True)}", ""]
         lines += _steps(section.steps, True)
     if solution.checks:
         lines += ["", "### Check", ""]
@@ -537,7 +542,7 @@ def _latex(result: Result, level: str) -> str:
         lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
-        lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
+        lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]
         lines += _steps(section.steps, False)
     if solution.checks:
         lines += ["", "\\subsubsection*{Check}", ""]
