@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from gyro_cli.render import html, mathml
-from gyro_cli.render.mathparse import parse
+from formula_oracle import parse
 from gyro_cli.solving.solve import solve_file
 
 ROOT = Path(__file__).resolve().parent.parent

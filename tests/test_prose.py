@@ -14,7 +14,7 @@ from gyro_cli.core.expr import PI, Sym, cos, sin
 from gyro_cli.core.prose import Prose, cross, dot, fn, names, q, rel, total, tup
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
-from gyro_cli.render.mathparse import spans
+from formula_oracle import spans
 from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 

@@ -20,7 +20,7 @@ import pytest
 
 from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
-from gyro_cli.render.mathparse import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
+from formula_oracle import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
 from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Pow,
                                       Prime, Quantity, Rel, Sum, Sym, Tuple)
 from gyro_cli.render.writeup import file_keys

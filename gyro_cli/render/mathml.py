@@ -7,23 +7,20 @@ natively and screen readers speak: ``phidot`` is phi with a dot accent,
 ``sin(theta)`` a function application, ``a / b`` a stacked fraction in a
 display. Every name and number from a problem file is HTML-escaped here.
 
-`formula(text)` is the one switch the HTML page calls for a formula: it
-parses today's formula text (`mathparse`) and prints the tree; when the
-expression trees of the worked answer carry their own MathML, that is the
-one function to change.
+The nodes come from the expression trees the kinds write (`exprnodes`);
+nothing here reads formula text.
 """
 
 from __future__ import annotations
 
 import re
 from html import escape
-from typing import cast
 
-from .mathparse import GREEK, _symbolic, dotted, spans, tokens, try_parse
 from .mathprint import PRECEDENCE, Printer, _fold, _rightmost, _strip, precedence, split_symbol
-from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym, Tuple
+from .mathtree import (GREEK, Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym, Tuple,
+                       _symbolic, dotted, tokens)
 
-__all__ = ["MathMLPrinter", "formula", "math_element", "symbol_mathml", "prose"]
+__all__ = ["MathMLPrinter", "math_element", "symbol_mathml", "tree_mathml"]
 
 GREEK_LETTERS = {
     "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "epsilon": "ε", "zeta": "ζ",
@@ -186,10 +183,6 @@ class MathMLPrinter(Printer):
     def _print_Text(self, node) -> str:
         return f"<mtext>{escape(node.text)}</mtext>"
 
-    def _print_Tex(self, node) -> str:
-        return _row(*(self._print(cast(Node, part)) if is_math else
-                      f"<mtext>{escape(str(part))}</mtext>" for is_math, part in spans(node.plain)))
-
     def _print_Quantity(self, node: Quantity) -> str:
         value = self._print(node.value)
         if node.unit in ("deg", "degree", "degrees"):
@@ -348,19 +341,3 @@ def tree_mathml(node: Node, display: bool = False) -> str:
     """The content of a ``<math>`` element for one tree."""
     return MathMLPrinter(display).doprint(node)
 
-
-def formula(text: str, units: bool = True, display: bool = False) -> str | None:
-    """A formula of the worked answer as MathML content (None where it does not parse)."""
-    tree = try_parse(text, units)
-    return None if tree is None else tree_mathml(tree, display)
-
-
-def prose(text: str) -> str:
-    """A line of prose with the maths in it set as inline ``<math>``; the words escaped."""
-    out = []
-    for is_math, part in spans(text):
-        if is_math:
-            out.append(math_element(tree_mathml(cast(Node, part), False)))
-        else:
-            out.append(escape(str(part)))
-    return "".join(out)

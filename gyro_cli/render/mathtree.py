@@ -1,8 +1,8 @@
 """Expression trees for the formulas of a worked answer.
 
-The kinds write their steps as plain formula text (``m g l sin(theta)``,
-``2 sqrt((I - J) D cos(theta)) / J``, ``0.08498 kg (9.815 m/s^2)``);
-`mathparse` reads that text into these nodes and `mathprint` typesets them.
+The kinds write their formulas as expression trees (`core.expr`,
+`core.prose`); `exprnodes` turns each into these nodes, and `mathprint` and
+`mathml` typeset them.
 The nodes are small immutable records, compared by value (tests build the
 expected trees by hand).
 """

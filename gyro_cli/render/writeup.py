@@ -2,9 +2,10 @@
 
 `gyro solve --format markdown|latex [--standalone]`. Each step of the worked
 answer (``work.Step``: symbol, formula, substitution, value, unit, ref, text)
-is parsed into an expression tree (`mathparse`) and typeset by a printer
-(`mathprint`); lines of prose are split into words and the maths in them by
-the same parser, so what does not parse stays words. A display too wide for
+is typeset from the expression tree the kind wrote (`exprnodes` makes the
+typesetting nodes of `mathtree`, `mathprint` sets them); a line of prose is
+the words and trees the kind wrote (`core.prose`): words are set as text, trees
+as maths, and nothing is parsed back from text. A display too wide for
 the page is set as aligned rows, one per ``=``, and a long sum is broken
 at its ``+`` and ``-``. A step citing one equation of the chapter is
 numbered with it (``\\tag{11.13}``). LaTeX needs amsmath only (``--standalone``
@@ -22,41 +23,29 @@ from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
 from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
-from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
-from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
+from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text
 
-__all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "symbol_tex"]
+__all__ = ["markdown", "latex", "standalone", "symbol_latex", "words", "text_escape",
+           "symbol_tex"]
 
 #: a display wider than this (in characters of maths, about 5.5 pt each) is broken into rows;
 #: the page of `standalone` is 17 cm, about 480 pt
 WIDTH = 64
 
 #: a line ending in the chapter's equation number: "udot^2 = f(u) = ...    (Eq. 11.19)"
-_CITED = re.compile(r"\s+\(Eq\. (\d+\.\d+)\)$")
 _EQ = re.compile(r"^Eq\. (\d+\.\d+)(?:, (.+))?$")
 
 
 # ---- formulas ---------------------------------------------------------------
 
-def math(text: str, units: bool = True, display: bool = False) -> str:
-    """A formula as LaTeX maths (no delimiters); what does not parse is set word by word."""
-    tree = try_parse(text, units)
-    if tree is not None:
-        return LatexPrinter(display).doprint(tree)
-    return _fallback(text)
-
-
-def _fallback(text: str) -> str:
-    out = []
-    for is_key, piece in _split_keys(text):
-        if is_key:
-            out.append(f"\\text{{{text_escape(piece)}}}")
-            continue
-        for is_math, part in spans(piece):
-            out.append(LatexPrinter(False).doprint(part) if is_math
-                       else f"\\text{{{text_escape(part.replace('_', ' '))}}}")
-    return " ".join(out) or "\\text{}"
+def symbol_latex(text: str, tree=None) -> str:
+    """A symbol as LaTeX maths (no delimiters): its tree, or one name; anything else (a
+    symbol no kind writes) as words."""
+    node = symbol_node(text, tree)
+    if node is not None:
+        return LatexPrinter(False).doprint(node)
+    return f"\\text{{{text_escape(text)}}}" if text else "\\text{}"
 
 
 # ---- the file's keys in prose -------------------------------------------------
@@ -73,7 +62,8 @@ def file_keys(kind) -> re.Pattern | None:
     params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
     names = {p.name for p in params} | {a.name for a in kind.answers}
     symbols = {p.symbol for p in params} | {a.symbol for a in kind.answers}
-    keys = sorted((n for n in names if "_" in n and (n not in symbols or is_word(n))),
+    words = {p.name for p in params if p.dimension == "word"}  # engine_sense
+    keys = sorted((n for n in names if "_" in n and (n not in symbols or n in words)),
                   key=len, reverse=True)
     if not keys:
         return None
@@ -92,10 +82,6 @@ def _split_keys(text: str) -> list[tuple[bool, str]]:
     return out + [(False, text[pos:])]
 
 
-def _tex(text: str) -> Tex:
-    return Tex(_fallback(text), text)
-
-
 def unit_latex(unit: str) -> str:
     if unit in ("deg", "degree"):
         return "^{\\circ}"
@@ -111,20 +97,10 @@ def _quantity(value: float, unit: str) -> str:
     return body + unit_latex(unit)
 
 
-def mixed(text: str, inline: tuple[str, str] = ("$", "$"), escape=text_escape) -> str:
-    """Prose with the maths in it set inline: words as text, each parsed span as maths; a
-    key of the file (``psi_rate``) as words."""
-    out = []
-    for is_key, piece in _split_keys(text):
-        if is_key:
-            out.append(escape(piece))
-            continue
-        for is_math, part in spans(piece):
-            if is_math:
-                out.append(f"{inline[0]}{LatexPrinter(False).doprint(part)}{inline[1]}")
-            else:
-                out.append(escape(part))
-    return "".join(out)
+def words(text: str, escape=text_escape) -> str:
+    """Words as text, escaped; a key of the file (``psi_rate``) as words (``psi rate``).
+    Maths in a sentence is a tree (`core.prose`), never read from its words."""
+    return "".join(escape(piece) for _, piece in _split_keys(text))
 
 
 
@@ -152,8 +128,6 @@ def width(node: Node | None) -> float:
         return width(node.first) + sum(3 + width(rhs) for _, rhs in node.rest)
     if isinstance(node, Text):
         return len(node.text)
-    if isinstance(node, Tex):
-        return len(node.plain)
     total = 2.0
     for value in vars(node).values():
         if isinstance(value, Node):
@@ -231,8 +205,7 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
 # ---- steps ------------------------------------------------------------------
 
 def _step_pieces(step) -> tuple[Node | None, list[Node]]:
-    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or \
-        try_parse(step.symbol, units=False) or _tex(step.symbol)
+    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or Text(step.symbol)
     pieces: list[Node] = []
     tree = getattr(step, "shown", None)
     if tree is not None:  # built from an expression tree: typeset from it, nothing parsed
@@ -240,11 +213,8 @@ def _step_pieces(step) -> tuple[Node | None, list[Node]]:
             pieces.append(formula_node(tree))
         if step.substitution:
             pieces.append(substitution_node(tree))
-    else:
-        if step.formula:
-            pieces.append(try_parse(step.formula, units=False) or _tex(step.formula))
-        if step.substitution:
-            pieces.append(try_parse(step.substitution) or _tex(step.substitution))
+    elif step.formula or step.substitution:  # Work.step takes a formula as a tree only
+        raise TypeError(f"the step {step.symbol} has a formula but no tree")
     if step.value is not None:
         unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(step.unit,
                                                                               step.unit)
@@ -296,10 +266,7 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
 
 
 def _note_math(note: str) -> str:
-    tree = try_parse(note)
-    if tree is not None and not isinstance(tree, Sym):
-        return LatexPrinter(True).doprint(tree)
-    return "\\text{" + re.sub(r"\$([^$]*)\$", r"$\1$", mixed(note)) + "}"
+    return "\\text{" + words(note) + "}"
 
 
 def _steps(steps, markdown: bool) -> list[str]:
@@ -316,21 +283,7 @@ def _steps(steps, markdown: bool) -> list[str]:
         if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
             out += _prose_step(step.prose, markdown)
             continue
-        text = step.text.strip()
-        tag = ""
-        cited = _CITED.search(text)
-        if cited and try_parse(text[:cited.start()]) is not None:
-            text, tag = text[:cited.start()], cited.group(1)
-        tree = try_parse(text)
-        number = (f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}") if tag else ""
-        if tree is not None and width(tree) <= WIDTH and _is_equation(tree):
-            out += _display(LatexPrinter(True).doprint(tree) + number, markdown)
-        elif tree is not None and isinstance(tree, Rel) and _is_equation(tree):
-            rows = _rel_rows(tree)
-            out += _display("\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
-                            + number, markdown)
-        else:
-            out += [_prose(text, markdown), ""]
+        out += [_prose(step.text.strip(), markdown), ""]  # words only
     return out
 
 
@@ -376,10 +329,6 @@ def _warning(text: str, solution, markdown: bool) -> str:
     return _prose(text, markdown) if prose is None else prose_latex(prose, markdown)
 
 
-def _is_equation(tree: Node) -> bool:
-    return isinstance(tree, Rel)
-
-
 def _rel_rows(tree: Rel) -> list[str]:
     printer = LatexPrinter(True)
     first = printer.doprint(tree.first) if tree.first is not None else ""
@@ -402,7 +351,7 @@ def _display(body: str, markdown: bool) -> list[str]:
 
 
 def _prose(text: str, markdown: bool) -> str:
-    return mixed(text, ("$", "$"), _md_escape if markdown else text_escape)
+    return words(text, _md_escape if markdown else text_escape)
 
 
 def _breakable(tex: str) -> str:
@@ -433,8 +382,7 @@ def _answer_lhs(answer) -> str:
 
 def answer_symbol(answer) -> Node | None:
     """An answer's symbol as typesetting nodes (its tree, or its one name)."""
-    return symbol_node(answer.symbol, getattr(answer, "symbol_expr", None)) or \
-        try_parse(answer.symbol, units=False)
+    return symbol_node(answer.symbol, getattr(answer, "symbol_expr", None))
 
 
 def _answer_parts(answer) -> list[tuple[str, str]]:
@@ -482,7 +430,7 @@ def _markdown(result: Result) -> str:
     lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"| ${math(g.symbol, units=False)}$ | "
+        lines.append(f"| ${symbol_latex(g.symbol)}$ | "
                      f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_title(section, True)}", ""]
@@ -539,7 +487,7 @@ def _latex(result: Result, level: str) -> str:
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
         note = f" ({g.note})" if g.note else ""
-        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${symbol_latex(g.symbol)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]

@@ -1,4 +1,8 @@
-"""A parser for the small mathematical language of the worked answers.
+"""A parser for the small mathematical language of the worked answers: a test oracle.
+
+gyro itself reads no formula text (every formula is a tree the kind wrote, issue
+21); the tests keep this parser, which gyro once used, to look for maths left
+in a sentence's plain words and to read symbols back from printed output.
 
 A tokenizer and a precedence-climbing parser, loosest binding first:
 
@@ -22,8 +26,8 @@ from __future__ import annotations
 
 import re
 
-from .mathtree import GREEK, Token, _symbolic, dotted, tokens  # noqa: F401 (re-exported)
-from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
+from gyro_cli.render.mathtree import GREEK, Token, _symbolic, dotted, tokens  # noqa: F401 (re-exported)
+from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
                        Quantity, Rel, Sum, Sym, Tuple)
 
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcsin", "arccos",
@@ -649,3 +653,25 @@ def _classify(toks: list[Token]) -> list[bool]:
         if k and t.kind == "name" and toks[k - 1].text == "-" and not classes[k - 1]:
             classes[k] = False
     return classes
+
+
+# ---- the printers over the oracle's trees (what the write-up once did with text) ----------
+
+def latex_math(text: str, units: bool = True, display: bool = False) -> str:
+    """Formula text typeset by gyro's LaTeX printer from the oracle's tree; what does not
+    parse as words."""
+    from gyro_cli.render.mathprint import LatexPrinter, text_escape
+
+    tree = try_parse(text, units)
+    if tree is not None:
+        return LatexPrinter(display).doprint(tree)
+    return f"\\text{{{text_escape(text)}}}"
+
+
+def latex_mixed(text: str) -> str:
+    """A sentence with the oracle's maths spans typeset inline and the words escaped."""
+    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.writeup import words
+
+    return "".join(f"${LatexPrinter(False).doprint(part)}$" if is_math else words(str(part))
+                   for is_math, part in spans(text))
