@@ -52,6 +52,7 @@ class Variant:
     statement_html: str
     feedback_html: str
     blanks: list[Blank] = field(default_factory=list)
+    unasked: list[str] = field(default_factory=list)  # its word answers ("motion")
 
 
 @dataclass
