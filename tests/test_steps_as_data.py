@@ -901,12 +901,12 @@ def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
     v = _released_top_data(result)
     m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
     th0, th = v["theta0"], v["theta"]
-    J, I_G = v["J"], v["I_G"]
+    J, I_G = v["J"], by["I_G"].value
     a = v["a/d"] * d
     f = K.swing_forces(m, g, J, I_G, p, L, d, a, th0, th)
     I_O = I_G + m * L * L
     assert by["I_O"].value == pytest.approx(I_O, rel=1e-12)
-    for symbol, expected in (("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
+    for symbol, expected in (("I_O", I_O), ("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
                              ("thetaddot", K.swing_acceleration(m, g, L, I_O, th))):
         chain = by[symbol].expr
         assert isinstance(chain, E.Chain) and len(chain.forms) == 2

@@ -11,22 +11,25 @@ parses the sentence back)::
 The nodes below are the ones only prose needs; nothing evaluates them: a
 relation chain (``a = b >= c``), the cross and dot products of vectors, a
 tuple, a function known by its name only (``f(u)``, ``R_z(psi)``), the sum
-over a body's particles, and a quantity written with its value
-(``0.0001280 N m``), which ``--units us`` converts.
+over a body's particles, a sign written out (``+K``, ``+-M / L``), a rate of
+change (``dH/dt``) and a quantity written with its value (``0.0001280 N m``),
+which ``--units us`` converts.
 """
 
 from __future__ import annotations
 
 import math
 
-from .expr import (ATOM, MUL, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg, Sub, Sym,
-                   TextPrinter, _node, map_syms, precedence, quantity_text)
+from .expr import (ATOM, MUL, NEG, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Mul, Neg,
+                   Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, precedence,
+                   quantity_text)
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
 
 RELATIONS = ("=", "<", ">", "<=", ">=", "!=", "~", "->", ">>", "<<")
+SIGNS = ("+", "+-", "-+")
 
 
 class Typeset(Expr):
@@ -108,6 +111,33 @@ class Total(Typeset):
         return (self.body,)
 
 
+class Sign(Typeset):
+    """``+K``, ``+-M / L``: a sign written before its operand (a minus is `expr.Neg`)."""
+
+    __slots__ = ("sign", "arg")
+    binding = NEG
+
+    def __init__(self, sign: str, arg: Expr) -> None:
+        if sign not in SIGNS:
+            raise ValueError(f"unknown sign {sign!r}")
+        self.sign, self.arg = sign, arg
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
+class Deriv(Typeset):
+    """``dH/dt``: the rate of change of a quantity known by its name."""
+
+    __slots__ = ("sym", "var")
+    binding = MUL
+
+    def __init__(self, sym: Sym, var: str = "t") -> None:
+        if not isinstance(sym, Sym):
+            raise TypeError("dx/dt takes a symbol; d/dt of a formula is fn(\"d/dt\", ...)")
+        self.sym, self.var = sym, var
+
+
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
     (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
@@ -163,6 +193,16 @@ def fn(name: str, *args: Expr | float) -> Fn:
 
 def total(body: Expr) -> Total:
     return Total(body)
+
+
+def signed(sign: str, arg: Expr | float) -> Sign:
+    """``signed("+", K)`` is ``+K``, ``signed("+-", M) / L`` is ``+-M / L``."""
+    return Sign(sign, _node(arg))
+
+
+def deriv(sym: Sym, var: str = "t") -> Deriv:
+    """``deriv(H)`` is ``dH/dt``."""
+    return Deriv(sym, var)
 
 
 def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
@@ -228,6 +268,10 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
         return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args))
     if isinstance(expr, Total):
         return Total(map_values(expr.body, sym, quantity))
+    if isinstance(expr, Sign):
+        return Sign(expr.sign, map_values(expr.arg, sym, quantity))
+    if isinstance(expr, Deriv):
+        return expr
     if isinstance(expr, Neg):
         return Neg(map_values(expr.arg, sym, quantity))
     if isinstance(expr, BinOp):
@@ -242,9 +286,14 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
 
 def operand_brackets(parent: Expr, child: Expr) -> bool:
     """Brackets around an operand of a prose node: a sum or difference in a product
-    of vectors or under a sum sign, a quotient or product beside a cross or dot."""
+    of vectors or under a sum sign, a quotient or product beside a cross or dot (a
+    product before it is read first: ``Omega K x H``), a sum or a product after a sign."""
     if isinstance(parent, (Cross, Dot)):
+        if child is parent.left and isinstance(child, Mul):
+            return False
         return precedence(child, False) <= MUL and not isinstance(child, (Fn, Tup))
+    if isinstance(parent, Sign):
+        return needs_brackets(Neg(child), child, False, False)
     if isinstance(parent, Total):
         return isinstance(child, (Add, Sub, Div, Rel))
     return False
@@ -282,6 +331,13 @@ class ProseText(TextPrinter):
     def _print_Total(self, node: Total) -> str:
         body = self._print(node.body)
         return "sum " + (f"({body})" if operand_brackets(node, node.body) else body)
+
+    def _print_Sign(self, node: Sign) -> str:
+        arg = self._print(node.arg)
+        return node.sign + (f"({arg})" if operand_brackets(node, node.arg) else arg)
+
+    def _print_Deriv(self, node: Deriv) -> str:
+        return f"d{node.sym.name}/d{node.var}"
 
     def _print_Quantity(self, node: Quantity) -> str:
         return node.text

@@ -143,6 +143,13 @@ class NodePrinter:
         body = self._print(node.body)
         return Sum(Group("(", body) if P.operand_brackets(node, node.body) else body)
 
+    def _print_Sign(self, node: P.Sign) -> Node:
+        arg = self._print(node.arg)
+        return Neg(Group("(", arg) if P.operand_brackets(node, node.arg) else arg, node.sign)
+
+    def _print_Deriv(self, node: P.Deriv) -> Node:
+        return BinOp("/", Sym("d" + node.sym.name), Sym("d" + node.var))
+
     def _print_Quantity(self, node: P.Quantity) -> Node:
         number, _, unit = node.text.partition(" ")
         shown: Node = Num(number.lstrip("-"))

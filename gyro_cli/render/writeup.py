@@ -271,25 +271,34 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
-    if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if note:
-            after.append(note)
-        after.append(Typeset(prose_latex(step.prose, markdown)))
-        note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
-    short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
+    beside = ""  # a short note, set beside the equation
+
+    def short(text: str) -> bool:
+        return len(text) <= 48 and widest + len(text) + 4 <= WIDTH + 8
+
+    if getattr(step, "prose", None) is not None:  # a note of words and trees
+        if not note and short(step.text):
+            beside = "\\text{" + prose_latex(step.prose) + "}"
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+        note = ""
+    if note and short(note):
+        beside = _note_math(note)
+    elif note:
+        after.append(note)
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
     else:
         rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
-    if short_note:
-        body += f" \\qquad {_note_math(note)}"
-    elif note:
-        after.append(note)
+    if beside:
+        body += f" \\qquad {beside}"
     if tag:
         body += f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}"
     return body, after
