@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ATOM, MUL, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg, Sub, Sym,
-                   TextPrinter, _node, map_syms, precedence, quantity_text)
+from .expr import (ATOM, MUL, NEG, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg, Sub, Sym,
+                   TextPrinter, _node, map_syms, num, precedence, quantity_text)
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -130,6 +130,64 @@ class Quantity(Typeset):
         return MUL if self.unit or self.si < 0 else ATOM
 
 
+class Vector(Typeset):
+    """A vector by its components with one unit: ``(0, 458.1, 0) kg m^2/s`` (SI values;
+    a zero component is written 0)."""
+
+    __slots__ = ("si", "unit")
+    binding = MUL
+
+    def __init__(self, si: tuple[float, ...], unit: str = "") -> None:
+        self.si, self.unit = tuple(si), unit
+
+    @property
+    def numbers(self) -> tuple[str, ...]:
+        return tuple(num(c) if c else "0" for c in self.si)
+
+    @property
+    def text(self) -> str:
+        return f"({', '.join(self.numbers)}) {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
+
+
+class Plus(Typeset):
+    """``+x``: an explicit plus sign, the positive sense of an axis."""
+
+    __slots__ = ("arg",)
+    binding = NEG
+
+    def __init__(self, arg: Expr) -> None:
+        self.arg = arg
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
+class Paren(Typeset):
+    """``(x)``: brackets the author writes where precedence needs none, ``-(omega_p x H)``."""
+
+    __slots__ = ("arg",)
+    binding = ATOM
+
+    def __init__(self, arg: Expr) -> None:
+        self.arg = arg
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
+class Prime(Typeset):
+    """``alpha''``: a derivative written with primes (``count`` of them)."""
+
+    __slots__ = ("arg", "count")
+    binding = ATOM
+
+    def __init__(self, arg: Expr, count: int = 1) -> None:
+        self.arg, self.count = arg, count
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
 # ---- building -----------------------------------------------------------------
 
 def names(text: str, unit: str = "") -> tuple[Sym, ...]:
@@ -163,6 +221,24 @@ def fn(name: str, *args: Expr | float) -> Fn:
 
 def total(body: Expr) -> Total:
     return Total(body)
+
+
+def qvec(si, unit: str = "") -> Vector:
+    """A vector by its SI components with its unit inside a sentence: ``(0, 1.005e+04, 0) N m``."""
+    return Vector(tuple(si), unit)
+
+
+def plus(x: Expr) -> Plus:
+    return Plus(x)
+
+
+def paren(x: Expr) -> Paren:
+    return Paren(x)
+
+
+def prime(x: Expr, count: int = 1) -> Prime:
+    """``prime(alpha, 2)``: alpha'' (the second derivative in time)."""
+    return Prime(x, count)
 
 
 def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
@@ -216,6 +292,12 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     """The tree with each symbol and each quantity changed (``--units us``)."""
     if isinstance(expr, Quantity):
         return quantity(expr)
+    if isinstance(expr, Vector):  # each component as a quantity of the vector's unit
+        parts = [quantity(Quantity(c, expr.unit)) for c in expr.si]
+        return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
+    if isinstance(expr, (Plus, Paren, Prime)):
+        changed = map_values(expr.arg, sym, quantity)
+        return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
     if isinstance(expr, Rel):
         return Rel(map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
@@ -285,6 +367,20 @@ class ProseText(TextPrinter):
 
     def _print_Quantity(self, node: Quantity) -> str:
         return node.text
+
+    def _print_Vector(self, node: Vector) -> str:
+        return node.text
+
+    def _print_Plus(self, node: Plus) -> str:
+        inner = self._print(node.arg)
+        return "+" + (f"({inner})" if precedence(node.arg, False) <= NEG else inner)
+
+    def _print_Paren(self, node: Paren) -> str:
+        return f"({self._print(node.arg)})"
+
+    def _print_Prime(self, node: Prime) -> str:
+        inner = self._print(node.arg)
+        return (f"({inner})" if precedence(node.arg, False) < ATOM else inner) + "'" * node.count
 
 
 def text(expr: Expr) -> str:

@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
-                       Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Prime, Quantity, Rel, Sum,
+                       Sym, Tuple)
 
 
 class NodePrinter:
@@ -149,6 +149,21 @@ class NodePrinter:
         if unit:
             shown = Quantity(shown, unit)  # type: ignore[arg-type]
         return Neg(shown) if number.startswith("-") else shown
+
+    def _print_Vector(self, node: P.Vector) -> Node:
+        items = tuple(Neg(Num(n[1:])) if n.startswith("-") else Num(n) for n in node.numbers)
+        shown: Node = Group("(", Tuple(items))
+        unit = E.UNIT_TEXT.get(node.unit, node.unit)
+        return Quantity(shown, unit) if unit else shown  # type: ignore[arg-type]
+
+    def _print_Plus(self, node: P.Plus) -> Node:
+        return Neg(self._print(node.arg), "+")
+
+    def _print_Paren(self, node: P.Paren) -> Node:
+        return Group("(", self._print(node.arg))
+
+    def _print_Prime(self, node: P.Prime) -> Node:
+        return Prime(self._print(node.arg), node.count)
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)
