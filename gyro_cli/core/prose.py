@@ -40,19 +40,21 @@ class Typeset(Expr):
 
 
 class Rel(Typeset):
-    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain."""
+    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain; with no ``first``
+    (None) it continues the line before it, ``= 0.03283 deg`` in a step's note."""
 
     __slots__ = ("first", "rest")
     binding = 0  # looser than any operator (`expr.precedence`)
 
-    def __init__(self, first: Expr, rest: tuple[tuple[str, Expr], ...]) -> None:
+    def __init__(self, first: Expr | None, rest: tuple[tuple[str, Expr], ...]) -> None:
         for op, _ in rest:
             if op not in RELATIONS:
                 raise ValueError(f"unknown relation {op!r}")
         self.first, self.rest = first, rest
 
     def children(self) -> tuple[Expr, ...]:
-        return (self.first,) + tuple(rhs for _, rhs in self.rest)
+        head = () if self.first is None else (self.first,)
+        return head + tuple(rhs for _, rhs in self.rest)
 
 
 class Cross(Typeset, BinOp):
@@ -175,6 +177,20 @@ class Paren(Typeset):
         return (self.arg,)
 
 
+class Words(Typeset):
+    """Words standing for a symbol, ``drift angle``, or labelling one: ``phidot (slow)``
+    is ``Words("(slow)", of=phidot)``."""
+
+    __slots__ = ("words", "of")
+    binding = ATOM
+
+    def __init__(self, words: str, of: Expr | None = None) -> None:
+        self.words, self.of = words, of
+
+    def children(self) -> tuple[Expr, ...]:
+        return () if self.of is None else (self.of,)
+
+
 class Prime(Typeset):
     """``alpha''``: a derivative written with primes (``count`` of them)."""
 
@@ -195,12 +211,12 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
     return tuple(Sym(name, math.nan, unit) for name in text.split())
 
 
-def rel(first: Expr | float, *chain: str | Expr | float) -> Rel:
-    """``rel(a, "=", b, ">=", c)``: a relation chain."""
+def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:
+    """``rel(a, "=", b, ">=", c)``: a relation chain; ``rel(None, "=", b)`` is ``= b``."""
     if len(chain) % 2:
         raise ValueError("a relation chain alternates a relation and an expression")
     rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
-    return Rel(_node(first), rest)
+    return Rel(None if first is None else _node(first), rest)
 
 
 def cross(a: Expr, b: Expr) -> Cross:
@@ -230,6 +246,12 @@ def qvec(si, unit: str = "") -> Vector:
 
 def plus(x: Expr) -> Plus:
     return Plus(x)
+
+
+def words(text: str, of: Expr | None = None) -> Words:
+    """A symbol written as words (``words("drift angle")``), or a symbol with a label
+    (``words("(slow)", phidot)``, printed ``phidot (slow)``)."""
+    return Words(text, of)
 
 
 def paren(x: Expr) -> Paren:
@@ -295,11 +317,13 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, Vector):  # each component as a quantity of the vector's unit
         parts = [quantity(Quantity(c, expr.unit)) for c in expr.si]
         return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
+    if isinstance(expr, Words):
+        return expr if expr.of is None else Words(expr.words, map_values(expr.of, sym, quantity))
     if isinstance(expr, (Plus, Paren, Prime)):
         changed = map_values(expr.arg, sym, quantity)
         return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
     if isinstance(expr, Rel):
-        return Rel(map_values(expr.first, sym, quantity),
+        return Rel(None if expr.first is None else map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
     if isinstance(expr, (Cross, Dot)):
         return type(expr)(map_values(expr.left, sym, quantity),
@@ -338,8 +362,8 @@ class ProseText(TextPrinter):
     """The plain text of a sentence's maths: symbols by name, quantities by value."""
 
     def _print_Rel(self, node: Rel) -> str:
-        return " ".join([self._print(node.first)] + [f"{op} {self._print(rhs)}"
-                                                      for op, rhs in node.rest])
+        head = [] if node.first is None else [self._print(node.first)]
+        return " ".join(head + [f"{op} {self._print(rhs)}" for op, rhs in node.rest])
 
     def _vector(self, node: BinOp) -> str:
         parts = []
@@ -374,6 +398,9 @@ class ProseText(TextPrinter):
     def _print_Plus(self, node: Plus) -> str:
         inner = self._print(node.arg)
         return "+" + (f"({inner})" if precedence(node.arg, False) <= NEG else inner)
+
+    def _print_Words(self, node: Words) -> str:
+        return node.words if node.of is None else f"{self._print(node.of)} {node.words}"
 
     def _print_Paren(self, node: Paren) -> str:
         return f"({self._print(node.arg)})"

@@ -15,7 +15,7 @@ import re
 from ..core import expr as E
 from ..core import prose as P
 from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Prime, Quantity, Rel, Sum,
-                       Sym, Tuple)
+                       Sym, Text, Tuple)
 
 
 class NodePrinter:
@@ -114,7 +114,8 @@ class NodePrinter:
     # ---- the typeset-only nodes of sentences (core/prose.py)
 
     def _print_Rel(self, node: P.Rel) -> Node:
-        return Rel(self._print(node.first), tuple((op, self._print(rhs))
+        first = None if node.first is None else self._print(node.first)
+        return Rel(first, tuple((op, self._print(rhs))
                                                    for op, rhs in node.rest))
 
     def _vector(self, node: E.BinOp) -> Node:
@@ -158,6 +159,11 @@ class NodePrinter:
 
     def _print_Plus(self, node: P.Plus) -> Node:
         return Neg(self._print(node.arg), "+")
+
+    def _print_Words(self, node: P.Words) -> Node:
+        if node.of is None:
+            return Text(node.words)
+        return BinOp(" ", self._print(node.of), Text(" " + node.words))
 
     def _print_Paren(self, node: P.Paren) -> Node:
         return Group("(", self._print(node.arg))

@@ -271,11 +271,17 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
+    note_tex = ""
     if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if note:
-            after.append(note)
-        after.append(Typeset(prose_latex(step.prose, markdown)))
-        note = ""
+        maths = [p for p in prose_nodes(step.prose) if not (isinstance(p, str) and not p.strip())]
+        if not note and len(maths) == 1 and not isinstance(maths[0], str):
+            # a note that is one formula (``= 0.03283 deg``) is set beside the step if short
+            note, note_tex = step.prose.text, printer.doprint(maths[0])
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+            note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
@@ -287,7 +293,9 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
     if short_note:
-        body += f" \\qquad {_note_math(note)}"
+        body += f" \\qquad {note_tex or _note_math(note)}"
+    elif note_tex:
+        after.append(Typeset(prose_latex(step.prose, markdown)))
     elif note:
         after.append(note)
     if tag:
