@@ -114,14 +114,16 @@ class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
     (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
 
-    __slots__ = ("si", "unit", "exact")
+    __slots__ = ("si", "unit", "exact", "label")
 
-    def __init__(self, si: float, unit: str = "", exact: bool = False) -> None:
-        self.si, self.unit, self.exact = si, unit, exact
+    def __init__(self, si: float, unit: str = "", exact: bool = False, label: str = "") -> None:
+        self.si, self.unit, self.exact, self.label = si, unit, exact, label
 
     @property
     def text(self) -> str:
         """``0.0001280 N m``; an exact quantity as few digits as it needs (``180 deg``)."""
+        if self.label:  # the number as a source gives it: 0.003273795, 6.6743e-11
+            return f"{self.label} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
         if not self.exact:
             return quantity_text(self.si, self.unit)
         shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
@@ -263,10 +265,11 @@ def prime(x: Expr, count: int = 1) -> Prime:
     return Prime(x, count)
 
 
-def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
+def q(si: float, unit: str = "", exact: bool = False, label: str = "") -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
-    text such as 180 deg, printed with the digits it needs, not to 4 figures."""
-    return Quantity(si, unit, exact)
+    text such as 180 deg, printed with the digits it needs, not to 4 figures; ``label``:
+    the number as its source writes it (``"0.003273795"``), all its digits."""
+    return Quantity(si, unit, exact, label)
 
 
 # ---- a line of prose --------------------------------------------------------------
