@@ -186,10 +186,10 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
                              "(planet_mass)", key="given.planet_mass")
         planet = values["planet_mass"]
     if orbit_key.endswith("_period"):
-        q = a_value if planet is None else a_value / planet
+        ratio = a_value if planet is None else a_value / planet
         if planet is not None:
-            q = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
-        q_ = Sym(f"q_{b}", q)
+            ratio = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
+        q_ = Sym(f"q_{b}", ratio)
         return work.step(_tidal_symbol(b), (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
                          / (1 + q_), unit="1/s^2", ref="Kepler III")
     mass = Sym(f"M_{b}", a_value, "kg") if planet is None else \
