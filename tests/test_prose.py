@@ -20,7 +20,8 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"gyrocompass", "gyroscopic_torque", "swinging_rotor"}
+PROSE_KINDS = {"gyrocompass", "gyroscopic_torque", "swinging_rotor", "aeroplane", "gyro_drift",
+               "earth_precession"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
@@ -199,3 +200,21 @@ def _result_with(work):
         result = solve_file(str(path))
     return dataclasses.replace(result, solution=dataclasses.replace(
         result.solution, sections=work.sections))
+
+
+def test_vectors_with_a_unit_explicit_signs_brackets_and_primes():
+    from gyro_cli.core.prose import map_values, paren, plus, prime, qvec
+
+    x, wp, a = names("x omega_p alpha")
+    line = Prose((plus(x), "; ", rel(-paren(cross(wp, H)), "=", qvec((0, -1.005e4, 0), "N m")),
+                  ", ", rel(I_v * prime(a, 2), "=", 0)))
+    assert line.text == "+x; -(omega_p x H) = (0, -1.005e+04, 0) N m, I_v alpha'' = 0"
+    work = Work()
+    work.section("T")
+    work.text(*line.pieces)
+    tex = "\n".join(writeup._steps(work.sections[0].steps, markdown=False))
+    assert r"$+x$" in tex and r"-(\omega_{p} \times H)" in tex and r"\alpha''" in tex
+    assert r"(0, -1.005\times 10^{4}, 0)\,\mathrm{N\,m}" in tex
+    us = line.map(lambda t: map_values(t, lambda s: s,
+                                       lambda v: q(v.si / 1.3558179483314004, "lbf ft")))
+    assert "(0, -7412, 0) lbf ft" in us.text

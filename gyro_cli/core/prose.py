@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 from .expr import (ATOM, MUL, NEG, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Mul, Neg,
-                   Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, precedence,
+                   Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num, precedence,
                    quantity_text)
 
 TYPE_CHECKING = False
@@ -43,19 +43,21 @@ class Typeset(Expr):
 
 
 class Rel(Typeset):
-    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain."""
+    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain; with no ``first``
+    (None) it continues the line before it, ``= 0.03283 deg`` in a step's note."""
 
     __slots__ = ("first", "rest")
     binding = 0  # looser than any operator (`expr.precedence`)
 
-    def __init__(self, first: Expr, rest: tuple[tuple[str, Expr], ...]) -> None:
+    def __init__(self, first: Expr | None, rest: tuple[tuple[str, Expr], ...]) -> None:
         for op, _ in rest:
             if op not in RELATIONS:
                 raise ValueError(f"unknown relation {op!r}")
         self.first, self.rest = first, rest
 
     def children(self) -> tuple[Expr, ...]:
-        return (self.first,) + tuple(rhs for _, rhs in self.rest)
+        head = () if self.first is None else (self.first,)
+        return head + tuple(rhs for _, rhs in self.rest)
 
 
 class Cross(Typeset, BinOp):
@@ -142,14 +144,16 @@ class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
     (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
 
-    __slots__ = ("si", "unit", "exact")
+    __slots__ = ("si", "unit", "exact", "label")
 
-    def __init__(self, si: float, unit: str = "", exact: bool = False) -> None:
-        self.si, self.unit, self.exact = si, unit, exact
+    def __init__(self, si: float, unit: str = "", exact: bool = False, label: str = "") -> None:
+        self.si, self.unit, self.exact, self.label = si, unit, exact, label
 
     @property
     def text(self) -> str:
         """``0.0001280 N m``; an exact quantity as few digits as it needs (``180 deg``)."""
+        if self.label:  # the number as a source gives it: 0.003273795, 6.6743e-11
+            return f"{self.label} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
         if not self.exact:
             return quantity_text(self.si, self.unit)
         shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
@@ -160,6 +164,65 @@ class Quantity(Typeset):
         return MUL if self.unit or self.si < 0 else ATOM
 
 
+class Vector(Typeset):
+    """A vector by its components with one unit: ``(0, 458.1, 0) kg m^2/s`` (SI values;
+    a zero component is written 0)."""
+
+    __slots__ = ("si", "unit")
+    binding = MUL
+
+    def __init__(self, si: tuple[float, ...], unit: str = "") -> None:
+        self.si, self.unit = tuple(si), unit
+
+    @property
+    def numbers(self) -> tuple[str, ...]:
+        return tuple(num(c) if c else "0" for c in self.si)
+
+    @property
+    def text(self) -> str:
+        return f"({', '.join(self.numbers)}) {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
+
+
+class Paren(Typeset):
+    """``(x)``: brackets the author writes where precedence needs none, ``-(omega_p x H)``."""
+
+    __slots__ = ("arg",)
+    binding = ATOM
+
+    def __init__(self, arg: Expr) -> None:
+        self.arg = arg
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
+class Words(Typeset):
+    """Words standing for a symbol, ``drift angle``, or labelling one: ``phidot (slow)``
+    is ``Words("(slow)", of=phidot)``."""
+
+    __slots__ = ("words", "of")
+    binding = ATOM
+
+    def __init__(self, words: str, of: Expr | None = None) -> None:
+        self.words, self.of = words, of
+
+    def children(self) -> tuple[Expr, ...]:
+        return () if self.of is None else (self.of,)
+
+
+class Prime(Typeset):
+    """``alpha''``: a derivative written with primes (``count`` of them)."""
+
+    __slots__ = ("arg", "count")
+    binding = ATOM
+
+    def __init__(self, arg: Expr, count: int = 1) -> None:
+        self.arg, self.count = arg, count
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
 # ---- building -----------------------------------------------------------------
 
 def names(text: str, unit: str = "") -> tuple[Sym, ...]:
@@ -167,12 +230,12 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
     return tuple(Sym(name, math.nan, unit) for name in text.split())
 
 
-def rel(first: Expr | float, *chain: str | Expr | float) -> Rel:
-    """``rel(a, "=", b, ">=", c)``: a relation chain."""
+def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:
+    """``rel(a, "=", b, ">=", c)``: a relation chain; ``rel(None, "=", b)`` is ``= b``."""
     if len(chain) % 2:
         raise ValueError("a relation chain alternates a relation and an expression")
     rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
-    return Rel(_node(first), rest)
+    return Rel(None if first is None else _node(first), rest)
 
 
 def cross(a: Expr, b: Expr) -> Cross:
@@ -205,10 +268,36 @@ def deriv(sym: Sym, var: str = "t") -> Deriv:
     return Deriv(sym, var)
 
 
-def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
+def qvec(si, unit: str = "") -> Vector:
+    """A vector by its SI components with its unit inside a sentence: ``(0, 1.005e+04, 0) N m``."""
+    return Vector(tuple(si), unit)
+
+
+def plus(x: Expr) -> Sign:
+    """``+x``: an explicit plus sign, the positive sense of an axis."""
+    return Sign("+", x)
+
+
+def words(text: str, of: Expr | None = None) -> Words:
+    """A symbol written as words (``words("drift angle")``), or a symbol with a label
+    (``words("(slow)", phidot)``, printed ``phidot (slow)``)."""
+    return Words(text, of)
+
+
+def paren(x: Expr) -> Paren:
+    return Paren(x)
+
+
+def prime(x: Expr, count: int = 1) -> Prime:
+    """``prime(alpha, 2)``: alpha'' (the second derivative in time)."""
+    return Prime(x, count)
+
+
+def q(si: float, unit: str = "", exact: bool = False, label: str = "") -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
-    text such as 180 deg, printed with the digits it needs, not to 4 figures."""
-    return Quantity(si, unit, exact)
+    text such as 180 deg, printed with the digits it needs, not to 4 figures; ``label``:
+    the number as its source writes it (``"0.003273795"``), all its digits."""
+    return Quantity(si, unit, exact, label)
 
 
 # ---- a line of prose --------------------------------------------------------------
@@ -256,8 +345,16 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     """The tree with each symbol and each quantity changed (``--units us``)."""
     if isinstance(expr, Quantity):
         return quantity(expr)
+    if isinstance(expr, Vector):  # each component as a quantity of the vector's unit
+        parts = [quantity(Quantity(c, expr.unit)) for c in expr.si]
+        return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
+    if isinstance(expr, Words):
+        return expr if expr.of is None else Words(expr.words, map_values(expr.of, sym, quantity))
+    if isinstance(expr, (Paren, Prime)):
+        changed = map_values(expr.arg, sym, quantity)
+        return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
     if isinstance(expr, Rel):
-        return Rel(map_values(expr.first, sym, quantity),
+        return Rel(None if expr.first is None else map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
     if isinstance(expr, (Cross, Dot)):
         return type(expr)(map_values(expr.left, sym, quantity),
@@ -305,8 +402,8 @@ class ProseText(TextPrinter):
     """The plain text of a sentence's maths: symbols by name, quantities by value."""
 
     def _print_Rel(self, node: Rel) -> str:
-        return " ".join([self._print(node.first)] + [f"{op} {self._print(rhs)}"
-                                                      for op, rhs in node.rest])
+        head = [] if node.first is None else [self._print(node.first)]
+        return " ".join(head + [f"{op} {self._print(rhs)}" for op, rhs in node.rest])
 
     def _vector(self, node: BinOp) -> str:
         parts = []
@@ -341,6 +438,19 @@ class ProseText(TextPrinter):
 
     def _print_Quantity(self, node: Quantity) -> str:
         return node.text
+
+    def _print_Vector(self, node: Vector) -> str:
+        return node.text
+
+    def _print_Words(self, node: Words) -> str:
+        return node.words if node.of is None else f"{self._print(node.of)} {node.words}"
+
+    def _print_Paren(self, node: Paren) -> str:
+        return f"({self._print(node.arg)})"
+
+    def _print_Prime(self, node: Prime) -> str:
+        inner = self._print(node.arg)
+        return (f"({inner})" if precedence(node.arg, False) < ATOM else inner) + "'" * node.count
 
 
 def text(expr: Expr) -> str:

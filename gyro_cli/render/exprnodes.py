@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
-                       Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Prime, Quantity, Rel, Sum,
+                       Sym, Text, Tuple)
 
 
 class NodePrinter:
@@ -114,7 +114,8 @@ class NodePrinter:
     # ---- the typeset-only nodes of sentences (core/prose.py)
 
     def _print_Rel(self, node: P.Rel) -> Node:
-        return Rel(self._print(node.first), tuple((op, self._print(rhs))
+        first = None if node.first is None else self._print(node.first)
+        return Rel(first, tuple((op, self._print(rhs))
                                                    for op, rhs in node.rest))
 
     def _vector(self, node: E.BinOp) -> Node:
@@ -156,6 +157,23 @@ class NodePrinter:
         if unit:
             shown = Quantity(shown, unit)  # type: ignore[arg-type]
         return Neg(shown) if number.startswith("-") else shown
+
+    def _print_Vector(self, node: P.Vector) -> Node:
+        items = tuple(Neg(Num(n[1:])) if n.startswith("-") else Num(n) for n in node.numbers)
+        shown: Node = Group("(", Tuple(items))
+        unit = E.UNIT_TEXT.get(node.unit, node.unit)
+        return Quantity(shown, unit) if unit else shown  # type: ignore[arg-type]
+
+    def _print_Words(self, node: P.Words) -> Node:
+        if node.of is None:
+            return Text(node.words)
+        return BinOp(" ", self._print(node.of), Text(" " + node.words))
+
+    def _print_Paren(self, node: P.Paren) -> Node:
+        return Group("(", self._print(node.arg))
+
+    def _print_Prime(self, node: P.Prime) -> Node:
+        return Prime(self._print(node.arg), node.count)
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)

@@ -104,7 +104,8 @@ def _us_symbol(sym: Sym) -> Sym:
 
 def _us_quantity(quantity: Quantity_) -> Quantity_:
     value, unit = convert(quantity.si, quantity.unit)
-    return Quantity_(value, unit, quantity.exact and unit == quantity.unit)
+    same = unit == quantity.unit  # a unit with no US form keeps its number as written
+    return Quantity_(value, unit, quantity.exact and same, quantity.label if same else "")
 
 
 def _step(step: Step) -> Step:

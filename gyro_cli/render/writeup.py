@@ -280,7 +280,10 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
         return len(text) <= 48 and widest + len(text) + 4 <= WIDTH + 8
 
     if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if not note and short(step.text):
+        maths = [p for p in prose_nodes(step.prose) if not (isinstance(p, str) and not p.strip())]
+        if not note and short(step.text) and len(maths) == 1 and not isinstance(maths[0], str):
+            beside = printer.doprint(maths[0])  # a note that is one formula: = 0.03283 deg/h
+        elif not note and short(step.text):
             beside = "\\text{" + prose_latex(step.prose) + "}"
         else:
             if note:
