@@ -40,19 +40,20 @@ class Typeset(Expr):
 
 
 class Rel(Typeset):
-    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain."""
+    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain; ``first`` None
+    opens with the relation (``= 0.1047 rad``, a note continuing its step)."""
 
     __slots__ = ("first", "rest")
     binding = 0  # looser than any operator (`expr.precedence`)
 
-    def __init__(self, first: Expr, rest: tuple[tuple[str, Expr], ...]) -> None:
+    def __init__(self, first: Expr | None, rest: tuple[tuple[str, Expr], ...]) -> None:
         for op, _ in rest:
             if op not in RELATIONS:
                 raise ValueError(f"unknown relation {op!r}")
         self.first, self.rest = first, rest
 
     def children(self) -> tuple[Expr, ...]:
-        return (self.first,) + tuple(rhs for _, rhs in self.rest)
+        return (() if self.first is None else (self.first,)) + tuple(rhs for _, rhs in self.rest)
 
 
 class Cross(Typeset, BinOp):
@@ -108,6 +109,70 @@ class Total(Typeset):
         return (self.body,)
 
 
+class Plus(Typeset):
+    """``+z``: a sign written out, a direction along an axis."""
+
+    __slots__ = ("arg",)
+    binding = MUL
+
+    def __init__(self, arg: Expr) -> None:
+        self.arg = arg
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.arg,)
+
+
+class Deriv(Typeset):
+    """``dH/dt``, ``d theta/dt``: the rate of change of a symbol."""
+
+    __slots__ = ("body", "var")
+    binding = MUL
+
+    def __init__(self, body: Sym, var: str = "t") -> None:
+        self.body, self.var = body, var
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
+
+
+class Prime(Typeset):
+    """``betadot''``: derivatives in Lagrange's notation."""
+
+    __slots__ = ("body", "count")
+    binding = ATOM
+
+    def __init__(self, body: Expr, count: int = 1) -> None:
+        self.body, self.count = body, count
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
+
+
+class Vector(Typeset):
+    """A vector by its SI components with its unit: ``(0, 2.011e+05, 0) N m`` (a zero
+    component printed 0), converted by ``--units us`` as a quantity is."""
+
+    __slots__ = ("components", "unit")
+
+    def __init__(self, components: tuple[float, ...], unit: str = "") -> None:
+        self.components, self.unit = tuple(components), unit
+
+    @property
+    def numbers(self) -> list[str]:
+        from .expr import num
+
+        return [num(c) if c else "0" for c in self.components]
+
+    @property
+    def text(self) -> str:
+        unit = UNIT_TEXT.get(self.unit, self.unit)
+        return f"({', '.join(self.numbers)}) {unit}".rstrip()
+
+    @property
+    def binding(self) -> int:  # type: ignore[override]
+        return MUL if self.unit else ATOM
+
+
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
     (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
@@ -137,12 +202,12 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
     return tuple(Sym(name, math.nan, unit) for name in text.split())
 
 
-def rel(first: Expr | float, *chain: str | Expr | float) -> Rel:
-    """``rel(a, "=", b, ">=", c)``: a relation chain."""
-    if len(chain) % 2:
+def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:
+    """``rel(a, "=", b, ">=", c)``: a relation chain (``rel(None, "=", b)``: ``= b``)."""
+    if len(chain) % 2 or (first is None and not chain):
         raise ValueError("a relation chain alternates a relation and an expression")
     rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
-    return Rel(_node(first), rest)
+    return Rel(None if first is None else _node(first), rest)
 
 
 def cross(a: Expr, b: Expr) -> Cross:
@@ -163,6 +228,26 @@ def fn(name: str, *args: Expr | float) -> Fn:
 
 def total(body: Expr) -> Total:
     return Total(body)
+
+
+def plus(x: Expr) -> Plus:
+    """``+z``: an explicit plus sign."""
+    return Plus(x)
+
+
+def deriv(x: Sym, var: str = "t") -> Deriv:
+    """``dH/dt`` (``d theta/dt`` for a name of more than one letter)."""
+    return Deriv(x, var)
+
+
+def prime(x: Expr, count: int = 1) -> Prime:
+    """``x'``, ``x''``: a derivative in Lagrange's notation."""
+    return Prime(x, count)
+
+
+def qvec(components, unit: str = "") -> Vector:
+    """A vector by its SI components with its unit, in a sentence: ``(0, 0, 0.3704) rad/s``."""
+    return Vector(tuple(float(c) for c in components), unit)
 
 
 def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
@@ -216,6 +301,13 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     """The tree with each symbol and each quantity changed (``--units us``)."""
     if isinstance(expr, Quantity):
         return quantity(expr)
+    if isinstance(expr, Vector):  # each component converted as a quantity of its unit
+        parts = [quantity(Quantity(c, expr.unit)) for c in expr.components]
+        return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
+    if isinstance(expr, (Plus, Deriv, Prime)):
+        return expr
+    if isinstance(expr, Rel) and expr.first is None:
+        return Rel(None, tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
     if isinstance(expr, Rel):
         return Rel(map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
@@ -242,11 +334,14 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
 
 def operand_brackets(parent: Expr, child: Expr) -> bool:
     """Brackets around an operand of a prose node: a sum or difference in a product
-    of vectors or under a sum sign, a quotient or product beside a cross or dot."""
+    of vectors or under a sum sign, a quotient or product beside a cross or dot, a
+    product of vectors negated."""
     if isinstance(parent, (Cross, Dot)):
         return precedence(child, False) <= MUL and not isinstance(child, (Fn, Tup))
     if isinstance(parent, Total):
         return isinstance(child, (Add, Sub, Div, Rel))
+    if isinstance(parent, Neg):  # -(omega_p x H)
+        return isinstance(child, (Cross, Dot))
     return False
 
 
@@ -256,8 +351,8 @@ class ProseText(TextPrinter):
     """The plain text of a sentence's maths: symbols by name, quantities by value."""
 
     def _print_Rel(self, node: Rel) -> str:
-        return " ".join([self._print(node.first)] + [f"{op} {self._print(rhs)}"
-                                                      for op, rhs in node.rest])
+        first = [] if node.first is None else [self._print(node.first)]
+        return " ".join(first + [f"{op} {self._print(rhs)}" for op, rhs in node.rest])
 
     def _vector(self, node: BinOp) -> str:
         parts = []
@@ -272,6 +367,11 @@ class ProseText(TextPrinter):
     def _print_Dot(self, node: Dot) -> str:
         return self._vector(node)
 
+    def _print_Neg(self, node: Neg) -> str:
+        if operand_brackets(node, node.arg):
+            return f"-({self._print(node.arg)})"
+        return super()._print_Neg(node)
+
     def _print_Tup(self, node: Tup) -> str:
         return "(" + ", ".join(self._print(x) for x in node.items) + ")"
 
@@ -284,6 +384,20 @@ class ProseText(TextPrinter):
         return "sum " + (f"({body})" if operand_brackets(node, node.body) else body)
 
     def _print_Quantity(self, node: Quantity) -> str:
+        return node.text
+
+    def _print_Plus(self, node: Plus) -> str:
+        return "+" + self._print(node.arg)
+
+    def _print_Deriv(self, node: Deriv) -> str:
+        body = self._print(node.body)
+        space = " " if body[:2].isalpha() else ""  # d theta/dt, dH/dt
+        return f"d{space}{body}/d{node.var}"
+
+    def _print_Prime(self, node: Prime) -> str:
+        return self._print(node.body) + "'" * node.count
+
+    def _print_Vector(self, node: Vector) -> str:
         return node.text
 
 

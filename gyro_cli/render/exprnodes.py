@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
-                       Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Prime, Quantity, Rel, Sum,
+                       Sym, Tuple)
 
 
 class NodePrinter:
@@ -61,6 +61,8 @@ class NodePrinter:
         return self._print(node.sym if self.values else node.body)
 
     def _print_Neg(self, node: E.Neg) -> Node:
+        if P.operand_brackets(node, node.arg):  # -(omega_p x H), in a sentence
+            return Neg(Group("(", self._print(node.arg)))
         inner = self.operand(node, node.arg)
         if isinstance(inner, BinOp) and inner.op == " ":
             # -(a b) is set -a b, as the text reads: the sign on the first factor
@@ -114,8 +116,8 @@ class NodePrinter:
     # ---- the typeset-only nodes of sentences (core/prose.py)
 
     def _print_Rel(self, node: P.Rel) -> Node:
-        return Rel(self._print(node.first), tuple((op, self._print(rhs))
-                                                   for op, rhs in node.rest))
+        first = None if node.first is None else self._print(node.first)
+        return Rel(first, tuple((op, self._print(rhs)) for op, rhs in node.rest))
 
     def _vector(self, node: E.BinOp) -> Node:
         sides = []
@@ -149,6 +151,24 @@ class NodePrinter:
         if unit:
             shown = Quantity(shown, unit)  # type: ignore[arg-type]
         return Neg(shown) if number.startswith("-") else shown
+
+    def _print_Plus(self, node: P.Plus) -> Node:
+        return Neg(self._print(node.arg), "+")
+
+    def _print_Deriv(self, node: P.Deriv) -> Node:
+        name = node.body.name
+        top: Node = BinOp(" ", Sym("d"), Sym(name)) if name[:2].isalpha() else Sym("d" + name)
+        return BinOp("/", top, Sym("d" + node.var))  # d theta/dt, dH/dt (set d H/d t)
+
+    def _print_Prime(self, node: P.Prime) -> Node:
+        return Prime(self._print(node.body), node.count)
+
+    def _print_Vector(self, node: P.Vector) -> Node:
+        items = tuple(Neg(Num(n[1:])) if n.startswith("-") else Num(n) for n in node.numbers)
+        shown: Node = Group("(", Tuple(items))
+        if not node.unit:
+            return shown
+        return Quantity(shown, P.UNIT_TEXT.get(node.unit, node.unit))  # type: ignore[arg-type]
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)

@@ -271,11 +271,16 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
+    tree_note = ""  # a note that is one tree (``= 0.1047 rad``), set in the display if short
     if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if note:
-            after.append(note)
-        after.append(Typeset(prose_latex(step.prose, markdown)))
-        note = ""
+        pieces_ = step.prose.pieces
+        if not note and len(pieces_) == 1 and not isinstance(pieces_[0], str):
+            tree_note, note = LatexPrinter(True).doprint(prose_nodes(step.prose)[0]), step.text
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+            note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
@@ -287,7 +292,9 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
     if short_note:
-        body += f" \\qquad {_note_math(note)}"
+        body += f" \\qquad {tree_note or _note_math(note)}"
+    elif tree_note:
+        after.append(Typeset(prose_latex(step.prose, markdown)))
     elif note:
         after.append(note)
     if tag:
