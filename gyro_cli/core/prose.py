@@ -391,7 +391,7 @@ class ProseText(TextPrinter):
 
     def _print_Deriv(self, node: Deriv) -> str:
         body = self._print(node.body)
-        space = " " if body[:2].isalpha() else ""  # d theta/dt, dH/dt
+        space = " " if len(body) > 1 and body[:2].isalpha() else ""  # d theta/dt, dH/dt
         return f"d{space}{body}/d{node.var}"
 
     def _print_Prime(self, node: Prime) -> str:

@@ -157,7 +157,8 @@ class NodePrinter:
 
     def _print_Deriv(self, node: P.Deriv) -> Node:
         name = node.body.name
-        top: Node = BinOp(" ", Sym("d"), Sym(name)) if name[:2].isalpha() else Sym("d" + name)
+        top: Node = BinOp(" ", Sym("d"), Sym(name)) if len(name) > 1 and name[:2].isalpha() \
+            else Sym("d" + name)
         return BinOp("/", top, Sym("d" + node.var))  # d theta/dt, dH/dt (set d H/d t)
 
     def _print_Prime(self, node: P.Prime) -> Node:
