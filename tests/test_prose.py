@@ -20,7 +20,8 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"gyrocompass", "ship", "two_wheeler", "four_wheeler"}
+PROSE_KINDS = {"gyrocompass", "ship", "two_wheeler", "four_wheeler",
+               "rolling_disk"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 

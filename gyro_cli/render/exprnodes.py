@@ -63,6 +63,10 @@ class NodePrinter:
     def _print_Neg(self, node: E.Neg) -> Node:
         if P.operand_brackets(node, node.arg):  # -(omega_p x H), in a sentence
             return Neg(Group("(", self._print(node.arg)))
+        if isinstance(node.arg, P.Deriv):  # -dH_O/dt: the sign on the numerator
+            rate = self._print(node.arg)
+            assert isinstance(rate, BinOp)
+            return BinOp("/", Neg(rate.left), rate.right)
         inner = self.operand(node, node.arg)
         if isinstance(inner, BinOp) and inner.op == " ":
             # -(a b) is set -a b, as the text reads: the sign on the first factor

@@ -271,11 +271,13 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
-    tree_note = ""  # a note that is one tree (``= 0.1047 rad``), set in the display if short
+    tree_note = ""  # a note of trees (``= 0.1047 rad``, ``along n``), in the display if short
     if getattr(step, "prose", None) is not None:  # a note of words and trees
         pieces_ = step.prose.pieces
         if not note and len(pieces_) == 1 and not isinstance(pieces_[0], str):
             tree_note, note = LatexPrinter(True).doprint(prose_nodes(step.prose)[0]), step.text
+        elif not note:  # words and trees: set as text with inline maths when short
+            tree_note, note = "\\text{" + prose_latex(step.prose) + "}", step.text
         else:
             if note:
                 after.append(note)
