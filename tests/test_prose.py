@@ -13,6 +13,10 @@ import pytest
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import PI, Sym, cos, sin
 from gyro_cli.core.prose import Prose, cross, deriv, dot, fn, names, q, rel, signed, total, tup
+
+
+from gyro_cli.core.prose import (Prose, cross, deriv, dot, fn, names, plus, prime, q, qvec, rel,
+                                 total, tup)
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
 from gyro_cli.render.mathparse import spans
@@ -20,8 +24,8 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"gyrocompass", "gyroscopic_torque", "swinging_rotor", "aeroplane", "gyro_drift",
-               "earth_precession"}
+PROSE_KINDS = {"aeroplane", "earth_precession", "four_wheeler", "gyro_drift", "gyrocompass",
+               "gyroscopic_torque", "rolling_disk", "ship", "swinging_rotor", "two_wheeler"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
@@ -218,3 +222,35 @@ def test_vectors_with_a_unit_explicit_signs_brackets_and_primes():
     us = line.map(lambda t: map_values(t, lambda s: s,
                                        lambda v: q(v.si / 1.3558179483314004, "lbf ft")))
     assert "(0, -7412, 0) lbf ft" in us.text
+
+
+def test_signs_derivatives_primes_vectors_and_a_relation_that_continues():
+    """The nodes the vehicles and the rolling disk write: +z, d theta/dt, betadot'',
+    (0, 2.011e+05, 0) N m, ``= 0.1047 rad`` (a note continuing its step)."""
+    from gyro_cli.render.exprnodes import prose_nodes
+    from gyro_cli.render.mathprint import LatexPrinter
+
+    x, z, theta, H_O, bd, k, wp = names("x z theta H_O betadot k omega_p")
+    line = Prose((plus(z), " ", -cross(wp, H), " ", rel(names("omega_p")[0], "=", deriv(theta)),
+                  " ", deriv(H_O), " ", rel(prime(bd, 2) + k * bd, "=", 0), " ",
+                  rel(cross(wp, H), "=", qvec((0, 2.011e5, -0.0), "N m")), " ",
+                  rel(None, "=", q(0.1047, "rad"))))
+    assert line.text == ("+z -(omega_p x H) omega_p = d theta/dt dH_O/dt betadot'' + k betadot = 0 "
+                         "omega_p x H = (0, 2.011e+05, 0) N m = 0.1047 rad")
+    tex = [LatexPrinter(False).doprint(n) for n in prose_nodes(line) if not isinstance(n, str)]
+    assert tex[:2] == ["+z", r"-(\omega_{p} \times H)"]
+    assert tex[3] == r"\mathrm{d}H_{O}/\mathrm{d}t"
+    assert tex[5].endswith(r"= (0, 2.011\times 10^{5}, 0)\,\mathrm{N\,m}")
+    assert tex[6] == r"= 0.1047\,\mathrm{rad}"
+    with pytest.raises(ValueError):
+        rel(None)
+
+
+def test_us_units_convert_each_component_of_a_vector(tmp_path):
+    work = Work()
+    work.text("couple ", qvec((0, 1.3558179483314004, 0), "N m"), " at ", qvec((1, 0, 0), "rad/s"))
+    path = tmp_path / "gc.yaml"
+    path.write_text(template("gyrocompass"))
+    sol = dataclass_result(solve_file(str(path)), work)
+    assert to_us(sol).solution.sections[-1].steps[-1].text == \
+        "couple (0, 1.000, 0) lbf ft at (1.000, 0, 0) rad/s"

@@ -454,7 +454,8 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
         return c < ATOM or isinstance(node, (Pow,)) if not right else c < ATOM
     if isinstance(parent, Neg):
         # -(-2.000 rad/s sin(x)): a product or quotient printed with a leading minus
-        return c < MUL or c == NEG or leading_negative(node, values)
+        return c < MUL or c == NEG or leading_negative(node, values) or \
+            getattr(node, "bracket_after_sign", False)  # -(omega_p x H)
     return False
 
 

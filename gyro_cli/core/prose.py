@@ -66,6 +66,7 @@ class Cross(Typeset, BinOp):
     __slots__ = ()
     op = "x"
     binding = MUL
+    bracket_after_sign = True
 
 
 class Dot(Typeset, BinOp):
@@ -74,6 +75,7 @@ class Dot(Typeset, BinOp):
     __slots__ = ()
     op = "."
     binding = MUL
+    bracket_after_sign = True
 
 
 class Tup(Typeset):
@@ -232,7 +234,7 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
 
 def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:
     """``rel(a, "=", b, ">=", c)``: a relation chain; ``rel(None, "=", b)`` is ``= b``."""
-    if len(chain) % 2:
+    if not chain or len(chain) % 2:
         raise ValueError("a relation chain alternates a relation and an expression")
     rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
     return Rel(None if first is None else _node(first), rest)
@@ -381,6 +383,11 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     return map_syms(expr, sym)
 
 
+def deriv_space(name: str) -> str:
+    """``d theta/dt`` but ``dH/dt``, ``dH_O/dt``: a space after d before a longer name."""
+    return " " if len(name) > 1 and name[:2].isalpha() else ""
+
+
 def operand_brackets(parent: Expr, child: Expr) -> bool:
     """Brackets around an operand of a prose node: a sum or difference in a product
     of vectors or under a sum sign, a quotient or product beside a cross or dot (a
@@ -434,7 +441,7 @@ class ProseText(TextPrinter):
         return node.sign + (f"({arg})" if operand_brackets(node, node.arg) else arg)
 
     def _print_Deriv(self, node: Deriv) -> str:
-        return f"d{node.sym.name}/d{node.var}"
+        return f"d{deriv_space(node.sym.name)}{node.sym.name}/d{node.var}"
 
     def _print_Quantity(self, node: Quantity) -> str:
         return node.text

@@ -61,6 +61,10 @@ class NodePrinter:
         return self._print(node.sym if self.values else node.body)
 
     def _print_Neg(self, node: E.Neg) -> Node:
+        if isinstance(node.arg, P.Deriv):  # -dH_O/dt: the sign on the numerator
+            rate = self._print(node.arg)
+            assert isinstance(rate, BinOp)
+            return BinOp("/", Neg(rate.left), rate.right)
         inner = self.operand(node, node.arg)
         if isinstance(inner, BinOp) and inner.op == " ":
             # -(a b) is set -a b, as the text reads: the sign on the first factor
@@ -149,7 +153,9 @@ class NodePrinter:
         return Neg(Group("(", arg) if P.operand_brackets(node, node.arg) else arg, node.sign)
 
     def _print_Deriv(self, node: P.Deriv) -> Node:
-        return BinOp("/", Sym("d" + node.sym.name), Sym("d" + node.var))
+        name = node.sym.name
+        top: Node = BinOp(" ", Sym("d"), Sym(name)) if P.deriv_space(name) else Sym("d" + name)
+        return BinOp("/", top, Sym("d" + node.var))  # d theta/dt, dH/dt
 
     def _print_Quantity(self, node: P.Quantity) -> Node:
         number, _, unit = node.text.partition(" ")
