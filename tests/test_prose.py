@@ -11,7 +11,7 @@ import pytest
 
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import PI, Sym, cos, sin
-from gyro_cli.core.prose import Prose, cross, dot, fn, names, q, rel, total, tup
+from gyro_cli.core.prose import Prose, cross, dot, fn, names, q, rel, total, tup, words
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
 from gyro_cli.render.mathparse import spans
@@ -19,7 +19,7 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"gyrocompass"}
+PROSE_KINDS = {"gyrocompass", "torque_free"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
@@ -49,6 +49,25 @@ def test_quantities_print_their_value_and_exact_ones_their_digits():
     assert Prose((q(math.pi / 6, "deg"),)).text == "30.00 deg"
     assert Prose((q(math.pi, "deg", exact=True),)).text == "180 deg"
     assert Prose((rel(alpha, "=", q(-2.5, "rad/s")),)).text == "alpha = -2.500 rad/s"
+
+
+def test_words_stand_as_a_symbol_and_are_set_as_text():
+    work = Work()
+    work.section("Test")
+    work.step(words("body cone"), Sym("beta", 0.5, "deg"), unit="deg", substitute=False)
+    step = work.sections[0].steps[0]
+    assert step.as_text() == "body cone = beta = 28.65 deg"
+    assert r"\text{body cone} = \beta" in "\n".join(writeup._steps([step], markdown=False))
+    assert "<mtext>body cone</mtext>" in html._step_html(step)
+
+
+def test_a_short_note_of_words_and_trees_sits_beside_its_display():
+    work = Work()
+    work.section("Test")
+    work.step("phidot", Sym("H", 2.0, "kg m^2/s") / Sym("I", 1.0, "kg m^2"), unit="rad/s",
+              note=("precession of ", *names("k"), " about ", H))
+    latex = "\n".join(writeup._steps(work.sections[0].steps, markdown=False))
+    assert r"\qquad \text{precession of $k$ about $H$}" in latex
 
 
 def test_typeset_nodes_have_no_value_and_pieces_are_words_or_trees():

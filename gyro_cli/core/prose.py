@@ -108,6 +108,16 @@ class Total(Typeset):
         return (self.body,)
 
 
+class Words(Typeset):
+    """Words standing as a symbol: ``body cone``, ``principal moments`` (set as text in
+    the maths)."""
+
+    __slots__ = ("text",)
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+
+
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
     (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
@@ -165,6 +175,11 @@ def total(body: Expr) -> Total:
     return Total(body)
 
 
+def words(text: str) -> Words:
+    """Words that stand as a step's or an answer's symbol: ``words("body cone")``."""
+    return Words(text)
+
+
 def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
     text such as 180 deg, printed with the digits it needs, not to 4 figures."""
@@ -214,8 +229,8 @@ class Prose:
 def map_values(expr: Expr, sym: Callable[[Sym], Sym],
                quantity: Callable[[Quantity], Quantity]) -> Expr:
     """The tree with each symbol and each quantity changed (``--units us``)."""
-    if isinstance(expr, Quantity):
-        return quantity(expr)
+    if isinstance(expr, (Quantity, Words)):
+        return quantity(expr) if isinstance(expr, Quantity) else expr
     if isinstance(expr, Rel):
         return Rel(map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
@@ -284,6 +299,9 @@ class ProseText(TextPrinter):
         return "sum " + (f"({body})" if operand_brackets(node, node.body) else body)
 
     def _print_Quantity(self, node: Quantity) -> str:
+        return node.text
+
+    def _print_Words(self, node: Words) -> str:
         return node.text
 
 

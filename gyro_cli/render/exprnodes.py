@@ -15,7 +15,7 @@ import re
 from ..core import expr as E
 from ..core import prose as P
 from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
-                       Tuple)
+                       Text, Tuple)
 
 
 class NodePrinter:
@@ -149,6 +149,9 @@ class NodePrinter:
         if unit:
             shown = Quantity(shown, unit)  # type: ignore[arg-type]
         return Neg(shown) if number.startswith("-") else shown
+
+    def _print_Words(self, node: P.Words) -> Node:
+        return Text(node.text)
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)

@@ -271,14 +271,19 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
-    if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if note:
-            after.append(note)
-        after.append(Typeset(prose_latex(step.prose, markdown)))
-        note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
+    beside = ""
+    if getattr(step, "prose", None) is not None:  # a note of words and trees
+        text = step.prose.text
+        if not note and len(text) <= 48 and widest + len(text) + 4 <= WIDTH + 8:
+            beside = _prose_note_math(step.prose)  # short: beside the display, as below
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+        note = ""
     short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
@@ -286,6 +291,8 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
         rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
+    if beside:
+        body += f" \\qquad {beside}"
     if short_note:
         body += f" \\qquad {_note_math(note)}"
     elif note:
@@ -300,6 +307,15 @@ def _note_math(note: str) -> str:
     if tree is not None and not isinstance(tree, Sym):
         return LatexPrinter(True).doprint(tree)
     return "\\text{" + re.sub(r"\$([^$]*)\$", r"$\1$", mixed(note)) + "}"
+
+
+def _prose_note_math(prose) -> str:
+    """A short note of words and trees beside its display: one formula as maths, else
+    the words as text with the trees inline."""
+    pieces = prose_nodes(prose)
+    if len(pieces) == 1 and not isinstance(pieces[0], (str, Sym)):
+        return LatexPrinter(True).doprint(pieces[0])
+    return "\\text{" + prose_latex(prose) + "}"
 
 
 def _steps(steps, markdown: bool) -> list[str]:
