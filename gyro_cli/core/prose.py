@@ -108,6 +108,30 @@ class Total(Typeset):
         return (self.body,)
 
 
+class Primed(Typeset):
+    """``i''``: a symbol with primes, an axis of an intermediate frame (Fig. 11-2)."""
+
+    __slots__ = ("body", "count")
+
+    def __init__(self, body: Expr, count: int) -> None:
+        self.body, self.count = body, count
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
+
+
+class Mat(Typeset):
+    """``[a b c; d e f]``: a matrix by its rows."""
+
+    __slots__ = ("rows",)
+
+    def __init__(self, rows: tuple[tuple[Expr, ...], ...]) -> None:
+        self.rows = rows
+
+    def children(self) -> tuple[Expr, ...]:
+        return tuple(x for row in self.rows for x in row)
+
+
 class Words(Typeset):
     """Words standing as a symbol: ``body cone``, ``principal moments`` (set as text in
     the maths)."""
@@ -173,6 +197,16 @@ def fn(name: str, *args: Expr | float) -> Fn:
 
 def total(body: Expr) -> Total:
     return Total(body)
+
+
+def prime(body: Expr, count: int = 1) -> Primed:
+    """``prime(i, 2)``: i''."""
+    return Primed(body, count)
+
+
+def mat(*rows) -> Mat:
+    """``mat((a, b), (c, d))``: a matrix by its rows."""
+    return Mat(tuple(tuple(_node(x) for x in row) for row in rows))
 
 
 def words(text: str) -> Words:
@@ -243,6 +277,10 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
         return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args))
     if isinstance(expr, Total):
         return Total(map_values(expr.body, sym, quantity))
+    if isinstance(expr, Primed):
+        return Primed(map_values(expr.body, sym, quantity), expr.count)
+    if isinstance(expr, Mat):
+        return Mat(tuple(tuple(map_values(x, sym, quantity) for x in row) for row in expr.rows))
     if isinstance(expr, Neg):
         return Neg(map_values(expr.arg, sym, quantity))
     if isinstance(expr, BinOp):
@@ -303,6 +341,12 @@ class ProseText(TextPrinter):
 
     def _print_Words(self, node: Words) -> str:
         return node.text
+
+    def _print_Primed(self, node: Primed) -> str:
+        return self._print(node.body) + "'" * node.count
+
+    def _print_Mat(self, node: Mat) -> str:
+        return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
 
 
 def text(expr: Expr) -> str:
