@@ -17,6 +17,11 @@ from gyro_cli.core.prose import Prose, cross, deriv, dot, fn, names, q, rel, sig
 
 from gyro_cli.core.prose import (Prose, cross, deriv, dot, fn, names, plus, prime, q, qvec, rel,
                                  total, tup)
+
+
+from gyro_cli.core.expr import SumOf, formula, python, substitution
+from gyro_cli.core.prose import (Prose, cross, dot, fn, mat, names, prime, q, rel, total, tup,
+                                 words)
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
 from gyro_cli.render.mathparse import spans
@@ -24,8 +29,9 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"aeroplane", "earth_precession", "four_wheeler", "gyro_drift", "gyrocompass",
-               "gyroscopic_torque", "rolling_disk", "ship", "swinging_rotor", "two_wheeler"}
+PROSE_KINDS = {"aeroplane", "earth_precession", "euler_angles", "four_wheeler", "gyro_drift",
+               "gyrocompass", "gyroscopic_torque", "rate_gyro", "rolling_disk", "ship",
+               "swinging_rotor", "torque_free", "two_wheeler"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
@@ -72,6 +78,57 @@ def test_quantities_print_their_value_and_exact_ones_their_digits():
     assert Prose((q(math.pi / 6, "deg"),)).text == "30.00 deg"
     assert Prose((q(math.pi, "deg", exact=True),)).text == "180 deg"
     assert Prose((rel(alpha, "=", q(-2.5, "rad/s")),)).text == "alpha = -2.500 rad/s"
+
+
+def test_words_stand_as_a_symbol_and_are_set_as_text():
+    work = Work()
+    work.section("Test")
+    work.step(words("body cone"), Sym("beta", 0.5, "deg"), unit="deg", substitute=False)
+    step = work.sections[0].steps[0]
+    assert step.as_text() == "body cone = beta = 28.65 deg"
+    assert r"\text{body cone} = \beta" in "\n".join(writeup._steps([step], markdown=False))
+    assert "<mtext>body cone</mtext>" in html._step_html(step)
+
+
+def test_a_short_note_of_words_and_trees_sits_beside_its_display():
+    work = Work()
+    work.section("Test")
+    work.step("phidot", Sym("H", 2.0, "kg m^2/s") / Sym("I", 1.0, "kg m^2"), unit="rad/s",
+              note=("precession of ", *names("k"), " about ", H))
+    latex = "\n".join(writeup._steps(work.sections[0].steps, markdown=False))
+    assert r"\qquad \text{precession of $k$ about $H$}" in latex
+
+
+def _line(*pieces):
+    work = Work()
+    work.text(*pieces)
+    return work.sections[0].steps[0]
+
+
+def test_primes_and_matrices_print_as_the_chapter_writes_them():
+    i, j = names("i j")
+    assert Prose((rel(prime(i, 2), "=", cos(alpha) * i - sin(alpha) * j),)).text == \
+        "i'' = cos(alpha) i - sin(alpha) j"
+    assert Prose((mat((q(1.0), 0), (0, q(-1.0))),)).text == "[1.000 0; 0 -1.000]"
+    latex = "\n".join(writeup._steps([_line("so ", rel(prime(i, 2), "=", mat((1, 0), (0, 1))))],
+                                      markdown=False))
+    assert "i''" in latex and r"\begin{bmatrix} 1 & 0 \\ 0 & 1 \end{bmatrix}" in latex
+
+
+def test_a_sum_over_particles_prints_the_chapter_form_and_evaluates_its_terms():
+    m, y, z = names("m y z")
+    parts = [(Sym(f"m_{k}", mk, "kg"), Sym(f"y_{k}", yk, "m"), Sym(f"z_{k}", zk, "m"))
+             for k, (mk, yk, zk) in enumerate(((0.5, 0.2, 0.0), (1.0, -0.1, 0.3)))]
+    tree = SumOf(m * (y ** 2 + z ** 2), tuple(mk * (yk ** 2 + zk ** 2) for mk, yk, zk in parts))
+    assert formula(tree) == "sum m (y^2 + z^2)"
+    assert tree.value == pytest.approx(0.5 * 0.04 + 1.0 * (0.01 + 0.09))
+    assert substitution(tree).startswith("0.5000 kg ((0.2000 m)^2 + (0 m)^2) + 1.000 kg")
+    assert python(tree) == "(m_0*(y_0**2+z_0**2)+m_1*(y_1**2+z_1**2))"
+    work = Work()
+    work.section("Test")
+    work.step("I_x", tree, unit="kg*m^2", substitute=False)
+    assert r"I_{x} = \sum m (y^{2} + z^{2})" in "\n".join(
+        writeup._steps(work.sections[0].steps, markdown=False))
 
 
 def test_typeset_nodes_have_no_value_and_pieces_are_words_or_trees():

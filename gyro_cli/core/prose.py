@@ -141,6 +141,18 @@ class Deriv(Typeset):
             raise TypeError("dx/dt takes a symbol; d/dt of a formula is fn(\"d/dt\", ...)")
         self.sym, self.var = sym, var
 
+class Mat(Typeset):
+    """``[a b c; d e f]``: a matrix by its rows."""
+
+    __slots__ = ("rows",)
+
+    def __init__(self, rows: tuple[tuple[Expr, ...], ...]) -> None:
+        self.rows = rows
+
+    def children(self) -> tuple[Expr, ...]:
+        return tuple(x for row in self.rows for x in row)
+
+
 
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
@@ -295,6 +307,11 @@ def prime(x: Expr, count: int = 1) -> Prime:
     return Prime(x, count)
 
 
+def mat(*rows) -> Mat:
+    """``mat((a, b), (c, d))``: a matrix by its rows."""
+    return Mat(tuple(tuple(_node(x) for x in row) for row in rows))
+
+
 def q(si: float, unit: str = "", exact: bool = False, label: str = "") -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
     text such as 180 deg, printed with the digits it needs, not to 4 figures; ``label``:
@@ -371,6 +388,8 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
         return Sign(expr.sign, map_values(expr.arg, sym, quantity))
     if isinstance(expr, Deriv):
         return expr
+    if isinstance(expr, Mat):
+        return Mat(tuple(tuple(map_values(x, sym, quantity) for x in row) for row in expr.rows))
     if isinstance(expr, Neg):
         return Neg(map_values(expr.arg, sym, quantity))
     if isinstance(expr, BinOp):
@@ -458,6 +477,8 @@ class ProseText(TextPrinter):
     def _print_Prime(self, node: Prime) -> str:
         inner = self._print(node.arg)
         return (f"({inner})" if precedence(node.arg, False) < ATOM else inner) + "'" * node.count
+    def _print_Mat(self, node: Mat) -> str:
+        return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
 
 
 def text(expr: Expr) -> str:

@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Prime, Quantity, Rel, Sum,
-                       Sym, Text, Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Matrix, Neg, Node, Num, Pow, Prime, Quantity,
+                       Rel, Sum, Sym, Text, Tuple)
 
 
 class NodePrinter:
@@ -108,6 +108,12 @@ class NodePrinter:
         return Call(E.SHOWN_NAMES.get(node.name, node.name),
                     tuple(self._print(a) for a in node.args))
 
+    def _print_SumOf(self, node: E.SumOf) -> Node:
+        if self.values:
+            return self._print(node.expanded())
+        body = self._print(node.body)
+        return Sum(Group("(", body) if E.precedence(node.body, False) <= E.ADD else body)
+
     def _print_Chain(self, node: E.Chain) -> Node:
         if self.values:
             return self._print(node.forms[-1])
@@ -180,6 +186,8 @@ class NodePrinter:
 
     def _print_Prime(self, node: P.Prime) -> Node:
         return Prime(self._print(node.arg), node.count)
+    def _print_Mat(self, node: P.Mat) -> Node:
+        return Matrix(tuple(tuple(self._print(x) for x in row) for row in node.rows))
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)

@@ -24,7 +24,7 @@ from ..solving.solve import Result
 from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
 from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
-from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
+from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text, Tuple
 
 __all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "symbol_tex"]
 
@@ -440,6 +440,8 @@ def _answer_lhs(answer) -> str:
             and not (answer.values and not isinstance(answer.values[0], str)) \
             and answer.symbol.isalpha() and len(answer.symbol) > 2:
         return ""
+    if isinstance(tree, Group) and isinstance(tree.body, Tuple) and len(answer.values) > 1:
+        return ""  # (I_1, I_2, I_3): one symbol per value, not the triple before each
     return LatexPrinter(False).doprint(tree) + " = "
 
 
