@@ -11,7 +11,8 @@ import pytest
 
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import PI, Sym, cos, sin
-from gyro_cli.core.prose import Prose, cross, dot, fn, names, q, rel, total, tup
+from gyro_cli.core.prose import (Prose, bracket, cross, dot, fn, integral, matrix, names, prime, q,
+                                 rel, total, tup)
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
 from gyro_cli.render.mathparse import spans
@@ -19,7 +20,7 @@ from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
 #: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"gyrocompass"}
+PROSE_KINDS = {"gyrocompass", "bicycle"}
 
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
@@ -49,6 +50,40 @@ def test_quantities_print_their_value_and_exact_ones_their_digits():
     assert Prose((q(math.pi / 6, "deg"),)).text == "30.00 deg"
     assert Prose((q(math.pi, "deg", exact=True),)).text == "180 deg"
     assert Prose((rel(alpha, "=", q(-2.5, "rad/s")),)).text == "alpha = -2.500 rad/s"
+
+
+def test_matrices_primes_integrals_brackets_and_eigenvalues():
+    """The nodes of the bicycle's and the released top's sentences, in text and LaTeX."""
+    from gyro_cli.render.exprnodes import NodePrinter
+    from gyro_cli.render.mathprint import LatexPrinter
+
+    def tex(tree):
+        return LatexPrinter(False).doprint(NodePrinter().doprint(tree))
+
+    M, qq, s, u, f = names("M q s u f")
+    line = rel(M, "=", matrix([[80.81722, 0.0], [-2.5, 1.0]], "kg m^2", sig=10))
+    assert Prose((line,)).text == "M = [[80.81722000, 0], [-2.500000000, 1.000000000]] kg m^2"
+    assert r"\begin{bmatrix} 80.81722000 & 0 \\ -2.500000000" in tex(line)
+    assert Prose((M * prime(qq, 2),)).text == "M q''" and tex(prime(qq)) == "q'"
+    T = integral(names("u1")[0], names("u2")[0], names("du")[0] / fn("f", u))
+    assert Prose((2 * T,)).text == "2 int_u1^u2 du / f(u)"
+    assert tex(T).startswith(r"\int_{u_{1}}^{u_{2}}")
+    assert Prose((bracket(u + 1) / 2,)).text == "[u + 1] / 2"
+    assert Prose((fn("Pi", names("n")[0], names("m")[0], sep="|"),)).text == "Pi(n|m)"
+    eig = rel(s, "=", q(complex(-0.5, -4.25), "1/s", sig=6))
+    assert Prose((eig,)).text == "s = -0.500000 - 4.25000 i 1/s"
+    assert tex(eig) == r"s = -0.500000 - 4.25000\,\mathrm{i}\,\mathrm{1/s}"
+    assert Prose((q(4.29238253634111, "m/s", sig=12),)).text == "4.29238253634 m/s"
+
+
+def test_us_units_convert_a_matrix_and_keep_the_figures_of_a_unit_both_systems_share():
+    from gyro_cli.core.prose import map_values
+    from gyro_cli.render.us_units import _us_quantity, _us_symbol
+
+    us = map_values(matrix([[14.593902937206364, 0.0]], "kg", sig=10), _us_symbol, _us_quantity)
+    assert Prose((us,)).text == "[[1.000, 0]] slug"
+    rate = map_values(q(-0.322866429004087, "1/s", sig=12), _us_symbol, _us_quantity)
+    assert Prose((rate,)).text == "-0.322866429004 1/s"
 
 
 def test_typeset_nodes_have_no_value_and_pieces_are_words_or_trees():

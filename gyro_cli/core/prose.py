@@ -19,8 +19,8 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ATOM, MUL, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg, Sub, Sym,
-                   TextPrinter, _node, map_syms, precedence, quantity_text)
+from .expr import (ADD, ATOM, MUL, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg,
+                   Sub, Sym, TextPrinter, _node, map_syms, num, precedence)
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -86,10 +86,10 @@ class Tup(Typeset):
 class Fn(Typeset):
     """``name(args)`` for a function known by its name only: ``f(u)``, ``R_z(psi)``."""
 
-    __slots__ = ("name", "args")
+    __slots__ = ("name", "args", "sep")
 
-    def __init__(self, name: str, args: tuple[Expr, ...]) -> None:
-        self.name, self.args = name, args
+    def __init__(self, name: str, args: tuple[Expr, ...], sep: str = ",") -> None:
+        self.name, self.args, self.sep = name, args, sep  # sep "|": Pi(n|m)
 
     def children(self) -> tuple[Expr, ...]:
         return self.args
@@ -110,24 +110,90 @@ class Total(Typeset):
 
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
-    (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
+    (SI value; ``deg`` shows radians in degrees, as a `Sym` does). ``sig``: the
+    significant figures shown (a number the reader compares to many digits); a
+    complex value is written ``a - b i`` (an eigenvalue)."""
 
-    __slots__ = ("si", "unit", "exact")
+    __slots__ = ("si", "unit", "exact", "sig")
 
-    def __init__(self, si: float, unit: str = "", exact: bool = False) -> None:
-        self.si, self.unit, self.exact = si, unit, exact
+    def __init__(self, si: float | complex, unit: str = "", exact: bool = False,
+                 sig: int = SIG) -> None:
+        self.si, self.unit, self.exact, self.sig = si, unit, exact, sig
+
+    @property
+    def number(self) -> str:
+        """The value as written, without its unit: ``-0.7753 - 4.465 i``."""
+        if isinstance(self.si, complex):
+            re, im = self.si.real, self.si.imag
+            return num(re, self.sig) + (f" {'-' if im < 0 else '+'} {num(abs(im), self.sig)} i"
+                                        if im else "")
+        shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
+        return f"{round(shown, 9):g}" if self.exact else num(shown, self.sig)
 
     @property
     def text(self) -> str:
         """``0.0001280 N m``; an exact quantity as few digits as it needs (``180 deg``)."""
-        if not self.exact:
-            return quantity_text(self.si, self.unit)
-        shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
-        return f"{round(shown, 9):g} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
+        return f"{self.number} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
 
     @property
     def binding(self) -> int:  # type: ignore[override]
-        return MUL if self.unit or self.si < 0 else ATOM
+        if isinstance(self.si, complex) and self.si.imag:
+            return ADD
+        return MUL if self.unit or self.si.real < 0 else ATOM
+
+
+class Matrix(Typeset):
+    """``[[a, b], [c, d]] unit``: a matrix of values with one unit (SI), ``sig`` figures."""
+
+    __slots__ = ("rows", "unit", "sig")
+    binding = MUL
+
+    def __init__(self, rows: tuple[tuple[float, ...], ...], unit: str = "",
+                 sig: int = SIG) -> None:
+        self.rows, self.unit, self.sig = rows, unit, sig
+
+    def entries(self) -> tuple[tuple[Quantity, ...], ...]:
+        """Each entry as a quantity without the unit, as printed."""
+        return tuple(tuple(Quantity(x, "", sig=self.sig) for x in row) for row in self.rows)
+
+
+class Prime(Typeset):
+    """``q'`` and ``q''``: a time derivative in Lagrange's notation."""
+
+    __slots__ = ("body", "count")
+    binding = ATOM
+
+    def __init__(self, body: Expr, count: int = 1) -> None:
+        self.body, self.count = body, count
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
+
+
+class Integral(Typeset):
+    """``int_a^b body``: a definite integral (the body holds its differential)."""
+
+    __slots__ = ("lower", "upper", "body")
+    binding = ATOM  # written last in its product: 2 int_a^b du / sqrt(f(u))
+
+    def __init__(self, lower: Expr, upper: Expr, body: Expr) -> None:
+        self.lower, self.upper, self.body = lower, upper, body
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.lower, self.upper, self.body)
+
+
+class Bracket(Typeset):
+    """``[x]``: square brackets the author writes around a long factor."""
+
+    __slots__ = ("body",)
+    binding = ATOM
+
+    def __init__(self, body: Expr) -> None:
+        self.body = body
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.body,)
 
 
 # ---- building -----------------------------------------------------------------
@@ -157,18 +223,37 @@ def tup(*items: Expr | float) -> Tup:
     return Tup(tuple(_node(x) for x in items))
 
 
-def fn(name: str, *args: Expr | float) -> Fn:
-    return Fn(name, tuple(_node(a) for a in args))
+def fn(name: str, *args: Expr | float, sep: str = ",") -> Fn:
+    """``fn("f", u)``: f(u); ``sep="|"`` for a parameter after a bar, ``Pi(n|m)``."""
+    return Fn(name, tuple(_node(a) for a in args), sep)
 
 
 def total(body: Expr) -> Total:
     return Total(body)
 
 
-def q(si: float, unit: str = "", exact: bool = False) -> Quantity:
+def q(si: float | complex, unit: str = "", exact: bool = False, sig: int = SIG) -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
-    text such as 180 deg, printed with the digits it needs, not to 4 figures."""
-    return Quantity(si, unit, exact)
+    text such as 180 deg, printed with the digits it needs, not to 4 figures; ``sig``:
+    the figures shown where the text compares many (an eigenvalue to 12)."""
+    return Quantity(si, unit, exact, sig)
+
+
+def matrix(rows, unit: str = "", sig: int = SIG) -> Matrix:
+    """A matrix of SI values with its unit: ``matrix(M, "kg m^2", sig=10)``."""
+    return Matrix(tuple(tuple(float(x) + 0.0 for x in row) for row in rows), unit, sig)
+
+
+def prime(body: Expr, count: int = 1) -> Prime:
+    return Prime(body, count)
+
+
+def integral(lower: Expr | float, upper: Expr | float, body: Expr) -> Integral:
+    return Integral(_node(lower), _node(upper), body)
+
+
+def bracket(body: Expr) -> Bracket:
+    return Bracket(body)
 
 
 # ---- a line of prose --------------------------------------------------------------
@@ -216,6 +301,19 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     """The tree with each symbol and each quantity changed (``--units us``)."""
     if isinstance(expr, Quantity):
         return quantity(expr)
+    if isinstance(expr, Matrix):
+        shown = [[quantity(Quantity(x, expr.unit, sig=expr.sig)) for x in row]
+                 for row in expr.rows]
+        unit = shown[0][0].unit if shown and shown[0] else expr.unit
+        return Matrix(tuple(tuple(x.si for x in row) for row in shown), unit,
+                      shown[0][0].sig if shown and shown[0] else expr.sig)
+    if isinstance(expr, (Prime, Bracket)):
+        return type(expr)(map_values(expr.body, sym, quantity), *(
+            (expr.count,) if isinstance(expr, Prime) else ()))
+    if isinstance(expr, Integral):
+        return Integral(map_values(expr.lower, sym, quantity),
+                        map_values(expr.upper, sym, quantity),
+                        map_values(expr.body, sym, quantity))
     if isinstance(expr, Rel):
         return Rel(map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
@@ -225,7 +323,7 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, Tup):
         return Tup(tuple(map_values(x, sym, quantity) for x in expr.items))
     if isinstance(expr, Fn):
-        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args))
+        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args), expr.sep)
     if isinstance(expr, Total):
         return Total(map_values(expr.body, sym, quantity))
     if isinstance(expr, Neg):
@@ -277,7 +375,8 @@ class ProseText(TextPrinter):
 
     def _print_Fn(self, node: Fn) -> str:
         space = "" if node.name.isidentifier() else " "  # d/dt (H . U)
-        return f"{node.name}{space}({', '.join(self._print(a) for a in node.args)})"
+        sep = ", " if node.sep == "," else node.sep
+        return f"{node.name}{space}({sep.join(self._print(a) for a in node.args)})"
 
     def _print_Total(self, node: Total) -> str:
         body = self._print(node.body)
@@ -285,6 +384,23 @@ class ProseText(TextPrinter):
 
     def _print_Quantity(self, node: Quantity) -> str:
         return node.text
+
+    def _print_Matrix(self, node: Matrix) -> str:
+        rows = ", ".join("[" + ", ".join(x.number for x in row) + "]" for row in node.entries())
+        return f"[{rows}] {UNIT_TEXT.get(node.unit, node.unit)}".rstrip()
+
+    def _print_Prime(self, node: Prime) -> str:
+        body = self._print(node.body)
+        if precedence(node.body, False) < ATOM:
+            body = f"({body})"
+        return body + "'" * node.count
+
+    def _print_Integral(self, node: Integral) -> str:
+        return (f"int_{self._print(node.lower)}^{self._print(node.upper)} "
+                f"{self._print(node.body)}")
+
+    def _print_Bracket(self, node: Bracket) -> str:
+        return f"[{self._print(node.body)}]"
 
 
 def text(expr: Expr) -> str:

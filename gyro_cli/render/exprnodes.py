@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sum, Sym,
-                       Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
+                       Quantity, Rel, Sum, Sym, Tuple)
 
 
 class NodePrinter:
@@ -137,18 +137,40 @@ class NodePrinter:
         if node.name == "d/dt":  # the rate of change of its argument
             arg = self._print(node.args[0])
             return BinOp(" ", BinOp("/", Sym("d"), Sym("dt")), Group("(", arg))
-        return Call(node.name, tuple(self._print(a) for a in node.args))
+        return Call(node.name, tuple(self._print(a) for a in node.args), sep=node.sep)
 
     def _print_Total(self, node: P.Total) -> Node:
         body = self._print(node.body)
         return Sum(Group("(", body) if P.operand_brackets(node, node.body) else body)
 
     def _print_Quantity(self, node: P.Quantity) -> Node:
-        number, _, unit = node.text.partition(" ")
-        shown: Node = Num(number.lstrip("-"))
-        if unit:
-            shown = Quantity(shown, unit)  # type: ignore[arg-type]
-        return Neg(shown) if number.startswith("-") else shown
+        unit = node.text[len(node.number):].strip()
+        number, sign, imag = node.number.partition(" + " if " + " in node.number else " - ")
+        if imag:  # a - b i: the imaginary part carries the unit
+            return BinOp(sign.strip(), _signed(number, ""), _signed(imag[:-2] + "i", unit))
+        return _signed(number, unit)
+
+    def _print_Matrix(self, node: P.Matrix) -> Node:
+        rows = tuple(tuple(_signed(x.number, "") for x in row) for row in node.entries())
+        unit = P.UNIT_TEXT.get(node.unit, node.unit)
+        return Quantity(Matrix(rows), unit) if unit else Matrix(rows)  # type: ignore[arg-type]
+
+    def _print_Prime(self, node: P.Prime) -> Node:
+        return Prime(self._print(node.body), node.count)
+
+    def _print_Integral(self, node: P.Integral) -> Node:
+        return Integral(self._print(node.lower), self._print(node.upper), self._print(node.body))
+
+    def _print_Bracket(self, node: P.Bracket) -> Node:
+        return Group("[", self._print(node.body))
+
+
+def _signed(number: str, unit: str) -> Node:
+    """``-0.5``, ``2.0 kg``: a number as written, its sign a unary minus."""
+    shown: Node = Num(number.lstrip("-"))
+    if unit:
+        shown = Quantity(shown, unit)  # type: ignore[arg-type]
+    return Neg(shown) if number.startswith("-") else shown
 
 
 #: a symbol that is one name: ``phidot``, ``theta_0``, ``F_A,weight`` (a part after a comma)
