@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ADD, ATOM, MUL, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg,
+from .expr import (ADD, ATOM, MUL, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Neg,
                    Sub, Sym, TextPrinter, _node, map_syms, num, precedence)
 
 TYPE_CHECKING = False
@@ -40,19 +40,21 @@ class Typeset(Expr):
 
 
 class Rel(Typeset):
-    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain."""
+    """``first op1 rhs1 op2 rhs2 ...``: an equation or inequality chain; ``first`` None
+    continues the line above (``= a u^3 - ...``) or bounds what the words name (``>> 1``)."""
 
     __slots__ = ("first", "rest")
     binding = 0  # looser than any operator (`expr.precedence`)
 
-    def __init__(self, first: Expr, rest: tuple[tuple[str, Expr], ...]) -> None:
+    def __init__(self, first: Expr | None, rest: tuple[tuple[str, Expr], ...]) -> None:
         for op, _ in rest:
             if op not in RELATIONS:
                 raise ValueError(f"unknown relation {op!r}")
         self.first, self.rest = first, rest
 
     def children(self) -> tuple[Expr, ...]:
-        return (self.first,) + tuple(rhs for _, rhs in self.rest)
+        return ((self.first,) if self.first is not None else ()) + tuple(
+            rhs for _, rhs in self.rest)
 
 
 class Cross(Typeset, BinOp):
@@ -184,16 +186,35 @@ class Integral(Typeset):
 
 
 class Bracket(Typeset):
-    """``[x]``: square brackets the author writes around a long factor."""
+    """``[x]``: brackets the author writes around a long factor (``open`` "[") or a
+    substituted value (``(357.8) u^3``, ``open`` "("); ``[-1, 1]``: around a list."""
 
-    __slots__ = ("body",)
+    __slots__ = ("items", "open")
     binding = ATOM
 
-    def __init__(self, body: Expr) -> None:
-        self.body = body
+    def __init__(self, items: tuple[Expr, ...], open: str = "[") -> None:
+        self.items, self.open = items, open
 
     def children(self) -> tuple[Expr, ...]:
-        return (self.body,)
+        return self.items
+
+
+class Pm(Typeset):
+    """``a +- b``, ``beta -+ gamma``, or ``+-1`` (``left`` None): either sign."""
+
+    __slots__ = ("left", "right", "op")
+
+    def __init__(self, left: Expr | None, right: Expr, op: str = "+-") -> None:
+        if op not in ("+-", "-+"):
+            raise ValueError(f"unknown sign {op!r}")
+        self.left, self.right, self.op = left, right, op
+
+    @property
+    def binding(self) -> int:  # type: ignore[override]
+        return NEG if self.left is None else ADD
+
+    def children(self) -> tuple[Expr, ...]:
+        return ((self.left,) if self.left is not None else ()) + (self.right,)
 
 
 # ---- building -----------------------------------------------------------------
@@ -203,12 +224,12 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
     return tuple(Sym(name, math.nan, unit) for name in text.split())
 
 
-def rel(first: Expr | float, *chain: str | Expr | float) -> Rel:
-    """``rel(a, "=", b, ">=", c)``: a relation chain."""
+def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:
+    """``rel(a, "=", b, ">=", c)``: a relation chain; ``rel(None, "=", b)``: ``= b``."""
     if len(chain) % 2:
         raise ValueError("a relation chain alternates a relation and an expression")
     rest = tuple((str(chain[k]), _node(chain[k + 1])) for k in range(0, len(chain), 2))  # type: ignore[arg-type]
-    return Rel(_node(first), rest)
+    return Rel(None if first is None else _node(first), rest)
 
 
 def cross(a: Expr, b: Expr) -> Cross:
@@ -252,8 +273,14 @@ def integral(lower: Expr | float, upper: Expr | float, body: Expr) -> Integral:
     return Integral(_node(lower), _node(upper), body)
 
 
-def bracket(body: Expr) -> Bracket:
-    return Bracket(body)
+def bracket(*items: Expr | float, open: str = "[") -> Bracket:
+    """``[x]`` (``open="("``: ``(x)``); several items: a list, ``[-1, 1]``."""
+    return Bracket(tuple(_node(x) for x in items), open)
+
+
+def pm(left: Expr | float | None, right: Expr | float, op: str = "+-") -> Pm:
+    """``pm(a, b)``: a +- b; ``pm(None, 1)``: +-1; ``op="-+"``: the other sign first."""
+    return Pm(None if left is None else _node(left), _node(right), op)
 
 
 # ---- a line of prose --------------------------------------------------------------
@@ -307,15 +334,19 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
         unit = shown[0][0].unit if shown and shown[0] else expr.unit
         return Matrix(tuple(tuple(x.si for x in row) for row in shown), unit,
                       shown[0][0].sig if shown and shown[0] else expr.sig)
-    if isinstance(expr, (Prime, Bracket)):
-        return type(expr)(map_values(expr.body, sym, quantity), *(
-            (expr.count,) if isinstance(expr, Prime) else ()))
+    if isinstance(expr, Prime):
+        return Prime(map_values(expr.body, sym, quantity), expr.count)
+    if isinstance(expr, Bracket):
+        return Bracket(tuple(map_values(x, sym, quantity) for x in expr.items), expr.open)
+    if isinstance(expr, Pm):
+        return Pm(None if expr.left is None else map_values(expr.left, sym, quantity),
+                  map_values(expr.right, sym, quantity), expr.op)
     if isinstance(expr, Integral):
         return Integral(map_values(expr.lower, sym, quantity),
                         map_values(expr.upper, sym, quantity),
                         map_values(expr.body, sym, quantity))
     if isinstance(expr, Rel):
-        return Rel(map_values(expr.first, sym, quantity),
+        return Rel(None if expr.first is None else map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
     if isinstance(expr, (Cross, Dot)):
         return type(expr)(map_values(expr.left, sym, quantity),
@@ -354,8 +385,8 @@ class ProseText(TextPrinter):
     """The plain text of a sentence's maths: symbols by name, quantities by value."""
 
     def _print_Rel(self, node: Rel) -> str:
-        return " ".join([self._print(node.first)] + [f"{op} {self._print(rhs)}"
-                                                      for op, rhs in node.rest])
+        first = [self._print(node.first)] if node.first is not None else []
+        return " ".join(first + [f"{op} {self._print(rhs)}" for op, rhs in node.rest])
 
     def _vector(self, node: BinOp) -> str:
         parts = []
@@ -400,7 +431,17 @@ class ProseText(TextPrinter):
                 f"{self._print(node.body)}")
 
     def _print_Bracket(self, node: Bracket) -> str:
-        return f"[{self._print(node.body)}]"
+        inner = ", ".join(self._print(x) for x in node.items)
+        return f"[{inner}]" if node.open == "[" else f"({inner})"
+
+    def _print_Pm(self, node: Pm) -> str:
+        right = self._print(node.right)
+        if precedence(node.right, False) <= ADD:
+            right = f"({right})"
+        if node.left is None:
+            return node.op + right
+        left = self._print(node.left)
+        return f"{left} {node.op} {right}"
 
 
 def text(expr: Expr) -> str:

@@ -114,7 +114,8 @@ class NodePrinter:
     # ---- the typeset-only nodes of sentences (core/prose.py)
 
     def _print_Rel(self, node: P.Rel) -> Node:
-        return Rel(self._print(node.first), tuple((op, self._print(rhs))
+        first = None if node.first is None else self._print(node.first)
+        return Rel(first, tuple((op, self._print(rhs))
                                                    for op, rhs in node.rest))
 
     def _vector(self, node: E.BinOp) -> Node:
@@ -162,7 +163,16 @@ class NodePrinter:
         return Integral(self._print(node.lower), self._print(node.upper), self._print(node.body))
 
     def _print_Bracket(self, node: P.Bracket) -> Node:
-        return Group("[", self._print(node.body))
+        items = tuple(self._print(x) for x in node.items)
+        return Group(node.open, items[0] if len(items) == 1 else Tuple(items))
+
+    def _print_Pm(self, node: P.Pm) -> Node:
+        right = self._print(node.right)
+        if E.precedence(node.right, False) <= E.ADD:
+            right = Group("(", right)
+        if node.left is None:
+            return Neg(right, sign=node.op)
+        return BinOp(node.op, self._print(node.left), right)
 
 
 def _signed(number: str, unit: str) -> Node:
