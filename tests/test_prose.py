@@ -11,8 +11,8 @@ import pytest
 
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import PI, Sym, cos, sin
-from gyro_cli.core.prose import (Prose, bracket, cross, dot, fn, integral, matrix, names, prime, q,
-                                 rel, total, tup)
+from gyro_cli.core.prose import (Prose, bracket, cross, dot, fn, integral, matrix, names, pm,
+                                 prime, q, rel, total, tup)
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
 from gyro_cli.render.mathparse import spans
@@ -74,6 +74,21 @@ def test_matrices_primes_integrals_brackets_and_eigenvalues():
     assert Prose((eig,)).text == "s = -0.500000 - 4.25000 i 1/s"
     assert tex(eig) == r"s = -0.500000 - 4.25000\,\mathrm{i}\,\mathrm{1/s}"
     assert Prose((q(4.29238253634111, "m/s", sig=12),)).text == "4.29238253634 m/s"
+
+
+def test_either_sign_a_continued_relation_and_a_bracketed_list():
+    from gyro_cli.render.exprnodes import NodePrinter
+    from gyro_cli.render.mathprint import LatexPrinter
+
+    b, g, f = names("beta gamma f")
+    line = rel(fn("f", pm(None, 1)), "=", -pm(b, g, "-+") ** 2, "<=", 0)
+    assert Prose((line,)).text == "f(+-1) = -(beta -+ gamma)^2 <= 0"
+    assert r"f(\pm 1)" in LatexPrinter(False).doprint(NodePrinter().doprint(line))
+    assert r"\beta \mp \gamma" in LatexPrinter(False).doprint(NodePrinter().doprint(line))
+    assert Prose(("       ", rel(None, "=", b + g))).equation() is not None
+    assert Prose((rel(None, ">>", 1),)).text == ">> 1"
+    assert Prose((bracket(-1, 1),)).text == "[-1, 1]"
+    assert Prose((bracket(q(357.8, "1/s^2"), open="(") * g,)).text == "(357.8 1/s^2) gamma"
 
 
 def test_us_units_convert_a_matrix_and_keep_the_figures_of_a_unit_both_systems_share():
