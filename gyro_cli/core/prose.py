@@ -20,9 +20,9 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ATOM, MUL, NEG, SHOWN, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let, Mul, Neg,
-                   Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num, precedence,
-                   quantity_text)
+from .expr import (ADD, ATOM, MUL, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let,
+                   Mul, Neg, Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num,
+                   precedence)
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -93,10 +93,10 @@ class Tup(Typeset):
 class Fn(Typeset):
     """``name(args)`` for a function known by its name only: ``f(u)``, ``R_z(psi)``."""
 
-    __slots__ = ("name", "args")
+    __slots__ = ("name", "args", "sep")
 
-    def __init__(self, name: str, args: tuple[Expr, ...]) -> None:
-        self.name, self.args = name, args
+    def __init__(self, name: str, args: tuple[Expr, ...], sep: str = ",") -> None:
+        self.name, self.args, self.sep = name, args, sep  # sep "|": Pi(n|m)
 
     def children(self) -> tuple[Expr, ...]:
         return self.args
@@ -156,26 +156,99 @@ class Mat(Typeset):
 
 class Quantity(Typeset):
     """A value with its unit, printed as such in the formula too: ``0.0001280 N m``
-    (SI value; ``deg`` shows radians in degrees, as a `Sym` does)."""
+    (SI value; ``deg`` shows radians in degrees, as a `Sym` does). ``sig``: the
+    significant figures shown (a number the reader compares to many digits); a
+    complex value is written ``a - b i`` (an eigenvalue)."""
 
-    __slots__ = ("si", "unit", "exact", "label")
+    __slots__ = ("si", "unit", "exact", "label", "sig")
 
-    def __init__(self, si: float, unit: str = "", exact: bool = False, label: str = "") -> None:
-        self.si, self.unit, self.exact, self.label = si, unit, exact, label
+    def __init__(self, si: float | complex, unit: str = "", exact: bool = False,
+                 label: str = "", sig: int = SIG) -> None:
+        self.si, self.unit, self.exact, self.label, self.sig = si, unit, exact, label, sig
+
+    @property
+    def number(self) -> str:
+        """The value as written, without its unit: ``-0.7753 - 4.465 i``; a label as the
+        source gives it (0.003273795, 6.6743e-11)."""
+        if self.label:
+            return self.label
+        if isinstance(self.si, complex):
+            re, im = self.si.real, self.si.imag
+            return num(re, self.sig) + (f" {'-' if im < 0 else '+'} {num(abs(im), self.sig)} i"
+                                        if im else "")
+        shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
+        return f"{round(shown, 9):g}" if self.exact else num(shown, self.sig)
 
     @property
     def text(self) -> str:
         """``0.0001280 N m``; an exact quantity as few digits as it needs (``180 deg``)."""
-        if self.label:  # the number as a source gives it: 0.003273795, 6.6743e-11
-            return f"{self.label} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
-        if not self.exact:
-            return quantity_text(self.si, self.unit)
-        shown = self.si / SHOWN[self.unit][0] if self.unit in SHOWN else self.si
-        return f"{round(shown, 9):g} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
+        return f"{self.number} {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
 
     @property
     def binding(self) -> int:  # type: ignore[override]
-        return MUL if self.unit or self.si < 0 else ATOM
+        if isinstance(self.si, complex) and self.si.imag:
+            return ADD
+        return MUL if self.unit or self.si.real < 0 else ATOM
+
+
+class Matrix(Typeset):
+    """``[[a, b], [c, d]] unit``: a matrix of values with one unit (SI), ``sig`` figures."""
+
+    __slots__ = ("rows", "unit", "sig")
+    binding = MUL
+
+    def __init__(self, rows: tuple[tuple[float, ...], ...], unit: str = "",
+                 sig: int = SIG) -> None:
+        self.rows, self.unit, self.sig = rows, unit, sig
+
+    def entries(self) -> tuple[tuple[Quantity, ...], ...]:
+        """Each entry as a quantity without the unit, as printed."""
+        return tuple(tuple(Quantity(x, "", sig=self.sig) for x in row) for row in self.rows)
+
+
+class Integral(Typeset):
+    """``int_a^b body``: a definite integral (the body holds its differential)."""
+
+    __slots__ = ("lower", "upper", "body")
+    binding = ATOM  # written last in its product: 2 int_a^b du / sqrt(f(u))
+
+    def __init__(self, lower: Expr, upper: Expr, body: Expr) -> None:
+        self.lower, self.upper, self.body = lower, upper, body
+
+    def children(self) -> tuple[Expr, ...]:
+        return (self.lower, self.upper, self.body)
+
+
+class Bracket(Typeset):
+    """``[x]``: brackets the author writes around a long factor (``open`` "[") or a
+    substituted value (``(357.8) u^3``, ``open`` "("); ``[-1, 1]``: around a list."""
+
+    __slots__ = ("items", "open")
+    binding = ATOM
+
+    def __init__(self, items: tuple[Expr, ...], open: str = "[") -> None:
+        self.items, self.open = items, open
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.items
+
+
+class Pm(Typeset):
+    """``a +- b``, ``beta -+ gamma``, or ``+-1`` (``left`` None): either sign."""
+
+    __slots__ = ("left", "right", "op")
+
+    def __init__(self, left: Expr | None, right: Expr, op: str = "+-") -> None:
+        if op not in ("+-", "-+"):
+            raise ValueError(f"unknown sign {op!r}")
+        self.left, self.right, self.op = left, right, op
+
+    @property
+    def binding(self) -> int:  # type: ignore[override]
+        return NEG if self.left is None else ADD
+
+    def children(self) -> tuple[Expr, ...]:
+        return ((self.left,) if self.left is not None else ()) + (self.right,)
 
 
 class Vector(Typeset):
@@ -264,8 +337,9 @@ def tup(*items: Expr | float) -> Tup:
     return Tup(tuple(_node(x) for x in items))
 
 
-def fn(name: str, *args: Expr | float) -> Fn:
-    return Fn(name, tuple(_node(a) for a in args))
+def fn(name: str, *args: Expr | float, sep: str = ",") -> Fn:
+    """``fn("f", u)``: f(u); ``sep="|"`` for a parameter after a bar, ``Pi(n|m)``."""
+    return Fn(name, tuple(_node(a) for a in args), sep)
 
 
 def total(body: Expr) -> Total:
@@ -312,11 +386,32 @@ def mat(*rows) -> Mat:
     return Mat(tuple(tuple(_node(x) for x in row) for row in rows))
 
 
-def q(si: float, unit: str = "", exact: bool = False, label: str = "") -> Quantity:
+def q(si: float | complex, unit: str = "", exact: bool = False, label: str = "",
+      sig: int = SIG) -> Quantity:
     """A value with its unit inside a sentence (SI value); ``exact``: a number of the
     text such as 180 deg, printed with the digits it needs, not to 4 figures; ``label``:
-    the number as its source writes it (``"0.003273795"``), all its digits."""
-    return Quantity(si, unit, exact, label)
+    the number as its source writes it (``"0.003273795"``), all its digits; ``sig``: the
+    figures shown where the text compares many (an eigenvalue to 12)."""
+    return Quantity(si, unit, exact, label, sig)
+
+
+def matrix(rows, unit: str = "", sig: int = SIG) -> Matrix:
+    """A matrix of SI values with its unit: ``matrix(M, "kg m^2", sig=10)``."""
+    return Matrix(tuple(tuple(float(x) + 0.0 for x in row) for row in rows), unit, sig)
+
+
+def integral(lower: Expr | float, upper: Expr | float, body: Expr) -> Integral:
+    return Integral(_node(lower), _node(upper), body)
+
+
+def bracket(*items: Expr | float, open: str = "[") -> Bracket:
+    """``[x]`` (``open="("``: ``(x)``); several items: a list, ``[-1, 1]``."""
+    return Bracket(tuple(_node(x) for x in items), open)
+
+
+def pm(left: Expr | float | None, right: Expr | float, op: str = "+-") -> Pm:
+    """``pm(a, b)``: a +- b; ``pm(None, 1)``: +-1; ``op="-+"``: the other sign first."""
+    return Pm(None if left is None else _node(left), _node(right), op)
 
 
 # ---- a line of prose --------------------------------------------------------------
@@ -372,6 +467,21 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, (Paren, Prime)):
         changed = map_values(expr.arg, sym, quantity)
         return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
+    if isinstance(expr, Matrix):
+        shown = [[quantity(Quantity(x, expr.unit, sig=expr.sig)) for x in row]
+                 for row in expr.rows]
+        unit = shown[0][0].unit if shown and shown[0] else expr.unit
+        return Matrix(tuple(tuple(x.si for x in row) for row in shown), unit,
+                      shown[0][0].sig if shown and shown[0] else expr.sig)
+    if isinstance(expr, Bracket):
+        return Bracket(tuple(map_values(x, sym, quantity) for x in expr.items), expr.open)
+    if isinstance(expr, Pm):
+        return Pm(None if expr.left is None else map_values(expr.left, sym, quantity),
+                  map_values(expr.right, sym, quantity), expr.op)
+    if isinstance(expr, Integral):
+        return Integral(map_values(expr.lower, sym, quantity),
+                        map_values(expr.upper, sym, quantity),
+                        map_values(expr.body, sym, quantity))
     if isinstance(expr, Rel):
         return Rel(None if expr.first is None else map_values(expr.first, sym, quantity),
                    tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
@@ -381,7 +491,7 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, Tup):
         return Tup(tuple(map_values(x, sym, quantity) for x in expr.items))
     if isinstance(expr, Fn):
-        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args))
+        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args), expr.sep)
     if isinstance(expr, Total):
         return Total(map_values(expr.body, sym, quantity))
     if isinstance(expr, Sign):
@@ -449,7 +559,8 @@ class ProseText(TextPrinter):
 
     def _print_Fn(self, node: Fn) -> str:
         space = "" if node.name.isidentifier() else " "  # d/dt (H . U)
-        return f"{node.name}{space}({', '.join(self._print(a) for a in node.args)})"
+        sep = ", " if node.sep == "," else node.sep
+        return f"{node.name}{space}({sep.join(self._print(a) for a in node.args)})"
 
     def _print_Total(self, node: Total) -> str:
         body = self._print(node.body)
@@ -477,8 +588,30 @@ class ProseText(TextPrinter):
     def _print_Prime(self, node: Prime) -> str:
         inner = self._print(node.arg)
         return (f"({inner})" if precedence(node.arg, False) < ATOM else inner) + "'" * node.count
+
     def _print_Mat(self, node: Mat) -> str:
         return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
+
+    def _print_Matrix(self, node: Matrix) -> str:
+        rows = ", ".join("[" + ", ".join(x.number for x in row) + "]" for row in node.entries())
+        return f"[{rows}] {UNIT_TEXT.get(node.unit, node.unit)}".rstrip()
+
+    def _print_Integral(self, node: Integral) -> str:
+        return (f"int_{self._print(node.lower)}^{self._print(node.upper)} "
+                f"{self._print(node.body)}")
+
+    def _print_Bracket(self, node: Bracket) -> str:
+        inner = ", ".join(self._print(x) for x in node.items)
+        return f"[{inner}]" if node.open == "[" else f"({inner})"
+
+    def _print_Pm(self, node: Pm) -> str:
+        right = self._print(node.right)
+        if precedence(node.right, False) <= ADD:
+            right = f"({right})"
+        if node.left is None:
+            return node.op + right
+        left = self._print(node.left)
+        return f"{left} {node.op} {right}"
 
 
 def text(expr: Expr) -> str:

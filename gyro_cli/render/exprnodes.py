@@ -14,8 +14,8 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Matrix, Neg, Node, Num, Pow, Prime, Quantity,
-                       Rel, Sum, Sym, Text, Tuple)
+from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
+                       Quantity, Rel, Sum, Sym, Text, Tuple)
 
 
 class NodePrinter:
@@ -148,7 +148,7 @@ class NodePrinter:
         if node.name == "d/dt":  # the rate of change of its argument
             arg = self._print(node.args[0])
             return BinOp(" ", BinOp("/", Sym("d"), Sym("dt")), Group("(", arg))
-        return Call(node.name, tuple(self._print(a) for a in node.args))
+        return Call(node.name, tuple(self._print(a) for a in node.args), sep=node.sep)
 
     def _print_Total(self, node: P.Total) -> Node:
         body = self._print(node.body)
@@ -164,11 +164,32 @@ class NodePrinter:
         return BinOp("/", top, Sym("d" + node.var))  # d theta/dt, dH/dt
 
     def _print_Quantity(self, node: P.Quantity) -> Node:
-        number, _, unit = node.text.partition(" ")
-        shown: Node = Num(number.lstrip("-"))
-        if unit:
-            shown = Quantity(shown, unit)  # type: ignore[arg-type]
-        return Neg(shown) if number.startswith("-") else shown
+        unit = node.text[len(node.number):].strip()
+        number, sign, imag = node.number.partition(" + " if " + " in node.number else " - ")
+        if imag:  # a - b i: the imaginary part carries the unit
+            return BinOp(sign.strip(), _signed(number, ""), _signed(imag[:-2] + "i", unit))
+        return _signed(number, unit)
+
+    def _print_Matrix(self, node: P.Matrix) -> Node:
+        rows = tuple(tuple(_signed(x.number, "") for x in row) for row in node.entries())
+        unit = P.UNIT_TEXT.get(node.unit, node.unit)
+        return Quantity(Matrix(rows), unit) if unit else Matrix(rows)  # type: ignore[arg-type]
+
+    def _print_Integral(self, node: P.Integral) -> Node:
+        return Integral(self._print(node.lower), self._print(node.upper), self._print(node.body))
+
+    def _print_Bracket(self, node: P.Bracket) -> Node:
+        items = tuple(self._print(x) for x in node.items)
+        return Group(node.open, items[0] if len(items) == 1 else Tuple(items))
+
+    def _print_Pm(self, node: P.Pm) -> Node:
+        right = self._print(node.right)
+        if E.precedence(node.right, False) <= E.ADD:
+            right = Group("(", right)
+        if node.left is None:
+            return Neg(right, sign=node.op)
+        return BinOp(node.op, self._print(node.left), right)
+
 
     def _print_Vector(self, node: P.Vector) -> Node:
         items = tuple(Neg(Num(n[1:])) if n.startswith("-") else Num(n) for n in node.numbers)
@@ -186,6 +207,7 @@ class NodePrinter:
 
     def _print_Prime(self, node: P.Prime) -> Node:
         return Prime(self._print(node.arg), node.count)
+
     def _print_Mat(self, node: P.Mat) -> Node:
         return Matrix(tuple(tuple(self._print(x) for x in row) for row in node.rows))
 
@@ -223,3 +245,11 @@ def latex(expr: E.Expr, values: bool = False) -> str:
     from .mathprint import LatexPrinter
 
     return LatexPrinter(True).doprint(NodePrinter(values).doprint(expr))
+
+
+def _signed(number: str, unit: str) -> Node:
+    """``-0.5``, ``2.0 kg``: a number as written, its sign a unary minus."""
+    shown: Node = Num(number.lstrip("-"))
+    if unit:
+        shown = Quantity(shown, unit)  # type: ignore[arg-type]
+    return Neg(shown) if number.startswith("-") else shown
