@@ -18,8 +18,8 @@ from ..core.given import Given
 from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
-from ..core.prose import names, q, rel, tup, words
-from ..core.work import Work, qty
+from ..core.prose import Prose, names, q, rel, tup, words
+from ..core.work import Work
 
 
 WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
@@ -92,7 +92,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.text(*books)
         for line in work.given:
             if line.key == "spin":
-                line.note = f"a magnitude: psidot = {qty(known['spin'], 'rad/s')} ({sense})"
+                note = Prose(("a magnitude: ", rel(*names("psidot"), "=",
+                                                    q(known["spin"], "rad/s")), f" ({sense})"))
+                line.note, line.note_prose = note.text, note
     _route(J, I, known, state, work)
     _results(J, I, state, work, magnitude=sense is not None)
 

@@ -378,6 +378,14 @@ def prose_latex(prose, markdown: bool = False) -> str:
     return "".join(out)
 
 
+def _given_cell(g, markdown: bool) -> str:
+    """The datum as written, and its note (words, or words and trees)."""
+    prose = getattr(g, "note_prose", None)
+    if prose is not None:
+        return _prose(_given_text(g), markdown) + " (" + prose_latex(prose, markdown) + ")"
+    return _prose(_given_text(g) + (f" ({g.note})" if g.note else ""), markdown)
+
+
 def _title(section, markdown: bool) -> str:
     prose = getattr(section, "prose", None)
     return _prose(section.title, markdown) if prose is None else prose_latex(prose, markdown)
@@ -495,9 +503,8 @@ def _markdown(result: Result) -> str:
         lines += [f"> {_prose(note, True)}", ""]
     lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
         lines.append(f"| ${math(g.symbol, units=False)}$ | "
-                     f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
+                     f"{_md_cell(_given_cell(g, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_title(section, True)}", ""]
         lines += _steps(section.steps, True)
@@ -552,8 +559,7 @@ def _latex(result: Result, level: str) -> str:
     lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
-        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${math(g.symbol, units=False)}$ & {_given_cell(g, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]
