@@ -27,7 +27,7 @@ PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 TREE_KINDS = {"aeroplane", "bicycle", "gyrocompass", "gyro_drift", "earth_precession",
               "released_top", "steady_precession", "torque_free", "rate_gyro", "ship",
               "two_wheeler", "four_wheeler", "rolling_disk", "gyroscopic_torque",
-              "swinging_rotor"}
+              "swinging_rotor", "euler_angles"}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
@@ -373,18 +373,13 @@ def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
         assert {"theta", "S", "omega_n", "f_n", "zeta"} <= set(steps)
 
 
-#: euler_angles steps still text: the particle sums of Eq. 11.3 and the angle between
-#: omega and H (vector products) have no tree yet, and the principal moments no value
-EULER_TEXT = {"I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx", "principal moments",
-              "angle(omega, H)"}
-
-
 @pytest.mark.parametrize("name", sorted(p.name for p in PROBLEMS if p.name.startswith("euler"))
                          + ["template"])
 def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
     """Eq. 11.8 both ways, the fixed-frame rates (R omega), T and H from the step trees
     against physics/euler_kinematics.py, which works with exact zeros, matrices and dot
-    products; every other equation step is a tree."""
+    products; every equation step is a tree: the particle sums of Eq. 11.3 over each
+    particle's m, x, y, z, the angle between omega and H as atan2 of the components."""
     from gyro_cli.physics import euler_kinematics as ek
 
     path = ROOT / "problems" / name
@@ -394,7 +389,7 @@ def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
     result = solve_file(str(path))
     for section in report.as_dict(result)["steps"]:
         for eq in section["equations"]:
-            assert eq["expr"] is not None or eq["symbol"] in EULER_TEXT, eq
+            assert eq["expr"] is not None, eq
     steps, v = _tree_steps(path)
     answers = {k: a.si_values for k, a in result.answers.items()}
     zyx = "yaw" in v or "pitch" in v
@@ -427,6 +422,15 @@ def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
             assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
         assert steps["|H|"].value == pytest.approx(ek.norm(H), rel=1e-12)
         assert answers["kinetic_energy"][0] == pytest.approx(steps["T"].value, rel=1e-12)
+        if "angle(omega, H)" in steps:
+            assert steps["angle(omega, H)"].si[0] == pytest.approx(
+                ek.angle_between(omega, H), rel=1e-12, abs=1e-15)
+    if "m_0" in v:  # particles: the sums of Eq. 11.3 against physics' own
+        particles = [(v[f"m_{i}"], v[f"x_{i}"], v[f"y_{i}"], v[f"z_{i}"])
+                     for i in range(len([k for k in v if k.startswith("m_")]))]
+        for sym, value in zip(("I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx"),
+                              ek.inertia_from_particles(particles)):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
 
 
 SHIP = """\
@@ -901,12 +905,12 @@ def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
     v = _released_top_data(result)
     m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
     th0, th = v["theta0"], v["theta"]
-    J, I_G = v["J"], v["I_G"]
+    J, I_G = v["J"], by["I_G"].value
     a = v["a/d"] * d
     f = K.swing_forces(m, g, J, I_G, p, L, d, a, th0, th)
     I_O = I_G + m * L * L
     assert by["I_O"].value == pytest.approx(I_O, rel=1e-12)
-    for symbol, expected in (("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
+    for symbol, expected in (("I_O", I_O), ("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
                              ("thetaddot", K.swing_acceleration(m, g, L, I_O, th))):
         chain = by[symbol].expr
         assert isinstance(chain, E.Chain) and len(chain.forms) == 2

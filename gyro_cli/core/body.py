@@ -14,6 +14,7 @@ from typing import Callable
 from .errors import InputError
 from .params import Param
 from .expr import Expr, Sym
+from .prose import names
 from .work import Work, qty
 
 G_SI = 9.81         # m/s^2, the format's default
@@ -305,14 +306,17 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
         if shape == "cone" and "height" not in values:
             raise InputError("a cone needs its height", key="given.height")
         spec, dims = SHAPES[shape], _dimensions(values, r)
-        what = {"cylinder": "cylinder of length L", "cone": "cone of height h",
-                "shell": "thin tube of length L", "rod": "rod of length L",
-                "box": "box of square section w and length L",
-                "annulus": "annulus of length L"}.get(shape, shape.replace("_", " "))
+        L, h, w = names("L h w")  # the shape's dimensions, as its formula names them
+        what: tuple = {"cylinder": ("cylinder of length ", L), "cone": ("cone of height ", h),
+                       "shell": ("thin tube of length ", L), "rod": ("rod of length ", L),
+                       "box": ("box of square section ", w, " and length ", L),
+                       "annulus": ("annulus of length ", L)}.get(shape,
+                                                                 (shape.replace("_", " "),))
         if shape in ("cylinder", "annulus") and "length" not in values:
-            what = f"{shape}; its length L not given, taken as 0"
+            what = (f"{shape}; its length ", L, " not given, taken as 0")
+        note = ("(", *what, ", about its centre of mass)")
         return work.step("I_G", spec.I_G(Sym("m", m, "kg"), dims), unit="kg*m^2",
-                         note=f"({what}, about its centre of mass)")
+                         note=note if len(what) > 1 else "".join(note))
     return None
 
 

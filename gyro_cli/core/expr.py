@@ -330,6 +330,33 @@ class Chain(Expr):
         return self.forms
 
 
+class SumOf(Expr):
+    """``sum m (y^2 + z^2)``: a sum over the particles of a body (Eq. 11.3). The formula
+    prints ``body`` (over the symbols by name, with no value); the value, the substitution
+    and ``expr`` are the sum of ``terms``, one per particle (``m_0 (y_0^2 + z_0^2) + ...``)."""
+
+    __slots__ = ("body", "terms")
+
+    def __init__(self, body: Expr, terms: "tuple[Expr, ...]") -> None:
+        if not terms:
+            raise ValueError("a sum over particles needs one term or more")
+        self.body, self.terms = body, tuple(_node(t) for t in terms)
+
+    @property
+    def value(self) -> float:
+        return math.fsum(t.value for t in self.terms)
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.terms
+
+    def expanded(self) -> Expr:
+        """The terms as one sum, left to right."""
+        out = self.terms[0]
+        for term in self.terms[1:]:
+            out = Add(out, term)
+        return out
+
+
 def _call(name: str) -> Callable[..., Expr]:
     def build(*args: "Expr | float") -> Expr:
         return Call(name, tuple(_node(a) for a in args))
@@ -377,6 +404,8 @@ def map_syms(expr: Expr, change: Callable[[Sym], Sym]) -> Expr:
         return Call(expr.name, tuple(map_syms(a, change) for a in expr.args))
     if isinstance(expr, Chain):
         return Chain(*(map_syms(f, change) for f in expr.forms))
+    if isinstance(expr, SumOf):
+        return SumOf(expr.body, tuple(map_syms(t, change) for t in expr.terms))
     return expr
 
 
@@ -399,6 +428,8 @@ def precedence(node: Expr, values: bool) -> int:
         return ADD
     if isinstance(node, (Mul, Div)):
         return MUL
+    if isinstance(node, SumOf):
+        return ADD if values else MUL  # the terms added; sum m x y binds as a product
     if isinstance(node, Neg):
         return NEG
     if isinstance(node, Pow):
@@ -454,7 +485,8 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
         return c < ATOM or isinstance(node, (Pow,)) if not right else c < ATOM
     if isinstance(parent, Neg):
         # -(-2.000 rad/s sin(x)): a product or quotient printed with a leading minus
-        return c < MUL or c == NEG or leading_negative(node, values)
+        return c < MUL or c == NEG or leading_negative(node, values) or \
+            getattr(node, "bracket_after_sign", False)  # -(omega_p x H)
     return False
 
 
@@ -541,6 +573,12 @@ class TextPrinter(Printer):
             return self._print(node.forms[-1])
         return " = ".join(self._print(f) for f in node.forms)
 
+    def _print_SumOf(self, node: SumOf) -> str:
+        if self.values:
+            return self._print(node.expanded())
+        body = self._print(node.body)
+        return "sum " + (f"({body})" if precedence(node.body, False) <= ADD else body)
+
     def _sum(self, node: BinOp, op: str) -> str:
         left = self.operand(node, node.left)
         right = self.operand(node, node.right, right=True)
@@ -621,6 +659,9 @@ class PythonPrinter(Printer):
 
     def _print_Chain(self, node: Chain) -> str:
         return self._print(node.forms[-1])
+
+    def _print_SumOf(self, node: SumOf) -> str:
+        return f"({self._print(node.expanded())})"
 
 
 def python_name(name: str) -> str:

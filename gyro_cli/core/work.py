@@ -103,6 +103,7 @@ class GivenLine:
     si_value: float | str
     si_unit: str
     note: str = ""
+    note_prose: Prose | None = None  # a note written as words and trees
 
 
 @dataclass

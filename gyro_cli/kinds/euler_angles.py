@@ -20,7 +20,9 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import euler_kinematics as ek
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import Expr, Let, Num, Sym, cos, sin, sqrt
+from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
+from ..core.prose import dot, fn, mat, names, prime, rel, total, tup, words
+from ..core.prose import q as qv
 from ..core.work import Work, num, qty
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
@@ -70,10 +72,6 @@ def _deg(x: float) -> str:
     return f"{num(math.degrees(x))} deg"
 
 
-def _rate(x: float) -> str:
-    return qty(x, "rad/s")
-
-
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _drop_empty_body_section(work)
     sequence = given.word("sequence", "zxz")
@@ -92,8 +90,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if find and find <= INERTIA_ONLY and not any(k in given for k in (second, third)):
         # the inertia tensor needs no angles (Eq. 11.3): answer it alone
         work.section("Conventions")
-        work.text("x, y, z: the body axes through the fixed point, about which the moments and "
-                  "products of inertia are taken; no angle or rate is needed for them")
+        x, y, z = names("x y z")
+        work.text(x, ", ", y, ", ", z, ": the body axes through the fixed point, about which "
+                  "the moments and products of inertia are taken; no angle or rate is needed "
+                  "for them")
         if _inertia(given, find, work) is None:
             raise InputError(f"{sorted(find)[0]} needs the body's inertia: give particles, "
                              "I_x, I_y, I_z, or I and J", key="given.particles")
@@ -109,21 +109,29 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section("Conventions")
     if sequence == "zxz":
-        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
-                  "K, then by theta about the line of nodes i' = i'', then by psi about the "
-                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed "
-                  "frame are the "
-                  "columns of R = Rz(phi) Rx(theta) Rz(psi). phidot, thetadot, psidot: the "
-                  "rates of phi, theta, psi.")
+        I, J, K, i, j, k, x, y, z, ph, th, ps, phd, thd, psd = \
+            names("I J K i j k x y z phi theta psi phidot thetadot psidot")
+        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {", I, ", ", J, ", ",
+                  K, "} by ", ph, " about ", K, ", then by ", th, " about the line of nodes ",
+                  rel(prime(i), "=", prime(i, 2)), ", then by ", ps, " about the body's ", k,
+                  "; ", i, ", ", j, ", ", k, ": the body axes, along ", x, ", ", y, ", ", z,
+                  ". The body axes in the fixed frame are the columns of ",
+                  rel(names("R")[0], "=", fn("Rz", ph) * fn("Rx", th) * fn("Rz", ps)), ". ",
+                  phd, ", ", thd, ", ", psd, ": the rates of ", ph, ", ", th, ", ", ps, ".")
     else:
+        X, Y, Z, x, y, z, yaw, pitch, roll, p, q_, r, wx, wy, wz, w = names(
+            "X Y Z x y z yaw pitch roll p q r omega_x omega_y omega_z omega")
         work.text("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
-                  "the fixed frame X, Y, Z by the yaw angle about Z, then by the pitch angle "
-                  "about the new y, then by the roll angle about the body's x. "
-                  "R = Rz(yaw) Ry(pitch) Rx(roll); yawdot, pitchdot, rolldot: the rates of "
-                  "the three angles; p, q, r: the components of omega along the body's x, y, z, "
-                  "also written omega_x, omega_y, omega_z.")
-    work.text("omega: the body's angular velocity relative to the fixed frame; the origin is the "
-              "fixed point, about which the moments of inertia are taken.")
+                  "the fixed frame ", X, ", ", Y, ", ", Z, " by the yaw angle about ", Z,
+                  ", then by the pitch angle about the new ", y, ", then by the roll angle "
+                  "about the body's ", x, ". ",
+                  rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll)),
+                  "; ", *names("yawdot"), ", ", *names("pitchdot"), ", ", *names("rolldot"),
+                  ": the rates of the three angles; ", p, ", ", q_, ", ", r, ": the components "
+                  "of ", w, " along the body's ", x, ", ", y, ", ", z, ", also written ", wx,
+                  ", ", wy, ", ", wz, ".")
+    work.text(*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
+              "origin is the fixed point, about which the moments of inertia are taken.")
 
     omega, rates = _angular_velocity(given, find, sequence, a2, a3, work)
     if a1 is not None:
@@ -139,10 +147,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError(f"{asked[0]} (a fixed-frame component) depends on the first angle: "
                              f"give {first}", key=f"given.{first}")
     wx, wy, wz = (_sym(n, v) for n, v in zip(("omega_x", "omega_y", "omega_z"), omega))
-    work.step("|omega|", sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
+    wabs = absolute(names("omega")[0])
+    work.step(wabs, sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
     for name, value in zip(("omega_x", "omega_y", "omega_z"), omega):
         work.answer(name, name, [value], "rate")
-    work.answer("omega", "|omega|", [ek.norm(omega)], "rate")
+    work.answer("omega", wabs, [ek.norm(omega)], "rate")
     for name, value in zip((first, second, third), rates):
         work.answer(f"{name}_rate", f"{SYMBOLS[name]}dot", [value], "rate")
 
@@ -194,8 +203,12 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         if missing:
             work.text(f"not given, taken as zero: {', '.join(missing)}")
         if sequence == "zxz":
-            work.text("omega = phidot K + thetadot i'' + psidot k  (Eq. 11.5), with "
-                      "i'' = cos(psi) i - sin(psi) j, K = cos(theta) k + sin(theta) j'' (Eq. 11.6)")
+            w, phd, thd, psd, K, i, j, k, ps, th = names(
+                "omega phidot thetadot psidot K i j k psi theta")
+            i2, j2 = prime(i, 2), prime(j, 2)
+            work.text(rel(w, "=", phd * K + thd * i2 + psd * k), "  (Eq. 11.5), with ",
+                      rel(i2, "=", cos(ps) * i - sin(ps) * j), ", ",
+                      rel(K, "=", cos(th) * k + sin(th) * j2), " (Eq. 11.6)")
             omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
             th, ps = _sym("theta", a2), _sym("psi", a3)
             p1, p2, p3 = _sym("phidot", r1), _sym("thetadot", r2), _sym("psidot", r3)
@@ -205,7 +218,9 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                       ref="Eq. 11.8")
             work.step("omega_z", p1 * _cos(th) + p3, unit="rad/s", ref="Eq. 11.8")
         else:
-            work.text("omega = yawdot Z + pitchdot y' + rolldot x (each rate about its own axis)")
+            w, yd, pd, rd, Z, y, x = names("omega yawdot pitchdot rolldot Z y x")
+            work.text(rel(w, "=", yd * Z + pd * prime(y) + rd * x),
+                      " (each rate about its own axis)")
             omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
             pi_, ro = _sym("pitch", a2), _sym("roll", a3)
             y1, y2, y3 = _sym("yawdot", r1), _sym("pitchdot", r2), _sym("rolldot", r3)
@@ -214,8 +229,11 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
             work.step("r", -y2 * _sin(ro) + y1 * _cos(pi_) * _cos(ro), unit="rad/s")
         back = _inverse(sequence, a2, a3, omega, raise_singular=False)
         if back is not None:
-            work.check("the inverse of Eq. 11.8 gives back the rates: " + ", ".join(
-                f"{k} = {_rate(v)}" for k, v in zip(rate_keys, back)))
+            dots = names(" ".join(f"{SYMBOLS[k]}dot" for k in (first, second, third)))
+            pieces: list = ["the inverse of Eq. 11.8 gives back the rates: "]
+            for n, (sym, v) in enumerate(zip(dots, back)):
+                pieces += [", "] * bool(n) + [rel(sym, "=", qv(v, "rad/s"))]
+            work.check(*pieces)
         return omega, (r1, r2, r3)
 
     missing = [k for k in omega_keys if k not in given]
@@ -239,12 +257,13 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         work.step("rolldot", p + _sym("yawdot", rates[0]) * _sin(pi_), unit="rad/s")
     near = abs(ek.sin_exact(a2)) if sequence == "zxz" else abs(ek.cos_exact(a2))
     if near < math.sin(math.radians(1)):
-        work.warn(f"{second} is within 1 deg of the singular attitude: the rates {first}_rate "
-                  f"and {third}_rate are large and sensitive to rounding in the data")
+        work.warn(*names(SYMBOLS[second]), " is within ", qv(math.radians(1), "deg", exact=True),
+                  f" of the singular attitude: the rates {first}_rate and {third}_rate are "
+                  "large and sensitive to rounding in the data")
     check = (ek.body_rates_zxz(a2, a3, *rates) if sequence == "zxz"
              else ek.body_rates_zyx(a2, a3, *rates))
-    work.check("the rates put back into Eq. 11.8 give omega = (" +
-               ", ".join(_rate(v) for v in check) + ")")
+    work.check("the rates put back into Eq. 11.8 give ",
+               rel(names("omega")[0], "=", tup(*(qv(v, "rad/s") for v in check))))
     return omega, rates
 
 
@@ -275,14 +294,19 @@ def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3
     if sequence == "zxz":
         p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
         ph, th = _sym("phi", a1), _sym("theta", a2)
-        work.text("equivalently omega = phidot K + thetadot (cos(phi) I + sin(phi) J) + psidot k, "
-                  "k = sin(theta) sin(phi) I - sin(theta) cos(phi) J + cos(theta) K:")
+        w, phd, thd, psd, I0, J0, K0, k0, ph0, th0 = names(
+            "omega phidot thetadot psidot I J K k phi theta")
+        work.text("equivalently ", rel(w, "=", phd * K0 + thd * (cos(ph0) * I0 + sin(ph0) * J0)
+                                       + psd * k0), ", ",
+                  rel(k0, "=", sin(th0) * sin(ph0) * I0 - sin(th0) * cos(ph0) * J0
+                      + cos(th0) * K0), ":")
         work.step("omega_X", p2 * _cos(ph) + p3 * _sin(th) * _sin(ph), unit="rad/s")
         work.step("omega_Y", p2 * _sin(ph) - p3 * _sin(th) * _cos(ph), unit="rad/s")
         work.step("omega_Z", p1 + p3 * _cos(th), unit="rad/s")
     else:
-        work.text("R = Rz(yaw) Ry(pitch) Rx(roll) = [" + "; ".join(
-            " ".join(num(v) for v in row) for row in R) + "]")
+        yaw, pitch, roll = names("yaw pitch roll")
+        work.text(rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll), "=",
+                      mat(*((qv(v) for v in row) for row in R))))
         for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
             work.step(name, value=value, unit="rad/s")
 
@@ -327,8 +351,10 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             values.append(given[key])
         products = [given.get(k, 0.0) for k in PRODUCT_KEYS]
         matrix = ek.inertia_matrix(*values, *products)
-        work.text("I_x, I_y, I_z as given" + (", with the products I_xy, I_yz, I_zx"
-                                              if any(products) else " (principal axes)"))
+        Ix, Iy, Iz, Ixy, Iyz, Izx = names("I_x I_y I_z I_xy I_yz I_zx")
+        work.text(Ix, ", ", Iy, ", ", Iz, " as given", *((", with the products ", Ixy, ", ", Iyz,
+                                                        ", ", Izx) if any(products)
+                                                       else (" (principal axes)",)))
         _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
         _report_matrix(matrix, products, work)
         return matrix
@@ -350,13 +376,14 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             I = body.I_pivot
         elif body.I_cg is not None:
             I = body.I_cg
-            work.text("no cg_distance: the fixed point is taken at the centre of mass, "
-                      "I = I_G")
+            work.text("no cg_distance: the fixed point is taken at the centre of mass, ",
+                      rel(*names("I"), "=", *names("I_G")))
         else:
             raise InputError("the body needs its transverse inertia about the fixed point: "
                              "I_pivot, k_pivot, I_cg or k_cg (with cg_distance), or a shape",
                              key="given.I_pivot")
-    work.text("symmetric body (Eq. 11.9): I_x = I_y = I, I_z = J")
+    Ix, Iy, Iz, I0, J0 = names("I_x I_y I_z I J")
+    work.text("symmetric body (Eq. 11.9): ", rel(Ix, "=", Iy, "=", I0), ", ", rel(Iz, "=", J0))
     matrix = ek.inertia_matrix(I, I, J)
     _check_rigid(matrix, "given.J")
     _report_matrix(matrix, [0.0, 0.0, 0.0], work)
@@ -376,23 +403,31 @@ def _check_rigid(matrix, key: str) -> None:
 
 
 def _from_particles(particles, work: Work):
-    work.text("particles of mass m at the coordinates x, y, z in body axes from the fixed "
-              "point; the products of inertia as the chapter defines them (the matrix has "
-              "their negatives off the diagonal):")
-    work.text("I_xy = sum m x y")
-    work.text("I_yz = sum m y z")
-    work.text("I_zx = sum m z x")
-    for i, (m, x, y, z) in enumerate(particles[:MAX_LISTED]):
-        work.text(f"  [{i}] m = {qty(m, 'kg')} at ({num(x)}, {num(y)}, {num(z)}) m")
+    m, x, y, z = names("m x y z")
+    work.text("particles of mass ", m, " at the coordinates ", x, ", ", y, ", ", z, " in body "
+              "axes from the fixed point; the products of inertia as the chapter defines them "
+              "(the matrix has their negatives off the diagonal):")
+    for name, (a, b) in zip(PRODUCT_KEYS, ((x, y), (y, z), (z, x))):
+        work.text(rel(*names(name), "=", total(m * a * b)))
+    for i, (mi, xi, yi, zi) in enumerate(particles[:MAX_LISTED]):
+        work.text(f"  [{i}] ", rel(m, "=", qv(mi, "kg")), " at ",
+                  tup(qv(xi, "m"), qv(yi, "m"), qv(zi, "m")))
     if len(particles) > MAX_LISTED:
         work.text(f"  ... {len(particles) - MAX_LISTED} more")
     Ix, Iy, Iz, Ixy, Iyz, Izx = ek.inertia_from_particles(particles)
-    work.step("I_x", "sum m (y^2 + z^2)", value=Ix, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_y", "sum m (z^2 + x^2)", value=Iy, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_z", "sum m (x^2 + y^2)", value=Iz, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_xy", "sum m x y", value=Ixy, unit="kg*m^2")
-    work.step("I_yz", "sum m y z", value=Iyz, unit="kg*m^2")
-    work.step("I_zx", "sum m z x", value=Izx, unit="kg*m^2")
+    # each particle's m, x, y, z as symbols named with its index: the sums evaluate term by
+    # term (the JSON expr lists them), the formula is written as the chapter writes it
+    m, x, y, z = names("m x y z")
+    parts = [(Sym(f"m_{i}", p[0], "kg"), Sym(f"x_{i}", p[1], "m"), Sym(f"y_{i}", p[2], "m"),
+              Sym(f"z_{i}", p[3], "m")) for i, p in enumerate(particles)]
+    sums = {"I_x": lambda m, x, y, z: m * (y ** 2 + z ** 2),
+            "I_y": lambda m, x, y, z: m * (z ** 2 + x ** 2),
+            "I_z": lambda m, x, y, z: m * (x ** 2 + y ** 2),
+            "I_xy": lambda m, x, y, z: m * x * y, "I_yz": lambda m, x, y, z: m * y * z,
+            "I_zx": lambda m, x, y, z: m * z * x}
+    for name, term in sums.items():  # the float values stay physics' (ek.inertia_from_particles)
+        work.step(name, SumOf(term(m, x, y, z), tuple(term(*p) for p in parts)),
+                  unit="kg*m^2", ref="Eq. 11.3" if len(name) == 3 else "", substitute=False)
     matrix = ek.inertia_matrix(Ix, Iy, Iz, Ixy, Iyz, Izx)
     _report_matrix(matrix, [Ixy, Iyz, Izx], work, listed=True)
     return matrix
@@ -404,21 +439,25 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
         for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
             work.step(name, value=value, unit="kg*m^2")
     moments = ek.principal_moments(matrix)
+    Ixy, Iyz, Izx, x, y, z, T, H = names("I_xy I_yz I_zx x y z T H")
     if ek.is_diagonal(matrix):
-        work.text("the products of inertia are zero, I_xy = I_yz = I_zx = 0: x, y, z are principal "
-                  "axes")
+        work.text("the products of inertia are zero, ", rel(Ixy, "=", Iyz, "=", Izx, "=", 0),
+                  ": ", x, ", ", y, ", ", z, " are principal axes")
     else:
-        work.text("the products of inertia are not zero: x, y, z are NOT principal axes, and T "
-                  "and H below use the whole inertia matrix, not Eq. 11.2's diagonal form")
-        work.warn("the body axes are not principal axes (products of inertia not zero); T and "
-                  "H use the whole inertia matrix")
-    work.step("principal moments", "eigenvalues of the inertia matrix",
-              value=None, note=", ".join(qty(m, "kg m^2") for m in moments))
+        work.text("the products of inertia are not zero: ", x, ", ", y, ", ", z, " are NOT "
+                  "principal axes, and ", T, " and ", H, " below use the whole inertia matrix, "
+                  "not Eq. 11.2's diagonal form")
+        work.warn("the body axes are not principal axes (products of inertia not zero); ", T,
+                  " and ", H, " use the whole inertia matrix")
+    for k, value in enumerate(moments):  # not a formula: the matrix's eigenvalues
+        work.step(f"I_{k + 1}", value=value, unit="kg*m^2",
+                  note="" if k else "the principal moments: the eigenvalues of the inertia "
+                  "matrix, ascending")
     for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
         work.answer(name, name, [value], "inertia")
     for name, value in zip(PRODUCT_KEYS, products):
         work.answer(name, name, [value], "inertia")
-    work.answer("principal_moments", "I_1, I_2, I_3", moments, "inertia")
+    work.answer("principal_moments", tup(*names("I_1 I_2 I_3")), moments, "inertia")
 
 
 def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
@@ -447,25 +486,34 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
                   substitute=False)
     Hmag = ek.norm(H)
     Hx, Hy, Hz = (_sym(n, v) for n, v in zip(("H_x", "H_y", "H_z"), H))
-    work.step("|H|", sqrt(Hx ** 2 + Hy ** 2 + Hz ** 2), unit="kg m^2/s", substitute=False)
-    work.check(f"T = (1/2) omega . H = {qty(0.5 * ek.dot(omega, H), 'J')}")
+    Habs = absolute(names("H")[0])
+    work.step(Habs, sqrt(Hx ** 2 + Hy ** 2 + Hz ** 2), unit="kg m^2/s", substitute=False)
+    work.check(rel(names("T")[0], "=", HALF * dot(*names("omega H")), "=",
+                   qv(0.5 * ek.dot(omega, H), "J")))
     work.answer("kinetic_energy", "T", [T], "energy")
     for name, value in zip(("H_x", "H_y", "H_z"), H):
         work.answer(name, name, [value], "angular_momentum")
-    work.answer("angular_momentum", "|H|", [Hmag], "angular_momentum")
+    work.answer("angular_momentum", Habs, [Hmag], "angular_momentum")
     if R is not None:
         fixed = ek.matvec(R, H)
         for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
-            work.step(name, value=value, unit="kg m^2/s", note="fixed-frame component of R H")
+            work.step(name, value=value, unit="kg m^2/s",
+                      note=("fixed-frame component of ", names("R")[0] * names("H")[0]))
             work.answer(name, name, [value], "angular_momentum")
-        work.check(f"|H| in the fixed frame = {qty(ek.norm(fixed), 'kg m^2/s')}")
+        work.check("in the fixed frame ", rel(Habs, "=", qv(ek.norm(fixed), "kg m^2/s")))
+    w0, H0 = names("omega H")
     if Hmag > 0:
         angle = ek.angle_between(omega, H)
-        work.step("angle(omega, H)", "atan2(|omega x H|, omega . H)", value=math.degrees(angle),
-                  unit="deg", note="zero only when omega lies along a principal axis")
-        work.answer("omega_H_angle", "angle(omega, H)", [angle], "angle")
+        # atan2(|omega x H|, omega . H), the cross and dot products by their components
+        cross_ = sqrt((w["y"] * Hz - w["z"] * Hy) ** 2 + (w["z"] * Hx - w["x"] * Hz) ** 2
+                      + (w["x"] * Hy - w["y"] * Hx) ** 2)
+        work.step(fn("angle", w0, H0), atan2(cross_, w["x"] * Hx + w["y"] * Hy + w["z"] * Hz),
+                  unit="deg", substitute=False,
+                  note=("zero only when ", w0, " lies along a principal axis"))
+        work.answer("omega_H_angle", fn("angle", w0, H0), [angle], "angle")
     else:
-        work.text("omega = 0: the body is at rest, H = 0 and the angle between them is undefined")
+        work.text(rel(w0, "=", 0), ": the body is at rest, ", rel(H0, "=", 0), " and the angle "
+                  "between them is undefined")
 
 
 KIND = Kind(

@@ -30,7 +30,12 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Sym, sqrt
+from ..core.prose import cross, names, plus, q, qvec, rel, total, tup
 from ..core.work import Work, num, qty
+
+#: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
+ax, ay, az = names("x y z")
+H0, C0, wp0, Cg0, Cc0, m0, g0, R0 = names("H C omega_p C_g C_c m g R")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -52,19 +57,20 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     wheels = _wheels(given)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
-              "their spin vector points to the left (+y); each engine's points the same way "
-              "(engine_sense: same) or the other way (opposite).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
-              "H (Eq. 11.29); the vehicle feels the "
-              "reactive couple -C. Couples are about the fore-and-aft axis, positive "
+    work.text("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Going forward "
+              "the wheels roll: their spin vector points to the left ", tup(plus(ay)), "; each "
+              "engine's points the same way (engine_sense: same) or the other way (opposite).")
+    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors ",
+              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the vehicle feels the reactive "
+              "couple ", -C0, ". Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")
     work.section("Rotating parts")
-    wheel_total = work.step("sum I_w", wheels, unit="kg*m^2")
-    engine_total = work.step("sum I_E", Sym("n_E", engines) * Sym("I_E", IE, "kg m^2"),
+    I_w, I_E = names("I_w I_E")
+    wheel_total = work.step(total(I_w), wheels, unit="kg*m^2")
+    engine_total = work.step(total(I_E), Sym("n_E", engines) * Sym("I_E", IE, "kg m^2"),
                              unit="kg*m^2")
     sum_w, sum_E = Sym("sum I_w", wheel_total, "kg m^2"), Sym("sum I_E", engine_total, "kg m^2")
     # in the wheels' sense: sum I_w + G sum I_E, or - with the engines against the wheels
@@ -118,11 +124,12 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     work.step("omega_p", v_ / R_, unit="rad/s")
     work.section("Vector rule")
     H = work.step("H", equivalent.sym * Sym("omega_w", omega_w, "rad/s"), unit="kg m^2/s",
-                  note="along +y (left) if positive")
+                  note=("along ", plus(ay), " (left) if positive"))
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
-    work.text(f"turning {turn}: omega_p = (0, 0, {num(wp[2])}) rad/s; omega_p x H = "
-              f"({num(V.couple_on_rotor(wp, Hv)[0])}, 0, 0) N m on the rotors; the reactive "
-              f"couple on the vehicle, ({num(V.reactive_couple(wp, Hv)[0])}, 0, 0) N m, "
+    work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
+              rel(cross(wp0, H0), "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              " on the rotors; the reactive couple on the vehicle, ",
+              qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"), ", "
               + ("overturns it outward (lifts the inner wheels)" if H >= 0 else
                  "presses the inner wheels down (the engines' reversed momentum dominates)"))
     work.section("Couples and their shares on each wheel")
@@ -137,15 +144,16 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     work.step("R_outer", P_w + P_g + P_c, unit="N", note="each outer wheel")
     work.step("R_inner", P_w - P_g - P_c, unit="N", note="each inner wheel")
     if s.inner < 0:
-        work.warn(f"the inner wheels' reaction is negative ({qty(s.inner, 'N')}): at this speed "
+        work.warn("the inner wheels' reaction is negative (", q(s.inner, "N"), "): at this speed "
                   "the inner wheels leave the road (the vehicle overturns) unless held down")
     if s.outer < 0:
-        work.warn(f"the outer wheels' reaction is negative ({qty(s.outer, 'N')}): they leave "
+        work.warn("the outer wheels' reaction is negative (", q(s.outer, "N"), "): they leave "
                   "the road")
-    work.check(f"2 R_outer + 2 R_inner = {qty(2 * (s.outer + s.inner), 'N')} = m g = "
-               f"{qty(m * g, 'N')}; x (R_outer - R_inner) = "
-               f"{qty(x * (s.outer - s.inner), 'N m')} = C_g + C_c = "
-               f"{qty(s.gyroscopic_couple + s.centrifugal_couple, 'N m')}")
+    R_o, R_i, x0 = names("R_outer R_inner x")
+    work.check(rel(2 * R_o + 2 * R_i, "=", q(2 * (s.outer + s.inner), "N"), "=", m0 * g0, "=",
+                   q(m * g, "N")), "; ",
+               rel(x0 * (R_o - R_i), "=", q(x * (s.outer - s.inner), "N m"), "=", Cg0 + Cc0, "=",
+                   q(s.gyroscopic_couple + s.centrifugal_couple, "N m")))
     work.answer("wheel_reactions", "R", [s.outer, s.inner], "force", ["outer", "inner"])
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
@@ -154,7 +162,9 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
 def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
-    work.text("at the limiting speed v_lim: m g / 4 = (v_lim^2 / (2 x R)) (I_eq / r_w + m h)")
+    v_lim, x0, I_eq0, r_w, h0 = names("v_lim x I_eq r_w h")
+    work.text("at the limiting speed ", v_lim, ": ",
+              rel(m0 * g0 / 4, "=", (v_lim ** 2 / (2 * x0 * R0)) * (I_eq0 / r_w + m0 * h0)))
     v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
     if v2 is None:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "

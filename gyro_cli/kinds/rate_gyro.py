@@ -22,8 +22,9 @@ from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Let, Sym, sqrt
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Let, Sym, cos, sqrt
+from ..core.prose import names, q, rel
+from ..core.work import Work, num
 from ..physics.rate_gyro import large_angle_deflection, steady_deflection
 
 SMALL_ANGLE = math.radians(5)
@@ -80,21 +81,25 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("input_angle goes with a rate-integrating gyro (damping, no "
                          "stiffness)", key="given.input_angle")
 
+    th, thd, thdd, Om, H0, I0, k0, c0, M0, phi = \
+        names("theta thetadot thetaddot Omega H I_g k c M phi")
     work.section("Conventions")
-    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at "
-              "theta = 0; positive senses chosen so that a positive input rate deflects the "
-              "gimbal positively. All results are for small gimbal angles.")
+    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at ",
+              rel(th, "=", 0), "; positive senses chosen so that a positive input rate deflects "
+              "the gimbal positively. All results are for small gimbal angles.")
     work.section("Gimbal equation (Eq. 11.29: Q_theta = H Omega about the output axis)")
-    work.text("Omega: the input rate, about the input axis; theta: the gimbal's deflection "
-              "about the output axis; I_g: the gimbal's moment of inertia about that axis; "
-              "k: the spring's stiffness; c: the damping coefficient")
-    work.text("I_g thetaddot + c thetadot + k theta = H Omega   (small theta; exactly H Omega "
-              "cos(theta) on the right)")
-    label = {"spring": "spring-restrained rate gyro: steady theta = H Omega / k",
-             "integrating": "rate-integrating gyro (damper, no spring): steady thetadot = "
-                            "H Omega / c, theta = (H / c) * (angle turned)",
-             "rigid": "rigidly restrained rotor: the bearings supply M = H Omega (Eq. 11.29)"}
-    work.text(label[mode])
+    work.text(Om, ": the input rate, about the input axis; ", th, ": the gimbal's deflection "
+              "about the output axis; ", I0, ": the gimbal's moment of inertia about that "
+              "axis; ", k0, ": the spring's stiffness; ", c0, ": the damping coefficient")
+    work.text(rel(I0 * thdd + c0 * thd + k0 * th, "=", H0 * Om), "   (small ", th,
+              "; exactly ", H0 * Om * cos(th), " on the right)")
+    label = {"spring": ("spring-restrained rate gyro: steady ", rel(th, "=", H0 * Om / k0)),
+             "integrating": ("rate-integrating gyro (damper, no spring): steady ",
+                             rel(thd, "=", H0 * Om / c0), ", ", rel(th, "=", H0 / c0 * phi),
+                             ", where ", phi, " is the angle the case turned"),
+             "rigid": ("rigidly restrained rotor: the bearings supply ", rel(M0, "=", H0 * Om),
+                       " (Eq. 11.29)")}
+    work.text(*label[mode])
 
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     if given_key == "input_angle":
@@ -125,9 +130,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.answer("sensitivity", "S", [S], "time")
         if abs(theta) > SMALL_ANGLE and given_key != "deflection":
             exact = large_angle_deflection(H, rate, k)
-            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
-                      f"tilted, k theta = H Omega cos(theta) gives {num(exact / DEG)} deg")
-        work.check(f"k theta = {qty(k * theta, 'N m')} = H Omega = {qty(M, 'N m')}")
+            work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
+                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
+                      q(exact, "deg"))
+        work.check(rel(k0 * th, "=", q(k * theta, "N m"), "=", H0 * Om, "=", q(M, "N m")))
         if I_g is not None:
             work.section("Dynamics of the gimbal")
             I_g_ = _sym("I_g", I_g)
@@ -139,24 +145,30 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 zeta = work.step("zeta", _sym("c", c) / (2 * sqrt(k_ * I_g_)),
                                  unit="")  # damping_ratio
                 work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
-                work.text("zeta near 0.7 lets the reading settle fastest without much overshoot"
-                          if 0.5 <= zeta <= 1 else
-                          "zeta < 0.5: the reading rings before it settles" if zeta < 0.5 else
-                          "zeta > 1: overdamped, the reading creeps up to its value")
+                z = names("zeta")[0]
+                if 0.5 <= zeta <= 1:
+                    work.text(z, " near ", q(0.7, exact=True), " lets the reading settle "
+                              "fastest without much overshoot")
+                elif zeta < 0.5:
+                    work.text(rel(z, "<", q(0.5, exact=True)), ": the reading rings before it "
+                              "settles")
+                else:
+                    work.text(rel(z, ">", 1), ": overdamped, the reading creeps up to its value")
         elif c is not None:
-            work.text("damping given without gimbal_inertia: the damping ratio needs I_g")
+            work.text("damping given without gimbal_inertia: the damping ratio needs ", I0)
     elif mode == "integrating":
         work.section("Rate-integrating: gimbal rate and gain")
         c_ = _sym("c", c)
         td = work.step("thetadot", H_ * Omega / c_, unit="rad/s")  # gimbal_rate
-        gain = work.step("H / c", H_ / c_, unit="", state=False,
+        gain = work.step(H0 / c0, H_ / c_, unit="", state=False,
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
-        work.answer("gain", "H/c", [gain], "dimensionless")
+        work.answer("gain", H0 / c0, [gain], "dimensionless")
         _time_constant(c, I_g, work)
-        work.check(f"c thetadot = {qty(c * td, 'N m')} = H Omega = {qty(M, 'N m')}")
+        work.check(rel(c0 * names("thetadot")[0], "=", q(c * td, "N m"), "=", H0 * Om, "=",
+                       q(M, "N m")))
     else:
-        work.check(f"M / H = {qty(M / H, 'rad/s')} = Omega")
+        work.check(rel(M0 / H0, "=", q(M / H, "rad/s"), "=", Om))
     if "gimbal_inertia" in given and mode == "rigid":
         work.text("gimbal_inertia is not used: a rigid restraint does not move")
     _refuse_missing(find, work)
@@ -172,21 +184,25 @@ def _time_constant(c: float, I_g: float | None, work: Work) -> None:
 def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work: Work) -> None:
     """Rate-integrating gyro: the gimbal angle for the angle the case turned."""
     work.section("Rate-integrating: gimbal angle for the angle turned")
-    work.text("integrating c thetadot = H Omega over time: c theta = H phi, phi = integral of "
-              "Omega dt (once the transient, time constant I_g / c, has passed)")
+    th, thd, Om, H0, c0, I0, phi0 = names("theta thetadot Omega H c I_g phi")
+    work.text("integrating ", rel(c0 * thd, "=", H0 * Om), " over time: ",
+              rel(c0 * th, "=", H0 * phi0), ", where ", phi0, ", the integral of ", Om, " over "
+              "time, is the angle the case turned (once the transient, time constant ",
+              I0 / c0, ", has passed)")
     H_c = _sym("H", H) / _sym("c", c)
-    gain = work.step("H / c", H_c, unit="", state=False)
+    gain = work.step(H0 / c0, H_c, unit="", state=False)
     phi = given["input_angle"]
     theta = work.step("theta", Let(_sym("H/c", gain), H_c) * _sym("phi", phi), unit="rad",
-                      note="phi: the angle the case turned")
+                      note=(phi0, ": the angle the case turned"))
     work.step("theta", value=theta / DEG, unit="deg")
     work.answer("deflection", "theta", [theta], "angle")
-    work.answer("gain", "H/c", [gain], "dimensionless")
+    work.answer("gain", H0 / c0, [gain], "dimensionless")
     _time_constant(c, I_g, work)
     if abs(theta) > SMALL_ANGLE:
-        work.warn(f"the gimbal angle {num(theta / DEG)} deg is not small: the linear relation "
+        work.warn("the gimbal angle ", q(theta, "deg"), " is not small: the linear relation "
                   "holds only for small angles")
-    work.check(f"c theta = {qty(c * theta, 'N m s')} = H phi = {qty(H * phi, 'N m s')}")
+    work.check(rel(c0 * th, "=", q(c * theta, "N m s"), "=", H0 * phi0, "=",
+                   q(H * phi, "N m s")))
 
 
 def _refuse_missing(find: frozenset[str], work: Work) -> None:
@@ -216,9 +232,10 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
                              "90 deg the spin axis lies along the input axis and no input rate "
                              "gives a moment about the gimbal axis", key="given.deflection")
         if abs(theta) > SMALL_ANGLE:
-            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
-                      "tilted, k theta = H Omega cos(theta) gives Omega = "
-                      f"{num(k * theta / (H * math.cos(theta)))} rad/s")
+            th, k0, H0, Om = names("theta k H Omega")
+            work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
+                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
+                      rel(Om, "=", q(k * theta / (H * math.cos(theta)), "rad/s")))
         return work.step("Omega", _sym("k", k) * _sym("theta", theta) / _sym("H", H),
                          unit="rad/s")
     if key == "moment":

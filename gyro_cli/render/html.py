@@ -323,6 +323,8 @@ def _given_table(result: Result, level: int) -> str:
         sym = _math(symbol) if symbol is not None else escape(g.symbol)
         text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
         note = f" ({escape(g.note)})" if g.note else ""
+        if g.note_prose is not None:
+            note = f" ({prose_pieces_html(g.note_prose)})"
         rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{escape(text)}{note}</td>"
                     f"<td>{_quantity(g.si_value, g.si_unit)}</td></tr>")
     return (_heading(level, "Given") + _table_box("Given") + '<table><thead><tr><th scope="col">symbol</th>'

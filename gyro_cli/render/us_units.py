@@ -56,7 +56,9 @@ def _us_symbol(sym: Sym) -> Sym:
 
 def _us_quantity(quantity: Quantity_) -> Quantity_:
     value, unit = convert(quantity.si, quantity.unit)
-    return Quantity_(value, unit, quantity.exact and unit == quantity.unit)
+    if unit == quantity.unit:  # a unit of both systems: as written (label, digits and all)
+        return quantity
+    return Quantity_(value, unit)  # converted: to 4 figures, as every converted value
 
 
 def _step(step: Step) -> Step:

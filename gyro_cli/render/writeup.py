@@ -24,7 +24,7 @@ from ..core.work import num
 from ..solving.solve import Result
 from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
-from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text
+from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text, Tuple
 
 __all__ = ["markdown", "latex", "standalone", "symbol_latex", "words", "text_escape",
            "symbol_tex"]
@@ -241,25 +241,37 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
-    if getattr(step, "prose", None) is not None:  # a note of words and trees
-        if note:
-            after.append(note)
-        after.append(Typeset(prose_latex(step.prose, markdown)))
-        note = ""
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
-    short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
+    beside = ""  # a short note, set beside the equation
+
+    def short(text: str) -> bool:
+        return len(text) <= 48 and widest + len(text) + 4 <= WIDTH + 8
+
+    if getattr(step, "prose", None) is not None:  # a note of words and trees
+        maths = [p for p in prose_nodes(step.prose) if not (isinstance(p, str) and not p.strip())]
+        if not note and short(step.text) and len(maths) == 1 and not isinstance(maths[0], str):
+            beside = printer.doprint(maths[0])  # a note that is one formula: = 0.03283 deg/h
+        elif not note and short(step.text):
+            beside = "\\text{" + prose_latex(step.prose) + "}"
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+        note = ""
+    if note and short(note):
+        beside = _note_math(note)
+    elif note:
+        after.append(note)
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
     else:
         rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
-    if short_note:
-        body += f" \\qquad {_note_math(note)}"
-    elif note:
-        after.append(note)
+    if beside:
+        body += f" \\qquad {beside}"
     if tag:
         body += f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}"
     return body, after
@@ -317,6 +329,14 @@ def prose_latex(prose, markdown: bool = False) -> str:
         else:
             out.append(f"${LatexPrinter(False).doprint(piece)}$")
     return "".join(out)
+
+
+def _given_cell(g, markdown: bool) -> str:
+    """The datum as written, and its note (words, or words and trees)."""
+    prose = getattr(g, "note_prose", None)
+    if prose is not None:
+        return _prose(_given_text(g), markdown) + " (" + prose_latex(prose, markdown) + ")"
+    return _prose(_given_text(g) + (f" ({g.note})" if g.note else ""), markdown)
 
 
 def _title(section, markdown: bool) -> str:
@@ -377,6 +397,8 @@ def _answer_lhs(answer) -> str:
             and not (answer.values and not isinstance(answer.values[0], str)) \
             and answer.symbol.isalpha() and len(answer.symbol) > 2:
         return ""
+    if isinstance(tree, Group) and isinstance(tree.body, Tuple) and len(answer.values) > 1:
+        return ""  # (I_1, I_2, I_3): one symbol per value, not the triple before each
     return LatexPrinter(False).doprint(tree) + " = "
 
 
@@ -429,9 +451,8 @@ def _markdown(result: Result) -> str:
         lines += [f"> {_prose(note, True)}", ""]
     lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
         lines.append(f"| ${symbol_latex(g.symbol)}$ | "
-                     f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
+                     f"{_md_cell(_given_cell(g, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_title(section, True)}", ""]
         lines += _steps(section.steps, True)
@@ -486,8 +507,7 @@ def _latex(result: Result, level: str) -> str:
     lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
-        lines.append(f"${symbol_latex(g.symbol)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${symbol_latex(g.symbol)}$ & {_given_cell(g, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]
