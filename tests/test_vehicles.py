@@ -384,7 +384,7 @@ kind: two_wheeler
 given: {mass: 250 kg, cg_height: 0 m, wheel_inertia: 1 kg*m^2, wheel_radius: 0.3 m,
         speed: 20 m/s, turn_radius: 50 m}
 find: {heel_angle: deg}
-""", "cg_height must be positive"),
+""", "expected cg_height > 0 m"),
     ("""
 id: t
 kind: two_wheeler

@@ -371,12 +371,13 @@ def vehicle_params(*rotors: str) -> tuple[Param, ...]:
     """The keys a vehicle kind adds for books' data: its weight, and each rotor (wheel,
     axle, engine) by its mass and radius of gyration."""
     params = [Param("weight", "force", "W", "instead of mass: the weight ('weighs 20 kN'); "
-                    "m = W / g")]
+                    "m = W / g", positive=True)]
     for rotor in rotors:
         params += [Param(f"{rotor}_mass", "mass", f"m_{rotor[0]}", f"instead of "
-                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k"),
+                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k", nonnegative=True),
                    Param(f"{rotor}_k", "length", f"k_{rotor[0]}", f"the {rotor}'s radius of "
-                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2")]
+                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2",
+                         nonnegative=True)]
     return tuple(params)
 
 
@@ -391,8 +392,6 @@ def vehicle_data(given, work: Work, *rotors: str):
         if "mass" in values:
             raise InputError("give mass or weight, not both", key="given.weight")
         W, g = values["weight"], values["g"]
-        if W <= 0:
-            raise InputError("weight must be positive", key="given.weight")
         values["mass"] = W / g
         steps.append(("m", Sym("W", W, "N") / Sym("g", g, "m/s^2"), "kg"))
     for rotor in rotors:
@@ -407,9 +406,6 @@ def vehicle_data(given, work: Work, *rotors: str):
             raise InputError(f"give {inertia_key}, or {mass_key} with {k_key}, not both",
                              key=f"given.{mass_key}")
         m, k = values[mass_key], values[k_key]
-        if m < 0 or k < 0:
-            raise InputError(f"{mass_key} and {k_key} cannot be negative",
-                             key=f"given.{mass_key if m < 0 else k_key}")
         symbol = {"wheel": "I_w", "engine": "I_E", "axle": "I_axle"}.get(rotor, inertia_key)
         values[inertia_key] = m * k * k
         steps.append((symbol, Sym(f"m_{rotor[0]}", m, "kg") * Sym(f"k_{rotor[0]}", k, "m") ** 2,
