@@ -359,7 +359,7 @@ find: {{couple: N*m, effect: null}}
 
 
 @pytest.mark.parametrize("kind_text, reason", [
-    (SHIP.format(extra="  speed: 10 m/s\n  turn_radius: 0 m"), "turn_radius must be positive"),
+    (SHIP.format(extra="  speed: 10 m/s\n  turn_radius: 0 m"), "expected turn_radius > 0 m"),
     (SHIP.format(extra="  speed: 10 m/s"), "steering needs speed and turn_radius"),
     (SHIP.format(extra="  motion: pitching\n  amplitude: 5 deg\n  period: 10 s"),
      "bow: rising or falling"),
