@@ -298,7 +298,7 @@ BAD = {
                       "J: 0.05 kg m^2\n  I_cg: 0.05 kg m^2"), ["given.J", "J = I"]),
     "negative inertia": (tf("omega: 1 rad/s\n  omega_angle: 10 deg",
                             "J: 0.02 kg m^2\n  I_cg: -0.05 kg m^2"),
-                         ["given.I_cg", "must be positive"]),
+                         ["given.I_cg", "expected I_cg > 0 kg m^2"]),
     "missing I": (tf("omega: 1 rad/s\n  omega_angle: 10 deg", "J: 0.02 kg m^2"),
                   ["given.I_cg", "I_cg, k_cg or a shape"]),
     "I about a pivot": (tf("omega: 1 rad/s\n  omega_angle: 10 deg",
