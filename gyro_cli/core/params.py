@@ -39,6 +39,7 @@ class Param:
     bounds: str = "[]"
     limits: tuple[str, str] | None = None
     reason: str = ""
+    symbol_tree: object = None  # a symbol that is not one name, as a tree (core.expr)
 
     def __post_init__(self) -> None:
         if self.bounds not in BOUNDS:
