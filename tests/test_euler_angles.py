@@ -307,11 +307,11 @@ find: [{find}]
 
 @pytest.mark.parametrize("extra, find, fragments", [
     ("  phi_rate: 1 rad/s\n  I_x: -0.1 kg m^2\n  I_y: 0.1 kg m^2\n  I_z: 0.1 kg m^2",
-     "kinetic_energy", ["given.I_x", "positive"]),
+     "kinetic_energy", ["given.I_x", "expected I_x > 0 kg m^2"]),
     ("  phi_rate: 1 rad/s\n  I_x: 0.1 kg m^2\n  I_y: 0.1 kg m^2\n  I_z: 0.5 kg m^2",
      "kinetic_energy", ["given.I_z", "no rigid body"]),
     ("  phi_rate: 1 rad/s\n  I: 0.1 kg m^2\n  J: -0.1 kg m^2", "kinetic_energy",
-     ["given.J", "positive"]),
+     ["given.J", "expected J > 0 kg m^2"]),
     ("  phi_rate: 1 rad/s\n  particles:\n    - {mass: 1 kg, x: 0 m, y: 1 m, z: 0 m}\n"
      "    - {mass: 1 kg, x: 1 m, y: 0 m, z: 0 m}\n    - {x: 1 m, y: 1 m, z: 0 m}",
      "kinetic_energy", ["given.particles[2].mass", "needs its mass", "(line 10)"]),

@@ -180,7 +180,7 @@ def one_line(result, *fragments):
     ("J: 1e-3 kg m^2\n  spin: 100 rad/s\n  moment: 1e-4 N m\n  I: -1e-3 kg m^2",
      "nutation_frequency", ["given.I", "expected I > 0 kg m^2"]),
     ("J: -1e-3 kg m^2\n  spin: 100 rad/s\n  moment: 1e-4 N m", "drift_rate",
-     ["given.J", "positive"]),
+     ["given.J", "expected J > 0 kg m^2"]),
     ("J: 1e-3 kg m^2\n  spin: 0 rad/s\n  moment: 1e-4 N m", "drift_rate",
      ["given.spin", "must spin"]),
     ("J: 1e-3 kg m^2\n  spin: 100 rad/s\n  moment: 1e-4 N m\n  drift_rate: 1 deg/h",

@@ -1,4 +1,4 @@
-"""The limits a Param declares (positive, nonnegative, nonzero, range): for every kind and
+"""The limits a Param declares (positive, nonnegative, nonzero, whole, range): for every kind and
 every declared limit, a value just outside is refused by the loader with exit 2 and one
 line naming the key and the limit; a value just inside is accepted by the loader, and a
 solve refuses it, if at all, for another reason."""
@@ -28,6 +28,7 @@ _SIDES = {
     "<": (lambda x: x, lambda x: x - _step(x)),
     "<=": (lambda x: x + _step(x), lambda x: x),
     "!=": (lambda x: x, lambda x: x + _step(x)),
+    "whole": (lambda x: x / 2, lambda x: x),  # x = 1: half of one, and one
 }
 
 
@@ -59,8 +60,7 @@ def _file(write, kind_name: str, key: str, text) -> str:
 
 def test_the_migrated_kinds_declare_limits():
     declared = {c.values[0] for c in CASES}
-    assert {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession",
-            "bicycle"} <= declared
+    assert set(kinds.names()) <= declared  # every kind, with the body's keys where it has one
 
 
 @pytest.mark.parametrize("kind_name, p, op, x", CASES)
@@ -75,7 +75,8 @@ def test_just_outside_is_refused_naming_key_and_limit(run, write, kind_name, p, 
     unit = units.si_text(p.dimension)
     assert f"given.{p.name} (line" in err, err
     assert f"expected {p.expectation(unit)}, got " in err, err
-    assert f"{op} {p.limit_text(x, unit)}" in err or \
+    assert op == "whole" and "a whole number" in err or \
+        f"{op} {p.limit_text(x, unit)}" in err or \
         f"{p.limit_text(x, unit)} {'<' if op == '>' else '<='} {p.name}" in err, err
 
 
@@ -118,6 +119,8 @@ def test_the_message_in_full(write):
     (dict(range=(0.0, 2 / 3), bounds="(]", limits=("0", "2/3")), "0 < x <= 2/3"),
     (dict(range=(-math.inf, 0.0), bounds="()"), "x < 0 m"),
     (dict(positive=True, range=(-1.0, 2.0), bounds="[)"), "x > 0 m and -1 m <= x < 2 m"),
+    (dict(whole=True), "x a whole number"),
+    (dict(nonnegative=True, whole=True), "x >= 0 m, a whole number"),
 ])
 def test_the_vocabulary(declaration, expectation):
     p = Param("x", "length", "x", "a length", **declaration)
@@ -136,3 +139,18 @@ def test_an_angle_limit_is_said_in_degrees():
 def test_a_declaration_that_cannot_hold_is_refused(declaration):
     with pytest.raises(ValueError):
         Param("x", "length", "x", "a length", **declaration)
+
+
+@pytest.mark.parametrize("value, broken", [(0.0, ()), (3.0, ()), (1e300, ()), (-1.0, ((">=", 0.0),)),
+                                           (1.5, (("whole", 1.0),)),
+                                           (-0.5, ((">=", 0.0), ("whole", 1.0)))])
+def test_a_whole_number(value, broken):
+    p = Param("n", "dimensionless", "n", "a count", nonnegative=True, whole=True)
+    assert p.limits_broken(value) == broken
+
+
+def test_a_whole_number_in_the_schema():
+    from gyro_cli.commands.authoring import limits_schema
+
+    p = Param("n", "dimensionless", "n", "a count", nonnegative=True, whole=True)
+    assert limits_schema(p) == {"minimum": 0.0, "multipleOf": 1.0}

@@ -190,7 +190,7 @@ BAD = [
         given: {arrangement: axle_pivot, mass: 1 kg, shape: disk, radius: 100 mm,
                 path_radius: 0 m, precession: 10 rpm}
         find: {normal_force: N}
-        """, "path_radius must be positive"),
+        """, "expected path_radius > 0 m"),
     ("""
         id: bad
         kind: rolling_disk

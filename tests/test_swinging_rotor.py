@@ -158,7 +158,7 @@ BASE = """
 
 
 @pytest.mark.parametrize("extra, reason", [
-    ("bearing_spacing: 0 mm\n      theta: 90 deg", "bearing_spacing must be positive"),
+    ("bearing_spacing: 0 mm\n      theta: 90 deg", "expected bearing_spacing > 0 m"),
     ("bearing_spacing: 200 mm\n      theta: 20 deg\n      theta0: 30 deg", "never reaches"),
     ("bearing_spacing: 200 mm\n      theta: 90 deg\n      arm_position: 300 mm",
      "outside the bearings"),

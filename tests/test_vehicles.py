@@ -359,7 +359,7 @@ find: {{couple: N*m, effect: null}}
 
 
 @pytest.mark.parametrize("kind_text, reason", [
-    (SHIP.format(extra="  speed: 10 m/s\n  turn_radius: 0 m"), "turn_radius must be positive"),
+    (SHIP.format(extra="  speed: 10 m/s\n  turn_radius: 0 m"), "expected turn_radius > 0 m"),
     (SHIP.format(extra="  speed: 10 m/s"), "steering needs speed and turn_radius"),
     (SHIP.format(extra="  motion: pitching\n  amplitude: 5 deg\n  period: 10 s"),
      "bow: rising or falling"),
@@ -384,7 +384,7 @@ kind: two_wheeler
 given: {mass: 250 kg, cg_height: 0 m, wheel_inertia: 1 kg*m^2, wheel_radius: 0.3 m,
         speed: 20 m/s, turn_radius: 50 m}
 find: {heel_angle: deg}
-""", "cg_height must be positive"),
+""", "expected cg_height > 0 m"),
     ("""
 id: t
 kind: two_wheeler

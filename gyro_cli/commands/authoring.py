@@ -220,12 +220,12 @@ def schema() -> dict[str, Any]:
 
 
 _KEYWORDS = {">": "exclusiveMinimum", ">=": "minimum", "<": "exclusiveMaximum",
-             "<=": "maximum"}
+             "<=": "maximum", "whole": "multipleOf"}
 
 
 def limits_schema(p: Param) -> dict[str, Any]:
     """A Param's declared limits (SI) as JSON Schema keywords: ``{"exclusiveMinimum": 0}``;
-    ``nonzero`` as ``{"not": {"const": 0}}``."""
+    ``nonzero`` as ``{"not": {"const": 0}}``, a whole number as ``{"multipleOf": 1}``."""
     out: dict[str, Any] = {}
     for op, x in p.limits_declared():
         if op == "!=":

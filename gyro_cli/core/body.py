@@ -20,16 +20,26 @@ from .work import Work, qty
 G_SI = 9.81         # m/s^2, the format's default
 G_US = 32.2 * 0.3048  # 32.2 ft/s^2 in m/s^2, the textbook value for US data
 
+# where the mass plays no part the file leaves it out (the loader adds this to a refusal)
+_MASS_OUT = "where the mass plays no part (only a couple or a rate is asked), leave mass out"
+
 BODY_PARAMS: tuple[Param, ...] = (
-    Param("mass", "mass", "m", "mass of the body"),
-    Param("weight", "force", "W", "weight of the body (lb and oz read as lbf and ozf)"),
-    Param("g", "acceleration", "g", "gravity; default 9.81 m/s^2, or 32.2 ft/s^2 for US data"),
-    Param("J", "inertia", "J", "moment of inertia about the symmetry axis"),
-    Param("k_axial", "length", "k_z", "radius of gyration about the symmetry axis"),
-    Param("I_pivot", "inertia", "I", "transverse moment of inertia about the fixed point"),
-    Param("k_pivot", "length", "k_O", "transverse radius of gyration about the fixed point"),
-    Param("I_cg", "inertia", "I_G", "transverse moment of inertia about the centre of mass"),
-    Param("k_cg", "length", "k_G", "transverse radius of gyration about the centre of mass"),
+    Param("mass", "mass", "m", "mass of the body", positive=True, reason=_MASS_OUT),
+    Param("weight", "force", "W", "weight of the body (lb and oz read as lbf and ozf)",
+          positive=True, reason=_MASS_OUT),
+    Param("g", "acceleration", "g", "gravity; default 9.81 m/s^2, or 32.2 ft/s^2 for US data",
+          positive=True),
+    Param("J", "inertia", "J", "moment of inertia about the symmetry axis", positive=True),
+    Param("k_axial", "length", "k_z", "radius of gyration about the symmetry axis",
+          positive=True),
+    Param("I_pivot", "inertia", "I", "transverse moment of inertia about the fixed point",
+          positive=True),
+    Param("k_pivot", "length", "k_O", "transverse radius of gyration about the fixed point",
+          positive=True),
+    Param("I_cg", "inertia", "I_G", "transverse moment of inertia about the centre of mass",
+          positive=True),
+    Param("k_cg", "length", "k_G", "transverse radius of gyration about the centre of mass",
+          positive=True),
     Param("shape", "word", "shape", "disk, ring, cylinder, sphere, cone (solid, apex at the "
           "fixed point), shell (thin tube), rod, hollow_sphere, box (square section) or "
           "annulus", choices=("disk", "ring", "cylinder", "sphere", "cone", "shell", "rod",
@@ -42,14 +52,16 @@ BODY_PARAMS: tuple[Param, ...] = (
                  ("thin_spherical_shell", "hollow_sphere"), ("thin_rod", "rod"),
                  ("slender_rod", "rod"), ("hollow_cylinder", "annulus"),
                  ("thick_ring", "annulus"), ("washer", "annulus"), ("block", "box"))),
-    Param("radius", "length", "r", "radius of the shape (the outer radius of an annulus)"),
-    Param("diameter", "length", "d", "diameter of the shape"),
-    Param("inner_radius", "length", "r_i", "inner radius of an annulus"),
-    Param("width", "length", "w", "side of a box's square cross-section"),
+    Param("radius", "length", "r", "radius of the shape (the outer radius of an annulus)",
+          positive=True),
+    Param("diameter", "length", "d", "diameter of the shape", positive=True),
+    Param("inner_radius", "length", "r_i", "inner radius of an annulus", positive=True),
+    Param("width", "length", "w", "side of a box's square cross-section", positive=True),
     Param("length", "length", "L", "length of a cylinder, shell, rod, box or annulus along "
-          "its axis"),
-    Param("height", "length", "h", "height of a cone, apex to base"),
-    Param("cg_distance", "length", "l", "fixed point to centre of mass along the symmetry axis"),
+          "its axis", positive=True),
+    Param("height", "length", "h", "height of a cone, apex to base", positive=True),
+    Param("cg_distance", "length", "l", "fixed point to centre of mass along the symmetry axis",
+          nonnegative=True),
 )
 
 @dataclass(frozen=True)
@@ -187,21 +199,8 @@ class Body:
                                  key=f"given.{name}")
 
 
-def _positive(values: dict, key: str, allow_zero: bool = False) -> None:
-    value = values.get(key)
-    if isinstance(value, float) and (value < 0 or (value == 0 and not allow_zero)):
-        need = "zero or positive" if allow_zero else "positive"
-        hint = ("; where the mass plays no part (only a couple or a rate is asked), leave "
-                "mass out" if key in ("mass", "weight") and value == 0 else "")
-        raise InputError(f"must be {need}, got {value:g} (SI){hint}", key=f"given.{key}")
-
-
 def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     """Make the Body from SI values; writes the 'Body' section of the answer."""
-    for key in ("mass", "weight", "g", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg",
-                "radius", "diameter", "length", "height", "inner_radius", "width"):
-        _positive(values, key)
-    _positive(values, "cg_distance", allow_zero=True)
     if "mass" in values and "weight" in values:
         raise InputError("give mass or weight, not both", key="given.weight")
     needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
@@ -371,12 +370,13 @@ def vehicle_params(*rotors: str) -> tuple[Param, ...]:
     """The keys a vehicle kind adds for books' data: its weight, and each rotor (wheel,
     axle, engine) by its mass and radius of gyration."""
     params = [Param("weight", "force", "W", "instead of mass: the weight ('weighs 20 kN'); "
-                    "m = W / g")]
+                    "m = W / g", positive=True)]
     for rotor in rotors:
         params += [Param(f"{rotor}_mass", "mass", f"m_{rotor[0]}", f"instead of "
-                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k"),
+                         f"{rotor}_inertia: the {rotor}'s mass, with {rotor}_k", nonnegative=True),
                    Param(f"{rotor}_k", "length", f"k_{rotor[0]}", f"the {rotor}'s radius of "
-                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2")]
+                         f"gyration about its axle: {rotor}_inertia = {rotor}_mass {rotor}_k^2",
+                         nonnegative=True)]
     return tuple(params)
 
 
@@ -391,8 +391,6 @@ def vehicle_data(given, work: Work, *rotors: str):
         if "mass" in values:
             raise InputError("give mass or weight, not both", key="given.weight")
         W, g = values["weight"], values["g"]
-        if W <= 0:
-            raise InputError("weight must be positive", key="given.weight")
         values["mass"] = W / g
         steps.append(("m", Sym("W", W, "N") / Sym("g", g, "m/s^2"), "kg"))
     for rotor in rotors:
@@ -407,9 +405,6 @@ def vehicle_data(given, work: Work, *rotors: str):
             raise InputError(f"give {inertia_key}, or {mass_key} with {k_key}, not both",
                              key=f"given.{mass_key}")
         m, k = values[mass_key], values[k_key]
-        if m < 0 or k < 0:
-            raise InputError(f"{mass_key} and {k_key} cannot be negative",
-                             key=f"given.{mass_key if m < 0 else k_key}")
         symbol = {"wheel": "I_w", "engine": "I_E", "axle": "I_axle"}.get(rotor, inertia_key)
         values[inertia_key] = m * k * k
         steps.append((symbol, Sym(f"m_{rotor[0]}", m, "kg") * Sym(f"k_{rotor[0]}", k, "m") ** 2,

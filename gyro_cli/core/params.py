@@ -17,8 +17,8 @@ class Param:
 
     The constraints are on the value in SI (an angle in rad) and the loader enforces
     them, one message style for all (``expected 0 deg <= obliquity < 90 deg, got '95 deg'``):
-    ``positive`` (> 0), ``nonnegative`` (>= 0), ``nonzero`` (!= 0), ``range=(lo, hi)``
-    with ``bounds`` saying which ends are included ("[]", "[)", "(]", "()"; an end may be
+    ``positive`` (> 0), ``nonnegative`` (>= 0), ``nonzero`` (!= 0), ``whole`` (a whole
+    number: a count), ``range=(lo, hi)`` with ``bounds`` saying which ends are included ("[]", "[)", "(]", "()"; an end may be
     +-inf, and is then no limit), ``limits`` how to say range's ends where the number
     alone would not ("2/3"), ``reason`` why, added to the refusal. A check that needs two
     keys or the physics (J <= 2 I_G, a spin too low) stays in the kind.
@@ -34,10 +34,12 @@ class Param:
     positive: bool = False
     nonnegative: bool = False
     nonzero: bool = False
+    whole: bool = False  # a whole number (a count of engines)
     range: tuple[float, float] | None = None  # SI
     bounds: str = "[]"
     limits: tuple[str, str] | None = None
     reason: str = ""
+    symbol_tree: object = None  # a symbol that is not one name, as a tree (core.expr)
 
     def __post_init__(self) -> None:
         if self.bounds not in BOUNDS:
@@ -46,7 +48,8 @@ class Param:
             raise ValueError(f"{self.name}: range {self.range} is empty")
 
     def limits_declared(self) -> tuple[tuple[str, float], ...]:
-        """Each declared limit as (operator, SI value): (">", 0.0), ("<", pi / 2), ("!=", 0.0)."""
+        """Each declared limit as (operator, SI value): (">", 0.0), ("<", pi / 2), ("!=", 0.0);
+        a whole number as ("whole", 1.0), a multiple of 1."""
         out: list[tuple[str, float]] = []
         if self.positive:
             out.append((">", 0.0))
@@ -60,6 +63,8 @@ class Param:
                 out.append(("<" if self.bounds[1] == ")" else "<=", hi))
         if self.nonzero:
             out.append(("!=", 0.0))
+        if self.whole:
+            out.append(("whole", 1.0))
         return tuple(out)
 
     def limits_broken(self, value: float) -> tuple[tuple[str, float], ...]:
@@ -77,7 +82,7 @@ class Param:
 
     def expectation(self, unit: str = "") -> str:
         """The declared limits as one condition on the key: ``0 deg <= obliquity < 90 deg``,
-        ``turn_radius > 0 m``; "" if none is declared."""
+        ``turn_radius > 0 m``, ``engines >= 0, a whole number``; "" if none is declared."""
         def said(op: str, x: float) -> str:
             return f"{self.name} {op} {self.limit_text(x, unit)}"
 
@@ -94,11 +99,14 @@ class Param:
                 parts.append(said(hi_op, hi))
         if self.nonzero:
             parts.append(said("!=", 0.0))
-        return " and ".join(parts)
+        said_all = " and ".join(parts)
+        if self.whole:
+            return f"{said_all}, a whole number" if parts else f"{self.name} a whole number"
+        return said_all
 
 
 _OPS = {">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le,
-        "!=": operator.ne}
+        "!=": operator.ne, "whole": lambda v, x: math.isfinite(v) and (v / x).is_integer()}
 _FLIP = {"(": "<", "[": "<="}  # a range's lower end, read left to right
 _OPS_OF = {")": "<", "]": "<="}
 

@@ -104,6 +104,7 @@ class GivenLine:
     si_unit: str
     note: str = ""
     note_prose: Prose | None = None  # a note written as words and trees
+    symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
 
 
 @dataclass

@@ -335,6 +335,9 @@ def _body_params(b: str) -> tuple[Param, ...]:
     )
 
 
+
+_C, _M, _R = names("C M R")  # the symbol of polar_moment_factor
+
 KIND = Kind(
     name="earth_precession",
     summary="precession of the equinoxes: an oblate planet as a top torqued by the Sun and "
@@ -352,7 +355,8 @@ KIND = Kind(
               reason="the oblateness of the gravity field"),
         Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet",
               range=(0.0, 2 / 3), bounds="(]", limits=("0", "2/3"),
-              reason="2/3 for a hollow shell, 0.4 for a uniform sphere"),
+              reason="2/3 for a hollow shell, 0.4 for a uniform sphere",
+              symbol_tree=_C / (_M * _R**2)),
         Param("obliquity", "angle", "epsilon", "angle between the spin axis and the normal of the "
               "reference orbit plane (the ecliptic)", range=(0.0, math.pi / 2), bounds="[)",
               reason="at 90 deg the bulge lies in the orbit plane and the mean torque vanishes; "

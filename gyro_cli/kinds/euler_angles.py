@@ -23,7 +23,7 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
 from ..core.prose import dot, fn, mat, names, prime, rel, total, tup, words
 from ..core.prose import q as qv
-from ..core.work import Work, num, qty
+from ..core.work import Work, num
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
 ANGLES = {"zxz": ("phi", "theta", "psi"), "zyx": ("yaw", "pitch", "roll")}
@@ -345,9 +345,6 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             if key not in given:
                 raise InputError(f"give all three moments I_x, I_y, I_z (or I and J for a "
                                  f"symmetric body); {key} is missing", key=f"given.{key}")
-            if given[key] <= 0:
-                raise InputError(f"a moment of inertia must be positive, got "
-                                 f"{qty(given[key], 'kg*m^2')}", key=f"given.{key}")
             values.append(given[key])
         products = [given.get(k, 0.0) for k in PRODUCT_KEYS]
         matrix = ek.inertia_matrix(*values, *products)
@@ -362,9 +359,6 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
     J = body.J
     if way == "I":
         I = given["I"]
-        if I <= 0:
-            raise InputError(f"a moment of inertia must be positive, got {qty(I, 'kg*m^2')}",
-                             key="given.I")
         if J is None:
             raise InputError("I (transverse) goes with J (axial) for a symmetric body",
                              key="given.J")
@@ -542,13 +536,15 @@ KIND = Kind(
         Param("omega_x", "rate", "omega_x", "inverse: body component of omega along x (p)"),
         Param("omega_y", "rate", "omega_y", "inverse: along y (q)"),
         Param("omega_z", "rate", "omega_z", "inverse: along z (r)"),
-        Param("I_x", "inertia", "I_x", "moment of inertia about body x through the fixed point"),
-        Param("I_y", "inertia", "I_y", "about body y"),
-        Param("I_z", "inertia", "I_z", "about body z"),
+        Param("I_x", "inertia", "I_x", "moment of inertia about body x through the fixed point",
+              positive=True),
+        Param("I_y", "inertia", "I_y", "about body y", positive=True),
+        Param("I_z", "inertia", "I_z", "about body z", positive=True),
         Param("I_xy", "inertia", "I_xy", "product of inertia sum m x y (default 0)"),
         Param("I_yz", "inertia", "I_yz", "product of inertia sum m y z (default 0)"),
         Param("I_zx", "inertia", "I_zx", "product of inertia sum m z x (default 0)"),
-        Param("I", "inertia", "I", "symmetric body: I_x = I_y = I about the fixed point (with J)"),
+        Param("I", "inertia", "I", "symmetric body: I_x = I_y = I about the fixed point (with J)",
+              positive=True),
         Param("particles", "particles", "particles", "list of {mass, x, y, z}: point masses at "
               "positions in body axes from the fixed point"),
     ),

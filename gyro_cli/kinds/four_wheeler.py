@@ -31,7 +31,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Sym, sqrt
 from ..core.prose import cross, names, plus, q, qvec, rel, total, tup
-from ..core.work import Work, num, qty
+from ..core.work import Work, qty
 
 #: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
 ax, ay, az = names("x y z")
@@ -40,17 +40,7 @@ H0, C0, wp0, Cg0, Cc0, m0, g0, R0 = names("H C omega_p C_g C_c m g R")
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     given = vehicle_data(given, work, 'wheel', 'axle', 'engine')
-    for key in ("mass", "g", "cg_height", "track", "wheel_radius", "turn_radius"):
-        if given[key] <= 0:
-            raise InputError(f"{key} must be positive, got {num(given[key])}", key=f"given.{key}")
-    for key in ("engine_inertia", "gear_ratio"):
-        if given[key] < 0:
-            raise InputError(f"{key} cannot be negative, got {num(given[key])}",
-                             key=f"given.{key}")
     engines = given["engines"]
-    if engines < 0 or engines != int(engines):
-        raise InputError(f"engines is a count (0, 1, 2, ...), got {num(engines)}",
-                         key="given.engines")
     m, g, h, x = given["mass"], given["g"], given["cg_height"], given["track"]
     rw, R = given["wheel_radius"], given["turn_radius"]
     IE, G, sense = given["engine_inertia"], given["gear_ratio"], given.word("engine_sense", "same")
@@ -95,12 +85,8 @@ def _wheels(given: Given) -> Expr:
                          key="given.wheel_inertia")
     if "wheel_inertia" in given:
         Iw = given["wheel_inertia"]
-        if Iw < 0:
-            raise InputError("wheel_inertia cannot be negative", key="given.wheel_inertia")
         return 4 * Sym("I_w", Iw, "kg m^2")
     Ia = given["axle_inertia"]
-    if Ia < 0:
-        raise InputError("axle_inertia cannot be negative", key="given.axle_inertia")
     return 2 * Sym("I_axle", Ia, "kg m^2")
 
 
@@ -108,8 +94,6 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
               R: float, wheels: float, engines: float, G: float, sense: str,
               equivalent: Let) -> None:
     v = given["speed"]
-    if v < 0:
-        raise InputError("speed must be positive (the vehicle goes forward)", key="given.speed")
     turn = given.word("turn", "left")
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
     if not all(math.isfinite(q) for q in (s.outer, s.inner, s.gyroscopic_couple,
@@ -184,23 +168,28 @@ KIND = Kind(
     chapter="Eq. 11.29, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
     uses_body=False,
     params=(
-        Param("mass", "mass", "m", "total mass of the vehicle"),
-        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
-        Param("cg_height", "length", "h", "height of the centre of mass above the road or rails"),
+        Param("mass", "mass", "m", "total mass of the vehicle", positive=True),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
+        Param("cg_height", "length", "h", "height of the centre of mass above the road or rails",
+              positive=True),
         Param("track", "length", "x", "track width: distance between the wheels of an axle "
-              "(between the rails)"),
-        Param("wheel_radius", "length", "r_w", "radius of the wheels"),
-        Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each of the four wheels"),
+              "(between the rails)", positive=True),
+        Param("wheel_radius", "length", "r_w", "radius of the wheels", positive=True),
+        Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each of the four wheels",
+              nonnegative=True),
         Param("axle_inertia", "inertia", "I_axle", "instead of wheel_inertia: each of the two "
-              "axles with its wheels and gears"),
+              "axles with its wheels and gears", nonnegative=True),
         Param("engine_inertia", "inertia", "I_E", "moment of inertia of each engine (motor) with "
-              "its rotating parts", default="0 kg*m^2"),
-        Param("engines", "dimensionless", "n_E", "number of engines (motors)", default="1"),
-        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1"),
+              "its rotating parts", default="0 kg*m^2", nonnegative=True),
+        Param("engines", "dimensionless", "n_E", "number of engines (motors)", default="1",
+              nonnegative=True, whole=True, reason="engines is a count (0, 1, 2, ...)"),
+        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1",
+              nonnegative=True),
         Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
               "engines' sense of rotation relative to the wheels", choices=("same", "opposite")),
-        Param("speed", "speed", "v", "speed of the vehicle"),
-        Param("turn_radius", "length", "R", "radius of the curve"),
+        Param("speed", "speed", "v", "speed of the vehicle", nonnegative=True,
+              reason="the vehicle goes forward"),
+        Param("turn_radius", "length", "R", "radius of the curve", positive=True),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
     ) + vehicle_params('wheel', 'axle', 'engine'),

@@ -164,11 +164,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _along_the_axis(given, find, theta, work)
         return
     body.require("J")
-    if not 0 < theta < math.pi:
-        raise InputError(f"theta, the angle between the precession and spin axes, must lie "
-                         f"strictly between 0 and 180 deg (got {num(math.degrees(theta))} deg): "
-                         "along the spin axis a precession only adds to the spin and needs no "
-                         "moment", key="given.theta")
     cos, sin = cos_theta(theta), math.sin(theta)
     if cos != 0:
         body.require("I_cg")
@@ -272,9 +267,6 @@ def _spin(given: Given, work: Work) -> float:
             raise InputError("wheel_radius gives the spin with the vehicle's speed: "
                              "psidot = v / r_w; give speed", key="given.speed")
         r = given["wheel_radius"]
-        if r <= 0:
-            raise InputError(f"wheel_radius must be positive, got {num(r)} m",
-                             key="given.wheel_radius")
         work.section("Spin of the wheels from the vehicle's speed")
         psidot, v, r_w = names("psidot v r_w")
         work.text(psidot, ", the wheels' spin: they roll without slipping, so the axle's speed "
@@ -306,9 +298,6 @@ def _drop(given: Given, work: Work) -> float:
                          "bearing_spacing, the distance between the wheels", 
                          key="given.bearing_spacing")
     h, L = given["drop"], given["bearing_spacing"]
-    if h <= 0 or L <= 0:
-        key = "drop" if h <= 0 else "bearing_spacing"
-        raise InputError(f"{key} must be positive", key=f"given.{key}")
     how = [k for k in ("drop_length", "drop_time") if k in given]
     if len(how) != 1:
         raise InputError("give how the wheel drops: drop_length (the length of track over "
@@ -321,8 +310,6 @@ def _drop(given: Given, work: Work) -> float:
             raise InputError("drop_length needs the vehicle's speed (the drop takes "
                              "drop_length / v)", key="given.speed")
         s, v = given["drop_length"], given["speed"]
-        if s <= 0:
-            raise InputError("drop_length must be positive", key="given.drop_length")
         t = work.step("t", Sym("s", s, "m") / Sym("v", v, "m/s"), unit="s",
                       note="time the wheel takes to drop")
         h_, L_ = names("h L")
@@ -330,8 +317,6 @@ def _drop(given: Given, work: Work) -> float:
                          unit="rad/s", note=("the axle turns through ", h_ / L_, " (small "
                                              "angle) while the wheel drops"))
     T = given["drop_time"]
-    if T <= 0:
-        raise InputError("drop_time must be positive", key="given.drop_time")
     h_, T_d, y, t_ = names("h T_d y t")
     work.text("the wheel falls ", h_, " and rises again in the time ", T_d, " with simple "
               "harmonic motion: ", rel(y, "=", h_ / 2 * (1 - cos_(2 * PI * t_ / T_d))),
@@ -373,9 +358,6 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
         return _drop(given, work)
     if ways == ["turn_radius"]:
         R = given["turn_radius"]
-        if R <= 0:
-            raise InputError(f"turn_radius must be positive, got {num(R)} m",
-                             key="given.turn_radius")
         turn = given.word("turn", "left")
         sign = 1.0 if turn == "left" else -1.0
         work.section("Precession from the path")
@@ -428,9 +410,6 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
         raise InputError("bearing forces need bearing_spacing (the distance AB)",
                          key="given.bearing_spacing")
     L = given["bearing_spacing"]
-    if L <= 0:
-        raise InputError(f"bearing_spacing must be positive, got {num(L)} m: two bearings at one "
-                         "point cannot take a couple", key="given.bearing_spacing")
     arrangement = given.word("arrangement", "between")
     a = given["cg_position"] if "cg_position" in given else L / 2
     if arrangement == "between" and not 0 <= a <= L:
@@ -448,8 +427,6 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
         _couple_only(given, M, L, "bearing_forces" in find, work)
         return
     m = given["supported_mass"] if "supported_mass" in given else body.m
-    if m <= 0:
-        raise InputError("supported_mass must be positive", key="given.supported_mass")
     offset = given.word("cg_offset", "across")
     R = given.get("cg_radius")
     if R is None:
@@ -457,8 +434,6 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
         if "turn_radius" in given:
             work.text("the rotor's centre travels on the turn: cg_radius = turn_radius, across "
                       "the spin axis")
-    if R < 0:
-        raise InputError("cg_radius is a distance: give it positive", key="given.cg_radius")
     g = body.g
     sin, cos = math.sin(theta), cos_theta(theta)
     forces = bearing_forces(m, g, M, L, a, precession, theta, R, offset)
@@ -576,8 +551,6 @@ def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
         raise InputError("the counterweight arm is built for a horizontal spin axis (theta = 90 "
                          "deg)", key="given.theta")
     mc, b0 = given["counterweight"], given["balance_position"]
-    if mc <= 0:
-        raise InputError("counterweight must be a positive mass", key="given.counterweight")
     g = body.g
     work.section("Counterweight on the pivoted arm (problem 11/4)")
     b_, b0n, db0, m_c, g0, M0 = names("b b0 db m_c g M")
@@ -613,36 +586,40 @@ KIND = Kind(
         Param("precession", "rate", "Omega", "rate at which the frame turns, positive "
               "counter-clockwise seen from above"),
         Param("theta", "angle", "theta", "angle between the precession axis and the spin axis",
-              default="90 deg"),
+              default="90 deg", range=(0.0, math.pi), reason="the angle between the precession "
+              "and the spin axes (at 0 or 180 deg the precession only adds to the spin)"),
         Param("speed", "speed", "v", "speed of a turning vehicle (instead of precession; with "
               "turn_radius)"),
-        Param("turn_radius", "length", "R", "radius of the vehicle's turn: Omega = v / R"),
+        Param("turn_radius", "length", "R", "radius of the vehicle's turn: Omega = v / R",
+              positive=True),
         Param("turn", "word", "turn", "left (counter-clockwise from above, default) or right",
               choices=("left", "right")),
         Param("moment", "moment", "M", "applied moment along the line of nodes, to find the "
               "precession it sustains"),
         Param("wheel_radius", "length", "r_w", "radius of a road or rail wheel: spin = speed / "
-              "r_w (instead of spin)"),
+              "r_w (instead of spin)", positive=True),
         Param("drop", "length", "h", "how far one wheel drops (the axle tilts about the track: "
-              "the precession)"),
+              "the precession)", positive=True),
         Param("drop_length", "length", "s", "length of track over which the wheel drops at "
-              "speed: Omega = h v / (s L)"),
+              "speed: Omega = h v / (s L)", positive=True),
         Param("drop_time", "time", "T_d", "time in which the wheel falls and rises again, "
-              "simple harmonic: greatest Omega = pi h / (T_d L)"),
+              "simple harmonic: greatest Omega = pi h / (T_d L)", positive=True),
         Param("bearing_spacing", "length", "L", "distance between bearings A and B on the spin "
-              "axis"),
+              "axis", positive=True, reason="two bearings at one point cannot take a couple"),
         Param("cg_position", "length", "a", "distance from bearing A to the centre of mass, "
               "toward B (default midway)"),
         Param("arrangement", "word", "arrangement", "between (default: the centre of mass lies "
               "between the bearings) or overhung", choices=("between", "overhung")),
         Param("supported_mass", "mass", "m_s", "mass the bearings carry, if more than the rotor "
-              "(a motor's housing); default the body's mass"),
+              "(a motor's housing); default the body's mass", positive=True),
         Param("cg_radius", "length", "R_G", "distance of the centre of mass from the precession "
-              "axis (default 0, or turn_radius)"),
+              "axis (default 0, or turn_radius)", nonnegative=True,
+              reason="cg_radius is a distance"),
         Param("cg_offset", "word", "offset", "across (default: off the axis along the line of "
               "nodes) or along (in the plane of the two axes, k pointing away)",
               choices=("across", "along")),
-        Param("counterweight", "mass", "m_c", "mass of the movable block on the pivoted arm"),
+        Param("counterweight", "mass", "m_c", "mass of the movable block on the pivoted arm",
+              positive=True),
         Param("balance_position", "length", "b0", "block position at which the arm balances "
               "with the rotor at rest"),
     ),

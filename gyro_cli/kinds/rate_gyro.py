@@ -43,9 +43,6 @@ def _sym(name: str, value: float) -> Sym:
 
 def _angular_momentum(given: Given, work: Work) -> float:
     H = spin_angular_momentum(given, work)
-    if H <= 0:
-        raise InputError("the rotor's angular momentum must be positive (spin > 0): a rotor "
-                         "that does not spin senses nothing", key="given.spin")
     return H
 
 
@@ -54,10 +51,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     k = given.get("stiffness")
     c = given.get("damping")
     I_g = given.get("gimbal_inertia")
-    for key, value in (("stiffness", k), ("damping", c), ("gimbal_inertia", I_g)):
-        if value is not None and value <= 0:
-            raise InputError(f"{key} must be positive (leave it out if there is none)",
-                             key=f"given.{key}")
     mode = "spring" if k is not None else "integrating" if c is not None else "rigid"
     inputs = [key for key in ("rate", "deflection", "moment", "gimbal_rate", "input_angle")
               if key in given]
@@ -227,10 +220,6 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
     work.section("Input rate from the measurement")
     if key == "deflection":
         theta = given["deflection"]
-        if abs(theta) >= math.pi / 2:
-            raise InputError(f"a gimbal deflection of {num(theta / DEG)} deg is impossible: at "
-                             "90 deg the spin axis lies along the input axis and no input rate "
-                             "gives a moment about the gimbal axis", key="given.deflection")
         if abs(theta) > SMALL_ANGLE:
             th, k0, H0, Om = names("theta k H Omega")
             work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
@@ -247,23 +236,32 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
                      unit="rad/s")
 
 
+# why a key's limit is what it is (the loader adds it to the refusal)
+_SENSES = "the rotor's angular momentum must be positive (spin > 0): a rotor that does not spin " \
+    "senses nothing"
+_NONE = "leave it out if there is none"
+
 KIND = Kind(
     name="rate_gyro",
     summary="the gyroscope as a detector of motion: single-gimbal rate gyro with a spring, "
             "rate-integrating gyro with a damper, or the bearing moment (Eq. 11.29)",
     chapter="Eqs. 11.27-11.29, the gyroscope as a detector of motion",
     params=(
-        Param("spin", "rate", "psidot", "spin of the rotor (with J, k_axial or a shape)"),
+        Param("spin", "rate", "psidot", "spin of the rotor (with J, k_axial or a shape)",
+              positive=True, reason=_SENSES),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
-              "(instead of spin and J)"),
-        Param("stiffness", "stiffness", "k", "torsion spring on the gimbal (output) axis"),
+              "(instead of spin and J)", positive=True, reason=_SENSES),
+        Param("stiffness", "stiffness", "k", "torsion spring on the gimbal (output) axis",
+              positive=True, reason=_NONE),
         Param("damping", "damping", "c", "viscous damper on the gimbal axis (alone: a "
-              "rate-integrating gyro)"),
+              "rate-integrating gyro)", positive=True, reason=_NONE),
         Param("gimbal_inertia", "inertia", "I_g", "moment of inertia of gimbal and rotor about "
-              "the gimbal axis"),
+              "the gimbal axis", positive=True, reason=_NONE),
         Param("rate", "rate", "Omega", "input: the case's angular rate about the input axis"),
         Param("deflection", "angle", "theta", "measured steady gimbal deflection (spring) -> "
-              "the input rate"),
+              "the input rate", range=(-math.pi / 2, math.pi / 2), bounds="()",
+              reason="at 90 deg the spin axis lies along the input axis and no input rate gives "
+              "a moment about the gimbal axis"),
         Param("moment", "moment", "M", "measured moment about the output axis -> the input "
               "rate"),
         Param("gimbal_rate", "rate", "thetadot", "measured steady gimbal rate (rate-integrating)"

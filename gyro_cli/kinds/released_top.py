@@ -48,19 +48,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     theta0, spin = given["theta0"], given["spin"]
     precession0 = given.get("precession0", 0.0) or 0.0
     theta_rate0 = given.get("theta_rate0", 0.0) or 0.0
-    if not 0 <= theta0 <= math.pi * (1 + 1e-15):
-        raise InputError(f"theta0 must lie between 0 and 180 deg (from the upward vertical), "
-                         f"got {_deg(theta0)}", key="given.theta0")
     theta0 = min(theta0, math.pi)
-    if spin < 0:
-        raise InputError(f"spin {num(spin)} rad/s is negative: reverse the sense of the axis "
-                         "instead (the chapter takes psidot > 0 about the axis from the fixed "
-                         "point to the centre of mass); give the spin as positive and change the "
-                         "sign of precession0", key="given.spin")
     vertical = abs(math.sin(theta0)) < 1e-15
-    if spin == 0:
-        raise InputError("spin 0: a top released without spin is a pendulum, not a top; give "
-                         "the spin psidot > 0", key="given.spin")
     top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
     start = Start(theta0=theta0, spin=spin, precession0=precession0, theta_rate0=theta_rate0)
     omega_z = constants(top, start)["omega_z"]
@@ -455,8 +444,13 @@ KIND = Kind(
     chapter="Eqs. 11.14-11.26 (11.24 corrected), exact by elliptic integrals",
     params=(
         Param("theta0", "angle", "theta0", "angle of the axis from the upward vertical at t = 0 "
-              "(the chapter's theta_2)"),
-        Param("spin", "rate", "psidot", "spin relative to the precessing frame (> 0)"),
+              "(the chapter's theta_2)", range=(0.0, math.pi * (1 + 1e-15)),
+              limits=("0 deg", "180 deg")),  # 180 deg read from grad or arcmin may be 1 ulp over
+        Param("spin", "rate", "psidot", "spin relative to the precessing frame (> 0)",
+              positive=True, reason="the chapter takes psidot > 0 about the axis from the fixed "
+              "point to the centre of mass: for a negative spin reverse the sense of the axis "
+              "instead (give the spin as positive and change the sign of precession0); at 0 a "
+              "top released without spin is a pendulum, not a top"),
         Param("precession0", "rate", "phidot0", "precession rate at t = 0", default="0 rad/s"),
         Param("theta_rate0", "rate", "thetadot0", "rate of change of theta at t = 0",
               default="0 rad/s"),

@@ -176,10 +176,6 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
                              "horizontal and turns at `precession`", key=f"given.{key}")
     m, g, J, r = body.m, body.g, body.J, body.radius
     Omega, R = given["precession"], given["path_radius"]
-    if R <= 0:
-        raise InputError(f"path_radius must be positive, got {num(R)} m: with the disk's centre "
-                         "on the shaft the moments about the pin do not fix the normal force",
-                         key="given.path_radius")
     work.section("Conventions (axle pinned to the shaft at the height of the disk's centre)")
     work.text(K0, ": upward vertical, ", W0, " positive counter-clockwise seen from above; ", k0,
               ": along the axle, from the pin ", O0, " outward to the disk; ",
@@ -247,12 +243,6 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError(f"give exactly two of path_radius, speed and tilt (got "
                          f"{', '.join(known) or 'none'})",
                          key=f"given.{known[2] if len(known) == 3 else 'tilt'}")
-    for key in known:
-        if given[key] <= 0:
-            raise InputError(f"{key} must be positive", key=f"given.{key}")
-    if "tilt" in given and given["tilt"] >= math.pi / 2:
-        raise InputError("tilt must be less than 90 deg (the disk would lie flat)",
-                         key="given.tilt")
     work.section("Conventions (disk rolling by itself)")
     work.text(b0, ": tilt of the disk's plane from the vertical, leaning toward the centre of "
               "the circle; ", rho0, ": radius of the circle of the centre ", G0, "; ",
@@ -392,10 +382,13 @@ KIND = Kind(
         Param("arrangement", "word", "arrangement", "axle_pivot (default; problem 11/6) or free",
               choices=("axle_pivot", "free")),
         Param("precession", "rate", "Omega", "rate of the shaft about the vertical (axle_pivot)"),
-        Param("path_radius", "length", "R", "radius of the circle traced by the contact point"),
-        Param("speed", "speed", "v", "speed of the disk's centre (free)"),
+        Param("path_radius", "length", "R", "radius of the circle traced by the contact point",
+              positive=True, reason="at 0 (axle_pivot) the disk's centre is on the shaft and "
+              "the moments about the pin do not fix the normal force"),
+        Param("speed", "speed", "v", "speed of the disk's centre (free)", positive=True),
         Param("tilt", "angle", "beta", "tilt of the disk's plane from the vertical, toward the "
-              "circle's centre (free)"),
+              "circle's centre (free)", range=(0.0, math.pi / 2), bounds="()",
+              reason="at 90 deg the disk would lie flat"),
     ),
     answers=(
         AnswerSpec("normal_force", "force", "N", "normal force of the plane on the disk"),

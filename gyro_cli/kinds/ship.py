@@ -26,7 +26,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Num, Sym, absolute, cos, sin
 from ..core.prose import cross, deriv, names, plus, qvec, q, rel
-from ..core.work import Work, num
+from ..core.work import Work
 
 #: the ship's axes and the symbols its prose names (values are in the steps' trees)
 x, y, z = names("x y z")
@@ -40,9 +40,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if "spin" not in given:
         raise InputError("give the rotor's speed `spin` (e.g. 1800 rpm)", key="given.spin")
     spin = given["spin"]
-    if spin < 0:
-        raise InputError("give the rotor's speed as a positive rate and its sense in "
-                         "rotor_sense (e.g. clockwise_from_stern)", key="given.spin")
     motion = given.word("motion", "steering")
     sense = given.word("rotor_sense")
     _refuse_foreign(given, motion)
@@ -137,9 +134,6 @@ def _steering(given: Given, work: Work) -> V.Vector:
                 raise InputError(f"give turn_rate, or speed and turn_radius (omega_p = v / R), "
                                  f"not both", key=f"given.{key}")
         rate = given["turn_rate"]
-        if rate <= 0:
-            raise InputError("turn_rate is a positive rate; say which way in turn (left or "
-                             "right)", key="given.turn_rate")
         turn = given.word("turn", "left")
         work.section("Steering: precession about the vertical")
         work.step("omega_p", value=rate, unit="rad/s", note="the ship's rate of turn, as given")
@@ -152,10 +146,6 @@ def _steering(given: Given, work: Work) -> V.Vector:
                              "turn_rate",
                              key=f"given.{key}")
     v, R = given["speed"], given["turn_radius"]
-    if R <= 0:
-        raise InputError(f"turn_radius must be positive, got {num(R)} m", key="given.turn_radius")
-    if v < 0:
-        raise InputError("speed must be positive (the ship goes ahead)", key="given.speed")
     turn = given.word("turn", "left")
     work.section("Steering: precession about the vertical")
     work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
@@ -191,9 +181,6 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
                                 "pitch_rate")
         period_key = _one_of(given, PERIOD_KEYS, "pitching needs its period (or frequency), "
                              "or pitch_rate")
-        if given[amplitude_key] <= 0 or given[period_key] <= 0:
-            key = amplitude_key if given[amplitude_key] <= 0 else period_key
-            raise InputError(f"{key} must be positive", key=f"given.{key}")
         work.section("Pitching: simple harmonic motion")
         if amplitude_key in ("pitch_total", "between_extremes"):
             total = given[amplitude_key]
@@ -207,9 +194,6 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             phi = given[amplitude_key]
             work.step("phi", value=math.degrees(phi), unit="deg", note=(
                 rel(None, "=", q(phi, "rad")),))
-        if phi >= math.pi / 2:
-            raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
-                             "through 90 deg", key=f"given.{amplitude_key}")
         if period_key == "frequency":
             f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
             T = work.step("T", 2 * PI / Sym("omega_1", f_rate, "rad/s"), unit="s",
@@ -249,6 +233,11 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
 
 
 AMPLITUDE_KEYS = ("amplitude", "pitch_amplitude", "pitch_total", "between_extremes")
+# the amplitude's limits (the total swing is twice it): the loader refuses a value outside
+_AMPLITUDE = dict(range=(0.0, math.pi / 2), bounds="()",
+                  reason="a ship cannot pitch through 90 deg")
+_TOTAL = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
+              "cannot pitch through 90 deg")
 PERIOD_KEYS = ("period", "frequency")
 
 
@@ -295,26 +284,33 @@ KIND = Kind(
             "pitching (simple harmonic) and rolling",
     chapter="Eq. 11.29 in vector form, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
     params=(
-        Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)"),
+        Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)",
+              nonnegative=True, reason="give the rotor's speed as a positive rate and its sense "
+              "in rotor_sense (e.g. clockwise_from_stern)"),
         Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
               choices=V.SHIP_SENSES, words=SENSE_WORDS),
         Param("motion", "word", "motion", "steering (default), pitching or rolling",
               choices=("steering", "pitching", "rolling")),
-        Param("speed", "speed", "v", "ship's speed (steering)"),
-        Param("turn_radius", "length", "R", "radius of the turn (steering)"),
+        Param("speed", "speed", "v", "ship's speed (steering)", nonnegative=True,
+              reason="the ship goes ahead"),
+        Param("turn_radius", "length", "R", "radius of the turn (steering)", positive=True),
         Param("turn_rate", "rate", "omega_p", "steering: the ship's rate of turn (rad/s, deg/s), "
-              "instead of speed and turn_radius"),
+              "instead of speed and turn_radius", positive=True,
+              reason="turn_rate is a positive rate; say which way in turn (left or right)"),
         Param("turn", "word", "turn", "left (to port, default) or right (to starboard)",
               choices=("left", "right"), words=TURN_WORDS),
         Param("amplitude", "angle", "phi", "pitching: largest angle from the mean position "
-              "(half the total swing)"),
-        Param("pitch_amplitude", "angle", "phi", "pitching: the amplitude, as `amplitude`"),
+              "(half the total swing)", **_AMPLITUDE),
+        Param("pitch_amplitude", "angle", "phi", "pitching: the amplitude, as `amplitude`",
+              **_AMPLITUDE),
         Param("pitch_total", "angle", "phi_total", "pitching: the total swing between the two "
-              "extremes, twice the amplitude (Khurmi: '12 deg between the extreme positions')"),
-        Param("between_extremes", "angle", "phi_total", "pitching: as pitch_total"),
-        Param("period", "time", "T", "pitching: period of the simple harmonic pitching"),
+              "extremes, twice the amplitude (Khurmi: '12 deg between the extreme positions')",
+              **_TOTAL),
+        Param("between_extremes", "angle", "phi_total", "pitching: as pitch_total", **_TOTAL),
+        Param("period", "time", "T", "pitching: period of the simple harmonic pitching",
+              positive=True),
         Param("frequency", "rate", "omega_1", "pitching: its frequency, instead of the period "
-              "(0.025 Hz is one oscillation in 40 s; rad/s is 2 pi / T)"),
+              "(0.025 Hz is one oscillation in 40 s; rad/s is 2 pi / T)", positive=True),
         Param("pitch_rate", "rate", "omega_p", "pitching: the pitching rate at the instant "
               "(instead of amplitude and period)"),
         Param("bow", "word", "bow", "pitching: the bow rising or falling at the instant asked",

@@ -99,18 +99,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     m, g, J, I_G = body.m, body.g, body.J, body.I_cg
     p, L, d = given["spin"], given["arm_length"], given["bearing_spacing"]
     theta, theta0 = given["theta"], given["theta0"]
-    if d <= 0:
-        raise InputError(f"bearing_spacing must be positive, got {num(d)} m: bearings at one "
-                         "point cannot take the gyroscopic couple", key="given.bearing_spacing")
-    if L <= 0:
-        raise InputError("arm_length must be positive (shaft to the rotor's centre)",
-                         key="given.arm_length")
     a = given["arm_position"] if "arm_position" in given else d / 2
     if not 0 <= a <= d:
         raise InputError(f"arm_position {num(a)} m puts the arm outside the bearings (0 to "
                          f"{num(d)} m from A)", key="given.arm_position")
-    if not 0 <= theta0 < math.pi:
-        raise InputError("theta0 must lie in [0, 180) deg", key="given.theta0")
     if math.cos(theta) > math.cos(theta0) + 1e-12 or not 0 <= theta <= 2 * math.pi - theta0:
         raise InputError(f"released from rest at theta0 = {num(math.degrees(theta0))} deg the "
                          f"arm never reaches theta = {num(math.degrees(theta))} deg (it swings "
@@ -204,13 +196,15 @@ KIND = Kind(
         Param("spin", "rate", "p", "steady spin of the rotor about the arm, positive from the "
               "shaft outward"),
         Param("arm_length", "length", "L", "distance from the shaft AB to the rotor's centre, "
-              "along the arm"),
-        Param("bearing_spacing", "length", "d", "distance between bearings A and B"),
+              "along the arm", positive=True, reason="shaft to the rotor's centre"),
+        Param("bearing_spacing", "length", "d", "distance between bearings A and B",
+              positive=True, reason="bearings at one point cannot take the gyroscopic couple"),
         Param("arm_position", "length", "a", "distance from A to the arm along the shaft "
               "(default midway)"),
         Param("theta", "angle", "theta", "angle of the arm from the upward vertical at which "
               "the forces are wanted"),
-        Param("theta0", "angle", "theta0", "release angle (from rest)", default="0 deg"),
+        Param("theta0", "angle", "theta0", "release angle (from rest)", default="0 deg",
+              range=(0.0, math.pi), bounds="[)"),
     ),
     answers=(
         AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces"),

@@ -251,22 +251,33 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
                rel(ps / ph, "=", q(s.spin / s.precession)))
 
 
+# why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
+# keeps the same checks for its own callers
+_SIDE = "H is taken along +Z and k on the side of H"
+_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="()", reason="at 0 the body spins steadily "
+               "about its axis, at 90 deg it turns about a transverse axis, neither wobbles; "
+               "above 90 deg take the axis k the other way (180 deg minus the angle)")
+
 KIND = Kind(
     name="torque_free",
     summary="axisymmetric body with no applied moment (space capsule, satellite, football, the "
             "Earth's free wobble): precession, spin, cones and periods",
     chapter="Eqs. 11.5-11.8 with H fixed; Euler's equations with no moment",
     params=(
-        Param("omega", "rate", "omega", "magnitude of the angular velocity"),
+        Param("omega", "rate", "omega", "magnitude of the angular velocity", positive=True,
+              reason=_SIDE),
         Param("omega_angle", "angle", "beta", "angle between omega and the symmetry axis "
-              "(0 to 90 deg)"),
+              "(0 to 90 deg)", **_WOBBLE),
         Param("nutation_angle", "angle", "theta", "angle between H and the symmetry axis "
-              "(0 to 90 deg)"),
+              "(0 to 90 deg)", **_WOBBLE),
         Param("axial_rate", "rate", "omega_z", "component of omega along the symmetry axis "
-              "(positive)"),
-        Param("precession", "rate", "phidot", "rate of the symmetry axis about H (positive)"),
+              "(positive)", positive=True, reason=_SIDE),
+        Param("precession", "rate", "phidot", "rate of the symmetry axis about H (positive)",
+              positive=True, reason=_SIDE),
         Param("spin", "rate", "psidot", "spin relative to the precessing frame: positive for "
-              "I > J, negative for J > I (or a magnitude, with precession_sense)"),
+              "I > J, negative for J > I (or a magnitude, with precession_sense)", nonzero=True,
+              reason="with J != I the body always spins relative to its precessing frame, "
+              "psidot = (I - J) / I omega_z"),
         Param("precession_sense", "word", "sense", "the books' words: direct (spin and "
               "precession the same way, I > J) or retrograde (opposite, J > I); spin is then "
               "a magnitude", choices=("direct", "retrograde"),

@@ -30,7 +30,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Sym, atan, cos, sin
 from ..core.prose import cross, deriv, names, plus, q, qvec, rel, tup
-from ..core.work import Work, num
+from ..core.work import Work
 
 #: the machine's axes and the symbols its prose names (values are in the steps' trees)
 x, y, z = names("x y z")
@@ -38,19 +38,8 @@ m0, g0, h0, v0, R0, N0, F0, G0, theta0 = names("m g h v R N F G theta")
 H0, C0, wp0, Cg0, Cc0 = names("H C omega_p C_g C_c")
 
 
-def positive(given: Given, *keys: str) -> None:
-    for key in keys:
-        if given[key] <= 0:
-            raise InputError(f"{key} must be positive, got {num(given[key])}", key=f"given.{key}")
-
-
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     given = vehicle_data(given, work, 'wheel', 'engine')
-    positive(given, "mass", "g", "cg_height", "wheel_radius", "turn_radius")
-    for key in ("wheel_inertia", "engine_inertia", "gear_ratio", "speed"):
-        if given[key] < 0:
-            raise InputError(f"{key} cannot be negative, got {num(given[key])}",
-                             key=f"given.{key}")
     m, g, h = given["mass"], given["g"], given["cg_height"]
     Iw, rw, IE = given["wheel_inertia"], given["wheel_radius"], given["engine_inertia"]
     G, sense = given["gear_ratio"], given.word("engine_sense", "same")
@@ -133,19 +122,21 @@ KIND = Kind(
     chapter="Eq. 11.29, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
     uses_body=False,
     params=(
-        Param("mass", "mass", "m", "total mass of the machine with its rider"),
-        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
-        Param("cg_height", "length", "h", "height of the centre of mass above the road, upright"),
+        Param("mass", "mass", "m", "total mass of the machine with its rider", positive=True),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
+        Param("cg_height", "length", "h", "height of the centre of mass above the road, upright",
+              positive=True),
         Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each road wheel about "
-              "its axle"),
-        Param("wheel_radius", "length", "r_w", "radius of the road wheels"),
+              "its axle", nonnegative=True),
+        Param("wheel_radius", "length", "r_w", "radius of the road wheels", positive=True),
         Param("engine_inertia", "inertia", "I_E", "moment of inertia of the engine's rotating "
-              "parts", default="0 kg*m^2"),
-        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1"),
+              "parts", default="0 kg*m^2", nonnegative=True),
+        Param("gear_ratio", "dimensionless", "G", "engine speed / wheel speed", default="1",
+              nonnegative=True),
         Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
               "engine's sense of rotation relative to the wheels", choices=("same", "opposite")),
-        Param("speed", "speed", "v", "speed of the machine"),
-        Param("turn_radius", "length", "R", "radius of the curve"),
+        Param("speed", "speed", "v", "speed of the machine", nonnegative=True),
+        Param("turn_radius", "length", "R", "radius of the curve", positive=True),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
     ) + vehicle_params('wheel', 'engine'),

@@ -187,5 +187,6 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
         if key in problem.given.defaulted:
             text += " (default)"
         lines.append(GivenLine(key, param.symbol, text, value,
-                               units.si_text(param.dimension), note))
+                               units.si_text(param.dimension), note,
+                               symbol_expr=param.symbol_tree))
     return lines
