@@ -23,11 +23,6 @@ from gyro_cli.solving.solve import solve_file
 ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
-#: kinds whose every equation step is an expression tree (the others are migrating)
-TREE_KINDS = {"aeroplane", "bicycle", "gyrocompass", "gyro_drift", "earth_precession",
-              "released_top", "steady_precession", "torque_free", "rate_gyro", "ship",
-              "two_wheeler", "four_wheeler", "rolling_disk", "gyroscopic_torque",
-              "swinging_rotor", "euler_angles"}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
@@ -54,9 +49,7 @@ def _check_equations(doc: dict, kind: str) -> int:
     count = 0
     for section in doc["steps"]:
         for eq in section["equations"]:
-            if eq["expr"] is None:
-                assert kind not in TREE_KINDS, (doc["file"], eq)
-                continue
+            assert eq["expr"] is not None, (doc["file"], kind, eq)  # every step a tree
             value = _eval(eq["expr"], eq["symbols"])
             assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
                 (doc["file"], eq["symbol"], eq["expr"], value, eq["value"])
@@ -130,22 +123,20 @@ def test_top_rev_per_s_divides_by_a_bracketed_negative_product():
     assert not any(TEXT_JUXTAPOSED.search(line) for line in lines), lines
 
 
-@pytest.mark.parametrize("kind", sorted(TREE_KINDS))
-def test_migrated_kinds_parse_no_formula_text(kind, tmp_path, monkeypatch):
-    """A kind written as trees is typeset without the formula parser."""
-    path = tmp_path / f"{kind}.yaml"
-    path.write_text(template(kind))
-    result = solve_file(str(path))
-    calls: list[str] = []
-    real = writeup.try_parse
-    monkeypatch.setattr(writeup, "try_parse", lambda text, units=True: calls.append(text)
-                        or real(text, units))
-    for section in result.solution.sections:
-        for step in section.steps:
-            if step.formula:
-                writeup._step_pieces(step)
-    lhs = {step.symbol for section in result.solution.sections for step in section.steps}
-    assert set(calls) <= lhs, calls  # only the steps' left-hand sides, no formula
+def test_render_reads_no_formula_text():
+    """Issue 21's acceptance: no parser of formula text in render/, no text substitution
+    left in the package, and a step's formula is a tree or nothing."""
+    package = ROOT / "gyro_cli"
+    assert not (package / "render" / "mathparse.py").exists()
+    for path in package.rglob("*.py"):
+        text = path.read_text()
+        assert "fold_signs" not in text and "def substitute" not in text, path
+        assert "try_parse" not in text and "mathparse" not in text, path
+    from gyro_cli.core.work import Work
+
+    work = Work()
+    with pytest.raises(TypeError, match="a formula is a tree"):
+        work.step("M", "m g l sin(theta)")
 
 
 def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):

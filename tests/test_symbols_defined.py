@@ -338,16 +338,26 @@ def test_the_walk_finds_what_the_issue_reported():
         work = Work()
         work.given += [GivenLine(s, s, "1", 1.0, "") for s in given]
         for kind, *args in lines:
-            getattr(work, kind)(*args)
+            if kind == "value":  # a step that shows its value only
+                symbol, value, unit, note = args
+                work.step(symbol, value=value, unit=unit, note=note)
+            else:
+                getattr(work, kind)(*args)
         return work.solution()
 
-    bad = solution(("step", "M", "m g l sin(theta)"), ("check", "applied D sin(theta) = 1 N m"))
+    from gyro_cli.core.expr import sin
+    from gyro_cli.core.prose import names, q, rel
+
+    m, g, l, theta, D, AG, L, a, G = names("m g l theta D AG L a G")
+    bad = solution(("step", "M", m * g * l * sin(theta)),
+                   ("check", "applied ", rel(D * sin(theta), "=", q(1.0, "N m"))))
     assert [name for name, _ in undefined(bad)] == ["D"]
-    assert undefined(solution(("step", "D", "m g l"), ("check", "applied D sin(theta) = 1"))) == []
-    assert [n for n, _ in undefined(solution(("step", "a", "AG")))] == ["AG"]
-    named = solution(("text", "G: the centre of mass"),
-                     ("step", "a", "", "", 0.1, "m", "", "from bearing A to G"),
-                     ("step", "b", "L - a"), given=("L", "A"))
+    assert undefined(solution(("step", "D", m * g * l),
+                              ("check", "applied ", rel(D * sin(theta), "=", 1)))) == []
+    assert [n for n, _ in undefined(solution(("step", "a", AG)))] == ["AG"]
+    named = solution(("text", G, ": the centre of mass"),
+                     ("value", "a", 0.1, "m", "from bearing A to G"),
+                     ("step", "b", L - a), given=("L", "A"))
     assert undefined(named) == []
     # a line may define what it uses; a chain defines each member followed by '='
     assert undefined(solution(("text", "T = 2 pi / Omega, where Omega is the rate"))) == []

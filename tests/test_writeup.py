@@ -186,5 +186,5 @@ def test_file_keys_in_prose_stay_words(monkeypatch):
     """`bearing_forces` in a note is a key of the file: words, "bearing forces"."""
     from gyro_cli.kinds import get
 
-    monkeypatch.setitem(writeup._KEYS, 0, writeup.file_keys(get("gyroscopic_torque")))
+    monkeypatch.setattr(writeup, "_KEYS", [writeup.file_keys(get("gyroscopic_torque"))])
     assert writeup.words("bearing_forces lists A and B").startswith("bearing forces lists")

@@ -319,7 +319,7 @@ def _given_table(result: Result, level: int) -> str:
     solution = result.solution
     rows = []
     for g in solution.given:
-        symbol = symbol_node(g.symbol)
+        symbol = symbol_node(g.symbol, g.symbol_expr)
         sym = _math(symbol) if symbol is not None else escape(g.symbol)
         text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
         note = f" ({escape(g.note)})" if g.note else ""

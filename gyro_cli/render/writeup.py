@@ -451,7 +451,7 @@ def _markdown(result: Result) -> str:
         lines += [f"> {_prose(note, True)}", ""]
     lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
-        lines.append(f"| ${symbol_latex(g.symbol)}$ | "
+        lines.append(f"| ${symbol_latex(g.symbol, g.symbol_expr)}$ | "
                      f"{_md_cell(_given_cell(g, True))} | ${_si(g)}$ |")
     for section in solution.sections:
         lines += ["", f"### {_title(section, True)}", ""]
@@ -507,7 +507,7 @@ def _latex(result: Result, level: str) -> str:
     lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
-        lines.append(f"${symbol_latex(g.symbol)}$ & {_given_cell(g, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${symbol_latex(g.symbol, g.symbol_expr)}$ & {_given_cell(g, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
         lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]
