@@ -27,6 +27,14 @@ PROSE_KINDS = {"aeroplane", "bicycle", "earth_precession", "euler_angles", "four
                "gyro_drift", "gyrocompass", "gyroscopic_torque", "rate_gyro", "released_top",
                "rolling_disk", "ship", "swinging_rotor", "torque_free", "two_wheeler"}
 
+#: kinds whose section titles are words and trees where they hold maths (steady_precession
+#: joins when its titles are written so)
+TITLE_KINDS = PROSE_KINDS - {"steady_precession"}
+#: titles the parser reads maths in that are words: a year, a problem's number
+TITLE_WORDS = {"Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)",
+               "preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)",
+               "Counterweight on the pivoted arm (problem 11/4)"}
+
 H, U, W, E, lam, alpha, I_v, addot = names("H U Omega E lambda alpha I_v alphaddot")
 
 
@@ -259,7 +267,10 @@ def test_prose_kinds_write_every_formula_in_a_sentence_as_a_tree(kind, tmp_path)
         keys = writeup.file_keys(result.problem.kind)  # the file's keys are words, as rendered
         lines = [s for sec in result.solution.sections for s in sec.steps] + \
             list(result.solution.checks)
-        for text in [s.text for s in lines if s.prose is None and s.text] + \
+        titles = [sec.title for sec in result.solution.sections
+                  if sec.prose is None and sec.title not in TITLE_WORDS] \
+            if kind in TITLE_KINDS else []
+        for text in [s.text for s in lines if s.prose is None and s.text] + titles + \
                 [w for w in result.solution.warnings if w not in result.solution.warning_prose]:
             words = keys.sub("key", text) if keys else text
             maths = [str(p) for is_math, p in spans(words) if is_math]
@@ -296,6 +307,17 @@ def test_a_section_title_of_words_and_trees():
     result = _result_with(work)
     assert r"with $\ddot{\theta} = 0$" in writeup.latex(result)
     assert "with <math>" in html.worked_answer(result)
+
+
+def test_us_units_convert_the_quantities_in_a_section_title():
+    work = Work()
+    work.section("At ", rel(names("v")[0], "=", q(5.0, "m/s", label="5")), ": the eigenvalues")
+    work.text("x")
+    result = _result_with(work)
+    assert result.solution.sections[0].title == "At v = 5 m/s: the eigenvalues"
+    us = to_us(result)
+    assert us.solution.sections[0].title == "At v = 16.40 ft/s: the eigenvalues"
+    assert r"$v = 16.40\,\mathrm{ft/s}$" in writeup.latex(us)
 
 
 def _result_with(work):

@@ -70,7 +70,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
               "from above): ", rel(wp_, "=", qvec(wp, "rad/s")))
 
-    work.section("Gyroscopic couple, C = omega_p x H")
+    work.section("Gyroscopic couple, ", rel(C_, "=", cross(wp_, H_)))
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
     if not math.isfinite(C):
         raise InputError("these data are outside what gyro can compute reliably in double "

@@ -24,7 +24,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Num, Sym, absolute, cos, sin
-from ..core.prose import fn, matrix, names, prime, q, rel, tup
+from ..core.prose import bracket, fn, matrix, names, prime, q, rel, tup
 from ..core.work import GivenLine, Work, num
 
 # key -> (dimension, symbol, meaning); order of Table 1.
@@ -72,7 +72,6 @@ LIMITS: dict[str, dict] = {
     **{f"I{f}{a}": {"positive": True, "reason": _FRAME} for f in "BH" for a in ("xx", "yy", "zz")},
 }
 PRESET = "benchmark"
-Q = "(phi, delta)"
 
 
 # ---- input ------------------------------------------------------------------
@@ -190,7 +189,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   rel(S_R, "=", S_F, "=", 0), " wherever ", I_Ryy / r_R, " and ", I_Fyy / r_F,
                   " enter (", C1, " and ", K2, ").")
 
-    work.section("The whole bicycle T about the rear contact point (Eqs. A 1-A 5)")
+    work.section("The whole bicycle ", *names("T"), " about the rear contact point (Eqs. A 1-A 5)")
     S = _symbols(p)
     mR, mB, mH, mF = S["mR"], S["mB"], S["mH"], S["mF"]
     xB, zB, xH, zH, rR, rF, w, c, lam = (S[k] for k in ("xB", "zB", "xH", "zH", "rR", "rF",
@@ -214,7 +213,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
          + mF * w ** 2, "kg*m^2", note=("for the wheels ", rel(*names("I_Rzz"), "=", *names("I_Rxx")),
                                          " and ", rel(*names("I_Fzz"), "=", *names("I_Fxx"))))
 
-    work.section("The front assembly A = front frame H + front wheel F (Eqs. A 6-A 15)")
+    A_, H_, F_ = names("A H F")
+    # the assembly named in words: its parts are bodies, not terms of a sum
+    work.section("The front assembly ", A_, " = front frame ", H_, " + front wheel ", F_,
+                 " (Eqs. A 6-A 15)")
     mA = step("m_A", mH + mF, "kg")
     xA = step("x_A", (xH * mH + w * mF) / mA, "m")
     zA = step("z_A", (zH * mH - rF * mF) / mA, "m")
@@ -243,7 +245,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         step("S_T", Sym("S_R", t.SR, "kg m") + Sym("S_F", t.SF, "kg m"), "kg m")
     step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
 
-    work.section("The matrices (Eqs. A 20-A 23), rows and columns " + Q)
+    work.section("The matrices (Eqs. A 20-A 23), rows and columns ", tup(phi, delta))
     (I_Txx, I_Txz, I_Tzz, I_All, I_Alx, I_Alz, mu_, S_T, S_F, S_A, m_T, z_T, w_,
      lam_) = names("I_Txx I_Txz I_Tzz I_All I_Alx I_Alz mu S_T S_F S_A m_T z_T w lambda")
     sep = ";  "
@@ -270,7 +272,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(rel(K2, "=", matrix(m.K2, "kg", sig=10)))
 
     coeffs = bike.characteristic(m, g)
-    work.section("The characteristic equation: det(M s^2 + v C1 s + g K0 + v^2 K2) = 0")
+    work.section("The characteristic equation: ",
+                 rel(fn("det", M_ * S_ ** 2 + V * C1 * S_ + g_ * K0 + V ** 2 * K2), "=", 0))
     a = names("a0 a1 a2 a3 a4")
     a_k, H3 = names("a_k H3")
     work.text(rel(a[4] * S_ ** 4 + a[3] * S_ ** 3 + a[2] * S_ ** 2 + a[1] * S_ + a[0], "=", 0),
@@ -288,7 +291,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               rel(fn("H3", V), "=", 0), " (weave speed).")
 
     stab = bike.stability(m, g)
-    work.section("Self-stable speeds (v > 0)")
+    work.section("Self-stable speeds (", rel(V, ">", 0), ")")
     work.text(rel(fn("H3", V), "=", _poly(bike.hurwitz(coeffs))))
     # the speeds are roots of H3(v) and a0(v), conditions rather than formulas: value steps
     for v in stab.weave:
@@ -308,7 +311,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     if gyroscopic:
         plain = bike.stability(bike.matrices(p, gyroscopic=False), g)
-        work.section("The wheels' gyroscopic share (S_R = S_F = 0: no spin angular momentum)")
+        S_R, S_F = names("S_R S_F")
+        work.section("The wheels' gyroscopic share (", rel(S_R, "=", S_F, "=", 0),
+                     ": no spin angular momentum)")
         work.text("with the wheels' spin angular momentum: ", *_speeds(stab.stable))
         work.text("without it (gyroscopic: false): ", *_speeds(plain.stable))
         work.text(*_share(stab, plain))
@@ -316,8 +321,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if speed is not None:
         ev = bike.eigenvalues(m, speed, g)
         state = bike.motion(ev)
-        work.section(f"At v = {speed:.12g} m/s: the eigenvalues of the state matrix "
-                     "[[0, I], [-M^-1 (g K0 + v^2 K2), -M^-1 v C1]]")
+        I_ = names("I")[0]
+        work.section("At ", rel(V, "=", q(speed, "m/s", label=f"{speed:.12g}")),
+                     ": the eigenvalues of the state matrix ",
+                     bracket(bracket(0, I_), bracket(-M_ ** -1 * (g_ * K0 + V ** 2 * K2),
+                                                     -M_ ** -1 * V * C1)))
         work.text(*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
         for e in ev:
             work.text(rel(S_, "=", q(_eigen(e), "1/s", sig=12)))

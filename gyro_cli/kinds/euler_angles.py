@@ -239,8 +239,11 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
     missing = [k for k in omega_keys if k not in given]
     omega = tuple(given.get(k, 0.0) for k in omega_keys)
     rates = _inverse(sequence, a2, a3, omega, raise_singular=True)
-    work.section("Euler rates from omega (Eq. 11.8 solved for the rates)" if sequence == "zxz"
-                 else "Euler rates from p, q, r (yaw, pitch, roll)")
+    if sequence == "zxz":
+        work.section("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)")
+    else:
+        p_, q_, r_ = names("p q r")
+        work.section("Euler rates from ", p_, ", ", q_, ", ", r_, " (yaw, pitch, roll)")
     if missing:
         work.text(f"not given, taken as zero: {', '.join(missing)}")
     if sequence == "zxz":
@@ -289,8 +292,9 @@ def _inverse(sequence: str, a2: float, a3: float, omega, raise_singular: bool):
 
 def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3: float,
                  work: Work) -> None:
-    work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz, with "
-                 "omega_xyz the body components")
+    w_XYZ, R_, w_xyz = names("omega_XYZ R omega_xyz")
+    work.section("Angular velocity in the fixed frame: ", rel(w_XYZ, "=", R_ * w_xyz), ", with ",
+                 w_xyz, " the body components")
     if sequence == "zxz":
         p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
         ph, th = _sym("phi", a1), _sym("theta", a2)

@@ -79,7 +79,8 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
                          "drift_period) to find the largest moment", key="given.moment")
     if ways == ["moment"]:
         M = given["moment"]
-        work.section("Drift: steady precession of the spin axis about y (Eq. 11.29)")
+        work.section("Drift: steady precession of the spin axis about ", *names("y"),
+                     " (Eq. 11.29)")
         rate = work.step("Omega_d", Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"), unit="rad/s",
                          note=_equals(gd.drift_rate(M, H) / DEG_PER_HOUR, "deg/h"))
         return M, rate
@@ -90,7 +91,8 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
                          note=_equals(2 * math.pi / T / DEG_PER_HOUR, "deg/h"))
     else:
         rate = given["drift_rate"]
-    work.section("Largest disturbing moment for the drift budget: M = H Omega_d")
+    M_, H_, W_d = names("M H Omega_d")
+    work.section("Largest disturbing moment for the drift budget: ", rel(M_, "=", H_ * W_d))
     M = work.step("M", Sym("H", abs(H), "kg m^2/s") * Sym("Omega_d", rate, "rad/s"), unit="N*m")
     work.text("any larger moment about ", *names("x"), " makes the spin axis drift faster "
               "than the budget")

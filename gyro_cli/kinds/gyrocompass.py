@@ -59,7 +59,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if H < 0:
         work.text("spin < 0: the spin vector points along the other end of the axis; that end "
                   "seeks north")
-    work.section("Moment about the vertical (angular momentum about U on the rotating Earth)")
+    work.section("Moment about the vertical (angular momentum about ", U,
+                 " on the rotating Earth)")
     M_U, I_v, adot, addot, H0 = names("M_U I_v alphadot alphaddot H")
     work.text(M_U, ": the moment about the vertical on the rotor and its gimbal; ", I_v,
               ": their moment of inertia about the vertical; ", adot, ": the rate of the "

@@ -186,8 +186,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   L, " is the distance between the wheels (rails)")
     spin = _spin(given, work)
     precession = _precession(given, J, I, spin, theta, work)
-    work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
     H = names("H")[0]
+    work.section("Moment on the rotor, ", rel(deriv(H), "=", cross(W * K, H)),
+                 " (Eqs. 11.28-11.29 generalised)")
     work.text(H, ": the angular momentum of the rotor about its centre of mass; ", W, ": the "
               "precession rate about ", K)
     psidot, Omega = _rate("psidot", spin), _rate("Omega", precession)

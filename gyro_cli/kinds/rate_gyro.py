@@ -80,7 +80,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at ",
               rel(th, "=", 0), "; positive senses chosen so that a positive input rate deflects "
               "the gimbal positively. All results are for small gimbal angles.")
-    work.section("Gimbal equation (Eq. 11.29: Q_theta = H Omega about the output axis)")
+    work.section("Gimbal equation (Eq. 11.29: ", rel(names("Q_theta")[0], "=", H0 * Om),
+                 " about the output axis)")
     work.text(Om, ": the input rate, about the input axis; ", th, ": the gimbal's deflection "
               "about the output axis; ", I0, ": the gimbal's moment of inertia about that "
               "axis; ", k0, ": the spring's stiffness; ", c0, ": the damping coefficient")

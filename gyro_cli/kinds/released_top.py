@@ -90,7 +90,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 def _constants(top, start, nut, omega_z: float, work: Work) -> None:
     c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
-    work.section("Constants of the motion at t = 0 (Eqs. 11.8, 11.14, 11.17, 11.18)")
+    work.section("Constants of the motion at ", rel(t_, "=", 0),
+                 " (Eqs. 11.8, 11.14, 11.17, 11.18)")
     work.text("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
               theta, " from the upward vertical to the axis through the centre of mass, ",
               rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
@@ -128,8 +129,8 @@ def _syms(top, start, nut, omega_z: float) -> dict[str, Expr]:
 
 def _roots(top, start, nut, work: Work) -> None:
     a, al, b, g = nut.a, nut.alpha, nut.beta, nut.gamma
-    work.section("Energy integral in u = cos(theta), Eq. 11.19")
     U = names("u")[0]  # u: a root below
+    work.section("Energy integral in ", rel(U, "=", cos(theta)), ", Eq. 11.19")
     work.text(rel(udot ** 2, "=", fn("f", U), "=", (1 - U ** 2) * (alpha_ - a_ * U)
                   - (beta_ - gamma_ * U) ** 2), "    (Eq. 11.19)")
     work.text("       ", rel(None, "=", a_ * U ** 3 - (alpha_ + gamma_ ** 2) * U ** 2
@@ -176,7 +177,8 @@ def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
 def _released(top, start, nut, omega_z: float, work: Work) -> None:
     from ..physics.nutation import released_u1
 
-    work.section("Released from rest (phidot0 = thetadot0 = 0): Eqs. 11.22-11.25")
+    work.section("Released from rest (", rel(*names("phidot0"), "=", thetadot0, "=", 0),
+                 "): Eqs. 11.22-11.25")
     P1, P2 = names("P1 P2")
     work.text(rel(P1, "=", P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2), ", ",
               rel(fn("f", u), "=", (u2 - u) * bracket(a_ * (1 - u ** 2) - gamma_ ** 2
@@ -212,7 +214,9 @@ def _period(nut, work: Work) -> None:
     d1, d2, d3 = nut.d_roots
     K = complete_K(d1, d2, d3)
     width, span = _differences(nut)
-    work.section("Nutation period: f(u) = a (u - u1)(u - u2)(u - u3), u = u1 + (u2 - u1) sin^2 s")
+    work.section("Nutation period: ",
+                 rel(fn("f", u), "=", a_ * (u - u1) * (u - u2) * (u - u3)), ", ",
+                 rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2))
     du = names("du")[0]
     work.text(rel(T_, "=", 2 * integral(u1, u2, du / sqrt(fn("f", u))), "=",
                   4 * fn("K", m_) / sqrt(a_ * (u3 - u1))), ", where ", K_, " is the complete "
@@ -254,7 +258,8 @@ def _precession(start, nut, work: Work) -> None:
     d1, d2, d3 = nut.d_roots
     u1_, u2_, _ = nut.u_roots
     U = names("u")[0]  # u: the limit below
-    work.section("Precession: phidot = (beta - gamma u) / (1 - u^2) (Eqs. 11.16, 11.26)")
+    work.section("Precession: ", rel(phidot, "=", (beta_ - gamma_ * U) / (1 - U ** 2)),
+                 " (Eqs. 11.16, 11.26)")
     for u, terms, where in zip(("u1", "u2"), limit_precession_terms(nut, start),
                                ("theta_max", "theta_min")):
         tree = _limit_precession(nut, u, terms)
@@ -303,7 +308,7 @@ def _precession(start, nut, work: Work) -> None:
 
 
 def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
-    work.section("Fast-top approximation (gamma^2 >> a)")
+    work.section("Fast-top approximation (", rel(gamma_ ** 2, ">>", a_), ")")
     w_z = names("omega_z")[0]
     ratio = nut.gamma ** 2 / nut.a
     work.step(gamma_ ** 2 / a_, value=ratio, note=("(the approximation needs this ",
@@ -336,8 +341,9 @@ def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> No
 
 def _sleeping(top, start, nut, omega_z_: float, find: frozenset[str], work: Work) -> None:
     upright = start.theta0 < 1
-    work.section("Sleeping top: the axis on the vertical (theta0 = "
-                 f"{'0' if upright else '180'} deg, thetadot0 = 0)")
+    work.section("Sleeping top: the axis on the vertical (",
+                 rel(theta0, "=", q(0.0 if upright else math.pi, "deg", exact=True)), ", ",
+                 rel(thetadot0, "=", 0), ")")
     work.text(rel(u, "=", Num(1 if upright else -1)), " is a double root of ", fn("f", u), "; ",
               phi, " is undefined on the vertical (", phidot, " and ", psidot, " only add up to ",
               omega_z, "); ", rel(theta_max, "=", theta_min, "=", theta0), ": the axis stays "

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from ..core.errors import InputError
 from ..core.expr import Chain, Expr, Let, Sym, absolute, cos, sin, sqrt
 from ..core.given import Given
-from ..core.prose import cross, names, q, rel, signed
+from ..core.prose import cross, deriv, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
 from ..physics.algebra import cos_theta
@@ -124,7 +124,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               k, " (from the shaft toward the rotor positive), 'normal' components along ", n,
               ". Labelled ", A, ", ", B, " in that order. The bearings exert no moment about ",
               AB, ".")
-    work.section("Swing: energy and moments about AB")
+    work.section("Swing: energy and moments about ", AB)
     m_, g_, L_, d_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("d", d, "m")
     th, th0, p_ = Sym("theta", theta, "deg"), Sym("theta0", theta0, "deg"), Sym("p", p, "rad/s")
     kG2_, kz2_ = _inertia_trees(body, m)
@@ -139,15 +139,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.step("thetadot", value=f.thetadot, unit="rad/s")
     work.step("thetaddot", Chain(m_ * g_ * L_ * sin(th) / I_O_, g_ * L_ * sin(th) / per_m),
               unit="rad/s^2", ref="moments about AB")
-    work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
     H_O, I_O0, J0, d0 = names("H_O I_O J d")
+    work.section("Gyroscopic couple: ",
+                 rel(deriv(H_O), "=", I_O0 * tdd * i + J0 * p0 * td * cross(i, k)))
     work.text(rel(H_O, "=", I_O0 * td * i + J0 * p0 * k), ": the angular momentum about ", O,
               ", the centre of the shaft; ", k, " turns about ", i, " at ", td)
     thetadot = Sym("thetadot", f.thetadot, "rad/s")
     couple = work.step(J0 * p0 * td / d0, Let(Sym("J", J, "kg m^2"), m_ * kz2_) * p_ * thetadot
                        / d_, unit="N", note=("+ at ", B, ", - at ", A, ", along the arm"))
-    work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
     a_G, L0 = names("a_G L")
+    F_A, F_B, m0, g0 = names("F_A F_B m g")
+    work.section("Bearing forces: free body of the rotor, ",
+                 rel(F_A + F_B, "=", m0 * a_G + m0 * g0), " (up)")
     work.text(a_G, ": the acceleration of the rotor's centre ", G, ", ", L0 * tdd, " across the "
               "arm and ", L0 * td ** 2, " toward the shaft")
     # the common parts, shown by their definitions in the formula and by value after it

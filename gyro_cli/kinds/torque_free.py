@@ -133,7 +133,8 @@ def _representable(s: FreeMotion, known: dict[str, float]) -> None:
 
 def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
     """The steps that turn the two given quantities into omega_z and beta."""
-    work.section(f"The motion from {' and '.join(WORDS[k] for k in known)}")
+    given_syms = [piece for k in known for piece in (" and ", *names(WORDS[k]))][1:]
+    work.section("The motion from ", *given_syms)
     J_, I_ = _sym("J", J), _sym("I", I)
     beta, theta, wz = _sym("beta", s.omega_angle), _sym("theta", s.nutation_angle), \
         _sym("omega_z", s.axial_rate)

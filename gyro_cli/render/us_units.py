@@ -106,6 +106,16 @@ def _answer(answer: Reported) -> Reported:
     return dataclasses.replace(answer, values=values, unit=US[answer.unit][0])
 
 
+def _section(section: Section) -> Section:
+    """The section with its steps converted, and the quantities of a title of words and
+    trees (``At v = 5 m/s: ...``)."""
+    steps = [_step(step) for step in section.steps]
+    if section.prose is None:
+        return Section(section.title, steps)
+    prose = section.prose.map(lambda tree: map_values(tree, _us_symbol, _us_quantity))
+    return Section(prose.text, steps, prose=prose)
+
+
 def to_us(result: Result, given: bool = True) -> Result:
     """The result with its worked answer in slug, ft and lbf; ``given=False`` keeps the
     Given lines in SI (JSON's ``si_value`` is SI by contract)."""
@@ -113,8 +123,7 @@ def to_us(result: Result, given: bool = True) -> Result:
     warnings, warning_prose = _warnings(solution)
     converted = Solution(
         given=[_given(g) for g in solution.given] if given else list(solution.given),
-        sections=[Section(s.title, [_step(step) for step in s.steps], prose=s.prose)
-                  for s in solution.sections],
+        sections=[_section(s) for s in solution.sections],
         answers=solution.answers,
         warnings=warnings,
         checks=[_step(step) for step in solution.checks],
