@@ -383,3 +383,25 @@ def test_labelled_symbols_and_a_primed_function_are_words_beside_maths():
     primed = fn("U_eff''", theta) / names("I")[0]
     assert Prose((primed,)).text == "U_eff''(theta) / I"
     assert writeup.prose_latex(Prose((primed,))) == r"$U_{\mathrm{eff}}'' (\theta)/I$"
+
+
+BODY_PROBLEMS = {  # the body's own sentences: a rate per kilogram, l = 0, impossible inertias
+    "per_kg": "k_axial: 0.84 in\n  k_pivot: 1.80 in\n  cg_distance: 1.5 in",
+    "no_mass_at_centre": "J: 0.004 kg m^2\n  I_cg: 0.003 kg m^2\n  cg_distance: 0 m",
+    "pivot_inertia_too_small": "mass: 2 kg\n  k_axial: 5 cm\n  k_pivot: 5 cm\n  cg_distance: 10 cm",
+    "J_too_large": "mass: 2 kg\n  J: 0.01 kg m^2\n  I_cg: 0.002 kg m^2\n  cg_distance: 0.1 m",
+}
+
+
+@pytest.mark.parametrize("name", sorted(BODY_PROBLEMS))
+def test_the_body_writes_its_sentences_and_warnings_as_trees(name, tmp_path):
+    path = tmp_path / f"{name}.yaml"
+    path.write_text(f"id: {name}\nkind: steady_precession\ngiven:\n  {BODY_PROBLEMS[name]}\n"
+                    "  spin: 3000 rpm\n  theta: 60 deg\nfind:\n  precession: rpm\n")
+    result = solve_file(str(path))
+    body = [s for sec in result.solution.sections if sec.title == "Body" for s in sec.steps]
+    texts = [s.text for s in body if s.prose is None and s.text] + \
+        [w for w in result.solution.warnings if w not in result.solution.warning_prose]
+    for text in texts:
+        assert not [p for is_math, p in spans(text) if is_math], (name, text)
+    assert any(s.prose is not None for s in body) or result.solution.warning_prose, name
