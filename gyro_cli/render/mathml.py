@@ -20,7 +20,8 @@ from html import escape
 from typing import cast
 
 from .mathparse import GREEK, _symbolic, dotted, spans, tokens, try_parse
-from .mathprint import PRECEDENCE, Printer, _fold, _rightmost, _strip, precedence, split_symbol
+from .mathprint import (PRECEDENCE, Printer, _fold, _rightmost, _strip, beside_text,
+                        precedence, split_symbol)
 from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym, Tuple
 
 __all__ = ["MathMLPrinter", "formula", "math_element", "symbol_mathml", "prose"]
@@ -230,6 +231,9 @@ class MathMLPrinter(Printer):
             return _row(left, _mo("×"), factor)
         if op in (".", "*"):
             return _row(left, _mo("⋅"), factor)
+        if beside_text(node):  # words beside maths, one row: phidot_slow at 30 deg
+            return _row(*(text[6:-7] if beside_text(side) and text.startswith("<mrow>") else text
+                          for text, side in ((left, node.left), (factor, node.right))))
         if _starts_number(node.right):
             return _row(left, _mo("⋅"), factor)
         if isinstance(_rightmost(node.left), Quantity) or _starts_function(node.right):
