@@ -30,7 +30,7 @@ PROSE_KINDS = {"aeroplane", "bicycle", "earth_precession", "euler_angles", "four
 
 #: kinds whose section titles are words and trees where they hold maths (steady_precession
 #: joins when its titles are written so)
-TITLE_KINDS = PROSE_KINDS - {"steady_precession"}
+TITLE_KINDS = PROSE_KINDS
 #: titles the parser reads maths in that are words: a year, a problem's number
 TITLE_WORDS = {"Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)",
                "preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)",

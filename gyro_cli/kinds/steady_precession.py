@@ -23,7 +23,7 @@ from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
 from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, exp, sin as sin_, sqrt
-from ..core.prose import deriv, fn, names, paren, q, rel, text as prose_text, words
+from ..core.prose import deriv, fn, names, paren, prime, q, rel, text as prose_text, words
 from ..core.work import Work, num, qty
 from ..physics import steady
 
@@ -337,8 +337,9 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
 def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float, D: float,
                       driver: str, work: Work) -> None:
     cos = cos_theta(theta)
-    work.section("Steady precession, Eq. 11.13 with thetaddot = 0 and "
-                 "omega_z = psidot + phidot cos(theta)")
+    _tdd, _wz, _psd, _phd, _th = names("thetaddot omega_z psidot phidot theta")
+    work.section("Steady precession, Eq. 11.13 with ", rel(_tdd, "=", 0), " and ",
+                 rel(_wz, "=", _psd + _phd * cos_(_th)))
     moment = _moment_of(driver)
     if rate == "spin":
         spin = given["spin"]
@@ -419,7 +420,8 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if "precession" in rates:
         precession = given["precession"]
     else:
-        work.section("Precession from the two rates, omega_z = psidot + phidot cos(theta)")
+        _wz, _psd, _phd, _th = names("omega_z psidot phidot theta")
+        work.section("Precession from the two rates, ", rel(_wz, "=", _psd + _phd * cos_(_th)))
         if abs(cos) < 1e-12:
             raise InputError("at theta = 90 deg omega_z = psidot whatever the precession: give "
                              "the precession itself", key="given.axial_rate")
@@ -434,7 +436,9 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if precession == 0:
         raise InputError("a steady precession of zero needs no spin and no moment: give a "
                          "non-zero precession", key="given.precession")
-    work.section("Spin for the given precession, Eq. 11.13 with thetaddot = 0 solved for psidot")
+    _tdd, _psd = names("thetaddot psidot")
+    work.section("Spin for the given precession, Eq. 11.13 with ", rel(_tdd, "=", 0),
+                 " solved for ", _psd)
     work.text(rel(J_ * psd * phd + (J_ - I_) * cos_(th) * phd**2, "=", _moment_of(driver)))
     J_v, I_v, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
     spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
@@ -454,7 +458,9 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
             driver: str, work: Work) -> None:
     cos, sin = cos_theta(theta), math.sin(theta)
-    work.section("Moment for the motion, Eq. 11.13 with thetaddot = 0 (dH/dt = M)")
+    _tdd, _H, _M = names("thetaddot H M")
+    work.section("Moment for the motion, Eq. 11.13 with ", rel(_tdd, "=", 0), " (",
+                 rel(deriv(_H), "=", _M), ")")
     phidot, th_v = _rate("phidot", precession), _theta(theta)
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th_v), unit="rad/s",
                       ref="Eq. 11.8")
@@ -512,8 +518,9 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
                          "one of spin, axial_rate, precession): how an applied moment changes "
                          "with theta is not given", key="find.stability")
     answer = work.answers["precession"]
-    work.section("Stability: small changes of theta with p_phi and p_psi fixed, "
-                 "theta'' + k theta = 0")
+    _th, _pph, _pps, _k = names("theta p_phi p_psi k")
+    work.section("Stability: small changes of ", _th, " with ", _pph, " and ", _pps, " fixed, ",
+                 rel(prime(_th, 2) + _k * _th, "=", 0))
     k, U, p_phi, p_psi, sigma, t = names("k U_eff p_phi p_psi sigma t")
     work.text(rel(k, "=", fn("U_eff''", th) / I_, "=",
                   ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + phd**2 * sin_(th)**2, ">=", 0),
@@ -543,7 +550,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    work.section("Gyroscopic approximation (the I phidot cos(theta) term dropped)")
+    _I, _phd, _th = names("I phidot theta")
+    work.section("Gyroscopic approximation (the ", _I * _phd * cos_(_th), " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
