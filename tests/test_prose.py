@@ -25,11 +25,12 @@ from gyro_cli.solving.solve import solve_file
 #: kinds whose every line of prose that holds maths is written as words and trees
 PROSE_KINDS = {"aeroplane", "bicycle", "earth_precession", "euler_angles", "four_wheeler",
                "gyro_drift", "gyrocompass", "gyroscopic_torque", "rate_gyro", "released_top",
-               "rolling_disk", "ship", "swinging_rotor", "torque_free", "two_wheeler"}
+               "rolling_disk", "ship", "steady_precession", "swinging_rotor", "torque_free",
+               "two_wheeler"}
 
 #: kinds whose section titles are words and trees where they hold maths (steady_precession
 #: joins when its titles are written so)
-TITLE_KINDS = PROSE_KINDS - {"steady_precession"}
+TITLE_KINDS = PROSE_KINDS
 #: titles the parser reads maths in that are words: a year, a problem's number
 TITLE_WORDS = {"Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)",
                "preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)",
@@ -380,3 +381,49 @@ def test_us_units_convert_each_component_of_a_vector(tmp_path):
     sol = dataclass_result(solve_file(str(path)), work)
     assert to_us(sol).solution.sections[-1].steps[-1].text == \
         "couple (0, 1.000, 0) lbf ft at (1.000, 0, 0) rad/s"
+
+
+def test_labelled_symbols_and_a_primed_function_are_words_beside_maths():
+    """``phidot (slow)``, ``phidot_slow at 30 deg``: words beside maths are no product (no
+    dot, no invisible times); ``U_eff''(theta)`` is the primed name applied."""
+    from gyro_cli.core.prose import map_values, words
+    from gyro_cli.render.exprnodes import symbol_node
+    from gyro_cli.render.mathml import MathMLPrinter
+    from gyro_cli.render.mathprint import LatexPrinter
+
+    phidot, slow, theta, U = names("phidot phidot_slow theta U_eff")
+    at = words("at", slow, q(math.pi / 6, "deg", exact=True))
+    assert Prose((at,)).text == "phidot_slow at 30 deg"
+    assert LatexPrinter(False).doprint(symbol_node("", at)) == \
+        r"\dot{\phi}_{\mathrm{slow}} \text{ at } 30^{\circ}"
+    mathml = MathMLPrinter().doprint(symbol_node("", at))
+    assert "<mtext> at </mtext><mrow><mn>30</mn>" in mathml and "&#x2062;" not in mathml
+    assert "&#x2062;" not in MathMLPrinter().doprint(symbol_node("", words("(slow)", phidot)))
+    us = map_values(words("at", slow, q(1.3558179483314004, "N m")), lambda s: s,
+                    lambda v: q(v.si / 1.3558179483314004, "lbf ft"))
+    assert Prose((us,)).text == "phidot_slow at 1.000 lbf ft"
+    primed = fn("U_eff''", theta) / names("I")[0]
+    assert Prose((primed,)).text == "U_eff''(theta) / I"
+    assert writeup.prose_latex(Prose((primed,))) == r"$U_{\mathrm{eff}}'' (\theta)/I$"
+
+
+BODY_PROBLEMS = {  # the body's own sentences: a rate per kilogram, l = 0, impossible inertias
+    "per_kg": "k_axial: 0.84 in\n  k_pivot: 1.80 in\n  cg_distance: 1.5 in",
+    "no_mass_at_centre": "J: 0.004 kg m^2\n  I_cg: 0.003 kg m^2\n  cg_distance: 0 m",
+    "pivot_inertia_too_small": "mass: 2 kg\n  k_axial: 5 cm\n  k_pivot: 5 cm\n  cg_distance: 10 cm",
+    "J_too_large": "mass: 2 kg\n  J: 0.01 kg m^2\n  I_cg: 0.002 kg m^2\n  cg_distance: 0.1 m",
+}
+
+
+@pytest.mark.parametrize("name", sorted(BODY_PROBLEMS))
+def test_the_body_writes_its_sentences_and_warnings_as_trees(name, tmp_path):
+    path = tmp_path / f"{name}.yaml"
+    path.write_text(f"id: {name}\nkind: steady_precession\ngiven:\n  {BODY_PROBLEMS[name]}\n"
+                    "  spin: 3000 rpm\n  theta: 60 deg\nfind:\n  precession: rpm\n")
+    result = solve_file(str(path))
+    body = [s for sec in result.solution.sections if sec.title == "Body" for s in sec.steps]
+    texts = [s.text for s in body if s.prose is None and s.text] + \
+        [w for w in result.solution.warnings if w not in result.solution.warning_prose]
+    for text in texts:
+        assert not [p for is_math, p in spans(text) if is_math], (name, text)
+    assert any(s.prose is not None for s in body) or result.solution.warning_prose, name

@@ -14,8 +14,8 @@ from typing import Callable
 from .errors import InputError
 from .params import Param
 from .expr import Expr, Sym
-from .prose import names
-from .work import Work, qty
+from .prose import names, q, rel
+from .work import Work
 
 G_SI = 9.81         # m/s^2, the format's default
 G_US = 32.2 * 0.3048  # 32.2 ft/s^2 in m/s^2, the textbook value for US data
@@ -221,9 +221,10 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
         m = values["mass"]
     elif per_kg:
         m = 1.0
+        mass = names("m")[0]
         work.text("no mass given: the inertias and the gravity moment are all proportional to "
-                  "the mass m, so the rates do not depend on it; the work below is per "
-                  "kilogram (m = 1 kg)")
+                  "the mass ", mass, ", so the rates do not depend on it; the work below is per "
+                  "kilogram (", rel(mass, "=", q(1.0, "kg", exact=True)), ")")
     elif "weight" not in values:
         m = None
     else:
@@ -259,19 +260,22 @@ def _check_inertias(values: dict, m: float | None, J: float | None, I_cg: float 
     if I_pivot is not None and l and m is not None:
         if I_pivot < m * l * l * (1 - INERTIA_SLACK):
             key = "k_pivot" if "k_pivot" in values else "I_pivot"
-            work.warn(f"{key}: I about the fixed point = {qty(I_pivot, 'kg*m^2')} is less than "
-                      f"m l^2 = {qty(m * l * l, 'kg*m^2')}, which no rigid body can have "
-                      "(parallel axes: I = I_G + m l^2, with I_G about the centre of mass); "
-                      "solved with the "
-                      "data as given")
+            I, I_G, m_, l_ = names("I I_G m l")
+            work.warn(f"{key}: ", I, " about the fixed point ",
+                      rel(None, "=", q(I_pivot, "kg m^2")), " is less than ",
+                      rel(m_ * l_**2, "=", q(m * l * l, "kg m^2")), ", which no rigid body can "
+                      "have (parallel axes: ", rel(I, "=", I_G + m_ * l_**2), ", with ", I_G,
+                      " about the centre of mass); solved with the data as given")
         if I_cg is None:
             I_cg = max(I_pivot - m * l * l, 0.0)
     if J is not None and I_cg is not None and J > 2 * I_cg * (1 + INERTIA_SLACK):
         key = "J" if "J" in values else "k_axial" if "k_axial" in values else "shape"
-        work.warn(f"{key}: J = {qty(J, 'kg*m^2')} exceeds twice the transverse moment I_G about "
-                  f"the centre of mass, 2 I_G = {qty(2 * I_cg, 'kg*m^2')}, which no rigid body "
-                  "can have (the axial moment is at most the sum of the two transverse ones); "
-                  "solved with the data as given")
+        J_, I_G = names("J I_G")
+        work.warn(J_ if key == "J" else key, ": ", rel(J_, "=", q(J, "kg m^2")), " exceeds twice "
+                  "the transverse moment ", I_G, " about the centre of mass, ",
+                  rel(2 * I_G, "=", q(2 * I_cg, "kg m^2")), ", which no rigid body can have (the "
+                  "axial moment is at most the sum of the two transverse ones); solved with the "
+                  "data as given")
 
 
 def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Work) -> float | None:
@@ -331,7 +335,8 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
     if I_cg is not None and l is not None and m is None:
         # no mass given (none needed): only a fixed point at the centre of mass is known
         return work.step("I", Sym("I_G", I_cg, "kg m^2"), unit="kg*m^2", substitute=False,
-                         note="(l = 0: the fixed point is the centre of mass)") if l == 0 else None
+                         note=("(", rel(names("l")[0], "=", 0), ": the fixed point is the centre "
+                               "of mass)")) if l == 0 else None
     if I_cg is not None and l is not None:
         return work.step("I", Sym("I_G", I_cg, "kg m^2") + Sym("m", m, "kg") * Sym("l", l, "m")
                          ** 2, unit="kg*m^2", note="(parallel axes, about the fixed point)")

@@ -285,16 +285,17 @@ class Paren(Typeset):
 
 class Words(Typeset):
     """Words standing for a symbol, ``drift angle``, or labelling one: ``phidot (slow)``
-    is ``Words("(slow)", of=phidot)``."""
+    is ``Words("(slow)", of=phidot)``; words may lead to maths, ``phidot_slow at 30 deg``
+    is ``Words("at", of=phidot_slow, then=q(...))``."""
 
-    __slots__ = ("words", "of")
+    __slots__ = ("words", "of", "then")
     binding = ATOM
 
-    def __init__(self, words: str, of: Expr | None = None) -> None:
-        self.words, self.of = words, of
+    def __init__(self, words: str, of: Expr | None = None, then: Expr | None = None) -> None:
+        self.words, self.of, self.then = words, of, then
 
     def children(self) -> tuple[Expr, ...]:
-        return () if self.of is None else (self.of,)
+        return tuple(x for x in (self.of, self.then) if x is not None)
 
 
 class Prime(Typeset):
@@ -366,10 +367,11 @@ def plus(x: Expr) -> Sign:
     return Sign("+", x)
 
 
-def words(text: str, of: Expr | None = None) -> Words:
+def words(text: str, of: Expr | None = None, then: Expr | None = None) -> Words:
     """A symbol written as words (``words("drift angle")``), or a symbol with a label
-    (``words("(slow)", phidot)``, printed ``phidot (slow)``)."""
-    return Words(text, of)
+    (``words("(slow)", phidot)``, printed ``phidot (slow)``), the label leading to maths
+    (``words("at", phidot_slow, q(pi / 6, "deg", True))``, ``phidot_slow at 30 deg``)."""
+    return Words(text, of, then)
 
 
 def paren(x: Expr) -> Paren:
@@ -463,7 +465,8 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
         parts = [quantity(Quantity(c, expr.unit)) for c in expr.si]
         return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
     if isinstance(expr, Words):
-        return expr if expr.of is None else Words(expr.words, map_values(expr.of, sym, quantity))
+        return Words(expr.words, *(None if x is None else map_values(x, sym, quantity)
+                                   for x in (expr.of, expr.then)))
     if isinstance(expr, (Paren, Prime)):
         changed = map_values(expr.arg, sym, quantity)
         return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
@@ -558,7 +561,7 @@ class ProseText(TextPrinter):
         return "(" + ", ".join(self._print(x) for x in node.items) + ")"
 
     def _print_Fn(self, node: Fn) -> str:
-        space = "" if node.name.isidentifier() else " "  # d/dt (H . U)
+        space = "" if node.name.rstrip("'").isidentifier() else " "  # d/dt (H . U), U''(x)
         sep = ", " if node.sep == "," else node.sep
         return f"{node.name}{space}({sep.join(self._print(a) for a in node.args)})"
 
@@ -580,7 +583,8 @@ class ProseText(TextPrinter):
         return node.text
 
     def _print_Words(self, node: Words) -> str:
-        return node.words if node.of is None else f"{self._print(node.of)} {node.words}"
+        text = node.words if node.of is None else f"{self._print(node.of)} {node.words}"
+        return text if node.then is None else f"{text} {self._print(node.then)}"
 
     def _print_Paren(self, node: Paren) -> str:
         return f"({self._print(node.arg)})"

@@ -22,7 +22,8 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
-from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, sin as sin_, sqrt
+from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, exp, sin as sin_, sqrt
+from ..core.prose import deriv, fn, names, paren, prime, q, rel, text as prose_text, words
 from ..core.work import Work, num, qty
 from ..physics import steady
 
@@ -48,6 +49,36 @@ def _abs_rate(value: float) -> Expr:
 
 def _theta(theta: float) -> Sym:
     return Sym("theta", theta, "deg")
+
+
+# ---- the symbols of the sentences (known by name only) -------------------------
+
+th, psd, phd, wz, H, I_, J_, D_ = names("theta psidot phidot omega_z H I J D")
+
+
+def _moment_of(driver: str) -> Expr:
+    """The moment per unit sin(theta) in a sentence: m g l (gravity) or D (applied)."""
+    m, g, l = names("m g l")
+    return m * g * l if driver == "m g l" else D_
+
+
+def _deg(degrees: float) -> Expr:
+    """An angle of the text, 90 deg, with the digits it needs."""
+    return q(math.radians(degrees), "deg", exact=True)
+
+
+def _label(symbol: "str | Expr", label: str) -> "str | Expr":
+    """A step's symbol with its root's label: ``phidot (slow)``; the symbol alone without."""
+    if not label:
+        return symbol
+    return words(f"({label})", names(symbol)[0] if isinstance(symbol, str) else symbol)
+
+
+def _percent(fraction: float, digits: int) -> Expr:
+    """``5.6`` of ``5.6% apart``: a number rounded to ``digits`` figures."""
+    return q(fraction * 100, label=f"{fraction * 100:.{digits}g}")
+
+
 FASTEST_REAL_ROTOR = 1e5 * RPM  # beyond this no real top or gyroscope spins
 
 
@@ -126,15 +157,16 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "I_cg or k_cg (with cg_distance) or a shape (only at theta = 90 deg "
                          "does it drop out)", key="given.I_pivot")
     work.section("Conventions (errata)")
-    gravity = ", V = m g l cos(theta) (Eq. 11.11)" if "moment" not in given and body.l else ""
-    work.text("Euler angles z-x-z; theta from the upward vertical to the axis through the centre "
-              f"of mass{gravity}; spin psidot is relative to the precessing frame, which turns "
-              "about the vertical at the precession rate phidot; H: the angular momentum about "
-              "the fixed point; omega_z = psidot + phidot cos(theta) (Eq. 11.8); I is about the "
-              "fixed point")
+    gravity = (", ", rel(names("V")[0], "=", _moment_of("m g l") * cos_(th)), " (Eq. 11.11)") \
+        if "moment" not in given and body.l else ()
+    work.text("Euler angles z-x-z; ", th, " from the upward vertical to the axis through the "
+              "centre of mass", *gravity, "; spin ", psd, " is relative to the precessing frame, "
+              "which turns about the vertical at the precession rate ", phd, "; ", H, ": the "
+              "angular momentum about the fixed point; ", rel(wz, "=", psd + phd * cos_(th)),
+              " (Eq. 11.8); ", I_, " is about the fixed point")
     if body.I_pivot is None and cos == 0:
-        work.text("theta = 90 deg: cos(theta) = 0, so the transverse inertia I drops out of "
-                  "Eq. 11.13 and is not needed")
+        work.text(rel(th, "=", _deg(90)), ": ", rel(cos_(th), "=", 0), ", so the transverse "
+                  "inertia ", I_, " drops out of Eq. 11.13 and is not needed")
     D, driver = _driver(given, theta, work)
     if not rates:
         if find - {"min_spin"}:
@@ -163,9 +195,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         fast = [v for v in work.answers[name].si_values if abs(v) > FASTEST_REAL_ROTOR] \
             if name in work.answers else []
         if fast:
-            work.warn(f"{name} of {num(max(map(abs, fast)) / RPM)} rpm is more than any real top "
-                      "or gyroscope reaches (about 1e5 rpm): the data describe no practical "
-                      "motion")
+            work.warn(f"{name} of ", q(max(map(abs, fast)) / RPM, "rpm"), " is more than any "
+                      "real top or gyroscope reaches (about ",
+                      q(FASTEST_REAL_ROTOR / RPM, "rpm", label="1e5"), "): the data describe no "
+                      "practical motion")
 
 
 # What the introductory books' formula Omega = m g l / (J omega) answers without an angle.
@@ -196,15 +229,18 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.cg_distance")
     work.section("No angle given: the gyroscopic approximation")
     symbol = {"spin": "psidot", "axial_rate": "omega_z", "precession": "psidot"}[rates[0]]
-    work.text("theta, the angle of the axis from the upward vertical, is not given; phidot, the "
-              "precession rate about the vertical; omega, the spin (here " + symbol + ")")
-    work.text("gravity's moment m g l sin(theta) turns the horizontal part J omega sin(theta) of "
-              "the spin angular momentum at phidot, so phidot = m g l / (J omega) whatever "
-              "theta is, once the I phidot cos(theta) term of Eq. 11.13 is dropped (exact at "
-              "theta = 90 deg, where cos(theta) = 0)")
+    w, mgl = names("omega")[0], _moment_of("m g l")
+    work.text(th, ", the angle of the axis from the upward vertical, is not given; ", phd, ", the "
+              "precession rate about the vertical; ", w, ", the spin (here ", names(symbol)[0],
+              ")")
+    work.text("gravity's moment ", mgl * sin_(th), " turns the horizontal part ",
+              J_ * w * sin_(th), " of the spin angular momentum at ", phd, ", so ",
+              rel(phd, "=", mgl / (J_ * w)), " whatever ", th, " is, once the ",
+              I_ * phd * cos_(th), " term of Eq. 11.13 is dropped (exact at ",
+              rel(th, "=", _deg(90)), ", where ", rel(cos_(th), "=", 0), ")")
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
                   * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11, per unit sin(theta)")
-    J_ = Sym("J", body.J, "kg m^2")
+    J_v = Sym("J", body.J, "kg m^2")
     rate = rates[0]
     if rate == "precession":
         precession = given["precession"]
@@ -212,7 +248,7 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError("a precession of 0 needs no spin: give a non-zero precession",
                              key="given.precession")
         omega = work.step("omega_approx", _driver_tree(D, "m g l") / (
-            J_ * _rate("phidot", precession)), unit="rad/s",
+            J_v * _rate("phidot", precession)), unit="rad/s",
             note="the spin the approximation needs")
         work.answer("spin", "psidot", [omega], "rate", ["approximation"])
         work.answer("axial_rate", "omega_z", [omega], "rate", ["approximation"])
@@ -224,7 +260,7 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError(f"the approximation m g l / (J {symbol}) needs a non-zero {rate}",
                              key=f"given.{rate}")
         precession = work.step("phidot_approx", _driver_tree(D, "m g l") / (
-            J_ * _rate(symbol, omega)), unit="rad/s")  # steady.precession_approx
+            J_v * _rate(symbol, omega)), unit="rad/s")  # steady.precession_approx
         for name, symbol_ in (("precession_approx", "phidot_approx"), ("precession", "phidot")):
             work.answer(name, symbol_, [precession], "rate", ["approximation"])
         work.answer(rate, symbol, [omega], "rate")
@@ -235,17 +271,18 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     if missing:
         raise InputError(f"{missing[0]} needs the angle theta of the axis from the upward "
                          "vertical (omega_z = psidot + phidot cos(theta))", key="given.theta")
-    work.warn("no theta given: the answers use the gyroscopic approximation m g l / (J omega), "
-              "exact only with the axis horizontal (theta = 90 deg); the exact roots of "
-              "Eq. 11.13 need theta" + _spread(body, rate, given[rate], D, work))
+    work.warn("no ", th, " given: the answers use the gyroscopic approximation ",
+              mgl / (J_ * w), ", exact only with the axis horizontal (", rel(th, "=", _deg(90)),
+              "); the exact roots of Eq. 11.13 need ", th,
+              *_spread(body, rate, given[rate], D, work))
 
 
-def _spread(body, rate: str, value: float, D: float, work: Work) -> str:
+def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
     """How far the exact slow root moves between 30 and 90 deg, as a clause for the warning."""
     if body.I_pivot is None:
-        work.text("the exact roots need theta and the transverse inertia about the pivot "
+        work.text("the exact roots need ", th, " and the transverse inertia about the pivot "
                   "(I_pivot, k_pivot, I_cg or k_cg, or a shape), neither given")
-        return " and the transverse inertia I"
+        return (" and the transverse inertia ", I_)
     I, J = body.I_pivot, body.J
     slow = {}
     for degrees in SPREAD_ANGLES:
@@ -257,20 +294,23 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> str:
             precession_from_axial_rate(I, J, theta, value, D)
         slow[degrees] = min(roots, key=abs) if roots else None
     name = "spin" if rate == "precession" else "slow precession root"
-    work.text("for comparison, the exact " + name + " of Eq. 11.13 (thetaddot = 0) with the "
-              f"transverse inertia I = {qty(I, 'kg*m^2')} at three angles:")
+    work.text("for comparison, the exact " + name + " of Eq. 11.13 (",
+              rel(names("thetaddot")[0], "=", 0), ") with the transverse inertia ",
+              rel(I_, "=", q(I, "kg m^2")), " at three angles:")
+    exact_root = names("psidot" if rate == "precession" else "phidot_slow")[0]
     for degrees, root in slow.items():
-        work.step(f"{'psidot' if rate == 'precession' else 'phidot_slow'} at {degrees:g} deg",
-                  value=root, unit="rad/s",
+        work.step(words("at", exact_root, _deg(degrees)), value=root, unit="rad/s",
                   note="exact, Eq. 11.13" if root is not None else
                   "no steady precession: below the least spin (Eq. 11.21)")
     exact = slow[90.0]
     if slow[30.0] is None:
-        return (f"; for these data the exact {name} is {qty(exact, 'rad/s')} at 90 deg and "
-                "there is none at 30 deg (the spin is below the least, Eq. 11.21)")
+        return ("; for these data the exact " + name + " is ", q(exact, "rad/s"), " at ",
+                _deg(90), " and there is none at ", _deg(30), " (the spin is below the least, "
+                "Eq. 11.21)")
     apart = abs(slow[30.0] - exact) / abs(exact)
-    return (f"; for these data the exact {name} is {qty(slow[30.0], 'rad/s')} at 30 deg and "
-            f"{qty(exact, 'rad/s')} at 90 deg, {apart * 100:.2g}% apart")
+    return ("; for these data the exact " + name + " is ", q(slow[30.0], "rad/s"), " at ",
+            _deg(30), " and ", q(exact, "rad/s"), " at ", _deg(90), ", ", _percent(apart, 2),
+            "% apart")
 
 
 def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
@@ -285,8 +325,8 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
         D = work.step("D", Sym("M", M, "N m") / sin_(_theta(theta)), unit="N*m")
         return D, "D"
     if body.l == 0:
-        work.text("l = 0 and no applied moment: a torque-free body, D = 0, where D is the "
-                  "moment per unit sin(theta)")
+        work.text(rel(names("l")[0], "=", 0), " and no applied moment: a torque-free body, ",
+                  rel(D_, "=", 0), ", where ", D_, " is the moment per unit ", sin_(th))
         return 0.0, "D"
     work.step("M", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
               * Sym("l", body.l, "m") * sin_(_theta(theta)), unit="N*m",
@@ -297,31 +337,35 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
 def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float, D: float,
                       driver: str, work: Work) -> None:
     cos = cos_theta(theta)
-    work.section("Steady precession, Eq. 11.13 with thetaddot = 0 and "
-                 "omega_z = psidot + phidot cos(theta)")
+    _tdd, _wz, _psd, _phd, _th = names("thetaddot omega_z psidot phidot theta")
+    work.section("Steady precession, Eq. 11.13 with ", rel(_tdd, "=", 0), " and ",
+                 rel(_wz, "=", _psd + _phd * cos_(_th)))
+    moment = _moment_of(driver)
     if rate == "spin":
         spin = given["spin"]
         a, b = (J - I) * cos, J * spin
-        work.text(f"(J - I) cos(theta) phidot^2 + J psidot phidot - {driver} = 0")
-        work.text(f"({qty(a, 'kg m^2')}) phidot^2 + ({qty(b, 'kg m^2/s')}) phidot "
-                  f"- {qty(D, 'N m')} = 0")
+        work.text(rel((J_ - I_) * cos_(th) * phd**2 + J_ * psd * phd - moment, "=", 0))
+        work.text(rel(paren(q(a, "kg m^2")) * phd**2 + paren(q(b, "kg m^2/s")) * phd
+                      - q(D, "N m"), "=", 0))
         roots = precession_from_spin(I, J, theta, spin, D)
-        least, formula = min_spin(I, J, theta, D), f"2 sqrt((I - J) {driver} cos(theta)) / J"
+        least, formula = min_spin(I, J, theta, D), 2 * sqrt((I_ - J_) * moment * cos_(th)) / J_
         symbol = "psidot"
     else:
         axial = given["axial_rate"]
-        work.text(f"phidot^2 cos(theta) - gamma phidot + a / 2 = 0, gamma = J omega_z / I, "
-                  f"a = 2 {driver} / I    (Eq. 11.20)")
-        J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
-        work.step("gamma", J_ * _rate("omega_z", axial) / I_, unit="rad/s")
-        work.step("a", 2 * _driver_tree(D, driver) / I_, unit="1/s^2")
+        gamma, a_ = names("gamma a")
+        work.text(rel(phd**2 * cos_(th) - gamma * phd + a_ / 2, "=", 0), ", ",
+                  rel(gamma, "=", J_ * wz / I_), ", ", rel(a_, "=", 2 * moment / I_),
+                  "    (Eq. 11.20)")
+        J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+        work.step("gamma", J_v * _rate("omega_z", axial) / I_v, unit="rad/s")
+        work.step("a", 2 * _driver_tree(D, driver) / I_v, unit="1/s^2")
         roots = precession_from_axial_rate(I, J, theta, axial, D)
-        least, formula = min_axial_rate(I, J, theta, D), f"2 sqrt(I {driver} cos(theta)) / J"
+        least, formula = min_axial_rate(I, J, theta, D), 2 * sqrt(I_ * moment * cos_(th)) / J_
         symbol, spin = "omega_z", None
     if D == 0 and 0.0 in roots:
         roots = [r for r in roots if r != 0.0]
-        work.text("no moment: phidot = 0 (the body spinning about a fixed axis) also solves the "
-                  "equation; it is no precession and is left out")
+        work.text("no moment: ", rel(phd, "=", 0), " (the body spinning about a fixed axis) also "
+                  "solves the equation; it is no precession and is left out")
         if not roots:
             raise InputError(f"with no moment there is no steady precession at theta = "
                              f"{num(math.degrees(theta))} deg other than phidot = 0 (a "
@@ -337,14 +381,15 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         raise InputError(
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
             f"steady precession at theta = {num(math.degrees(theta))} deg: the least is "
-            f"{_least(symbol)} = {formula} = {qty(least, 'rad/s')} ({num(least / RPM)} rpm), "
-            "Eq. 11.21", key=f"given.{rate}")
+            f"{_least(symbol)} = {prose_text(formula)} = {qty(least, 'rad/s')} "
+            f"({num(least / RPM)} rpm), Eq. 11.21", key=f"given.{rate}")
     if least > 0:
-        work.text(f"real roots exist because {symbol} >= {_least(symbol)} = {formula} = "
-                  f"{qty(least, 'rad/s')}    (Eq. 11.21)")
+        work.text("real roots exist because ", rel(names(symbol)[0], ">=",
+                                                   names(_least(symbol))[0], "=", formula, "=",
+                                                   q(least, "rad/s")), "    (Eq. 11.21)")
     if len(roots) == 1:
-        work.text("one root: the phidot^2 term vanishes" + (" (theta = 90 deg)"
-                                                             if abs(cos) < 1e-12 else " (I = J)"))
+        work.text("one root: the ", phd**2, " term vanishes (",
+                  rel(th, "=", _deg(90)) if abs(cos) < 1e-12 else rel(I_, "=", J_), ")")
     labels = _labels(roots)
     if abs(cos) == 0 and len(roots) == 1 and D:
         omega = given["spin"] if rate == "spin" else given["axial_rate"]
@@ -353,13 +398,13 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
             "psidot", omega)), unit="rad/s", ref="Eq. 11.13 at theta = 90 deg, exact")]
     else:
         for root, label in zip(roots, labels):
-            work.step(f"phidot ({label})" if label else "phidot", value=root, unit="rad/s")
+            work.step(_label("phidot", label), value=root, unit="rad/s")
     work.answer("precession", "phidot", roots, "rate", labels)
     spins = [spin] * len(roots) if spin is not None else \
         [given["axial_rate"] - p * cos for p in roots]
     if spin is None:  # the spin at each root, from the given axial rate (Eq. 11.8)
         for p, s, label in zip(roots, spins, labels or [""] * len(roots)):
-            work.step(f"psidot ({label})" if label else "psidot",
+            work.step(_label("psidot", label),
                       _rate("omega_z", given["axial_rate"]) - _rate("phidot", p)
                       * cos_(_theta(theta)), unit="rad/s", ref="Eq. 11.8")
     axials = [s + p * cos for s, p in zip(spins, roots)]
@@ -375,7 +420,8 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if "precession" in rates:
         precession = given["precession"]
     else:
-        work.section("Precession from the two rates, omega_z = psidot + phidot cos(theta)")
+        _wz, _psd, _phd, _th = names("omega_z psidot phidot theta")
+        work.section("Precession from the two rates, ", rel(_wz, "=", _psd + _phd * cos_(_th)))
         if abs(cos) < 1e-12:
             raise InputError("at theta = 90 deg omega_z = psidot whatever the precession: give "
                              "the precession itself", key="given.axial_rate")
@@ -390,16 +436,18 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if precession == 0:
         raise InputError("a steady precession of zero needs no spin and no moment: give a "
                          "non-zero precession", key="given.precession")
-    work.section("Spin for the given precession, Eq. 11.13 with thetaddot = 0 solved for psidot")
-    work.text(f"J psidot phidot + (J - I) cos(theta) phidot^2 = {driver}")
-    J_, I_, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
-    spin = work.step("psidot", (_driver_tree(D, driver) - (J_ - I_) * cos_(_theta(theta))
-                                * phidot ** 2) / (J_ * phidot), unit="rad/s")
+    _tdd, _psd = names("thetaddot psidot")
+    work.section("Spin for the given precession, Eq. 11.13 with ", rel(_tdd, "=", 0),
+                 " solved for ", _psd)
+    work.text(rel(J_ * psd * phd + (J_ - I_) * cos_(th) * phd**2, "=", _moment_of(driver)))
+    J_v, I_v, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
+    spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
+                                * phidot ** 2) / (J_v * phidot), unit="rad/s")
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(_theta(theta)),
                       unit="rad/s", ref="Eq. 11.8")
     if spin < 0:
-        work.text("psidot < 0: the body spins against the sense that precession alone would "
-                  "need; the sign is the answer, not an error")
+        work.text(rel(psd, "<", 0), ": the body spins against the sense that precession alone "
+                  "would need; the sign is the answer, not an error")
     work.answer("precession", "phidot", [precession], "rate")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
@@ -410,16 +458,18 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
             driver: str, work: Work) -> None:
     cos, sin = cos_theta(theta), math.sin(theta)
-    work.section("Moment for the motion, Eq. 11.13 with thetaddot = 0 (dH/dt = M)")
-    phidot, th = _rate("phidot", precession), _theta(theta)
-    axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th), unit="rad/s",
+    _tdd, _H, _M = names("thetaddot H M")
+    work.section("Moment for the motion, Eq. 11.13 with ", rel(_tdd, "=", 0), " (",
+                 rel(deriv(_H), "=", _M), ")")
+    phidot, th_v = _rate("phidot", precession), _theta(theta)
+    axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th_v), unit="rad/s",
                       ref="Eq. 11.8")
-    J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
-    M = work.step("M", phidot * sin_(th) * (J_ * _rate("omega_z", axial) - I_ * phidot
-                                            * cos_(th)), unit="N*m")  # moment_required
+    J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+    M = work.step("M", phidot * sin_(th_v) * (J_v * _rate("omega_z", axial) - I_v * phidot
+                                              * cos_(th_v)), unit="N*m")  # moment_required
     if D:
-        work.text(f"of which {driver} sin(theta) = {qty(D * sin, 'N m')} is supplied; the rest, "
-                  f"{qty(M - D * sin, 'N m')}, must be applied")
+        work.text("of which ", rel(_moment_of(driver) * sin_(th), "=", q(D * sin, "N m")),
+                  " is supplied; the rest, ", q(M - D * sin, "N m"), ", must be applied")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
     work.answer("moment", "M", [M], "moment")
@@ -429,15 +479,15 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
     work.section("Least spin for steady precession (discriminant of Eq. 11.13; Eq. 11.21)")
     least = min_spin(I, J, theta, D)
     if least > 0:
-        J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+        J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
         # (I - J) and cos(theta) shown by value, as the chapter's Eq. 11.21 is worked
-        difference = Let(Sym("I_minus_J", I - J, "kg m^2"), I_ - J_)
+        difference = Let(Sym("I_minus_J", I - J, "kg m^2"), I_v - J_v)
         cos_value = Let(Sym("cos_theta", cos_theta(theta)), cos_(_theta(theta)))
-        work.step("psidot_min", 2 * sqrt(difference * _driver_tree(D, driver) * cos_value) / J_,
-                  unit="rad/s")
+        work.step("psidot_min", 2 * sqrt(difference * _driver_tree(D, driver) * cos_value)
+                  / J_v, unit="rad/s")
     else:
-        work.text(f"(I - J) {driver} cos(theta) <= 0: real roots for every spin, no least spin "
-                  "(psidot_min = 0)")
+        work.text(rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0), ": real roots for "
+                  "every spin, no least spin (", rel(names("psidot_min")[0], "=", 0), ")")
     work.answer("min_spin", "psidot_min", [least], "rate")
 
 
@@ -447,9 +497,10 @@ def _check(I: float, J: float, theta: float, spins: list[float], precessions: li
     written with the symbols of the steps (m g l, or D = M / sin(theta) when applied)."""
     for spin, precession in zip(spins, precessions):
         rate = moment_required(I, J, theta, spin, precession)
-        work.check(f"phidot = {qty(precession, 'rad/s')}: dH/dt = phidot sin(theta) (J omega_z - "
-                   f"I phidot cos(theta)) = {qty(rate, 'N m')}; applied {driver} sin(theta) = "
-                   f"{qty(D * math.sin(theta), 'N m')}")
+        work.check(rel(phd, "=", q(precession, "rad/s")), ": ",
+                   rel(deriv(H), "=", phd * sin_(th) * (J_ * wz - I_ * phd * cos_(th)), "=",
+                       q(rate, "N m")), "; applied ",
+                   rel(_moment_of(driver) * sin_(th), "=", q(D * math.sin(theta), "N m")))
 
 
 def _least(symbol: str) -> str:
@@ -467,25 +518,29 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
                          "one of spin, axial_rate, precession): how an applied moment changes "
                          "with theta is not given", key="find.stability")
     answer = work.answers["precession"]
-    work.section("Stability: small changes of theta with p_phi and p_psi fixed, "
-                 "theta'' + k theta = 0")
-    work.text("k = U_eff''(theta) / I = ((J omega_z - 2 I phidot cos(theta)) / I)^2 + "
-              "phidot^2 sin^2(theta) >= 0 (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady "
-              "precession of a heavy top about a fixed point is a minimum of U_eff, stable; a "
-              "change of p_phi or p_psi only moves it to a neighbouring steady precession; an "
-              "unstable root (k < 0) would grow as exp(sigma t) with the growth rate "
-              "sigma = sqrt(-k), and sigma = 0 for a stable one")
+    _th, _pph, _pps, _k = names("theta p_phi p_psi k")
+    work.section("Stability: small changes of ", _th, " with ", _pph, " and ", _pps, " fixed, ",
+                 rel(prime(_th, 2) + _k * _th, "=", 0))
+    k, U, p_phi, p_psi, sigma, t = names("k U_eff p_phi p_psi sigma t")
+    work.text(rel(k, "=", fn("U_eff''", th) / I_, "=",
+                  ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + phd**2 * sin_(th)**2, ">=", 0),
+              " (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady precession of a heavy top "
+              "about a fixed point is a minimum of ", U, ", stable; a change of ", p_phi, " or ",
+              p_psi, " only moves it to a neighbouring steady precession; an unstable root (",
+              rel(k, "<", 0), ") would grow as ", exp(sigma * t), " with the growth rate ",
+              rel(sigma, "=", sqrt(-k)), ", and ", rel(sigma, "=", 0), " for a stable one")
     words, rates = [], []
     for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
                                     answer.labels or [""] * len(answer.si_values)):
         verdict = top_steady_precession(I, J, theta, phidot, axial)
-        tag = f" ({label})" if label else ""
-        work.step(f"k{tag}", value=verdict.k, unit="1/s^2", note=verdict.word + (
-            f", theta oscillates at sqrt(k) = {qty(verdict.frequency, 'rad/s')}"
-            if verdict.frequency else ""))
+        work.step(_label("k", label), value=verdict.k, unit="1/s^2", note=(
+            verdict.word, ", ", th, " oscillates at ",
+            rel(sqrt(k), "=", q(verdict.frequency, "rad/s"))) if verdict.frequency else
+            verdict.word)
         if verdict.word == UNSTABLE:
-            work.warn(f"the steady precession phidot = {qty(phidot, 'rad/s')} is unstable: a "
-                      f"small disturbance grows as exp({num(verdict.growth_rate)} t / s)")
+            work.warn("the steady precession ", rel(phd, "=", q(phidot, "rad/s")), " is "
+                      "unstable: a small disturbance grows as ", exp(sigma * t), " with ",
+                      rel(sigma, "=", q(verdict.growth_rate, "1/s")))
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
@@ -495,7 +550,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    work.section("Gyroscopic approximation (the I phidot cos(theta) term dropped)")
+    _I, _phd, _th = names("I phidot theta")
+    work.section("Gyroscopic approximation (the ", _I * _phd * cos_(_th), " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
@@ -506,10 +562,12 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
         slow = min(exact.si_values, key=abs)
         if slow:
             apart = abs(value - slow) / abs(slow)
-            work.text("at theta = 90 deg the approximation is exact: it equals the root "
-                      f"{qty(slow, 'rad/s')}" if apart < 1e-12 else
-                      f"the approximation is {apart * 100:.3g}% from the slow root "
-                      f"{qty(slow, 'rad/s')}")
+            if apart < 1e-12:
+                work.text("at ", rel(th, "=", _deg(90)), " the approximation is exact: it equals "
+                          "the root ", q(slow, "rad/s"))
+            else:
+                work.text("the approximation is ", _percent(apart, 3), "% from the slow root ",
+                          q(slow, "rad/s"))
     work.answer("precession_approx", "phidot_approx", [value], "rate", ["approximation"])
     return value
 
@@ -519,8 +577,8 @@ def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float,
     """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
     value = _approximation(given, rate, J, theta, D, driver, work)
     work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
-              "`precession` is the gyroscopic approximation phidot_approx, not an exact "
-              "root of Eq. 11.13; the exact roots need I")
+              "`precession` is the gyroscopic approximation ", names("phidot_approx")[0],
+              ", not an exact root of Eq. 11.13; the exact roots need ", I_)
     cos = cos_theta(theta)
     spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
     work.answer("precession", "phidot", [value], "rate", ["approximation"])
@@ -557,51 +615,51 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
     rates, labels = answer.si_values, answer.labels or [""] * len(answer.si_values)
     l = body.l
     work.section("Motion of the centre of mass and the force at the pivot")
-    work.text("the centre of mass runs round a horizontal circle of radius l sin(theta) at "
-              "the rate phidot (theta constant)")
-    tags = [f" ({label})" if label else "" for label in labels]
+    work.text("the centre of mass runs round a horizontal circle of radius ",
+              names("l")[0] * sin_(th), " at the rate ", phd, " (", th, " constant)")
     if "precession_period" in find:
         if any(p == 0 for p in rates):
             raise InputError("the precession rate is 0: it never completes a turn",
                              key="find.precession_period")
-        for p, tag in zip(rates, tags):
-            work.step(f"T{tag}", 2 * PI / _abs_rate(p), unit="s")
+        for p, tag in zip(rates, labels):
+            work.step(_label("T", tag), 2 * PI / _abs_rate(p), unit="s")
         work.answer("precession_period", "T", [steady.precession_period(p) for p in rates],
                     "time", answer.labels)
     if "cg_speed" in find:
-        for p, tag in zip(rates, tags):
-            work.step(f"v_G{tag}", Sym("l", l, "m") * sin_(_theta(theta)) * _abs_rate(p),
+        for p, tag in zip(rates, labels):
+            work.step(_label("v_G", tag), Sym("l", l, "m") * sin_(_theta(theta)) * _abs_rate(p),
                       unit="m/s")
         work.answer("cg_speed", "v_G", [steady.cg_speed(l, theta, p) for p in rates], "speed",
                     answer.labels)
     if "cg_acceleration" in find or "pivot_force" in find:
-        for p, tag in zip(rates, tags):
-            work.step(f"a_G{tag}", Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p)
-                      ** 2, unit="m/s^2", note="toward the precession axis")
+        for p, tag in zip(rates, labels):
+            work.step(_label("a_G", tag), Sym("l", l, "m") * sin_(_theta(theta))
+                      * _rate("phidot", p) ** 2, unit="m/s^2", note="toward the precession axis")
         work.answer("cg_acceleration", "a_G", [steady.cg_acceleration(l, theta, p)
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        work.text("Newton's second law for the centre of mass, F + m g = m a_G, where F is the "
-                  "force of the support: it "
-                  "carries the weight and supplies the centripetal force")
-        values, names = [], []
-        for i, (p, tag) in enumerate(zip(rates, tags)):
+        F, m_, g_, aG = names("F m g a_G")
+        work.text("Newton's second law for the centre of mass, ", rel(F + m_ * g_, "=", m_ * aG),
+                  ", where ", F, " is the force of the support: it carries the weight and "
+                  "supplies the centripetal force")
+        values, parts = [], []
+        for i, (p, tag) in enumerate(zip(rates, labels)):
             up, toward, size = steady.pivot_force(m, g, l, theta, p)
             if i == 0:
                 work.step("F_vertical", Sym("m", m, "kg") * Sym("g", g, "m/s^2"), unit="N",
                           note="upward")
                 values.append(up)
-                names.append("vertical")
+                parts.append("vertical")
             a_G = Let(Sym("a_G", steady.cg_acceleration(l, theta, p), "m/s^2"),
                       Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p) ** 2)
-            work.step(f"F_horizontal{tag}", Sym("m", m, "kg") * a_G, unit="N",
+            work.step(_label("F_horizontal", tag), Sym("m", m, "kg") * a_G, unit="N",
                       note="toward the precession axis")
-            size = work.step(f"|F|{tag}", sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
+            size = work.step(_label(absolute(F), tag), sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
                 "F_horizontal", toward, "N") ** 2), unit="N", substitute=False)
             values += [toward, size]
-            names += [f"horizontal{tag}", f"magnitude{tag}"]
-        work.answer("pivot_force", "F", values, "force", names)
+            parts += [f"horizontal{_tag(tag)}", f"magnitude{_tag(tag)}"]
+        work.answer("pivot_force", "F", values, "force", parts)
         if body.I_pivot is not None and "moment" not in given_keys(work):
             I_G = body.I_pivot - m * l * l
             for p in rates:
@@ -609,13 +667,20 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                 spin = _spin_for(work, p)
                 axial = spin + p * cos_theta(theta)
                 rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
-                work.check(f"phidot = {qty(p, 'rad/s')}: moment of the pivot force about G, "
-                           f"with I_G = I - m l^2 = {qty(I_G, 'kg*m^2')} the transverse moment "
-                           "about G and H_G the angular momentum about G, "
-                           f"l (F_vertical sin(theta) + F_horizontal cos(theta)) = "
-                           f"{qty(l * (up * math.sin(theta) + toward * cos_theta(theta)), 'N m')}"
-                           f"; dH_G/dt = phidot sin(theta) (J omega_z - I_G phidot cos(theta)) = "
-                           f"{qty(rate, 'N m')}")
+                G, I_Gs, H_G, l_, F_v, F_h = names("G I_G H_G l F_vertical F_horizontal")
+                work.check(rel(phd, "=", q(p, "rad/s")), ": moment of the pivot force about ",
+                           G, ", with ", rel(I_Gs, "=", I_ - m_ * l_**2, "=", q(I_G, "kg m^2")),
+                           " the transverse moment about ", G, " and ", H_G, " the angular "
+                           "momentum about ", G, ", ",
+                           rel(l_ * (F_v * sin_(th) + F_h * cos_(th)), "=",
+                               q(l * (up * math.sin(theta) + toward * cos_theta(theta)), "N m")),
+                           "; ", rel(deriv(H_G), "=", phd * sin_(th) * (J_ * wz - I_Gs * phd
+                                                                         * cos_(th)), "=",
+                                     q(rate, "N m")))
+
+
+def _tag(label: str) -> str:
+    return f" ({label})" if label else ""
 
 
 def given_keys(work: Work) -> set[str]:

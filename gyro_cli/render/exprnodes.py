@@ -148,6 +148,10 @@ class NodePrinter:
         if node.name == "d/dt":  # the rate of change of its argument
             arg = self._print(node.args[0])
             return BinOp(" ", BinOp("/", Sym("d"), Sym("dt")), Group("(", arg))
+        if node.name.endswith("'"):  # U_eff''(theta): the primed name, then its arguments
+            name = node.name.rstrip("'")
+            return BinOp(" ", Prime(Sym(name), len(node.name) - len(name)),
+                         Group("(", Tuple(tuple(self._print(a) for a in node.args))))
         return Call(node.name, tuple(self._print(a) for a in node.args), sep=node.sep)
 
     def _print_Total(self, node: P.Total) -> Node:
@@ -198,6 +202,10 @@ class NodePrinter:
         return Quantity(shown, unit) if unit else shown  # type: ignore[arg-type]
 
     def _print_Words(self, node: P.Words) -> Node:
+        if node.then is not None:  # phidot_slow at 30 deg: the words spaced from both sides
+            words: Node = Text(node.words + " ") if node.of is None else \
+                BinOp(" ", self._print(node.of), Text(f" {node.words} "))
+            return BinOp(" ", words, self._print(node.then))
         if node.of is None:
             return Text(node.words)
         return BinOp(" ", self._print(node.of), Text(" " + node.words))

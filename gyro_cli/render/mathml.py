@@ -16,7 +16,8 @@ from __future__ import annotations
 import re
 from html import escape
 
-from .mathprint import PRECEDENCE, Printer, _fold, _rightmost, _strip, precedence, split_symbol
+from .mathprint import (PRECEDENCE, Printer, _fold, _rightmost, _strip, beside_text,
+                        precedence, split_symbol)
 from .mathtree import (GREEK, Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym, Tuple,
                        _symbolic, dotted, tokens)
 
@@ -223,6 +224,9 @@ class MathMLPrinter(Printer):
             return _row(left, _mo("×"), factor)
         if op in (".", "*"):
             return _row(left, _mo("⋅"), factor)
+        if beside_text(node):  # words beside maths, one row: phidot_slow at 30 deg
+            return _row(*(text[6:-7] if beside_text(side) and text.startswith("<mrow>") else text
+                          for text, side in ((left, node.left), (factor, node.right))))
         if _starts_number(node.right):
             return _row(left, _mo("⋅"), factor)
         if isinstance(_rightmost(node.left), Quantity) or _starts_function(node.right):

@@ -265,7 +265,10 @@ class LatexPrinter(Printer):
             return f"{left} \\times {right}"
         if op in (".", "*"):
             return f"{left} \\cdot {right}"
-        # juxtaposition: a thin space after a quantity, a dot before a number
+        # juxtaposition: words beside maths as they are (phidot_slow at 30 deg), a thin
+        # space after a quantity, a dot before a number
+        if beside_text(node):
+            return f"{left} {right}"
         if right[:1].isdigit() or right.startswith("-"):
             return f"{left} \\cdot {right}"
         if isinstance(_rightmost(node.left), Quantity):
@@ -435,6 +438,16 @@ def _rightmost(node: Node) -> Node:
     while isinstance(node, BinOp) and node.op == " ":
         node = node.right
     return node
+
+
+def beside_text(node: Node) -> bool:
+    """True for words juxtaposed with maths (``phidot (slow)``, ``at 30 deg``): no product."""
+    if not (isinstance(node, BinOp) and node.op == " "):
+        return False
+    first = node.right
+    while isinstance(first, BinOp) and first.op == " ":
+        first = first.left
+    return isinstance(_rightmost(node.left), Text) or isinstance(first, Text)
 
 
 def _fold(right: Node, op: str) -> tuple[Node, str]:
