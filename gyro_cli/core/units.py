@@ -625,6 +625,23 @@ def is_us_customary(quantity: Parsed) -> bool:
     return quantity.us_customary
 
 
+#: a unit written as plain names, powers, products and quotients (``rpm``, ``m/s^2``,
+#: ``kg m^2``), which the write-ups set as a unit; anything else stays the words written
+_PLAIN_UNIT = re.compile(r"[A-Za-z]+(\^-?\d+)?([ */]+[A-Za-z]+(\^-?\d+)?)*")
+
+
+def written(text: str) -> tuple[str, str] | None:
+    """A quantity string as written: its number and its unit (``"1800 rpm"`` ->
+    ``("1800", "rpm")``), or None where the unit is not plain names (``r.p.m.``)."""
+    match = _NUMBER.fullmatch(text)
+    if match is None:
+        return None
+    number, unit = match.group(1), " ".join(match.group(2).split())
+    if unit and not _PLAIN_UNIT.fullmatch(unit):
+        return None
+    return number, unit
+
+
 def unit_text(quantity: Parsed) -> str:
     """A parsed quantity's unit, abbreviated (``ozf``, ``ft/s^2``)."""
     return quantity.unit_text

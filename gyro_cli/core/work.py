@@ -105,6 +105,7 @@ class GivenLine:
     note: str = ""
     note_prose: Prose | None = None  # a note written as words and trees
     symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
+    shown: tuple[str, str] | None = None  # the quantity as read: its number and its unit
 
 
 @dataclass

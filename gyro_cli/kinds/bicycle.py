@@ -88,8 +88,9 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
         elif preset == PRESET:
             p[key] = bike.BENCHMARK[key]
             text = "pi/10 rad" if key == "lambda" else f"{p[key]:.12g} {SI[dimension]}"
+            shown = None if key == "lambda" else (f"{p[key]:.12g}", SI[dimension])
             work.given.append(GivenLine(key, symbol, text, p[key], SI[dimension],
-                                        "preset: Table 1"))
+                                        "preset: Table 1", shown=shown))
         else:
             raise InputError(f"needed: the {KEYS[key][2]} ({dimension}); give it, or write "
                              "`preset: benchmark` to take the rest from Table 1 of Meijaard et "

@@ -325,7 +325,12 @@ def _given_table(result: Result, level: int) -> str:
         note = f" ({escape(g.note)})" if g.note else ""
         if g.note_prose is not None:
             note = f" ({prose_pieces_html(g.note_prose)})"
-        rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{escape(text)}{note}</td>"
+        cell = escape(text)
+        if g.shown is not None:  # the quantity as read, as maths
+            cell = _math(Quantity(Num(g.shown[0]), g.shown[1]) if g.shown[1]
+                         else Num(g.shown[0]))
+            cell += " (default)" if g.text.endswith(" (default)") else ""
+        rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{cell}{note}</td>"
                     f"<td>{_quantity(g.si_value, g.si_unit)}</td></tr>")
     return (_heading(level, "Given") + _table_box("Given") + '<table><thead><tr><th scope="col">symbol</th>'
             f'<th scope="col">as given</th><th scope="col">{escape(solution.system)}</th>'

@@ -332,11 +332,20 @@ def prose_latex(prose, markdown: bool = False) -> str:
 
 
 def _given_cell(g, markdown: bool) -> str:
-    """The datum as written, and its note (words, or words and trees)."""
+    """The datum as read (a number and its unit, set as maths; words as words), and its
+    note (words, or words and trees)."""
+    shown = getattr(g, "shown", None)
+    if shown is not None:
+        number, unit = shown
+        cell = f"${number_tex(number)}{unit_latex(unit)}$"
+        if g.text.endswith(" (default)"):
+            cell += " (default)"
+    else:
+        cell = _prose(_given_text(g), markdown)
     prose = getattr(g, "note_prose", None)
     if prose is not None:
-        return _prose(_given_text(g), markdown) + " (" + prose_latex(prose, markdown) + ")"
-    return _prose(_given_text(g) + (f" ({g.note})" if g.note else ""), markdown)
+        return cell + " (" + prose_latex(prose, markdown) + ")"
+    return cell + (" (" + _prose(g.note, markdown) + ")" if g.note else "")
 
 
 def _title(section, markdown: bool) -> str:

@@ -62,10 +62,11 @@ def _solve(problem: Problem) -> Result:
             pass  # gravity plays no part in this kind (and no weight to turn into a mass)
         elif problem.us_customary and "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
-                                        "m/s^2", "US customary data: textbook g"))
+                                        "m/s^2", "US customary data: textbook g",
+                                        shown=("32.2", "ft/s^2")))
         elif "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
-                                        "m/s^2"))
+                                        "m/s^2", shown=("9.81", "m/s^2")))
     try:
         kind.solve(problem.given, frozenset(problem.find), work)
     except (ArithmeticError, ValueError) as err:
@@ -186,7 +187,8 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
                 note = f"weight: read as {units.unit_text(quantity)}"
         if key in problem.given.defaulted:
             text += " (default)"
+        shown = units.written(raw) if isinstance(raw, str) else None  # typeset as written
         lines.append(GivenLine(key, param.symbol, text, value,
                                units.si_text(param.dimension), note,
-                               symbol_expr=param.symbol_tree))
+                               symbol_expr=param.symbol_tree, shown=shown))
     return lines
