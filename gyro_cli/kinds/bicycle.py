@@ -313,7 +313,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.speed")
     for v in stab.weave + stab.capsize:
         work.check(f"v = {num(v, 10)} m/s: the eigenvalue nearest the imaginary axis has "
-                   f"|Re(s)| = {min(abs(x) for x in bike.eigenvalues(m, v, g).real):.2g} 1/s")
+                   f"|Re(s)| = {min(abs(x) for x in _spectrum(stab, m, v, g).real):.2g} 1/s")
     work.answer("weave_speed", "v_w", stab.weave, "speed")
     work.answer("capsize_speed", "v_c", stab.capsize, "speed")
     ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
@@ -324,6 +324,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
         work.answer(name, name, [float(x) + 0.0 for x in a.ravel()], dim,
                     ["phi,phi", "phi,delta", "delta,phi", "delta,delta"])
+
+
+def _spectrum(stab, m, v: float, g: float):  # type: ignore[no-untyped-def]
+    """The eigenvalues at speed v: those the stability search worked out there, else anew."""
+    from ..physics import bicycle as bike
+
+    return stab.spectra[v] if v in stab.spectra else bike.eigenvalues(m, v, g)
 
 
 def _char_value(coeffs, v: float, s: complex) -> complex:
