@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from ..core import units
 from ..core.body import build_body
 from ..core.errors import InputError
-from ..core.expr import Let, Sym
+from ..core.expr import Add, Call, Const, Div, Let, Mul, Neg, Num, Pow, Sub, Sym
 from .problem import Problem, load, params_of
 from ..core.work import GivenLine, Solution, Work, num
 
@@ -173,19 +173,27 @@ def _symbols_finite(expr) -> bool:  # type: ignore[no-untyped-def]
     symbol) holds a finite value: the same walk, without building the mapping."""
     seen: set[str] = set()
     todo = [expr]
+    pop, push, isfinite = todo.pop, todo.append, math.isfinite
     while todo:
-        node = todo.pop()
-        if isinstance(node, Sym):
+        node = pop()
+        kind = node.__class__
+        if kind is Sym or (kind not in _TREE_NODES and isinstance(node, Sym)):
             if node.name not in seen:
                 seen.add(node.name)
-                if not math.isfinite(node.si):
+                if not isfinite(node.si):
                     return False
-            continue  # a Sym has no children
-        if isinstance(node, Let):
-            todo.append(node.sym)
-            continue
-        todo.extend(reversed(node.children()))
+        elif kind is Let or (kind not in _TREE_NODES and isinstance(node, Let)):
+            push(node.sym)
+        elif kind in _BINARY:
+            push(node.right)
+            push(node.left)
+        else:
+            todo.extend(reversed(node.children()))
     return True
+
+
+_BINARY = {Add, Sub, Mul, Div, Pow}
+_TREE_NODES = _BINARY | {Sym, Let, Neg, Num, Const, Call}  # exactly these classes
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
