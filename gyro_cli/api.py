@@ -83,7 +83,10 @@ def _read(source: Source, path: bool = False) -> tuple[str, Any, dict[str, int]]
     from .solving import problem as loader
 
     if isinstance(source, Mapping):
-        return "<dict>", copy.deepcopy(dict(source)), {}
+        data = copy.deepcopy(dict(source))
+        if "id" not in data and isinstance(data.get("kind"), str):
+            data["id"] = data["kind"]  # a dict in a notebook needs no name of its own
+        return "<dict>", data, {}
     if isinstance(source, os.PathLike):
         source = os.fspath(source)
     if not isinstance(source, str):

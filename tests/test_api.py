@@ -189,3 +189,14 @@ def test_import_is_cheap_and_typed():
     assert out.stdout.strip() == "[]"
     assert (ROOT / "gyro_cli" / "py.typed").exists()
     assert set(gyro_cli.__all__) <= set(dir(gyro_cli))
+
+
+def test_a_mapping_without_an_id_is_named_by_its_kind():
+    """A notebook's dict needs no id (a file still does: the format's rule)."""
+    data = {k: v for k, v in TOP_SI.items() if k != "id"}
+    r = gyro_cli.solve(data)
+    assert r.id == "steady_precession"
+    assert r.answers["precession"].si == pytest.approx(gyro_cli.solve(TOP_SI).answers[
+        "precession"].si, rel=1e-12)
+    with pytest.raises(gyro_cli.InputError, match="id"):
+        gyro_cli.solve("kind: steady_precession\ngiven: {}\nfind: [precession]\n")

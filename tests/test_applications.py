@@ -204,9 +204,10 @@ find: [precession_rate]
 
 
 @pytest.mark.parametrize("extra, reason", [
-    ("preset: earth\n  obliquity: 95 deg", "obliquity must lie in [0, 90)"),
-    ("preset: earth\n  dynamical_ellipticity: -0.003", "between 0 and 1"),
-    ("preset: earth\n  moon_eccentricity: 1", "eccentricity lies in [0, 1)"),
+    ("preset: earth\n  obliquity: 95 deg", "expected 0 deg <= obliquity < 90 deg"),
+    ("preset: earth\n  dynamical_ellipticity: -0.003",
+     "expected 0 < dynamical_ellipticity < 1"),
+    ("preset: earth\n  moon_eccentricity: 1", "expected 0 <= moon_eccentricity < 1"),
     ("dynamical_ellipticity: 0.003\n  obliquity: 20 deg\n  rotation_period: 1 day\n"
      "  rotation_rate: 7e-5 rad/s\n  sun_mass_ratio: 3e5\n  sun_orbital_period: 1 yr",
      "not both"),
@@ -222,7 +223,8 @@ find: [precession_rate]
     ("dynamical_ellipticity: 0.003\n  obliquity: 20 deg\n  rotation_period: 1 day\n"
      "  sun_mass: 2e30 kg\n  sun_orbital_period: 1 yr", "planet_mass"),
     ("preset: earth\n  sun_distance: 1 au\n  sun_orbital_period: 1 yr", "not both"),
-    ("preset: earth\n  obliquity: 90 deg", "obliquity must lie in [0, 90)"),
+    ("preset: earth\n  obliquity: 90 deg", "expected 0 deg <= obliquity < 90 deg"),
+    ("preset: earth\n  J2: 0.5\n  polar_moment_factor: 0.4", "between 0 and 1"),
 ])
 def test_earth_bad_input_exits_2_with_one_line(run, write, extra, reason):
     result = run("solve", write(EARTH_BAD.format(extra=extra)))
@@ -385,13 +387,15 @@ find: [period]
 
 @pytest.mark.parametrize("extra, reason", [
     ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: -90 deg", "cannot settle"),
-    ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 100 deg", "between -90 and 90"),
+    ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 100 deg",
+     "expected -90 deg <= latitude <= 90 deg"),
     ("spin: 0 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 30 deg", "must spin"),
     ("spin: 2000 rad/s\n  latitude: 30 deg", "needs I_vertical"),
     ("I_vertical: 0.01 kg m^2\n  latitude: 30 deg", "give the rotor's spin"),
-    ("spin: 2000 rad/s\n  I_vertical: -0.01 kg m^2\n  latitude: 30 deg", "must be positive"),
+    ("spin: 2000 rad/s\n  I_vertical: -0.01 kg m^2\n  latitude: 30 deg",
+     "expected I_vertical > 0 kg m^2"),
     ("spin: 2000 rad/s\n  I_vertical: 0.01 kg m^2\n  latitude: 30 deg\n  earth_rate: 0 rad/s",
-     "earth_rate must be positive"),
+     "expected earth_rate > 0 rad/s"),
 ])
 def test_compass_bad_input_exits_2_with_one_line(run, write, extra, reason):
     result = run("solve", write(COMPASS_BAD.format(extra=extra)))

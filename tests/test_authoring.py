@@ -69,6 +69,14 @@ def valid(instance, schema) -> bool:
                     return False
             if "propertyNames" in schema and not valid(key, schema["propertyNames"]):
                 return False
+    if isinstance(instance, (int, float)) and not isinstance(instance, bool):
+        if not (instance >= schema.get("minimum", -math.inf)
+                and instance > schema.get("exclusiveMinimum", -math.inf)
+                and instance <= schema.get("maximum", math.inf)
+                and instance < schema.get("exclusiveMaximum", math.inf)):
+            return False
+    if "not" in schema and valid(instance, schema["not"]):
+        return False
     if "oneOf" in schema and sum(valid(instance, s) for s in schema["oneOf"]) != 1:
         return False
     if "anyOf" in schema and not any(valid(instance, s) for s in schema["anyOf"]):
@@ -108,6 +116,17 @@ def _mutations():
     yield "find as a list", dict(BASE, find=["precession"])
     yield "word shape", dict(BASE, given=dict(BASE["given"], shape="cube"))
     yield "per-answer tolerance", dict(BASE, tolerance={"precession": "3 sig"})
+    # a dimensionless key's declared limits, which the schema states as minimum/maximum
+    earth = {"id": "e", "kind": "earth_precession", "given": {"preset": "earth"},
+             "find": {"precession_rate": "arcsec/yr"}}
+    yield "eccentricity inside", dict(earth, given={"preset": "earth", "moon_eccentricity": 0.9})
+    yield "eccentricity 1", dict(earth, given={"preset": "earth", "moon_eccentricity": 1})
+    yield "eccentricity below 0", dict(earth, given={"preset": "earth", "sun_eccentricity": -0.1})
+    yield "polar factor 2/3", dict(earth, given={"preset": "earth", "J2": 1e-3,
+                                                 "polar_moment_factor": 0.6666})
+    yield "polar factor above 2/3", dict(earth, given={"preset": "earth", "J2": 1e-3,
+                                                       "polar_moment_factor": 0.67})
+    yield "ellipticity 0", dict(earth, given={"preset": "earth", "dynamical_ellipticity": 0})
 
 
 def _loader_accepts(tmp_path: Path, data: dict) -> bool:

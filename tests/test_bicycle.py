@@ -374,15 +374,15 @@ def test_plot_curves_are_the_eigenvalues():
 
 
 BAD = [
-    ("mB: -85 kg", "given.mB", "mass must be positive"),
+    ("mB: -85 kg", "given.mB", "expected mB > 0 kg"),
     ("speed: 5 m", "given.speed", "expected a speed"),
     ("IBxz: 6 kg m^2", "given.IBxz", "not positive definite"),
-    ("IHxx: -0.05 kg m^2", "given.IHxx", "not positive definite"),
+    ("IHxx: -0.05 kg m^2", "given.IHxx", "expected IHxx > 0 kg m^2"),
     ("IRyy: 0.2 kg m^2", "given.IRyy", "at most twice"),
     ("IByy: 20 kg m^2", "given.IByy", "triangle inequality"),
-    ("zB: 0.9 m", "given.zB", "z < 0"),
-    ("lambda: 95 deg", "given.lambda", "between -90 and 90 deg"),
-    ("w: 0 m", "given.w", "must be positive"),
+    ("zB: 0.9 m", "given.zB", "expected zB < 0 m"),
+    ("lambda: 95 deg", "given.lambda", "expected -90 deg < lambda < 90 deg"),
+    ("w: 0 m", "given.w", "expected w > 0 m"),
     ("gyroscopic: maybe", "given.gyroscopic", "expected one of true, false"),
 ]
 

@@ -1,6 +1,7 @@
-"""`gyro export`: question banks for Moodle, QTI 1.2 and PrairieLearn (issue 28).
+"""`gyro export`: question banks for Moodle, QTI 1.2, Blackboard Learn and PrairieLearn
+(issue 28).
 
-Every bundled problem is exported in the three formats (two variants where the
+Every bundled problem is exported in the four formats (two variants where the
 file has a `vary` block); each export is parsed back here with the standard
 library and every number in it is compared with what the public API
 (`gyro_cli.solve`) gives for the same variant, the variants being written by
@@ -13,6 +14,7 @@ title, topic; no other keys than it lists), restated below.
 
 from __future__ import annotations
 
+import csv
 import json
 import math
 import re
@@ -83,7 +85,7 @@ def _reference(path: Path, tmp: Path, run) -> dict[int, list[float]]:
 
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
-    """The three exports of every bundled problem, and the reference numbers."""
+    """The four exports of every bundled problem, and the reference numbers."""
     from click.testing import CliRunner
 
     from gyro_cli.cli import main
@@ -95,10 +97,11 @@ def exported(tmp_path_factory):
 
     out = {}
     for fmt, target in (("moodle", tmp / "bank.xml"), ("qti", tmp / "bank.zip"),
-                        ("prairielearn", tmp / "pl")):
+                        ("blackboard", tmp / "bank.txt"), ("prairielearn", tmp / "pl")):
         done = run("export", "--to", fmt, PROBLEMS, "--variants", VARIANTS, "-o", target)
         assert done.exit_code == 0, done.output
         out[fmt] = target
+        out[f"{fmt} stderr"] = done.stderr
     reference = {}
     for path in sorted(PROBLEMS.glob("*.yaml")):
         numbers = _reference(path, tmp / "vary", run)
@@ -343,6 +346,174 @@ def test_qti_bounds_are_the_tolerance_and_the_zip_is_reproducible(exported, run,
     assert again.read_bytes() == exported["qti"].read_bytes()
 
 
+# ---- Blackboard Learn (Upload Questions) -----------------------------------------------
+
+#: a NUM line's fields: type, question text, answer, tolerance (Blackboard's "Upload
+#: Questions" help page: NUM TAB question text TAB answer TAB [optional] tolerance)
+NUM_FIELDS = 4
+
+
+def _blackboard(path: Path) -> list[list[str]]:
+    """The file's records, read as a tab-delimited file; every line a whole record."""
+    data = path.read_bytes()
+    assert data.isascii() and not data.startswith(b"\xef\xbb\xbf")
+    assert data.endswith(b"\r\n") and b"\r\n\r\n" not in data  # no blank line
+    assert data.count(b"\n") == data.count(b"\r\n") == data.count(b"\r")
+    with path.open(newline="", encoding="ascii") as handle:
+        rows = list(csv.reader(handle, delimiter="\t", quoting=csv.QUOTE_NONE))
+    assert len(rows) == data.count(b"\r\n")
+    for row in rows:
+        assert len(row) == NUM_FIELDS and row[0] == "NUM", row
+        assert all(re.fullmatch(r"-?\d+(\.\d+)?", number) for number in row[2:]), row
+        assert float(row[3]) >= 0 and row[1].endswith(":</p>"), row
+    return rows
+
+
+def _question(row: list[str]) -> str:
+    """The statement of a NUM line's question (its text without the last paragraph, which
+    says what is asked)."""
+    return row[1][:row[1].rindex("<p>")]
+
+
+def test_blackboard_export_holds_the_solvers_answers(exported):
+    """Every NUM line, read back, is one of the solver's numbers for its variant, within
+    the tolerance the line gives; the lines come problem by problem (in file order),
+    variant by variant, one per number asked."""
+    rows = _blackboard(exported["blackboard"])
+    reference = exported["reference"]
+    assert len(rows) == sum(len(numbers) for want in reference.values()
+                            for numbers in want.values())
+    at = 0
+    for stem, want in reference.items():  # the export's order: the files sorted
+        for n in sorted(want):
+            lines = rows[at:at + len(want[n])]
+            at += len(want[n])
+            assert len({_question(row) for row in lines}) == 1, stem  # one variant's text
+            _same([float(row[2]) for row in lines], want[n])
+            for row, value in zip(sorted(lines, key=lambda r: float(r[2])), want[n]):
+                assert abs(float(row[2]) - value) <= float(row[3]) or value == float(row[2])
+    assert at == len(rows)
+    notes = exported["blackboard stderr"]
+    assert "no feedback field" in notes and "recommends at most 250" in notes
+    assert "word answers (motion" in notes
+
+
+def test_blackboard_tolerance_is_the_problems(exported, run, tmp_path):
+    """11/3 asks 1%: each NUM tolerance is 1% of its answer (45.13 and 533.53 rpm, each
+    root a question saying which); every relative tolerance is made absolute around its
+    variant's answer; an absolute one is itself."""
+    done = run("export", "--to", "blackboard", PROBLEMS / "11_3.yaml", "-o", tmp_path / "b.txt")
+    assert done.exit_code == 0, done.output
+    rows = _blackboard(tmp_path / "b.txt")
+    assert [round(float(r[2]), 2) for r in rows] == [45.13, 533.53, 965.41]
+    assert [r[1].rsplit("<p>", 1)[1] for r in rows] == [
+        "precession (slow), in rpm:</p>", "precession (fast), in rpm:</p>",
+        "min spin, in rpm:</p>"]
+    assert "1800 rpm" in rows[0][1] and "30 deg" in rows[0][1]
+    for row in rows:
+        assert float(row[3]) == pytest.approx(0.01 * float(row[2]), rel=1e-12)
+    rows = _blackboard(exported["blackboard"])
+    at = 0
+    for stem, want in exported["reference"].items():
+        lines = rows[at:at + sum(len(v) for v in want.values())]
+        at += len(lines)
+        tolerance = str(yaml.safe_load((PROBLEMS / f"{stem}.yaml").read_text()).get(
+            "tolerance", "1%"))
+        relative = re.fullmatch(r"([\d.]+)%", tolerance)
+        absolute = re.fullmatch(r"([\d.e+-]+) deg/s", tolerance)
+        for row in lines:
+            if relative:
+                assert float(row[3]) == pytest.approx(
+                    float(relative.group(1)) / 100 * abs(float(row[2])), rel=1e-9,
+                    abs=1e-300), stem
+            elif absolute:
+                assert float(row[3]) == pytest.approx(float(absolute.group(1))), stem
+
+
+def test_blackboard_numbers_are_plain_decimals():
+    from gyro_cli.render.bank_blackboard import number
+
+    assert number(45.13) == "45.13" and number(-0.0) == "0" and number(3.0) == "3"
+    assert number(1e-05) == "0.00001" and number(1.5e20) == "150000000000000000000"
+    assert number(0.1 + 0.2) == "0.3" and number(2 / 3) == "0.6666666666666666"
+    with pytest.raises(ValueError):
+        number(float("nan"))
+
+
+def test_blackboard_line_breaks_tabs_and_html_never_break_a_line(run, write, tmp_path):
+    """A title, a statement and the data with TABs, line breaks (LF, CR, U+2028), quotes
+    and HTML: each question stays one line of four fields, its text escaped."""
+    path = write("""\
+        id: "x/1 <i>"
+        title: "Tab\\there, line\\nbreak <script>alert('t')</script> & \\"q\\" \\u2028 end"
+        kind: steady_precession
+        given:
+          mass: 2 kg
+          J: 0.01 kg m^2
+          I_pivot: 0.05 kg m^2
+          cg_distance: 0.1 m
+          theta: 90 deg
+          spin: 1800 rpm
+        find:
+          precession: rpm
+        """)
+    title = yaml.safe_load(path.read_text())["title"]
+    assert "\t" in title and "\n" in title and "\u2028" in title
+    done = run("export", "--to", "blackboard", path, "-o", tmp_path / "b.txt")
+    assert done.exit_code == 0, done.output
+    (row,) = _blackboard(tmp_path / "b.txt")
+    assert "<script>" not in row[1] and "&lt;script&gt;" in row[1]
+    assert "&quot;q&quot;" in row[1] and "&amp;" in row[1]
+    path = write("""\
+        id: s
+        kind: steady_precession
+        statement: "A <script>x</script>\\ttop\\r\\nat {spin}.\\n\\nIt \\u00e9 \\u03c9."
+        given:
+          mass: 2 kg
+          J: 0.01 kg m^2
+          I_pivot: 0.05 kg m^2
+          cg_distance: 0.1 m
+          theta: 90 deg
+          spin: 1800 rpm
+        find:
+          precession: rpm
+        """, "s.yaml")
+    done = run("export", "--to", "blackboard", path, "-o", tmp_path / "s.txt")
+    assert done.exit_code == 0, done.output
+    (row,) = _blackboard(tmp_path / "s.txt")
+    assert row[1].startswith("<p>A &lt;script&gt;x&lt;/script&gt; top at 1800 rpm.</p>")
+    assert "<p>It &#233; &#969;.</p>" in row[1]  # ASCII: character references
+
+
+def test_blackboard_fields_hold_no_tab_or_line_break_whatever_the_html(tmp_path):
+    """The renderer itself, given HTML with every kind of line break and control
+    character: one line per question, four fields."""
+    from gyro_cli.render import bank_blackboard
+    from gyro_cli.render.bank import Blank, ProblemBank, Variant
+
+    nasty = "<p>a\tb\nc\rd\x0be\x0cf\x1cg\x85h\u2028i\u2029j\x00k \u03c9</p>"
+    blanks = [Blank(k, k, 45.0, "rpm\t\n", 0.45, "1%", "relative", 0.01)
+              for k in ("slow", "fast")]
+    bank = ProblemBank("t", "T", "steady_precession", "", "t", "steady precession",
+                       [Variant(1, "t", {}, nasty, "<p>worked</p>", blanks)])
+    out = tmp_path / "t.txt"
+    out.write_bytes(bank_blackboard.text([bank]).encode("ascii"))
+    rows = _blackboard(out)
+    assert len(rows) == 2
+    assert rows[0][1].startswith("<p>a b c d e f g h i j k &#969;</p>")
+    assert rows[0][1].endswith("<p>slow, in rpm  :</p>") and rows[0][2:] == ["45", "0.45"]
+
+
+def test_blackboard_many_questions_are_reported(run, tmp_path):
+    done = run("export", "--to", "blackboard", PROBLEMS / "11_3.yaml", "--variants", 90,
+               "-o", tmp_path / "b.txt")
+    assert done.exit_code == 0, done.output
+    assert len(_blackboard(tmp_path / "b.txt")) > 250
+    assert "recommends at most 250 per uploaded file" in done.stderr
+    done = run("export", "--to", "blackboard", PROBLEMS / "11_3.yaml", "-o", tmp_path / "c.txt")
+    assert "recommends" not in done.stderr and "(3 NUM questions)" in done.stderr
+
+
 # ---- PrairieLearn --------------------------------------------------------------------
 
 def _generate(server: Path, seed: int) -> dict:
@@ -557,7 +728,7 @@ def test_a_repeated_id_is_refused_for_the_second_file(run, tmp_path):
 def test_an_input_is_never_the_output(run, tmp_path):
     source = tmp_path / "p.yaml"
     source.write_text((PROBLEMS / "11_1.yaml").read_text())
-    for fmt in ("moodle", "qti"):
+    for fmt in ("moodle", "qti", "blackboard"):
         done = run("export", "--to", fmt, source, "-o", source, "--force")
         assert done.exit_code == 2 and "would replace an input file" in done.stderr
     assert source.read_text() == (PROBLEMS / "11_1.yaml").read_text()
@@ -565,6 +736,7 @@ def test_an_input_is_never_the_output(run, tmp_path):
 
 @pytest.mark.parametrize("args, message", [
     (["--to", "moodle", "-o", "{tmp}"], "is a directory"),
+    (["--to", "blackboard", "-o", "{tmp}"], "a .txt for blackboard"),
     (["--to", "excel", "-o", "{tmp}/x"], "Invalid value for '--to'"),
     (["--to", "qti", "--variants", "0", "-o", "{tmp}/x.zip"], "Invalid value for '--variants'"),
 ])

@@ -137,8 +137,18 @@ def test_any_tree_expr_evaluates_to_its_value_and_brackets_negatives(tree):
     names = {E.python_name(k): s.si for k, s in E.symbols(tree).items()}
     again = eval(E.python(tree), {"__builtins__": {}}, E.python_names() | names)
     assert again == pytest.approx(value, rel=1e-9, abs=1e-300)
-    assert not JUXTAPOSED.search(E.substitution(tree)), E.substitution(tree)
-    assert not JUXTAPOSED.search(E.formula(tree)), E.formula(tree)
+    for text in (E.substitution(tree), E.formula(tree)):
+        assert not JUXTAPOSED.search(text), text
+        assert "--" not in text and "+ -" not in text and "- -" not in text, text
+
+
+def test_a_negated_product_with_a_negative_first_factor_is_bracketed():
+    """-(a sin(x)) with a = -2 rad/s once printed --2.000 rad/s sin(x)."""
+    a, x = Sym("a", -2.0, "rad/s"), Sym("x", 0.5, "rad")
+    assert E.substitution(-(a * sin(x))) == "-(-2.000 rad/s sin(0.5000 rad))"
+    assert E.substitution(-(a / x)) == "-(-2.000 rad/s / (0.5000 rad))"
+    assert E.substitution(-(-a * x)) == "-(-(-2.000 rad/s) (0.5000 rad))"
+    assert E.formula(-(a * sin(x))) == "-a sin(x)"
 
 
 def test_a_step_that_cannot_be_evaluated_is_bad_input_not_a_crash():
@@ -164,3 +174,61 @@ def test_a_tree_step_keeps_the_tree_and_prints_the_line():
     assert value == step.value == step.expr.value
     assert step.as_text().startswith("a = 2 m g l / J = 2 (0.08498 kg) (9.815 m/s^2) (0.03810 m)")
     assert step.as_text().endswith("1/s^2    (Eq. 11.18)")
+
+
+def test_a_total_over_rotors_is_set_as_a_sum():
+    """``sum I_w`` (four_wheeler's total of the wheels' inertias) is set \\sum I_w in LaTeX;
+    the text keeps the name and the JSON ``expr`` an identifier."""
+    from gyro_cli.render.exprnodes import latex
+
+    tree = Sym("sum I_w", 36.0, "kg m^2") - Sym("G", 5.0) * Sym("sum I_E", 24.0, "kg m^2")
+    assert latex(tree) == r"\sum I_{w} - G \sum I_{E}"
+    assert latex(tree, values=True).startswith(r"36.00\,\mathrm{kg\,m^{2}} - 5.000")
+    assert E.formula(tree) == "sum I_w - G sum I_E"
+    assert E.python(tree) == "sum_I_w-G*sum_I_E"
+
+
+def test_a_chain_prints_its_equal_forms_and_substitutes_the_last():
+    """A step whose formula is written in two forms, ``A = B`` (swinging_rotor, problem
+    11/8): the formula shows both, the substitution, value and ``expr`` are the last's."""
+    from gyro_cli.core.work import Work
+    from gyro_cli.render import report
+    from gyro_cli.render.exprnodes import latex
+
+    m, g, L = Sym("m", 2.0, "kg"), Sym("g", 9.81, "m/s^2"), Sym("L", 0.25, "m")
+    th, I_O = Sym("theta", math.pi / 3, "deg"), Sym("I_O", 0.13, "kg m^2")
+    k = Let(Sym("I_O/m", 0.065, "m^2"), Sym("r", 0.1, "m") ** 2 / 4 + L ** 2)
+    chain = E.Chain(m * g * L * sin(th) / I_O, g * L * sin(th) / k)
+    assert E.formula(chain) == ("m g L sin(theta) / I_O = g L sin(theta) / (r^2 / 4 + L^2)")
+    assert E.substitution(chain) == "9.810 m/s^2 (0.2500 m) sin(60.00 deg) / (0.06500 m^2)"
+    assert E.python(chain) == "g*L*sin(theta)/I_O_m"
+    assert set(E.symbols(chain)) == {"g", "L", "theta", "I_O/m"}
+    assert chain.value == (g * L * sin(th) / k).value
+    assert latex(chain).count("=") == 1 and "\\frac{g L" in latex(chain)
+    assert latex(chain, values=True) == latex(g * L * sin(th) / k, values=True)
+    assert E.substitution(E.map_syms(chain, lambda s: Sym(s.name, 2 * s.si, s.unit))) \
+        .startswith("19.62 m/s^2")
+    work = Work()
+    work.step("thetaddot", chain, unit="rad/s^2")
+    step = work.sections[0].steps[0]
+    assert step.as_text().startswith("thetaddot = m g L sin(theta) / I_O = g L sin(theta) / (")
+    eq = report.equation(step)
+    assert eval(eq["expr"], E.python_names() | eq["symbols"]) == eq["value"]
+
+
+def test_a_chain_refuses_forms_that_disagree_and_being_an_operand():
+    from gyro_cli.core.errors import InputError
+    from gyro_cli.core.work import Work
+
+    a, b = Sym("a", 2.0, "m"), Sym("b", 3.0, "m")
+    with pytest.raises(InputError, match="forms disagree"):
+        Work().step("x", E.Chain(a + b, a * b), unit="m")
+    assert E.Chain(a + b, b + a, 5.0).value == 5.0
+    with pytest.raises(TypeError):
+        E.Chain(a, b) * 2
+    with pytest.raises(TypeError):
+        sin(E.Chain(a, a))
+    with pytest.raises(TypeError):
+        2 - E.Chain(a, a)
+    with pytest.raises(ValueError):
+        E.Chain(a)

@@ -24,23 +24,17 @@ ROOT = Path(__file__).resolve().parents[1]
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
 
 #: kinds whose every equation step is an expression tree (the others are migrating)
-#: (of the "Body" section that core/body.py writes, the shapes' J and I_G are not yet)
-TREE_KINDS = {"aeroplane", "gyrocompass", "gyro_drift", "earth_precession", "steady_precession"}
-
-
-def _from_body(title: str, symbol: str, formula: str) -> bool:
-    """A shape's J or I_G (core/body.py's SHAPES are text still)."""
-    from gyro_cli.core.body import SHAPES
-
-    return title == "Body" and formula in {t for shape in SHAPES.values()
-                                           for t in (shape.J_text, shape.I_G_text)}
+TREE_KINDS = {"aeroplane", "bicycle", "gyrocompass", "gyro_drift", "earth_precession",
+              "released_top", "steady_precession", "torque_free", "rate_gyro", "ship",
+              "two_wheeler", "four_wheeler", "rolling_disk", "gyroscopic_torque",
+              "swinging_rotor", "euler_angles"}
 
 #: text: a minus sign glued to a number right after a factor, a unit, a bracket or a
 #: division sign (a subtraction is spaced: ``a - 3``)
 TEXT_JUXTAPOSED = re.compile(r"(?:[\w)^]\s+|[/*^]\s*)-\d")
-#: LaTeX: a minus sign glued to a number after anything but an opening bracket, a brace,
-#: an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
-LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])\s*-\d")
+#: LaTeX: a minus sign glued to a number after anything but an opening bracket (``(``,
+#: ``\lvert`` of |-3|), a brace, an equals sign or the start (``\cdot -3``, ``\,-3``, ``} -3``)
+LATEX_JUXTAPOSED = re.compile(r"(?:\\cdot|\\,|\}|[\w)])(?<!\\lvert)\s*-\d")
 
 
 def _examples(tmp_path: Path) -> list[Path]:
@@ -61,8 +55,7 @@ def _check_equations(doc: dict, kind: str) -> int:
     for section in doc["steps"]:
         for eq in section["equations"]:
             if eq["expr"] is None:
-                assert kind not in TREE_KINDS or _from_body(section["title"], eq["symbol"],
-                                                            eq["formula"]), (doc["file"], eq)
+                assert kind not in TREE_KINDS, (doc["file"], eq)
                 continue
             value = _eval(eq["expr"], eq["symbols"])
             assert math.isclose(value, eq["value"], rel_tol=1e-9, abs_tol=1e-300), \
@@ -149,7 +142,7 @@ def test_migrated_kinds_parse_no_formula_text(kind, tmp_path, monkeypatch):
                         or real(text, units))
     for section in result.solution.sections:
         for step in section.steps:
-            if step.formula and not _from_body(section.title, step.symbol, step.formula):
+            if step.formula:
                 writeup._step_pieces(step)
     lhs = {step.symbol for section in result.solution.sections for step in section.steps}
     assert set(calls) <= lhs, calls  # only the steps' left-hand sides, no formula
@@ -310,3 +303,625 @@ def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_
         if s.symbol == "phidot" and "M" in v:  # theta = 90 deg: M / (J psidot), exact
             assert s.value == pytest.approx(v["M"] / (J * v["psidot"]), rel=1e-12)
     assert steps
+
+
+def _si(step) -> float:
+    """A step's value in SI (an angle shown in deg, in rad)."""
+    return step.si[0] if step.si is not None else step.value
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in PROBLEMS
+                                        if p.name.startswith("torque_free")))
+def test_torque_free_trees_agree_with_the_physics(name):
+    """Each step from its tree against physics/torque_free.py's solve_motion, which finds
+    the motion its own way (atan2, hypot) from the two given quantities."""
+    from gyro_cli.physics import torque_free as P
+
+    result = solve_file(str(ROOT / "problems" / name))
+    steps, syms = _tree_steps(ROOT / "problems" / name)
+    given = {g.key: g.si_value for g in result.solution.given}
+    known = {k: given[k] for k in P.MOTION_KEYS if k in given}
+    if given.get("precession_sense") is not None and "spin" in known:
+        known["spin"] = abs(known["spin"]) * (1 if given["precession_sense"] == "direct" else -1)
+    s = P.solve_motion(syms["J"], syms["I"], known)
+    expected = {"beta": s.omega_angle, "theta": s.nutation_angle, "omega_z": s.axial_rate,
+                "omega_e": s.transverse_rate, "omega": s.omega, "H": s.angular_momentum,
+                "phidot": s.precession, "psidot": s.spin, "T_p": s.precession_period,
+                "T_w": s.body_wobble_period, "body cone": s.body_cone_angle,
+                "space cone": s.space_cone_angle, "n": s.spin / s.precession}
+    if given.get("precession_sense") is not None:
+        expected["n"] = abs(expected["n"])
+    for symbol, step in steps.items():
+        if symbol in expected:  # not the body's J, I_G
+            assert _si(step) == pytest.approx(expected[symbol], rel=1e-12), symbol
+    assert {"omega_e", "H", "phidot", "psidot", "T_p", "n"} <= set(steps)
+
+
+@pytest.mark.parametrize("name", ["rate_gyro_reading.yaml", "rate_gyro_turn.yaml",
+                                  "rate_integrating_gyro.yaml", "11_3_bearing_moment.yaml",
+                                  "template"])
+def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
+    """Each step from its tree against physics/rate_gyro.py; f_n (Hz) is omega_n (rad/s)
+    over 2 pi."""
+    from gyro_cli.physics import rate_gyro as P
+
+    path = ROOT / "problems" / name
+    if name == "template":
+        path = tmp_path / "rate_gyro.yaml"
+        path.write_text(template("rate_gyro"))
+    steps, v = _tree_steps(path)
+    H = v["H"]
+    if "Omega" in steps:  # from the measurement
+        O = steps["Omega"].value
+        if "M" in v and "k" not in v:
+            assert O == pytest.approx(P.rate_from_moment(H, v["M"]), rel=1e-12)
+    O = v["Omega"] if "Omega" in v else None
+    checks = {"M": lambda: H * O,
+              "theta": lambda: (P.steady_deflection(H, O, v["k"]) if "k" in v
+                                else H / v["c"] * v["phi"]),
+              "S": lambda: H / v["k"],
+              "omega_n": lambda: P.natural_frequency(v["k"], v["I_g"]),
+              "f_n": lambda: P.natural_frequency(v["k"], v["I_g"]) / (2 * math.pi),
+              "zeta": lambda: P.damping_ratio(v["c"], v["k"], v["I_g"]),
+              "thetadot": lambda: P.gimbal_rate(H, O, v["c"]),
+              "H / c": lambda: H / v["c"], "tau": lambda: v["I_g"] / v["c"]}
+    for symbol, step in steps.items():
+        if symbol in checks:
+            assert _si(step) == pytest.approx(checks[symbol](), rel=1e-12), symbol
+    if name == "template":
+        assert steps["f_n"].unit == "Hz" and steps["omega_n"].unit == "rad/s"
+        assert {"theta", "S", "omega_n", "f_n", "zeta"} <= set(steps)
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in PROBLEMS if p.name.startswith("euler"))
+                         + ["template"])
+def test_euler_angles_trees_agree_with_the_physics(name, tmp_path):
+    """Eq. 11.8 both ways, the fixed-frame rates (R omega), T and H from the step trees
+    against physics/euler_kinematics.py, which works with exact zeros, matrices and dot
+    products; every equation step is a tree: the particle sums of Eq. 11.3 over each
+    particle's m, x, y, z, the angle between omega and H as atan2 of the components."""
+    from gyro_cli.physics import euler_kinematics as ek
+
+    path = ROOT / "problems" / name
+    if name == "template":
+        path = tmp_path / "euler_angles.yaml"
+        path.write_text(template("euler_angles"))
+    result = solve_file(str(path))
+    for section in report.as_dict(result)["steps"]:
+        for eq in section["equations"]:
+            assert eq["expr"] is not None, eq
+    steps, v = _tree_steps(path)
+    answers = {k: a.si_values for k, a in result.answers.items()}
+    zyx = "yaw" in v or "pitch" in v
+    a2, a3 = (v["pitch"], v["roll"]) if zyx else (v["theta"], v["psi"])
+    if any(k in steps for k in ("omega_x", "p")):  # forward
+        rates = [v.get(k, 0.0) for k in (("yawdot", "pitchdot", "rolldot") if zyx
+                                         else ("phidot", "thetadot", "psidot"))]
+        omega = (ek.body_rates_zyx if zyx else ek.body_rates_zxz)(a2, a3, *rates)
+        for sym, value in zip(("p", "q", "r") if zyx else ("omega_x", "omega_y", "omega_z"),
+                              omega):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    else:  # inverse
+        omega = tuple(v[k] for k in (("p", "q", "r") if zyx else ("omega_x", "omega_y",
+                                                                   "omega_z")))
+        rates = (ek.euler_rates_zyx if zyx else ek.euler_rates_zxz)(a2, a3, *omega)
+        for sym, value in zip(("yawdot", "pitchdot", "rolldot") if zyx
+                              else ("phidot", "thetadot", "psidot"), rates):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    if "omega_X" in steps and "phi" in v:
+        fixed = ek.matvec(ek.attitude("zxz", v["phi"], a2, a3), omega)
+        for sym, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+    assert steps["|omega|"].value == pytest.approx(ek.norm(omega), rel=1e-12)
+    if "T" in steps:
+        matrix = ek.inertia_matrix(v["I_x"], v["I_y"], v["I_z"], v.get("I_xy", 0.0),
+                                   v.get("I_yz", 0.0), v.get("I_zx", 0.0))
+        assert steps["T"].value == pytest.approx(ek.kinetic_energy(matrix, omega), rel=1e-12)
+        H = ek.angular_momentum(matrix, omega)
+        for sym, value in zip(("H_x", "H_y", "H_z"), H):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+        assert steps["|H|"].value == pytest.approx(ek.norm(H), rel=1e-12)
+        assert answers["kinetic_energy"][0] == pytest.approx(steps["T"].value, rel=1e-12)
+        if "angle(omega, H)" in steps:
+            assert steps["angle(omega, H)"].si[0] == pytest.approx(
+                ek.angle_between(omega, H), rel=1e-12, abs=1e-15)
+    if "m_0" in v:  # particles: the sums of Eq. 11.3 against physics' own
+        particles = [(v[f"m_{i}"], v[f"x_{i}"], v[f"y_{i}"], v[f"z_{i}"])
+                     for i in range(len([k for k in v if k.startswith("m_")]))]
+        for sym, value in zip(("I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx"),
+                              ek.inertia_from_particles(particles)):
+            assert steps[sym].value == pytest.approx(value, rel=1e-12, abs=1e-15), sym
+
+
+SHIP = """\
+id: s
+kind: ship
+given: {{mass: 6000 kg, k_axial: 450 mm, spin: 2400 rpm, rotor_sense: clockwise_from_stern,
+        {motion}}}
+find: [couple]
+"""
+
+
+@pytest.mark.parametrize("motion", [
+    "motion: steering, speed: 20 knot, turn_radius: 250 m, turn: right",
+    "motion: pitching, amplitude: 7.5 deg, period: 18 s, bow: rising",
+    "motion: pitching, between_extremes: 12 deg, frequency: 0.025 Hz, bow: falling",
+    "motion: rolling, roll_rate: 0.035 rad/s",
+    "motion: rolling"])
+def test_ship_trees_agree_with_the_physics_functions(motion, tmp_path):
+    """H, omega_p, the pitching's omega_1, omega_p,max and alpha_max and the couple, from
+    the step trees, against physics/vehicles.py's vectors and Pitching."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SHIP.format(motion=motion))
+    steps, syms = _tree_steps(path)
+    J, omega = syms["J"], syms["omega"]
+    H = V.spin_vector(J, omega, V.spin_direction("clockwise_from_stern"))
+    assert steps["H"].value == pytest.approx(V.norm(H), rel=1e-12)
+    if "steering" in motion:
+        wp = V.steering_precession(syms["v"], syms["R"], "right")
+        assert steps["omega_p"].value == pytest.approx(V.norm(wp), rel=1e-12)
+    elif "pitching" in motion:
+        phi = syms["phi"]
+        if "phi_total" in syms:
+            assert steps["phi"].si[0] == pytest.approx(syms["phi_total"] / 2, rel=1e-12)
+            assert steps["T"].value == pytest.approx(2 * math.pi / syms["omega_1"], rel=1e-12)
+        p = V.pitching(phi, steps["T"].value if "T" in steps else syms["T"])
+        if "omega_1" in steps:  # from the period (from a frequency it is given)
+            assert steps["omega_1"].value == pytest.approx(p.frequency, rel=1e-12)
+        assert steps["omega_p,max"].value == pytest.approx(p.max_precession, rel=1e-12)
+        assert steps["alpha_max"].value == pytest.approx(p.max_acceleration, rel=1e-12)
+        wp = V.pitching_precession(p.max_precession, "rising")
+    else:
+        wp = V.rolling_precession(syms["omega_p"])
+    assert steps["C"].value == pytest.approx(V.norm(V.couple_on_rotor(wp, H)), rel=1e-12,
+                                             abs=1e-9)
+
+
+TWO_WHEELER = """\
+id: t
+kind: two_wheeler
+given: {{mass: 250 kg, cg_height: 0.6 m, wheel_inertia: 1 kg*m^2, wheel_radius: 300 mm,
+        engine_inertia: 0.3 kg*m^2, gear_ratio: 5, engine_sense: {sense}, speed: 90 km/h,
+        turn_radius: 50 m}}
+find: [heel_angle]
+"""
+
+
+@pytest.mark.parametrize("sense", ["same", "opposite"])
+def test_two_wheeler_trees_agree_with_the_physics_functions(sense, tmp_path):
+    """The rates, the couples and the heel from the step trees against
+    physics/vehicles.py's two_wheeler (tan(theta) = (C_g + C_c) / (m g h)) and
+    spin_momentum."""
+    from gyro_cli.physics import vehicles as V
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TWO_WHEELER.format(sense=sense))
+    steps, v = _tree_steps(path)
+    s = V.two_wheeler(v["m"], v["g"], v["h"], v["I_w"], v["r_w"], v["I_E"], v["G"], sense,
+                      v["v"], v["R"])
+    assert steps["omega_w"].value == pytest.approx(s.wheel_rate, rel=1e-12)
+    assert steps["omega_E"].value == pytest.approx(v["G"] * s.wheel_rate, rel=1e-12)
+    assert steps["omega_p"].value == pytest.approx(s.precession, rel=1e-12)
+    assert steps["H"].value == pytest.approx(V.spin_momentum(
+        2 * v["I_w"], v["I_E"], v["G"], sense, s.wheel_rate), rel=1e-12)
+    assert steps["C_g"].value == pytest.approx(s.gyroscopic_couple, rel=1e-12)
+    assert steps["C_c"].value == pytest.approx(s.centrifugal_couple, rel=1e-12)
+    assert steps["theta"].si[0] == pytest.approx(s.heel, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["four_wheeler_trolley_2500kg.yaml",
+                                  "four_wheeler_trolley_2700kg.yaml",
+                                  "four_wheeler_railcar_limit.yaml"])
+def test_four_wheeler_trees_agree_with_the_physics_functions(name):
+    """The rotors' totals, the couples, each wheel's share and the limiting speed from the
+    step trees against physics/vehicles.py's four_wheeler and limiting_speed_squared."""
+    from gyro_cli.physics import vehicles as V
+
+    steps, v = _tree_steps(ROOT / "problems" / name)
+    data = yaml.safe_load((ROOT / "problems" / name).read_text())["given"]
+    sense = data.get("engine_sense", "same")
+    wheels = 4 * v["I_w"] if "I_w" in v else 2 * v["I_axle"]
+    engines = v["n_E"] * v["I_E"]
+    assert steps["sum I_w"].value == pytest.approx(wheels, rel=1e-12)
+    assert steps["sum I_E"].value == pytest.approx(engines, rel=1e-12)
+    assert steps["I_eq"].value == pytest.approx(V.spin_momentum(
+        wheels, engines, v["G"], sense, 1.0), rel=1e-12)
+    args = (v["m"], v["g"], v["h"], v["x"], v["r_w"])
+    if "speed" in data:
+        s = V.four_wheeler(*args, wheels, engines, v["G"], sense, v["v"], v["R"])
+        for symbol, expected in (("omega_w", s.wheel_rate), ("omega_p", s.precession),
+                                 ("H", s.gyroscopic_couple / s.precession),
+                                 ("C_g", s.gyroscopic_couple), ("C_c", s.centrifugal_couple),
+                                 ("P_w", s.weight_share), ("P_g", s.gyroscopic_share),
+                                 ("P_c", s.centrifugal_share), ("R_outer", s.outer),
+                                 ("R_inner", s.inner)):
+            assert steps[symbol].value == pytest.approx(expected, rel=1e-12), symbol
+    if "v_lim" in steps:
+        v2 = V.limiting_speed_squared(*args, wheels, engines, v["G"], sense, v["R"])
+        assert steps["v_lim"].value == pytest.approx(math.sqrt(v2), rel=1e-12)
+
+
+ROLLING = """\
+id: d
+kind: rolling_disk
+given: {{mass: 1.2 kg, shape: {shape}, radius: 0.35 m, {given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("shape, given, find", [
+    ("disk", "path_radius: 0.6 m, precession: 48 rpm", "normal_force, moment, precession_period"),
+    ("disk", "path_radius: 0.6 m, precession: -48 rpm", "normal_force, moment"),
+    ("ring", "arrangement: free, tilt: 5 deg, path_radius: 20 m", "speed, precession_period"),
+    ("ring", "arrangement: free, tilt: 5 deg, speed: 3 m/s", "path_radius"),
+    ("disk", "arrangement: free, speed: 3 m/s, path_radius: 20 m", "tilt, upright_speed")])
+def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path):
+    """Each step from its tree against the kind's float functions (axle_pivot_spin,
+    axle_pivot_normal_force, free_from_tilt_and_path, free_from_speed_and_tilt) and
+    physics/stability.py's disk_critical_axial_rate."""
+    from gyro_cli.core.expr import symbols
+    from gyro_cli.kinds import rolling_disk as K
+    from gyro_cli.physics.stability import disk_critical_axial_rate
+
+    path = tmp_path / "d.yaml"
+    path.write_text(ROLLING.format(shape=shape, given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    v = {}
+    for s in steps:
+        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    by = {s.symbol: s for s in steps}
+    m, g, r, J = v["m"], v["g"], v["r"], v["J"]
+    if "precession:" in given:
+        Omega, R = v["Omega"], v["R"]
+        assert by["psidot"].value == pytest.approx(K.axle_pivot_spin(Omega, R, r), rel=1e-12)
+        assert by["dH_O/dt"].value == pytest.approx(J * K.axle_pivot_spin(Omega, R, r) * Omega,
+                                                    rel=1e-12)
+        N = K.axle_pivot_normal_force(m, g, J, Omega, r)
+        assert by["N"].value == pytest.approx(N, rel=1e-12)
+        assert by["M"].value == pytest.approx(J * Omega ** 2 * R / r, rel=1e-9)
+        if "T" in by:
+            assert by["T"].value == pytest.approx(2 * math.pi / abs(Omega), rel=1e-12)
+        return
+    I = v["I_G"]
+    if "path_radius:" in given and "tilt:" in given:
+        s = K.free_from_tilt_and_path(m, g, r, J, I, v["beta"], v["R"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["Omega"].value == pytest.approx(s.precession, rel=1e-12)
+        assert by["v"].value == pytest.approx(s.speed, rel=1e-12)
+    elif "tilt:" in given:
+        s = K.free_from_speed_and_tilt(m, g, r, J, I, v["beta"], v["v"])
+        assert by["rho"].value == pytest.approx(s.centre_radius, rel=1e-12)
+        assert by["R"].value == pytest.approx(s.path_radius, rel=1e-12)
+    else:
+        [s] = K.free_from_speed_and_path(m, g, r, J, I, 3.0, 20.0)  # as given
+    assert by["omega_z"].value == pytest.approx(s.axial_rate, rel=1e-12)
+    assert by["psidot"].value == pytest.approx(s.spin, rel=1e-12)
+    assert by["v_upright"].value == pytest.approx(disk_critical_axial_rate(m, g, r, I, J) * r,
+                                                  rel=1e-12)
+
+
+#: released tops near the sleeping limit and other hard cases: a tilt of 1e-6 deg, spins
+#: just above and below the least spin of the sleeping top (2 sqrt(I m g l) / J, about
+#: 1173 rpm here: m -> 1), hanging near the bottom, a fast top, a nearly steady one
+NEAR_LIMITS = [
+    "theta0: 0.000001 deg\n  spin: 1800 rpm",
+    "theta0: 0.01 deg\n  spin: 1180 rpm",
+    "theta0: 0.01 deg\n  spin: 1170 rpm",
+    "theta0: 0.5 deg\n  spin: 1174 rpm",
+    "theta0: 179.999 deg\n  spin: 1800 rpm",
+    "theta0: 30 deg\n  spin: 100000 rpm",
+    "theta0: 60 deg\n  spin: 1800 rpm\n  precession0: 4.6 rad/s",
+    "theta0: 60 deg\n  spin: 1800 rpm\n  precession0: 4.552618042746112 rad/s",
+    "theta0: 0 deg\n  spin: 1800 rpm\n  theta_rate0: 1 rad/s",
+    "theta0: 180 deg\n  spin: 1800 rpm\n  theta_rate0: 1 rad/s",
+]
+RELEASED_TOP = ("id: x\nkind: released_top\ngiven:\n  mass: 0.08498 kg\n  J: 3.869e-5 kg m^2\n"
+                "  I_pivot: 1.776e-4 kg m^2\n  cg_distance: 0.0381 m\n  {}\nfind: [theta_max]\n")
+
+
+def _released_top_files(tmp_path: Path) -> list[Path]:
+    out = sorted((ROOT / "problems").glob("11_2_*.yaml"))
+    example = tmp_path / "example.yaml"
+    example.write_text(template("released_top"))
+    out.append(example)
+    for k, given in enumerate(NEAR_LIMITS):
+        path = tmp_path / f"near_{k}.yaml"
+        path.write_text(RELEASED_TOP.format(given))
+        out.append(path)
+    return out
+
+
+def test_released_top_limits_period_and_precession_trees_agree_with_the_physics(tmp_path):
+    """The nutation limits, m, T and phidot at the limits, evaluated from their trees (the
+    JSON ``expr`` too), within 1e-9 of physics/nutation.py's answers for every bundled
+    released top, the `gyro new` example and tops near the sleeping limit; K(m) by the
+    tree's AGM against physics' R_F where m is not near 1, and phidot against Eq. 11.16
+    evaluated at the roots where u is not near a pole."""
+    from gyro_cli.core.expr import _ellipk
+    from gyro_cli.physics import nutation as N
+
+    seen = set()
+    for path in _released_top_files(tmp_path):
+        result = solve_file(str(path))
+        _check_equations(report.as_dict(result), "released_top")
+        steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps}
+        v = _released_top_data(result)
+        top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
+        start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
+                        theta_rate0=v["thetadot0"])
+        nut = N.analyse(top, start)
+        close = dict(rel=1e-9, abs=1e-300)
+        if nut.motion == "sleeping":
+            assert "theta_max" not in steps
+            continue
+        seen.add(nut.motion)
+        assert steps["theta_max"].si[0] == pytest.approx(nut.theta_max, **close), path.name
+        assert steps["theta_min"].si[0] == pytest.approx(nut.theta_min, **close), path.name
+        assert steps["T"].value == pytest.approx(nut.nutation_period, **close), path.name
+        m = steps["m"].value
+        if m < 0.9:
+            assert _ellipk(m) == pytest.approx(steps["K(m)"].value, rel=1e-12), path.name
+        for k, u in enumerate(("u1", "u2")):
+            rate = steps[f"phidot({u})"].value
+            assert rate == pytest.approx(nut.limit_precession[k], **close), path.name
+            root = nut.u_roots[k]
+            if 1 - abs(root) > 1e-3:  # Eq. 11.16 as written, well conditioned there
+                scale = abs(nut.beta) + abs(nut.gamma)
+                assert rate == pytest.approx(N.phidot(nut, root), abs=1e-9 * scale), path.name
+        if "theta_1" in steps:  # released from rest: Eq. 11.25 as printed
+            u1 = steps["u1"].value
+            assert u1 == pytest.approx(N.released_u1(top, start.theta0, v["omega_z"]),
+                                       rel=1e-9), path.name
+            assert u1 == pytest.approx(nut.u_roots[0], rel=1e-9), path.name
+            if 1 - abs(u1) > 1e-6:
+                assert steps["theta_1"].si[0] == pytest.approx(nut.theta_max, rel=1e-9)
+    assert {"cusps", "loops", "waves"} <= seen, seen
+
+
+def _moments(region, n: int = 48) -> tuple[float, float]:
+    """(J, I_G) per unit mass of a uniform body, by Gauss-Legendre quadrature over
+    ``region``: (coordinates, weights) of its points as arrays, the axis along z."""
+    (x, y, z), weight = region(n)
+    mass = weight.sum()
+    zc = (weight * z).sum() / mass
+    J = (weight * (x * x + y * y)).sum() / mass
+    I_G = (weight * (y * y + (z - zc) ** 2)).sum() / mass
+    return J, I_G
+
+
+def _gauss(a, b, n):
+    import numpy as np
+
+    t, w = np.polynomial.legendre.leggauss(n)
+    return (a + b) / 2 + (b - a) / 2 * t, (b - a) / 2 * w
+
+
+def _revolution(z0, z1, s_lo, s_hi):
+    """A body of revolution: s_lo(z) <= s <= s_hi(z), z0 <= z <= z1 (dm ~ s ds dz, taken in
+    the plane y = 0 with <x^2> = <y^2> = s^2 / 2 by symmetry)."""
+    import numpy as np
+
+    def region(n):
+        zs, wz = _gauss(z0, z1, n)
+        pts, ws = [], []
+        for zk, wk in zip(zs, wz):
+            s, w = _gauss(s_lo(zk), s_hi(zk), n)
+            pts.append(np.stack([s / np.sqrt(2), s / np.sqrt(2), np.full_like(s, zk)]))
+            ws.append(wk * w * s)
+        return np.concatenate(pts, axis=1), np.concatenate(ws)
+    return region
+
+
+def _spherical(r_in, r_out):
+    """A spherical shell r_in <= rho <= r_out (dm ~ rho^2 sin(phi) drho dphi)."""
+    import numpy as np
+
+    def region(n):
+        rho, wr = _gauss(r_in, r_out, n)
+        phi, wp = _gauss(0.0, np.pi, 2 * n)
+        R, P = np.meshgrid(rho, phi)
+        W = np.outer(wp, wr) * R ** 2 * np.sin(P)
+        s = R * np.sin(P)
+        return np.stack([s / np.sqrt(2), s / np.sqrt(2), R * np.cos(P)]).reshape(3, -1), W.ravel()
+    return region
+
+
+def _box(w, L):
+    import numpy as np
+
+    def region(n):
+        a, wa = _gauss(-w / 2, w / 2, n)
+        c, wc = _gauss(0.0, L, n)
+        X, Y, Z = np.meshgrid(a, a, c, indexing="ij")
+        W = np.einsum("i,j,k->ijk", wa, wa, wc)
+        return np.stack([X, Y, Z]).reshape(3, -1), W.ravel()
+    return region
+
+
+THIN = 1e-10  # the thickness of a thin shape (ring, tube, spherical shell, disk), relative
+
+
+@pytest.mark.parametrize("shape", ["disk", "ring", "cylinder", "sphere", "cone", "shell", "rod",
+                                   "hollow_sphere", "box", "annulus"])
+def test_body_shape_trees_agree_with_integrals_over_the_body(shape):
+    """core/body.py's J and I_G of each shape, evaluated from their trees, against the
+    moments integrated over the uniform solid by quadrature (a thin shape as a solid of
+    relative thickness 1e-10)."""
+    from gyro_cli.core.body import build_body
+    from gyro_cli.core.work import Work
+
+    m, r, ri, L, h, w = 2.0, 0.1, 0.06, 0.3, 0.2, 0.08
+    values = {"mass": m, "shape": shape}
+    region = {
+        "disk": ({"radius": r}, _revolution(0.0, THIN * r, lambda z: 0.0, lambda z: r)),
+        "ring": ({"radius": r}, _revolution(0.0, THIN * r, lambda z: r * (1 - THIN),
+                                           lambda z: r)),
+        "cylinder": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: 0.0,
+                                                             lambda z: r)),
+        "rod": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: 0.0, lambda z: r)),
+        "sphere": ({"radius": r}, _spherical(0.0, r)),
+        "hollow_sphere": ({"radius": r}, _spherical(r * (1 - THIN), r)),
+        "cone": ({"radius": r, "height": h}, _revolution(0.0, h, lambda z: 0.0,
+                                                         lambda z: r * z / h)),
+        "shell": ({"radius": r, "length": L}, _revolution(0.0, L, lambda z: r * (1 - THIN),
+                                                          lambda z: r)),
+        "box": ({"width": w, "length": L}, _box(w, L)),
+        "annulus": ({"radius": r, "inner_radius": ri, "length": L},
+                    _revolution(0.0, L, lambda z: ri, lambda z: r)),
+    }[shape]
+    values |= region[0]
+    work = Work()
+    body = build_body(values, False, work)
+    J, I_G = _moments(region[1])
+    assert body.J == pytest.approx(m * J, rel=1e-9)
+    assert body.I_cg == pytest.approx(m * I_G, rel=1e-9)
+    steps = {s.symbol: s for s in work.sections[0].steps}
+    assert steps["J"].expr is not None and steps["I_G"].expr is not None
+    if shape == "cone":  # the apex at the fixed point: the centre of mass at 3 h / 4
+        assert body.l == pytest.approx(0.75 * h, rel=1e-12)
+
+
+TORQUE = """\
+id: t
+kind: gyroscopic_torque
+given: {{{given}}}
+find: [{find}]
+"""
+
+
+@pytest.mark.parametrize("given, find", [
+    ("mass: 2.5 kg, k_axial: 35 mm, supported_mass: 10 kg, spin: -1725 rpm, precession: 48 rpm, "
+     "bearing_spacing: 200 mm", "bearing_forces, moment"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: -3000 rpm, precession: 40 rpm, "
+     "theta: 60 deg, bearing_spacing: 150 mm, cg_position: 50 mm, cg_radius: 120 mm, "
+     "cg_offset: along", "moment, bearing_forces, axial_thrust"),
+    ("mass: 3 kg, shape: disk, radius: 80 mm, spin: 3000 rpm, precession: -40 rpm, "
+     "theta: 120 deg, bearing_spacing: 150 mm, cg_radius: 120 mm", "bearing_side_forces"),
+    ("mass: 400 kg, k_axial: 0.3 m, spin: -2400 rpm, speed: 200 km/h, turn_radius: 50 m, "
+     "turn: right, bearing_spacing: 1 m, cg_position: 0.3 m", "bearing_loads, axial_thrust"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: 2000 rpm, moment: 3 N m, theta: 60 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, I_cg: 0.012 kg m^2, spin: -2000 rpm, moment: 3 N m, theta: 130 deg",
+     "precession"),
+    ("J: 0.02 kg m^2, spin: 2000 rpm, moment: -3 N m", "precession"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_time: 0.1 s, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm, drop_length: 2 m, "
+     "bearing_spacing: 1.5 m", "couple_forces"),
+    ("mass: 2.2 kg, k_axial: 60 mm, spin: 1725 rpm, precession: 0.2 rad/s, counterweight: 0.5 kg, "
+     "balance_position: 180 mm", "counterweight_position"),
+])
+def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
+    """Each step from its tree against gyroscopic_torque's physics functions (Eq. 11.29
+    generalised, the slow root, the free body of the rotor, the wheel's drop), with
+    negative rates and angles past 90 deg among them."""
+    from gyro_cli.kinds import gyroscopic_torque as K
+
+    path = tmp_path / "t.yaml"
+    path.write_text(TORQUE.format(given=given, find=find))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s.value for s in steps}
+    v = _released_top_data(result)
+    th = v.get("theta", math.pi / 2)
+    J, I = v["J"], v.get("I", 0.0)
+    if "psidot" in by and "v" in v and "r_w" in v:
+        assert by["psidot"] == pytest.approx(v["v"] / v["r_w"], rel=1e-12)
+    if "t" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_uniform(v["h"], v["v"], v["s"], v["L"]),
+                                            rel=1e-12)
+    if "ydot_max" in by:
+        assert by["Omega"] == pytest.approx(K.tilt_rate_harmonic(v["h"], v["T_d"], v["L"]),
+                                            rel=1e-12)
+    if "R" in v and "Omega" in by:
+        sign = -1 if "right" in given else 1
+        assert by["Omega"] == pytest.approx(sign * v["v"] / v["R"], rel=1e-12)
+    if "moment:" in given:
+        roots = K.precession_for_moment(J, I, v["psidot"], th, v["M"])
+        assert by["Omega"] == pytest.approx(min(roots, key=abs), rel=1e-12)
+    Omega = by.get("Omega", v.get("Omega"))
+    M = K.gyroscopic_moment(J, I, v["psidot"], Omega, th)
+    assert by["M"] == pytest.approx(M, rel=1e-12)
+    if "F_A,weight" in by:
+        m = v.get("m_s", v.get("m"))
+        forces = K.bearing_forces(m, v["g"], M, v["L"], v["a"], Omega, th, v.get("R", 0.0),
+                                  "along" if "along" in given else "across")
+        assert (by["F_A,weight"], by["F_B,weight"]) == pytest.approx(forces.weight, rel=1e-12)
+        assert (by["F_A"], by["F_B"]) == pytest.approx(forces.up, rel=1e-12)
+        assert by["T"] == pytest.approx(forces.thrust, rel=1e-12, abs=1e-12)
+        if "F_A,accel" in by:
+            assert (by["F_A,accel"], by["F_B,accel"]) == pytest.approx(forces.inertial, rel=1e-12)
+        if "F_A,side" in by:
+            assert (by["F_A,side"], by["F_B,side"]) == pytest.approx(forces.side, rel=1e-12)
+    if "F_A,couple" in by:
+        assert (by["F_A,couple"], by["F_B,couple"]) == pytest.approx(
+            K.couple_forces(M, v["L"]), rel=1e-12)
+    if "db" in by:
+        assert by["db"] == pytest.approx(K.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
+    assert steps
+
+
+SWING = """\
+id: s
+kind: swinging_rotor
+given: {{{given}}}
+find: [bearing_forces, angular_rate]
+"""
+
+
+def _lets(node):
+    """Every `Let` of a tree (a quantity shown by its definition in the formula)."""
+    from gyro_cli.core import expr as E
+
+    if isinstance(node, E.Let):
+        yield node
+    for child in node.children():
+        yield from _lets(child)
+
+
+@pytest.mark.parametrize("given", [
+    "mass: 2 kg, shape: disk, radius: 100 mm, spin: 300 rad/s, arm_length: 250 mm, "
+    "bearing_spacing: 200 mm, theta: 90 deg",
+    "mass: 3 kg, shape: ring, radius: 120 mm, spin: -200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, arm_position: 60 mm, theta: 135 deg, theta0: 30 deg",
+    "mass: 3 kg, k_axial: 50 mm, k_cg: 40 mm, spin: 200 rad/s, arm_length: 300 mm, "
+    "bearing_spacing: 250 mm, theta: 200 deg, theta0: 10 deg",
+])
+def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
+    """Each step from its tree (both forms of the two-form steps) against swing_forces,
+    and every part shown by its definition (the expanded formulas of 11/8) evaluated from
+    that definition against the value it stands for."""
+    from gyro_cli.core import expr as E
+    from gyro_cli.kinds import swinging_rotor as K
+
+    path = tmp_path / "s.yaml"
+    path.write_text(SWING.format(given=given))
+    result = solve_file(str(path))
+    steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
+    by = {s.symbol: s for s in steps}
+    v = _released_top_data(result)
+    m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
+    th0, th = v["theta0"], v["theta"]
+    J, I_G = v["J"], by["I_G"].value
+    a = v["a/d"] * d
+    f = K.swing_forces(m, g, J, I_G, p, L, d, a, th0, th)
+    I_O = I_G + m * L * L
+    assert by["I_O"].value == pytest.approx(I_O, rel=1e-12)
+    for symbol, expected in (("I_O", I_O), ("thetadot^2", K.swing_rate_sq(m, g, L, I_O, th0, th)),
+                             ("thetaddot", K.swing_acceleration(m, g, L, I_O, th))):
+        chain = by[symbol].expr
+        assert isinstance(chain, E.Chain) and len(chain.forms) == 2
+        for form in chain.forms:
+            assert form.value == pytest.approx(expected, rel=1e-12, abs=1e-12), symbol
+    assert by["J p thetadot / d"].value == pytest.approx(f.couple, rel=1e-12, abs=1e-12)
+    for k, end in enumerate("AB"):
+        assert by[f"F_{end},arm"].value == pytest.approx(f.arm[k], rel=1e-12)
+        assert by[f"F_{end},normal"].value == pytest.approx(f.normal[k], rel=1e-12, abs=1e-12)
+        assert by[f"|F_{end}|"].value == pytest.approx(f.magnitudes[k], rel=1e-12)
+    lets = [let for s in steps for let in _lets(s.expr)]
+    assert {let.sym.name for let in lets} >= {"I_O/m", "S_arm", "S_normal", "F_couple", "b/d"}
+    for let in lets:
+        assert let.body.value == pytest.approx(let.sym.si, rel=1e-9, abs=1e-12), let.sym.name

@@ -131,9 +131,12 @@ def test_problem_11_8_by_hand(run, problems_dir):
 
 def test_worked_answer_gives_formulas_in_m_r_p_g(run, problems_dir):
     out = run("solve", problems_dir / "11_8.yaml").stdout
-    assert "F_A,arm = (b/d) m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / (r^2/4 + L^2)] " \
-           "- m (r^2/2) p sqrt(2 g L (cos theta0 - cos theta) / (r^2/4 + L^2)) / d" in out
-    assert "F_B,normal = (a/d) m g sin(theta) (r^2/4) / (r^2/4 + L^2)" in out
+    assert "F_A,arm = (b / d) m g (cos(theta) - 2 L^2 (cos(theta0) - cos(theta)) / " \
+           "(r^2 / 4 + L^2)) - m (r^2 / 2) p sqrt(2 g L (cos(theta0) - cos(theta)) / " \
+           "(r^2 / 4 + L^2)) / d = 0.5000 (-37.73 N) - 130.3 N = -149.2 N" in out
+    assert "F_B,normal = (a / d) (m g sin(theta) (r^2 / 4) / (r^2 / 4 + L^2))" in out
+    assert "thetaddot = m g L sin(theta) / I_O = g L sin(theta) / (r^2 / 4 + L^2) = " \
+           "9.810 m/s^2 (0.2500 m) sin(90.00 deg) / (0.06500 m^2) = 37.73 rad/s^2" in out
 
 
 def test_cli_checks_problem_11_8(run, problems_dir):

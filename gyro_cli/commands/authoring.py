@@ -28,7 +28,7 @@ from .. import kinds
 from ..core import units
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError
-from ..core.spec import Kind
+from ..core.spec import Kind, Param
 
 EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
@@ -219,6 +219,30 @@ def schema() -> dict[str, Any]:
     }
 
 
+_KEYWORDS = {">": "exclusiveMinimum", ">=": "minimum", "<": "exclusiveMaximum",
+             "<=": "maximum"}
+
+
+def limits_schema(p: Param) -> dict[str, Any]:
+    """A Param's declared limits (SI) as JSON Schema keywords: ``{"exclusiveMinimum": 0}``;
+    ``nonzero`` as ``{"not": {"const": 0}}``."""
+    out: dict[str, Any] = {}
+    for op, x in p.limits_declared():
+        if op == "!=":
+            out["not"] = {"const": x}
+        else:
+            out[_KEYWORDS[op]] = x
+    return out
+
+
+def _described(p: Param, dimension: str = "") -> str:
+    """The key's meaning, its dimension and its limits as the loader states them."""
+    notes = [dimension] if dimension else []
+    if p.limits_declared():
+        notes.append(p.expectation(units.si_text(p.dimension)))
+    return f"{p.doc} ({'; '.join(notes)})" if notes else p.doc
+
+
 def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[str, Any]:
     params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
     given = {}
@@ -239,7 +263,8 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
             else:
                 given[p.name] = {"enum": words, "description": p.doc}
         elif p.dimension == "dimensionless":
-            given[p.name] = {"oneOf": [{"type": "number"}, quantity], "description": p.doc}
+            given[p.name] = {"oneOf": [dict({"type": "number"}, **limits_schema(p)), quantity],
+                             "description": _described(p)}
         elif p.dimension == "particles":
             given[p.name] = {"type": "array", "minItems": 1, "description": p.doc,
                              "items": {"type": "object", "additionalProperties": False,
@@ -247,7 +272,11 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
                                        "properties": {n: quantity for n in
                                                       ("mass", "x", "y", "z")}}}
         else:
-            given[p.name] = dict(quantity, description=f"{p.doc} ({p.dimension})")
+            given[p.name] = dict(quantity, description=_described(p, p.dimension))
+            if p.limits_declared():
+                # a quantity is text with a unit: the limits, in SI, are for editors to show
+                si = units.si_text(p.dimension)
+                given[p.name]["x-si-limits"] = dict(limits_schema(p), unit=si)
     answers = [a.name for a in kind.answers]
     find = {a.name: ({"type": "null"} if a.dimension is None else
                      {"type": ["string", "null"], "description": f"unit for {a.doc}"})

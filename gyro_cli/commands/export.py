@@ -1,5 +1,5 @@
-"""`gyro export`: question banks for Moodle, QTI 1.2 (Canvas, D2L) and PrairieLearn,
-every answer from the solver.
+"""`gyro export`: question banks for Moodle, QTI 1.2 (Canvas, D2L), Blackboard Learn
+(an Upload Questions file) and PrairieLearn, every answer from the solver.
 
 For each problem file: the problem as written, or with ``--variants N`` the N
 variants that ``gyro vary FILE --count N --seed S`` writes (the same values, drawn
@@ -28,7 +28,9 @@ if TYPE_CHECKING:
     from ..render.bank import Blank, ProblemBank, Variant
     from ..solving.problem import Problem
 
-FORMATS = ("moodle", "qti", "prairielearn")
+FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
+#: the formats written as one file
+FILE_FORMATS = ("moodle", "qti", "blackboard")
 
 
 # ---- building the banks ----------------------------------------------------------
@@ -136,7 +138,10 @@ def variant_of(problem: "Problem", number: int, title: str) -> "Variant":
     # the problem id instead (11/3-v02 -> p-11-3-v02).
     shown = dataclasses.replace(solved, problem=dataclasses.replace(solved.problem, file=""))
     feedback = f'<div class="gyro">{html.worked_answer(shown, level=3, picture=False)}</div>'
-    return Variant(number, str(problem.id), given, text, feedback, blanks)
+    words = [name for name, answer in solved.answers.items()
+             if getattr(problem.kind.answer(name), "dimension", None) is None
+             or any(isinstance(v, str) for v in answer.values)]
+    return Variant(number, str(problem.id), given, text, feedback, blanks, words)
 
 
 def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
@@ -153,6 +158,8 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     slugs: set[str] = set()
     ids: dict[str, str] = {}  # problem id -> the file it was exported from
     unvaried: list[str] = []
+    worded: list[str] = []                # files with word answers
+    words: dict[str, None] = {}           # their names, in order ("motion", "effect")
     for path in files:
         try:
             problem, problems = _variants_of(path, count, seed, unvaried)
@@ -170,6 +177,10 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
             warn(f"{path}: no numeric answer to ask (word answers are not exported); skipped")
             continue
         ids[str(problem.id)] = path
+        if any(v.unasked for v in variants):
+            worded.append(path)
+            for variant in variants:
+                words.update(dict.fromkeys(variant.unasked))
         name = slug(os.path.splitext(os.path.basename(path))[0])
         unique, n = name, 2
         while unique in slugs:
@@ -179,30 +190,39 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
                                problem.source, unique, problem.kind.name.replace("_", " "),
                                [v for v in variants if v.blanks]))
     if unvaried:
-        shown = ", ".join(unvaried[:3]) + (f" and {len(unvaried) - 3} more"
-                                           if len(unvaried) > 3 else "")
         warn(f"{len(unvaried)} file(s) have no `vary` block and give one variant, the problem "
-             f"as written: {shown}")
+             f"as written: {_some(unvaried)}")
+    if worded:
+        warn(f"{len(worded)} file(s) have word answers ({', '.join(words)}), not asked (a bank "
+             f"asks numbers): {_some(worded)}")
     return out, errors
+
+
+def _some(paths: list[str]) -> str:
+    return ", ".join(paths[:3]) + (f" and {len(paths) - 3} more" if len(paths) > 3 else "")
 
 
 # ---- writing -----------------------------------------------------------------------
 
 def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
           inputs: list[str] | tuple[str, ...] = ()) -> list[str]:
-    """Write the export to ``out`` (a file for moodle and qti, a directory for
-    prairielearn): never one of the ``inputs`` (the problem files), never a file that
+    """Write the export to ``out`` (a file for moodle, qti and blackboard, a directory
+    for prairielearn): never one of the ``inputs`` (the problem files), never a file that
     exists without ``force``, and the question directories all or nothing. The paths
     written."""
     from ..core.files import refuse_input_as_output, write_atomic, write_set
 
-    if fmt in ("moodle", "qti"):
+    if fmt in FILE_FORMATS:
         _refuse_directory(out)
         refuse_input_as_output(out, inputs, option="--output")
         if fmt == "moodle":
             from ..render import bank_moodle
 
             return [str(write_atomic(out, bank_moodle.xml(banks_), force=force))]
+        if fmt == "blackboard":
+            from ..render import bank_blackboard
+
+            return [str(write_atomic(out, bank_blackboard.text(banks_), force=force))]
         from ..render import bank_qti
 
         return [str(write_atomic(out, bank_qti.package(banks_), force=force))]
@@ -229,7 +249,20 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
 def _refuse_directory(out: str) -> None:
     if os.path.isdir(out):
         raise InputError("is a directory; give the file to write (a .xml for moodle, a .zip "
-                         "for qti)", file=out)
+                         "for qti, a .txt for blackboard)", file=out)
+
+
+def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) -> None:
+    """What a Blackboard upload file lacks: more lines than Blackboard recommends per
+    upload, and the worked answers (no feedback field in a NUM line)."""
+    from ..render.bank_blackboard import RECOMMENDED_RECORDS
+
+    records = sum(len(v.blanks) for b in made for v in b.variants)
+    if records > RECOMMENDED_RECORDS:
+        warn(f"{records} questions: Blackboard recommends at most {RECOMMENDED_RECORDS} per "
+             "uploaded file (browser time-outs); export fewer problems per file "
+             "(docs/course.md, Blackboard Learn)")
+    warn("a Blackboard upload file has no feedback field: the worked answers are not in it")
 
 
 # ---- the command --------------------------------------------------------------------
@@ -238,8 +271,9 @@ def _refuse_directory(out: str) -> None:
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--to", "fmt", type=click.Choice(FORMATS), required=True,
               help="moodle: Moodle XML (a category per problem); qti: a QTI 1.2 zip for "
-                   "Canvas and D2L; prairielearn: a question directory per "
-                   "problem.")
+                   "Canvas and D2L; blackboard: a Blackboard Learn Upload Questions "
+                   "file (one NUM question per number asked); prairielearn: a "
+                   "question directory per problem.")
 @click.option("--variants", "count", type=click.IntRange(1, 10_000), default=1,
               show_default=True,
               help="Variants per problem, drawn from its `vary:` block as `gyro vary` "
@@ -247,8 +281,8 @@ def _refuse_directory(out: str) -> None:
 @click.option("--seed", type=int, default=0, show_default=True,
               help="Random seed of the variants (as gyro vary --seed).")
 @click.option("-o", "--output", "out", metavar="OUT", required=True,
-              help="The file to write (moodle: .xml, qti: .zip) or, for prairielearn, the "
-                   "directory to write the question directories into.")
+              help="The file to write (moodle: .xml, qti: .zip, blackboard: .txt) or, for "
+                   "prairielearn, the directory to write the question directories into.")
 @click.option("--force", is_flag=True, help="Replace files of OUT that exist.")
 def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
            force: bool) -> None:
@@ -276,6 +310,9 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
         sys.exit(2)
     questions = sum(len(b.variants) for b in made)
     shown = out if fmt != "prairielearn" else f"{out} ({len(written)} files)"
+    if fmt == "blackboard":
+        _blackboard_notes(made, warn)
+        shown += f" ({sum(len(v.blanks) for b in made for v in b.variants)} NUM questions)"
     click.echo(f"wrote {shown}: {len(made)} problem(s), {questions} variant(s)", err=True)
     if errors:
         sys.exit(2)

@@ -13,8 +13,9 @@ from typing import Callable
 
 from .errors import InputError
 from .params import Param
-from .expr import Sym
-from .work import Work, qty, substitute
+from .expr import Expr, Sym
+from .prose import names
+from .work import Work, qty
 
 G_SI = 9.81         # m/s^2, the format's default
 G_US = 32.2 * 0.3048  # 32.2 ft/s^2 in m/s^2, the textbook value for US data
@@ -55,53 +56,42 @@ BODY_PARAMS: tuple[Param, ...] = (
 class Shape:
     """A uniform body of revolution (or square section) about its symmetry axis.
 
-    ``J`` and ``I_G`` take the mass and the dimensions (r, r_i, w, L, h; SI) and give the
-    axial and the transverse moment about the centre of mass; ``needs`` and ``may`` are
-    the dimension keys it must and may have (radius stands for radius or diameter).
+    ``J`` and ``I_G`` take the mass and the dimensions (r, r_i, w, L, h) as symbols and
+    give the trees of the axial and the transverse moment about the centre of mass;
+    ``needs`` and ``may`` are the dimension keys it must and may have (radius stands for
+    radius or diameter).
     """
 
-    J_text: str
-    J: Callable[..., float]
-    I_G_text: str
-    I_G: Callable[..., float]
+    J: Callable[[Expr, dict[str, Expr]], Expr]
+    I_G: Callable[[Expr, dict[str, Expr]], Expr]
     needs: tuple[str, ...]
     may: tuple[str, ...] = ()
 
 
-def _sq(x: float) -> float:
-    """x^2 as a product: inf past the float range, where x ** 2 raises OverflowError."""
-    return x * x
-
-
 SHAPES: dict[str, Shape] = {
-    "disk": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
-                  "m r^2 / 4", lambda m, d: m * _sq(d["r"]) / 4, ("radius",)),
-    "ring": Shape("m r^2", lambda m, d: m * _sq(d["r"]),
-                  "m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2, ("radius",)),
-    "cylinder": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
-                      "m (3 r^2 + L^2) / 12", lambda m, d: m * (3 * _sq(d["r"]) + _sq(d["L"])) / 12,
+    "disk": Shape(lambda m, d: m * d["r"] ** 2 / 2, lambda m, d: m * d["r"] ** 2 / 4,
+                  ("radius",)),
+    "ring": Shape(lambda m, d: m * d["r"] ** 2, lambda m, d: m * d["r"] ** 2 / 2, ("radius",)),
+    "cylinder": Shape(lambda m, d: m * d["r"] ** 2 / 2,
+                      lambda m, d: m * (3 * d["r"] ** 2 + d["L"] ** 2) / 12,
                       ("radius",), ("length",)),
-    "sphere": Shape("2 m r^2 / 5", lambda m, d: 0.4 * m * _sq(d["r"]),
-                    "2 m r^2 / 5", lambda m, d: 0.4 * m * _sq(d["r"]), ("radius",)),
-    "cone": Shape("3 m r^2 / 10", lambda m, d: 0.3 * m * _sq(d["r"]),
-                  "m (3 r^2 / 20 + 3 h^2 / 80)",
-                  lambda m, d: m * (3 * _sq(d["r"]) / 20 + 3 * _sq(d["h"]) / 80),
+    "sphere": Shape(lambda m, d: 2 * m * d["r"] ** 2 / 5, lambda m, d: 2 * m * d["r"] ** 2 / 5,
+                    ("radius",)),
+    "cone": Shape(lambda m, d: 3 * m * d["r"] ** 2 / 10,
+                  lambda m, d: m * (3 * d["r"] ** 2 / 20 + 3 * d["h"] ** 2 / 80),
                   ("radius", "height")),
     # thin cylindrical tube: all its mass at r; a ring at each section, spread over L
-    "shell": Shape("m r^2", lambda m, d: m * _sq(d["r"]),
-                   "m r^2 / 2 + m L^2 / 12", lambda m, d: m * _sq(d["r"]) / 2 + m * _sq(d["L"]) / 12,
+    "shell": Shape(lambda m, d: m * d["r"] ** 2,
+                   lambda m, d: m * d["r"] ** 2 / 2 + m * d["L"] ** 2 / 12,
                    ("radius", "length")),
-    "rod": Shape("m r^2 / 2", lambda m, d: m * _sq(d["r"]) / 2,
-                 "m (3 r^2 + L^2) / 12", lambda m, d: m * (3 * _sq(d["r"]) + _sq(d["L"])) / 12,
-                 ("length",), ("radius",)),
-    "hollow_sphere": Shape("2 m r^2 / 3", lambda m, d: 2 * m * _sq(d["r"]) / 3,
-                           "2 m r^2 / 3", lambda m, d: 2 * m * _sq(d["r"]) / 3, ("radius",)),
-    "box": Shape("m w^2 / 6", lambda m, d: m * _sq(d["w"]) / 6,
-                 "m (w^2 + L^2) / 12", lambda m, d: m * (_sq(d["w"]) + _sq(d["L"])) / 12,
-                 ("width", "length")),
-    "annulus": Shape("m (r^2 + r_i^2) / 2", lambda m, d: m * (_sq(d["r"]) + _sq(d["r_i"])) / 2,
-                     "m (3 (r^2 + r_i^2) + L^2) / 12",
-                     lambda m, d: m * (3 * (_sq(d["r"]) + _sq(d["r_i"])) + _sq(d["L"])) / 12,
+    "rod": Shape(lambda m, d: m * d["r"] ** 2 / 2,
+                 lambda m, d: m * (3 * d["r"] ** 2 + d["L"] ** 2) / 12, ("length",), ("radius",)),
+    "hollow_sphere": Shape(lambda m, d: 2 * m * d["r"] ** 2 / 3,
+                           lambda m, d: 2 * m * d["r"] ** 2 / 3, ("radius",)),
+    "box": Shape(lambda m, d: m * d["w"] ** 2 / 6,
+                 lambda m, d: m * (d["w"] ** 2 + d["L"] ** 2) / 12, ("width", "length")),
+    "annulus": Shape(lambda m, d: m * (d["r"] ** 2 + d["r_i"] ** 2) / 2,
+                     lambda m, d: m * (3 * (d["r"] ** 2 + d["r_i"] ** 2) + d["L"] ** 2) / 12,
                      ("radius", "inner_radius"), ("length",)),
 }
 
@@ -293,20 +283,16 @@ def _axial(values: dict, m: float, r: float | None, shape: str | None, work: Wor
         return work.step("J", Sym("m", m, "kg") * Sym("k_z", k, "m") ** 2, unit="kg*m^2")
     if shape:
         spec, dims = SHAPES[shape], _dimensions(values, r)
-        return work.step("J", spec.J_text, _substituted(spec.J_text, m, dims),
-                         spec.J(m, dims), "kg*m^2", note=f"({shape.replace('_', ' ')})")
+        return work.step("J", spec.J(Sym("m", m, "kg"), dims), unit="kg*m^2",
+                         note=f"({shape.replace('_', ' ')})")
     return None
 
 
-def _dimensions(values: dict, r: float | None) -> dict[str, float]:
-    """The shape's dimensions by symbol (r, r_i, w, L, h), 0 where not given."""
+def _dimensions(values: dict, r: float | None) -> dict[str, Expr]:
+    """The shape's dimensions as symbols (r, r_i, w, L, h), 0 where not given."""
     dims = {symbol: values.get(key, 0.0) for key, symbol in DIMENSION_KEYS.items()}
     dims["r"] = r if r is not None else 0.0
-    return dims
-
-
-def _substituted(formula: str, m: float, dims: dict[str, float]) -> str:
-    return substitute(formula, m=qty(m, "kg"), **{k: qty(v, "m") for k, v in dims.items()})
+    return {symbol: Sym(symbol, value, "m") for symbol, value in dims.items()}
 
 
 def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
@@ -320,15 +306,17 @@ def _transverse_cg(values: dict, m: float, r: float | None, shape: str | None,
         if shape == "cone" and "height" not in values:
             raise InputError("a cone needs its height", key="given.height")
         spec, dims = SHAPES[shape], _dimensions(values, r)
-        what = {"cylinder": "cylinder of length L", "cone": "cone of height h",
-                "shell": "thin tube of length L", "rod": "rod of length L",
-                "box": "box of square section w and length L",
-                "annulus": "annulus of length L"}.get(shape, shape.replace("_", " "))
+        L, h, w = names("L h w")  # the shape's dimensions, as its formula names them
+        what: tuple = {"cylinder": ("cylinder of length ", L), "cone": ("cone of height ", h),
+                       "shell": ("thin tube of length ", L), "rod": ("rod of length ", L),
+                       "box": ("box of square section ", w, " and length ", L),
+                       "annulus": ("annulus of length ", L)}.get(shape,
+                                                                 (shape.replace("_", " "),))
         if shape in ("cylinder", "annulus") and "length" not in values:
-            what = f"{shape}; its length L not given, taken as 0"
-        return work.step("I_G", spec.I_G_text, _substituted(spec.I_G_text, m, dims),
-                         spec.I_G(m, dims), "kg*m^2",
-                         note=f"({what}, about its centre of mass)")
+            what = (f"{shape}; its length ", L, " not given, taken as 0")
+        note = ("(", *what, ", about its centre of mass)")
+        return work.step("I_G", spec.I_G(Sym("m", m, "kg"), dims), unit="kg*m^2",
+                         note=note if len(what) > 1 else "".join(note))
     return None
 
 
@@ -343,7 +331,7 @@ def _transverse_pivot(values: dict, m: float, I_cg: float | None, l: float | Non
         return work.step("I", Sym("m", m, "kg") * Sym("k_O", k, "m") ** 2, unit="kg*m^2")
     if I_cg is not None and l is not None and m is None:
         # no mass given (none needed): only a fixed point at the centre of mass is known
-        return work.step("I", "I_G", value=I_cg, unit="kg*m^2",
+        return work.step("I", Sym("I_G", I_cg, "kg m^2"), unit="kg*m^2", substitute=False,
                          note="(l = 0: the fixed point is the centre of mass)") if l == 0 else None
     if I_cg is not None and l is not None:
         return work.step("I", Sym("I_G", I_cg, "kg m^2") + Sym("m", m, "kg") * Sym("l", l, "m")

@@ -51,6 +51,8 @@ def num(x: float, sig: int = SIG) -> str:
 
 
 def _node(x: "Expr | float") -> "Expr":
+    if isinstance(x, Chain):
+        raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
     if isinstance(x, Expr):
         return x
     if isinstance(x, bool) or not isinstance(x, (int, float)):
@@ -294,6 +296,67 @@ class Call(Expr):
         return self.args
 
 
+class Chain(Expr):
+    """One quantity written in equal forms, ``A = B``: ``m g L sin(theta) / I_O = g L
+    sin(theta) / (k_G^2 + L^2)``. The formula prints every form, joined by ``=``; the
+    substitution, the value and ``expr`` are the last form's. A chain is a step's whole
+    tree, never an operand. Its value evaluates every form and refuses forms that disagree
+    beyond 1e-9 relative (a slip in one form, or magnitudes beyond double precision)."""
+
+    __slots__ = ("forms",)
+
+    def __init__(self, *forms: "Expr | float") -> None:
+        if len(forms) < 2:
+            raise ValueError("a chain holds two forms or more")
+        self.forms = tuple(_node(f) for f in forms)
+
+    def _refuse(self, *other: object) -> "Expr":
+        raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
+
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _refuse
+    __truediv__ = __rtruediv__ = __pow__ = __neg__ = _refuse
+
+    @property
+    def value(self) -> float:
+        values = [f.value for f in self.forms]
+        last = values[-1]
+        for k, v in enumerate(values[:-1]):
+            if v != last and not math.isclose(v, last, rel_tol=1e-9):
+                raise ValueError(f"its forms disagree: form {k + 1} gives {v!r}, the last "
+                                 f"{last!r}")
+        return last
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.forms
+
+
+class SumOf(Expr):
+    """``sum m (y^2 + z^2)``: a sum over the particles of a body (Eq. 11.3). The formula
+    prints ``body`` (over the symbols by name, with no value); the value, the substitution
+    and ``expr`` are the sum of ``terms``, one per particle (``m_0 (y_0^2 + z_0^2) + ...``)."""
+
+    __slots__ = ("body", "terms")
+
+    def __init__(self, body: Expr, terms: "tuple[Expr, ...]") -> None:
+        if not terms:
+            raise ValueError("a sum over particles needs one term or more")
+        self.body, self.terms = body, tuple(_node(t) for t in terms)
+
+    @property
+    def value(self) -> float:
+        return math.fsum(t.value for t in self.terms)
+
+    def children(self) -> tuple[Expr, ...]:
+        return self.terms
+
+    def expanded(self) -> Expr:
+        """The terms as one sum, left to right."""
+        out = self.terms[0]
+        for term in self.terms[1:]:
+            out = Add(out, term)
+        return out
+
+
 def _call(name: str) -> Callable[..., Expr]:
     def build(*args: "Expr | float") -> Expr:
         return Call(name, tuple(_node(a) for a in args))
@@ -317,6 +380,9 @@ def symbols(expr: Expr) -> dict[str, Sym]:
         elif isinstance(node, Let):
             walk(node.sym)
             return
+        elif isinstance(node, Chain):  # the value and `expr` are the last form's
+            walk(node.forms[-1])
+            return
         for child in node.children():
             walk(child)
 
@@ -336,6 +402,10 @@ def map_syms(expr: Expr, change: Callable[[Sym], Sym]) -> Expr:
         return type(expr)(map_syms(expr.left, change), map_syms(expr.right, change))
     if isinstance(expr, Call):
         return Call(expr.name, tuple(map_syms(a, change) for a in expr.args))
+    if isinstance(expr, Chain):
+        return Chain(*(map_syms(f, change) for f in expr.forms))
+    if isinstance(expr, SumOf):
+        return SumOf(expr.body, tuple(map_syms(t, change) for t in expr.terms))
     return expr
 
 
@@ -351,10 +421,15 @@ def precedence(node: Expr, values: bool) -> int:
     unary minus."""
     if isinstance(node, Let):
         return precedence(node.sym if values else node.body, values)
+    own = getattr(node, "binding", None)  # the typeset-only nodes of core/prose.py
+    if own is not None:
+        return own
     if isinstance(node, (Add, Sub)):
         return ADD
     if isinstance(node, (Mul, Div)):
         return MUL
+    if isinstance(node, SumOf):
+        return ADD if values else MUL  # the terms added; sum m x y binds as a product
     if isinstance(node, Neg):
         return NEG
     if isinstance(node, Pow):
@@ -409,8 +484,17 @@ def needs_brackets(parent: Expr, child: Expr, right: bool, values: bool) -> bool
     if isinstance(parent, Pow):
         return c < ATOM or isinstance(node, (Pow,)) if not right else c < ATOM
     if isinstance(parent, Neg):
-        return c < MUL or c == NEG
+        # -(-2.000 rad/s sin(x)): a product or quotient printed with a leading minus
+        return c < MUL or c == NEG or leading_negative(node, values) or \
+            getattr(node, "bracket_after_sign", False)  # -(omega_p x H)
     return False
+
+
+def leading_negative(node: Expr, values: bool) -> bool:
+    """A product or quotient whose printed text starts with a minus sign."""
+    while isinstance(node, (Mul, Div)):
+        node = leaf(factors(node, values)[0] if isinstance(node, Mul) else node.left, values)
+    return negative_leaf(node, values) or isinstance(node, Neg)
 
 
 def trig_power(node: Pow) -> str:
@@ -483,6 +567,17 @@ class TextPrinter(Printer):
 
     def _print_Neg(self, node: Neg) -> str:
         return "-" + self.operand(node, node.arg)
+
+    def _print_Chain(self, node: Chain) -> str:
+        if self.values:
+            return self._print(node.forms[-1])
+        return " = ".join(self._print(f) for f in node.forms)
+
+    def _print_SumOf(self, node: SumOf) -> str:
+        if self.values:
+            return self._print(node.expanded())
+        body = self._print(node.body)
+        return "sum " + (f"({body})" if precedence(node.body, False) <= ADD else body)
 
     def _sum(self, node: BinOp, op: str) -> str:
         left = self.operand(node, node.left)
@@ -561,6 +656,12 @@ class PythonPrinter(Printer):
 
     def _print_Call(self, node: Call) -> str:
         return f"{node.name}({', '.join(self._print(a) for a in node.args)})"
+
+    def _print_Chain(self, node: Chain) -> str:
+        return self._print(node.forms[-1])
+
+    def _print_SumOf(self, node: SumOf) -> str:
+        return f"({self._print(node.expanded())})"
 
 
 def python_name(name: str) -> str:

@@ -3,12 +3,26 @@ body, the loader and the kinds all use them)."""
 
 from __future__ import annotations
 
+import math
+import operator
 from dataclasses import dataclass
+
+BOUNDS = ("[]", "[)", "(]", "()")
 
 
 @dataclass(frozen=True)
 class Param:
-    """A key of `given`: its dimension (a name in units.DIMENSIONS), symbol and meaning."""
+    """A key of `given`: its dimension (a name in units.DIMENSIONS), symbol and meaning,
+    and the values it may take.
+
+    The constraints are on the value in SI (an angle in rad) and the loader enforces
+    them, one message style for all (``expected 0 deg <= obliquity < 90 deg, got '95 deg'``):
+    ``positive`` (> 0), ``nonnegative`` (>= 0), ``nonzero`` (!= 0), ``range=(lo, hi)``
+    with ``bounds`` saying which ends are included ("[]", "[)", "(]", "()"; an end may be
+    +-inf, and is then no limit), ``limits`` how to say range's ends where the number
+    alone would not ("2/3"), ``reason`` why, added to the refusal. A check that needs two
+    keys or the physics (J <= 2 I_G, a spin too low) stays in the kind.
+    """
 
     name: str
     dimension: str
@@ -17,6 +31,76 @@ class Param:
     default: str | None = None  # a quantity string used when the key is absent
     choices: tuple[str, ...] = ()  # for word-valued keys (dimension "word")
     words: tuple[tuple[str, str], ...] = ()  # other spellings of a choice: (spelling, choice)
+    positive: bool = False
+    nonnegative: bool = False
+    nonzero: bool = False
+    range: tuple[float, float] | None = None  # SI
+    bounds: str = "[]"
+    limits: tuple[str, str] | None = None
+    reason: str = ""
+
+    def __post_init__(self) -> None:
+        if self.bounds not in BOUNDS:
+            raise ValueError(f"{self.name}: bounds is one of {BOUNDS}, not {self.bounds!r}")
+        if self.range is not None and not self.range[0] < self.range[1]:
+            raise ValueError(f"{self.name}: range {self.range} is empty")
+
+    def limits_declared(self) -> tuple[tuple[str, float], ...]:
+        """Each declared limit as (operator, SI value): (">", 0.0), ("<", pi / 2), ("!=", 0.0)."""
+        out: list[tuple[str, float]] = []
+        if self.positive:
+            out.append((">", 0.0))
+        if self.nonnegative:
+            out.append((">=", 0.0))
+        if self.range is not None:
+            lo, hi = self.range
+            if math.isfinite(lo):
+                out.append((">" if self.bounds[0] == "(" else ">=", lo))
+            if math.isfinite(hi):
+                out.append(("<" if self.bounds[1] == ")" else "<=", hi))
+        if self.nonzero:
+            out.append(("!=", 0.0))
+        return tuple(out)
+
+    def limits_broken(self, value: float) -> tuple[tuple[str, float], ...]:
+        """The declared limits ``value`` (SI) does not keep; () if it keeps them all."""
+        return tuple((op, x) for op, x in self.limits_declared() if not _OPS[op](value, x))
+
+    def limit_text(self, x: float, unit: str = "") -> str:
+        """A limit as a message says it: an angle in deg, else in ``unit`` (the SI unit);
+        the declared ``limits`` for the ends of ``range``."""
+        if self.limits and self.range is not None and x in self.range:
+            return self.limits[self.range.index(x)]
+        if self.dimension == "angle":
+            return f"{math.degrees(x):.6g} deg"
+        return f"{x:.6g}" + (f" {unit}" if unit else "")
+
+    def expectation(self, unit: str = "") -> str:
+        """The declared limits as one condition on the key: ``0 deg <= obliquity < 90 deg``,
+        ``turn_radius > 0 m``; "" if none is declared."""
+        def said(op: str, x: float) -> str:
+            return f"{self.name} {op} {self.limit_text(x, unit)}"
+
+        parts = [said(op, 0.0) for op, on in ((">", self.positive), (">=", self.nonnegative))
+                 if on]
+        if self.range is not None:
+            (lo, hi), (lo_op, hi_op) = self.range, (_FLIP[self.bounds[0]], _OPS_OF[self.bounds[1]])
+            if math.isfinite(lo) and math.isfinite(hi):
+                parts.append(f"{self.limit_text(lo, unit)} {lo_op} {self.name} {hi_op} "
+                             f"{self.limit_text(hi, unit)}")
+            elif math.isfinite(lo):
+                parts.append(said({"<": ">", "<=": ">="}[lo_op], lo))
+            elif math.isfinite(hi):
+                parts.append(said(hi_op, hi))
+        if self.nonzero:
+            parts.append(said("!=", 0.0))
+        return " and ".join(parts)
+
+
+_OPS = {">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le,
+        "!=": operator.ne}
+_FLIP = {"(": "<", "[": "<="}  # a range's lower end, read left to right
+_OPS_OF = {")": "<", "]": "<="}
 
 
 @dataclass(frozen=True)

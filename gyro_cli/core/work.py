@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
+from .prose import Prose, text as prose_text
 from .units import si_text
 
 __all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
@@ -65,6 +66,8 @@ class Step:
     expr: Expr | None = None
     view: Expr | None = None
     si: tuple[float, str] | None = None
+    prose: Prose | None = None  # a line (or a step's note) written as words and trees
+    symbol_expr: Expr | None = None  # a symbol that is not one name: ``H / c``, ``|F|``
 
     @property
     def shown(self) -> Expr | None:
@@ -118,6 +121,7 @@ Step.substitution = _printed("substitution", tree_substitution)  # type: ignore[
 class Section:
     title: str
     steps: list[Step] = field(default_factory=list)
+    prose: Prose | None = None  # a title written as words and trees
 
 
 @dataclass
@@ -129,6 +133,7 @@ class Answer:
     si_values: list
     dimension: str | None
     labels: list[str] = field(default_factory=list)
+    symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
 
     @property
     def si_unit(self) -> str | None:
@@ -145,6 +150,7 @@ class GivenLine:
     si_value: float | str
     si_unit: str
     note: str = ""
+    note_prose: Prose | None = None  # a note written as words and trees
 
 
 @dataclass
@@ -155,6 +161,16 @@ class Solution:
     warnings: list[str]
     checks: list[Step] = field(default_factory=list)
     system: str = "SI"  # the units of the steps: "SI", or "US" (slug, ft, lbf) on request
+    #: the warnings written as words and trees, by their text
+    warning_prose: dict[str, Prose] = field(default_factory=dict)
+
+
+def prose_step(pieces: tuple) -> Step:
+    """A line of words only, or of words and trees (`core.prose.Prose`)."""
+    if len(pieces) == 1 and isinstance(pieces[0], str):
+        return Step(text=pieces[0])
+    prose = Prose(tuple(pieces))
+    return Step(text=prose.text, prose=prose)
 
 
 class Work:
@@ -166,10 +182,13 @@ class Work:
         self.answers: dict[str, Answer] = {}
         self.warnings: list[str] = []
         self.checks: list[Step] = []
+        self.warning_prose: dict[str, Prose] = {}
 
-    def section(self, title: str) -> Section:
-        """Start a section; later steps go into it."""
-        self.sections.append(Section(title))
+    def section(self, *pieces: str | Expr) -> Section:
+        """Start a section; later steps go into it. Its title is words, or words and trees
+        as `text` takes them."""
+        line = prose_step(pieces)
+        self.sections.append(Section(line.text, prose=line.prose))
         return self.sections[-1]
 
     def _current(self) -> Section:
@@ -177,8 +196,9 @@ class Work:
             self.section("Solution")
         return self.sections[-1]
 
-    def step(self, symbol: str, formula: str | Expr = "", substitution: str = "",
-             value: float | None = None, unit: str = "", ref: str = "", note: str = "",
+    def step(self, symbol: str | Expr, formula: str | Expr = "", substitution: str = "",
+             value: float | None = None, unit: str = "", ref: str = "",
+             note: "str | tuple[str | Expr, ...]" = "",
              substitute: bool = True, state: bool = True) -> float | None:
         """Add ``symbol = formula = substitution = value``; returns value.
 
@@ -189,6 +209,13 @@ class Work:
         returns it converted. The older form, formula and substitution as text with the
         value beside them, is kept for the kinds not yet written as trees.
         """
+        symbol_expr = None
+        if isinstance(symbol, Expr):  # a symbol that is not one name: H / c, |F|, K(m)
+            symbol_expr, symbol = symbol, prose_text(symbol)
+        prose = None
+        if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
+            prose = Prose(note)
+            note = prose.text
         if isinstance(formula, Expr):
             if substitution or value is not None:
                 raise TypeError("a step built from a tree takes its substitution and value "
@@ -209,28 +236,40 @@ class Work:
                 value = value / SHOWN[unit][0]
             self._current().steps.append(Step(
                 symbol, _PRINT if state else "", _PRINT if substitute else "", value, unit,
-                ref, note, expr=tree, si=si))
+                ref, note, expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
         if " -" in substitution:
             substitution = fold_signs(substitution)
-        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note))
+        self._current().steps.append(Step(symbol, formula, substitution, value, unit, ref, note,
+                                          prose=prose, symbol_expr=symbol_expr))
         return value
 
-    def text(self, line: str) -> None:
-        """Add a line of prose or a bare equation to the current section."""
-        self._current().steps.append(Step(text=line))
+    def text(self, *pieces: str | Expr) -> None:
+        """Add a line of prose to the current section: words (strings) and maths (trees,
+        `core.prose`), printed by every format from the trees."""
+        self._current().steps.append(prose_step(pieces))
 
-    def check(self, line: str) -> None:
-        """An independent check of the answer (a residual, a balance)."""
-        self.checks.append(Step(text=line))
+    def check(self, *pieces: str | Expr) -> None:
+        """An independent check of the answer (a residual, a balance), as `text` writes
+        a line."""
+        self.checks.append(prose_step(pieces))
 
-    def answer(self, name: str, symbol: str, si_values: list, dimension: str | None,
+    def answer(self, name: str, symbol: str | Expr, si_values: list, dimension: str | None,
                labels: list[str] | None = None) -> None:
-        self.answers[name] = Answer(name, symbol, list(si_values), dimension, list(labels or []))
+        """An answer; its symbol is one name (``phidot``) or a tree (``abs(F)``)."""
+        tree = symbol if isinstance(symbol, Expr) else None
+        text = prose_text(symbol) if tree is not None else symbol
+        self.answers[name] = Answer(name, text, list(si_values), dimension, list(labels or []),
+                                    symbol_expr=tree)
 
-    def warn(self, message: str) -> None:
-        if message not in self.warnings:
-            self.warnings.append(message)
+    def warn(self, *pieces: str | Expr) -> None:
+        """A warning: words, or words and trees as `text` takes them."""
+        step = prose_step(pieces)
+        if step.text not in self.warnings:
+            self.warnings.append(step.text)
+            if step.prose is not None:
+                self.warning_prose[step.text] = step.prose
 
     def solution(self) -> Solution:
-        return Solution(self.given, self.sections, self.answers, self.warnings, self.checks)
+        return Solution(self.given, self.sections, self.answers, self.warnings, self.checks,
+                        warning_prose=self.warning_prose)

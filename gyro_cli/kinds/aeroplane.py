@@ -20,8 +20,9 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import Sym
-from ..core.work import Work, num, qty, vec
+from ..core.expr import Sym, absolute
+from ..core.prose import cross, names, paren, plus, q, qvec, rel
+from ..core.work import Work
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -33,14 +34,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError("the aeroplane needs spin (engine speed), speed and turn_radius",
                              key=f"given.{key}")
     spin, v, R = given["spin"], given["speed"], given["turn_radius"]
-    if spin < 0:
-        raise InputError("give the engine speed as a positive rate and its sense in "
-                         "rotor_sense (e.g. clockwise_from_rear)", key="given.spin")
-    if R <= 0:
-        raise InputError(f"turn_radius must be positive, got {num(R)} m", key="given.turn_radius")
-    if v < 0:
-        raise InputError("speed must be positive (the aeroplane flies forward)",
-                         key="given.speed")
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:
         raise InputError("the effect needs the engine's sense: rotor_sense, one of "
@@ -48,13 +41,16 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     turn = given.word("turn", "left")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("aeroplane axes: x forward (toward the nose), y to the left (looking forward), "
-              "z up. The engine's axis lies fore and aft. A rotation that looks clockwise to an "
-              "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotor C = omega_p x "
-              "H (Eq. 11.29); the aeroplane feels the reactive "
-              "couple -C. About -y it raises the nose; about +y it dips it.")
+    x, y, z, H_, wp_, C_ = names("x y z H omega_p C")
+    work.text("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left (looking "
+              "forward), ", z, " up. The engine's axis lies fore and aft. A rotation that looks "
+              "clockwise to an observer has its vector pointing away from the observer "
+              "(right-hand rule).")
+    work.text(H_, ": the angular momentum of the spinning parts; ", wp_, ": the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotor ",
+              rel(C_, "=", cross(wp_, H_)), " (Eq. 11.29); the aeroplane feels the reactive "
+              "couple ", -C_, ". About ", -y, " it raises the nose; about ", plus(y),
+              " it dips it.")
 
     direction = V.spin_direction(sense) if sense else 1.0
     work.section("Engine and propeller")
@@ -65,14 +61,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     H = V.spin_vector(J, spin, direction)
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
-                  f"{'forward (toward the nose), +x' if direction > 0 else 'aft (toward the tail), -x'}"
-                  f"; H = {vec(H, 'kg m^2/s')}")
+                  f"{'forward (toward the nose), ' if direction > 0 else 'aft (toward the tail), '}",
+                  plus(x) if direction > 0 else -x, "; ", rel(H_, "=", qvec(H, "kg m^2/s")))
 
     work.section("Turn: precession about the vertical")
     rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
-              f"from above): omega_p = {vec(wp, 'rad/s')}")
+              "from above): ", rel(wp_, "=", qvec(wp, "rad/s")))
 
     work.section("Gyroscopic couple, C = omega_p x H")
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
@@ -85,12 +81,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text(f"couple on the rotor omega_p x H = {vec(active, 'N m')}")
-        work.text(f"reactive couple on the aeroplane -(omega_p x H) = {vec(reactive, 'N m')}")
+        work.text("couple on the rotor ", rel(cross(wp_, H_), "=", qvec(active, "N m")))
+        work.text("reactive couple on the aeroplane ",
+                  rel(-paren(cross(wp_, H_)), "=", qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "aeroplane")
         work.text(f"effect on the aeroplane: {words}")
         work.answer("effect", "effect", [words], None)
-        work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")
+        work.check(rel(absolute(cross(wp_, H_)), "=", q(V.norm(active), "N m"), "=", C_, "=",
+                       q(C, "N m")))
 
 
 KIND = Kind(
@@ -100,11 +98,13 @@ KIND = Kind(
     chapter="Eq. 11.29 in vector form, C = omega_p x H; Khurmi, Theory of Machines, ch. 14",
     params=(
         Param("spin", "rate", "omega", "engine (propeller) speed, a positive rate; its sense in "
-              "rotor_sense"),
+              "rotor_sense", nonnegative=True, reason="give the engine speed as a positive "
+              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)"),
         Param("rotor_sense", "word", "sense", "sense of the engine seen from the front (nose) or "
               "the rear (tail, the pilot's view)", choices=V.AEROPLANE_SENSES),
-        Param("speed", "speed", "v", "flying speed"),
-        Param("turn_radius", "length", "R", "radius of the turn"),
+        Param("speed", "speed", "v", "flying speed", nonnegative=True,
+              reason="the aeroplane flies forward"),
+        Param("turn_radius", "length", "R", "radius of the turn", positive=True),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
     ),
     answers=(

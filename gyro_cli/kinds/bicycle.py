@@ -23,7 +23,8 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import Expr, Sym, cos, sin
+from ..core.expr import Expr, Num, Sym, absolute, cos, sin
+from ..core.prose import fn, matrix, names, prime, q, rel, tup
 from ..core.work import GivenLine, Work, num
 
 # key -> (dimension, symbol, meaning); order of Table 1.
@@ -57,6 +58,19 @@ KEYS: dict[str, tuple[str, str, str]] = {
 }
 SI = {"length": "m", "mass": "kg", "inertia": "kg m^2", "angle": "rad"}
 MASSES = ("mR", "mB", "mH", "mF")
+_WHEEL = "a wheel's inertia tensor diag(Ixx, Iyy, Ixx) is positive definite"
+_FRAME = "an inertia tensor is positive definite: its diagonal entries are positive"
+_ABOVE = "z points down from the road: a centre of mass above the road has z < 0"
+# key -> the limits its Param declares (the loader refuses a value outside them)
+LIMITS: dict[str, dict] = {
+    **{key: {"positive": True} for key in MASSES + ("w", "rR", "rF")},
+    "lambda": {"range": (-math.pi / 2, math.pi / 2), "bounds": "()",
+               "reason": "the steer axis tilt from the vertical"},
+    **{key: {"range": (-math.inf, 0.0), "bounds": "()", "reason": _ABOVE}
+       for key in ("zB", "zH")},
+    **{key: {"positive": True, "reason": _WHEEL} for key in ("IRxx", "IRyy", "IFxx", "IFyy")},
+    **{f"I{f}{a}": {"positive": True, "reason": _FRAME} for f in "BH" for a in ("xx", "yy", "zz")},
+}
 PRESET = "benchmark"
 Q = "(phi, delta)"
 
@@ -86,29 +100,10 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
 
 
 def _validate(p: dict[str, float]) -> None:
-    """Physically impossible data: exit 2 naming the key and the limit."""
-    for key in MASSES:
-        if p[key] <= 0:
-            raise InputError(f"a mass must be positive, got {num(p[key])} kg", key=f"given.{key}")
-    for key in ("w", "rR", "rF"):
-        if p[key] <= 0:
-            raise InputError(f"must be positive, got {num(p[key])} m", key=f"given.{key}")
-    if p["g"] <= 0:
-        raise InputError(f"gravity must be positive, got {num(p['g'])} m/s^2", key="given.g")
-    if not abs(p["lambda"]) < math.pi / 2:
-        raise InputError(f"the steer axis tilt lies between -90 and 90 deg, got "
-                         f"{num(math.degrees(p['lambda']))} deg", key="given.lambda")
-    for key in ("zB", "zH"):
-        if p[key] >= 0:
-            raise InputError(f"z points down from the road: a centre of mass above the road has "
-                             f"z < 0, got {num(p[key])} m", key=f"given.{key}")
+    """Physically impossible data that no one key shows (each key's own limits are declared
+    in LIMITS): exit 2 naming the key and the limit."""
     for wheel in ("R", "F"):
         xx, yy = p[f"I{wheel}xx"], p[f"I{wheel}yy"]
-        for key, value in ((f"I{wheel}xx", xx), (f"I{wheel}yy", yy)):
-            if value <= 0:
-                raise InputError(f"the wheel's inertia tensor diag(I{wheel}xx, I{wheel}yy, "
-                                 f"I{wheel}xx) must be positive definite, got {num(value)} kg m^2",
-                                 key=f"given.{key}")
         if yy > 2 * xx * (1 + 1e-9):
             raise InputError(f"a wheel's moment about its axle is at most twice its moment about "
                              f"a diameter (all mass in the wheel's plane): I{wheel}yy <= 2 "
@@ -116,10 +111,6 @@ def _validate(p: dict[str, float]) -> None:
                              key=f"given.I{wheel}yy")
     for frame in ("B", "H"):
         xx, yy, zz, xz = (p[f"I{frame}{a}"] for a in ("xx", "yy", "zz", "xz"))
-        for key, value in ((f"I{frame}xx", xx), (f"I{frame}yy", yy), (f"I{frame}zz", zz)):
-            if value <= 0:
-                raise InputError(f"the inertia tensor is not positive definite: a diagonal entry "
-                                 f"must be positive, got {num(value)} kg m^2", key=f"given.{key}")
         if xz * xz >= xx * zz:
             raise InputError(f"the inertia tensor [[I{frame}xx, 0, I{frame}xz], [0, I{frame}yy, "
                              f"0], [I{frame}xz, 0, I{frame}zz]] is not positive definite: "
@@ -138,27 +129,34 @@ def _validate(p: dict[str, float]) -> None:
 
 # ---- the worked answer ------------------------------------------------------
 
-def _speeds_text(intervals: list[tuple[float, float]]) -> str:
+V, S_, INF = names("v s infinity")
+
+
+def _speeds(intervals: list[tuple[float, float]]) -> tuple:
+    """The self-stable ranges as pieces: ``4.292383 m/s < v < 6.024262 m/s``."""
     if not intervals:
-        return "no self-stable speed"
-    return ", ".join(f"{num(lo, 7)} m/s < v < " + (f"{num(hi, 7)} m/s" if math.isfinite(hi)
-                                                      else "infinity") for lo, hi in intervals)
+        return ("no self-stable speed",)
+    pieces: list = []
+    for lo, hi in intervals:
+        if pieces:
+            pieces.append(", ")
+        pieces.append(rel(q(lo, "m/s", sig=7), "<", V, "<",
+                          q(hi, "m/s", sig=7) if math.isfinite(hi) else INF))
+    return tuple(pieces)
 
 
-def _matrix_text(name: str, a, unit: str) -> str:
-    return (f"{name} = [[{num(a[0, 0], 10)}, {num(a[0, 1], 10)}], "
-            f"[{num(a[1, 0], 10)}, {num(a[1, 1], 10)}]] {unit}")
-
-
-def _poly_text(coeffs, var: str = "v") -> str:
-    terms = []
+def _poly(coeffs) -> Expr:
+    """A polynomial in v by its coefficients (ascending powers), 7 figures each:
+    ``-755.0919 + 65.65200 v^2``."""
+    tree: Expr | None = None
     for power, c in enumerate(coeffs):
         if c == 0:
             continue
-        term = num(c, 7) + ("" if power == 0 else f" {var}" if power == 1 else
-                            f" {var}^{power}")
-        terms.append(term)
-    return " + ".join(terms).replace("+ -", "- ") or "0"
+        term: Expr = q(abs(c) if tree is not None else c, sig=7)
+        if power:
+            term = term * (V if power == 1 else V ** power)
+        tree = term if tree is None else tree - term if c < 0 else tree + term
+    return tree if tree is not None else Num(0)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -175,15 +173,22 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "inertias and their units", key="given")
 
     work.section("Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)")
-    work.text("x forward, y to the right, z down; origin at the rear wheel's contact point. "
-              "phi: the lean to the right; delta: the steer to the right (rad); q = (phi, delta). "
-              "Small motions about upright straight running at speed v, no rider torques:")
-    work.text("M: the mass matrix; C1: the velocity matrix (times v); K0, K2: the stiffness "
-              "matrices of gravity (times g) and of speed (times v^2):")
-    work.text("M q'' + v C1 q' + (g K0 + v^2 K2) q = 0    (Eq. 5.3)")
+    x, y, z, phi, delta, q_, g_ = names("x y z phi delta q g")
+    M_, C1, K0, K2 = names("M C1 K0 K2")
+    work.text(x, " forward, ", y, " to the right, ", z, " down; origin at the rear wheel's "
+              "contact point. ", phi, ": the lean to the right; ", delta, ": the steer to the "
+              "right (rad); ", rel(q_, "=", tup(phi, delta)), ". Small motions about upright "
+              "straight running at speed ", V, ", no rider torques:")
+    work.text(M_, ": the mass matrix; ", C1, ": the velocity matrix (times ", V, "); ", K0, ", ",
+              K2, ": the stiffness matrices of gravity (times ", g_, ") and of speed (times ",
+              V ** 2, "):")
+    work.text(rel(M_ * prime(q_, 2) + V * C1 * prime(q_) + (g_ * K0 + V ** 2 * K2) * q_, "=", 0),
+              "    (Eq. 5.3)")
     if not gyroscopic:
-        work.text("gyroscopic: false -- the wheels' spin angular momentum is removed: S_R = S_F "
-                  "= 0 wherever I_Ryy / r_R and I_Fyy / r_F enter (C1 and K2).")
+        S_R, S_F, I_Ryy, r_R, I_Fyy, r_F = names("S_R S_F I_Ryy r_R I_Fyy r_F")
+        work.text("gyroscopic: false -- the wheels' spin angular momentum is removed: ",
+                  rel(S_R, "=", S_F, "=", 0), " wherever ", I_Ryy / r_R, " and ", I_Fyy / r_F,
+                  " enter (", C1, " and ", K2, ").")
 
     work.section("The whole bicycle T about the rear contact point (Eqs. A 1-A 5)")
     S = _symbols(p)
@@ -192,7 +197,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                                                         "w", "c", "lambda"))
     I = {k: S[k] for k in S if k.startswith("I")}
 
-    def step(symbol: str, tree: Expr, unit: str, note: str = "") -> Sym:
+    def step(symbol: str, tree: Expr, unit: str, note: str | tuple = "") -> Sym:
         """A formula step (the values are the paper's, printed in the Given table)."""
         value = work.step(symbol, tree, unit=unit, note=note, substitute=False)
         assert value is not None
@@ -206,7 +211,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
          + mH * zH ** 2 + mF * rF ** 2, "kg*m^2")
     step("I_Txz", I["IBxz"] + I["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF, "kg*m^2")
     step("I_Tzz", I["IRxx"] + I["IBzz"] + I["IHzz"] + I["IFxx"] + mB * xB ** 2 + mH * xH ** 2
-         + mF * w ** 2, "kg*m^2", note="for the wheels I_Rzz = I_Rxx and I_Fzz = I_Fxx")
+         + mF * w ** 2, "kg*m^2", note=("for the wheels ", rel(*names("I_Rzz"), "=", *names("I_Rxx")),
+                                         " and ", rel(*names("I_Fzz"), "=", *names("I_Fxx"))))
 
     work.section("The front assembly A = front frame H + front wheel F (Eqs. A 6-A 15)")
     mA = step("m_A", mH + mF, "kg")
@@ -219,7 +225,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     IAzz = step("I_Azz", I["IHzz"] + I["IFxx"] + mH * (xH - xA) ** 2 + mF * (w - xA) ** 2,
                 "kg*m^2")
     uA = step("u_A", (xA - w - c) * cos(lam) - zA * sin(lam), "m",
-              note="distance of A's centre of mass ahead of the steer axis")
+              note=("distance of ", *names("A"), "'s centre of mass ahead of the steer axis"))
     step("I_All", mA * uA ** 2 + IAxx * sin(lam) ** 2 + 2 * IAxz * sin(lam) * cos(lam)
          + IAzz * cos(lam) ** 2, "kg*m^2", note="about the steer axis")
     step("I_Alx", -(mA * uA * zA) + IAxx * sin(lam) + IAxz * cos(lam), "kg*m^2")
@@ -230,49 +236,70 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   note="rear wheel spin angular momentum per unit speed")
         SF = step("S_F", I["IFyy"] / rF, "kg m")
         step("S_T", SR + SF, "kg m")
-    else:
-        work.step("S_R", "0 (gyroscopic: false)", value=t.SR, unit="kg m",
-                  note="rear wheel spin angular momentum per unit speed")
-        work.step("S_F", "0 (gyroscopic: false)", value=t.SF, unit="kg m")
-        work.step("S_T", "S_R + S_F", value=t.ST, unit="kg m")
+    else:  # the spin terms removed: a datum of the problem (0), not a formula
+        work.step("S_R", value=t.SR, unit="kg m",
+                  note="gyroscopic: false; rear wheel spin angular momentum per unit speed")
+        work.step("S_F", value=t.SF, unit="kg m", note="gyroscopic: false")
+        step("S_T", Sym("S_R", t.SR, "kg m") + Sym("S_F", t.SF, "kg m"), "kg m")
     step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
 
     work.section("The matrices (Eqs. A 20-A 23), rows and columns " + Q)
-    work.text("M_pp = I_Txx;  M_pd = M_dp = I_Alx + mu I_Txz;  M_dd = I_All + 2 mu I_Alz + "
-              "mu^2 I_Tzz")
-    work.text(_matrix_text("M", m.M, "kg m^2"))
-    work.text("C1_pp = 0;  C1_pd = mu S_T + S_F cos(lambda) + I_Txz cos(lambda) / w - mu m_T "
-              "z_T;  C1_dp = -(mu S_T + S_F cos(lambda));  C1_dd = I_Alz cos(lambda) / w + "
-              "mu (S_A + I_Tzz cos(lambda) / w)")
-    work.text(_matrix_text("C1", m.C1, "kg m"))
-    work.text("K0_pp = m_T z_T;  K0_pd = K0_dp = -S_A;  K0_dd = -S_A sin(lambda)")
-    work.text(_matrix_text("K0", m.K0, "kg m"))
-    work.text("K2_pp = K2_dp = 0;  K2_pd = (S_T - m_T z_T) cos(lambda) / w;  K2_dd = (S_A + "
-              "S_F sin(lambda)) cos(lambda) / w")
-    work.text(_matrix_text("K2", m.K2, "kg"))
+    (I_Txx, I_Txz, I_Tzz, I_All, I_Alx, I_Alz, mu_, S_T, S_F, S_A, m_T, z_T, w_,
+     lam_) = names("I_Txx I_Txz I_Tzz I_All I_Alx I_Alz mu S_T S_F S_A m_T z_T w lambda")
+    sep = ";  "
+    entries = {name: names(" ".join(f"{name}_{e}" for e in ("pp", "pd", "dp", "dd")))
+               for name in ("M", "C1", "K0", "K2")}
+    pp, pd, dp, dd = entries["M"]
+    work.text(rel(pp, "=", I_Txx), sep, rel(pd, "=", dp, "=", I_Alx + mu_ * I_Txz), sep,
+              rel(dd, "=", I_All + 2 * mu_ * I_Alz + mu_ ** 2 * I_Tzz))
+    work.text(rel(M_, "=", matrix(m.M, "kg m^2", sig=10)))
+    pp, pd, dp, dd = entries["C1"]
+    work.text(rel(pp, "=", 0), sep,
+              rel(pd, "=", mu_ * S_T + S_F * cos(lam_) + I_Txz * cos(lam_) / w_
+                  - mu_ * m_T * z_T), sep,
+              rel(dp, "=", -(mu_ * S_T + S_F * cos(lam_))), sep,
+              rel(dd, "=", I_Alz * cos(lam_) / w_ + mu_ * (S_A + I_Tzz * cos(lam_) / w_)))
+    work.text(rel(C1, "=", matrix(m.C1, "kg m", sig=10)))
+    pp, pd, dp, dd = entries["K0"]
+    work.text(rel(pp, "=", m_T * z_T), sep, rel(pd, "=", dp, "=", -S_A), sep,
+              rel(dd, "=", -S_A * sin(lam_)))
+    work.text(rel(K0, "=", matrix(m.K0, "kg m", sig=10)))
+    pp, pd, dp, dd = entries["K2"]
+    work.text(rel(pp, "=", dp, "=", 0), sep, rel(pd, "=", (S_T - m_T * z_T) * cos(lam_) / w_),
+              sep, rel(dd, "=", (S_A + S_F * sin(lam_)) * cos(lam_) / w_))
+    work.text(rel(K2, "=", matrix(m.K2, "kg", sig=10)))
 
     coeffs = bike.characteristic(m, g)
     work.section("The characteristic equation: det(M s^2 + v C1 s + g K0 + v^2 K2) = 0")
-    work.text("a4 s^4 + a3 s^3 + a2 s^2 + a1 s + a0 = 0: the characteristic polynomial in the "
-              "eigenvalue s; its coefficients a_k, below, are a4, a3, a2, a1, a0 (v in m/s, s in "
-              "1/s)")
+    a = names("a0 a1 a2 a3 a4")
+    a_k, H3 = names("a_k H3")
+    work.text(rel(a[4] * S_ ** 4 + a[3] * S_ ** 3 + a[2] * S_ ** 2 + a[1] * S_ + a[0], "=", 0),
+              ": the characteristic polynomial in the eigenvalue ", S_, "; its coefficients ",
+              a_k, ", below, are ", a[4], ", ", a[3], ", ", a[2], ", ", a[1], ", ", a[0], " (",
+              V, " in m/s, ", S_, " in 1/s)")
     for k in (4, 3, 2, 1, 0):
-        work.text(f"a{k} = {_poly_text(coeffs[k])}")
-    work.text("Routh-Hurwitz: all four roots have Re(s) < 0 iff every a_k > 0 and "
-              "H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 > 0. A real root crosses 0 where a0(v) = 0 "
-              "(capsize speed); a complex pair crosses the imaginary axis where H3(v) = 0 "
-              "(weave speed).")
+        work.text(rel(a[k], "=", _poly(coeffs[k])))
+    re_s = fn("Re", S_)
+    work.text("Routh-Hurwitz: all four roots have ", rel(re_s, "<", 0), " iff every ",
+              rel(a_k, ">", 0), " and ",
+              rel(H3, "=", a[1] * a[2] * a[3] - a[0] * a[3] ** 2 - a[1] ** 2 * a[4], ">", 0),
+              ". A real root crosses ", Num(0), " where ", rel(fn("a0", V), "=", 0),
+              " (capsize speed); a complex pair crosses the imaginary axis where ",
+              rel(fn("H3", V), "=", 0), " (weave speed).")
 
     stab = bike.stability(m, g)
     work.section("Self-stable speeds (v > 0)")
-    work.text(f"H3(v) = {_poly_text(bike.hurwitz(coeffs))}")
+    work.text(rel(fn("H3", V), "=", _poly(bike.hurwitz(coeffs))))
+    # the speeds are roots of H3(v) and a0(v), conditions rather than formulas: value steps
     for v in stab.weave:
-        work.step("v_w", "H3(v) = 0, a complex pair on the imaginary axis", value=v,
-                  unit="m/s", note=f"weave speed, {v:.12g} m/s")
+        work.step("v_w", value=v, unit="m/s", note=(
+            "weave speed, ", q(v, "m/s", sig=12), ": ", rel(fn("H3", V), "=", 0),
+            ", a complex pair on the imaginary axis"))
     for v in stab.capsize:
-        work.step("v_c", "a0(v) = 0, a real eigenvalue at 0", value=v, unit="m/s",
-                  note=f"capsize speed, {v:.12g} m/s")
-    work.text(f"stable (every Re(s) < 0): {_speeds_text(stab.stable)}")
+        work.step("v_c", value=v, unit="m/s", note=(
+            "capsize speed, ", q(v, "m/s", sig=12), ": ", rel(fn("a0", V), "=", 0),
+            ", a real eigenvalue at ", Num(0)))
+    work.text("stable (every ", rel(re_s, "<", 0), "): ", *_speeds(stab.stable))
     if not stab.stable:
         work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "
                   "every speed")
@@ -282,38 +309,42 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if gyroscopic:
         plain = bike.stability(bike.matrices(p, gyroscopic=False), g)
         work.section("The wheels' gyroscopic share (S_R = S_F = 0: no spin angular momentum)")
-        work.text(f"with the wheels' spin angular momentum: {_speeds_text(stab.stable)}")
-        work.text(f"without it (gyroscopic: false): {_speeds_text(plain.stable)}")
-        work.text(_share_text(stab, plain))
+        work.text("with the wheels' spin angular momentum: ", *_speeds(stab.stable))
+        work.text("without it (gyroscopic: false): ", *_speeds(plain.stable))
+        work.text(*_share(stab, plain))
 
     if speed is not None:
         ev = bike.eigenvalues(m, speed, g)
         state = bike.motion(ev)
         work.section(f"At v = {speed:.12g} m/s: the eigenvalues of the state matrix "
                      "[[0, I], [-M^-1 (g K0 + v^2 K2), -M^-1 v C1]]")
-        work.text("I: the identity matrix; s: an eigenvalue")
+        work.text(*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
         for e in ev:
-            work.text(f"s = {num(e.real, 12)}" + (f" {'+' if e.imag > 0 else '-'} "
-                      f"{num(abs(e.imag), 12)} i" if e.imag else "") + " 1/s")
-        work.text(f"motion: {state}" + {
-            "stable": " -- every eigenvalue has Re(s) < 0: a small disturbance dies out, "
-                      "the bicycle balances itself",
-            "capsize": " -- a real eigenvalue > 0: it falls over without oscillating",
-            "weave": " -- a complex pair with Re(s) > 0: lean and steer oscillate and grow",
-            "capsize and weave": " -- both a capsize and a weave mode grow"}[state])
+            work.text(rel(S_, "=", q(_eigen(e), "1/s", sig=12)))
+        work.text(f"motion: {state}", *{
+            "stable": (" -- every eigenvalue has ", rel(re_s, "<", 0), ": a small disturbance "
+                       "dies out, the bicycle balances itself"),
+            "capsize": (" -- a real eigenvalue ", rel(S_, ">", 0), ": it falls over without "
+                        "oscillating"),
+            "weave": (" -- a complex pair with ", rel(re_s, ">", 0), ": lean and steer "
+                      "oscillate and grow"),
+            "capsize and weave": (" -- both a capsize and a weave mode grow",)}[state])
+        det = fn("det", M_ * S_ ** 2 + V * C1 * S_ + g_ * K0 + V ** 2 * K2)
         for e in ev:
             residual = _char_value(coeffs, speed, e)
-            work.check(f"s = {num(e.real, 6)}{'' if not e.imag else f' {e.imag:+.6g}i'}: "
-                       f"|det(M s^2 + v C1 s + g K0 + v^2 K2)| / a4 = {abs(residual):.2g}")
-        work.answer("eigenvalues_real", "Re(s)", [float(e.real) for e in ev], "inverse_time")
-        work.answer("eigenvalues_imag", "Im(s)", [float(e.imag) for e in ev], "inverse_time")
+            work.check(rel(S_, "=", q(_eigen(e), sig=6)), ": ",
+                       rel(absolute(det) / a[4], "=", q(abs(residual), sig=2)))
+        work.answer("eigenvalues_real", re_s, [float(e.real) for e in ev], "inverse_time")
+        work.answer("eigenvalues_imag", fn("Im", S_), [float(e.imag) for e in ev],
+                    "inverse_time")
         work.answer("motion", "motion", [state], None)
     elif find & {"eigenvalues_real", "eigenvalues_imag", "motion"}:
         raise InputError("the eigenvalues and the motion are at a speed: give `speed`",
                          key="given.speed")
     for v in stab.weave + stab.capsize:
-        work.check(f"v = {num(v, 10)} m/s: the eigenvalue nearest the imaginary axis has "
-                   f"|Re(s)| = {min(abs(x) for x in _spectrum(stab, m, v, g).real):.2g} 1/s")
+        nearest = min(abs(x) for x in _spectrum(stab, m, v, g).real)
+        work.check(rel(V, "=", q(v, "m/s", sig=10)), ": the eigenvalue nearest the imaginary "
+                   "axis has ", rel(absolute(fn("Re", S_)), "=", q(nearest, "1/s", sig=2)))
     work.answer("weave_speed", "v_w", stab.weave, "speed")
     work.answer("capsize_speed", "v_c", stab.capsize, "speed")
     ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
@@ -340,23 +371,29 @@ def _char_value(coeffs, v: float, s: complex) -> complex:
     return sum(a[k] * s ** k for k in range(5)) / a[4]
 
 
-def _share_text(with_spin, without) -> str:
+def _eigen(e: complex) -> float | complex:
+    """An eigenvalue as a quantity holds it: real, or complex with its imaginary part."""
+    return complex(e) if e.imag else float(e.real)
+
+
+def _share(with_spin, without) -> tuple:
+    """How the wheels' spin moves the self-stable range, as pieces of a sentence."""
     if not with_spin.stable and not without.stable:
-        return "neither has a self-stable speed."
+        return ("neither has a self-stable speed.",)
     if not without.stable:
         return ("without the wheels' spin angular momentum there is no self-stable speed at all: "
                 "the weave never stabilises. For these data the wheels' spin is needed for "
                 "self-stability, while the rest of the design (trail, steer-axis tilt, mass "
-                "distribution) decides where the range lies: the chapter's 'partly'.")
+                "distribution) decides where the range lies: the chapter's 'partly'.",)
     if not with_spin.stable:
-        return "the wheels' spin removes the self-stable range these data have without it."
+        return ("the wheels' spin removes the self-stable range these data have without it.",)
     (lo1, hi1), (lo0, hi0) = with_spin.stable[0], without.stable[0]
 
-    def end(x: float) -> str:
-        return f"{num(x, 6)} m/s" if math.isfinite(x) else "infinity"
+    def end(x: float) -> Expr:
+        return q(x, "m/s", sig=6) if math.isfinite(x) else INF
 
-    return (f"the wheels' spin moves the lower end from {end(lo0)} to {end(lo1)} and the upper "
-            f"end from {end(hi0)} to {end(hi1)}.")
+    return ("the wheels' spin moves the lower end from ", end(lo0), " to ", end(lo1),
+            " and the upper end from ", end(hi0), " to ", end(hi1), ".")
 
 
 def _symbols(p: dict[str, float]) -> dict[str, Sym]:
@@ -381,11 +418,12 @@ KIND = Kind(
         Param("preset", "word", "preset", "benchmark: Table 1 of Meijaard et al. (2007) for "
               "every key not given", choices=(PRESET,)),
         Param("speed", "speed", "v", "forward speed (for the eigenvalues and the motion)"),
-        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2"),
+        Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
         Param("gyroscopic", "word", "gyroscopic", "true (default) or false: false removes the "
               "wheels' spin angular momentum (I_Ryy / r_R, I_Fyy / r_F)",
               choices=("true", "false")),
-    ) + tuple(Param(key, dim, symbol, doc) for key, (dim, symbol, doc) in KEYS.items()),
+    ) + tuple(Param(key, dim, symbol, doc, **LIMITS.get(key, {}))
+              for key, (dim, symbol, doc) in KEYS.items()),
     answers=(
         AnswerSpec("weave_speed", "speed", "v_w", "speed where the weave (a complex pair) "
                    "crosses the imaginary axis: the low end of the self-stable range"),

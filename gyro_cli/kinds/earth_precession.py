@@ -23,8 +23,9 @@ from functools import reduce
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Const, Let, Num, Sym, cos, sin
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Const, Expr, Let, Num, Sym, absolute, cos, sin
+from ..core.prose import cross, dot, names, paren, q, rel
+from ..core.work import Work, num
 from ..physics.earth_precession import ARCSEC, G, JULIAN_YEAR
 
 DAY = 86400.0
@@ -48,21 +49,33 @@ EARTH = {
     "moon_eccentricity": 0.0549,
     "moon_inclination": math.radians(5.145),
 }
-PRESET_TEXT = {
-    "dynamical_ellipticity": "0.003273795 (IERS 2010)",
-    "obliquity": "84381.406 arcsec = 23.43928 deg (IERS 2010, J2000)",
-    "rotation_period": "86164.0905 s (sidereal day)",
-    "planet_mass": "3.986004418e14 m^3/s^2 / G (the Earth's G M, IERS 2010; G: the constant "
-                   "of gravitation)",
-    "sun_mass_ratio": "332946.0487 (IAU 2009)",
-    "sun_orbital_period": "365.256363 d (sidereal year)",
-    "sun_eccentricity": "0.0167086 (J2000)",
-    "sun_inclination": "0 deg (the ecliptic)",
-    "moon_mass_ratio": "0.0123000371 (IERS 2010)",
-    "moon_orbital_period": "27.321661 d (sidereal month)",
-    "moon_eccentricity": "0.0549 (mean)",
-    "moon_inclination": "5.145 deg (mean, to the ecliptic)",
-}
+def _preset_text() -> dict[str, tuple]:
+    """How the preset's values are written (each number as its source gives it)."""
+    G_, M_E = names("G M")
+
+    def given(label: str, unit: str = "", note: str = "") -> tuple:
+        value = float(label) * (math.pi / 180 if unit == "deg" else DAY if unit == "d" else 1)
+        return (q(value, unit, label=label),) + ((note,) if note else ())
+
+    obliquity = EARTH["obliquity"]
+    return {
+        "dynamical_ellipticity": given("0.003273795", "", " (IERS 2010)"),
+        "obliquity": (q(obliquity, "arcsec", label="84381.406"), "=",
+                      q(obliquity, "deg", label="23.43928"), " (IERS 2010, J2000)"),
+        "rotation_period": given("86164.0905", "s", " (sidereal day)"),
+        "planet_mass": (q(3.986004418e14, "m^3/s^2", label="3.986004418e14") / G_,
+                        " (the Earth's ", G_ * M_E, ", IERS 2010; ", G_,
+                        ": the constant of gravitation)"),
+        "sun_mass_ratio": given("332946.0487", "", " (IAU 2009)"),
+        "sun_orbital_period": given("365.256363", "d", " (sidereal year)"),
+        "sun_eccentricity": given("0.0167086", "", " (J2000)"),
+        "sun_inclination": given("0", "deg", " (the ecliptic)"),
+        "moon_mass_ratio": given("0.0123000371", "", " (IERS 2010)"),
+        "moon_orbital_period": given("27.321661", "d", " (sidereal month)"),
+        "moon_eccentricity": given("0.0549", "", " (mean)"),
+        "moon_inclination": given("5.145", "deg", " (mean, to the ecliptic)"),
+    }
+
 # Keys that say the same thing: the preset fills a group only if the file gives none of it.
 GROUPS = [("dynamical_ellipticity", "J2", "polar_moment_factor"),
           ("rotation_period", "rotation_rate"), ("obliquity",), ("planet_mass",)]
@@ -88,8 +101,12 @@ def _values(given: Given, work: Work) -> dict[str, float]:
             values[key] = EARTH[key]
             filled.append(key)
     work.section("preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)")
+    preset_text = _preset_text()
     for key in filled:
-        work.text(f"{key}: {_symbols()[key]} = {PRESET_TEXT[key]}")
+        value, *rest = preset_text[key]
+        chain = ("=", value) + (tuple(rest[:2]) if rest[:1] == ["="] else ())
+        rest = rest[2:] if rest[:1] == ["="] else rest
+        work.text(f"{key}: ", rel(*names(_symbols()[key]), *chain), *rest)
     overridden = [k for k in given.values if k != "preset"]
     if overridden:
         work.text(f"given in the file instead of the preset: {', '.join(overridden)}")
@@ -101,13 +118,6 @@ def _symbols() -> dict[str, str]:
 
 
 NAN = float("nan")  # a symbol named in a definition, its value not needed
-
-
-def _positive(values: dict, key: str, what: str) -> float:
-    v = values[key]
-    if v <= 0:
-        raise InputError(f"{what} must be positive, got {num(v)}", key=f"given.{key}")
-    return v
 
 
 def _ellipticity(values: dict, work: Work) -> float:
@@ -122,21 +132,17 @@ def _ellipticity(values: dict, work: Work) -> float:
         if missing not in values:
             raise InputError(f"J2 and polar_moment_factor go together (H = J2 / (C / (M R^2))); "
                              f"give {missing} too", key=f"given.{missing}")
-        J2 = _positive(values, "J2", "J2 (the oblateness of the gravity field)")
-        k = values["polar_moment_factor"]
-        if not 0 < k <= 2 / 3:
-            raise InputError(f"polar_moment_factor C / (M R^2) lies between 0 and 2/3 (a hollow "
-                             f"shell; 0.4 for a uniform sphere), got {num(k)}",
-                             key="given.polar_moment_factor")
+        J2, k = values["J2"], values["polar_moment_factor"]  # their limits are declared
         factor = Let(Sym("polar_moment_factor", k), Sym("C", NAN) / (Sym("M", NAN) * Sym("R", NAN) ** 2))
-        H = work.step("H", Sym("J2", J2) / factor, note="J2 = (C - A) / (M R^2)")
+        J2_, C, A, M, R = names("J2 C A M R")
+        H = work.step("H", Sym("J2", J2) / factor, note=(rel(J2_, "=", (C - A) / (M * R**2)),))
+        if not H < 1:  # two keys: each within its limits, their quotient may not be
+            raise InputError(f"J2 / polar_moment_factor gives a dynamical ellipticity (C - A) / C "
+                             f"of {num(H)}; it lies between 0 and 1 for an oblate planet",
+                             key="given.J2")
     else:
         raise InputError("give the planet's dynamical_ellipticity H = (C - A) / C (or J2 and "
                          "polar_moment_factor), or preset: earth",
-                         key="given.dynamical_ellipticity")
-    if not 0 < H < 1:
-        raise InputError(f"the dynamical ellipticity (C - A) / C must lie between 0 and 1 for an "
-                         f"oblate planet, got {num(H)}: a sphere (H = 0) feels no torque",
                          key="given.dynamical_ellipticity")
     return H
 
@@ -146,11 +152,11 @@ def _spin(values: dict, work: Work) -> float:
         raise InputError("give rotation_period or rotation_rate, not both",
                          key="given.rotation_rate")
     if "rotation_rate" in values:
-        return _positive(values, "rotation_rate", "rotation_rate")
+        return values["rotation_rate"]
     if "rotation_period" not in values:
         raise InputError("give the planet's rotation_period (sidereal) or rotation_rate",
                          key="given.rotation_period")
-    P = _positive(values, "rotation_period", "rotation_period")
+    P = values["rotation_period"]
     return work.step("omega", 2 * PI / Sym("P_rot", P, "s"), unit="rad/s")
 
 
@@ -171,64 +177,71 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
             which = what.split(" or ")[0].split(" ")[0]
             raise InputError(f"{name} needs its {what}", key=f"given.{b}_{which}")
     amount_key, orbit_key = amount[0], orbit[0]
-    a_value = values[amount_key]
-    if a_value < 0:
-        raise InputError(f"{amount_key} cannot be negative", key=f"given.{amount_key}")
-    o_value = _positive(values, orbit_key, orbit_key)
+    a_value, o_value = values[amount_key], values[orbit_key]
     planet = None
     if (amount_key.endswith("_mass") and orbit_key.endswith("_period")) or \
             (amount_key.endswith("_ratio") and orbit_key.endswith("_distance")):
         if "planet_mass" not in values:
             raise InputError(f"{amount_key} with {orbit_key} needs the planet's mass "
                              "(planet_mass)", key="given.planet_mass")
-        planet = _positive(values, "planet_mass", "planet_mass")
+        planet = values["planet_mass"]
     if orbit_key.endswith("_period"):
-        q = a_value if planet is None else a_value / planet
+        ratio = a_value if planet is None else a_value / planet
         if planet is not None:
-            q = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
-        q_ = Sym(f"q_{b}", q)
-        return work.step(f"G M_{b} / a_{b}^3", (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
+            ratio = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
+        q_ = Sym(f"q_{b}", ratio)
+        return work.step(_tidal_symbol(b), (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
                          / (1 + q_), unit="1/s^2", ref="Kepler III")
     mass = Sym(f"M_{b}", a_value, "kg") if planet is None else \
         Sym(f"q_{b}", a_value) * Sym("M", planet, "kg")
-    return work.step(f"G M_{b} / a_{b}^3", Const("G", G) * mass / Sym(f"a_{b}", o_value, "m") ** 3,
-                     unit="1/s^2", note=f"G = {G:g} m^3/(kg s^2)")
+    return work.step(_tidal_symbol(b), Const("G", G) * mass / Sym(f"a_{b}", o_value, "m") ** 3,
+                     unit="1/s^2",
+                     note=(rel(*names("G"), "=", q(G, "m^3/(kg s^2)", label=f"{G:g}")),))
+
+
+def _tidal_symbol(b: str) -> Expr:
+    """G M_b / a_b^3, the symbol of the tidal strength of body b."""
+    G_, M_b, a_b = names(f"G M_{b} a_{b}")
+    return G_ * M_b / a_b**3
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     values = _values(given, work)
     work.section("The planet")
-    work.text("A, C: the planet's moments of inertia about an equatorial axis and about its "
-              "polar axis; M, R: its mass and equatorial radius; H = (C - A) / C, its dynamical "
-              "ellipticity; omega: its rate of rotation; epsilon: its obliquity")
+    A, C, M, R, H_, w, e_ = names("A C M R H omega epsilon")
+    work.text(A, ", ", C, ": the planet's moments of inertia about an equatorial axis and about "
+              "its polar axis; ", M, ", ", R, ": its mass and equatorial radius; ",
+              rel(H_, "=", (C - A) / C), ", its dynamical ellipticity; ", w, ": its rate of "
+              "rotation; ", e_, ": its obliquity")
     H = _ellipticity(values, work)
     omega = _spin(values, work)
     if "obliquity" not in values:
         raise InputError("give the obliquity (angle between the spin axis and the orbit "
                          "normal)", key="given.obliquity")
     eps = values["obliquity"]
-    if not 0 <= eps < math.pi / 2:
-        raise InputError(f"obliquity must lie in [0, 90) deg, got {num(math.degrees(eps))} deg "
-                         "(at 90 deg the bulge lies in the orbit plane and the mean torque "
-                         "vanishes; for a retrograde rotator give 180 deg minus its obliquity, "
-                         "the axis then moves the other way)", key="given.obliquity")
-    work.text(f"H = (C - A) / C = {num(H)}, epsilon = {num(math.degrees(eps))} deg, "
-              f"omega = {qty(omega, 'rad/s')}")
+    work.text(rel(H_, "=", (C - A) / C, "=", q(H)), ", ", rel(e_, "=", q(eps, "deg")), ", ",
+              rel(w, "=", q(omega, "rad/s")))
     work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
-    work.text("MacCullagh: a body of mass M_b at distance r, in the direction u, exerts on the "
-              "planet the torque T = (3 G M_b (C - A) / r^3) (u . s) (u x s), where s is the "
-              "spin axis and G the constant of gravitation.")
-    work.text("Averaged over a Kepler orbit (semi-major axis a) of eccentricity e, a^3/r^3 "
-              "becomes (1 - e^2)^(-3/2), and the "
-              "direction u is spread evenly round the orbit plane: the mean torque is "
-              "T_mean = -(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) (C - A) cos(epsilon) (n x s), "
-              "n the orbit normal.")
-    work.text("Steady precession (the chapter's dH/dt = T, the angular momentum being C omega s): "
-              "s turns about -n "
-              "(westward, retrograde) at Omega_p = |T_mean| / (C omega sin(epsilon)) = "
-              "(3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(epsilon) / omega.")
-    work.text("An orbit inclined at i whose node turns round quickly (the Moon's, in 18.6 years) "
-              "is averaged over the node too: factor (1 - (3/2) sin^2(i)).")
+    M_b, r, u, s_, G_, T, a, e, n, T_mean, W_p, i_, dH, dt = names(
+        "M_b r u s G T a e n T_mean Omega_p i dH dt")
+    three_halves, f_e = Num(1.5, "3/2"), (1 - e**2) ** Num(-1.5, "-3/2")
+    work.text("MacCullagh: a body of mass ", M_b, " at distance ", r, ", in the direction ", u,
+              ", exerts on the planet the torque ",
+              rel(T, "=", 3 * G_ * M_b * (C - A) / r**3 * dot(u, s_) * cross(u, s_)),
+              ", where ", s_, " is the spin axis and ", G_, " the constant of gravitation.")
+    work.text("Averaged over a Kepler orbit (semi-major axis ", a, ") of eccentricity ", e, ", ",
+              a**3 / r**3, " becomes ", f_e, ", and the direction ", u, " is spread evenly round "
+              "the orbit plane: the mean torque is ",
+              rel(T_mean, "=", -(three_halves * (G_ * M_b / a**3) * f_e * (C - A) * cos(e_)
+                                 * cross(n, s_))), ", ", n, " the orbit normal.")
+    work.text("Steady precession (the chapter's ", rel(dH / dt, "=", T), ", the angular "
+              "momentum being ", C * w * s_, "): ", s_, " turns about ", -n, " (westward, "
+              "retrograde) at ", rel(W_p, "=", absolute(T_mean) / (C * w * sin(e_)), "=",
+                                     three_halves * (G_ * M_b / a**3) * f_e * H_ * cos(e_) / w),
+              ".")
+    work.text("An orbit inclined at ", i_, " whose node turns round quickly (the Moon's, in "
+              "18.6 years) is averaged over the node too: factor ",
+              paren(1 - three_halves * sin(i_) ** 2), ".")
     shares: dict[str, float] = {}
     for b in BODIES:
         work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
@@ -238,17 +251,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             continue
         e = values.get(f"{b}_eccentricity", 0.0)
         i = values.get(f"{b}_inclination", 0.0)
-        if not 0 <= e < 1:
-            raise InputError(f"an orbit's eccentricity lies in [0, 1), got {num(e)}",
-                             key=f"given.{b}_eccentricity")
-        if not -math.pi / 2 < i < math.pi / 2:
-            raise InputError(f"inclination must lie within +-90 deg of the reference plane, got "
-                             f"{num(math.degrees(i))} deg", key=f"given.{b}_inclination")
         three_halves = Num(1.5, "3/2")
         fe_tree = (1 - Sym(f"e_{b}", e) ** 2) ** Num(-1.5, "-3/2")
-        fe = work.step(f"(1 - e_{b}^2)^(-3/2)", fe_tree, state=False)
+        e_b, i_b = names(f"e_{b} i_{b}")
+        fe = work.step((1 - e_b ** 2) ** Num(-1.5, "-3/2"), fe_tree, state=False)
         fi_tree = 1 - three_halves * sin(Sym(f"i_{b}", i, "deg")) ** 2
-        fi = work.step(f"1 - (3/2) sin^2(i_{b})", fi_tree, state=False,
+        fi = work.step(1 - three_halves * sin(i_b) ** 2, fi_tree, state=False,
                        note="node-averaged") if i else 1.0
         tidal_ = Let(Sym(f"GM_a3_{b}", tidal, "1/s^2"),
                      Const("G", G) * Sym(f"M_{b}", NAN) / Sym(f"a_{b}", NAN) ** 3)
@@ -258,9 +266,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             tree = tree * Let(Sym(f"f_i_{b}", fi), fi_tree)
         rate = work.step(f"Omega_{b}", tree / Sym("omega", omega, "rad/s"), unit="rad/s")
         work.step(f"Omega_{b}", value=arcsec_per_year(rate), unit="arcsec/yr",
-                  note="(1 yr = 365.25 d)")
+                  note=("(", rel(q(JULIAN_YEAR, "yr", True), "=", q(JULIAN_YEAR, "d", True)),
+                        ")"))
         if fi < 0:
-            work.warn(f"{b}_inclination beyond 54.74 deg reverses that body's mean torque")
+            work.warn(f"{b}_inclination beyond ", q(math.radians(54.74), "deg", exact=True),
+                      " reverses that body's mean torque")
         shares[b] = rate
         if abs(rate) > 1e-2 * math.sqrt(tidal):  # sqrt(G M_b / a^3) <= the orbital rate
             work.warn(f"the precession is not slow against {BODY_NAMES[b]}'s orbital motion: "
@@ -274,7 +284,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         parts = [Sym(f"Omega_{b}", r, "arcsec/yr") for b, r in shares.items()]
         work.step("Omega_p", reduce(operator.add, parts[1:], parts[0]), unit="arcsec/yr")
         for b, r in shares.items():
-            work.text(f"{BODY_NAMES[b]}'s share: {num(100 * r / total)} %")
+            work.text(f"{BODY_NAMES[b]}'s share: ", q(100 * r / total), " %")
     work.step("Omega_p", value=total, unit="rad/s")
     work.answer("precession_rate", "Omega_p", [total], "rate")
     for b, r in shares.items():
@@ -293,30 +303,35 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     # 360 (deg) is the full turn, 2 pi rad: the value is in s/rad, shown in yr/deg
     per_degree = work.step("t_1deg", Sym("T_p", period, "yr") / Const("360", 2 * math.pi),
                            unit="yr/deg")
-    work.text("The chapter's 26,000 years; its '80 years' for 1 deg is a misprint: 26,000 / 360 "
-              f"is about 72 (the errata), here {num(per_degree)} years.")
+    work.text("The chapter's 26,000 years; its '80 years' for ", q(math.radians(1), "deg", True),
+              " is a misprint: ", Num(26000, "26,000") / 360, " is about 72 (the errata), here ",
+              q(per_degree), " years.")
     work.answer("precession_period", "T_p", [period], "time")
     work.answer("years_per_degree", "t_1deg", [1 / abs(total)], "time_per_angle")
-    work.check(f"Omega_p / omega = {num(abs(total) / omega)}: the precession is slow against "
-               "the spin, so the angular momentum is C omega s (the gyroscopic approximation); "
-               "T_p / t_1deg = "
-               f"{num(period / (per_degree * JULIAN_YEAR))} deg")
+    W_p, w, C, s_, T_p, t_1 = names("Omega_p omega C s T_p t_1deg")
+    work.check(rel(W_p / w, "=", q(abs(total) / omega)), ": the precession is slow against the "
+               "spin, so the angular momentum is ", C * w * s_, " (the gyroscopic "
+               "approximation); ",
+               rel(T_p / t_1, "=", q(math.radians(period / (per_degree * JULIAN_YEAR)), "deg")))
 
 
 def _body_params(b: str) -> tuple[Param, ...]:
     name = BODY_NAMES[b]
     return (
         Param(f"{b}_mass_ratio", "dimensionless", f"q_{b}", f"mass of {name} over the planet's "
-              "(0 leaves it out)"),
-        Param(f"{b}_mass", "mass", f"M_{b}", f"mass of {name} (instead of {b}_mass_ratio)"),
+              "(0 leaves it out)", nonnegative=True),
+        Param(f"{b}_mass", "mass", f"M_{b}", f"mass of {name} (instead of {b}_mass_ratio)",
+              nonnegative=True),
         Param(f"{b}_orbital_period", "time", f"P_{b}", f"sidereal period of {name}'s orbit "
-              "relative to the planet"),
+              "relative to the planet", positive=True),
         Param(f"{b}_distance", "length", f"a_{b}", f"semi-major axis of {name}'s orbit "
-              f"(instead of {b}_orbital_period)"),
+              f"(instead of {b}_orbital_period)", positive=True),
         Param(f"{b}_eccentricity", "dimensionless", f"e_{b}", f"eccentricity of {name}'s orbit "
-              "(0 if absent)"),
+              "(0 if absent)", range=(0.0, 1.0), bounds="[)", reason="an orbit is an ellipse"),
         Param(f"{b}_inclination", "angle", f"i_{b}", f"inclination of {name}'s orbit to the "
-              "reference plane, averaged over its turning node (0 if absent)"),
+              "reference plane, averaged over its turning node (0 if absent)",
+              range=(-math.pi / 2, math.pi / 2), bounds="()",
+              reason="within 90 deg of the reference plane"),
     )
 
 
@@ -329,16 +344,26 @@ KIND = Kind(
         Param("preset", "word", "preset", "earth: the Earth, Sun and Moon from the IERS "
               "Conventions (2010) and the IAU 2009 constants; keys in the file override it",
               choices=("earth",)),
-        Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet"),
+        Param("dynamical_ellipticity", "dimensionless", "H", "(C - A) / C of the planet",
+              range=(0.0, 1.0), bounds="()", reason="an oblate planet; a sphere (H = 0) feels "
+              "no torque"),
         Param("J2", "dimensionless", "J2", "the planet's J2 = (C - A) / (M R^2) (with "
-              "polar_moment_factor, instead of dynamical_ellipticity)"),
-        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet"),
+              "polar_moment_factor, instead of dynamical_ellipticity)", positive=True,
+              reason="the oblateness of the gravity field"),
+        Param("polar_moment_factor", "dimensionless", "C/(M R^2)", "C / (M R^2) of the planet",
+              range=(0.0, 2 / 3), bounds="(]", limits=("0", "2/3"),
+              reason="2/3 for a hollow shell, 0.4 for a uniform sphere"),
         Param("obliquity", "angle", "epsilon", "angle between the spin axis and the normal of the "
-              "reference orbit plane (the ecliptic)"),
-        Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet"),
-        Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)"),
+              "reference orbit plane (the ecliptic)", range=(0.0, math.pi / 2), bounds="[)",
+              reason="at 90 deg the bulge lies in the orbit plane and the mean torque vanishes; "
+              "for a retrograde rotator give 180 deg minus its obliquity, the axis then moves "
+              "the other way"),
+        Param("rotation_period", "time", "P_rot", "sidereal rotation period of the planet",
+              positive=True),
+        Param("rotation_rate", "rate", "omega", "rotation rate (instead of rotation_period)",
+              positive=True),
         Param("planet_mass", "mass", "M", "mass of the planet (only to go with a body's mass "
-              "and period, or mass_ratio and distance)"),
+              "and period, or mass_ratio and distance)", positive=True),
     ) + _body_params("sun") + _body_params("moon"),
     answers=(
         AnswerSpec("precession_rate", "rate", "Omega_p", "rate at which the spin axis turns "

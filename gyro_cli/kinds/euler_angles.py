@@ -20,6 +20,9 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import euler_kinematics as ek
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
+from ..core.prose import dot, fn, mat, names, prime, rel, total, tup, words
+from ..core.prose import q as qv
 from ..core.work import Work, num, qty
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
@@ -29,13 +32,44 @@ SYMBOLS = {"phi": "phi", "theta": "theta", "psi": "psi", "yaw": "yaw", "pitch": 
 INERTIA_SLACK = 0.01  # rounded data may break I_max <= I_a + I_b by this much
 MAX_LISTED = 12
 
+#: the symbols of the kind's steps, beside its Params: angles are held in rad, shown in deg
+ANGLE_SYMBOLS = ("phi", "theta", "psi", "yaw", "pitch", "roll")
+HALF = Num(0.5, "1/2")
+
+
+def _sym(name: str, value: float) -> Sym:
+    """The kind's symbol ``name`` (an angle, a rate ``phidot``/``omega_x``/``p``, an inertia
+    ``I_x``/``I_xy``, or a moment of momentum ``H_x``) holding ``value`` (SI)."""
+    if name in ANGLE_SYMBOLS:
+        unit = "deg"
+    elif name.startswith("I_"):
+        unit = "kg m^2"
+    elif name.startswith("H_"):
+        unit = "kg m^2/s"
+    else:
+        unit = "rad/s"
+    return Sym(name, value, unit)
+
+
+def _sin(angle: Sym) -> Expr:
+    """sin(angle); at a multiple of 180 deg, where sin of the angle in floating point is
+    ~1e-16 and the physics takes it as exactly 0, the substitution shows that 0."""
+    exact = ek.sin_exact(angle.si)
+    if exact == math.sin(angle.si):
+        return sin(angle)
+    return Let(Sym(f"sin({angle.name})", exact), sin(angle))
+
+
+def _cos(angle: Sym) -> Expr:
+    """cos(angle); exactly 0 at an odd multiple of 90 deg, as `_sin`."""
+    exact = ek.cos_exact(angle.si)
+    if exact == math.cos(angle.si):
+        return cos(angle)
+    return Let(Sym(f"cos({angle.name})", exact), cos(angle))
+
 
 def _deg(x: float) -> str:
     return f"{num(math.degrees(x))} deg"
-
-
-def _rate(x: float) -> str:
-    return qty(x, "rad/s")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -56,8 +90,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if find and find <= INERTIA_ONLY and not any(k in given for k in (second, third)):
         # the inertia tensor needs no angles (Eq. 11.3): answer it alone
         work.section("Conventions")
-        work.text("x, y, z: the body axes through the fixed point, about which the moments and "
-                  "products of inertia are taken; no angle or rate is needed for them")
+        x, y, z = names("x y z")
+        work.text(x, ", ", y, ", ", z, ": the body axes through the fixed point, about which "
+                  "the moments and products of inertia are taken; no angle or rate is needed "
+                  "for them")
         if _inertia(given, find, work) is None:
             raise InputError(f"{sorted(find)[0]} needs the body's inertia: give particles, "
                              "I_x, I_y, I_z, or I and J", key="given.particles")
@@ -73,21 +109,29 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section("Conventions")
     if sequence == "zxz":
-        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {I, J, K} by phi about "
-                  "K, then by theta about the line of nodes i' = i'', then by psi about the "
-                  "body's k; i, j, k: the body axes, along x, y, z. The body axes in the fixed "
-                  "frame are the "
-                  "columns of R = Rz(phi) Rx(theta) Rz(psi). phidot, thetadot, psidot: the "
-                  "rates of phi, theta, psi.")
+        I, J, K, i, j, k, x, y, z, ph, th, ps, phd, thd, psd = \
+            names("I J K i j k x y z phi theta psi phidot thetadot psidot")
+        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {", I, ", ", J, ", ",
+                  K, "} by ", ph, " about ", K, ", then by ", th, " about the line of nodes ",
+                  rel(prime(i), "=", prime(i, 2)), ", then by ", ps, " about the body's ", k,
+                  "; ", i, ", ", j, ", ", k, ": the body axes, along ", x, ", ", y, ", ", z,
+                  ". The body axes in the fixed frame are the columns of ",
+                  rel(names("R")[0], "=", fn("Rz", ph) * fn("Rx", th) * fn("Rz", ps)), ". ",
+                  phd, ", ", thd, ", ", psd, ": the rates of ", ph, ", ", th, ", ", ps, ".")
     else:
+        X, Y, Z, x, y, z, yaw, pitch, roll, p, q_, r, wx, wy, wz, w = names(
+            "X Y Z x y z yaw pitch roll p q r omega_x omega_y omega_z omega")
         work.text("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
-                  "the fixed frame X, Y, Z by the yaw angle about Z, then by the pitch angle "
-                  "about the new y, then by the roll angle about the body's x. "
-                  "R = Rz(yaw) Ry(pitch) Rx(roll); yawdot, pitchdot, rolldot: the rates of "
-                  "the three angles; p, q, r: the components of omega along the body's x, y, z, "
-                  "also written omega_x, omega_y, omega_z.")
-    work.text("omega: the body's angular velocity relative to the fixed frame; the origin is the "
-              "fixed point, about which the moments of inertia are taken.")
+                  "the fixed frame ", X, ", ", Y, ", ", Z, " by the yaw angle about ", Z,
+                  ", then by the pitch angle about the new ", y, ", then by the roll angle "
+                  "about the body's ", x, ". ",
+                  rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll)),
+                  "; ", *names("yawdot"), ", ", *names("pitchdot"), ", ", *names("rolldot"),
+                  ": the rates of the three angles; ", p, ", ", q_, ", ", r, ": the components "
+                  "of ", w, " along the body's ", x, ", ", y, ", ", z, ", also written ", wx,
+                  ", ", wy, ", ", wz, ".")
+    work.text(*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
+              "origin is the fixed point, about which the moments of inertia are taken.")
 
     omega, rates = _angular_velocity(given, find, sequence, a2, a3, work)
     if a1 is not None:
@@ -102,11 +146,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if asked:
             raise InputError(f"{asked[0]} (a fixed-frame component) depends on the first angle: "
                              f"give {first}", key=f"given.{first}")
-    work.step("|omega|", "sqrt(omega_x^2 + omega_y^2 + omega_z^2)", value=ek.norm(omega),
-              unit="rad/s")
+    wx, wy, wz = (_sym(n, v) for n, v in zip(("omega_x", "omega_y", "omega_z"), omega))
+    wabs = absolute(names("omega")[0])
+    work.step(wabs, sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
     for name, value in zip(("omega_x", "omega_y", "omega_z"), omega):
         work.answer(name, name, [value], "rate")
-    work.answer("omega", "|omega|", [ek.norm(omega)], "rate")
+    work.answer("omega", wabs, [ek.norm(omega)], "rate")
     for name, value in zip((first, second, third), rates):
         work.answer(f"{name}_rate", f"{SYMBOLS[name]}dot", [value], "rate")
 
@@ -158,35 +203,37 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         if missing:
             work.text(f"not given, taken as zero: {', '.join(missing)}")
         if sequence == "zxz":
-            work.text("omega = phidot K + thetadot i'' + psidot k  (Eq. 11.5), with "
-                      "i'' = cos(psi) i - sin(psi) j, K = cos(theta) k + sin(theta) j'' (Eq. 11.6)")
-            st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+            w, phd, thd, psd, K, i, j, k, ps, th = names(
+                "omega phidot thetadot psidot K i j k psi theta")
+            i2, j2 = prime(i, 2), prime(j, 2)
+            work.text(rel(w, "=", phd * K + thd * i2 + psd * k), "  (Eq. 11.5), with ",
+                      rel(i2, "=", cos(ps) * i - sin(ps) * j), ", ",
+                      rel(K, "=", cos(th) * k + sin(th) * j2), " (Eq. 11.6)")
             omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
-            work.step("omega_x", "phidot sin(theta) sin(psi) + thetadot cos(psi)",
-                      f"{_rate(r1)} ({num(st)}) ({num(sp)}) + {_rate(r2)} ({num(cp)})",
-                      omega[0], "rad/s", ref="Eq. 11.8")
-            work.step("omega_y", "phidot sin(theta) cos(psi) - thetadot sin(psi)",
-                      f"{_rate(r1)} ({num(st)}) ({num(cp)}) - {_rate(r2)} ({num(sp)})",
-                      omega[1], "rad/s", ref="Eq. 11.8")
-            work.step("omega_z", "phidot cos(theta) + psidot",
-                      f"{_rate(r1)} ({num(ct)}) + {_rate(r3)}", omega[2], "rad/s",
+            th, ps = _sym("theta", a2), _sym("psi", a3)
+            p1, p2, p3 = _sym("phidot", r1), _sym("thetadot", r2), _sym("psidot", r3)
+            work.step("omega_x", p1 * _sin(th) * _sin(ps) + p2 * _cos(ps), unit="rad/s",
                       ref="Eq. 11.8")
+            work.step("omega_y", p1 * _sin(th) * _cos(ps) - p2 * _sin(ps), unit="rad/s",
+                      ref="Eq. 11.8")
+            work.step("omega_z", p1 * _cos(th) + p3, unit="rad/s", ref="Eq. 11.8")
         else:
-            work.text("omega = yawdot Z + pitchdot y' + rolldot x (each rate about its own axis)")
-            sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
+            w, yd, pd, rd, Z, y, x = names("omega yawdot pitchdot rolldot Z y x")
+            work.text(rel(w, "=", yd * Z + pd * prime(y) + rd * x),
+                      " (each rate about its own axis)")
             omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
-            work.step("p", "rolldot - yawdot sin(pitch)", f"{_rate(r3)} - {_rate(r1)} "
-                      f"({num(sq)})", omega[0], "rad/s")
-            work.step("q", "pitchdot cos(roll) + yawdot cos(pitch) sin(roll)",
-                      f"{_rate(r2)} ({num(cr)}) + {_rate(r1)} ({num(cq)}) ({num(sr)})",
-                      omega[1], "rad/s")
-            work.step("r", "-pitchdot sin(roll) + yawdot cos(pitch) cos(roll)",
-                      f"-{_rate(r2)} ({num(sr)}) + {_rate(r1)} ({num(cq)}) ({num(cr)})",
-                      omega[2], "rad/s")
+            pi_, ro = _sym("pitch", a2), _sym("roll", a3)
+            y1, y2, y3 = _sym("yawdot", r1), _sym("pitchdot", r2), _sym("rolldot", r3)
+            work.step("p", y3 - y1 * _sin(pi_), unit="rad/s")
+            work.step("q", y2 * _cos(ro) + y1 * _cos(pi_) * _sin(ro), unit="rad/s")
+            work.step("r", -y2 * _sin(ro) + y1 * _cos(pi_) * _cos(ro), unit="rad/s")
         back = _inverse(sequence, a2, a3, omega, raise_singular=False)
         if back is not None:
-            work.check("the inverse of Eq. 11.8 gives back the rates: " + ", ".join(
-                f"{k} = {_rate(v)}" for k, v in zip(rate_keys, back)))
+            dots = names(" ".join(f"{SYMBOLS[k]}dot" for k in (first, second, third)))
+            pieces: list = ["the inverse of Eq. 11.8 gives back the rates: "]
+            for n, (sym, v) in enumerate(zip(dots, back)):
+                pieces += [", "] * bool(n) + [rel(sym, "=", qv(v, "rad/s"))]
+            work.check(*pieces)
         return omega, (r1, r2, r3)
 
     missing = [k for k in omega_keys if k not in given]
@@ -197,33 +244,26 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
     if missing:
         work.text(f"not given, taken as zero: {', '.join(missing)}")
     if sequence == "zxz":
-        st, ct, sp, cp = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
-        work.step("thetadot", "omega_x cos(psi) - omega_y sin(psi)",
-                  f"{_rate(omega[0])} ({num(cp)}) - {_rate(omega[1])} ({num(sp)})", rates[1],
-                  "rad/s")
-        work.step("phidot", "(omega_x sin(psi) + omega_y cos(psi)) / sin(theta)",
-                  f"({_rate(omega[0])} ({num(sp)}) + {_rate(omega[1])} ({num(cp)})) / "
-                  f"{num(st)}", rates[0], "rad/s")
-        work.step("psidot", "omega_z - phidot cos(theta)",
-                  f"{_rate(omega[2])} - {_rate(rates[0])} ({num(ct)})", rates[2], "rad/s")
+        th, ps = _sym("theta", a2), _sym("psi", a3)
+        wx, wy, wz = (_sym(n, v) for n, v in zip(omega_keys, omega))
+        work.step("thetadot", wx * _cos(ps) - wy * _sin(ps), unit="rad/s")
+        work.step("phidot", (wx * _sin(ps) + wy * _cos(ps)) / _sin(th), unit="rad/s")
+        work.step("psidot", wz - _sym("phidot", rates[0]) * _cos(th), unit="rad/s")
     else:
-        sq, cq, sr, cr = ek.sin_exact(a2), ek.cos_exact(a2), ek.sin_exact(a3), ek.cos_exact(a3)
-        work.step("yawdot", "(q sin(roll) + r cos(roll)) / cos(pitch)",
-                  f"({_rate(omega[1])} ({num(sr)}) + {_rate(omega[2])} ({num(cr)})) / "
-                  f"{num(cq)}", rates[0], "rad/s")
-        work.step("pitchdot", "q cos(roll) - r sin(roll)",
-                  f"{_rate(omega[1])} ({num(cr)}) - {_rate(omega[2])} ({num(sr)})", rates[1],
-                  "rad/s")
-        work.step("rolldot", "p + yawdot sin(pitch)",
-                  f"{_rate(omega[0])} + {_rate(rates[0])} ({num(sq)})", rates[2], "rad/s")
+        pi_, ro = _sym("pitch", a2), _sym("roll", a3)
+        p, q, r = (_sym(n, v) for n, v in zip("pqr", omega))
+        work.step("yawdot", (q * _sin(ro) + r * _cos(ro)) / _cos(pi_), unit="rad/s")
+        work.step("pitchdot", q * _cos(ro) - r * _sin(ro), unit="rad/s")
+        work.step("rolldot", p + _sym("yawdot", rates[0]) * _sin(pi_), unit="rad/s")
     near = abs(ek.sin_exact(a2)) if sequence == "zxz" else abs(ek.cos_exact(a2))
     if near < math.sin(math.radians(1)):
-        work.warn(f"{second} is within 1 deg of the singular attitude: the rates {first}_rate "
-                  f"and {third}_rate are large and sensitive to rounding in the data")
+        work.warn(*names(SYMBOLS[second]), " is within ", qv(math.radians(1), "deg", exact=True),
+                  f" of the singular attitude: the rates {first}_rate and {third}_rate are "
+                  "large and sensitive to rounding in the data")
     check = (ek.body_rates_zxz(a2, a3, *rates) if sequence == "zxz"
              else ek.body_rates_zyx(a2, a3, *rates))
-    work.check("the rates put back into Eq. 11.8 give omega = (" +
-               ", ".join(_rate(v) for v in check) + ")")
+    work.check("the rates put back into Eq. 11.8 give ",
+               rel(names("omega")[0], "=", tup(*(qv(v, "rad/s") for v in check))))
     return omega, rates
 
 
@@ -252,21 +292,21 @@ def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3
     work.section("Angular velocity in the fixed frame: omega_XYZ = R omega_xyz, with "
                  "omega_xyz the body components")
     if sequence == "zxz":
-        r1, r2, r3 = rates
-        s1, c1, s2, c2 = ek.sin_exact(a1), ek.cos_exact(a1), ek.sin_exact(a2), ek.cos_exact(a2)
-        work.text("equivalently omega = phidot K + thetadot (cos(phi) I + sin(phi) J) + psidot k, "
-                  "k = sin(theta) sin(phi) I - sin(theta) cos(phi) J + cos(theta) K:")
-        work.step("omega_X", "thetadot cos(phi) + psidot sin(theta) sin(phi)",
-                  f"{_rate(r2)} ({num(c1)}) + {_rate(r3)} ({num(s2)}) ({num(s1)})", fixed[0],
-                  "rad/s")
-        work.step("omega_Y", "thetadot sin(phi) - psidot sin(theta) cos(phi)",
-                  f"{_rate(r2)} ({num(s1)}) - {_rate(r3)} ({num(s2)}) ({num(c1)})", fixed[1],
-                  "rad/s")
-        work.step("omega_Z", "phidot + psidot cos(theta)",
-                  f"{_rate(r1)} + {_rate(r3)} ({num(c2)})", fixed[2], "rad/s")
+        p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
+        ph, th = _sym("phi", a1), _sym("theta", a2)
+        w, phd, thd, psd, I0, J0, K0, k0, ph0, th0 = names(
+            "omega phidot thetadot psidot I J K k phi theta")
+        work.text("equivalently ", rel(w, "=", phd * K0 + thd * (cos(ph0) * I0 + sin(ph0) * J0)
+                                       + psd * k0), ", ",
+                  rel(k0, "=", sin(th0) * sin(ph0) * I0 - sin(th0) * cos(ph0) * J0
+                      + cos(th0) * K0), ":")
+        work.step("omega_X", p2 * _cos(ph) + p3 * _sin(th) * _sin(ph), unit="rad/s")
+        work.step("omega_Y", p2 * _sin(ph) - p3 * _sin(th) * _cos(ph), unit="rad/s")
+        work.step("omega_Z", p1 + p3 * _cos(th), unit="rad/s")
     else:
-        work.text("R = Rz(yaw) Ry(pitch) Rx(roll) = [" + "; ".join(
-            " ".join(num(v) for v in row) for row in R) + "]")
+        yaw, pitch, roll = names("yaw pitch roll")
+        work.text(rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll), "=",
+                      mat(*((qv(v) for v in row) for row in R))))
         for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
             work.step(name, value=value, unit="rad/s")
 
@@ -311,8 +351,10 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             values.append(given[key])
         products = [given.get(k, 0.0) for k in PRODUCT_KEYS]
         matrix = ek.inertia_matrix(*values, *products)
-        work.text("I_x, I_y, I_z as given" + (", with the products I_xy, I_yz, I_zx"
-                                              if any(products) else " (principal axes)"))
+        Ix, Iy, Iz, Ixy, Iyz, Izx = names("I_x I_y I_z I_xy I_yz I_zx")
+        work.text(Ix, ", ", Iy, ", ", Iz, " as given", *((", with the products ", Ixy, ", ", Iyz,
+                                                        ", ", Izx) if any(products)
+                                                       else (" (principal axes)",)))
         _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
         _report_matrix(matrix, products, work)
         return matrix
@@ -334,13 +376,14 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             I = body.I_pivot
         elif body.I_cg is not None:
             I = body.I_cg
-            work.text("no cg_distance: the fixed point is taken at the centre of mass, "
-                      "I = I_G")
+            work.text("no cg_distance: the fixed point is taken at the centre of mass, ",
+                      rel(*names("I"), "=", *names("I_G")))
         else:
             raise InputError("the body needs its transverse inertia about the fixed point: "
                              "I_pivot, k_pivot, I_cg or k_cg (with cg_distance), or a shape",
                              key="given.I_pivot")
-    work.text("symmetric body (Eq. 11.9): I_x = I_y = I, I_z = J")
+    Ix, Iy, Iz, I0, J0 = names("I_x I_y I_z I J")
+    work.text("symmetric body (Eq. 11.9): ", rel(Ix, "=", Iy, "=", I0), ", ", rel(Iz, "=", J0))
     matrix = ek.inertia_matrix(I, I, J)
     _check_rigid(matrix, "given.J")
     _report_matrix(matrix, [0.0, 0.0, 0.0], work)
@@ -360,23 +403,31 @@ def _check_rigid(matrix, key: str) -> None:
 
 
 def _from_particles(particles, work: Work):
-    work.text("particles of mass m at the coordinates x, y, z in body axes from the fixed "
-              "point; the products of inertia as the chapter defines them (the matrix has "
-              "their negatives off the diagonal):")
-    work.text("I_xy = sum m x y")
-    work.text("I_yz = sum m y z")
-    work.text("I_zx = sum m z x")
-    for i, (m, x, y, z) in enumerate(particles[:MAX_LISTED]):
-        work.text(f"  [{i}] m = {qty(m, 'kg')} at ({num(x)}, {num(y)}, {num(z)}) m")
+    m, x, y, z = names("m x y z")
+    work.text("particles of mass ", m, " at the coordinates ", x, ", ", y, ", ", z, " in body "
+              "axes from the fixed point; the products of inertia as the chapter defines them "
+              "(the matrix has their negatives off the diagonal):")
+    for name, (a, b) in zip(PRODUCT_KEYS, ((x, y), (y, z), (z, x))):
+        work.text(rel(*names(name), "=", total(m * a * b)))
+    for i, (mi, xi, yi, zi) in enumerate(particles[:MAX_LISTED]):
+        work.text(f"  [{i}] ", rel(m, "=", qv(mi, "kg")), " at ",
+                  tup(qv(xi, "m"), qv(yi, "m"), qv(zi, "m")))
     if len(particles) > MAX_LISTED:
         work.text(f"  ... {len(particles) - MAX_LISTED} more")
     Ix, Iy, Iz, Ixy, Iyz, Izx = ek.inertia_from_particles(particles)
-    work.step("I_x", "sum m (y^2 + z^2)", value=Ix, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_y", "sum m (z^2 + x^2)", value=Iy, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_z", "sum m (x^2 + y^2)", value=Iz, unit="kg*m^2", ref="Eq. 11.3")
-    work.step("I_xy", "sum m x y", value=Ixy, unit="kg*m^2")
-    work.step("I_yz", "sum m y z", value=Iyz, unit="kg*m^2")
-    work.step("I_zx", "sum m z x", value=Izx, unit="kg*m^2")
+    # each particle's m, x, y, z as symbols named with its index: the sums evaluate term by
+    # term (the JSON expr lists them), the formula is written as the chapter writes it
+    m, x, y, z = names("m x y z")
+    parts = [(Sym(f"m_{i}", p[0], "kg"), Sym(f"x_{i}", p[1], "m"), Sym(f"y_{i}", p[2], "m"),
+              Sym(f"z_{i}", p[3], "m")) for i, p in enumerate(particles)]
+    sums = {"I_x": lambda m, x, y, z: m * (y ** 2 + z ** 2),
+            "I_y": lambda m, x, y, z: m * (z ** 2 + x ** 2),
+            "I_z": lambda m, x, y, z: m * (x ** 2 + y ** 2),
+            "I_xy": lambda m, x, y, z: m * x * y, "I_yz": lambda m, x, y, z: m * y * z,
+            "I_zx": lambda m, x, y, z: m * z * x}
+    for name, term in sums.items():  # the float values stay physics' (ek.inertia_from_particles)
+        work.step(name, SumOf(term(m, x, y, z), tuple(term(*p) for p in parts)),
+                  unit="kg*m^2", ref="Eq. 11.3" if len(name) == 3 else "", substitute=False)
     matrix = ek.inertia_matrix(Ix, Iy, Iz, Ixy, Iyz, Izx)
     _report_matrix(matrix, [Ixy, Iyz, Izx], work, listed=True)
     return matrix
@@ -388,72 +439,81 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
         for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
             work.step(name, value=value, unit="kg*m^2")
     moments = ek.principal_moments(matrix)
+    Ixy, Iyz, Izx, x, y, z, T, H = names("I_xy I_yz I_zx x y z T H")
     if ek.is_diagonal(matrix):
-        work.text("the products of inertia are zero, I_xy = I_yz = I_zx = 0: x, y, z are principal "
-                  "axes")
+        work.text("the products of inertia are zero, ", rel(Ixy, "=", Iyz, "=", Izx, "=", 0),
+                  ": ", x, ", ", y, ", ", z, " are principal axes")
     else:
-        work.text("the products of inertia are not zero: x, y, z are NOT principal axes, and T "
-                  "and H below use the whole inertia matrix, not Eq. 11.2's diagonal form")
-        work.warn("the body axes are not principal axes (products of inertia not zero); T and "
-                  "H use the whole inertia matrix")
-    work.step("principal moments", "eigenvalues of the inertia matrix",
-              value=None, note=", ".join(qty(m, "kg m^2") for m in moments))
+        work.text("the products of inertia are not zero: ", x, ", ", y, ", ", z, " are NOT "
+                  "principal axes, and ", T, " and ", H, " below use the whole inertia matrix, "
+                  "not Eq. 11.2's diagonal form")
+        work.warn("the body axes are not principal axes (products of inertia not zero); ", T,
+                  " and ", H, " use the whole inertia matrix")
+    for k, value in enumerate(moments):  # not a formula: the matrix's eigenvalues
+        work.step(f"I_{k + 1}", value=value, unit="kg*m^2",
+                  note="" if k else "the principal moments: the eigenvalues of the inertia "
+                  "matrix, ascending")
     for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
         work.answer(name, name, [value], "inertia")
     for name, value in zip(PRODUCT_KEYS, products):
         work.answer(name, name, [value], "inertia")
-    work.answer("principal_moments", "I_1, I_2, I_3", moments, "inertia")
+    work.answer("principal_moments", tup(*names("I_1 I_2 I_3")), moments, "inertia")
 
 
 def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
-    wx, wy, wz = omega
     T = ek.kinetic_energy(matrix, omega)
     H = ek.angular_momentum(matrix, omega)
     work.section("Kinetic energy (Eq. 11.2) and angular momentum about the fixed point")
+    w = {n: _sym(f"omega_{n}", v) for n, v in zip("xyz", omega)}
+    I_ = {n: _sym(f"I_{n}", matrix[k][k]) for k, n in enumerate("xyz")}
     if ek.is_diagonal(matrix):
-        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
-        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2)",
-                  f"(1/2) ({qty(Ix, 'kg m^2')} ({_rate(wx)})^2 + {qty(Iy, 'kg m^2')} "
-                  f"({_rate(wy)})^2 + {qty(Iz, 'kg m^2')} ({_rate(wz)})^2)", T, "J",
-                  ref="Eq. 11.2")
-        for name, I, w, value in zip(("H_x", "H_y", "H_z"), (Ix, Iy, Iz), omega, H):
-            work.step(name, f"I_{name[-1]} omega_{name[-1]}", f"{qty(I, 'kg m^2')} ({_rate(w)})",
-                      value, "kg m^2/s")
+        work.step("T", HALF * (I_["x"] * w["x"] ** 2 + I_["y"] * w["y"] ** 2
+                               + I_["z"] * w["z"] ** 2), unit="J", ref="Eq. 11.2")
+        for n in "xyz":
+            work.step(f"H_{n}", I_[n] * w[n], unit="kg m^2/s")
     else:
-        Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
-        Ixy, Iyz, Izx = -matrix[0][1], -matrix[1][2], -matrix[0][2]
-        I_ = lambda v: qty(v, "kg m^2")  # noqa: E731
-        work.step("T", "(1/2) (I_x omega_x^2 + I_y omega_y^2 + I_z omega_z^2 - 2 I_yz omega_y "
-                  "omega_z - 2 I_zx omega_z omega_x - 2 I_xy omega_x omega_y)",
-                  f"(1/2) ({I_(Ix)} ({_rate(wx)})^2 + {I_(Iy)} ({_rate(wy)})^2 + {I_(Iz)} "
-                  f"({_rate(wz)})^2 - 2 ({I_(Iyz)}) ({_rate(wy)}) ({_rate(wz)}) - 2 ({I_(Izx)}) "
-                  f"({_rate(wz)}) ({_rate(wx)}) - 2 ({I_(Ixy)}) ({_rate(wx)}) ({_rate(wy)}))",
-                  T, "J", ref="Eq. 11.2, first line, with the products")
-        work.step("H_x", "I_x omega_x - I_xy omega_y - I_zx omega_z", value=H[0], unit="kg m^2/s")
-        work.step("H_y", "-I_xy omega_x + I_y omega_y - I_yz omega_z", value=H[1],
-                  unit="kg m^2/s")
-        work.step("H_z", "-I_zx omega_x - I_yz omega_y + I_z omega_z", value=H[2],
-                  unit="kg m^2/s")
+        Ixy, Iyz, Izx = (_sym(n, v) for n, v in zip(PRODUCT_KEYS, (
+            -matrix[0][1], -matrix[1][2], -matrix[0][2])))
+        work.step("T", HALF * (I_["x"] * w["x"] ** 2 + I_["y"] * w["y"] ** 2
+                               + I_["z"] * w["z"] ** 2 - 2 * Iyz * w["y"] * w["z"]
+                               - 2 * Izx * w["z"] * w["x"] - 2 * Ixy * w["x"] * w["y"]),
+                  unit="J", ref="Eq. 11.2, first line, with the products")
+        work.step("H_x", I_["x"] * w["x"] - Ixy * w["y"] - Izx * w["z"], unit="kg m^2/s",
+                  substitute=False)
+        work.step("H_y", -Ixy * w["x"] + I_["y"] * w["y"] - Iyz * w["z"], unit="kg m^2/s",
+                  substitute=False)
+        work.step("H_z", -Izx * w["x"] - Iyz * w["y"] + I_["z"] * w["z"], unit="kg m^2/s",
+                  substitute=False)
     Hmag = ek.norm(H)
-    work.step("|H|", "sqrt(H_x^2 + H_y^2 + H_z^2)", value=Hmag, unit="kg m^2/s")
-    work.check(f"T = (1/2) omega . H = {qty(0.5 * ek.dot(omega, H), 'J')}")
+    Hx, Hy, Hz = (_sym(n, v) for n, v in zip(("H_x", "H_y", "H_z"), H))
+    Habs = absolute(names("H")[0])
+    work.step(Habs, sqrt(Hx ** 2 + Hy ** 2 + Hz ** 2), unit="kg m^2/s", substitute=False)
+    work.check(rel(names("T")[0], "=", HALF * dot(*names("omega H")), "=",
+                   qv(0.5 * ek.dot(omega, H), "J")))
     work.answer("kinetic_energy", "T", [T], "energy")
     for name, value in zip(("H_x", "H_y", "H_z"), H):
         work.answer(name, name, [value], "angular_momentum")
-    work.answer("angular_momentum", "|H|", [Hmag], "angular_momentum")
+    work.answer("angular_momentum", Habs, [Hmag], "angular_momentum")
     if R is not None:
         fixed = ek.matvec(R, H)
         for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
-            work.step(name, value=value, unit="kg m^2/s", note="fixed-frame component of R H")
+            work.step(name, value=value, unit="kg m^2/s",
+                      note=("fixed-frame component of ", names("R")[0] * names("H")[0]))
             work.answer(name, name, [value], "angular_momentum")
-        work.check(f"|H| in the fixed frame = {qty(ek.norm(fixed), 'kg m^2/s')}")
+        work.check("in the fixed frame ", rel(Habs, "=", qv(ek.norm(fixed), "kg m^2/s")))
+    w0, H0 = names("omega H")
     if Hmag > 0:
         angle = ek.angle_between(omega, H)
-        work.step("angle(omega, H)", "atan2(|omega x H|, omega . H)", value=math.degrees(angle),
-                  unit="deg", note="zero only when omega lies along a principal axis")
-        work.answer("omega_H_angle", "angle(omega, H)", [angle], "angle")
+        # atan2(|omega x H|, omega . H), the cross and dot products by their components
+        cross_ = sqrt((w["y"] * Hz - w["z"] * Hy) ** 2 + (w["z"] * Hx - w["x"] * Hz) ** 2
+                      + (w["x"] * Hy - w["y"] * Hx) ** 2)
+        work.step(fn("angle", w0, H0), atan2(cross_, w["x"] * Hx + w["y"] * Hy + w["z"] * Hz),
+                  unit="deg", substitute=False,
+                  note=("zero only when ", w0, " lies along a principal axis"))
+        work.answer("omega_H_angle", fn("angle", w0, H0), [angle], "angle")
     else:
-        work.text("omega = 0: the body is at rest, H = 0 and the angle between them is undefined")
+        work.text(rel(w0, "=", 0), ": the body is at rest, ", rel(H0, "=", 0), " and the angle "
+                  "between them is undefined")
 
 
 KIND = Kind(

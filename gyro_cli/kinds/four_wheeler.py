@@ -29,7 +29,13 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import Expr, Let, Sym, sqrt
+from ..core.prose import cross, names, plus, q, qvec, rel, total, tup
 from ..core.work import Work, num, qty
+
+#: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
+ax, ay, az = names("x y z")
+H0, C0, wp0, Cg0, Cc0, m0, g0, R0 = names("H C omega_p C_g C_c m g R")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -48,37 +54,41 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     m, g, h, x = given["mass"], given["g"], given["cg_height"], given["track"]
     rw, R = given["wheel_radius"], given["turn_radius"]
     IE, G, sense = given["engine_inertia"], given["gear_ratio"], given.word("engine_sense", "same")
-    sign = "+" if sense == "same" else "-"
-    wheel_total, wheel_text, wheel_numbers = _wheels(given)
+    wheels = _wheels(given)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("vehicle axes: x forward, y to the left, z up. Going forward the wheels roll: "
-              "their spin vector points to the left (+y); each engine's points the same way "
-              "(engine_sense: same) or the other way (opposite).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
-              "H (Eq. 11.29); the vehicle feels the "
-              "reactive couple -C. Couples are about the fore-and-aft axis, positive "
+    work.text("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Going forward "
+              "the wheels roll: their spin vector points to the left ", tup(plus(ay)), "; each "
+              "engine's points the same way (engine_sense: same) or the other way (opposite).")
+    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors ",
+              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the vehicle feels the reactive "
+              "couple ", -C0, ". Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")
     work.section("Rotating parts")
-    work.step("sum I_w", wheel_text, wheel_numbers, value=wheel_total, unit="kg*m^2")
-    work.step("sum I_E", "n_E I_E", f"{int(engines)} ({qty(IE, 'kg*m^2')})", engines * IE,
-              "kg*m^2")
-    I_eq = work.step("I_eq", f"sum I_w {sign} G sum I_E", f"{qty(wheel_total, 'kg*m^2')} {sign} "
-                     f"{num(G)} ({qty(engines * IE, 'kg*m^2')})",
-                     wheel_total + (1 if sense == "same" else -1) * G * engines * IE, "kg*m^2")
+    I_w, I_E = names("I_w I_E")
+    wheel_total = work.step(total(I_w), wheels, unit="kg*m^2")
+    engine_total = work.step(total(I_E), Sym("n_E", engines) * Sym("I_E", IE, "kg m^2"),
+                             unit="kg*m^2")
+    sum_w, sum_E = Sym("sum I_w", wheel_total, "kg m^2"), Sym("sum I_E", engine_total, "kg m^2")
+    # in the wheels' sense: sum I_w + G sum I_E, or - with the engines against the wheels
+    rotors: Expr = sum_w + Sym("G", G) * sum_E if sense == "same" else sum_w - Sym("G", G) * sum_E
+    I_eq = work.step("I_eq", rotors, unit="kg*m^2")
+    equivalent = Let(Sym("I_eq", I_eq, "kg m^2"), rotors)
 
     if "speed" not in given and "limiting_speed" not in find:
         raise InputError("give the speed (or ask only for limiting_speed)", key="given.speed")
     if "speed" in given:
-        _at_speed(given, work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, sign, I_eq)
+        _at_speed(given, work, m, g, h, x, rw, R, wheel_total, engine_total, G, sense,
+                  equivalent)
     if "limiting_speed" in find:
-        _limit(work, m, g, h, x, rw, R, wheel_total, engines * IE, G, sense, I_eq)
+        _limit(work, m, g, h, x, rw, R, wheel_total, engine_total, G, sense, I_eq)
 
 
-def _wheels(given: Given) -> tuple[float, str, str]:
+def _wheels(given: Given) -> Expr:
+    """sum I_w: four wheels' 4 I_w, or two axles' 2 I_axle."""
     if ("wheel_inertia" in given) == ("axle_inertia" in given):
         raise InputError("give wheel_inertia (each of the four wheels) or axle_inertia (each of "
                          "the two axles with its pair of wheels and gears), one of them",
@@ -87,16 +97,16 @@ def _wheels(given: Given) -> tuple[float, str, str]:
         Iw = given["wheel_inertia"]
         if Iw < 0:
             raise InputError("wheel_inertia cannot be negative", key="given.wheel_inertia")
-        return 4 * Iw, "4 I_w", f"4 ({qty(Iw, 'kg*m^2')})"
+        return 4 * Sym("I_w", Iw, "kg m^2")
     Ia = given["axle_inertia"]
     if Ia < 0:
         raise InputError("axle_inertia cannot be negative", key="given.axle_inertia")
-    return 2 * Ia, "2 I_axle", f"2 ({qty(Ia, 'kg*m^2')})"
+    return 2 * Sym("I_axle", Ia, "kg m^2")
 
 
 def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, rw: float,
-              R: float, wheels: float, engines: float, G: float, sense: str, sign: str,
-              I_eq: float) -> None:
+              R: float, wheels: float, engines: float, G: float, sense: str,
+              equivalent: Let) -> None:
     v = given["speed"]
     if v < 0:
         raise InputError("speed must be positive (the vehicle goes forward)", key="given.speed")
@@ -107,47 +117,43 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
         raise InputError("these data are outside what gyro can compute reliably in double "
                          "precision (a product overflows); check the magnitudes and units",
                          key="given")
+    v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
+    m_, x_ = Sym("m", m, "kg"), Sym("x", x, "m")
     work.section("Rates")
-    work.step("omega_w", "v / r_w", f"{qty(v, 'm/s')} / {qty(rw, 'm')}", s.wheel_rate, "rad/s")
-    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", s.precession, "rad/s")
+    omega_w = work.step("omega_w", v_ / r_w, unit="rad/s")
+    work.step("omega_p", v_ / R_, unit="rad/s")
     work.section("Vector rule")
-    H = I_eq * s.wheel_rate
-    work.step("H", "I_eq omega_w", f"{qty(I_eq, 'kg*m^2')} ({qty(s.wheel_rate, 'rad/s')})", H,
-              "kg m^2/s", note="along +y (left) if positive")
+    H = work.step("H", equivalent.sym * Sym("omega_w", omega_w, "rad/s"), unit="kg m^2/s",
+                  note=("along ", plus(ay), " (left) if positive"))
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
-    work.text(f"turning {turn}: omega_p = (0, 0, {num(wp[2])}) rad/s; omega_p x H = "
-              f"({num(V.couple_on_rotor(wp, Hv)[0])}, 0, 0) N m on the rotors; the reactive "
-              f"couple on the vehicle, ({num(V.reactive_couple(wp, Hv)[0])}, 0, 0) N m, "
+    work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
+              rel(cross(wp0, H0), "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              " on the rotors; the reactive couple on the vehicle, ",
+              qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"), ", "
               + ("overturns it outward (lifts the inner wheels)" if H >= 0 else
                  "presses the inner wheels down (the engines' reversed momentum dominates)"))
     work.section("Couples and their shares on each wheel")
-    work.step("C_g", f"(sum I_w {sign} G sum I_E) v^2 / (R r_w)", f"{qty(I_eq, 'kg*m^2')} "
-              f"({qty(v, 'm/s')})^2 / ({qty(R, 'm')} {qty(rw, 'm')})", s.gyroscopic_couple,
-              "N*m", ref="Eq. 11.29")
-    work.step("C_c", "m v^2 h / R", f"{qty(m, 'kg')} ({qty(v, 'm/s')})^2 {qty(h, 'm')} / "
-              f"{qty(R, 'm')}", s.centrifugal_couple, "N*m")
-    work.step("P_w", "m g / 4", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) / 4", s.weight_share, "N",
-              note="weight, every wheel")
-    work.step("P_g", "C_g / (2 x)", f"{qty(s.gyroscopic_couple, 'N m')} / (2 ({qty(x, 'm')}))",
-              s.gyroscopic_share, "N", note="gyroscopic: + outer, - inner")
-    work.step("P_c", "C_c / (2 x)", f"{qty(s.centrifugal_couple, 'N m')} / (2 ({qty(x, 'm')}))",
-              s.centrifugal_share, "N", note="centrifugal: + outer, - inner")
-    work.step("R_outer", "P_w + P_g + P_c", f"{qty(s.weight_share, 'N')} + "
-              f"{qty(s.gyroscopic_share, 'N')} + {qty(s.centrifugal_share, 'N')}", s.outer, "N",
-              note="each outer wheel")
-    work.step("R_inner", "P_w - P_g - P_c", f"{qty(s.weight_share, 'N')} - "
-              f"{qty(s.gyroscopic_share, 'N')} - {qty(s.centrifugal_share, 'N')}", s.inner, "N",
-              note="each inner wheel")
+    C_g = work.step("C_g", equivalent * v_ ** 2 / (R_ * r_w), unit="N*m", ref="Eq. 11.29")
+    C_c = work.step("C_c", m_ * v_ ** 2 * Sym("h", h, "m") / R_, unit="N*m")
+    P_w = Sym("P_w", work.step("P_w", m_ * Sym("g", g, "m/s^2") / 4, unit="N",
+                               note="weight, every wheel"), "N")
+    P_g = Sym("P_g", work.step("P_g", Sym("C_g", C_g, "N m") / (2 * x_), unit="N",
+                               note="gyroscopic: + outer, - inner"), "N")
+    P_c = Sym("P_c", work.step("P_c", Sym("C_c", C_c, "N m") / (2 * x_), unit="N",
+                               note="centrifugal: + outer, - inner"), "N")
+    work.step("R_outer", P_w + P_g + P_c, unit="N", note="each outer wheel")
+    work.step("R_inner", P_w - P_g - P_c, unit="N", note="each inner wheel")
     if s.inner < 0:
-        work.warn(f"the inner wheels' reaction is negative ({qty(s.inner, 'N')}): at this speed "
+        work.warn("the inner wheels' reaction is negative (", q(s.inner, "N"), "): at this speed "
                   "the inner wheels leave the road (the vehicle overturns) unless held down")
     if s.outer < 0:
-        work.warn(f"the outer wheels' reaction is negative ({qty(s.outer, 'N')}): they leave "
+        work.warn("the outer wheels' reaction is negative (", q(s.outer, "N"), "): they leave "
                   "the road")
-    work.check(f"2 R_outer + 2 R_inner = {qty(2 * (s.outer + s.inner), 'N')} = m g = "
-               f"{qty(m * g, 'N')}; x (R_outer - R_inner) = "
-               f"{qty(x * (s.outer - s.inner), 'N m')} = C_g + C_c = "
-               f"{qty(s.gyroscopic_couple + s.centrifugal_couple, 'N m')}")
+    R_o, R_i, x0 = names("R_outer R_inner x")
+    work.check(rel(2 * R_o + 2 * R_i, "=", q(2 * (s.outer + s.inner), "N"), "=", m0 * g0, "=",
+                   q(m * g, "N")), "; ",
+               rel(x0 * (R_o - R_i), "=", q(x * (s.outer - s.inner), "N m"), "=", Cg0 + Cc0, "=",
+                   q(s.gyroscopic_couple + s.centrifugal_couple, "N m")))
     work.answer("wheel_reactions", "R", [s.outer, s.inner], "force", ["outer", "inner"])
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
@@ -156,16 +162,18 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
 def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
-    work.text("at the limiting speed v_lim: m g / 4 = (v_lim^2 / (2 x R)) (I_eq / r_w + m h)")
+    v_lim, x0, I_eq0, r_w, h0 = names("v_lim x I_eq r_w h")
+    work.text("at the limiting speed ", v_lim, ": ",
+              rel(m0 * g0 / 4, "=", (v_lim ** 2 / (2 * x0 * R0)) * (I_eq0 / r_w + m0 * h0)))
     v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
     if v2 is None:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "
                          f"gyroscopic couple, I_eq / r_w = {qty(I_eq / rw, 'kg m')}, outweighs "
                          f"the centrifugal m h = {qty(m * h, 'kg m')}", key="find.limiting_speed")
-    v = work.step("v_lim", "sqrt(m g x R / (2 (I_eq / r_w + m h)))",
-                  f"sqrt({qty(m, 'kg')} ({qty(g, 'm/s^2')}) {qty(x, 'm')} {qty(R, 'm')} / (2 "
-                  f"({qty(I_eq, 'kg*m^2')} / {qty(rw, 'm')} + {qty(m, 'kg')} {qty(h, 'm')})))",
-                  math.sqrt(v2), "m/s")
+    m_ = Sym("m", m, "kg")
+    v = work.step("v_lim", sqrt(m_ * Sym("g", g, "m/s^2") * Sym("x", x, "m") * Sym("R", R, "m")
+                                / (2 * (Sym("I_eq", I_eq, "kg m^2") / Sym("r_w", rw, "m")
+                                        + m_ * Sym("h", h, "m")))), unit="m/s")
     work.answer("limiting_speed", "v_lim", [v], "speed")
 
 

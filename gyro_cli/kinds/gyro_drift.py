@@ -17,8 +17,9 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import gyro_drift as gd
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Let, Sym, sqrt
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Let, Sym, cos, sin, sqrt
+from ..core.prose import Rel, fn, names, prime, q, rel, words
+from ..core.work import Work, qty
 
 DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
 LINEAR_LIMIT = 0.1  # rad: beyond this the small-angle gimbal equations are doubtful
@@ -31,12 +32,15 @@ def _h(x: float) -> str:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
     work.section("Conventions")
-    work.text("k: the spin axis; H: the rotor's angular momentum along it; x: the gimbal axis "
-              "about which the disturbing moment M acts; "
-              "y: the other gimbal axis, at right angles to both. alpha, beta: small rotations of "
-              "the spin axis about x and y; I_x, I_y: inertias of rotor and gimbals about x and y.")
-    work.text("Linearised gimbal equations: I_x alpha'' + H beta' = M,  I_y beta'' - H alpha' = 0. "
-              "The moment does not turn the rotor about x: the spin axis drifts about y.")
+    k, H_, x, y, M_, a, b, I_x, I_y = names("k H x y M alpha beta I_x I_y")
+    work.text(k, ": the spin axis; ", H_, ": the rotor's angular momentum along it; ", x, ": the "
+              "gimbal axis about which the disturbing moment ", M_, " acts; ", y, ": the other "
+              "gimbal axis, at right angles to both. ", a, ", ", b, ": small rotations of the spin "
+              "axis about ", x, " and ", y, "; ", I_x, ", ", I_y, ": inertias of rotor and gimbals "
+              "about ", x, " and ", y, ".")
+    work.text("Linearised gimbal equations: ", _first_equation(), ",  ",
+              rel(I_y * prime(b, 2) - H_ * prime(a), "=", 0), ". The moment does not turn the "
+              "rotor about ", x, ": the spin axis drifts about ", y, ".")
     H = _momentum(given, work)
     M, rate = _moment_and_rate(given, H, work)
     work.answer("angular_momentum", "H", [H], "angular_momentum")
@@ -44,13 +48,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("drift_rate", "Omega_d", [rate], "rate")
     if "duration" in given:
         t = given["duration"]
-        if t < 0:
-            raise InputError(f"duration must not be negative, got {qty(t, 's')}",
-                             key="given.duration")
         drift = Let(Sym("Omega_d", rate, "rad/s"), Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"))
-        angle = work.step("drift angle", drift * Sym("t", t, "s"), unit="rad",
-                          note=f"= {num(math.degrees(rate * t))} deg")
-        work.answer("drift_angle", "(M / H) t", [angle], "angle")
+        angle = work.step(words("drift angle"), drift * Sym("t", t, "s"), unit="rad",
+                          note=_equals(rate * t, "deg"))
+        M_, H_, t_ = names("M H t")
+        work.answer("drift_angle", M_ / H_ * t_, [angle], "angle")
     elif "drift_angle" in find:
         raise InputError("drift_angle needs the time the moment acts: give duration",
                          key="given.duration")
@@ -79,24 +81,19 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
         M = given["moment"]
         work.section("Drift: steady precession of the spin axis about y (Eq. 11.29)")
         rate = work.step("Omega_d", Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"), unit="rad/s",
-                         note=f"= {num(gd.drift_rate(M, H) / DEG_PER_HOUR)} deg/h")
+                         note=_equals(gd.drift_rate(M, H) / DEG_PER_HOUR, "deg/h"))
         return M, rate
     if ways == ["drift_period"]:
         T = given["drift_period"]
-        if T <= 0:
-            raise InputError(f"drift_period must be positive, got {qty(T, 's')}",
-                             key="given.drift_period")
         work.section("Drift rate from the period of one full turn")
         rate = work.step("Omega_d", 2 * PI / Sym("T_d", T, "s"), unit="rad/s",
-                         note=f"= {num(2 * math.pi / T / DEG_PER_HOUR)} deg/h")
+                         note=_equals(2 * math.pi / T / DEG_PER_HOUR, "deg/h"))
     else:
         rate = given["drift_rate"]
-        if rate < 0:
-            raise InputError("a drift budget is a magnitude: give it positive",
-                             key="given.drift_rate")
     work.section("Largest disturbing moment for the drift budget: M = H Omega_d")
     M = work.step("M", Sym("H", abs(H), "kg m^2/s") * Sym("Omega_d", rate, "rad/s"), unit="N*m")
-    work.text("any larger moment about x makes the spin axis drift faster than the budget")
+    work.text("any larger moment about ", *names("x"), " makes the spin axis drift faster "
+              "than the budget")
     return M, math.copysign(rate, H) if rate else 0.0
 
 
@@ -112,17 +109,13 @@ def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | Non
             missing = "I_x" if "I_x" not in given else "I_y"
             raise InputError("give both I_x and I_y (or one I for both)", key=f"given.{missing}")
         Ix, Iy = given["I_x"], given["I_y"]
-    elif body.I_pivot is not None:
-        Ix = Iy = body.I_pivot
-    elif body.I_cg is not None:
-        Ix = Iy = body.I_cg
+    elif body.I_pivot is not None or body.I_cg is not None:  # I, I_x, I_y declare > 0
+        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.I_cg
+        if Ix <= 0:
+            raise InputError(f"a moment of inertia must be positive, got the rotor's "
+                             f"{qty(Ix, 'kg*m^2')}", key="given.I_pivot")
     else:
         return None
-    for key, value in (("I_x", Ix), ("I_y", Iy)):
-        if value <= 0:
-            name = "I" if "I" in given else key if key in given else "I_pivot"
-            raise InputError(f"a moment of inertia must be positive, got "
-                             f"{qty(value, 'kg*m^2')}", key=f"given.{name}")
     return Ix, Iy
 
 
@@ -138,36 +131,53 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
                              key="given.I")
         return
     Ix, Iy = inertias
-    source = "I_x = I_y = I" if Ix == Iy else "I_x, I_y"
+    x_, y_, I_ = names("I_x I_y I")
+    source: tuple = (rel(x_, "=", y_, "=", I_),) if Ix == Iy else (x_, ", ", y_)
     if "I" not in given and "I_x" not in given:
-        source = "the rotor alone (gimbals' inertia neglected)"
+        source = ("the rotor alone (gimbals' inertia neglected)",)
     work.section("Nutation, the moment switched on with the gyro at rest")
-    work.text(f"transverse inertias: {source}")
+    work.text("transverse inertias: ", *source)
     H_, I_x, I_y = Sym("H", abs(H), "kg m^2/s"), Sym("I_x", Ix, "kg m^2"), Sym("I_y", Iy, "kg m^2")
     wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s",
-                   note=f"= {num(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi))} Hz")
+                   note=_equals(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi), "Hz"))
     period = work.step("T_n", 2 * PI / Sym("w_n", wn, "rad/s"), unit="s")
-    work.text("solution from rest: alpha(t) = (M I_y / H^2)(1 - cos(w_n t)),  "
-              "beta(t) = (M / H) t - (M / (H w_n)) sin(w_n t)")
+    a, b, M0, H0, Iy0, w, t = names("alpha beta M H I_y w_n t")
+    work.text("solution from rest: ", rel(fn("alpha", t), "=", M0 * Iy0 / H0**2 * (1 - cos(w * t))),
+              ",  ", rel(fn("beta", t), "=", M0 / H0 * t - M0 / (H0 * w) * sin(w * t)))
     M_, H_ = Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")
+    x, y, I0 = names("x y I")
     ax = work.step("A_x", M_ * I_y / H_ ** 2, unit="rad",
-                   note="about x, the moment's axis (M I / H^2 for equal inertias I)")
+                   note=("about ", x, ", the moment's axis (", M0 * I0 / H0**2,
+                         " for equal inertias ", I0, ")"))
     ay = work.step("A_y", M_ * sqrt(I_x * I_y) / H_ ** 2, unit="rad", substitute=False,
-                   note="about y, the drift axis: the ripple on the drift")
+                   note=("about ", y, ", the drift axis: the ripple on the drift"))
     work.step("alpha_max", 2 * M_ * I_y / H_ ** 2, unit="rad", substitute=False,
-              note="largest deflection about x, reached every half period")
+              note=("largest deflection about ", x, ", reached every half period"))
     quarter = period / 4
     residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
-    work.check(f"the solution in the first gimbal equation at t = T_n / 4: I_x alpha'' + H beta' = "
-               f"{qty(residual, 'N m')}, M = {qty(M, 'N m')}")
+    t, T_n, M0 = names("t T_n M")
+    work.check("the solution in the first gimbal equation at ", rel(t, "=", T_n / 4), ": ",
+               rel(_first_equation().first, "=", q(residual, "N m")), ", ",
+               rel(M0, "=", q(M, "N m")))
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
-        work.warn(f"the nutation reaches {num(math.degrees(max(abs(2 * ax), abs(ay))))} deg: the "
+        work.warn("the nutation reaches ", q(max(abs(2 * ax), abs(ay)), "deg"), ": the "
                   "linearised gimbal equations assume small angles")
     work.answer("nutation_frequency", "w_n", [wn], "rate")
     work.answer("nutation_period", "T_n", [period], "time")
     work.answer("nutation_amplitude", "A_x", [abs(ax)], "angle")
     work.answer("nutation_amplitude_drift", "A_y", [abs(ay)], "angle")
     work.answer("max_deflection", "alpha_max", [abs(2 * ax)], "angle")
+
+
+def _equals(value: float, unit: str) -> tuple:
+    """A step's note ``= 0.03283 deg/h``: its value in another unit."""
+    return (rel(None, "=", q(value, unit)),)
+
+
+def _first_equation() -> Rel:
+    """I_x alpha'' + H beta' = M, the gimbal equation about the moment's axis."""
+    I_x, a, H, b, M = names("I_x alpha H beta M")
+    return rel(I_x * prime(a, 2) + H * prime(b), "=", M)
 
 
 def _a_dd(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
@@ -191,15 +201,17 @@ KIND = Kind(
               "(instead of J and spin)"),
         Param("moment", "moment", "M", "disturbing moment about a gimbal axis at right angles "
               "to the spin (friction, drag, imbalance)"),
-        Param("drift_rate", "rate", "Omega_d", "drift budget (instead of moment), e.g. '0.1 deg/h'"),
+        Param("drift_rate", "rate", "Omega_d", "drift budget (instead of moment), e.g. "
+              "'0.1 deg/h'", nonnegative=True, reason="a drift budget is a magnitude"),
         Param("drift_period", "time", "T_d", "time for one full turn of drift (instead of "
-              "drift_rate)"),
-        Param("duration", "time", "t", "time the moment acts, for drift_angle"),
+              "drift_rate)", positive=True),
+        Param("duration", "time", "t", "time the moment acts, for drift_angle",
+              nonnegative=True),
         Param("I", "inertia", "I", "transverse inertia of rotor and gimbals about each gimbal "
-              "axis"),
+              "axis", positive=True),
         Param("I_x", "inertia", "I_x", "about the axis of the moment (where the outer gimbal "
-              "adds inertia)"),
-        Param("I_y", "inertia", "I_y", "about the drift axis"),
+              "adds inertia)", positive=True),
+        Param("I_y", "inertia", "I_y", "about the drift axis", positive=True),
     ),
     answers=(
         AnswerSpec("angular_momentum", "angular_momentum", "H", "spin angular momentum J psidot"),

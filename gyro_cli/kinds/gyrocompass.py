@@ -22,6 +22,7 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Let, Sym, cos, ellipk, sin, sqrt
+from ..core.prose import cross, dot, fn, names, q, rel
 from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
 from ..physics.gyrocompass import (directive_stiffness, north_seeking_moment, period,
@@ -32,13 +33,7 @@ POLAR_WARNING_LATITUDE = math.radians(70)
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     lat = given["latitude"]
-    if not -math.pi / 2 <= lat <= math.pi / 2:
-        raise InputError(f"latitude lies between -90 and 90 deg, got {num(math.degrees(lat))} "
-                         "deg", key="given.latitude")
     Omega = given["earth_rate"]
-    if Omega <= 0:
-        raise InputError("earth_rate must be positive (the Earth's sidereal rate, 7.292e-5 "
-                         "rad/s)", key="given.earth_rate")
     if cos_theta(lat) == 0:
         raise InputError(f"at latitude {num(math.degrees(lat))} deg (a pole) a gyrocompass cannot "
                          "settle: the Earth's rate has no horizontal component (Omega_E "
@@ -51,27 +46,29 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "north-seeking moment", key="given.spin")
     H_abs = abs(H)
     alpha = given["deviation"]
-    if not -math.pi <= alpha <= math.pi:
-        raise InputError("deviation lies between -180 and 180 deg (east of north positive)",
-                         key="given.deviation")
 
     work.section("Conventions")
-    work.text("E, N, U: east, north, up at the site. The rotor's spin vector (right-hand rule) "
-              "points along the horizontal axis at azimuth alpha, east of north positive; "
-              "moments about the vertical are positive counter-clockwise seen from above.")
-    work.text("Earth rate: Omega_E = Omega (cos(lambda) N + sin(lambda) U), where Omega is the "
-              "Earth's rotation rate; only the horizontal part Omega cos(lambda) N can turn a "
-              "horizontal spin vector.")
+    E, N, U, a, W, OmE, lam0 = names("E N U alpha Omega Omega_E lambda")
+    work.text(E, ", ", N, ", ", U, ": east, north, up at the site. The rotor's spin vector "
+              "(right-hand rule) points along the horizontal axis at azimuth ", a, ", east of "
+              "north positive; moments about the vertical are positive counter-clockwise seen "
+              "from above.")
+    work.text("Earth rate: ", rel(OmE, "=", W * (cos(lam0) * N + sin(lam0) * U)), ", where ", W,
+              " is the Earth's rotation rate; only the horizontal part ", W * cos(lam0) * N,
+              " can turn a horizontal spin vector.")
     if H < 0:
         work.text("spin < 0: the spin vector points along the other end of the axis; that end "
                   "seeks north")
     work.section("Moment about the vertical (angular momentum about U on the rotating Earth)")
-    work.text("M_U: the moment about the vertical on the rotor and its gimbal; I_v: their "
-              "moment of inertia about the vertical; alphadot: the rate of the azimuth alpha")
-    work.text("d/dt (H . U) = M_U + H . (Omega_E x U),  Omega_E x U = Omega cos(lambda) E,  "
-              "H . U = I_v (Omega sin(lambda) - alphadot)")
-    work.text("so  I_v alphaddot = -H Omega cos(lambda) sin(alpha)  (terms of order I_v Omega^2 "
-              "dropped): a pendulum about north")
+    M_U, I_v, adot, addot, H0 = names("M_U I_v alphadot alphaddot H")
+    work.text(M_U, ": the moment about the vertical on the rotor and its gimbal; ", I_v,
+              ": their moment of inertia about the vertical; ", adot, ": the rate of the "
+              "azimuth ", a)
+    work.text(rel(fn("d/dt", dot(H0, U)), "=", M_U + dot(H0, cross(OmE, U))), ",  ",
+              rel(cross(OmE, U), "=", W * cos(lam0) * E), ",  ",
+              rel(dot(H0, U), "=", I_v * (W * sin(lam0) - adot)))
+    work.text("so  ", rel(I_v * addot, "=", -H0 * W * cos(lam0) * sin(a)), "  (terms of order ",
+              I_v * W**2, " dropped): a pendulum about north")
     H_, Omega_E = Sym("H", H_abs, "kg m^2/s"), Sym("Omega_E", Omega, "rad/s")
     lam, alpha_ = Sym("lambda", lat, "deg"), Sym("alpha", alpha, "deg")
     stiffness = H_ * Omega_E * cos(lam)  # directive_stiffness, Eq. in physics/gyrocompass.py
@@ -85,9 +82,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
     work.answer("settles", "alpha_eq", ["north"], None)
     work.answer("directive_moment", "D", [D], "stiffness")
-    work.text("alpha_eq = 0 (spin vector north) is the stable equilibrium (alpha = 180 deg is "
-              "unstable): the axis swings about north and, with any damping about the "
-              "vertical, settles there.")
+    work.text(rel(names("alpha_eq")[0], "=", 0), " (spin vector north) is the stable "
+              "equilibrium (", rel(a, "=", q(math.pi, "deg", exact=True)), " is unstable): the axis swings "
+              "about north and, with any damping about the vertical, settles there.")
 
     I_v = _vertical_inertia(given, work)
     if I_v is not None:
@@ -98,20 +95,23 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.step("T", value=T / 60, unit="min")
         work.answer("period", "T", [T], "time")
         if abs(alpha) > math.pi * (1 - 1e-9):
-            work.text("alpha = 180 deg: the spin vector points south, the unstable equilibrium; "
-                      "released there at rest the axis stays (in theory) and never swings")
+            work.text(rel(names("alpha")[0], "=", q(math.pi, "deg", exact=True)), ": the spin vector "
+                      "points south, the unstable equilibrium; released there at rest the axis "
+                      "stays (in theory) and never swings")
             if "swing_period" in find:
                 raise InputError("at a deviation of 180 deg the axis balances in unstable "
                                  "equilibrium (spin vector south): a swing released there at rest "
                                  "never returns, its period is unbounded", key="given.deviation")
         elif alpha:
             Ts = work.step("T(alpha)", Sym("T", T, "s") * (2 / PI) * ellipk(
-                sin(alpha_ / 2) ** 2), unit="s", substitute=False, note="released at rest at "
-                "alpha (the pendulum's exact period; K is the complete elliptic integral of the "
-                "first kind, of parameter m = sin^2(alpha / 2))")
+                sin(alpha_ / 2) ** 2), unit="s", substitute=False, note=(
+                "released at rest at ", a, " (the pendulum's exact period; ", *names("K"),
+                " is the complete elliptic integral of the first kind, of parameter ",
+                rel(*names("m"), "=", sin(a / 2) ** 2), ")"))
             work.answer("swing_period", "T(alpha)", [Ts], "time")
-        work.check(f"I_v (2 pi / T)^2 = {qty(I_v * (2 * math.pi / T) ** 2, 'N m/rad')} = "
-                   f"H Omega_E cos(lambda) = {qty(D, 'N m/rad')}")
+        I_v0, T0, H0, OmE, lam0 = names("I_v T H Omega_E lambda")
+        work.check(rel(I_v0 * (2 * PI / T0)**2, "=", q(I_v * (2 * math.pi / T) ** 2, "N m/rad"),
+                       "=", H0 * OmE * cos(lam0), "=", q(D, "N m/rad")))
     elif {"period", "swing_period"} & find:
         raise InputError("the period needs I_vertical (or the rotor's I_cg, k_cg or shape)",
                          key="given.I_vertical")
@@ -125,16 +125,14 @@ def _vertical_inertia(given: Given, work: Work) -> float | None:
     body = given.body
     if "I_vertical" in given:
         I_v = given["I_vertical"]
-        if I_v <= 0:
-            raise InputError("I_vertical must be positive", key="given.I_vertical")
         if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):
             raise InputError(f"I_vertical = {qty(I_v, 'kg*m^2')} is less than the rotor's own "
                              f"moment about a diameter, I_G = {qty(body.I_cg, 'kg*m^2')}: the "
                              "sensitive element includes the rotor", key="given.I_vertical")
         return I_v
     if body.I_cg is not None:
-        work.text("no I_vertical: the rotor alone turns about the vertical (massless gimbal), "
-                  "I_v = I_G, its transverse moment about a diameter")
+        work.text("no I_vertical: the rotor alone turns about the vertical (massless gimbal), ",
+                  rel(*names("I_v"), "=", *names("I_G")), ", its transverse moment about a diameter")
         return body.I_cg
     return None
 
@@ -145,17 +143,21 @@ KIND = Kind(
             "(north-seeking moment, period of the swing about north)",
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
-        Param("latitude", "angle", "lambda", "latitude of the site (north or south)"),
+        Param("latitude", "angle", "lambda", "latitude of the site (north or south)",
+              range=(-math.pi / 2, math.pi / 2)),
         Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
               "(instead of spin)"),
         Param("I_vertical", "inertia", "I_v", "moment of inertia of the sensitive element "
-              "(rotor and its gimbal) about the vertical; default the rotor's I_cg"),
+              "(rotor and its gimbal) about the vertical; default the rotor's I_cg",
+              positive=True),
         Param("deviation", "angle", "alpha", "angle of the spin vector from north, east "
-              "positive", default="0 deg"),
+              "positive", default="0 deg", range=(-math.pi, math.pi),
+              reason="east of north positive"),
         Param("earth_rate", "rate", "Omega_E", "the Earth's rate of rotation (sidereal)",
-              default="7.292115e-5 rad/s"),
+              default="7.292115e-5 rad/s", positive=True,
+              reason="the Earth's sidereal rate is 7.292e-5 rad/s"),
     ),
     answers=(
         AnswerSpec("period", "time", "T", "period of small swings about north"),

@@ -26,9 +26,11 @@ import math
 from dataclasses import dataclass
 
 from ..core.errors import InputError
+from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, sin as sin_, sqrt
 from ..core.given import Given
+from ..core.prose import cross, deriv, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
+from ..core.work import Work, num
 from ..physics.algebra import cos_theta, quadratic_roots
 
 RPM = 2 * math.pi / 60
@@ -121,6 +123,40 @@ def counterweight_offset(moment: float, counterweight: float, g: float) -> float
 
 # ---- the worked answer ------------------------------------------------------
 
+def _theta(theta: float) -> Sym:
+    return Sym("theta", theta, "deg")
+
+
+def _rate(name: str, value: float) -> Sym:
+    return Sym(name, value, "rad/s")
+
+
+def _cos(theta: float) -> Expr:
+    """cos(theta), exactly 0 at 90 deg as physics.algebra.cos_theta takes it (the float
+    cos(pi/2) is 6e-17): there the substitution shows its value, 0."""
+    if cos_theta(theta) == 0:
+        return Let(Sym("cos(theta)", 0.0), cos_(_theta(theta)))
+    return cos_(_theta(theta))
+
+
+def _slow_root(J: Sym, I: Sym, spin: Sym, theta: float, M: Sym, root: float) -> Expr:
+    """The slow root of (J - I) cos(th) sin(th) Omega^2 + J psidot sin(th) Omega - M = 0,
+    written without cancellation as 2 M / (b +- sqrt(b^2 + 4 a M)), b = J psidot sin(th):
+    the sign whose value is ``root`` (the root physics picked)."""
+    b = J * spin * sin_(_theta(theta))
+    disc = b ** 2 + 4 * (J - I) * _cos(theta) * sin_(_theta(theta)) * M
+    best: tuple[float, Expr] | None = None
+    for tree in (2 * M / (b + sqrt(disc)), 2 * M / (b - sqrt(disc))):
+        try:
+            value = tree.value
+        except (ZeroDivisionError, ValueError):
+            continue
+        if best is None or abs(value - root) < abs(best[0] - root):
+            best = (value, tree)
+    assert best is not None
+    return best[1]
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     theta = given["theta"]
@@ -138,41 +174,45 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         body.require("I_cg")
     J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
     work.section("Conventions")
-    work.text(("K: the precession axis, horizontal along the track (the axle tilts about it "
-               "while a wheel drops)" if "drop" in given else
-               "K: the precession axis, upward (gravity along -K)") +
-              "; k: the spin axis, from bearing A to bearing B; spin and precession positive "
-              "counter-clockwise seen from the tips of k and of K (right-hand rule).")
-    work.text("n = K x k / sin(theta): the line of nodes, perpendicular to both the spin and "
-              "the precession axes" + (" (vertical here)." if "drop" in given else
-                                       " (with k pointing east and K up, n points north)."))
+    K, k, n, A, B, th, W, L = names("K k n A B theta Omega L")
+    work.text(K, ": the precession axis, ",
+              *(("horizontal along the track (the axle tilts about it while a wheel drops)",)
+                if "drop" in given else ("upward (gravity along ", -K, ")")),
+              "; ", k, ": the spin axis, from bearing ", A, " to bearing ", B, "; spin and "
+              "precession positive counter-clockwise seen from the tips of ", k, " and of ", K,
+              " (right-hand rule).")
+    work.text(rel(n, "=", cross(K, k) / sin_(th)), ": the line of nodes, perpendicular to both "
+              "the spin and the precession axes",
+              *((" (vertical here).",) if "drop" in given else
+                (" (with ", k, " pointing east and ", K, " up, ", n, " points north).")))
     if "drop" in given:
-        work.text("a wheel drops: the wheel set tilts about K at the rate Omega; k is the axle, "
-                  "from wheel A to wheel B, and the bearing_spacing L is the distance between "
-                  "the wheels (rails)")
+        work.text("a wheel drops: the wheel set tilts about ", K, " at the rate ", W, "; ", k,
+                  " is the axle, from wheel ", A, " to wheel ", B, ", and the bearing_spacing ",
+                  L, " is the distance between the wheels (rails)")
     spin = _spin(given, work)
     precession = _precession(given, J, I, spin, theta, work)
     work.section("Moment on the rotor, dH/dt = Omega K x H (Eqs. 11.28-11.29 generalised)")
-    work.text("H: the angular momentum of the rotor about its centre of mass; Omega: the "
-              "precession rate about K")
-    axial = work.step("omega_z", "psidot + Omega cos(theta)",
-                      f"{qty(spin, 'rad/s')} + {qty(precession, 'rad/s')} ({num(cos)})",
-                      spin + precession * cos, "rad/s", ref="Eq. 11.8")
-    M = gyroscopic_moment(J, I, spin, precession, theta)
+    H = names("H")[0]
+    work.text(H, ": the angular momentum of the rotor about its centre of mass; ", W, ": the "
+              "precession rate about ", K)
+    psidot, Omega = _rate("psidot", spin), _rate("Omega", precession)
+    J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
+    axial = work.step("omega_z", psidot + Omega * _cos(theta), unit="rad/s", ref="Eq. 11.8")
     if cos == 0:
-        work.text("theta = 90 deg: omega_z = psidot, the I term drops out (I is not needed)")
-        work.step("M", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                  f"({qty(precession, 'rad/s')})", M, "N*m", ref="Eq. 11.29")
+        w_z, ps, I0 = names("omega_z psidot I")
+        work.text(rel(th, "=", q(math.pi / 2, "deg", exact=True)), ": ", rel(w_z, "=", ps),
+                  ", the ", I0, " term drops out (", I0, " is not needed)")
+        M = work.step("M", J_ * psidot * Omega, unit="N*m", ref="Eq. 11.29")
     else:
-        work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))",
-                  f"{qty(precession, 'rad/s')} ({num(sin)}) ({qty(J, 'kg*m^2')} "
-                  f"{qty(axial, 'rad/s')} - {qty(I, 'kg*m^2')} {qty(precession, 'rad/s')} "
-                  f"({num(cos)}))", M, "N*m", ref="Eq. 11.29 generalised")
+        M = work.step("M", Omega * sin_(_theta(theta)) * (
+            J_ * _rate("omega_z", axial) - I_ * Omega * _cos(theta)), unit="N*m",
+            ref="Eq. 11.29 generalised")
     _sense(M, work)
     work.answer("moment", "M", [M], "moment")
     work.answer("precession", "Omega", [precession], "rate")
-    work.check(f"|H| is constant in the turning frame; |dH/dt| = |Omega| |K x H| = "
-               f"{qty(abs(M), 'N m')}")
+    work.check(absolute(H), " is constant in the turning frame; ",
+               rel(absolute(deriv(H)), "=", absolute(W) * absolute(cross(K, H)), "=",
+                   q(abs(M), "N m")))
 
     bearing_keys = [k for k in ("cg_position", "arrangement", "supported_mass", "cg_radius",
                                 "cg_offset") if k in given]
@@ -195,11 +235,14 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
     """
     deg = round(math.degrees(theta))
     work.section("Spin axis along the precession axis")
-    work.text(f"k: the spin axis; K: the precession axis, upward; theta = {deg} deg: the spin "
-              "axis lies along the precession axis, so the "
-              "precession only adds to (or takes from) the spin, omega_z = psidot + Omega "
-              "cos(theta); H = J omega_z k stays along K and does not turn: dH/dt = Omega K x H "
-              "= 0, no gyroscopic moment (sin(theta) = 0 in Eq. 11.29)")
+    k, K, th, w_z, ps, W, H, J, I = names("k K theta omega_z psidot Omega H J I")
+    work.text(k, ": the spin axis; ", K, ": the precession axis, upward; ",
+              rel(th, "=", q(math.radians(deg), "deg", exact=True)), ": the spin axis lies "
+              "along the precession axis, so the precession only adds to (or takes from) the "
+              "spin, ", rel(w_z, "=", ps + W * cos_(th)), "; ", rel(H, "=", J * w_z * k),
+              " stays along ", K, " and does not turn: ",
+              rel(deriv(H), "=", cross(W * K, H), "=", 0), ", no gyroscopic moment (",
+              rel(sin_(th), "=", 0), " in Eq. 11.29)")
     for key in ("moment", "bearing_spacing", "counterweight"):
         if key in given:
             raise InputError(f"at theta = {deg} deg there is no gyroscopic moment: {key} has "
@@ -212,8 +255,9 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
                          "is not computed for a spin axis along the precession axis",
                          key=f"find.{sorted(wanted)[0]}")
     precession = _precession(given, 0.0, 0.0, given.get("spin", 0.0) or 0.0, theta, work)
-    work.step("M", "Omega sin(theta) (J omega_z - I Omega cos(theta))", f"sin({deg} deg) = 0",
-              0.0, "N*m", note="whatever the transverse inertia I")
+    work.step("M", value=0.0, unit="N*m", note=(
+        rel(sin_(th), "=", 0), " in ", W * sin_(th) * (J * w_z - I * W * cos_(th)),
+        ", whatever the transverse inertia ", I))
     work.answer("moment", "M", [0.0], "moment")
     work.answer("precession", "Omega", [precession], "rate")
 
@@ -232,10 +276,11 @@ def _spin(given: Given, work: Work) -> float:
             raise InputError(f"wheel_radius must be positive, got {num(r)} m",
                              key="given.wheel_radius")
         work.section("Spin of the wheels from the vehicle's speed")
-        work.text("psidot, the wheels' spin: they roll without slipping, so the axle's speed is "
-                  "v = psidot r_w")
-        return work.step("psidot", "v / r_w", f"{qty(given['speed'], 'm/s')} / {qty(r, 'm')}",
-                         given["speed"] / r, "rad/s")
+        psidot, v, r_w = names("psidot v r_w")
+        work.text(psidot, ", the wheels' spin: they roll without slipping, so the axle's speed "
+                  "is ", rel(v, "=", psidot * r_w))
+        return work.step("psidot", Sym("v", given["speed"], "m/s") / Sym("r_w", r, "m"),
+                         unit="rad/s")
     if "spin" not in given:
         raise InputError("give the rotor's spin relative to the frame (or the vehicle's speed "
                          "and wheel_radius)", key="given.spin")
@@ -278,20 +323,22 @@ def _drop(given: Given, work: Work) -> float:
         s, v = given["drop_length"], given["speed"]
         if s <= 0:
             raise InputError("drop_length must be positive", key="given.drop_length")
-        t = work.step("t", "s / v", f"{qty(s, 'm')} / {qty(v, 'm/s')}", s / v, "s",
+        t = work.step("t", Sym("s", s, "m") / Sym("v", v, "m/s"), unit="s",
                       note="time the wheel takes to drop")
-        return work.step("Omega", "(h / L) / t", f"({qty(h, 'm')} / {qty(L, 'm')}) / "
-                         f"{qty(t, 's')}", tilt_rate_uniform(h, v, s, L), "rad/s",
-                         note="the axle turns through h / L (small angle) while the wheel drops")
+        h_, L_ = names("h L")
+        return work.step("Omega", Sym("h", h, "m") / Sym("L", L, "m") / Sym("t", t, "s"),
+                         unit="rad/s", note=("the axle turns through ", h_ / L_, " (small "
+                                             "angle) while the wheel drops"))
     T = given["drop_time"]
     if T <= 0:
         raise InputError("drop_time must be positive", key="given.drop_time")
-    work.text("the wheel falls h and rises again in the time T_d with simple harmonic motion: "
-              "y = (h / 2)(1 - cos(2 pi t / T_d)), whose greatest speed is (h / 2)(2 pi / T_d)")
-    y_dot = work.step("ydot_max", "(h / 2)(2 pi / T_d)", f"({qty(h, 'm')} / 2)(2 pi / "
-                      f"{qty(T, 's')})", math.pi * h / T, "m/s")
-    return work.step("Omega", "ydot_max / L", f"{qty(y_dot, 'm/s')} / {qty(L, 'm')}",
-                     tilt_rate_harmonic(h, T, L), "rad/s",
+    h_, T_d, y, t_ = names("h T_d y t")
+    work.text("the wheel falls ", h_, " and rises again in the time ", T_d, " with simple "
+              "harmonic motion: ", rel(y, "=", h_ / 2 * (1 - cos_(2 * PI * t_ / T_d))),
+              ", whose greatest speed is ", h_ / 2 * (2 * PI / T_d))
+    y_dot = work.step("ydot_max", Sym("h", h, "m") / 2 * (2 * PI / Sym("T_d", T, "s")),
+                      unit="m/s")
+    return work.step("Omega", Sym("ydot_max", y_dot, "m/s") / Sym("L", L, "m"), unit="rad/s",
                      note="greatest tilt rate of the axle")
 
 
@@ -299,10 +346,10 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                 work: Work) -> float:
     """Omega: given, from a path (v / R), from a wheel's drop, or from an applied moment."""
     ways = [k for k in ("precession", "turn_radius", "drop", "moment") if k in given]
-    names = {"turn_radius": "speed with turn_radius", "drop": "a wheel's drop"}
+    spelled = {"turn_radius": "speed with turn_radius", "drop": "a wheel's drop"}
     if len(ways) > 1:
         raise InputError(f"give one of precession, speed (with turn_radius), drop or moment, "
-                         f"not {' and '.join(names.get(w, w) for w in ways)}",
+                         f"not {' and '.join(spelled.get(w, w) for w in ways)}",
                          key=f"given.{ways[1]}")
     if not ways:
         raise InputError("give the precession (or speed and turn_radius, a wheel's drop, or "
@@ -332,40 +379,46 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
         turn = given.word("turn", "left")
         sign = 1.0 if turn == "left" else -1.0
         work.section("Precession from the path")
-        work.text(f"the frame turns {turn} on a circle: Omega = {'+' if sign > 0 else '-'}v / R "
-                  "about the upward vertical (a left turn is counter-clockwise from above)")
-        return work.step("Omega", f"{'' if sign > 0 else '-'}v / R",
-                         f"{'' if sign > 0 else '-'}{qty(given['speed'], 'm/s')} / "
-                         f"{qty(R, 'm')}", sign * given["speed"] / R, "rad/s")
+        W, v_, R_ = names("Omega v R")
+        work.text(f"the frame turns {turn} on a circle: ",
+                  rel(W, "=", (signed("+", v_) if sign > 0 else -v_) / R_),
+                  " about the upward vertical (a left turn is counter-clockwise from above)")
+        v = Sym("v", given["speed"], "m/s")
+        return work.step("Omega", (v if sign > 0 else -v) / Sym("R", R, "m"), unit="rad/s")
     M = given["moment"]
     work.section("Precession that the applied moment sustains (moment along n given)")
-    work.text("Omega: the precession rate sought; I: the transverse moment of inertia about the "
-              "centre of mass")
-    work.text("(J - I) cos(theta) sin(theta) Omega^2 + J psidot sin(theta) Omega - M = 0")
+    W, I0, J0, th, ps, M0 = names("Omega I J theta psidot M")
+    work.text(W, ": the precession rate sought; ", I0, ": the transverse moment of inertia "
+              "about the centre of mass")
+    work.text(rel((J0 - I0) * cos_(th) * sin_(th) * W ** 2 + J0 * ps * sin_(th) * W - M0, "=",
+                  0))
     roots = precession_for_moment(J, I, spin, theta, M)
     if not roots:
-        raise InputError(f"no steady precession carries the moment {qty(M, 'N m')} at this spin "
+        raise InputError(f"no steady precession carries the moment {num(M)} N m at this spin "
                          "(the quadratic has no real root): raise the spin", key="given.moment")
     if len(roots) > 1:
         slow = min(roots, key=abs)
-        work.text(f"two roots {', '.join(qty(r, 'rad/s') for r in roots)}; the slow one is "
-                  "taken (the fast one is a top-like motion, see steady_precession)")
+        listed = [piece for r in roots for piece in (", ", q(r, "rad/s"))][1:]
+        work.text("two roots ", *listed, "; the slow one is taken (the fast one is a top-like "
+                  "motion, see steady_precession)")
         roots = [slow]
+    M_, J_, psidot = Sym("M", M, "N m"), Sym("J", J, "kg m^2"), _rate("psidot", spin)
     if cos_theta(theta) == 0:
-        return work.step("Omega", "M / (J psidot)", f"{qty(M, 'N*m')} / ({qty(J, 'kg*m^2')} "
-                         f"{qty(spin, 'rad/s')})", roots[0], "rad/s", ref="Eq. 11.29")
-    return work.step("Omega", "root of the quadratic", value=roots[0], unit="rad/s")
+        return work.step("Omega", M_ / (J_ * psidot), unit="rad/s", ref="Eq. 11.29")
+    return work.step("Omega", _slow_root(J_, Sym("I", I, "kg m^2"), psidot, theta, M_, roots[0]),
+                     unit="rad/s", substitute=False, note="the slow root of the quadratic, "
+                     "written without cancellation")
 
 
 def _sense(M: float, work: Work) -> None:
+    M_, n, K, A, B = names("M n K A B")
     if M == 0:
-        work.text("M = 0: no moment is needed")
+        work.text(rel(M_, "=", 0), ": no moment is needed")
         return
-    along = "+n" if M > 0 else "-n"
-    end = "B" if M > 0 else "A"
-    work.text(f"Sense: the moment the bearings exert on the rotor points along {along}, the line "
-              f"of nodes; it turns the spin axis about n so that the {end} end of the axis is "
-              f"pushed toward -K (down). The rotor exerts the equal and opposite moment on its "
+    work.text("Sense: the moment the bearings exert on the rotor points along ",
+              signed("+", n) if M > 0 else -n, ", the line of nodes; it turns the spin axis "
+              "about ", n, " so that the ", B if M > 0 else A, " end of the axis is pushed "
+              "toward ", -K, " (down). The rotor exerts the equal and opposite moment on its "
               "frame.")
 
 
@@ -412,56 +465,70 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
     b = L - a
     work.section("Bearing forces: free body of the rotor (forces on the rotor)")
     ms = "m_s" if "supported_mass" in given else "m"  # the Given table's symbol
-    work.text("F_A, F_B: forces of the bearings on the rotor, perpendicular to the spin axis. "
-              "'up' components lie in the plane of K and k, positive toward +K (upward); 'side' "
-              "components lie along n, positive toward the precession axis. Labelled A, B in "
-              "that order.")
-    work.step("a", value=a, unit="m", note="from bearing A to the centre of mass G along k"
-              + (" (default: midway)" if "cg_position" not in given else ""))
-    work.step("b", "L - a", f"{qty(L, 'm')} - {qty(a, 'm')}", b, "m")
-    work.text("a_up, a_k: the acceleration of G upward and along k; G moves on a circle of "
-              "radius R about the precession axis, with the centripetal acceleration Omega^2 R")
-    work.text(f"up:   F_A + F_B = {ms} (g sin(theta) + a_up);   a F_A - b F_B = M   "
-              "(moments about G along n)")
-    work.step("F_A,weight", f"{ms} g sin(theta) b / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
-              f"({num(sin)}) {qty(b, 'm')} / {qty(L, 'm')}", forces.weight[0], "N",
-              note="static share of the weight")
-    work.step("F_B,weight", f"{ms} g sin(theta) a / L", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) "
-              f"({num(sin)}) {qty(a, 'm')} / {qty(L, 'm')}", forces.weight[1], "N")
+    F_A, F_B, K, k, n, A, B, G = names("F_A F_B K k n A B G")
+    work.text(F_A, ", ", F_B, ": forces of the bearings on the rotor, perpendicular to the spin "
+              "axis. 'up' components lie in the plane of ", K, " and ", k, ", positive toward ",
+              signed("+", K), " (upward); 'side' components lie along ", n, ", positive toward "
+              "the precession axis. Labelled ", A, ", ", B, " in that order.")
+    work.step("a", value=a, unit="m", note=("from bearing ", A, " to the centre of mass ", G,
+                                            " along ", k) +
+              ((" (default: midway)",) if "cg_position" not in given else ()))
+    m_, g_, L_, a_ = Sym(ms, m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("a", a, "m")
+    b_ = Sym("b", work.step("b", L_ - a_, unit="m"), "m")
+    Omega, R_, th = _rate("Omega", precession), Sym("R", R, "m"), _theta(theta)
+    a_up_, a_k_, R0, W0, m0, g0, th0, a0, b0, M0 = names(f"a_up a_k R Omega {ms} g theta a b M")
+    work.text(a_up_, ", ", a_k_, ": the acceleration of ", G, " upward and along ", k, "; ", G,
+              " moves on a circle of radius ", R0, " about the precession axis, with the "
+              "centripetal acceleration ", W0 ** 2 * R0)
+    work.text("up:   ", rel(F_A + F_B, "=", m0 * (g0 * sin_(th0) + a_up_)), ";   ",
+              rel(a0 * F_A - b0 * F_B, "=", M0), "   (moments about ", G, " along ", n, ")")
+    parts: dict[str, list[Sym]] = {"A": [], "B": []}
+    for end, arm in (("A", b_), ("B", a_)):
+        parts[end].append(Sym(f"F_{end},weight", work.step(
+            f"F_{end},weight", m_ * g_ * sin_(th) * arm / L_, unit="N",
+            note="static share of the weight" if end == "A" else ""), "N"))
     if forces.inertial != (0.0, 0.0):
-        work.step("a_up", "Omega^2 R cos(theta)", f"({qty(precession, 'rad/s')})^2 "
-                  f"{qty(R, 'm')} ({num(cos)})", precession ** 2 * R * cos, "m/s^2",
-                  note="(centre off the axis along k)")
-        work.step("F_A,accel", f"{ms} a_up b / L", value=forces.inertial[0], unit="N")
-        work.step("F_B,accel", f"{ms} a_up a / L", value=forces.inertial[1], unit="N")
-    work.step("F_A,couple", "+M / L", f"{qty(M, 'N*m')} / {qty(L, 'm')}", forces.couple[0], "N",
-              note="gyroscopic couple")
-    work.step("F_B,couple", "-M / L", f"-({qty(M, 'N*m')}) / {qty(L, 'm')}", forces.couple[1], "N")
-    accel = " + F_{0},accel" if forces.inertial != (0.0, 0.0) else ""
-    work.step("F_A", f"F_A,weight{accel.format('A')} + F_A,couple", value=forces.up[0], unit="N")
-    work.step("F_B", f"F_B,weight{accel.format('B')} + F_B,couple", value=forces.up[1], unit="N")
-    work.text(f"side: F_A + F_B = {ms} Omega^2 R (toward the axis);   a F_A - b F_B = 0")
+        a_up = Sym("a_up", work.step("a_up", Omega ** 2 * R_ * _cos(theta), unit="m/s^2",
+                                     note=("(centre off the axis along ", k, ")")), "m/s^2")
+        for end, arm in (("A", b_), ("B", a_)):
+            parts[end].append(Sym(f"F_{end},accel", work.step(
+                f"F_{end},accel", m_ * a_up * arm / L_, unit="N", substitute=False), "N"))
+    M_ = Sym("M", M, "N m")
+    for end, couple in (("A", M_ / L_), ("B", -M_ / L_)):
+        parts[end].append(Sym(f"F_{end},couple", work.step(
+            f"F_{end},couple", couple, unit="N",
+            note="gyroscopic couple" if end == "A" else ""), "N"))
+    for end, (first, *rest) in parts.items():
+        total: Expr = first
+        for part in rest:
+            total = total + part
+        work.step(f"F_{end}", total, unit="N", substitute=False)
+    work.text("side: ", rel(F_A + F_B, "=", m0 * W0 ** 2 * R0), " (toward the axis);   ",
+              rel(a0 * F_A - b0 * F_B, "=", 0))
     if offset == "across" and R:
-        work.step("F_A,side", f"{ms} Omega^2 R b / L", f"{qty(m, 'kg')} ({qty(precession, 'rad/s')})"
-                  f"^2 {qty(R, 'm')} {qty(b, 'm')} / {qty(L, 'm')}", forces.side[0], "N",
+        work.step("F_A,side", m_ * Omega ** 2 * R_ * b_ / L_, unit="N",
                   note="centripetal force of the centre of mass")
-        work.step("F_B,side", f"{ms} Omega^2 R a / L", value=forces.side[1], unit="N")
+        work.step("F_B,side", m_ * Omega ** 2 * R_ * a_ / L_, unit="N", substitute=False)
     else:
-        work.text("F_A,side = F_B,side = 0: no side forces (the centre of mass is not off the axis "
-                  "across the spin axis)")
-    work.step("T", f"{ms} (g cos(theta) + a_k)", value=forces.thrust, unit="N",
-              note="axial, along k, taken by the thrust bearing")
+        work.text(rel(*names("F_A,side"), "=", *names("F_B,side"), "=", 0), ": no side forces "
+                  "(the centre of mass is not off the axis across the spin axis)")
+    a_k = Sym("a_k", centre_acceleration(precession, theta, R, offset)[0], "m/s^2")
+    work.step("T", m_ * (g_ * _cos(theta) + a_k), unit="N", substitute=False,
+              note=("axial, along ", k, ", taken by the thrust bearing"))
     if min(forces.up) < 0:
         work.text("a negative 'up' force pulls the rotor down: that bearing must hold the shaft "
                   "against lifting")
     work.answer("bearing_forces", "F", list(forces.up), "force", ["A", "B"])
     work.answer("couple_forces", "F_couple", list(forces.couple), "force", ["A", "B"])
     work.answer("bearing_side_forces", "F_side", list(forces.side), "force", ["A", "B"])
-    work.answer("bearing_loads", "|F|", list(forces.loads), "force", ["A", "B"])
+    work.answer("bearing_loads", absolute(names("F")[0]), list(forces.loads), "force",
+                ["A", "B"])
     work.answer("axial_thrust", "T", [forces.thrust], "force")
-    work.check(f"up: F_A + F_B = {qty(sum(forces.up), 'N')}, {ms} g sin(theta) + {ms} a_up = "
-               f"{qty(m * g * sin + sum(forces.inertial), 'N')}; a F_A - b F_B = "
-               f"{qty(a * forces.up[0] - b * forces.up[1], 'N m')}, M = {qty(M, 'N m')}")
+    work.check("up: ", rel(F_A + F_B, "=", q(sum(forces.up), "N")), ", ",
+               rel(m0 * g0 * sin_(th0) + m0 * a_up_, "=",
+                   q(m * g * sin + sum(forces.inertial), "N")), "; ",
+               rel(a0 * F_A - b0 * F_B, "=", q(a * forces.up[0] - b * forces.up[1], "N m")), ", ",
+               rel(M0, "=", q(M, "N m")))
 
 
 def couple_forces(moment: float, spacing: float) -> tuple[float, float]:
@@ -472,25 +539,30 @@ def couple_forces(moment: float, spacing: float) -> tuple[float, float]:
 
 def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> None:
     """No mass (or a tilting axle): the couple's share of the bearing forces alone."""
-    why = ("the wheel set tilts about a horizontal axis, so the weight is not along K"
-           if "drop" in given else "no mass is given")
     work.section("Forces of the gyroscopic couple on the bearings (rails)")
-    work.text(f"{why}: the forces below are the gyroscopic couple's share alone, equal and "
-              "opposite at A and B; the static load (the weight's share) is added to them "
-              "where the weight is known")
+    K, A, B, M0, L0 = names("K A B M L")
+    why_pieces = (("the wheel set tilts about a horizontal axis, so the weight is not along ", K)
+                  if "drop" in given else ("no mass is given",))
+    work.text(*why_pieces, ": the forces below are the gyroscopic couple's share alone, equal "
+              "and opposite at ", A, " and ", B, "; the static load (the weight's share) is added "
+              "to them where the weight is known")
     F_A, F_B = couple_forces(M, L)
-    work.step("F_A,couple", "+M / L", f"{qty(M, 'N*m')} / {qty(L, 'm')}", F_A, "N",
-              note="on the rotor at A, toward +K" if M >= 0 else "on the rotor at A")
-    work.step("F_B,couple", "-M / L", f"-({qty(M, 'N*m')}) / {qty(L, 'm')}", F_B, "N")
-    work.text("the rotor pushes each bearing (rail) the other way: one is loaded by |M| / L "
-              "more, the other relieved by as much")
+    M_, L_ = Sym("M", M, "N m"), Sym("L", L, "m")
+    work.step("F_A,couple", M_ / L_, unit="N",
+              note=("on the rotor at ", A) + ((", toward ", signed("+", K)) if M >= 0 else ()))
+    work.step("F_B,couple", -M_ / L_, unit="N")
+    work.text("the rotor pushes each bearing (rail) the other way: one is loaded by ",
+              absolute(M0) / L0, " more, the other relieved by as much")
     work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
     work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])
     if warn:
-        work.warn(f"{why}: bearing_forces are the gyroscopic couple's share alone, +-M / L = "
-                  f"+-{qty(abs(F_A), 'N')}, without the weight's share"
-                  + ("" if "drop" in given else " (give mass for the whole force)"))
-    work.check(f"F_A,couple L = {qty(F_A * L, 'N m')} = M = {qty(M, 'N m')}; F_A + F_B = 0")
+        work.warn(*why_pieces, ": bearing_forces are the gyroscopic couple's share alone, ",
+                  rel(signed("+-", M0) / L0, "=", signed("+-", q(abs(F_A), "N"))),
+                  ", without the weight's share" +
+                  ("" if "drop" in given else " (give mass for the whole force)"))
+    F_Ac, F_A0, F_B0 = names("F_A,couple F_A F_B")
+    work.check(rel(F_Ac * L0, "=", q(F_A * L, "N m"), "=", M0, "=", q(M, "N m")), "; ",
+               rel(F_A0 + F_B0, "=", 0))
 
 
 def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
@@ -508,25 +580,26 @@ def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
         raise InputError("counterweight must be a positive mass", key="given.counterweight")
     g = body.g
     work.section("Counterweight on the pivoted arm (problem 11/4)")
-    work.text("At b = b0 the arm balances with the rotor at rest. Moving the block by db "
-              "unbalances the arm by m_c g db, which must equal the moment M the precession "
-              "needs; the spin may turn either way, so the block may go out or in.")
-    db = work.step("db", "|M| / (m_c g)", f"{qty(abs(M), 'N*m')} / ({qty(mc, 'kg')} "
-                   f"{qty(g, 'm/s^2')})", counterweight_offset(M, mc, g), "m")
-    positions = [b0 - db, b0 + db]
-    work.step("b", "b0 - db", f"{qty(b0, 'm')} - {qty(db, 'm')}", positions[0], "m",
-              note="rotor side heavier")
-    work.step("b", "b0 + db", f"{qty(b0, 'm')} + {qty(db, 'm')}", positions[1], "m",
-              note="block side heavier")
+    b_, b0n, db0, m_c, g0, M0 = names("b b0 db m_c g M")
+    work.text("At ", rel(b_, "=", b0n), " the arm balances with the rotor at rest. Moving the "
+              "block by ", db0, " unbalances the arm by ", m_c * g0 * db0, ", which must equal "
+              "the moment ", M0, " the precession needs; the spin may turn either way, so the "
+              "block may go out or in.")
+    abs_M = Let(Sym("abs_M", abs(M), "N m"), absolute(Sym("M", M, "N m")))
+    db = work.step("db", abs_M / (Sym("m_c", mc, "kg") * Sym("g", g, "m/s^2")), unit="m")
+    b0_, db_ = Sym("b0", b0, "m"), Sym("db", db, "m")
+    positions = [work.step("b", b0_ - db_, unit="m", note="rotor side heavier"),
+                 work.step("b", b0_ + db_, unit="m", note="block side heavier")]
     work.text("With the spin vector pointing out along the arm toward the rotor, the rotor-side-"
-              "heavier position (b0 - db) gives precession counter-clockwise seen from above; "
-              "the block-side-heavier one (b0 + db) clockwise (or the same sense with the spin "
-              "reversed).")
+              "heavier position (", b0n - db0, ") gives precession counter-clockwise seen from "
+              "above; the block-side-heavier one (", b0n + db0, ") clockwise (or the same sense "
+              "with the spin reversed).")
     if positions[0] < 0:
-        work.warn("b0 - db is negative: the block would have to pass the pivot")
+        work.warn(b0n - db0, " is negative: the block would have to pass the pivot")
     work.answer("counterweight_position", "b", positions, "length",
                 ["rotor side heavier", "block side heavier"])
-    work.check(f"m_c g (b - b0) = {qty(mc * g * db, 'N m')} = |M| = {qty(abs(M), 'N m')}")
+    work.check(rel(m_c * g0 * (b_ - b0n), "=", q(mc * g * db, "N m"), "=", absolute(M0), "=",
+                   q(abs(M), "N m")))
 
 
 KIND = Kind(

@@ -22,12 +22,23 @@ from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
-from ..physics.rate_gyro import (damping_ratio, gimbal_rate, large_angle_deflection,
-                                 natural_frequency, rate_from_moment, steady_deflection)
+from ..core.expr import PI, Let, Sym, cos, sqrt
+from ..core.prose import names, q, rel
+from ..core.work import Work, num
+from ..physics.rate_gyro import large_angle_deflection, steady_deflection
 
 SMALL_ANGLE = math.radians(5)
 DEG = math.pi / 180
+
+#: the symbols of the kind's steps, beside its Params: name -> the unit each is shown in
+UNITS = {"H": "kg m^2/s", "Omega": "rad/s", "M": "N*m", "k": "N m/rad", "c": "N m s/rad",
+         "I_g": "kg*m^2", "theta": "rad", "thetadot": "rad/s", "phi": "rad",
+         "omega_n": "rad/s", "H/c": ""}
+
+
+def _sym(name: str, value: float) -> Sym:
+    """The kind's symbol ``name`` holding ``value`` (SI)."""
+    return Sym(name, value, UNITS[name])
 
 
 def _angular_momentum(given: Given, work: Work) -> float:
@@ -70,21 +81,25 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("input_angle goes with a rate-integrating gyro (damping, no "
                          "stiffness)", key="given.input_angle")
 
+    th, thd, thdd, Om, H0, I0, k0, c0, M0, phi = \
+        names("theta thetadot thetaddot Omega H I_g k c M phi")
     work.section("Conventions")
-    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at "
-              "theta = 0; positive senses chosen so that a positive input rate deflects the "
-              "gimbal positively. All results are for small gimbal angles.")
+    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at ",
+              rel(th, "=", 0), "; positive senses chosen so that a positive input rate deflects "
+              "the gimbal positively. All results are for small gimbal angles.")
     work.section("Gimbal equation (Eq. 11.29: Q_theta = H Omega about the output axis)")
-    work.text("Omega: the input rate, about the input axis; theta: the gimbal's deflection "
-              "about the output axis; I_g: the gimbal's moment of inertia about that axis; "
-              "k: the spring's stiffness; c: the damping coefficient")
-    work.text("I_g thetaddot + c thetadot + k theta = H Omega   (small theta; exactly H Omega "
-              "cos(theta) on the right)")
-    label = {"spring": "spring-restrained rate gyro: steady theta = H Omega / k",
-             "integrating": "rate-integrating gyro (damper, no spring): steady thetadot = "
-                            "H Omega / c, theta = (H / c) * (angle turned)",
-             "rigid": "rigidly restrained rotor: the bearings supply M = H Omega (Eq. 11.29)"}
-    work.text(label[mode])
+    work.text(Om, ": the input rate, about the input axis; ", th, ": the gimbal's deflection "
+              "about the output axis; ", I0, ": the gimbal's moment of inertia about that "
+              "axis; ", k0, ": the spring's stiffness; ", c0, ": the damping coefficient")
+    work.text(rel(I0 * thdd + c0 * thd + k0 * th, "=", H0 * Om), "   (small ", th,
+              "; exactly ", H0 * Om * cos(th), " on the right)")
+    label = {"spring": ("spring-restrained rate gyro: steady ", rel(th, "=", H0 * Om / k0)),
+             "integrating": ("rate-integrating gyro (damper, no spring): steady ",
+                             rel(thd, "=", H0 * Om / c0), ", ", rel(th, "=", H0 / c0 * phi),
+                             ", where ", phi, " is the angle the case turned"),
+             "rigid": ("rigidly restrained rotor: the bearings supply ", rel(M0, "=", H0 * Om),
+                       " (Eq. 11.29)")}
+    work.text(*label[mode])
 
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     if given_key == "input_angle":
@@ -93,8 +108,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         return
     rate = _input_rate(given, given_key, H, k, c, work)
     work.answer("rate", "Omega", [rate], "rate")
-    M = work.step("M", "H Omega", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')})", H * rate,
-                  "N*m", ref="Eq. 11.29", note="moment about the output axis")
+    H_, Omega = _sym("H", H), _sym("Omega", rate)
+    M = work.step("M", H_ * Omega, unit="N*m", ref="Eq. 11.29",
+                  note="moment about the output axis")
     work.answer("moment", "M", [M], "moment")
 
     if mode == "spring":
@@ -106,47 +122,53 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              "is far outside its range (the gimbal would pass 90 deg); the exact "
                              f"steady state, k theta = H Omega cos(theta), is {num(exact / DEG)} "
                              "deg: use a stiffer spring", key="given.rate")
-        theta = work.step("theta", "H Omega / k", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) / "
-                          f"{qty(k, 'N m/rad')}", linear, "rad")
+        k_ = _sym("k", k)
+        theta = work.step("theta", H_ * Omega / k_, unit="rad")  # steady_deflection
         work.step("theta", value=theta / DEG, unit="deg")
-        S = work.step("S", "H / k", f"{qty(H, 'kg m^2/s')} / {qty(k, 'N m/rad')}", H / k, "s",
-                      note="deflection per unit rate (rad per rad/s)")
+        S = work.step("S", H_ / k_, unit="s", note="deflection per unit rate (rad per rad/s)")
         work.answer("deflection", "theta", [theta], "angle")
         work.answer("sensitivity", "S", [S], "time")
         if abs(theta) > SMALL_ANGLE and given_key != "deflection":
             exact = large_angle_deflection(H, rate, k)
-            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
-                      f"tilted, k theta = H Omega cos(theta) gives {num(exact / DEG)} deg")
-        work.check(f"k theta = {qty(k * theta, 'N m')} = H Omega = {qty(M, 'N m')}")
+            work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
+                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
+                      q(exact, "deg"))
+        work.check(rel(k0 * th, "=", q(k * theta, "N m"), "=", H0 * Om, "=", q(M, "N m")))
         if I_g is not None:
             work.section("Dynamics of the gimbal")
-            wn = work.step("omega_n", "sqrt(k / I_g)", f"sqrt({qty(k, 'N m/rad')} / "
-                           f"{qty(I_g, 'kg*m^2')})", natural_frequency(k, I_g), "rad/s")
-            work.step("f_n", "omega_n / (2 pi)", value=wn / (2 * math.pi), unit="Hz")
+            I_g_ = _sym("I_g", I_g)
+            wn = work.step("omega_n", sqrt(k_ / I_g_), unit="rad/s")  # natural_frequency
+            # f_n in Hz from the angular frequency omega_n in rad/s
+            work.step("f_n", _sym("omega_n", wn) / (2 * PI), unit="Hz", substitute=False)
             work.answer("natural_frequency", "omega_n", [wn], "rate")
             if c is not None:
-                zeta = work.step("zeta", "c / (2 sqrt(k I_g))", f"{qty(c, 'N m s/rad')} / (2 "
-                                 f"sqrt({qty(k, 'N m/rad')} {qty(I_g, 'kg*m^2')}))",
-                                 damping_ratio(c, k, I_g), "")
+                zeta = work.step("zeta", _sym("c", c) / (2 * sqrt(k_ * I_g_)),
+                                 unit="")  # damping_ratio
                 work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
-                work.text("zeta near 0.7 lets the reading settle fastest without much overshoot"
-                          if 0.5 <= zeta <= 1 else
-                          "zeta < 0.5: the reading rings before it settles" if zeta < 0.5 else
-                          "zeta > 1: overdamped, the reading creeps up to its value")
+                z = names("zeta")[0]
+                if 0.5 <= zeta <= 1:
+                    work.text(z, " near ", q(0.7, exact=True), " lets the reading settle "
+                              "fastest without much overshoot")
+                elif zeta < 0.5:
+                    work.text(rel(z, "<", q(0.5, exact=True)), ": the reading rings before it "
+                              "settles")
+                else:
+                    work.text(rel(z, ">", 1), ": overdamped, the reading creeps up to its value")
         elif c is not None:
-            work.text("damping given without gimbal_inertia: the damping ratio needs I_g")
+            work.text("damping given without gimbal_inertia: the damping ratio needs ", I0)
     elif mode == "integrating":
         work.section("Rate-integrating: gimbal rate and gain")
-        td = work.step("thetadot", "H Omega / c", f"{qty(H, 'kg m^2/s')} ({qty(rate, 'rad/s')}) "
-                       f"/ {qty(c, 'N m s/rad')}", gimbal_rate(H, rate, c), "rad/s")
-        gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "",
+        c_ = _sym("c", c)
+        td = work.step("thetadot", H_ * Omega / c_, unit="rad/s")  # gimbal_rate
+        gain = work.step(H0 / c0, H_ / c_, unit="", state=False,
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
-        work.answer("gain", "H/c", [gain], "dimensionless")
+        work.answer("gain", H0 / c0, [gain], "dimensionless")
         _time_constant(c, I_g, work)
-        work.check(f"c thetadot = {qty(c * td, 'N m')} = H Omega = {qty(M, 'N m')}")
+        work.check(rel(c0 * names("thetadot")[0], "=", q(c * td, "N m"), "=", H0 * Om, "=",
+                       q(M, "N m")))
     else:
-        work.check(f"M / H = {qty(M / H, 'rad/s')} = Omega")
+        work.check(rel(M0 / H0, "=", q(M / H, "rad/s"), "=", Om))
     if "gimbal_inertia" in given and mode == "rigid":
         work.text("gimbal_inertia is not used: a rigid restraint does not move")
     _refuse_missing(find, work)
@@ -154,28 +176,33 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 def _time_constant(c: float, I_g: float | None, work: Work) -> None:
     if I_g is not None:
-        tau = work.step("tau", "I_g / c", f"{qty(I_g, 'kg*m^2')} / {qty(c, 'N m s/rad')}",
-                        I_g / c, "s", note="time for the gimbal rate to reach its value")
+        tau = work.step("tau", _sym("I_g", I_g) / _sym("c", c), unit="s",
+                        note="time for the gimbal rate to reach its value")
         work.answer("time_constant", "tau", [tau], "time")
 
 
 def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work: Work) -> None:
     """Rate-integrating gyro: the gimbal angle for the angle the case turned."""
     work.section("Rate-integrating: gimbal angle for the angle turned")
-    work.text("integrating c thetadot = H Omega over time: c theta = H phi, phi = integral of "
-              "Omega dt (once the transient, time constant I_g / c, has passed)")
-    gain = work.step("H / c", "", f"{qty(H, 'kg m^2/s')} / {qty(c, 'N m s/rad')}", H / c, "")
+    th, thd, Om, H0, c0, I0, phi0 = names("theta thetadot Omega H c I_g phi")
+    work.text("integrating ", rel(c0 * thd, "=", H0 * Om), " over time: ",
+              rel(c0 * th, "=", H0 * phi0), ", where ", phi0, ", the integral of ", Om, " over "
+              "time, is the angle the case turned (once the transient, time constant ",
+              I0 / c0, ", has passed)")
+    H_c = _sym("H", H) / _sym("c", c)
+    gain = work.step(H0 / c0, H_c, unit="", state=False)
     phi = given["input_angle"]
-    theta = work.step("theta", "(H / c) phi", f"({num(gain)}) {qty(phi, 'rad')}", gain * phi,
-                      "rad", note="phi: the angle the case turned")
+    theta = work.step("theta", Let(_sym("H/c", gain), H_c) * _sym("phi", phi), unit="rad",
+                      note=(phi0, ": the angle the case turned"))
     work.step("theta", value=theta / DEG, unit="deg")
     work.answer("deflection", "theta", [theta], "angle")
-    work.answer("gain", "H/c", [gain], "dimensionless")
+    work.answer("gain", H0 / c0, [gain], "dimensionless")
     _time_constant(c, I_g, work)
     if abs(theta) > SMALL_ANGLE:
-        work.warn(f"the gimbal angle {num(theta / DEG)} deg is not small: the linear relation "
+        work.warn("the gimbal angle ", q(theta, "deg"), " is not small: the linear relation "
                   "holds only for small angles")
-    work.check(f"c theta = {qty(c * theta, 'N m s')} = H phi = {qty(H * phi, 'N m s')}")
+    work.check(rel(c0 * th, "=", q(c * theta, "N m s"), "=", H0 * phi0, "=",
+                   q(H * phi, "N m s")))
 
 
 def _refuse_missing(find: frozenset[str], work: Work) -> None:
@@ -205,18 +232,19 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
                              "90 deg the spin axis lies along the input axis and no input rate "
                              "gives a moment about the gimbal axis", key="given.deflection")
         if abs(theta) > SMALL_ANGLE:
-            work.warn(f"the deflection {num(theta / DEG)} deg is not small: with the spin axis "
-                      "tilted, k theta = H Omega cos(theta) gives Omega = "
-                      f"{num(k * theta / (H * math.cos(theta)))} rad/s")
-        return work.step("Omega", "k theta / H", f"{qty(k, 'N m/rad')} ({qty(theta, 'rad')}) / "
-                         f"{qty(H, 'kg m^2/s')}", k * theta / H, "rad/s")
+            th, k0, H0, Om = names("theta k H Omega")
+            work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
+                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
+                      rel(Om, "=", q(k * theta / (H * math.cos(theta)), "rad/s")))
+        return work.step("Omega", _sym("k", k) * _sym("theta", theta) / _sym("H", H),
+                         unit="rad/s")
     if key == "moment":
         M = given["moment"]
-        return work.step("Omega", "M / H", f"{qty(M, 'N*m')} / {qty(H, 'kg m^2/s')}",
-                         rate_from_moment(H, M), "rad/s", ref="Eq. 11.29")
+        return work.step("Omega", _sym("M", M) / _sym("H", H), unit="rad/s",
+                         ref="Eq. 11.29")  # rate_from_moment
     td = given["gimbal_rate"]
-    return work.step("Omega", "c thetadot / H", f"{qty(c, 'N m s/rad')} ({qty(td, 'rad/s')}) "
-                     f"/ {qty(H, 'kg m^2/s')}", c * td / H, "rad/s")
+    return work.step("Omega", _sym("c", c) * _sym("thetadot", td) / _sym("H", H),
+                     unit="rad/s")
 
 
 KIND = Kind(

@@ -12,8 +12,9 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Expr, Let, Sym, acos, cos, sin, sqrt
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Expr, Let, Num, Sym, absolute, acos, asin, cos, ellipk, sin, sqrt
+from ..core.prose import bracket, fn, integral, names, pm, q, rel
+from ..core.work import Work, num
 
 RPM = 2 * math.pi / 60
 DEG = math.pi / 180
@@ -23,8 +24,16 @@ def _deg(x: float) -> str:
     return f"{num(x / DEG)} deg"
 
 
-def _rel(approx: float, exact: float) -> str:
-    return f"{num(100 * (approx - exact) / exact, 2)}%" if exact else "n/a"
+def _rel(approx: float, exact: float) -> tuple:
+    """The relative error as pieces: ``-18%``, or ``n/a``."""
+    return (q(100 * (approx - exact) / exact, sig=2), "%") if exact else ("n/a",)
+
+
+# the names of the sentences (no values): Eq. 11.19's u and its roots, the chapter's symbols
+(u, u0, u1, u2, u3, u_i, f, udot, s_, m_, K_, T_, phi, theta, theta0, theta_min, theta_max,
+ phidot, psidot, thetadot0, omega_z, I_, J_, a_, alpha_, beta_, gamma_, n1, n2, n_, m, g, l,
+ t_) = names("u u0 u1 u2 u3 u_i f udot s m K T phi theta theta0 theta_min theta_max phidot "
+             "psidot thetadot0 omega_z I J a alpha beta gamma n1 n2 n m g l t")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -68,31 +77,37 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if released:
         _released(top, start, nut, omega_z, work)
     _period(nut, work)
-    _precession(nut, work)
+    _precession(start, nut, work)
     _fast_top(top, start, nut, omega_z, released, work)
     _answers(nut, work)
     if find & {"spin_at_limits", "reversal_theta"}:
         _spin_and_reversal(nut, omega_z, find, work)
     pole = "0" if nut.theta_min == 0 else "180" if nut.theta_max == math.pi else ""
     if pole:
-        work.warn(f"the axis passes through the vertical (theta = {pole} deg) once a period: "
-                  "there phi jumps by +-180 deg (which sign is undefined); mean_precession "
-                  "counts only the continuous advance, the integral of Eq. 11.16 (the two "
-                  f"one-sided limits are mean_precession +- pi / T = +-{num(math.pi / nut.nutation_period)} rad/s)")
+        work.warn("the axis passes through the vertical (",
+                  rel(theta, "=", q(math.radians(float(pole)), "deg", exact=True)),
+                  ") once a period: there ", phi, " jumps by ",
+                  pm(None, q(math.pi, "deg", exact=True)), " (which sign is undefined); "
+                  "mean_precession counts only the continuous advance, the integral of Eq. "
+                  "11.16 (the two one-sided limits are mean_precession ",
+                  rel(pm(None, PI / T_), "=", pm(None, q(math.pi / nut.nutation_period,
+                                                         "rad/s"))), ")")
     if nut.theta_max > math.pi / 2 + 1e-12:
-        work.warn(f"theta_max = {_deg(nut.theta_max)} passes 90 deg: the centre of mass goes "
-                  "below the fixed point; a top standing on a floor would touch it (the "
-                  "analysis assumes a fixed point free to swing, as in a ball joint)")
+        work.warn(rel(theta_max, "=", q(nut.theta_max, "deg")), " passes ",
+                  q(math.pi / 2, "deg", exact=True), ": the centre of mass goes below the "
+                  "fixed point; a top standing on a floor would touch it (the analysis assumes "
+                  "a fixed point free to swing, as in a ball joint)")
 
 
 def _constants(top, start, nut, omega_z: float, work: Work) -> None:
     c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
     work.section("Constants of the motion at t = 0 (Eqs. 11.8, 11.14, 11.17, 11.18)")
-    work.text("Euler angles z-x-z; phi: the azimuth of the axis about the vertical; theta "
-              "from the upward vertical to the axis through the "
-              "centre of mass, V = m g l cos(theta) (Eq. 11.11); spin psidot is relative to the "
-              "precessing frame, which turns about the vertical at the precession rate phidot; "
-              "thetadot: the rate of theta; the suffix 0 marks a value at t = 0")
+    work.text("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
+              theta, " from the upward vertical to the axis through the centre of mass, ",
+              rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
+              " is relative to the precessing frame, which turns about the vertical at the "
+              "precession rate ", phidot, "; ", *names("thetadot"), ": the rate of ", theta,
+              "; the suffix ", Num(0), " marks a value at ", rel(t_, "=", 0))
     t = _syms(top, start, nut, omega_z)
     th0 = cos(t["theta0"])
     work.step("omega_z", t["psidot"] + t["phidot0"] * th0, unit="rad/s", ref="Eq. 11.8")
@@ -125,164 +140,244 @@ def _syms(top, start, nut, omega_z: float) -> dict[str, Expr]:
 def _roots(top, start, nut, work: Work) -> None:
     a, al, b, g = nut.a, nut.alpha, nut.beta, nut.gamma
     work.section("Energy integral in u = cos(theta), Eq. 11.19")
-    work.text("udot^2 = f(u) = (1 - u^2)(alpha - a u) - (beta - gamma u)^2"
-              "    (Eq. 11.19)")
-    work.text("       = a u^3 - (alpha + gamma^2) u^2 + (2 beta gamma - a) u + (alpha - beta^2)")
-    work.text(f"       = ({num(a)}) u^3 - ({num(al + g * g)}) u^2 + ({num(2 * b * g - a)}) u"
-              f" {'-' if al - b * b < 0 else '+'} {num(abs(al - b * b))}    [1/s^2]")
-    work.text("f(+-1) = -(beta -+ gamma)^2 <= 0 and f(u0) = sin^2(theta0) thetadot0^2 >= 0, "
-              "where u0 = cos(theta0): so the roots u1, u2, u3 of f lie u1 <= u0 <= u2 in "
-              "[-1, 1], u3 >= 1")
+    U = names("u")[0]  # u: a root below
+    work.text(rel(udot ** 2, "=", fn("f", U), "=", (1 - U ** 2) * (alpha_ - a_ * U)
+                  - (beta_ - gamma_ * U) ** 2), "    (Eq. 11.19)")
+    work.text("       ", rel(None, "=", a_ * U ** 3 - (alpha_ + gamma_ ** 2) * U ** 2
+                             + (2 * beta_ * gamma_ - a_) * U
+                             + bracket(alpha_ - beta_ ** 2, open="(")))
+    c0 = al - b * b
+    per_s2 = "1/s^2"  # the coefficients' unit (u is a number)
+    cubic = (bracket(q(a, per_s2), open="(") * U ** 3
+             - bracket(q(al + g * g, per_s2), open="(") * U ** 2
+             + bracket(q(2 * b * g - a, per_s2), open="(") * U)
+    work.text("       ", rel(None, "=", cubic - q(-c0, per_s2) if c0 < 0 else
+                             cubic + q(c0, per_s2)))
+    work.text(rel(fn("f", pm(None, 1)), "=", -pm(beta_, gamma_, "-+") ** 2, "<=", 0), " and ",
+              rel(fn("f", u0), "=", sin(theta0) ** 2 * thetadot0 ** 2, ">=", 0), ", where ",
+              rel(u0, "=", cos(theta0)), ": so the roots ", u1, ", ", u2, ", ", u3, " of ", f,
+              " lie ", rel(u1, "<=", u0, "<=", u2), " in ", bracket(-1, 1), ", ",
+              rel(u3, ">=", 1))
     for i, u in enumerate(nut.u_roots, 1):
         work.step(f"u{i}", value=u)
     if nut.motion == "sleeping":
         return
-    work.step("theta_max", "acos(u1)", value=nut.theta_max / DEG, unit="deg")
-    work.step("theta_min", "acos(u2)", value=nut.theta_min / DEG, unit="deg")
+    one_minus, one_plus = nut.one_minus_u0, nut.one_plus_u0
+    for symbol, u, d in (("theta_max", "u1", nut.d_roots[0]), ("theta_min", "u2", nut.d_roots[1])):
+        work.step(symbol, _theta(u, one_minus - d, one_plus + d), unit="deg", substitute=False)
     from ..physics.nutation import f_of_u
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
     residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
-    work.check(f"at each root u_i, f(u_i) from Eq. 11.19 itself, largest |f(u_i)| / (largest "
-               f"coefficient) = "
-               f"{residual:.1e}")
+    work.check("at each root ", u_i, ", ", fn("f", u_i), " from Eq. 11.19 itself, largest ",
+               absolute(fn("f", u_i)), " / (largest coefficient) ", rel(None, "=", q(residual,
+                                                                                  sig=2)))
+
+
+def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
+    """theta = acos(u) as physics/nutation.py computes it, from 1 - u and 1 + u (the roots'
+    offsets, no cancellation): 2 asin(sqrt((1 - u) / 2)) for u >= 0, pi - 2 asin(sqrt((1 + u)
+    / 2)) below; acos(u) of a rounded u loses the digits of a small angle."""
+    one_minus, one_plus = min(max(one_minus, 0.0), 2.0), min(max(one_plus, 0.0), 2.0)
+    if one_minus <= one_plus:
+        return 2 * asin(sqrt(Let(Sym(f"one_minus_{u}", one_minus), 1 - Sym(u, math.nan)) / 2))
+    return PI - 2 * asin(sqrt(Let(Sym(f"one_plus_{u}", one_plus), 1 + Sym(u, math.nan)) / 2))
 
 
 def _released(top, start, nut, omega_z: float, work: Work) -> None:
     from ..physics.nutation import released_u1
 
-    a, g = nut.a, nut.gamma
-    u2 = math.cos(start.theta0)
     work.section("Released from rest (phidot0 = thetadot0 = 0): Eqs. 11.22-11.25")
-    work.text("P1 = P2 u2 (Eq. 11.22), alpha = a u2, f(u) = (u2 - u)[a (1 - u^2) - gamma^2 "
-              "(u2 - u)] (Eq. 11.23)")
-    work.text("Eq. 11.24 as corrected in the errata: gamma^2/a u2 under the root, not gamma^2/2")
-    u1 = released_u1(top, start.theta0, omega_z)
-    work.step("u1", "gamma^2/(2a) - sqrt(gamma^4/(4a^2) - gamma^2/a cos(theta0) + 1)",
-              f"{num(g * g / (2 * a))} - sqrt({num(g ** 4 / (4 * a * a))} - {num(g * g / a)} "
-              f"({num(u2)}) + 1)", u1, ref="Eq. 11.25")
-    work.step("theta_1", "acos(u1)", value=math.acos(max(-1.0, min(1.0, u1))) / DEG, unit="deg",
-              note="the axis falls from theta_2 = theta0 to theta_1 and back")
-    work.check(f"Eq. 11.25 u1 = {num(u1, 10)} against the root of Eq. 11.19 u1 = "
-               f"{num(nut.u_roots[0], 10)}")
+    P1, P2 = names("P1 P2")
+    work.text(rel(P1, "=", P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2), ", ",
+              rel(fn("f", u), "=", (u2 - u) * bracket(a_ * (1 - u ** 2) - gamma_ ** 2
+                                                       * (u2 - u))), " (Eq. 11.23)")
+    work.text("Eq. 11.24 as corrected in the errata: ", gamma_ ** 2 / a_ * u2, " under the root, "
+              "not ", gamma_ ** 2 / 2)
+    t = _syms(top, start, nut, omega_z)
+    g, a = t["gamma"], t["a"]
+    u1_ = names("u1")[0]
+    # as printed; released_u1 computes it without cancellation (a test holds the two together)
+    u1 = work.step("u1", g ** 2 / (2 * a) - sqrt(g ** 4 / (4 * a ** 2) - g ** 2 / a
+                                                  * cos(t["theta0"]) + 1), ref="Eq. 11.25")
+    assert u1 is not None
+    work.step("theta_1", acos(Sym("u1", max(-1.0, min(1.0, u1)))), unit="deg", substitute=False,
+              note=("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
+                    *names("theta_1"), " and back"))
+    work.check("Eq. 11.25 ", rel(u1_, "=", q(u1, sig=10)), " against the root of Eq. 11.19 ",
+               rel(u1_, "=", q(nut.u_roots[0], sig=10)))
+
+
+def _differences(nut) -> tuple[Expr, Expr]:
+    """u2 - u1 and u3 - u1 as the differences of the roots' offsets d_i = u_i - u0, which
+    physics/nutation.py computes without cancellation (u1 and u2 agree to many digits in a
+    fast or nearly steady top)."""
+    d1, d2, d3 = nut.d_roots
+    u1, u2, u3 = (Sym(f"u{i}", math.nan) for i in (1, 2, 3))
+    return (Let(Sym("u2_minus_u1", d2 - d1), u2 - u1), Let(Sym("u3_minus_u1", d3 - d1), u3 - u1))
 
 
 def _period(nut, work: Work) -> None:
     from ..physics.nutation import complete_K
 
     d1, d2, d3 = nut.d_roots
-    u1, u2, u3 = nut.u_roots
-    m = (d2 - d1) / (d3 - d1)
     K = complete_K(d1, d2, d3)
+    width, span = _differences(nut)
     work.section("Nutation period: f(u) = a (u - u1)(u - u2)(u - u3), u = u1 + (u2 - u1) sin^2 s")
-    work.text("T = 2 int_u1^u2 du / sqrt(f(u)) = 4 K(m) / sqrt(a (u3 - u1)), where K is the "
-              "complete elliptic integral of the first kind and m, below, its parameter; the "
-              "substitution is u = u1 + (u2 - u1) sin^2 s for s from 0 to pi/2")
-    work.step("m", "(u2 - u1) / (u3 - u1)", f"({num(u2)} - {num(u1)}) / ({num(u3)} - {num(u1)})",
-              m)
-    work.step("K(m)", value=K)
-    work.step("T", "4 K(m) / sqrt(a (u3 - u1))", f"4 ({num(K)}) / sqrt(({qty(nut.a, '1/s^2')}) "
-              f"({num(u3 - u1)}))", nut.nutation_period, "s",
-              note="theta_max -> theta_min -> theta_max")
+    du = names("du")[0]
+    work.text(rel(T_, "=", 2 * integral(u1, u2, du / sqrt(fn("f", u))), "=",
+                  4 * fn("K", m_) / sqrt(a_ * (u3 - u1))), ", where ", K_, " is the complete "
+              "elliptic integral of the first kind and ", m_, ", below, its parameter; the "
+              "substitution is ", rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2), " for ", s_,
+              " from ", Num(0), " to ", PI / 2)
+    m = work.step("m", width / span)
+    work.step(fn("K", m_), value=K)
+    # K(m) from R_F with 1 - m = (u3 - u2) / (u3 - u1) exact; ellipk(m) would lose it as m -> 1
+    K_m = Let(Sym("K", K), ellipk(Sym("m", m if m is not None else math.nan)))
+    work.step("T", 4 * K_m / sqrt(Sym("a", nut.a, "1/s^2") * span), unit="s",
+              note=(rel(theta_max, "->", theta_min, "->", theta_max),))
     if nut.motion == "steady":
-        work.text("u1 = u2 (to rounding): no nutation; T is the period of small oscillations "
-                  "about theta0, the m -> 0 limit 2 pi / sqrt(a (u3 - u1))")
+        work.text(rel(u1, "=", u2), " (to rounding): no nutation; ", T_, " is the period of "
+                  "small oscillations about ", theta0, ", the ", rel(m_, "->", 0), " limit ",
+                  2 * PI / sqrt(a_ * (u3 - u1)))
 
 
-def _precession(nut, work: Work) -> None:
+def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
+    """phidot = (beta - gamma u) / (1 - u^2) at a nutation limit (Eq. 11.16), numerator and
+    denominator from the roots' offsets (physics/nutation.limit_precession_terms: beta -
+    gamma u vanishes exactly at a cusp). On a pole, where both vanish, the limit gamma / 2
+    (u = 1) or -gamma / 2 (u = -1)."""
+    numerator, one_minus, one_plus = terms
+    U = Sym(u, math.nan)
+    gamma = Sym("gamma", nut.gamma, "rad/s")
+    if one_minus <= 0:
+        return gamma / 2
+    if one_plus <= 0:
+        return -gamma / 2
+    return (Let(Sym(f"beta_minus_gamma_{u}", numerator),
+                Sym("beta", math.nan) - Sym("gamma", math.nan) * U)
+            / Let(Sym(f"one_minus_{u}_squared", one_minus * one_plus), 1 - U ** 2))
+
+
+def _precession(start, nut, work: Work) -> None:
+    from ..physics.nutation import limit_precession_terms
+
     d1, d2, d3 = nut.d_roots
-    u1, u2, _ = nut.u_roots
+    u1_, u2_, _ = nut.u_roots
+    U = names("u")[0]  # u: the limit below
     work.section("Precession: phidot = (beta - gamma u) / (1 - u^2) (Eqs. 11.16, 11.26)")
-    at = dict(zip(("u1", "u2"), nut.limit_precession))
-    work.step("phidot(u1)", "(beta - gamma u1) / (1 - u1^2)", value=at["u1"], unit="rad/s",
-              note=f"at theta_max ({num(at['u1'] / RPM)} rpm)")
-    work.step("phidot(u2)", "(beta - gamma u2) / (1 - u2^2)", value=at["u2"], unit="rad/s",
-              note=f"at theta_min ({num(at['u2'] / RPM)} rpm)")
+    for u, terms, where in zip(("u1", "u2"), limit_precession_terms(nut, start),
+                               ("theta_max", "theta_min")):
+        tree = _limit_precession(nut, u, terms)
+        pole = ("; the limit of ", (beta_ - gamma_ * U) / (1 - U ** 2),
+                " on the pole") if min(terms[1:]) <= 0 else ()
+        work.step(fn("phidot", *names(u)), tree, unit="rad/s", substitute=False,
+                  note=("at ", *names(where), " (", q(tree.value / RPM, "rpm"), ")", *pole))
     if nut.motion != "steady":
         m = (d2 - d1) / (d3 - d1)
-        n1 = (u2 - u1) / (1 - u1) if u1 < 1 else math.inf
-        n2 = (u2 - u1) / (1 + u1) if u1 > -1 else math.inf
-        def shown(n: float, pole: str) -> str:
+        n1_ = (u2_ - u1_) / (1 - u1_) if u1_ < 1 else math.inf
+        n2_ = (u2_ - u1_) / (1 + u1_) if u1_ > -1 else math.inf
+        def shown(name: Expr, formula: Expr, n: float, pole: int) -> tuple:
             # On a pole (u1 = +-1) that term's coefficient beta -+ gamma is zero: no term.
-            return num(n) if math.isfinite(n) else f"unbounded (u1 = {pole}: the term drops)"
+            if math.isfinite(n):
+                return (rel(name, "=", formula, "=", q(n)),)
+            return (rel(name, "=", formula), " = unbounded (", rel(u1, "=", pole),
+                    ": the term drops)")
 
-        work.text(f"n1 = (u2 - u1)/(1 - u1) = {shown(n1, '1')}, n2 = (u2 - u1)/(1 + u1) = "
-                  f"{shown(n2, '-1')}, m = {num(m)}")
-        work.text("phidot = 1/2 [(beta - gamma)/(1 - u) + (beta + gamma)/(1 + u)]; with "
-                  "1 - u = (1 - u1)(1 - n1 sin^2 s), 1 + u = (1 + u1)(1 + n2 sin^2 s):")
-        work.text("mean phidot = [(beta - gamma) Pi(n1|m) / (1 - u1) + (beta + gamma) Pi(-n2|m) "
-                  "/ (1 + u1)] / (2 K(m)), where Pi is the complete elliptic integral of the "
-                  "third kind, Pi(n|m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n), with "
-                  "Carlson's symmetric integrals R_F and R_J")
+        work.text(*shown(n1, (u2 - u1) / (1 - u1), n1_, 1), ", ",
+                  *shown(n2, (u2 - u1) / (1 + u1), n2_, -1), ", ", rel(m_, "=", q(m)))
+        work.text(rel(phidot, "=", Num(0.5, "1/2") * bracket((beta_ - gamma_) / (1 - U)
+                                                          + (beta_ + gamma_) / (1 + U))),
+                  "; with ", rel(1 - U, "=", (1 - u1) * (1 - n1 * sin(s_) ** 2)), ", ",
+                  rel(1 + U, "=", (1 + u1) * (1 + n2 * sin(s_) ** 2)), ":")
+        Pi, R_F, R_J = names("Pi R_F R_J")
+        work.text("mean ", rel(phidot, "=", bracket(
+            (beta_ - gamma_) * fn("Pi", n1, m_, sep="|") / (1 - u1)
+            + (beta_ + gamma_) * fn("Pi", -n2, m_, sep="|") / (1 + u1)) / (2 * fn("K", m_))),
+            ", where ", Pi, " is the complete elliptic integral of the third kind, ",
+            rel(fn("Pi", n_, m_, sep="|"), "=", fn("R_F", 0, 1 - m_, 1)
+                + n_ / 3 * fn("R_J", 0, 1 - m_, 1, 1 - n_)),
+            ", with Carlson's symmetric integrals ", R_F, " and ", R_J)
     work.step("phidot_mean", value=nut.mean_precession, unit="rad/s",
-              note=f"({num(nut.mean_precession / RPM)} rpm; phi advance over one period / T)")
+              note=("(", q(nut.mean_precession / RPM, "rpm"), "; ", phi, " advance over one "
+                    "period / ", T_, ")"))
     reason = {
-        "cusps": "phidot = 0 at a limit of the nutation: the axis stops there, the path has "
-                 "cusps (Fig. 11-9)",
-        "loops": "phidot changes sign between the limits: the path loops back (Fig. 11-10)",
-        "waves": "phidot keeps one sign between the limits: the path waves (Fig. 11-10)",
-        "steady": "no nutation: steady precession at theta0 (Fig. 11-7)",
+        "cusps": (rel(phidot, "=", 0), " at a limit of the nutation: the axis stops there, the "
+                  "path has cusps (Fig. 11-9)"),
+        "loops": (phidot, " changes sign between the limits: the path loops back (Fig. 11-10)"),
+        "waves": (phidot, " keeps one sign between the limits: the path waves (Fig. 11-10)"),
+        "steady": ("no nutation: steady precession at ", theta0, " (Fig. 11-7)"),
     }[nut.motion]
-    work.text(f"motion: {nut.motion}. The numerator beta - gamma u is linear in u, so phidot's "
-              f"signs over the nutation are those at u1 and u2: {reason}")
+    work.text(f"motion: {nut.motion}. The numerator ", beta_ - gamma_ * U, " is linear in ", U,
+              ", so ", phidot, "'s signs over the nutation are those at ", u1, " and ", u2, ": ",
+              *reason)
 
 
 def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
     work.section("Fast-top approximation (gamma^2 >> a)")
+    w_z = names("omega_z")[0]
     ratio = nut.gamma ** 2 / nut.a
-    work.step("gamma^2 / a", value=ratio, note="(the approximation needs this >> 1)")
-    work.text("u3 ~ gamma^2/a, so sqrt(a (u3 - u1)) ~ gamma: nutation at J omega_z / I; the "
-              "slow root of Eq. 11.20 gives the mean precession a / (2 gamma) = m g l / "
-              "(J omega_z)")
+    work.step(gamma_ ** 2 / a_, value=ratio, note=("(the approximation needs this ",
+                                                   rel(None, ">>", 1), ")"))
+    work.text(rel(u3, "~", gamma_ ** 2 / a_), ", so ", rel(sqrt(a_ * (u3 - u1)), "~", gamma_),
+              ": nutation at ", J_ * w_z / I_, "; the slow root of Eq. 11.20 gives the mean "
+              "precession ", rel(a_ / (2 * gamma_), "=", m * g * l / (J_ * w_z)))
     t = _syms(top, start, nut, omega_z)
     Jw = t["J"] * t["omega_z"]
     T = (2 * PI * t["I"] / Jw).value  # fast_nutation_period: a test holds the two together
     work.step("T_fast", 2 * PI * t["I"] / Jw, unit="s",
-              note=f"exact {num(nut.nutation_period)} s, error {_rel(T, nut.nutation_period)}")
+              note=("exact ", q(nut.nutation_period, "s"), ", error ",
+                    *_rel(T, nut.nutation_period)))
     mean = (t["mgl"] / Jw).value  # fast_mean_precession
     work.step("phidot_fast", t["mgl"] / Jw, unit="rad/s",
-              note=f"exact {num(nut.mean_precession)} rad/s, error "
-                   f"{_rel(mean, nut.mean_precession)}")
+              note=("exact ", q(nut.mean_precession, "rad/s"), ", error ",
+                    *_rel(mean, nut.mean_precession)))
     if released:
-        work.text("Released from rest: a (1 - u^2) = gamma^2 (u2 - u) at u1 (Eq. 11.23); for "
-                  "gamma^2 >> a, u2 - u1 ~ a sin^2(theta0) / gamma^2 and dtheta ~ du / "
-                  "sin(theta0):")
+        U, du, dtheta = names("u du dtheta")
+        work.text("Released from rest: ", rel(a_ * (1 - U ** 2), "=", gamma_ ** 2 * (u2 - U)),
+                  " at ", u1, " (Eq. 11.23); for ", rel(gamma_ ** 2, ">>", a_), ", ",
+                  rel(u2 - u1, "~", a_ * sin(theta0) ** 2 / gamma_ ** 2), " and ",
+                  rel(dtheta, "~", du / sin(theta0)), ":")
         tree = 2 * t["I"] * t["mgl"] * sin(t["theta0"]) / Jw ** 2  # fast_nutation_amplitude
         amp, exact = tree.value, nut.theta_max - nut.theta_min
         work.step("dtheta_fast", tree, unit="deg",
-                  note=f"exact theta_max - theta_min = {_deg(exact)}, error {_rel(amp, exact)}")
+                  note=("exact ", rel(theta_max - theta_min, "=", q(exact, "deg")), ", error ",
+                        *_rel(amp, exact)))
 
 
-def _sleeping(top, start, nut, omega_z: float, find: frozenset[str], work: Work) -> None:
+def _sleeping(top, start, nut, omega_z_: float, find: frozenset[str], work: Work) -> None:
     upright = start.theta0 < 1
     work.section("Sleeping top: the axis on the vertical (theta0 = "
                  f"{'0' if upright else '180'} deg, thetadot0 = 0)")
-    work.text("u = " + ("1" if upright else "-1") + " is a double root of f(u); phi is undefined "
-              "on the vertical (phidot and psidot only add up to omega_z); theta_max = "
-              "theta_min = theta0: the axis stays there")
-    t = _syms(top, start, nut, omega_z)
+    work.text(rel(u, "=", Num(1 if upright else -1)), " is a double root of ", fn("f", u), "; ",
+              phi, " is undefined on the vertical (", phidot, " and ", psidot, " only add up to ",
+              omega_z, "); ", rel(theta_max, "=", theta_min, "=", theta0), ": the axis stays "
+              "there")
+    t = _syms(top, start, nut, omega_z_)
+    spin2, weight4 = J_ ** 2 * omega_z ** 2, 4 * I_ * m * g * l
     if upright:
-        work.step("J^2 omega_z^2", (t["J"] * t["omega_z"]) ** 2, unit="kg^2 m^4/s^2",
-                  state=False)
-        work.step("4 I m g l", 4 * t["I"] * t["mgl"], unit="kg^2 m^4/s^2", state=False)
+        work.step(spin2, (t["J"] * t["omega_z"]) ** 2, unit="kg^2 m^4/s^2", state=False)
+        work.step(weight4, 4 * t["I"] * t["mgl"], unit="kg^2 m^4/s^2", state=False)
         if nut.stable:
-            work.text("J^2 omega_z^2 > 4 I m g l (Eq. 11.21 with theta0 = 0, i.e. gamma^2 > 2 a): "
-                      "stable; u3 = gamma^2/a - 1 > 1")
+            work.text(rel(spin2, ">", weight4), " (Eq. 11.21 with ", rel(theta0, "=", 0),
+                      ", i.e. ", rel(gamma_ ** 2, ">", 2 * a_), "): stable; ",
+                      rel(u3, "=", gamma_ ** 2 / a_ - 1, ">", 1))
         else:
-            u1 = nut.u_roots[0]
-            work.text("J^2 omega_z^2 <= 4 I m g l: not stable; the least disturbance lets the "
-                      f"axis fall to u1 = gamma^2/a - 1 = {num(u1)}, theta = "
-                      f"{_deg(math.acos(max(-1, u1)))}")
+            root = nut.u_roots[0]
+            work.text(rel(spin2, "<=", weight4), ": not stable; the least disturbance lets the "
+                      "axis fall to ", rel(u1, "=", gamma_ ** 2 / a_ - 1, "=", q(root)), ", ",
+                      rel(theta, "=", q(math.acos(max(-1, root)), "deg")))
             least = 2 * math.sqrt(top.I * top.mgl) / top.J
-            work.warn(f"the sleeping top is unstable: omega_z = {num(omega_z / RPM)} rpm is below "
-                      f"2 sqrt(I m g l) / J = {num(least / RPM)} rpm (Eq. 11.21 at theta0 = 0)")
+            work.warn("the sleeping top is unstable: ", rel(omega_z, "=", q(omega_z_ / RPM, "rpm")),
+                      " is below ", rel(2 * sqrt(I_ * m * g * l) / J_, "=", q(least / RPM, "rpm")),
+                      " (Eq. 11.21 at ", rel(theta0, "=", 0), ")")
     else:
         work.text("hanging: always stable (gravity restores the axis)")
     if nut.stable:
         beat = t["gamma"] ** 2 - 2 * t["a"] if upright else t["gamma"] ** 2 + 2 * t["a"]
         work.step("T", 2 * PI / sqrt(beat), unit="s",
-                  note="nutation period of a slightly disturbed sleeping top "
-                       "(2 pi / sqrt(a (u3 - u1)))")
+                  note=("nutation period of a slightly disturbed sleeping top (",
+                        2 * PI / sqrt(a_ * (u3 - u1)), ")"))
     undefined = {"mean_precession", "max_precession", "min_precession"} & find
     if undefined:
         raise InputError(f"{sorted(undefined)[0]} is undefined for a sleeping top: the axis "
@@ -309,9 +404,10 @@ def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) ->
     (1 - u^2) (Eq. 11.16) vanishes at u = beta / gamma.
     """
     u1, u2, _ = nut.u_roots
+    omega_z_ = names("omega_z")[0]
     work.section("Spin at the nutation limits and where the precession reverses")
-    work.text("omega_z = psidot + phidot cos(theta) is constant (Eq. 11.14): psidot = "
-              "omega_z - phidot u")
+    work.text(rel(omega_z_, "=", psidot + phidot * cos(names("theta")[0])), " is constant (Eq. 11.14): ",
+              rel(psidot, "=", omega_z_ - phidot * names("u")[0]))
     if "spin_at_limits" in find:
         spins = []
         for u, rate, where in ((u1, nut.limit_precession[0], "theta_max"),
@@ -320,7 +416,7 @@ def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) ->
                 raise InputError(f"at {where} the axis is on the vertical, where phidot and "
                                  "psidot are undefined (only omega_z is)",
                                  key="find.spin_at_limits")
-            spins.append(work.step(f"psidot at {where}", Sym("omega_z", omega_z, "rad/s")
+            spins.append(work.step(fn("psidot", *names(where)), Sym("omega_z", omega_z, "rad/s")
                                    - Sym("phidot", rate, "rad/s") * Sym("u", u), unit="rad/s"))
         work.answer("spin_at_limits", "psidot", spins, "rate", ["at theta_max", "at theta_min"])
     if "reversal_theta" in find:
@@ -335,8 +431,10 @@ def _spin_and_reversal(nut, omega_z: float, find: frozenset[str], work: Work) ->
         ratio = Sym("beta", nut.beta, "rad/s") / Sym("gamma", nut.gamma, "rad/s")
         if abs(ratio.value) > 1:  # beta / gamma beyond +-1 by rounding, at a pole
             ratio = Let(Sym("u*", u_star), ratio)
-        theta = work.step("theta_rev", acos(ratio), unit="deg", note="phidot = 0 there" + (" (a cusp: phidot touches 0 and keeps its "
-                                                      "sign)" if nut.motion == "cusps" else ""))
+        cusp = (" (a cusp: ", phidot, " touches ", Num(0), " and keeps its sign)") \
+            if nut.motion == "cusps" else ()
+        theta = work.step("theta_rev", acos(ratio), unit="deg",
+                          note=(rel(phidot, "=", 0), " there", *cusp))
         work.answer("reversal_theta", "theta_rev", [theta * DEG], "angle")  # theta in deg
 
 

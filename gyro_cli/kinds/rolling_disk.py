@@ -30,9 +30,18 @@ from dataclasses import dataclass
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.expr import PI, Let, Sym, absolute, cos, exp, sin, sqrt
+from ..core.prose import cross, deriv, names, prime, q, rel, tup
 from ..core.work import Work, num, qty
 
+#: the symbols the prose names (values are in the steps' trees)
+K0, k0, n0, O0, R0, W0, pd0, r0, J0, IO0, HO0, N0, m0, g0 = names(
+    "K k n O R Omega psidot r J I_O H_O N m g")
+b0, rho0, v0, G0, wz0, IG0, HG0, sig0, t0, bd0, vc0 = names(
+    "beta rho v G omega_z I_G H_G sigma t betadot v_contact")
+
 RPM = 2 * math.pi / 60
+NAN = float("nan")  # a symbol named in a definition, its value not needed
 
 
 # ---- physics on floats ------------------------------------------------------
@@ -196,40 +205,44 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
                          "on the shaft the moments about the pin do not fix the normal force",
                          key="given.path_radius")
     work.section("Conventions (axle pinned to the shaft at the height of the disk's centre)")
-    work.text("K: upward vertical, Omega positive counter-clockwise seen from above; k: along "
-              "the axle, from the pin O outward to the disk; n = K x k, horizontal, the way the "
-              "disk's centre moves when Omega > 0. The contact point is directly below the "
-              "centre, at R from the shaft.")
-    work.section("Rolling without slipping: v_contact = Omega R n + psidot r n = 0")
-    spin = work.step("psidot", "-Omega R / r", f"-{qty(Omega, 'rad/s')} {qty(R, 'm')} / "
-                     f"{qty(r, 'm')}", axle_pivot_spin(Omega, R, r), "rad/s")
-    work.text("negative: seen from outside the disk (looking along -k toward the shaft) the "
-              "disk turns clockwise when Omega is counter-clockwise from above")
-    work.section("Moments about the pin O: dH_O/dt = Omega K x (J psidot k + I_O Omega K) "
-                 "= J psidot Omega n (Eq. 11.29)")
-    work.text("H_O = J psidot k + I_O Omega K: the angular momentum about the pin O, where I_O "
-              "is the disk's moment of inertia about the vertical through O")
-    dH = work.step("dH_O/dt", "J psidot Omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                   f"({qty(Omega, 'rad/s')})", J * spin * Omega, "N*m", note="along n")
-    work.text("about n: gravity m g R (+), the plane's normal force N gives -N R; the pin force "
-              "passes through O "
-              "and the plane is taken to give no radial friction (the pin holds the disk on "
-              "its circle)")
-    work.text("m g R - N R = J psidot Omega = -J Omega^2 R / r")
-    N = work.step("N", "m g + J Omega^2 / r", f"{qty(m, 'kg')} ({qty(g, 'm/s^2')}) + "
-                  f"{qty(J, 'kg*m^2')} ({qty(Omega, 'rad/s')})^2 / {qty(r, 'm')}",
-                  axle_pivot_normal_force(m, g, J, Omega, r), "N")
-    moment = work.step("M", "(N - m g) R = J Omega^2 R / r", f"({qty(N, 'N')} - "
-                       f"{qty(m * g, 'N')}) {qty(R, 'm')}", (N - m * g) * R, "N*m",
-                       note="net moment of gravity and the normal force about O, positive "
-                            "lifting the disk's outer side (it equals -dH_O/dt along n)")
+    work.text(K0, ": upward vertical, ", W0, " positive counter-clockwise seen from above; ", k0,
+              ": along the axle, from the pin ", O0, " outward to the disk; ",
+              rel(n0, "=", cross(K0, k0)), ", horizontal, the way the disk's centre moves when ",
+              rel(W0, ">", 0), ". The contact point is directly below the centre, at ", R0,
+              " from the shaft.")
+    Omega_, R_, r_ = Sym("Omega", Omega, "rad/s"), Sym("R", R, "m"), Sym("r", r, "m")
+    m_, g_, J_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("J", J, "kg m^2")
+    work.section("Rolling without slipping: ",
+                 rel(vc0, "=", W0 * R0 * n0 + pd0 * r0 * n0, "=", 0))
+    spin = work.step("psidot", -Omega_ * R_ / r_, unit="rad/s")  # axle_pivot_spin
+    work.text("negative: seen from outside the disk (looking along ", -k0, " toward the shaft) "
+              "the disk turns clockwise when ", W0, " is counter-clockwise from above")
+    H_O = J0 * pd0 * k0 + IO0 * W0 * K0
+    work.section("Moments about the pin ", O0, ": ",
+                 rel(deriv(HO0), "=", cross(W0 * K0, H_O), "=", J0 * pd0 * W0 * n0),
+                 " (Eq. 11.29)")
+    work.text(rel(HO0, "=", H_O), ": the angular momentum about the pin ", O0, ", where ", IO0,
+              " is the disk's moment of inertia about the vertical through ", O0)
+    dH = work.step(deriv(HO0), J_ * Sym("psidot", spin, "rad/s") * Omega_, unit="N*m",
+                   note=("along ", n0))
+    work.text("about ", n0, ": gravity ", m0 * g0 * R0, " (+), the plane's normal force ", N0,
+              " gives ", -N0 * R0, "; the pin force passes through ", O0, " and the plane is "
+              "taken to give no radial friction (the pin holds the disk on its circle)")
+    work.text(rel(m0 * g0 * R0 - N0 * R0, "=", J0 * pd0 * W0, "=", -J0 * W0 ** 2 * R0 / r0))
+    N = work.step("N", m_ * g_ + J_ * Omega_ ** 2 / r_, unit="N")  # axle_pivot_normal_force
+    weight = Let(Sym("mg", m * g, "N"), Sym("m", NAN) * Sym("g", NAN))  # m g, shown by value
+    moment = work.step("M", (Sym("N", N, "N") - weight) * R_, unit="N*m",
+                       note=("equal to ", J0 * W0 ** 2 * R0 / r0, "; the net moment of gravity "
+                             "and the normal force about ", O0, ", positive lifting the disk's "
+                             "outer side (it equals ", -deriv(HO0), " along ", n0, ")"))
     work.answer("normal_force", "N", [N], "force")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("moment", "M", [moment], "moment")
     if "precession_period" in find:
         _lap_time([Omega], work)
-    work.check(f"moments about O along n: m g R - N R = {qty(m * g * R - N * R, 'N m')}; "
-               f"dH_O/dt = {qty(dH, 'N m')}")
+    work.check("moments about ", O0, " along ", n0, ": ",
+               rel(m0 * g0 * R0 - N0 * R0, "=", q(m * g * R - N * R, "N m")), "; ",
+               rel(deriv(HO0), "=", q(dH, "N m")))
 
 
 def _lap_time(rates: list[float], work: Work) -> None:
@@ -238,8 +251,9 @@ def _lap_time(rates: list[float], work: Work) -> None:
         raise InputError("the precession is 0: the disk never completes a lap",
                          key="find.precession_period")
     work.section("Time for one lap of the circle")
-    periods = [work.step("T", "2 pi / |Omega|", f"2 pi / {qty(abs(rate), 'rad/s')}",
-                         2 * math.pi / abs(rate), "s") for rate in rates]
+    periods = [work.step("T", 2 * PI / Let(Sym("abs_Omega", abs(rate), "rad/s"),
+                                           absolute(Sym("Omega", NAN))), unit="s")
+               for rate in rates]
     work.answer("precession_period", "T", periods, "time")
 
 
@@ -250,6 +264,8 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.precession")
     # J, I_G and m are all proportional to the mass where it is not given: the rates cancel it
     m, g, J, I, r = body.mass_for_rates, body.g, body.J, body.I_cg, body.radius
+    m_, g_, J_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("J", J, "kg m^2"), Sym("r", r, "m")
+    I_ = Sym("I_G", I, "kg m^2")
     known = [k for k in ("path_radius", "speed", "tilt") if k in given]
     if len(known) != 2:
         raise InputError(f"give exactly two of path_radius, speed and tilt (got "
@@ -262,15 +278,18 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("tilt must be less than 90 deg (the disk would lie flat)",
                          key="given.tilt")
     work.section("Conventions (disk rolling by itself)")
-    work.text("beta: tilt of the disk's plane from the vertical, leaning toward the centre of "
-              "the circle; rho: radius of the circle of the centre G; R = rho + r sin(beta): "
-              "radius of the circle traced by the contact point (path_radius); Omega: the rate at "
-              "which the disk turns about the vertical; v = Omega rho: speed of G. k: the "
-              "disk's axis, pointing outward and up; "
-              "K: the upward vertical; H_G: the disk's angular momentum about G.")
-    work.section("Steady rolling: rolling gives omega_z = -v / r; moments about G, "
-                 "dH_G/dt = Omega K x H_G, with N = m g and friction m Omega^2 rho inward")
-    work.text("m g r sin(beta) = Omega^2 cos(beta) [rho (m r + J / r) + I_G sin(beta)]")
+    work.text(b0, ": tilt of the disk's plane from the vertical, leaning toward the centre of "
+              "the circle; ", rho0, ": radius of the circle of the centre ", G0, "; ",
+              rel(R0, "=", rho0 + r0 * sin(b0)), ": radius of the circle traced by the contact "
+              "point (path_radius); ", W0, ": the rate at which the disk turns about the "
+              "vertical; ", rel(v0, "=", W0 * rho0), ": speed of ", G0, ". ", k0, ": the disk's "
+              "axis, pointing outward and up; ", K0, ": the upward vertical; ", HG0, ": the "
+              "disk's angular momentum about ", G0, ".")
+    work.section("Steady rolling: rolling gives ", rel(wz0, "=", -v0 / r0), "; moments about ",
+                 G0, ", ", rel(deriv(HG0), "=", cross(W0 * K0, HG0)), ", with ",
+                 rel(N0, "=", m0 * g0), " and friction ", m0 * W0 ** 2 * rho0, " inward")
+    work.text(rel(m0 * g0 * r0 * sin(b0), "=", W0 ** 2 * cos(b0) * (
+        rho0 * (m0 * r0 + J0 / r0) + IG0 * sin(b0))))
     if known == ["path_radius", "tilt"] or known == ["tilt", "path_radius"]:
         states = [free_from_tilt_and_path(m, g, r, J, I, given["tilt"], given["path_radius"])]
         if states[0] is None:
@@ -280,18 +299,25 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                              "outside the axis: no steady rolling on this circle (take a larger "
                              "path_radius or a smaller tilt)", key="given.path_radius")
         s = states[0]
-        work.step("rho", "R - r sin(beta)", f"{qty(s.path_radius, 'm')} - {qty(r, 'm')} "
-                  f"sin({num(math.degrees(s.tilt))} deg)", s.centre_radius, "m")
-        work.step("Omega", "sqrt(m g r sin(beta) / (cos(beta) [rho (m r + J / r) + I_G "
-                  "sin(beta)]))", value=s.precession, unit="rad/s")
-        work.step("v", "Omega rho", value=s.speed, unit="m/s")
+        beta, R_ = Sym("beta", s.tilt, "deg"), Sym("R", given["path_radius"], "m")
+        rho = Sym("rho", work.step("rho", R_ - r_ * sin(beta), unit="m"), "m")
+        # the moment equation solved for Omega (free_from_tilt_and_path)
+        Omega = work.step("Omega", sqrt(m_ * g_ * r_ * sin(beta) / (cos(beta) * (
+            rho * (m_ * r_ + J_ / r_) + I_ * sin(beta)))), unit="rad/s", substitute=False)
+        work.step("v", Sym("Omega", Omega, "rad/s") * rho, unit="m/s", substitute=False)
     elif "tilt" in given:
         s = free_from_speed_and_tilt(m, g, r, J, I, given["tilt"], given["speed"])
         states = [s]
-        work.text("a quadratic in rho: m g r sin(beta) rho^2 - v^2 cos(beta) (m r + J / r) rho "
-                  "- v^2 cos(beta) I_G sin(beta) = 0; one positive root")
-        work.step("rho", "positive root", value=s.centre_radius, unit="m")
-        work.step("R", "rho + r sin(beta)", value=s.path_radius, unit="m")
+        work.text("a quadratic in ", rho0, ": ", rel(
+            m0 * g0 * r0 * sin(b0) * rho0 ** 2 - v0 ** 2 * cos(b0) * (m0 * r0 + J0 / r0) * rho0
+            - v0 ** 2 * cos(b0) * IG0 * sin(b0), "=", 0), "; one positive root")
+        beta, v_ = Sym("beta", s.tilt, "deg"), Sym("v", given["speed"], "m/s")
+        a = m_ * g_ * r_ * sin(beta)
+        b = v_ ** 2 * cos(beta) * (m_ * r_ + J_ / r_)
+        c = v_ ** 2 * cos(beta) * I_ * sin(beta)
+        rho = work.step("rho", (b + sqrt(b ** 2 + 4 * a * c)) / (2 * a), unit="m",
+                        substitute=False)
+        work.step("R", Sym("rho", rho, "m") + r_ * sin(beta), unit="m", substitute=False)
     else:
         states = free_from_speed_and_path(m, g, r, J, I, given["speed"], given["path_radius"])
         if not states:
@@ -299,19 +325,21 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
                              f"{qty(given['speed'], 'm/s')} on a contact circle of "
                              f"{qty(given['path_radius'], 'm')} (no real root with the centre "
                              "outside the axis)", key="given.speed")
-        work.text("solved for beta (every root in 0 < beta < 90 deg with rho > 0)")
+        work.text("solved for ", b0, " (every root in ",
+                  rel(0, "<", b0, "<", q(math.pi / 2, "deg", exact=True)), " with ",
+                  rel(rho0, ">", 0), ")")
         for s in states:
             work.step("beta", value=math.degrees(s.tilt), unit="deg",
-                      note=f"rho = {qty(s.centre_radius, 'm')}, Omega = "
-                           f"{qty(s.precession, 'rad/s')}")
+                      note=(rel(rho0, "=", q(s.centre_radius, "m")), ", ",
+                            rel(W0, "=", q(s.precession, "rad/s"))))
     for s in states:
-        work.step("omega_z", "-v / r", f"-{qty(s.speed, 'm/s')} / {qty(r, 'm')}", s.axial_rate,
-                  "rad/s", note="rolling")
-        work.step("psidot", "-Omega R / r", value=s.spin, unit="rad/s",
+        work.step("omega_z", -Sym("v", s.speed, "m/s") / r_, unit="rad/s", note="rolling")
+        work.step("psidot", -Sym("Omega", s.precession, "rad/s") * Sym("R", s.path_radius, "m")
+                  / r_, unit="rad/s", substitute=False,
                   note="spin relative to the precessing frame")
-        work.check(f"beta = {num(math.degrees(s.tilt))} deg: residual of the moment equation "
-                   f"{free_residual(m, g, r, J, I, s.tilt, s.centre_radius, s.speed):.3g} "
-                   "(kg m^4/s^2)")
+        work.check(rel(b0, "=", q(s.tilt, "deg")), ": residual of the moment equation ",
+                   q(free_residual(m, g, r, J, I, s.tilt, s.centre_radius, s.speed),
+                     "kg m^4/s^2"))
     work.answer("tilt", "beta", [s.tilt for s in states], "angle")
     work.answer("path_radius", "R", [s.path_radius for s in states], "length")
     work.answer("speed", "v", [s.speed for s in states], "speed")
@@ -336,38 +364,44 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
 def _stability(m: float, g: float, r: float, J: float, I: float, states: list[FreeDisk],
                work: Work) -> None:
     """Each steady state's stability: tilt perturbed, linearised (physics/stability.py)."""
-    from ..physics.stability import UNSTABLE, disk_critical_axial_rate, disk_rolling
+    from ..physics.stability import UNSTABLE, disk_rolling
 
-    work.section("Stability: small changes of the tilt, linearised rolling equations "
-                 "(betadot'' + k betadot = 0)")
-    work.text("I_G (I_G + m r^2) k = J (J + m r^2) omega_z^2 - I_G (3 J + m r^2) Omega omega_z "
-              "sin(beta) + I_G^2 Omega^2 (1 + 2 sin^2(beta)) + I_G m r^2 Omega^2 cos^2(beta) - "
-              "I_G m g r cos(beta); k > 0 stable (the tilt wobbles at sqrt(k)), k < 0 unstable "
-              "(it grows as exp(sigma t), with the growth rate sigma = sqrt(-k); sigma = 0 when "
-              "stable)")
+    work.section("Stability: small changes of the tilt, linearised rolling equations (",
+                 rel(prime(bd0, 2) + k0 * bd0, "=", 0), ")")
+    mr2 = m0 * r0 ** 2
+    work.text(rel(IG0 * (IG0 + mr2) * k0, "=",
+                  J0 * (J0 + mr2) * wz0 ** 2 - IG0 * (3 * J0 + mr2) * W0 * wz0 * sin(b0)
+                  + IG0 ** 2 * W0 ** 2 * (1 + 2 * sin(b0) ** 2) + IG0 * mr2 * W0 ** 2 * cos(b0) ** 2
+                  - IG0 * m0 * g0 * r0 * cos(b0)),
+              "; ", rel(k0, ">", 0), " stable (the tilt wobbles at ", sqrt(k0), "), ",
+              rel(k0, "<", 0), " unstable (it grows as ", exp(sig0 * t0), ", with the growth rate ",
+              rel(sig0, "=", sqrt(-k0)), "; ", rel(sig0, "=", 0), " when stable)")
     words, rates = [], []
     for s in states:
         if not all(map(math.isfinite, (s.centre_radius, s.precession, s.spin, s.axial_rate))):
             raise OverflowError("the steady state itself overflows")
         verdict = disk_rolling(m, g, r, I, J, s.tilt, s.precession, s.axial_rate)
-        detail = (f"wobbles at sqrt(k) = {qty(verdict.frequency, 'rad/s')}" if verdict.frequency
-                  else f"grows at sigma = sqrt(-k) = {qty(verdict.growth_rate, '1/s')}"
-                  if verdict.growth_rate else "neutral to first order")
+        detail = (("wobbles at ", rel(sqrt(k0), "=", q(verdict.frequency, "rad/s")))
+                  if verdict.frequency else
+                  ("grows at ", rel(sig0, "=", sqrt(-k0), "=", q(verdict.growth_rate, "1/s")))
+                  if verdict.growth_rate else ("neutral to first order",))
         work.step("k", value=verdict.k, unit="1/s^2",
-                  note=f"beta = {num(math.degrees(s.tilt))} deg: {verdict.word}, {detail}")
+                  note=(rel(b0, "=", q(s.tilt, "deg")), f": {verdict.word}, ", *detail))
         if verdict.word == UNSTABLE:
-            work.warn(f"steady rolling at beta = {num(math.degrees(s.tilt))} deg, v = "
-                      f"{qty(s.speed, 'm/s')} is unstable: a small disturbance of the tilt grows "
-                      f"as exp({num(verdict.growth_rate)} t / s), doubling every "
-                      f"{qty(math.log(2) / verdict.growth_rate, 's')}")
+            work.warn("steady rolling at ", rel(b0, "=", q(s.tilt, "deg")), ", ",
+                      rel(v0, "=", q(s.speed, "m/s")), " is unstable: a small disturbance of the "
+                      "tilt grows as ", exp(sig0 * t0), " (", rel(sig0, "=", q(verdict.growth_rate,
+                                                                               "1/s")),
+                      "), doubling every ", q(math.log(2) / verdict.growth_rate, "s"))
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
-    upright = work.step("v_upright", "r sqrt(m g r I_G / (J (J + m r^2)))",
-                        f"{qty(r, 'm')} sqrt(({qty(m, 'kg')}) ({qty(g, 'm/s^2')}) ({qty(r, 'm')})"
-                        f" ({qty(I, 'kg*m^2')}) / (({qty(J, 'kg*m^2')}) ({qty(J + m * r * r, 'kg*m^2')})))",
-                        disk_critical_axial_rate(m, g, r, I, J) * r, "m/s",
-                        note="upright rolling in a straight line (beta = 0, Omega = 0) is "
-                             "stable above this speed (k > 0)")
+    m_, g_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("r", r, "m")
+    J_, I_ = Sym("J", J, "kg m^2"), Sym("I_G", I, "kg m^2")
+    # r times disk_critical_axial_rate
+    upright = work.step("v_upright", r_ * sqrt(m_ * g_ * r_ * I_ / (J_ * (J_ + m_ * r_ ** 2))),
+                        unit="m/s", note=("upright rolling in a straight line ",
+                                          tup(rel(b0, "=", 0), rel(W0, "=", 0)),
+                                          " is stable above this speed (", rel(k0, ">", 0), ")"))
     work.answer("stability", "stability", words, None)
     work.answer("growth_rate", "sigma", rates, "rate")
     work.answer("upright_speed", "v_upright", [upright], "speed")

@@ -24,7 +24,13 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty, vec
+from ..core.expr import PI, Num, Sym, absolute, cos, sin
+from ..core.prose import cross, deriv, names, plus, qvec, q, rel
+from ..core.work import Work, num
+
+#: the ship's axes and the symbols its prose names (values are in the steps' trees)
+x, y, z = names("x y z")
+H0, C0, wp0, phi0, w10, t0, theta0, alpha0 = names("H C omega_p phi omega_1 t theta alpha")
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -42,13 +48,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _refuse_foreign(given, motion)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("ship axes: x forward (toward the bow), y to port (left, looking forward), z up. "
-              "The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
-              "observer has its vector pointing away from the observer (right-hand rule).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotor C = omega_p x "
-              "H (Eq. 11.29); the ship feels the reactive "
-              "couple -C. About -y it raises the bow; about +z it turns the ship to port.")
+    work.text("ship axes: ", x, " forward (toward the bow), ", y, " to port (left, looking "
+              "forward), ", z, " up. The rotor's axis lies fore and aft. A rotation that looks "
+              "clockwise to an observer has its vector pointing away from the observer "
+              "(right-hand rule).")
+    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotor ",
+              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the ship feels the reactive couple ",
+              -C0, ". About ", -y, " it raises the bow; about ", plus(z), " it turns the ship to "
+              "port.")
 
     if sense is None:
         if "effect" in find:
@@ -62,12 +70,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotor")
     work.step("omega", value=spin, unit="rad/s", note="rotor speed")
     H = V.spin_vector(J, spin, direction)
-    Hmag = work.step("H", "J omega", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')})", J * spin,
-                     "kg m^2/s")
+    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
+    Hmag = work.step("H", J_ * omega, unit="kg m^2/s")
     if sense:
-        work.text(f"{sense.replace('_', ' ')}: the spin vector points "
-                  f"{'forward (toward the bow), +x' if direction > 0 else 'aft (toward the stern), -x'}"
-                  f"; H = {vec(H, 'kg m^2/s')}")
+        way = "forward (toward the bow), " if direction > 0 else "aft (toward the stern), "
+        work.text(f"{sense.replace('_', ' ')}: the spin vector points {way}",
+                  plus(x) if direction > 0 else -x, "; ", rel(H0, "=", qvec(H, "kg m^2/s")))
 
     if motion == "steering":
         wp = _steering(given, work)
@@ -79,15 +87,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     rate = V.norm(wp)
     if motion == "rolling":
         rate = abs(given["roll_rate"]) if "roll_rate" in given else None
-    work.section("Gyroscopic couple, C = omega_p x H")
+    work.section("Gyroscopic couple, ", rel(C0, "=", cross(wp0, H0)))
     if motion == "rolling":
-        work.text("omega_p lies along x, parallel to H: omega_p x H = 0. Rolling gives no "
-                  "gyroscopic couple.")
-        C = 0.0
-        work.step("C", "J omega omega_p sin(0)", value=0.0, unit="N*m")
+        work.text(wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(cross(wp0, H0), "=", 0),
+                  ". Rolling gives no gyroscopic couple.")
+        # with no roll_rate any rate will do (V.rolling_precession takes 1 rad/s)
+        omega_p = Sym("omega_p", 1.0 if rate is None else rate, "rad/s")
+        C = work.step("C", J_ * omega * omega_p * sin(Num(0)), unit="N*m", substitute=False)
     else:
-        C = work.step("C", "J omega omega_p", f"{qty(J, 'kg*m^2')} ({qty(spin, 'rad/s')}) "
-                      f"({qty(rate, 'rad/s')})", Hmag * rate, "N*m",
+        C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")
     if not (math.isfinite(C) and math.isfinite(Hmag)):
@@ -100,12 +108,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text(f"couple on the rotor omega_p x H = {vec(active, 'N m')}")
-        work.text(f"reactive couple on the ship -(omega_p x H) = {vec(reactive, 'N m')}")
+        work.text("couple on the rotor ", rel(cross(wp0, H0), "=", qvec(active, "N m")))
+        work.text("reactive couple on the ship ", rel(-cross(wp0, H0), "=",
+                                                      qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "ship")
         work.text(f"effect on the ship: {words}")
         work.answer("effect", "effect", [words], None)
-        work.check(f"|omega_p x H| = {qty(V.norm(active), 'N m')} = C = {qty(C, 'N m')}")
+        work.check(rel(absolute(cross(wp0, H0)), "=", q(V.norm(active), "N m"), "=", C0, "=",
+                       q(C, "N m")))
 
 
 def _refuse_foreign(given: Given, motion: str) -> None:
@@ -134,9 +144,7 @@ def _steering(given: Given, work: Work) -> V.Vector:
         work.section("Steering: precession about the vertical")
         work.step("omega_p", value=rate, unit="rad/s", note="the ship's rate of turn, as given")
         wp = V.steering_precession(rate, 1.0, turn)
-        work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'}"
-                  f" seen from above): omega_p = {vec(wp, 'rad/s')}, along "
-                  f"{'+z' if turn == 'left' else '-z'}")
+        _steering_line(turn, wp, work)
         return wp
     for key in ("speed", "turn_radius"):
         if key not in given:
@@ -150,12 +158,16 @@ def _steering(given: Given, work: Work) -> V.Vector:
         raise InputError("speed must be positive (the ship goes ahead)", key="given.speed")
     turn = given.word("turn", "left")
     work.section("Steering: precession about the vertical")
-    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", v / R, "rad/s")
+    work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
-    work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
-              f"seen from above): omega_p = {vec(wp, 'rad/s')}, along "
-              f"{'+z' if turn == 'left' else '-z'}")
+    _steering_line(turn, wp, work)
     return wp
+
+
+def _steering_line(turn: str, wp: V.Vector, work: Work) -> None:
+    work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
+              "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")), ", along ",
+              plus(z) if turn == "left" else -z)
 
 
 def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
@@ -188,20 +200,21 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             work.step("phi_total", value=math.degrees(total), unit="deg",
                       note="the swing from one extreme to the other")
             phi = total / 2
-            work.step("phi", "phi_total / 2", f"{num(math.degrees(total))} deg / 2",
-                      math.degrees(phi), "deg", note=f"= {num(phi)} rad, the amplitude, from "
-                      "the mean position")
+            work.step("phi", Sym("phi_total", total, "deg") / 2, unit="deg",
+                      note=(rel(None, "=", q(phi, "rad")), ", the amplitude, from the mean "
+                            "position"))
         else:
             phi = given[amplitude_key]
-            work.step("phi", value=math.degrees(phi), unit="deg", note=f"= {num(phi)} rad")
+            work.step("phi", value=math.degrees(phi), unit="deg", note=(
+                rel(None, "=", q(phi, "rad")),))
         if phi >= math.pi / 2:
             raise InputError(f"amplitude {num(math.degrees(phi))} deg: a ship cannot pitch "
                              "through 90 deg", key=f"given.{amplitude_key}")
         if period_key == "frequency":
             f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
-            T = work.step("T", "2 pi / omega_1", f"2 pi / {qty(f_rate, 'rad/s')}",
-                          2 * math.pi / f_rate, "s", note="from the frequency (1 Hz = "
-                          "one oscillation per second = 2 pi rad/s)")
+            T = work.step("T", 2 * PI / Sym("omega_1", f_rate, "rad/s"), unit="s",
+                          note=("from the frequency (", q(1.0, "Hz", exact=True), " = one "
+                                "oscillation per second = ", q(2 * math.pi, "rad/s"), ")"))
         else:
             T = given["period"]
         p = V.pitching(phi, T)
@@ -209,15 +222,14 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             work.step("omega_1", value=p.frequency, unit="rad/s", note="the circular "
                       "frequency of the pitching")
         else:
-            work.step("omega_1", "2 pi / T", f"2 pi / {qty(T, 's')}", p.frequency, "rad/s")
-        work.text("theta = phi sin(omega_1 t): the pitch angle at the time t")
-        work.text("omega_p = d theta/dt = phi omega_1 cos(omega_1 t): largest at the mean "
-                  "position (cos = 1)")
-        rate = work.step("omega_p,max", "phi omega_1", f"{num(phi)} ({qty(p.frequency, 'rad/s')})",
-                         p.max_precession, "rad/s")
-        work.text("alpha = -phi omega_1^2 sin(omega_1 t): largest at the extremes")
-        work.step("alpha_max", "phi omega_1^2", f"{num(phi)} ({qty(p.frequency, 'rad/s')})^2",
-                  p.max_acceleration, "rad/s^2")
+            work.step("omega_1", 2 * PI / Sym("T", T, "s"), unit="rad/s")
+        work.text(rel(theta0, "=", phi0 * sin(w10 * t0)), ": the pitch angle at the time ", t0)
+        work.text(rel(wp0, "=", deriv(theta0), "=", phi0 * w10 * cos(w10 * t0)),
+                  ": largest at the mean position (cos = 1)")
+        phi_, omega_1 = Sym("phi", phi), Sym("omega_1", p.frequency, "rad/s")  # phi in rad
+        rate = work.step("omega_p,max", phi_ * omega_1, unit="rad/s")
+        work.text(rel(alpha0, "=", -phi0 * w10 ** 2 * sin(w10 * t0)), ": largest at the extremes")
+        work.step("alpha_max", phi_ * omega_1 ** 2, unit="rad/s^2")
         work.answer("max_precession", "omega_p,max", [p.max_precession], "rate")
         work.answer("max_angular_acceleration", "alpha_max", [p.max_acceleration],
                     "angular_acceleration")
@@ -229,9 +241,10 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
         bow = "rising"
         work.text("bow not given: the couple's size is the same rising or falling")
     wp = V.pitching_precession(rate, bow)
-    work.text(f"bow {bow}: the rotation carries x {'toward +z' if bow == 'rising' else 'toward -z'}"
-              f", a rotation about {'-y' if bow == 'rising' else '+y'}: omega_p = "
-              f"{vec(wp, 'rad/s')}")
+    rising = bow == "rising"
+    work.text(f"bow {bow}: the rotation carries ", x, " toward ", plus(z) if rising else -z,
+              ", a rotation about ", -y if rising else plus(y), ": ",
+              rel(wp0, "=", qvec(wp, "rad/s")))
     return wp
 
 
@@ -254,11 +267,12 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     rate = abs(given["roll_rate"]) if "roll_rate" in given else 0.0
     work.section("Rolling: precession about the fore-and-aft axis")
     if rate:
-        work.step("omega_p", "omega_r", value=rate, unit="rad/s", note="rolling rate")
+        work.step("omega_p", Sym("omega_r", rate, "rad/s"), unit="rad/s", substitute=False,
+                  note="rolling rate")
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)
-    work.text(f"omega_p along x: {vec(wp, 'rad/s')}")
+    work.text(wp0, " along ", x, ": ", qvec(wp, "rad/s"))
     return wp
 
 

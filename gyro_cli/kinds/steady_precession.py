@@ -107,9 +107,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "with it the precession rate, is undefined there (Eq. 11.13 is divided "
                          "by sin(theta)); that is the sleeping top of kind released_top",
                          key="given.theta")
-    if not 0 < theta < math.pi:
-        raise InputError(f"theta must lie between 0 and 180 deg, got {num(math.degrees(theta))} "
-                         "deg", key="given.theta")
     rates = [k for k in ("spin", "axial_rate", "precession") if k in given]
     if len(rates) == 3:
         raise InputError("give at most two of spin, axial_rate and precession",
@@ -644,7 +641,8 @@ KIND = Kind(
     summary="symmetric body about a fixed point precessing steadily at constant theta",
     chapter="Eqs. 11.13-11.14 with theta constant, 11.20, 11.21 (corrected)",
     params=(
-        Param("theta", "angle", "theta", "angle of the symmetry axis from the upward vertical"),
+        Param("theta", "angle", "theta", "angle of the symmetry axis from the upward vertical",
+              range=(0.0, math.pi)),  # the ends (the axis vertical) are refused by the kind
         Param("spin", "rate", "psidot", "spin relative to the precessing frame"),
         Param("axial_rate", "rate", "omega_z", "axial angular velocity psidot + phidot cos(theta)"),
         Param("precession", "rate", "phidot", "precession rate about the vertical"),

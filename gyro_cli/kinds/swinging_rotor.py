@@ -27,9 +27,11 @@ import math
 from dataclasses import dataclass
 
 from ..core.errors import InputError
+from ..core.expr import Chain, Expr, Let, Sym, absolute, cos, sin, sqrt
 from ..core.given import Given
+from ..core.prose import cross, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
+from ..core.work import Work, num
 from ..physics.algebra import cos_theta
 
 
@@ -81,13 +83,14 @@ def swing_forces(m: float, g: float, J: float, I_G: float, spin: float, L: float
 
 # ---- the worked answer ------------------------------------------------------
 
-def _inertia_texts(body) -> tuple[str, str]:
-    """I_G / m and J / m as text in the rotor's own symbols (r^2/4 for a disk)."""
-    if body.shape == "disk":
-        return "r^2/4", "r^2/2"
-    if body.shape == "ring":
-        return "r^2/2", "r^2"
-    return "k_G^2", "k_z^2"
+def _inertia_trees(body, m: float) -> tuple[Expr, Expr]:
+    """I_G / m and J / m as trees in the rotor's own symbols (r^2 / 4 and r^2 / 2 for a
+    disk, else the radii of gyration k_G^2 and k_z^2)."""
+    if body.shape in ("disk", "ring"):
+        r = Sym("r", body.radius, "m")
+        return (r ** 2 / 4, r ** 2 / 2) if body.shape == "disk" else (r ** 2 / 2, r ** 2)
+    return (Sym("k_G", math.sqrt(body.I_cg / m), "m") ** 2,
+            Sym("k_z", math.sqrt(body.J / m), "m") ** 2)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -114,67 +117,82 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          f"between {num(math.degrees(theta0))} and "
                          f"{num(360 - math.degrees(theta0))} deg)", key="given.theta")
     b = d - a
-    kg2, kz2 = _inertia_texts(body)
     c0, c, s = cos_theta(theta0), cos_theta(theta), math.sin(theta)
     f = swing_forces(m, g, J, I_G, p, L, d, a, theta0, theta)
     I_O = I_G + m * L * L
 
     work.section("Conventions")
-    work.text("i: along the shaft from A to B; the arm swings at the rate thetadot, its angular "
-              "velocity +thetadot i "
-              "(counter-clockwise seen from B); k: along the arm from the shaft to the rotor; "
-              "spin p positive about k (counter-clockwise seen from outside the rotor's face). "
-              "n: perpendicular to the arm and the shaft on the upper side (against the swing).")
-    work.text("Forces are those of the bearings on the rotor assembly: 'arm' components along k "
-              "(from the shaft toward the rotor positive), 'normal' components along n. "
-              "Labelled A, B in that order. The bearings exert no moment about AB.")
+    i, k, n, A, B, AB, O, G, td, tdd, p0 = names("i k n A B AB O G thetadot thetaddot p")
+    work.text(i, ": along the shaft from ", A, " to ", B, "; the arm swings at the rate ", td,
+              ", its angular velocity ", signed("+", td) * i, " (counter-clockwise seen from ",
+              B, "); ", k, ": along the arm from the shaft to the rotor; spin ", p0, " positive "
+              "about ", k, " (counter-clockwise seen from outside the rotor's face). ", n,
+              ": perpendicular to the arm and the shaft on the upper side (against the swing).")
+    work.text("Forces are those of the bearings on the rotor assembly: 'arm' components along ",
+              k, " (from the shaft toward the rotor positive), 'normal' components along ", n,
+              ". Labelled ", A, ", ", B, " in that order. The bearings exert no moment about ",
+              AB, ".")
     work.section("Swing: energy and moments about AB")
-    work.step("I_O", "I_G + m L^2", f"{qty(I_G, 'kg*m^2')} + {qty(m, 'kg')} ({qty(L, 'm')})^2",
-              I_O, "kg*m^2", note=f"= m ({kg2} + L^2)")
-    work.step("thetadot^2", f"2 m g L (cos theta0 - cos theta) / I_O = 2 g L (cos theta0 - "
-              f"cos theta) / ({kg2} + L^2)", f"2 ({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(c0)} "
-              f"- {num(c)}) / {qty(I_O / m, 'm^2')}", f.thetadot ** 2, "rad^2/s^2",
-              ref="energy")
+    m_, g_, L_, d_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("d", d, "m")
+    th, th0, p_ = Sym("theta", theta, "deg"), Sym("theta0", theta0, "deg"), Sym("p", p, "rad/s")
+    kG2_, kz2_ = _inertia_trees(body, m)
+    # I_O in general and in the rotor's own symbols, m (r^2 / 4 + L^2) for a disk
+    I_O_ = Sym("I_O", work.step("I_O", Chain(Sym("I_G", I_G, "kg m^2") + m_ * L_ ** 2,
+                                             m_ * (kG2_ + L_ ** 2)), unit="kg*m^2"), "kg m^2")
+    # I_O / m in the rotor's own symbols, its value from I_O as swing_forces takes it
+    per_m = Let(Sym("I_O/m", I_O / m, "m^2"), kG2_ + L_ ** 2)
+    drop = cos(th0) - cos(th)  # cos theta0 - cos theta: the centre's fall is L times it
+    work.step(td ** 2, Chain(2 * m_ * g_ * L_ * drop / I_O_, 2 * g_ * L_ * drop / per_m),
+              unit="rad^2/s^2", ref="energy")
     work.step("thetadot", value=f.thetadot, unit="rad/s")
-    work.step("thetaddot", f"m g L sin(theta) / I_O = g L sin(theta) / ({kg2} + L^2)",
-              f"({qty(g, 'm/s^2')}) ({qty(L, 'm')}) ({num(s)}) / {qty(I_O / m, 'm^2')}",
-              f.thetaddot, "rad/s^2", ref="moments about AB")
+    work.step("thetaddot", Chain(m_ * g_ * L_ * sin(th) / I_O_, g_ * L_ * sin(th) / per_m),
+              unit="rad/s^2", ref="moments about AB")
     work.section("Gyroscopic couple: dH_O/dt = I_O thetaddot i + J p thetadot (i x k)")
-    work.text("H_O = I_O thetadot i + J p k: the angular momentum about O, the centre of the "
-              "shaft; k turns about i at thetadot")
-    work.step("J p thetadot / d", f"m ({kz2}) p thetadot / d",
-              f"{qty(J, 'kg*m^2')} ({qty(p, 'rad/s')}) ({qty(f.thetadot, 'rad/s')}) / "
-              f"{qty(d, 'm')}", f.couple, "N", note="+ at B, - at A, along the arm")
+    H_O, I_O0, J0, d0 = names("H_O I_O J d")
+    work.text(rel(H_O, "=", I_O0 * td * i + J0 * p0 * k), ": the angular momentum about ", O,
+              ", the centre of the shaft; ", k, " turns about ", i, " at ", td)
+    thetadot = Sym("thetadot", f.thetadot, "rad/s")
+    couple = work.step(J0 * p0 * td / d0, Let(Sym("J", J, "kg m^2"), m_ * kz2_) * p_ * thetadot
+                       / d_, unit="N", note=("+ at ", B, ", - at ", A, ", along the arm"))
     work.section("Bearing forces: free body of the rotor, F_A + F_B = m a_G + m g (up)")
-    work.text("a_G: the acceleration of the rotor's centre G, L thetaddot across the arm and "
-              "L thetadot^2 toward the shaft")
-    root = f"sqrt(2 g L (cos theta0 - cos theta) / ({kg2} + L^2))"
-    arm_common = f"m g [cos(theta) - 2 L^2 (cos theta0 - cos theta) / ({kg2} + L^2)]"
-    normal_common = f"m g sin(theta) ({kg2}) / ({kg2} + L^2)"
-    common_arm = m * (g * c - L * f.thetadot ** 2)
-    common_normal = m * (g * s - L * f.thetaddot)
-    work.text(f"a = {qty(a, 'm')} (A to the arm), b = d - a = {qty(b, 'm')}; b/d = {num(b / d)}, "
-              f"a/d = {num(a / d)}")
-    work.step("F_A,arm", f"(b/d) {arm_common} - m ({kz2}) p {root} / d",
-              f"({num(b / d)}) ({qty(common_arm, 'N')}) - {qty(f.couple, 'N')}", f.arm[0], "N")
-    work.step("F_B,arm", f"(a/d) {arm_common} + m ({kz2}) p {root} / d",
-              f"({num(a / d)}) ({qty(common_arm, 'N')}) + {qty(f.couple, 'N')}", f.arm[1], "N")
-    work.step("F_A,normal", f"(b/d) {normal_common}", f"({num(b / d)}) "
-              f"({qty(common_normal, 'N')})", f.normal[0], "N")
-    work.step("F_B,normal", f"(a/d) {normal_common}", f"({num(a / d)}) "
-              f"({qty(common_normal, 'N')})", f.normal[1], "N")
-    work.step("|F_A|", "sqrt(F_A,arm^2 + F_A,normal^2)", value=f.magnitudes[0], unit="N")
-    work.step("|F_B|", "sqrt(F_B,arm^2 + F_B,normal^2)", value=f.magnitudes[1], unit="N")
+    a_G, L0 = names("a_G L")
+    work.text(a_G, ": the acceleration of the rotor's centre ", G, ", ", L0 * tdd, " across the "
+              "arm and ", L0 * td ** 2, " toward the shaft")
+    # the common parts, shown by their definitions in the formula and by value after it
+    per_m_sq = kG2_ + L_ ** 2
+    arm_part = Let(Sym("S_arm", m * (g * c - L * f.thetadot ** 2), "N"),
+                   m_ * g_ * (cos(th) - 2 * L_ ** 2 * drop / per_m_sq))
+    normal_part = Let(Sym("S_normal", m * (g * s - L * f.thetaddot), "N"),
+                      m_ * g_ * sin(th) * kG2_ / per_m_sq)
+    couple_part = Let(Sym("F_couple", couple, "N"),
+                      m_ * kz2_ * p_ * sqrt(2 * g_ * L_ * drop / per_m_sq) / d_)
+    b_d = Let(Sym("b/d", b / d), Sym("b", b, "m") / d_)
+    a_d = Let(Sym("a/d", a / d), Sym("a", a, "m") / d_)
+    a0, b0 = names("a b")
+    work.text(rel(a0, "=", q(a, "m")), " (", A, " to the arm), ",
+              rel(b0, "=", d0 - a0, "=", q(b, "m")), "; ", rel(b0 / d0, "=", q(b / d)), ", ",
+              rel(a0 / d0, "=", q(a / d)))
+    forces = {"F_A,arm": b_d * arm_part - couple_part, "F_B,arm": a_d * arm_part + couple_part,
+              "F_A,normal": b_d * normal_part, "F_B,normal": a_d * normal_part}
+    values = {name: work.step(name, tree, unit="N") for name, tree in forces.items()}
+    for end in "AB":
+        arm, normal = (Sym(f"F_{end},{part}", values[f"F_{end},{part}"], "N")
+                       for part in ("arm", "normal"))
+        work.step(absolute(names(f"F_{end}")[0]), sqrt(arm ** 2 + normal ** 2), unit="N",
+                  substitute=False)
     if abs(f.couple) > 0:
-        work.text("the gyroscopic couple pushes B along +k and A along -k when p thetadot > 0; "
-                  "reversing the spin swaps the two")
-    work.answer("bearing_forces", "|F|", list(f.magnitudes), "force", ["A", "B"])
+        work.text("the gyroscopic couple pushes ", B, " along ", signed("+", k), " and ", A,
+                  " along ", -k, " when ", rel(p0 * td, ">", 0), "; reversing the spin swaps "
+                  "the two")
+    work.answer("bearing_forces", absolute(names("F")[0]), list(f.magnitudes), "force",
+                ["A", "B"])
     work.answer("bearing_forces_arm", "F_arm", list(f.arm), "force", ["A", "B"])
     work.answer("bearing_forces_normal", "F_normal", list(f.normal), "force", ["A", "B"])
     work.answer("angular_rate", "thetadot", [f.thetadot], "rate")
-    work.check(f"moments about O along i x k: b F_B,arm - a F_A,arm = "
-               f"{qty(b * f.arm[1] - a * f.arm[0], 'N m')}; J p thetadot = "
-               f"{qty(J * p * f.thetadot, 'N m')}")
+    F_Aarm, F_Barm = names("F_A,arm F_B,arm")
+    work.check("moments about ", O, " along ", cross(i, k), ": ",
+               rel(b0 * F_Barm - a0 * F_Aarm, "=", q(b * f.arm[1] - a * f.arm[0], "N m")), "; ",
+               rel(J0 * p0 * td, "=", q(J * p * f.thetadot, "N m")))
 
 
 KIND = Kind(

@@ -17,15 +17,24 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
+from ..core.expr import PI, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
+from ..core.prose import Prose, names, q, rel, tup, words
+from ..core.work import Work
 
 
 WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
          "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot"}
 
 
-def _deg(angle: float) -> str:
-    return f"{num(math.degrees(angle))} deg"
+#: the symbols of the kind's steps, beside its Params: name -> the unit each is shown in
+UNITS = {"J": "kg*m^2", "I": "kg*m^2", "theta": "deg", "beta": "deg", "omega": "rad/s",
+         "omega_z": "rad/s", "omega_e": "rad/s", "phidot": "rad/s", "psidot": "rad/s",
+         "H": "kg m^2/s"}
+
+
+def _sym(name: str, value: float) -> Sym:
+    """The kind's symbol ``name`` holding ``value`` (SI: an angle in rad)."""
+    return Sym(name, value, UNITS[name])
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -38,8 +47,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body.require("J", "I_cg")
     J, I = body.J, body.I_cg
     if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
-        work.text("I about the apex is not used: a free body turns about its centre of mass, "
-                  "so I = I_G")
+        I_, I_G = names("I I_G")
+        work.text(I_, " about the apex is not used: a free body turns about its centre of "
+                  "mass, so ", rel(I_, "=", I_G))
     known = {k: given[k] for k in MOTION_KEYS if k in given}
     sense = given.word("precession_sense")
     books = _books_sense(J, I, sense, known) if sense is not None else ""
@@ -58,28 +68,38 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _representable(state, known)
 
     work.section("Conventions")
-    work.text("No moment about the centre of mass G: H, the angular momentum about G, is fixed "
-              "in space. Z: along H; k: the symmetry axis, taken on the side of H, so that H "
-              "has a positive component along k. z-x-z Euler angles as in the chapter "
-              "(Eqs. 11.5-11.8): phi about Z, theta from Z to k, psi about k, with the rates "
-              "phidot (precession) and psidot (spin); omega = phidot Z + psidot k, "
-              "omega_z = psidot + phidot cos(theta); beta: the angle from k to omega. Then "
-              "omega_z > 0 and theta, beta < 90 deg.")
-    work.text("I = I_G: the transverse moment of inertia about G, the fixed point; "
-              "omega_e: the component of omega across k")
-    work.text("Along k: J omega_z = H cos(theta); across k: I omega_e = H sin(theta) with "
-              "omega_e = phidot sin(theta). Hence phidot = H / I, tan(theta) = (I / J) "
-              "tan(beta) and psidot = omega_z - phidot cos(theta) = (I - J) / I omega_z.")
+    G, H, Z, k, phi, theta, psi, phidot, psidot, omega, omega_z, omega_e, beta, I_, I_G, J_ = \
+        names("G H Z k phi theta psi phidot psidot omega omega_z omega_e beta I I_G J")
+    work.text("No moment about the centre of mass ", G, ": ", H, ", the angular momentum "
+              "about ", G, ", is fixed in space. ", Z, ": along ", H, "; ", k, ": the symmetry "
+              "axis, taken on the side of ", H, ", so that ", H, " has a positive component "
+              "along ", k, ". z-x-z Euler angles as in the chapter (Eqs. 11.5-11.8): ", phi,
+              " about ", Z, ", ", theta, " from ", Z, " to ", k, ", ", psi, " about ", k,
+              ", with the rates ", phidot, " (precession) and ", psidot, " (spin); ",
+              rel(omega, "=", phidot * Z + psidot * k), ", ",
+              rel(omega_z, "=", psidot + phidot * cos(theta)), "; ", beta, ": the angle from ",
+              k, " to ", omega, ". Then ", rel(omega_z, ">", 0), " and ", theta, ", ",
+              rel(beta, "<", q(math.pi / 2, "deg", exact=True)), ".")
+    work.text(rel(I_, "=", I_G), ": the transverse moment of inertia about ", G, ", the fixed "
+              "point; ", omega_e, ": the component of ", omega, " across ", k)
+    work.text("Along ", k, ": ", rel(J_ * omega_z, "=", H * cos(theta)), "; across ", k, ": ",
+              rel(I_ * omega_e, "=", H * sin(theta)), " with ",
+              rel(omega_e, "=", phidot * sin(theta)), ". Hence ", rel(phidot, "=", H / I_), ", ",
+              rel(tan(theta), "=", I_ / J_ * tan(beta)), " and ",
+              rel(psidot, "=", omega_z - phidot * cos(theta), "=", (I_ - J_) / I_ * omega_z),
+              ".")
     if books:
-        work.text(books)
+        work.text(*books)
         for line in work.given:
             if line.key == "spin":
-                line.note = f"a magnitude: psidot = {qty(known['spin'], 'rad/s')} ({sense})"
+                note = Prose(("a magnitude: ", rel(*names("psidot"), "=",
+                                                    q(known["spin"], "rad/s")), f" ({sense})"))
+                line.note, line.note_prose = note.text, note
     _route(J, I, known, state, work)
     _results(J, I, state, work, magnitude=sense is not None)
 
 
-def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> str:
+def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tuple:
     """The books' convention: the spin p as a magnitude, the sense of the precession in words
     (direct: the spin and the precession turn the same way; retrograde: opposite ways)."""
     body = "prolate (I > J)" if I > J else "oblate (J > I)"
@@ -88,12 +108,14 @@ def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> str
                          f"body; this one is {body}, so its precession is "
                          f"{'direct' if I > J else 'retrograde'}", key="given.precession_sense")
     if "spin" not in known:
-        return f"the precession is {sense}, as the books say"
+        return (f"the precession is {sense}, as the books say",)
     p = abs(known["spin"])
     known["spin"] = p if sense == "direct" else -p
-    return (f"p, the spin as the books quote it: {qty(p, 'rad/s')}, a magnitude, with the "
-            f"precession {sense}; here psidot carries the sense (k on the side of H): psidot "
-            f"= {'+' if sense == 'direct' else '-'}p = {qty(known['spin'], 'rad/s')}")
+    p_, psidot, k, H = names("p psidot k H")
+    return (p_, ", the spin as the books quote it: ", q(p, "rad/s"), ", a magnitude, with the "
+            f"precession {sense}; here ", psidot, " carries the sense (", k, " on the side of ",
+            H, "): ", rel(psidot, "=", p_ if sense == "direct" else -p_, "=",
+                          q(known["spin"], "rad/s")))
 
 
 def _representable(s: FreeMotion, known: dict[str, float]) -> None:
@@ -112,92 +134,96 @@ def _representable(s: FreeMotion, known: dict[str, float]) -> None:
 def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
     """The steps that turn the two given quantities into omega_z and beta."""
     work.section(f"The motion from {' and '.join(WORDS[k] for k in known)}")
-    Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
-    if "nutation_angle" in known:
-        work.step("beta", "atan((J / I) tan(theta))", f"atan(({Jt} / {It}) tan("
-                  f"{_deg(known['nutation_angle'])}))", math.degrees(s.omega_angle), "deg")
-    if "spin" in known:
-        work.step("omega_z", "I psidot / (I - J)", f"{It} ({qty(known['spin'], 'rad/s')}) / "
-                  f"({It} - {Jt})", s.axial_rate, "rad/s")
+    J_, I_ = _sym("J", J), _sym("I", I)
+    beta, theta, wz = _sym("beta", s.omega_angle), _sym("theta", s.nutation_angle), \
+        _sym("omega_z", s.axial_rate)
+    if "nutation_angle" in known:  # omega_angle_from_nutation
+        work.step("beta", atan(J_ / I_ * tan(_sym("theta", known["nutation_angle"]))),
+                  unit="deg")
+    if "spin" in known:  # axial_rate_from_spin
+        work.step("omega_z", I_ * _sym("psidot", known["spin"]) / (I_ - J_), unit="rad/s")
     angle = "omega_angle" in known or "nutation_angle" in known
     axial = "axial_rate" in known or "spin" in known
     if angle and axial:
         if "omega_angle" in known and "axial_rate" in known:
-            work.text("beta and omega_z are given: together with J and I they fix the motion")
+            b, w, J0, I0 = names("beta omega_z J I")
+            work.text(b, " and ", w, " are given: together with ", J0, " and ", I0,
+                      " they fix the motion")
     elif angle and "omega" in known:
-        work.step("omega_z", "omega cos(beta)", f"{qty(known['omega'], 'rad/s')} cos("
-                  f"{_deg(s.omega_angle)})", s.axial_rate, "rad/s")
+        work.step("omega_z", _sym("omega", known["omega"]) * cos(beta), unit="rad/s")
     elif angle and "precession" in known:
         if "nutation_angle" not in known:
-            work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan("
-                      f"{_deg(s.omega_angle)}))", math.degrees(s.nutation_angle), "deg")
-        p = qty(known["precession"], "rad/s")
-        work.step("omega_z", "I phidot cos(theta) / J", f"{It} ({p}) cos("
-                  f"{_deg(s.nutation_angle)}) / {Jt}", s.axial_rate, "rad/s",
-                  note="(H = I phidot, H cos(theta) = J omega_z)")
+            work.step("theta", atan(I_ / J_ * tan(beta)), unit="deg")
+        H, phidot = names("H phidot")
+        work.step("omega_z", I_ * _sym("phidot", known["precession"]) * cos(theta) / J_,
+                  unit="rad/s", note=(tup(rel(H, "=", I_ * phidot),
+                                          rel(H * cos(theta), "=", J_ * wz)),))
     elif axial and "omega" in known:
-        work.step("beta", "acos(omega_z / omega)", f"acos({qty(s.axial_rate, 'rad/s')} / "
-                  f"{qty(known['omega'], 'rad/s')})", math.degrees(s.omega_angle), "deg")
+        work.step("beta", acos(wz / _sym("omega", known["omega"])), unit="deg")
     elif "omega" in known:  # with precession
-        w, p = known["omega"], known["precession"]
-        work.text("H^2 = (J omega_z)^2 + (I omega_e)^2 = J^2 omega^2 + (I^2 - J^2) omega^2 "
-                  "sin^2(beta), with H = I phidot")
-        work.step("beta", "asin(sqrt(((I phidot)^2 - (J omega)^2) / ((I^2 - J^2) omega^2)))",
-                  f"asin(sqrt(((({It}) ({qty(p, 'rad/s')}))^2 - (({Jt}) ({qty(w, 'rad/s')}))"
-                  f"^2) / ((({It})^2 - ({Jt})^2) ({qty(w, 'rad/s')})^2)))",
-                  math.degrees(s.omega_angle), "deg")
-        work.step("omega_z", "omega cos(beta)", value=s.axial_rate, unit="rad/s")
+        w, p = _sym("omega", known["omega"]), _sym("phidot", known["precession"])
+        H, omega_z, omega_e, omega, phidot = names("H omega_z omega_e omega phidot")
+        work.text(rel(H**2, "=", (J_ * omega_z)**2 + (I_ * omega_e)**2, "=",
+                      J_**2 * omega**2 + (I_**2 - J_**2) * omega**2 * sin(beta)**2),
+                  ", with ", rel(H, "=", I_ * phidot))
+        work.step("beta", asin(sqrt(((I_ * p) ** 2 - (J_ * w) ** 2) / ((I_ ** 2 - J_ ** 2)
+                                                                      * w ** 2))), unit="deg")
+        work.step("omega_z", w * cos(beta), unit="rad/s", substitute=False)
     elif axial:  # with precession
-        work.step("theta", "acos(J omega_z / (I phidot))", f"acos({Jt} "
-                  f"({qty(s.axial_rate, 'rad/s')}) / ({It} {qty(known['precession'], 'rad/s')}))",
-                  math.degrees(s.nutation_angle), "deg", note="(H cos(theta) = J omega_z)")
-        work.step("beta", "atan((J / I) tan(theta))", value=math.degrees(s.omega_angle),
-                  unit="deg")
+        H = names("H")[0]
+        work.step("theta", acos(J_ * wz / (I_ * _sym("phidot", known["precession"]))),
+                  unit="deg", note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
+        work.step("beta", atan(J_ / I_ * tan(theta)), unit="deg", substitute=False)
 
 
 def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = False) -> None:
     work.section("Rates, angles and periods")
-    Jt, It = qty(J, "kg*m^2"), qty(I, "kg*m^2")
     beta, theta, wz, we = s.omega_angle, s.nutation_angle, s.axial_rate, s.transverse_rate
+    J_, I_, beta_, theta_ = _sym("J", J), _sym("I", I), _sym("beta", beta), _sym("theta", theta)
+    wz_, we_ = _sym("omega_z", wz), _sym("omega_e", we)
+    phidot_, psidot_ = _sym("phidot", s.precession), _sym("psidot", s.spin)
+    H_, k, omega = names("H k omega")
     stated = {step.symbol for section in work.sections for step in section.steps}
     if "beta" not in stated:  # worked out above from the data: not repeated
-        work.step("beta", value=math.degrees(beta), unit="deg", note="angle from k to omega")
+        work.step("beta", value=math.degrees(beta), unit="deg",
+                  note=("angle from ", k, " to ", omega))
     if "theta" not in stated:
-        work.step("theta", "atan((I / J) tan(beta))", f"atan(({It} / {Jt}) tan({_deg(beta)}))",
-                  math.degrees(theta), "deg", note="angle from H to k")
+        work.step("theta", atan(I_ / J_ * tan(beta_)), unit="deg",
+                  note=("angle from ", H_, " to ", k))
     if "omega_z" not in stated:
         work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
-    work.step("omega_e", "omega_z tan(beta)", f"{qty(wz, 'rad/s')} tan({_deg(beta)})", we,
-              "rad/s", note="across the axis")
-    work.step("omega", "sqrt(omega_z^2 + omega_e^2)", value=s.omega, unit="rad/s")
-    H = work.step("H", "sqrt((J omega_z)^2 + (I omega_e)^2)", f"sqrt(({Jt} "
-                  f"{qty(wz, 'rad/s')})^2 + ({It} {qty(we, 'rad/s')})^2)", s.angular_momentum,
-                  "kg m^2/s")
-    work.step("phidot", "H / I", f"{qty(H, 'kg m^2/s')} / {It}", s.precession, "rad/s",
-              note="precession of k about H")
-    work.step("psidot", "(I - J) / I omega_z", f"({It} - {Jt}) / {It} ({qty(wz, 'rad/s')})",
-              s.spin, "rad/s", note="spin relative to the precessing frame")
-    work.step("T_p", "2 pi / phidot", value=s.precession_period, unit="s",
-              note="period of the axis about H")
-    work.step("T_w", "2 pi / |psidot|", value=s.body_wobble_period, unit="s",
-              note="period of omega and H about k, seen in the body")
-    work.step("body cone", "beta", value=math.degrees(s.body_cone_angle), unit="deg",
-              note="semi-angle of the cone omega traces about k in the body")
-    work.step("space cone", "|theta - beta|", value=math.degrees(s.space_cone_angle), unit="deg",
-              note="semi-angle of the cone omega traces about H in space")
+    work.step("omega_e", wz_ * tan(beta_), unit="rad/s", note="across the axis")
+    work.step("omega", sqrt(wz_ ** 2 + we_ ** 2), unit="rad/s", substitute=False)
+    work.step("H", sqrt((J_ * wz_) ** 2 + (I_ * we_) ** 2), unit="kg m^2/s")
+    H = s.angular_momentum
+    work.step("phidot", _sym("H", H) / I_, unit="rad/s",
+              note=("precession of ", k, " about ", H_))
+    work.step("psidot", (I_ - J_) / I_ * wz_, unit="rad/s",
+              note="spin relative to the precessing frame")
+    work.step("T_p", 2 * PI / phidot_, unit="s", substitute=False,
+              note=("period of the axis about ", H_))
+    work.step("T_w", 2 * PI / absolute(psidot_), unit="s", substitute=False,
+              note=("period of ", omega, " and ", H_, " about ", k, ", seen in the body"))
+    work.step(words("body cone"), beta_, unit="deg", substitute=False,
+              note=("semi-angle of the cone ", omega, " traces about ", k, " in the body"))
+    work.step(words("space cone"), absolute(theta_ - beta_), unit="deg", substitute=False,
+              note=("semi-angle of the cone ", omega, " traces about ", H_, " in space"))
+    I0, J0, th, be, ps, ph, wz0, we0 = names("I J theta beta psidot phidot omega_z omega_e")
     if s.motion == "direct":
-        work.text("I > J (prolate): theta > beta, psidot has the sense of phidot; the body "
-                  "cone rolls on the outside of the space cone: direct precession.")
+        work.text(rel(I0, ">", J0), " (prolate): ", rel(th, ">", be), ", ", ps, " has the "
+                  "sense of ", ph, "; the body cone rolls on the outside of the space cone: "
+                  "direct precession.")
     else:
-        work.text("J > I (oblate): beta > theta, psidot is against phidot; the body cone rolls "
-                  "with the space cone inside it: retrograde precession.")
-    work.check(f"omega_z = psidot + phidot cos(theta): {num(wz)} = {num(s.spin)} + "
-               f"{num(s.precession)} ({num(math.cos(theta))}) = "
-               f"{num(s.spin + s.precession * math.cos(theta))} rad/s (Eq. 11.8)")
-    work.check(f"omega_e = phidot sin(theta): {num(we)} = "
-               f"{num(s.precession * math.sin(theta))} rad/s")
-    work.check(f"H along k: J omega_z = {num(J * wz)} kg m^2/s, H cos(theta) = "
-               f"{num(H * math.cos(theta))} kg m^2/s")
+        work.text(rel(J0, ">", I0), " (oblate): ", rel(be, ">", th), ", ", ps, " is against ",
+                  ph, "; the body cone rolls with the space cone inside it: retrograde "
+                  "precession.")
+    work.check(rel(wz0, "=", ps + ph * cos(th)), ": ",
+               rel(q(wz), "=", q(s.spin) + q(s.precession) * tup(q(math.cos(theta))), "=",
+                   q(s.spin + s.precession * math.cos(theta), "rad/s")), " (Eq. 11.8)")
+    work.check(rel(we0, "=", ph * sin(th)), ": ",
+               rel(q(we), "=", q(s.precession * math.sin(theta), "rad/s")))
+    work.check(H_, " along ", k, ": ", rel(J0 * wz0, "=", q(J * wz, "kg m^2/s")), ", ",
+               rel(H_ * cos(th), "=", q(H * math.cos(theta), "kg m^2/s")))
 
     work.answer("precession", "phidot", [s.precession], "rate")
     work.answer("spin", "psidot", [s.spin], "rate")
@@ -209,20 +235,20 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
     work.answer("precession_period", "T_p", [s.precession_period], "time")
     work.answer("body_wobble_period", "T_w", [s.body_wobble_period], "time")
     work.answer("body_cone_angle", "beta", [s.body_cone_angle], "angle")
-    work.answer("space_cone_angle", "|theta - beta|", [s.space_cone_angle], "angle")
+    work.answer("space_cone_angle", absolute(th - be), [s.space_cone_angle], "angle")
     work.answer("motion", "motion", [s.motion], None)
     n = s.spin / s.precession
     if magnitude:  # the books' convention: a ratio of magnitudes, the sense in words
-        n = work.step("n", "|psidot| / phidot", f"{qty(abs(s.spin), 'rad/s')} / "
-                      f"{qty(s.precession, 'rad/s')}", abs(n), "", note="the ratio of the "
-                      f"spin to the precession (Meriam's n), the precession {s.motion}")
+        n = work.step("n", absolute(psidot_) / phidot_, unit="", note=(
+            "the ratio of the spin to the precession (Meriam's ", *names("n"),
+            f"), the precession {s.motion}"))
     else:
-        work.step("n", "psidot / phidot", f"{qty(s.spin, 'rad/s')} / "
-                  f"{qty(s.precession, 'rad/s')}", n, "", note="the ratio of the spin to the "
-                  "precession (Meriam's n); negative: retrograde")
+        work.step("n", psidot_ / phidot_, unit="", note=(
+            "the ratio of the spin to the precession (Meriam's ", *names("n"),
+            "); negative: retrograde"))
     work.answer("spin_ratio", "n", [n], "dimensionless")
-    work.check(f"(I - J) cos(theta) / J = {num((I - J) * math.cos(theta) / J)}; "
-               f"psidot / phidot = {num(s.spin / s.precession)}")
+    work.check(rel((I0 - J0) * cos(th) / J0, "=", q((I - J) * math.cos(theta) / J)), "; ",
+               rel(ps / ph, "=", q(s.spin / s.precession)))
 
 
 KIND = Kind(

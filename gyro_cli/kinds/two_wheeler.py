@@ -28,7 +28,14 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.work import Work, num, qty
+from ..core.expr import Expr, Sym, atan, cos, sin
+from ..core.prose import cross, deriv, names, plus, q, qvec, rel, tup
+from ..core.work import Work, num
+
+#: the machine's axes and the symbols its prose names (values are in the steps' trees)
+x, y, z = names("x y z")
+m0, g0, h0, v0, R0, N0, F0, G0, theta0 = names("m g h v R N F G theta")
+H0, C0, wp0, Cg0, Cc0 = names("H C omega_p C_g C_c")
 
 
 def positive(given: Given, *keys: str) -> None:
@@ -50,7 +57,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     v, R = given["speed"], given["turn_radius"]
     turn = given.word("turn", "left")
     s = V.two_wheeler(m, g, h, Iw, rw, IE, G, sense, v, R)
-    sign = "+" if sense == "same" else "-"
     if not all(math.isfinite(q) for q in (s.gyroscopic_couple, s.centrifugal_couple, m * g * h,
                                            s.wheel_rate)):
         raise InputError("these data are outside what gyro can compute reliably in double "
@@ -58,60 +64,63 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                                key="given")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("machine axes: x forward, y to the left, z up. Going forward the road wheels "
-              "roll: their spin vector points to the left (+y). The engine's points the same "
-              "way (engine_sense: same) or the other way (opposite).")
-    work.text("H: the angular momentum of the spinning parts; omega_p: the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotors C = omega_p x "
-              "H (Eq. 11.29); the machine feels the reactive "
-              "couple -C. Couples below are about the fore-and-aft line through the contact "
+    work.text("machine axes: ", x, " forward, ", y, " to the left, ", z, " up. Going forward the "
+              "road wheels roll: their spin vector points to the left ", tup(plus(y)), ". The "
+              "engine's points the same way (engine_sense: same) or the other way (opposite).")
+    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
+              "turn's angular velocity, about the vertical); couple on the rotors ",
+              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the machine feels the reactive "
+              "couple ", -C0, ". Couples below are about the fore-and-aft line through the contact "
               "points, positive overturning the machine outward (away from the centre).")
 
+    v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
+    m_, g_, h_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("h", h, "m")
+    G_ = Sym("G", G)
     work.section("Rates")
-    work.step("omega_w", "v / r_w", f"{qty(v, 'm/s')} / {qty(rw, 'm')}", s.wheel_rate, "rad/s",
-              note="road wheels (rolling)")
-    work.step("omega_E", "G omega_w", f"{num(G)} ({qty(s.wheel_rate, 'rad/s')})",
-              G * s.wheel_rate, "rad/s", note=f"engine, {sense} sense as the wheels")
-    work.step("omega_p", "v / R", f"{qty(v, 'm/s')} / {qty(R, 'm')}", s.precession, "rad/s",
-              note="precession about the vertical")
+    omega_w = Sym("omega_w", work.step("omega_w", v_ / r_w, unit="rad/s",
+                                       note="road wheels (rolling)"), "rad/s")
+    work.step("omega_E", G_ * omega_w, unit="rad/s", note=f"engine, {sense} sense as the wheels")
+    work.step("omega_p", v_ / R_, unit="rad/s", note="precession about the vertical")
 
     work.section("Vector rule (upright)")
     H = s.gyroscopic_couple / s.precession if s.precession else 0.0
-    work.step("H", f"(2 I_w {sign} G I_E) omega_w", f"(2 ({qty(Iw, 'kg*m^2')}) {sign} {num(G)} "
-              f"({qty(IE, 'kg*m^2')})) ({qty(s.wheel_rate, 'rad/s')})",
-              (2 * Iw + (1 if sense == 'same' else -1) * G * IE) * s.wheel_rate, "kg m^2/s",
-              note="along +y (left) if positive")
+    # the spinning parts' inertia in the wheels' sense: 2 I_w + G I_E, or - with the engine against
+    wheels, engine = 2 * Sym("I_w", Iw, "kg m^2"), G_ * Sym("I_E", IE, "kg m^2")
+    rotors: Expr = wheels + engine if sense == "same" else wheels - engine
+    work.step("H", rotors * omega_w, unit="kg m^2/s",
+              note=("along ", plus(y), " (left) if positive"))
     wp = V.steering_precession(v, R, turn)
     Hv = V.scale(H, V.LEFT)
-    work.text(f"turning {turn}: omega_p = (0, 0, {num(wp[2])}) rad/s; "
-              f"omega_p x H = ({num(V.couple_on_rotor(wp, Hv)[0])}, 0, 0) N m on the rotors; "
-              f"the reactive couple on the machine, ({num(V.reactive_couple(wp, Hv)[0])}, 0, 0) "
-              "N m, lifts the " + ("inner side: it overturns the machine outward"
-                                   if H >= 0 else "outer side: it leans the machine inward"))
+    work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
+              rel(cross(wp0, H0), "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              " on the rotors; the reactive couple on the machine, ",
+              qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"),
+              ", lifts the " + ("inner side: it overturns the machine outward"
+                                if H >= 0 else "outer side: it leans the machine inward"))
 
     work.section("Overturning couples, upright")
-    work.step("C_g", f"(2 I_w {sign} G I_E) v^2 / (R r_w)", f"(2 ({qty(Iw, 'kg*m^2')}) {sign} "
-              f"{num(G)} ({qty(IE, 'kg*m^2')})) ({qty(v, 'm/s')})^2 / ({qty(R, 'm')} "
-              f"{qty(rw, 'm')})", s.gyroscopic_couple, "N*m", ref="Eq. 11.29")
-    work.step("C_c", "m v^2 h / R", f"{qty(m, 'kg')} ({qty(v, 'm/s')})^2 {qty(h, 'm')} / "
-              f"{qty(R, 'm')}", s.centrifugal_couple, "N*m", note="centrifugal force m v^2 / R "
-              "at the centre of mass")
+    C_g = work.step("C_g", rotors * v_ ** 2 / (R_ * r_w), unit="N*m", ref="Eq. 11.29")
+    C_c = work.step("C_c", m_ * v_ ** 2 * h_ / R_, unit="N*m", note=("centrifugal force ",
+                                                           m0 * v0 ** 2 / R0,
+                                                           " at the centre of mass"))
 
-    work.section("Heel: free body of the machine heeled inward by theta")
-    work.text("road: normal force N = m g up and friction F = m v^2 / R toward the centre, at "
-              "the contact; G at h sin(theta) inward and h cos(theta) up from it. Moments about "
-              "G along x: h (F cos(theta) - N sin(theta)) = dH/dt = -omega_p H cos(theta) (the "
-              "spin axes tilt by theta), that is")
-    work.text("m g h sin(theta) = (C_g + C_c) cos(theta)")
-    work.step("theta", "atan((C_g + C_c) / (m g h))", f"atan(({qty(s.gyroscopic_couple, 'N m')} "
-              f"+ {qty(s.centrifugal_couple, 'N m')}) / ({qty(m, 'kg')} {qty(g, 'm/s^2')} "
-              f"{qty(h, 'm')}))", math.degrees(s.heel), "deg")
+    work.section("Heel: free body of the machine heeled inward by ", theta0)
+    work.text("road: normal force ", rel(N0, "=", m0 * g0), " up and friction ",
+              rel(F0, "=", m0 * v0 ** 2 / R0), " toward the centre, at the contact; ", G0, " at ",
+              h0 * sin(theta0), " inward and ", h0 * cos(theta0), " up from it. Moments about ",
+              G0, " along ", x, ": ", rel(h0 * (F0 * cos(theta0) - N0 * sin(theta0)), "=",
+                                         deriv(H0), "=", -wp0 * H0 * cos(theta0)),
+              " (the spin axes tilt by ", theta0, "), that is")
+    work.text(rel(m0 * g0 * h0 * sin(theta0), "=", (Cg0 + Cc0) * cos(theta0)))
+    work.step("theta", atan((Sym("C_g", C_g, "N m") + Sym("C_c", C_c, "N m")) / (m_ * g_ * h_)),
+              unit="deg")
     if s.heel < 0:
         work.warn("the engine's reversed gyroscopic couple outweighs the centrifugal one: the "
                   "machine leans outward")
     balance = m * g * h * math.sin(s.heel) - (s.gyroscopic_couple + s.centrifugal_couple) * \
         math.cos(s.heel)
-    work.check(f"m g h sin(theta) - (C_g + C_c) cos(theta) = {qty(balance, 'N m')}")
+    work.check(rel(m0 * g0 * h0 * sin(theta0) - (Cg0 + Cc0) * cos(theta0), "=",
+                   q(balance, "N m")))
     work.answer("heel_angle", "theta", [s.heel], "angle")
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")

@@ -265,6 +265,18 @@ def _phidot_at(k: dict, B: float, d: float, one_minus0: float, one_plus0: float)
     return (B - k["gamma"] * d) / (one_minus * one_plus)
 
 
+def limit_precession_terms(nut: Nutation, start: Start) -> tuple[tuple[float, float, float],
+                                                                  ...]:
+    """For u1 and u2: (beta - gamma u, 1 - u, 1 + u) without cancellation, from the roots'
+    offsets d = u - u0: beta - gamma u = B - gamma d with B = phidot0 sin^2(theta0), and
+    1 -+ u = (1 -+ u0) -+ d. phidot there is the first over the product of the other two
+    (Eq. 11.16), as `analyse` computes it; on a pole (1 - u or 1 + u is 0) see _phidot_at."""
+    _, s0 = _cos_sin(start.theta0)
+    B = start.precession0 * s0 * s0
+    return tuple((B - nut.gamma * d, nut.one_minus_u0 - d, nut.one_plus_u0 + d)
+                 for d in nut.d_roots[:2])
+
+
 def _mean_precession(k: dict, B: float, d1: float, d2: float, d3: float, one_minus0: float,
                      one_plus0: float) -> float:
     """(phi advance over a period) / period, third-kind integrals in Carlson form:

@@ -1,4 +1,4 @@
-"""Question banks for learning systems: what the three formats share.
+"""Question banks for learning systems: what the four formats share.
 
 `gyro export` (commands/export.py) solves every variant of a problem and hands
 the renderers here a `ProblemBank`: per variant the question text (the problem's
@@ -6,8 +6,8 @@ the renderers here a `ProblemBank`: per variant the question text (the problem's
 worked answer as HTML (MathML formulas) for the feedback, and one `Blank` per
 number the student types, each with the solver's value in the unit the file
 asks for and the half-width the problem's tolerance allows around it. The
-renderers (`bank_moodle`, `bank_qti`, `bank_prairielearn`) only lay these out;
-none of them computes an answer.
+renderers (`bank_moodle`, `bank_qti`, `bank_blackboard`, `bank_prairielearn`)
+only lay these out; none of them computes an answer.
 
 Everything from a problem file is text to escape here: `xml_text` and
 `xml_attr` drop the characters XML 1.0 cannot hold and escape the rest,
@@ -52,6 +52,7 @@ class Variant:
     statement_html: str
     feedback_html: str
     blanks: list[Blank] = field(default_factory=list)
+    unasked: list[str] = field(default_factory=list)  # its word answers ("motion")
 
 
 @dataclass

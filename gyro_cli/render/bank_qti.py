@@ -1,6 +1,6 @@
 """A question bank as an IMS QTI 1.2 package (a zip with ``imsmanifest.xml``), the
 form Canvas (Classic Quizzes) and D2L import (Blackboard reads QTI 2.1, without
-numeric questions: docs/course.md).
+numeric questions: it gets an Upload Questions file instead, bank_blackboard).
 
 One QTI file per problem: an ``<assessment>`` named after the problem whose one
 section holds its items, so the system makes a quiz and a question bank of

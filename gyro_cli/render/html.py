@@ -30,7 +30,8 @@ from .mathprint import text as plain_text
 from .mathml import MathMLPrinter, math_element, symbol_mathml
 from .mathparse import spans, try_parse
 from .mathtree import BinOp, Group, Node, Num, Quantity, Rel
-from .writeup import _CITED, _KEYS, _answer_lhs, _split_keys, _step_pieces, _tag, file_keys, width
+from .exprnodes import prose_nodes
+from .writeup import _CITED, _KEYS, _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, file_keys, width
 
 def escape(text: str, quote: bool = True) -> str:
     """A string from a file in HTML (the one place they meet it): markup escaped, and a
@@ -257,9 +258,16 @@ def _step_html(step) -> str:
     if step.symbol:
         lhs, pieces = _step_pieces(step)  # what does not parse is a Tex node: its plain text
         tag, rest = _tag(step)
-        notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text else [])
+        prose = getattr(step, "prose", None)
+        notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text and prose is None
+                                                   else [])
         math, wide = _equation(lhs, pieces)
-        return _eq_div(math, wide, tag, " ".join(notes))
+        out = _eq_div(math, wide, tag, " ".join(notes))
+        if prose is not None:  # a note of words and trees
+            out += f'<p class="stepnote">{prose_pieces_html(prose)}</p>'
+        return out
+    if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
+        return _prose_step_html(step.prose)
     text = step.text.strip()
     tag = ""
     cited = _CITED.search(text)
@@ -274,6 +282,42 @@ def _step_html(step) -> str:
             wide = width(tree) > ROW_WIDTH + 8
         return _eq_div(math, wide, tag)
     return f"<p>{prose_html(step.text.strip())}</p>"
+
+
+def _relation_html(tree: Node, tag: str = "") -> str:
+    """A displayed relation: one chain of one kind of relation in rows, else as it is."""
+    if isinstance(tree, Rel) and tree.rest and tree.first is not None \
+            and len({op for op, _ in tree.rest}) == 1:
+        math, wide = _equation(tree.first, [rhs for _, rhs in tree.rest], tree.rest[0][0])
+    else:
+        math = _math(tree, display=True)
+        wide = width(tree) > ROW_WIDTH + 8
+    return _eq_div(math, wide, tag)
+
+
+def _prose_step_html(prose) -> str:
+    """A line written as words and trees: a relation displayed, else a paragraph."""
+    equation = prose.equation()
+    if equation is not None:
+        rel, tag = equation
+        return _relation_html(prose_nodes(type(prose)((rel,)))[0], tag)
+    return f"<p>{prose_pieces_html(prose)}</p>"
+
+
+def _warning_html(text: str, solution) -> str:
+    prose = solution.warning_prose.get(text)
+    return prose_html(text) if prose is None else prose_pieces_html(prose)
+
+
+def prose_pieces_html(prose) -> str:
+    """A sentence's words escaped (a key of the file as words), its trees inline MathML."""
+    out = []
+    for piece in prose_nodes(prose):
+        if isinstance(piece, str):
+            out += [escape(part) for _, part in _split_keys(piece)]
+        else:
+            out.append(_inline(piece))
+    return "".join(out)
 
 
 # ---- a worked answer --------------------------------------------------------------
@@ -300,6 +344,8 @@ def _given_table(result: Result, level: int) -> str:
         sym = _math(symbol) if symbol is not None else escape(g.symbol)
         text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
         note = f" ({escape(g.note)})" if g.note else ""
+        if g.note_prose is not None:
+            note = f" ({prose_pieces_html(g.note_prose)})"
         rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{escape(text)}{note}</td>"
                     f"<td>{_quantity(g.si_value, g.si_unit)}</td></tr>")
     return (_heading(level, "Given") + _table_box("Given") + '<table><thead><tr><th scope="col">symbol</th>'
@@ -317,7 +363,7 @@ def _answers_table(result: Result, level: int) -> str:
                          + (f" ({escape(label)})" if label else ""))
         lhs = ""
         if _answer_lhs(answer):
-            tree = try_parse(answer.symbol, units=False)
+            tree = answer_symbol(answer)
             lhs = _math(tree) if tree is not None else ""
         values = ", ".join(parts) if parts else "none"
         rows.append(f'<tr id="{escape(_answer_id(result, name))}"><th scope="row">'
@@ -380,7 +426,8 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str,
     out.append(animation)
     out.append(_given_table(result, level + 1))
     for section in solution.sections:
-        out.append(_heading(level + 1, prose_html(section.title)))
+        out.append(_heading(level + 1, prose_html(section.title) if section.prose is None
+                            else prose_pieces_html(section.prose)))
         out += [_step_html(step) for step in section.steps]
     if solution.checks:
         out.append(_heading(level + 1, "Check"))
@@ -389,7 +436,8 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str,
     if solution.warnings:
         out.append(f'<section class="warnings" aria-label="warnings">'
                    f"{_heading(level + 1, 'Warnings')}<ul>"
-                   + "".join(f"<li>{prose_html(w)}</li>" for w in solution.warnings)
+                   + "".join(f"<li>{_warning_html(w, solution)}</li>"
+                             for w in solution.warnings)
                    + "</ul></section>")
     out.append("</article>")
     return "\n".join(x for x in out if x)

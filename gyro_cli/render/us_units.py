@@ -13,6 +13,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..core.expr import Sym, map_syms, substitution
+from ..core.prose import Quantity as Quantity_, map_values
 from ..core.work import GivenLine, Section, Solution, Step, num
 from ..solving.solve import Reported, Result
 from .mathparse import spans, try_parse
@@ -101,16 +102,43 @@ def _us_symbol(sym: Sym) -> Sym:
     return Sym(sym.name, value, unit)
 
 
+def _us_quantity(quantity: Quantity_) -> Quantity_:
+    value, unit = convert(quantity.si, quantity.unit)
+    if unit == quantity.unit:  # a unit of both systems: as written (label, digits and all)
+        return quantity
+    return Quantity_(value, unit)  # converted: to 4 figures, as every converted value
+
+
 def _step(step: Step) -> Step:
     value, unit = (convert(step.value, step.unit) if step.value is not None
                    else (None, step.unit))
+    if step.prose is not None:  # words and trees: the quantities inside converted
+        prose = step.prose.map(lambda tree: map_values(tree, _us_symbol, _us_quantity))
+        step = dataclasses.replace(step, prose=prose, text=prose.text)
+        if not step.symbol:
+            return step
     if step.expr is not None:  # the values inside the tree are converted, nothing parsed
         view = map_syms(step.expr, _us_symbol)
         return dataclasses.replace(step, substitution=substitution(view) if step.substitution
-                                   else "", value=value, unit=unit, text=_text(step.text),
+                                   else "", value=value, unit=unit,
+                                   text=step.text if step.prose else _text(step.text),
                                    view=view, si=step.si or (step.value, step.unit))
     return dataclasses.replace(step, substitution=_text(step.substitution), value=value,
-                               unit=unit, text=_text(step.text))
+                               unit=unit, text=step.text if step.prose else _text(step.text))
+
+
+def _warnings(solution: Solution) -> tuple[list[str], dict]:
+    """The warnings in US units, and those written as words and trees by their new text."""
+    texts, proses = [], {}
+    for text in solution.warnings:
+        prose = solution.warning_prose.get(text)
+        if prose is None:
+            texts.append(_text(text))
+            continue
+        prose = prose.map(lambda tree: map_values(tree, _us_symbol, _us_quantity))
+        texts.append(prose.text)
+        proses[prose.text] = prose
+    return texts, proses
 
 
 def _given(line: GivenLine) -> GivenLine:
@@ -139,13 +167,15 @@ def to_us(result: Result, given: bool = True) -> Result:
         if unit in US:
             exact.setdefault((num(value), US[unit][0]), value)
     _Convert.exact = exact
+    warnings, warning_prose = _warnings(solution)
     converted = Solution(
         given=[_given(g) for g in solution.given] if given else list(solution.given),
-        sections=[Section(s.title, [_step(step) for step in s.steps]) for s in solution.sections],
+        sections=[Section(s.title, [_step(step) for step in s.steps], prose=s.prose)
+                  for s in solution.sections],
         answers=solution.answers,
-        warnings=[_text(w) for w in solution.warnings],
+        warnings=warnings,
         checks=[_step(step) for step in solution.checks],
-        system="US")
+        system="US", warning_prose=warning_prose)
     # an answer is converted only where the file asked for no unit (SI by default)
     answers = {name: _answer(a) if result.problem.find.get(name) is None else a
                for name, a in result.answers.items()}

@@ -21,10 +21,10 @@ import re
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
-from .exprnodes import formula_node, substitution_node
+from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
 from .mathparse import is_word, spans, try_parse
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
-from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text
+from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Tex, Text, Tuple
 
 __all__ = ["markdown", "latex", "standalone", "math", "mixed", "text_escape", "symbol_tex"]
 
@@ -231,7 +231,8 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
 # ---- steps ------------------------------------------------------------------
 
 def _step_pieces(step) -> tuple[Node | None, list[Node]]:
-    lhs = try_parse(step.symbol, units=False) or _tex(step.symbol)
+    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or \
+        try_parse(step.symbol, units=False) or _tex(step.symbol)
     pieces: list[Node] = []
     tree = getattr(step, "shown", None)
     if tree is not None:  # built from an expression tree: typeset from it, nothing parsed
@@ -267,23 +268,40 @@ def _step_display(step, markdown: bool) -> tuple[str, list[str]]:
     notes = []
     if rest:
         notes.append(f"({rest})")
-    if step.text:
+    if step.text and getattr(step, "prose", None) is None:
         notes.append(step.text)
     note = " ".join(notes)
     total = width(lhs) + sum(width(p) + 3 for p in pieces)
     widest = total if total <= WIDTH else \
         max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
-    short_note = note and len(note) <= 48 and widest + len(note) + 4 <= WIDTH + 8
+    beside = ""  # a short note, set beside the equation
+
+    def short(text: str) -> bool:
+        return len(text) <= 48 and widest + len(text) + 4 <= WIDTH + 8
+
+    if getattr(step, "prose", None) is not None:  # a note of words and trees
+        maths = [p for p in prose_nodes(step.prose) if not (isinstance(p, str) and not p.strip())]
+        if not note and short(step.text) and len(maths) == 1 and not isinstance(maths[0], str):
+            beside = printer.doprint(maths[0])  # a note that is one formula: = 0.03283 deg/h
+        elif not note and short(step.text):
+            beside = "\\text{" + prose_latex(step.prose) + "}"
+        else:
+            if note:
+                after.append(note)
+            after.append(Typeset(prose_latex(step.prose, markdown)))
+        note = ""
+    if note and short(note):
+        beside = _note_math(note)
+    elif note:
+        after.append(note)
     if total <= WIDTH:
         body = " = ".join([left] + [printer.doprint(p) for p in pieces])
     else:
         rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
         body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
             "\n\\end{aligned}"
-    if short_note:
-        body += f" \\qquad {_note_math(note)}"
-    elif note:
-        after.append(note)
+    if beside:
+        body += f" \\qquad {beside}"
     if tag:
         body += f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}"
     return body, after
@@ -302,9 +320,13 @@ def _steps(steps, markdown: bool) -> list[str]:
         if step.symbol:
             body, after = _step_display(step, markdown)
             out += _display(body, markdown)
-            out += [_prose(line, markdown) for line in after]
+            out += [line if isinstance(line, Typeset) else _prose(line, markdown)
+                    for line in after]
             if after:
                 out.append("")
+            continue
+        if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
+            out += _prose_step(step.prose, markdown)
             continue
         text = step.text.strip()
         tag = ""
@@ -322,6 +344,56 @@ def _steps(steps, markdown: bool) -> list[str]:
         else:
             out += [_prose(text, markdown), ""]
     return out
+
+
+class Typeset(str):
+    """A line already set (a note written as words and trees)."""
+
+
+def _prose_step(prose, markdown: bool) -> list[str]:
+    """A line written as words and trees: one relation displayed (with the chapter's
+    equation number it cites), else a paragraph with the maths inline."""
+    equation = prose.equation()
+    if equation is not None:
+        rel, tag = equation
+        tree = prose_nodes(type(prose)((rel,)))[0]
+        number = (f" \\qquad \\text{{({tag})}}" if markdown else f" \\tag{{{tag}}}") if tag else ""
+        if width(tree) <= WIDTH or not isinstance(tree, Rel):
+            return _display(LatexPrinter(True).doprint(tree) + number, markdown)
+        return _display("\\begin{aligned}\n" + " \\\\\n".join(_rel_rows(tree)) +
+                        "\n\\end{aligned}" + number, markdown)
+    return [prose_latex(prose, markdown), ""]
+
+
+def prose_latex(prose, markdown: bool = False) -> str:
+    """A sentence's words escaped (a key of the file as words) and its trees as inline
+    maths."""
+    escape = _md_escape if markdown else text_escape
+    out = []
+    for piece in prose_nodes(prose):
+        if isinstance(piece, str):
+            out += [escape(part) for _, part in _split_keys(piece)]
+        else:
+            out.append(f"${LatexPrinter(False).doprint(piece)}$")
+    return "".join(out)
+
+
+def _given_cell(g, markdown: bool) -> str:
+    """The datum as written, and its note (words, or words and trees)."""
+    prose = getattr(g, "note_prose", None)
+    if prose is not None:
+        return _prose(_given_text(g), markdown) + " (" + prose_latex(prose, markdown) + ")"
+    return _prose(_given_text(g) + (f" ({g.note})" if g.note else ""), markdown)
+
+
+def _title(section, markdown: bool) -> str:
+    prose = getattr(section, "prose", None)
+    return _prose(section.title, markdown) if prose is None else prose_latex(prose, markdown)
+
+
+def _warning(text: str, solution, markdown: bool) -> str:
+    prose = getattr(solution, "warning_prose", {}).get(text)
+    return _prose(text, markdown) if prose is None else prose_latex(prose, markdown)
 
 
 def _is_equation(tree: Node) -> bool:
@@ -371,11 +443,20 @@ def _md_escape(text: str) -> str:
 def _answer_lhs(answer) -> str:
     """``symbol = `` before an answer's values; nothing when the symbol is the name in words
     (``motion: retrograde``)."""
-    if try_parse(answer.symbol, units=False) is None or answer.symbol == answer.name \
+    tree = answer_symbol(answer)
+    if tree is None or answer.symbol == answer.name \
             and not (answer.values and not isinstance(answer.values[0], str)) \
             and answer.symbol.isalpha() and len(answer.symbol) > 2:
         return ""
-    return math(answer.symbol, units=False) + " = "
+    if isinstance(tree, Group) and isinstance(tree.body, Tuple) and len(answer.values) > 1:
+        return ""  # (I_1, I_2, I_3): one symbol per value, not the triple before each
+    return LatexPrinter(False).doprint(tree) + " = "
+
+
+def answer_symbol(answer) -> Node | None:
+    """An answer's symbol as typesetting nodes (its tree, or its one name)."""
+    return symbol_node(answer.symbol, getattr(answer, "symbol_expr", None)) or \
+        try_parse(answer.symbol, units=False)
 
 
 def _answer_parts(answer) -> list[tuple[str, str]]:
@@ -422,11 +503,10 @@ def _markdown(result: Result) -> str:
         lines += [f"> {_prose(note, True)}", ""]
     lines += ["### Given", "", f"| | as given | {solution.system} |", "|---|---|---|"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
         lines.append(f"| ${math(g.symbol, units=False)}$ | "
-                     f"{_md_cell(_prose(_given_text(g) + note, True))} | ${_si(g)}$ |")
+                     f"{_md_cell(_given_cell(g, True))} | ${_si(g)}$ |")
     for section in solution.sections:
-        lines += ["", f"### {_prose(section.title, True)}", ""]
+        lines += ["", f"### {_title(section, True)}", ""]
         lines += _steps(section.steps, True)
     if solution.checks:
         lines += ["", "### Check", ""]
@@ -439,7 +519,7 @@ def _markdown(result: Result) -> str:
         lines.append(f"- **{name}**: " + ", ".join(parts))
     if solution.warnings:
         lines += ["", "### Warnings", ""]
-        lines += [f"- {_prose(w, True)}" for w in solution.warnings]
+        lines += [f"- {_warning(w, solution, True)}" for w in solution.warnings]
     return _squeeze("\n".join(lines)) + "\n"
 
 
@@ -479,11 +559,10 @@ def _latex(result: Result, level: str) -> str:
     lines += ["", "\\subsubsection*{Given}", "", f"\\begin{{{table}}}{{@{{}}lp{{0.5\\linewidth}}l@{{}}}}",
               f"& as given & {solution.system} \\\\ \\hline"]
     for g in solution.given:
-        note = f" ({g.note})" if g.note else ""
-        lines.append(f"${math(g.symbol, units=False)}$ & {_prose(_given_text(g) + note, False)} & ${_si(g)}$ \\\\")
+        lines.append(f"${math(g.symbol, units=False)}$ & {_given_cell(g, False)} & ${_si(g)}$ \\\\")
     lines.append(f"\\end{{{table}}}")
     for section in solution.sections:
-        lines += ["", f"\\subsubsection*{{{_prose(section.title, False)}}}", ""]
+        lines += ["", f"\\subsubsection*{{{_title(section, False)}}}", ""]
         lines += _steps(section.steps, False)
     if solution.checks:
         lines += ["", "\\subsubsection*{Check}", ""]
@@ -493,13 +572,13 @@ def _latex(result: Result, level: str) -> str:
         lhs = _answer_lhs(answer)
         parts = [f"${lhs}{body}$" + (f" ({text_escape(label)})" if label else "")
                  for body, label in _answer_parts(answer)]
-        head = "" if lhs and symbol_tex(name) == math(answer.symbol, units=False) else \
+        head = "" if lhs and symbol_tex(name) + " = " == lhs else \
             f"\\textbf{{{text_escape(name.replace('_', ' '))}}}: "
         lines.append(f"  \\item {head}" + ", ".join(parts))
     lines.append("\\end{itemize}")
     if solution.warnings:
         lines += ["", "\\subsubsection*{Warnings}", "", "\\begin{itemize}"]
-        lines += [f"  \\item {_prose(w, False)}" for w in solution.warnings]
+        lines += [f"  \\item {_warning(w, solution, False)}" for w in solution.warnings]
         lines.append("\\end{itemize}")
     return _squeeze("\n".join(lines)) + "\n"
 

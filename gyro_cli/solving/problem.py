@@ -291,7 +291,19 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
         return parse_particles(text, key), text
     value, quantity = guarded(units.parse, text, param.dimension, key,
                               weight=param.name == "weight")
-    return representable(value, text, param.dimension, key), quantity
+    value = representable(value, text, param.dimension, key)
+    within_limits(param, value, text, key)
+    return value, quantity
+
+
+def within_limits(param: Param, value: float, text: Any, key: str) -> None:
+    """Refuse a value outside the limits the param declares (positive, a range, ...), in
+    one style for every kind: ``expected 0 deg <= obliquity < 90 deg, got '95 deg'; why``."""
+    if not param.limits_broken(value):
+        return
+    unit = units.si_text(param.dimension)
+    reason = f"; {param.reason}" if param.reason else ""
+    raise InputError(f"expected {param.expectation(unit)}, got {shown(text)}{reason}", key=key)
 
 
 # The least magnitude (SI) of a given value that is not zero. The chapter's equations

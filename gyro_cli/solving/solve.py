@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from ..core import units
 from ..core.body import build_body
 from ..core.errors import InputError
-from ..core.expr import Add, Call, Const, Div, Let, Mul, Neg, Num, Pow, Sub, Sym
+from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
 from .problem import Problem, load, params_of
 from ..core.work import GivenLine, Solution, Work, num
 
@@ -25,6 +25,7 @@ class Reported:
     si_values: list
     si_unit: str | None
     labels: list[str]
+    symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
 
 
 @dataclass
@@ -102,7 +103,7 @@ def _solve(problem: Problem) -> Result:
                                  key=f"find.{name}")
         answers[name] = Reported(name, _symbol_in(answer.symbol, answer.dimension, unit),
                                  values, unit, list(answer.si_values), answer.si_unit,
-                                 answer.labels)
+                                 answer.labels, answer.symbol_expr)
     return Result(problem, solution, answers)
 
 
