@@ -18,6 +18,11 @@ machine, and peak RSS at 36,000 files within 30 MB of the peak at 3,600. The
 check must pass on every file, so the figure is not flattered by skipped work.
 
     .venv/bin/python benchmarks/bench_bank.py [--files 3600 36000] [--runs 3] [--jobs N]
+                                              [--variants]
+
+``--variants`` makes the bank with ``gyro vary`` instead (every bundled problem that
+has a ``vary:`` block, the same number of variants of each): no two files alike, as
+in a real bank, so nothing is flattered by texts that repeat from copy to copy.
 """
 
 from __future__ import annotations
@@ -58,6 +63,19 @@ def make_bank(directory: Path, count: int) -> int:
     return copies * len(sources)
 
 
+def make_variant_bank(directory: Path, count: int) -> int:
+    """``count`` files (rounded up) of distinct numbers: ``gyro vary`` of each bundled
+    problem that has a ``vary:`` block, as a real bank is made (no two files alike)."""
+    sources = [p for p in sorted((ROOT / "problems").glob("*.yaml"))
+               if any(line.startswith("vary:") for line in p.read_text().splitlines())]
+    each = -(-count // len(sources))
+    for source in sources:
+        subprocess.run(gyro_cmd() + ["vary", str(source), "-n", str(each), "-o",
+                                     str(directory / source.stem)],
+                       check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
+    return each * len(sources)
+
+
 def measure(cmd: list[str], out: Path | None = None) -> tuple[float, float, int]:
     """(wall s, CPU s of the process and its children, peak RSS in bytes of the largest).
 
@@ -90,10 +108,10 @@ def gyro_cmd() -> list[str]:
     return [str(gyro)] if gyro.exists() else [sys.executable, "-m", "gyro_cli"]
 
 
-def bench(count: int, runs: int, jobs: int | None) -> dict:
+def bench(count: int, runs: int, jobs: int | None, variants: bool = False) -> dict:
     with tempfile.TemporaryDirectory(prefix="gyro-bank-") as tmp:
         bank = Path(tmp) / "bank"
-        files = make_bank(bank, count)
+        files = (make_variant_bank if variants else make_bank)(bank, count)
         junit, report = Path(tmp) / "report.xml", Path(tmp) / "report.json"
         check = gyro_cmd() + ["check", str(bank), "--format", "json", "--junit", str(junit)]
         if jobs:
@@ -122,13 +140,17 @@ def main() -> None:
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--jobs", type=int, default=None,
                         help="gyro check --jobs (default: gyro's, the CPUs available)")
+    parser.add_argument("--variants", action="store_true",
+                        help="a bank of distinct variants (gyro vary of every problem with a "
+                             "vary: block) instead of copies of the bundled problems")
     args = parser.parse_args()
     cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     print(f"{cpus} CPUs available, load average {os.getloadavg()[0]:.1f}; "
-          f"median of {args.runs} runs; --jobs {args.jobs or 'default'}")
+          f"median of {args.runs} runs; --jobs {args.jobs or 'default'}; "
+          f"{'distinct variants' if args.variants else 'copies of problems/'}")
     peaks = {}
     for count in args.files:
-        result = bench(count, args.runs, args.jobs)
+        result = bench(count, args.runs, args.jobs, args.variants)
         n = result["files"]
         for name, samples in (("read (C loader)", result["read"]),
                               ("gyro check", result["check"])):

@@ -253,11 +253,30 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
         if pool.forks():
             import functools
 
+            warm()
             yield from pool.pooled(files, functools.partial(check_file, strict=strict),
                                    min(jobs, len(files)), timeout, timed_out, crashed)
             return
     for path in files:
         yield check_in_time(path, strict, timeout)
+
+
+def warm() -> None:
+    """Load, once, what checking a file needs: the kinds and the libraries their solvers
+    import on first use, the YAML loader and the unit table. Called before the workers
+    are forked, so each starts with it (shared, copy-on-write) instead of loading it
+    again; the objects made so far are then left out of the collector's passes
+    (gc.freeze), so a worker's collections do not touch, and copy, the pages it shares."""
+    import gc
+
+    from .. import kinds
+    from ..core import safeyaml, unit_cache
+    from ..solving import solve  # noqa: F401 -- imported for the workers
+
+    kinds.preload()
+    safeyaml.loader_class()
+    unit_cache.get("parse", "")
+    gc.freeze()
 
 
 class _Alarm(BaseException):

@@ -517,6 +517,9 @@ def factors(node: Expr, values: bool) -> list[Expr]:
 
 # ---- printers ---------------------------------------------------------------
 
+_METHODS: dict = {}  # (printer class, node class) -> the printer's method for it
+
+
 class Printer:
     """Dispatch on the node's class: ``_print_Sym`` prints a Sym. ``values``: print the
     substitution (each symbol's value and unit) rather than the formula."""
@@ -528,11 +531,19 @@ class Printer:
         return self._print(node)
 
     def _print(self, node: Expr) -> str:
-        for cls in type(node).__mro__:
-            method = getattr(self, f"_print_{cls.__name__}", None)
-            if method is not None:
-                return method(node)
-        raise TypeError(f"no printer for {type(node).__name__}")
+        # the method for each (printer class, node class) is looked up once, not at
+        # every node: the lookup by name along the node's classes was a third of printing
+        key = (self.__class__, node.__class__)
+        method = _METHODS.get(key)
+        if method is None:
+            for cls in type(node).__mro__:
+                method = getattr(type(self), f"_print_{cls.__name__}", None)
+                if method is not None:
+                    break
+            else:
+                raise TypeError(f"no printer for {type(node).__name__}")
+            _METHODS[key] = method
+        return method(self, node)
 
     def operand(self, parent: Expr, child: Expr, right: bool = False) -> str:
         text = self._print(child)

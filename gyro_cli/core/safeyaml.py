@@ -147,9 +147,32 @@ def loader_class() -> Any:
         return base.construct_mapping(self, node, deep)
 
     Loader.construct_mapping = construct_mapping
+
+    # The tag of a plain scalar depends on its text alone (no path resolvers here), and a
+    # bank of problems repeats the same texts (keys, kinds, units) in every file: each
+    # is resolved once, not once per occurrence, which was a third of composing a file.
+    # The table stops growing at _RESOLVED_MAX texts, so memory stays flat.
+    resolved: dict[str, str] = {}
+    resolve = base.resolve
+    scalar = yaml.ScalarNode
+
+    def resolve_plain(self: Any, kind: Any, value: str, implicit: Any) -> str:
+        if kind is scalar and implicit[0]:
+            tag = resolved.get(value)
+            if tag is None:
+                tag = resolve(self, kind, value, implicit)
+                if len(resolved) < _RESOLVED_MAX:
+                    resolved[value] = tag
+            return tag
+        return resolve(self, kind, value, implicit)
+
+    if not base.yaml_path_resolvers:
+        Loader.resolve = resolve_plain
     _loader_class = Loader
     return Loader
 
+
+_RESOLVED_MAX = 4096
 
 # Plain scalars YAML 1.1 turns into something else than text; as a key, text is meant.
 _NAME_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("int", "float", "bool", "timestamp")}
@@ -295,10 +318,14 @@ def load(text: str) -> tuple[Any, Any]:
             node = loader.get_single_node()
         except yaml.YAMLError as err:
             raise _too_deep(err) from None
-        if compose_first:
-            _check_tree(node)
-        written = _mapping_values(node)
-        data = loader.construct_document(node) if node is not None else None
+        data = _plain_data(loader, node) if compose_first else _UNUSUAL
+        if data is _UNUSUAL:
+            if compose_first:
+                _check_tree(node)
+            written = _mapping_values(node)
+            data = loader.construct_document(node) if node is not None else None
+        else:
+            written = ()
         # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
         # merged ones first; give the node back the pairs as written, so that a key that
         # overrides a merged one is not taken for a key written twice.
@@ -307,6 +334,72 @@ def load(text: str) -> tuple[Any, Any]:
     finally:
         loader.dispose()
     return data, node
+
+
+_UNUSUAL = object()  # _plain_data's answer for a document it leaves to PyYAML
+_STR, _NULL = "tag:yaml.org,2002:str", "tag:yaml.org,2002:null"
+_MAP, _SEQ = "tag:yaml.org,2002:map", "tag:yaml.org,2002:seq"
+_SCALAR_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("bool", "int", "float", "binary",
+                                                    "timestamp")}
+
+
+class _Unusual(Exception):
+    pass
+
+
+def _plain_data(loader: Any, root: Any) -> Any:
+    """The data of a composed document without anchors, built in one pass that also
+    holds it to the depth and size limits; ``_UNUSUAL`` for anything else.
+
+    A problem file is mappings, lists and plain scalars: built here, as PyYAML's safe
+    constructor with ``loader_class``'s rules builds them (keys as written, the same
+    constructor for every scalar that is not text), without its generic machinery.
+    A merge key (``<<``), a ``=`` key, a key that is not a scalar, an explicit tag on
+    a collection, a value PyYAML refuses or a document past a limit is ``_UNUSUAL``:
+    the caller builds and refuses it the way it always has, with the same messages.
+    """
+    import yaml
+
+    if root is None:
+        return None
+    constructors = loader.yaml_constructors
+    scalar, mapping, sequence = yaml.ScalarNode, yaml.MappingNode, yaml.SequenceNode
+    count = 0
+
+    def build(node: Any, depth: int) -> Any:
+        nonlocal count
+        count += 1
+        if count > MAX_NODES:
+            raise _Unusual
+        kind, tag = node.__class__, node.tag
+        if kind is scalar:
+            if tag == _STR:
+                return node.value
+            if tag == _NULL:
+                return None
+            if tag in _SCALAR_TAGS:
+                return constructors[tag](loader, node)
+            raise _Unusual
+        if depth > MAX_DEPTH:
+            raise _Unusual
+        if kind is mapping and tag == _MAP:
+            out = {}
+            for key_node, value_node in node.value:
+                if key_node.__class__ is not scalar:
+                    raise _Unusual
+                if key_node.tag in _NAME_TAGS and key_node.style in (None, ""):
+                    key_node.tag = _STR  # as loader_class's construct_mapping does
+                key = build(key_node, depth + 1)
+                out[key] = build(value_node, depth + 1)
+            return out
+        if kind is sequence and tag == _SEQ:
+            return [build(item, depth + 1) for item in node.value]
+        raise _Unusual
+
+    try:
+        return build(root, 1)
+    except Exception:  # noqa: BLE001 -- refused or unusual: built the usual way, which says why
+        return _UNUSUAL
 
 
 def _mapping_values(node: Any) -> list[tuple[Any, list]]:

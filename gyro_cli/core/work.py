@@ -70,6 +70,34 @@ class Step:
         return line
 
 
+# A tree step's formula and substitution are printed from its tree when first read, not
+# when the step is made: `gyro check` compares answers and never reads them, and printing
+# was a sixth of its time per file. The tree's symbols are not changed after a step is
+# made, so the text is the same whenever it is printed.
+class _PRINT:
+    """A field's value until it is read: print it from the tree (a class, so a copied or
+    pickled step still knows it)."""
+
+
+def _printed(name: str, printer) -> property:  # type: ignore[no-untyped-def]
+    slot = "_" + name
+
+    def get(self: Step) -> str:
+        text = self.__dict__[slot]
+        if text is _PRINT:
+            text = self.__dict__[slot] = printer(self.expr)
+        return text
+
+    def set_(self: Step, text: str) -> None:
+        self.__dict__[slot] = text
+
+    return property(get, set_)
+
+
+Step.formula = _printed("formula", tree_formula)  # type: ignore[method-assign, assignment]
+Step.substitution = _printed("substitution", tree_substitution)  # type: ignore[method-assign, assignment]
+
+
 @dataclass
 class Section:
     title: str
@@ -193,9 +221,8 @@ class Work:
                 si = (value, SHOWN[unit][1])
                 value = value / SHOWN[unit][0]
             self._current().steps.append(Step(
-                symbol, tree_formula(tree) if state else "",
-                tree_substitution(tree) if substitute else "", value, unit, ref, note,
-                expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
+                symbol, _PRINT if state else "", _PRINT if substitute else "", value, unit,
+                ref, note, expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
         self._current().steps.append(Step(symbol, "", "", value, unit, ref, note,
                                           prose=prose, symbol_expr=symbol_expr))

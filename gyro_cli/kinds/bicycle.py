@@ -351,7 +351,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("the eigenvalues and the motion are at a speed: give `speed`",
                          key="given.speed")
     for v in stab.weave + stab.capsize:
-        nearest = min(abs(x) for x in bike.eigenvalues(m, v, g).real)
+        nearest = min(abs(x) for x in _spectrum(stab, m, v, g).real)
         work.check(rel(V, "=", q(v, "m/s", sig=10)), ": the eigenvalue nearest the imaginary "
                    "axis has ", rel(absolute(fn("Re", S_)), "=", q(nearest, "1/s", sig=2)))
     work.answer("weave_speed", "v_w", stab.weave, "speed")
@@ -364,6 +364,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
         work.answer(name, name, [float(x) + 0.0 for x in a.ravel()], dim,
                     ["phi,phi", "phi,delta", "delta,phi", "delta,delta"])
+
+
+def _spectrum(stab, m, v: float, g: float):  # type: ignore[no-untyped-def]
+    """The eigenvalues at speed v: those the stability search worked out there, else anew."""
+    from ..physics import bicycle as bike
+
+    return stab.spectra[v] if v in stab.spectra else bike.eigenvalues(m, v, g)
 
 
 def _char_value(coeffs, v: float, s: complex) -> complex:

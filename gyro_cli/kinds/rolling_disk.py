@@ -128,15 +128,11 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
     fine = [top / n * 10 ** (-k / 8) for k in range(96, 0, -1)]
     grid = fine + [top * i / n for i in range(1, n)]
     roots = []
-    sines = list(map(sin, grid))
-    rhos = [path_radius - r * s for s in sines]
-    values = [mgr * s * rho * rho - v2 * c * (rho * inertia + I * s)
-              for s, c, rho in zip(sines, map(cos, grid), rhos)]
-    for k in range(len(grid) - 1):
-        f0 = values[k]
+    for k in _sign_changes(grid, f, mgr, v2, inertia, I, path_radius, r):
+        f0 = f(grid[k])
         if f0 == 0:
             roots.append(grid[k])
-        elif f0 * values[k + 1] < 0:
+        elif f0 * f(grid[k + 1]) < 0:
             lo, hi, flo = grid[k], grid[k + 1], f0
             for _ in range(200):
                 mid = 0.5 * (lo + hi)
@@ -149,6 +145,34 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
                     break
             roots.append(0.5 * (lo + hi))
     return [free_state(m, r, t, path_radius - r * math.sin(t), speed) for t in roots]
+
+
+def _sign_changes(grid: list[float], f, mgr: float, v2: float, inertia: float, I: float,  # type: ignore[no-untyped-def]
+                  path_radius: float, r: float) -> list[int]:
+    """Every k where ``f`` may be 0 at grid[k] or change sign from grid[k] to grid[k + 1]
+    (the caller decides each with ``f``, as the scan point by point did).
+
+    The residual is evaluated over the whole grid at once (numpy: the same operations in
+    the same order; only sin and cos may round differently, by an ulp). Where a value is
+    so near 0 that such a difference could flip its sign, it is evaluated again with
+    ``f``, so every sign, and every exact 0, is the one ``f`` gives.
+    """
+    import numpy as np
+
+    t = np.array(grid)
+    s, c = np.sin(t), np.cos(t)
+    rho = path_radius - r * s
+    first = mgr * s * rho * rho
+    second = v2 * c * (rho * inertia + I * s)
+    values = first - second
+    doubtful = np.abs(values) <= 1e-9 * (np.abs(first) + np.abs(second))
+    doubtful |= ~np.isfinite(values)
+    for k in np.flatnonzero(doubtful).tolist():
+        values[k] = f(grid[k])
+    # every k that may hold a root: the caller decides each with f, as the scan did
+    negative = values < 0
+    changes = (values[:-1] == 0) | (negative[:-1] != negative[1:])
+    return np.flatnonzero(changes).tolist()
 
 
 # ---- the worked answer ------------------------------------------------------

@@ -39,7 +39,7 @@ from __future__ import annotations
 import cmath
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 # Table 1 of the paper, SI (lambda = pi/10 rad). g is the paper's 9.81 m/s^2.
 BENCHMARK: dict[str, float] = {
@@ -294,15 +294,29 @@ def roots(c: list[float]) -> list[complex]:
     radius = 2 * max(abs(monic[k]) ** (1.0 / (n - k)) for k in range(n))
     z = [radius * cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)]
     dmonic = polyder(monic)
+    # polyval and sum written out in the loop (the same operations in the same order, so
+    # the same floats): the iteration is most of a bicycle's check
+    top, rest = monic[-1], monic[-2::-1]
+    dtop, drest = dmonic[-1], dmonic[-2::-1]
+    indices = range(n)
     for _ in range(500):
         moved = False
-        for i in range(n):
+        for i in indices:
             zi = z[i]
-            value = polyval(zi, monic)
+            value = top + zi * 0
+            for coefficient in rest:
+                value = coefficient + value * zi
             if value == 0:
                 continue
-            slope = polyval(zi, dmonic)
-            others = sum(1.0 / (zi - z[j]) for j in range(n) if j != i and zi != z[j])
+            slope = dtop + zi * 0
+            for coefficient in drest:
+                slope = coefficient + slope * zi
+            others = 0
+            for j in indices:
+                if j != i:
+                    zj = z[j]
+                    if zi != zj:
+                        others = others + 1.0 / (zi - zj)
             ratio = value / slope if slope != 0 else complex(math.inf)
             denominator = 1.0 - ratio * others
             step = ratio if denominator == 0 else ratio / denominator
@@ -471,6 +485,8 @@ class Stability:
     capsize: list[float]          # a real eigenvalue crosses zero (a0 = 0)
     stable: list[tuple[float, float]]   # (low, high); high may be inf
     other: list[float]            # roots where the stability does not change (a real pair +-sigma)
+    # the eigenvalues at each of those speeds, as worked out on the way (eigenvalues(m, v, g))
+    spectra: dict = field(default_factory=dict, compare=False, repr=False)
 
 
 def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
@@ -487,14 +503,15 @@ def stability(m: Matrices, g: float) -> Stability:
     """
     coeffs = characteristic(m, g)
     capsize, weave, other = [], [], []
+    spectra: dict[float, Spectrum] = {}
     for v in _positive_roots(coeffs[0]):
-        ev = eigenvalues(m, v, g)
+        ev = spectra[v] = eigenvalues(m, v, g)
         if min(abs(e) for e in ev) <= 1e-6 * max(1.0, max(abs(e) for e in ev)):
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
     for v in _positive_roots(hurwitz(coeffs)):
-        ev = eigenvalues(m, v, g)
+        ev = spectra[v] = eigenvalues(m, v, g)
         scale = max(1.0, max(abs(e) for e in ev))
         near = min(ev, key=lambda e: abs(e.real))
         if abs(near.real) <= 1e-6 * scale and abs(near.imag) > 1e-6 * scale:
@@ -511,7 +528,7 @@ def stability(m: Matrices, g: float) -> Stability:
                 stable[-1] = (stable[-1][0], hi)
             else:
                 stable.append((lo, hi))
-    return Stability(weave, capsize, stable, other)
+    return Stability(weave, capsize, stable, other, spectra)
 
 
 def motion(ev: Spectrum, tol: float = 1e-12) -> str:

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from ..core import units
 from ..core.body import build_body
 from ..core.errors import InputError
-from ..core.expr import Expr, symbols
+from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
 from .problem import Problem, load, params_of
 from ..core.work import GivenLine, Solution, Work, num
 
@@ -144,19 +144,58 @@ def _all_finite(solution: Solution) -> None:
                                  "(overflow or a degenerate case); check the magnitudes and "
                                  "units", key="given")
             if step.expr is not None:  # a tree: its symbols' values, no text to read
-                if not all(math.isfinite(sym.si) for sym in symbols(step.expr).values()):
+                if not _symbols_finite(step.expr):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
             texts = (step.text,) if step.expr is not None else \
                 (step.formula, step.substitution, step.text)
             for text in texts:
-                if text and _NOT_FINITE.search(text):
+                if text and _not_finite(text):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
     for text in [c.text for c in solution.checks] + list(solution.warnings):
-        if _NOT_FINITE.search(text):
+        if _not_finite(text):
             raise InputError("a check of the answer overflows for these data; check the "
                              "magnitudes and units", key="given")
+
+
+def _not_finite(text: str) -> bool:
+    """Whether the text prints an inf or a nan (_NOT_FINITE), the regular expression
+    searched only in a text that holds those letters at all (most hold neither; a
+    text beyond ASCII is always searched: İ and ı match i there)."""
+    if text.isascii():
+        lower = text.lower()
+        if "inf" not in lower and "nan" not in lower:
+            return False
+    return _NOT_FINITE.search(text) is not None
+
+
+def _symbols_finite(expr) -> bool:  # type: ignore[no-untyped-def]
+    """Whether every symbol of ``symbols(expr)`` (the first of each name; of a `Let`, its
+    symbol) holds a finite value: the same walk, without building the mapping."""
+    seen: set[str] = set()
+    todo = [expr]
+    pop, push, isfinite = todo.pop, todo.append, math.isfinite
+    while todo:
+        node = pop()
+        kind = node.__class__
+        if kind is Sym or (kind not in _TREE_NODES and isinstance(node, Sym)):
+            if node.name not in seen:
+                seen.add(node.name)
+                if not isfinite(node.si):
+                    return False
+        elif kind is Let or (kind not in _TREE_NODES and isinstance(node, Let)):
+            push(node.sym)
+        elif kind in _BINARY:
+            push(node.right)
+            push(node.left)
+        else:
+            todo.extend(reversed(node.children()))
+    return True
+
+
+_BINARY = {Add, Sub, Mul, Div, Pow}
+_TREE_NODES = _BINARY | {Sym, Let, Neg, Num, Const, Call}  # exactly these classes
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
