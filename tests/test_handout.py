@@ -195,17 +195,24 @@ RAW = re.compile(r"phidot|psidot|thetadot|theta0|theta_|sqrt|\^|_|\u02c6")  # U+
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
                     reason="pdflatex/pdftotext not installed (see `make handout`)")
+def without_authors_words(paths, folder: Path) -> list[Path]:
+    """Copies of the problem files without their notes and source: the author's words,
+    which gyro prints as written."""
+    out = []
+    for path in paths:
+        data = yaml.safe_load(Path(path).read_text())
+        data.pop("notes", None), data.pop("source", None)
+        out.append(folder / f"plain_{Path(path).name}")
+        out[-1].write_text(yaml.safe_dump(data, sort_keys=False))
+    return out
+
+
 def test_every_bundled_problem_compiles_clean(run, tmp_path):
     """The whole handout compiles with no overfull line and no raw identifier in what gyro
     writes. A problem's own notes and source are the author's words, printed as written
     (they may say phidot = 36 rpm), so the files are checked without them."""
-    files = []
-    for path in PROBLEMS:
-        data = yaml.safe_load(path.read_text())
-        data.pop("notes", None), data.pop("source", None)
-        files.append(tmp_path / path.name)
-        files[-1].write_text(yaml.safe_dump(data, sort_keys=False))
-    result = run("solve", "--format", "latex", "--standalone", *files)
+    result = run("solve", "--format", "latex", "--standalone",
+                 *without_authors_words(PROBLEMS, tmp_path))
     assert result.exit_code == 0, result.output
     doc = tmp_path / "handout.tex"
     doc.write_text(result.stdout)

@@ -851,7 +851,7 @@ find:
     kval, _ = disk_linearisation(beta, rho, 0.08 / rho, m, r, J, IG, G_SI)
     s = math.sqrt(-kval)
     assert len(d["warnings"]) == 1
-    nums = [float(x) for x in re.findall(r"exp\(" + _NUM, d["warnings"][0])]
+    nums = [float(x) for x in re.findall(r"sigma = " + _NUM + " 1/s", d["warnings"][0])]
     assert nums and nums[0] == pytest.approx(s, rel=PRINTED)
     dbl = re.search(r"doubling every " + _NUM + " s", d["warnings"][0])
     assert float(dbl.group(1)) == pytest.approx(math.log(2) / s, rel=PRINTED)

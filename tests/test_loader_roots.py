@@ -223,7 +223,7 @@ def test_a_step_that_overflows_is_bad_input(run, write, monkeypatch):
 
     def overflowing(given, find, work):
         real(given, find, work)
-        work.step("Q", "H^2", value=float("inf"), unit="N")
+        work.step("Q", value=float("inf"), unit="N")
 
     monkeypatch.setattr(module, "KIND", dataclasses.replace(module.KIND, solve=overflowing))
     everywhere(run, PROBLEMS / "11_5.yaml", "given", "the step Q is not a finite number")

@@ -239,7 +239,8 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
               I_ * phd * cos_(th), " term of Eq. 11.13 is dropped (exact at ",
               rel(th, "=", _deg(90)), ", where ", rel(cos_(th), "=", 0), ")")
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
-                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11, per unit sin(theta)")
+                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11",
+                  note=("per unit ", sin_(th)))
     J_v = Sym("J", body.J, "kg m^2")
     rate = rates[0]
     if rate == "precession":
@@ -395,7 +396,8 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
         omega = given["spin"] if rate == "spin" else given["axial_rate"]
         M = D * math.sin(theta)
         roots = [work.step("phidot", Sym("M", M, "N m") / (Sym("J", J, "kg m^2") * _rate(
-            "psidot", omega)), unit="rad/s", ref="Eq. 11.13 at theta = 90 deg, exact")]
+            "psidot", omega)), unit="rad/s", ref="Eq. 11.13",
+            note=("at ", rel(*names("theta"), "=", _deg(90)), ", exact"))]
     else:
         for root, label in zip(roots, labels):
             work.step(_label("phidot", label), value=root, unit="rad/s")
