@@ -452,6 +452,25 @@ class Prose:
             return pieces[0], tag
         return None
 
+    def finite(self) -> bool:
+        """Whether every value the sentence prints is finite (its quantities, vectors and
+        matrices; a symbol is printed by its name)."""
+        stack = [p for p in self.pieces if not isinstance(p, str)]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, Quantity):
+                values = [node.si.real, node.si.imag] if isinstance(node.si, complex) else [node.si]
+            elif isinstance(node, Vector):
+                values = list(node.si)
+            elif isinstance(node, Matrix):
+                values = [x for row in node.rows for x in row]
+            else:
+                stack.extend(node.children())
+                continue
+            if not all(math.isfinite(v) for v in values):
+                return False
+        return True
+
     def map(self, change: Callable[[Expr], Expr]) -> "Prose":
         return Prose(tuple(p if isinstance(p, str) else change(p) for p in self.pieces))
 

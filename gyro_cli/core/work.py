@@ -98,6 +98,20 @@ Step.formula = _printed("formula", tree_formula)  # type: ignore[method-assign, 
 Step.substitution = _printed("substitution", tree_substitution)  # type: ignore[method-assign, assignment]
 
 
+def _text_get(self: Step) -> str:
+    text = self.__dict__["_text"]
+    if text is _PRINT:  # a sentence (or a note) of words and trees, printed when read
+        text = self.__dict__["_text"] = self.prose.text  # type: ignore[union-attr]
+    return text
+
+
+def _text_set(self: Step, text: str) -> None:
+    self.__dict__["_text"] = text
+
+
+Step.text = property(_text_get, _text_set)  # type: ignore[method-assign, assignment]
+
+
 @dataclass
 class Section:
     title: str
@@ -152,8 +166,7 @@ def prose_step(pieces: tuple) -> Step:
     """A line of words only, or of words and trees (`core.prose.Prose`)."""
     if len(pieces) == 1 and isinstance(pieces[0], str):
         return Step(text=pieces[0])
-    prose = Prose(tuple(pieces))
-    return Step(text=prose.text, prose=prose)
+    return Step(text=_PRINT, prose=Prose(tuple(pieces)))  # type: ignore[arg-type]
 
 
 class Work:
@@ -199,7 +212,7 @@ class Work:
         prose = None
         if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
             prose = Prose(note)
-            note = prose.text
+            note = _PRINT  # type: ignore[assignment]  # printed when read
         if formula is not None:
             if not isinstance(formula, Expr):
                 raise TypeError(f"the step {symbol}: a formula is a tree (core.expr), not "

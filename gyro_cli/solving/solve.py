@@ -147,13 +147,20 @@ def _all_finite(solution: Solution) -> None:
                 if not _symbols_finite(step.expr):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
-            texts = (step.text,) if step.expr is not None else \
-                (step.formula, step.substitution, step.text)
+            if step.prose is not None and not step.prose.finite():
+                raise InputError(f"the step {where} overflows for these data; check the "
+                                 "magnitudes and units", key="given")
+            texts = () if step.prose is not None else (step.text,) if step.expr is not None \
+                else (step.formula, step.substitution, step.text)
             for text in texts:
                 if text and _not_finite(text):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
-    for text in [c.text for c in solution.checks] + list(solution.warnings):
+    for check in solution.checks:
+        if not check.prose.finite() if check.prose is not None else _not_finite(check.text):
+            raise InputError("a check of the answer overflows for these data; check the "
+                             "magnitudes and units", key="given")
+    for text in solution.warnings:
         if _not_finite(text):
             raise InputError("a check of the answer overflows for these data; check the "
                              "magnitudes and units", key="given")
