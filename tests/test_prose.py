@@ -427,3 +427,39 @@ def test_the_body_writes_its_sentences_and_warnings_as_trees(name, tmp_path):
     for text in texts:
         assert not [p for is_math, p in spans(text) if is_math], (name, text)
     assert any(s.prose is not None for s in body) or result.solution.warning_prose, name
+
+
+def test_a_sentence_is_printed_when_read_and_its_overflow_is_bad_input(run, write):
+    """A line of words and trees is printed only when something reads it (gyro check
+    never does), and a quantity in it that overflows is refused as a step's would be."""
+    import math as _math
+
+    from gyro_cli.core.work import _PRINT
+
+    work = Work()
+    work.section("S")
+    work.text("a moment of ", q(2.0, "N m"))
+    step = work.sections[0].steps[0]
+    assert step.__dict__["_text"] is _PRINT
+    assert step.text == "a moment of 2.000 N m" and step.__dict__["_text"] == step.text
+    assert Prose(("x ", q(_math.inf, "N m"))).finite() is False
+    assert Prose(("x ", rel(H, "=", q(1.0, "N m")))).finite() is True  # names print as names
+    assert Prose((qvec((0, _math.nan, 0), "N m"),)).finite() is False
+
+
+def test_a_check_whose_quantity_overflows_is_one_line(run, write, monkeypatch):
+    import dataclasses
+    import importlib
+
+    module = importlib.import_module("gyro_cli.kinds.gyrocompass")
+    real = module.KIND.solve
+
+    def overflowing(given, find, work):
+        real(given, find, work)
+        work.check("the moment ", q(float("inf"), "N m"))
+
+    monkeypatch.setattr(module, "KIND", dataclasses.replace(module.KIND, solve=overflowing))
+    path = write(template("gyrocompass"))
+    result = run("solve", path)
+    assert result.exit_code == 2 and "overflows" in result.output, result.output
+    assert "Traceback" not in result.output

@@ -366,8 +366,7 @@ def spin_angular_momentum(given, work: Work) -> float:
                          "angular_momentum)", key="given.J")
     spin = given["spin"]
     return work.step("H", Sym("J", J, "kg m^2") * Sym("psidot", spin, "rad/s"), unit="kg m^2/s",
-                     ref="angular momentum of the rotor",
-                     note=(rel(*names("H"), "=", Sym("J", J, "kg m^2") * names("omega_z")[0]),))
+                     ref="angular momentum of the rotor")
 
 
 # ---- the vehicles' data as books give them ---------------------------------------
