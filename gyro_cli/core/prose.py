@@ -32,6 +32,18 @@ RELATIONS = ("=", "<", ">", "<=", ">=", "!=", "~", "->", ">>", "<<")
 SIGNS = ("+", "+-", "-+")
 
 
+def _finite(values) -> None:  # type: ignore[no-untyped-def]
+    """A value a sentence states must be a number: an overflow (1e200 rpm squared) or a
+    degenerate case is bad input for the kind, refused as a step's would be."""
+    for v in values:
+        if not math.isfinite(v):
+            from .errors import InputError
+
+            raise InputError("a value the worked answer states is not a finite number for "
+                             "these data (overflow or a degenerate case); check the magnitudes "
+                             "and units", key="given")
+
+
 class Typeset(Expr):
     """A node of a sentence: printed, never evaluated."""
 
@@ -165,6 +177,7 @@ class Quantity(Typeset):
     def __init__(self, si: float | complex, unit: str = "", exact: bool = False,
                  label: str = "", sig: int = SIG) -> None:
         self.si, self.unit, self.exact, self.label, self.sig = si, unit, exact, label, sig
+        _finite((si.real, si.imag) if type(si) is complex else (si,))
 
     @property
     def number(self) -> str:
@@ -200,6 +213,7 @@ class Matrix(Typeset):
     def __init__(self, rows: tuple[tuple[float, ...], ...], unit: str = "",
                  sig: int = SIG) -> None:
         self.rows, self.unit, self.sig = rows, unit, sig
+        _finite(tuple(x for row in rows for x in row))
 
     def entries(self) -> tuple[tuple[Quantity, ...], ...]:
         """Each entry as a quantity without the unit, as printed."""
@@ -260,6 +274,7 @@ class Vector(Typeset):
 
     def __init__(self, si: tuple[float, ...], unit: str = "") -> None:
         self.si, self.unit = tuple(si), unit
+        _finite(self.si)
 
     @property
     def numbers(self) -> tuple[str, ...]:
@@ -451,25 +466,6 @@ class Prose:
         if len(pieces) == 1 and isinstance(pieces[0], Rel):
             return pieces[0], tag
         return None
-
-    def finite(self) -> bool:
-        """Whether every value the sentence prints is finite (its quantities, vectors and
-        matrices; a symbol is printed by its name)."""
-        stack = [p for p in self.pieces if not isinstance(p, str)]
-        while stack:
-            node = stack.pop()
-            if isinstance(node, Quantity):
-                values = [node.si.real, node.si.imag] if isinstance(node.si, complex) else [node.si]
-            elif isinstance(node, Vector):
-                values = list(node.si)
-            elif isinstance(node, Matrix):
-                values = [x for row in node.rows for x in row]
-            else:
-                stack.extend(node.children())
-                continue
-            if not all(math.isfinite(v) for v in values):
-                return False
-        return True
 
     def map(self, change: Callable[[Expr], Expr]) -> "Prose":
         return Prose(tuple(p if isinstance(p, str) else change(p) for p in self.pieces))

@@ -147,9 +147,7 @@ def _all_finite(solution: Solution) -> None:
                 if not _symbols_finite(step.expr):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
-            if step.prose is not None and not step.prose.finite():
-                raise InputError(f"the step {where} overflows for these data; check the "
-                                 "magnitudes and units", key="given")
+            # a sentence's values were held to be finite as they were made (core/prose.py)
             texts = () if step.prose is not None else (step.text,) if step.expr is not None \
                 else (step.formula, step.substitution, step.text)
             for text in texts:
@@ -157,7 +155,7 @@ def _all_finite(solution: Solution) -> None:
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
     for check in solution.checks:
-        if not check.prose.finite() if check.prose is not None else _not_finite(check.text):
+        if check.prose is None and _not_finite(check.text):
             raise InputError("a check of the answer overflows for these data; check the "
                              "magnitudes and units", key="given")
     for text in solution.warnings:
