@@ -119,6 +119,20 @@ class Section:
     prose: Prose | None = None  # a title written as words and trees
 
 
+def _title_get(self: Section) -> str:
+    title = self.__dict__["_title"]
+    if title is _PRINT:
+        title = self.__dict__["_title"] = self.prose.text  # type: ignore[union-attr]
+    return title
+
+
+def _title_set(self: Section, title: str) -> None:
+    self.__dict__["_title"] = title
+
+
+Section.title = property(_title_get, _title_set)  # type: ignore[method-assign, assignment]
+
+
 @dataclass
 class Answer:
     """An answer in SI: a list of floats (roots ascending) or of words."""
@@ -183,8 +197,10 @@ class Work:
     def section(self, *pieces: str | Expr) -> Section:
         """Start a section; later steps go into it. Its title is words, or words and trees
         as `text` takes them."""
-        line = prose_step(pieces)
-        self.sections.append(Section(line.text, prose=line.prose))
+        if len(pieces) == 1 and isinstance(pieces[0], str):
+            self.sections.append(Section(pieces[0]))
+        else:  # its title printed when read (gyro check never reads it)
+            self.sections.append(Section(_PRINT, prose=Prose(tuple(pieces))))  # type: ignore[arg-type]
         return self.sections[-1]
 
     def _current(self) -> Section:

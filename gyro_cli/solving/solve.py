@@ -138,7 +138,7 @@ def _all_finite(solution: Solution) -> None:
     squared) is bad input for this kind, not a worked answer with inf in it."""
     for section in solution.sections:
         for step in section.steps:
-            where = step.symbol or section.title
+            where = step.symbol or _Title(section)  # the title printed only for a message
             if step.value is not None and not math.isfinite(step.value):
                 raise InputError(f"the step {where} is not a finite number for these data "
                                  "(overflow or a degenerate case); check the magnitudes and "
@@ -162,6 +162,16 @@ def _all_finite(solution: Solution) -> None:
         if _not_finite(text):
             raise InputError("a check of the answer overflows for these data; check the "
                              "magnitudes and units", key="given")
+
+
+class _Title:
+    """A section's title, printed (from its words and trees) only when a message needs it."""
+
+    def __init__(self, section) -> None:  # type: ignore[no-untyped-def]
+        self.section = section
+
+    def __str__(self) -> str:
+        return self.section.title
 
 
 def _not_finite(text: str) -> bool:
