@@ -40,8 +40,8 @@ def _finite(values) -> None:  # type: ignore[no-untyped-def]
             from .errors import InputError
 
             raise InputError("a value the worked answer states is not a finite number for "
-                             "these data (overflow or a degenerate case); check the magnitudes "
-                             "and units", key="given")
+                             "these data: a degenerate case, or magnitudes beyond double "
+                             "precision; check the data and units", key="given")
 
 
 class Typeset(Expr):
