@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import collections
 import multiprocessing
-import os
 import signal
 import time
 from typing import Any, Iterator

@@ -90,18 +90,6 @@ class Dot(Typeset, BinOp):
     bracket_after_sign = True
 
 
-class Tup(Typeset):
-    """``(a, b, c)``: a vector by its components, a list of values."""
-
-    __slots__ = ("items",)
-
-    def __init__(self, items: tuple[Expr, ...]) -> None:
-        self.items = items
-
-    def children(self) -> tuple[Expr, ...]:
-        return self.items
-
-
 class Fn(Typeset):
     """``name(args)`` for a function known by its name only: ``f(u)``, ``R_z(psi)``."""
 
@@ -153,6 +141,7 @@ class Deriv(Typeset):
             raise TypeError("dx/dt takes a symbol; d/dt of a formula is fn(\"d/dt\", ...)")
         self.sym, self.var = sym, var
 
+
 class Mat(Typeset):
     """``[a b c; d e f]``: a matrix by its rows."""
 
@@ -163,7 +152,6 @@ class Mat(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return tuple(x for row in self.rows for x in row)
-
 
 
 class Quantity(Typeset):
@@ -234,8 +222,9 @@ class Integral(Typeset):
 
 
 class Bracket(Typeset):
-    """``[x]``: brackets the author writes around a long factor (``open`` "[") or a
-    substituted value (``(357.8) u^3``, ``open`` "("); ``[-1, 1]``: around a list."""
+    """Brackets the author writes: ``[x]`` around a long factor, ``(x)`` where precedence
+    needs none (``(357.8) u^3``, ``-(omega_p x H)``), ``(a, b, c)`` around a vector's
+    components or ``[-1, 1]`` around a list."""
 
     __slots__ = ("items", "open")
     binding = ATOM
@@ -248,21 +237,19 @@ class Bracket(Typeset):
 
 
 class Pm(Typeset):
-    """``a +- b``, ``beta -+ gamma``, or ``+-1`` (``left`` None): either sign."""
+    """``a +- b``, ``beta -+ gamma``: either sign between two terms (``+-1`` alone is a
+    `Sign`)."""
 
     __slots__ = ("left", "right", "op")
+    binding = ADD
 
-    def __init__(self, left: Expr | None, right: Expr, op: str = "+-") -> None:
+    def __init__(self, left: Expr, right: Expr, op: str = "+-") -> None:
         if op not in ("+-", "-+"):
             raise ValueError(f"unknown sign {op!r}")
         self.left, self.right, self.op = left, right, op
 
-    @property
-    def binding(self) -> int:  # type: ignore[override]
-        return NEG if self.left is None else ADD
-
     def children(self) -> tuple[Expr, ...]:
-        return ((self.left,) if self.left is not None else ()) + (self.right,)
+        return (self.left, self.right)
 
 
 class Vector(Typeset):
@@ -283,19 +270,6 @@ class Vector(Typeset):
     @property
     def text(self) -> str:
         return f"({', '.join(self.numbers)}) {UNIT_TEXT.get(self.unit, self.unit)}".rstrip()
-
-
-class Paren(Typeset):
-    """``(x)``: brackets the author writes where precedence needs none, ``-(omega_p x H)``."""
-
-    __slots__ = ("arg",)
-    binding = ATOM
-
-    def __init__(self, arg: Expr) -> None:
-        self.arg = arg
-
-    def children(self) -> tuple[Expr, ...]:
-        return (self.arg,)
 
 
 class Words(Typeset):
@@ -349,8 +323,9 @@ def dot(a: Expr, b: Expr) -> Dot:
     return Dot(a, b)
 
 
-def tup(*items: Expr | float) -> Tup:
-    return Tup(tuple(_node(x) for x in items))
+def tup(*items: Expr | float) -> Bracket:
+    """``(a, b, c)``: a vector by its components."""
+    return Bracket(tuple(_node(x) for x in items), "(")
 
 
 def fn(name: str, *args: Expr | float, sep: str = ",") -> Fn:
@@ -389,8 +364,9 @@ def words(text: str, of: Expr | None = None, then: Expr | None = None) -> Words:
     return Words(text, of, then)
 
 
-def paren(x: Expr) -> Paren:
-    return Paren(x)
+def paren(x: Expr) -> Bracket:
+    """``(x)``: brackets where precedence needs none, ``-(omega_p x H)``."""
+    return Bracket((x,), "(")
 
 
 def prime(x: Expr, count: int = 1) -> Prime:
@@ -426,9 +402,11 @@ def bracket(*items: Expr | float, open: str = "[") -> Bracket:
     return Bracket(tuple(_node(x) for x in items), open)
 
 
-def pm(left: Expr | float | None, right: Expr | float, op: str = "+-") -> Pm:
+def pm(left: Expr | float | None, right: Expr | float, op: str = "+-") -> Pm | Sign:
     """``pm(a, b)``: a +- b; ``pm(None, 1)``: +-1; ``op="-+"``: the other sign first."""
-    return Pm(None if left is None else _node(left), _node(right), op)
+    if left is None:
+        return Sign(op, _node(right))
+    return Pm(_node(left), _node(right), op)
 
 
 # ---- a line of prose --------------------------------------------------------------
@@ -482,9 +460,8 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, Words):
         return Words(expr.words, *(None if x is None else map_values(x, sym, quantity)
                                    for x in (expr.of, expr.then)))
-    if isinstance(expr, (Paren, Prime)):
-        changed = map_values(expr.arg, sym, quantity)
-        return Prime(changed, expr.count) if isinstance(expr, Prime) else type(expr)(changed)
+    if isinstance(expr, Prime):
+        return Prime(map_values(expr.arg, sym, quantity), expr.count)
     if isinstance(expr, Matrix):
         shown = [[quantity(Quantity(x, expr.unit, sig=expr.sig)) for x in row]
                  for row in expr.rows]
@@ -494,8 +471,8 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, Bracket):
         return Bracket(tuple(map_values(x, sym, quantity) for x in expr.items), expr.open)
     if isinstance(expr, Pm):
-        return Pm(None if expr.left is None else map_values(expr.left, sym, quantity),
-                  map_values(expr.right, sym, quantity), expr.op)
+        return Pm(map_values(expr.left, sym, quantity), map_values(expr.right, sym, quantity),
+                  expr.op)
     if isinstance(expr, Integral):
         return Integral(map_values(expr.lower, sym, quantity),
                         map_values(expr.upper, sym, quantity),
@@ -506,8 +483,6 @@ def map_values(expr: Expr, sym: Callable[[Sym], Sym],
     if isinstance(expr, (Cross, Dot)):
         return type(expr)(map_values(expr.left, sym, quantity),
                           map_values(expr.right, sym, quantity))
-    if isinstance(expr, Tup):
-        return Tup(tuple(map_values(x, sym, quantity) for x in expr.items))
     if isinstance(expr, Fn):
         return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args), expr.sep)
     if isinstance(expr, Total):
@@ -542,7 +517,7 @@ def operand_brackets(parent: Expr, child: Expr) -> bool:
     if isinstance(parent, (Cross, Dot)):
         if child is parent.left and isinstance(child, Mul):
             return False
-        return precedence(child, False) <= MUL and not isinstance(child, (Fn, Tup))
+        return precedence(child, False) <= MUL and not isinstance(child, (Fn, Bracket))
     if isinstance(parent, Sign):
         return needs_brackets(Neg(child), child, False, False)
     if isinstance(parent, Total):
@@ -572,9 +547,6 @@ class ProseText(TextPrinter):
     def _print_Dot(self, node: Dot) -> str:
         return self._vector(node)
 
-    def _print_Tup(self, node: Tup) -> str:
-        return "(" + ", ".join(self._print(x) for x in node.items) + ")"
-
     def _print_Fn(self, node: Fn) -> str:
         space = "" if node.name.rstrip("'").isidentifier() else " "  # d/dt (H . U), U''(x)
         sep = ", " if node.sep == "," else node.sep
@@ -601,9 +573,6 @@ class ProseText(TextPrinter):
         text = node.words if node.of is None else f"{self._print(node.of)} {node.words}"
         return text if node.then is None else f"{text} {self._print(node.then)}"
 
-    def _print_Paren(self, node: Paren) -> str:
-        return f"({self._print(node.arg)})"
-
     def _print_Prime(self, node: Prime) -> str:
         inner = self._print(node.arg)
         return (f"({inner})" if precedence(node.arg, False) < ATOM else inner) + "'" * node.count
@@ -627,10 +596,7 @@ class ProseText(TextPrinter):
         right = self._print(node.right)
         if precedence(node.right, False) <= ADD:
             right = f"({right})"
-        if node.left is None:
-            return node.op + right
-        left = self._print(node.left)
-        return f"{left} {node.op} {right}"
+        return f"{self._print(node.left)} {node.op} {right}"
 
 
 def text(expr: Expr) -> str:

@@ -80,36 +80,25 @@ class _PRINT:
 
 
 def _printed(name: str, printer) -> property:  # type: ignore[no-untyped-def]
+    """The field ``name``, printed by ``printer(obj)`` when first read if it was set to
+    _PRINT (a tree step's formula, a sentence's text, a title)."""
     slot = "_" + name
 
-    def get(self: Step) -> str:
+    def get(self) -> str:  # type: ignore[no-untyped-def]
         text = self.__dict__[slot]
         if text is _PRINT:
-            text = self.__dict__[slot] = printer(self.expr)
+            text = self.__dict__[slot] = printer(self)
         return text
 
-    def set_(self: Step, text: str) -> None:
+    def set_(self, text: str) -> None:  # type: ignore[no-untyped-def]
         self.__dict__[slot] = text
 
     return property(get, set_)
 
 
-Step.formula = _printed("formula", tree_formula)  # type: ignore[method-assign, assignment]
-Step.substitution = _printed("substitution", tree_substitution)  # type: ignore[method-assign, assignment]
-
-
-def _text_get(self: Step) -> str:
-    text = self.__dict__["_text"]
-    if text is _PRINT:  # a sentence (or a note) of words and trees, printed when read
-        text = self.__dict__["_text"] = self.prose.text  # type: ignore[union-attr]
-    return text
-
-
-def _text_set(self: Step, text: str) -> None:
-    self.__dict__["_text"] = text
-
-
-Step.text = property(_text_get, _text_set)  # type: ignore[method-assign, assignment]
+Step.formula = _printed("formula", lambda s: tree_formula(s.expr))  # type: ignore[method-assign, assignment]
+Step.substitution = _printed("substitution", lambda s: tree_substitution(s.expr))  # type: ignore[method-assign, assignment]
+Step.text = _printed("text", lambda s: s.prose.text)  # type: ignore[method-assign, assignment]
 
 
 @dataclass
@@ -119,18 +108,7 @@ class Section:
     prose: Prose | None = None  # a title written as words and trees
 
 
-def _title_get(self: Section) -> str:
-    title = self.__dict__["_title"]
-    if title is _PRINT:
-        title = self.__dict__["_title"] = self.prose.text  # type: ignore[union-attr]
-    return title
-
-
-def _title_set(self: Section, title: str) -> None:
-    self.__dict__["_title"] = title
-
-
-Section.title = property(_title_get, _title_set)  # type: ignore[method-assign, assignment]
+Section.title = _printed("title", lambda s: s.prose.text)  # type: ignore[method-assign, assignment]
 
 
 @dataclass

@@ -21,7 +21,7 @@ from ..core.given import Given
 from ..physics import euler_kinematics as ek
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
-from ..core.prose import dot, fn, mat, names, prime, rel, total, tup, words
+from ..core.prose import dot, fn, mat, names, prime, rel, total, tup
 from ..core.prose import q as qv
 from ..core.work import Work, num
 

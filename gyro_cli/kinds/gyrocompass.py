@@ -25,8 +25,6 @@ from ..core.expr import PI, Let, Sym, cos, ellipk, sin, sqrt
 from ..core.prose import cross, dot, fn, names, q, rel
 from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
-from ..physics.gyrocompass import (directive_stiffness, north_seeking_moment, period,
-                                   swing_period)
 
 POLAR_WARNING_LATITUDE = math.radians(70)
 

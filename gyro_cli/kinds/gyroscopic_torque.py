@@ -164,7 +164,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         _along_the_axis(given, find, theta, work)
         return
     body.require("J")
-    cos, sin = cos_theta(theta), math.sin(theta)
+    cos = cos_theta(theta)
     if cos != 0:
         body.require("I_cg")
     J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
@@ -436,7 +436,7 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
             work.text("the rotor's centre travels on the turn: cg_radius = turn_radius, across "
                       "the spin axis")
     g = body.g
-    sin, cos = math.sin(theta), cos_theta(theta)
+    sin = math.sin(theta)
     forces = bearing_forces(m, g, M, L, a, precession, theta, R, offset)
     b = L - a
     work.section("Bearing forces: free body of the rotor (forces on the rotor)")

@@ -89,7 +89,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _constants(top, start, nut, omega_z: float, work: Work) -> None:
-    c0, s0 = math.cos(start.theta0), math.sin(start.theta0)
     work.section("Constants of the motion at ", rel(t_, "=", 0),
                  " (Eqs. 11.8, 11.14, 11.17, 11.18)")
     work.text("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
@@ -175,8 +174,6 @@ def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
 
 
 def _released(top, start, nut, omega_z: float, work: Work) -> None:
-    from ..physics.nutation import released_u1
-
     work.section("Released from rest (", rel(*names("phidot0"), "=", thetadot0, "=", 0),
                  "): Eqs. 11.22-11.25")
     P1, P2 = names("P1 P2")

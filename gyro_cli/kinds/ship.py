@@ -131,8 +131,8 @@ def _steering(given: Given, work: Work) -> V.Vector:
     if "turn_rate" in given:
         for key in ("speed", "turn_radius"):
             if key in given:
-                raise InputError(f"give turn_rate, or speed and turn_radius (omega_p = v / R), "
-                                 f"not both", key=f"given.{key}")
+                raise InputError("give turn_rate, or speed and turn_radius (omega_p = v / R), "
+                                 "not both", key=f"given.{key}")
         rate = given["turn_rate"]
         turn = given.word("turn", "left")
         work.section("Steering: precession about the vertical")

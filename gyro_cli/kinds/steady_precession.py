@@ -459,7 +459,7 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
 
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
             driver: str, work: Work) -> None:
-    cos, sin = cos_theta(theta), math.sin(theta)
+    sin = math.sin(theta)
     _tdd, _H, _M = names("thetaddot H M")
     work.section("Moment for the motion, Eq. 11.13 with ", rel(_tdd, "=", 0), " (",
                  rel(deriv(_H), "=", _M), ")")

@@ -109,7 +109,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          f"between {num(math.degrees(theta0))} and "
                          f"{num(360 - math.degrees(theta0))} deg)", key="given.theta")
     b = d - a
-    c0, c, s = cos_theta(theta0), cos_theta(theta), math.sin(theta)
+    c, s = cos_theta(theta), math.sin(theta)
     f = swing_forces(m, g, J, I_G, p, L, d, a, theta0, theta)
     I_O = I_G + m * L * L
 

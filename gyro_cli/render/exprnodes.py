@@ -141,9 +141,6 @@ class NodePrinter:
     def _print_Dot(self, node: P.Dot) -> Node:
         return self._vector(node)
 
-    def _print_Tup(self, node: P.Tup) -> Node:
-        return Group("(", Tuple(tuple(self._print(x) for x in node.items)))
-
     def _print_Fn(self, node: P.Fn) -> Node:
         if node.name == "d/dt":  # the rate of change of its argument
             arg = self._print(node.args[0])
@@ -190,8 +187,6 @@ class NodePrinter:
         right = self._print(node.right)
         if E.precedence(node.right, False) <= E.ADD:
             right = Group("(", right)
-        if node.left is None:
-            return Neg(right, sign=node.op)
         return BinOp(node.op, self._print(node.left), right)
 
 
@@ -209,9 +204,6 @@ class NodePrinter:
         if node.of is None:
             return Text(node.words)
         return BinOp(" ", self._print(node.of), Text(" " + node.words))
-
-    def _print_Paren(self, node: P.Paren) -> Node:
-        return Group("(", self._print(node.arg))
 
     def _print_Prime(self, node: P.Prime) -> Node:
         return Prime(self._print(node.arg), node.count)
