@@ -22,6 +22,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Sym, absolute
 from ..core.prose import cross, names, paren, plus, q, qvec, rel
+from ..core.vehicle_words import reactive_couple
 from ..core.work import Work
 
 
@@ -46,11 +47,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "forward), ", z, " up. The engine's axis lies fore and aft. A rotation that looks "
               "clockwise to an observer has its vector pointing away from the observer "
               "(right-hand rule).")
-    work.text(H_, ": the angular momentum of the spinning parts; ", wp_, ": the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotor ",
-              rel(C_, "=", cross(wp_, H_)), " (Eq. 11.29); the aeroplane feels the reactive "
-              "couple ", -C_, ". About ", -y, " it raises the nose; about ", plus(y),
-              " it dips it.")
+    work.text(*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
+              plus(y), " it dips it.")
 
     direction = V.spin_direction(sense) if sense else 1.0
     work.section("Engine and propeller")

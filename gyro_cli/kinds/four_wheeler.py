@@ -31,6 +31,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Sym, sqrt
 from ..core.prose import cross, names, plus, q, qvec, rel, total, tup
+from ..core.vehicle_words import reactive_couple
 from ..core.work import Work, qty
 
 #: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
@@ -50,10 +51,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Going forward "
               "the wheels roll: their spin vector points to the left ", tup(plus(ay)), "; each "
               "engine's points the same way (engine_sense: same) or the other way (opposite).")
-    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotors ",
-              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the vehicle feels the reactive "
-              "couple ", -C0, ". Couples are about the fore-and-aft axis, positive "
+    work.text(*reactive_couple("vehicle", "rotors"), ". Couples are about the fore-and-aft axis, positive "
               "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
               "road's vertical forces on each wheel; the centre of mass is taken midway between "
               "the axles and the wheels, so each pair shares equally.")

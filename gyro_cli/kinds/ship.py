@@ -26,6 +26,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Num, Sym, absolute, cos, sin
 from ..core.prose import cross, deriv, names, plus, qvec, q, rel
+from ..core.vehicle_words import reactive_couple
 from ..core.work import Work
 
 #: the ship's axes and the symbols its prose names (values are in the steps' trees)
@@ -49,11 +50,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "forward), ", z, " up. The rotor's axis lies fore and aft. A rotation that looks "
               "clockwise to an observer has its vector pointing away from the observer "
               "(right-hand rule).")
-    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotor ",
-              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the ship feels the reactive couple ",
-              -C0, ". About ", -y, " it raises the bow; about ", plus(z), " it turns the ship to "
-              "port.")
+    work.text(*reactive_couple("ship"), ". About ", -y, " it raises the bow; about ", plus(z),
+              " it turns the ship to port.")
 
     if sense is None:
         if "effect" in find:

@@ -30,6 +30,7 @@ from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Sym, atan, cos, sin
 from ..core.prose import cross, deriv, names, plus, q, qvec, rel, tup
+from ..core.vehicle_words import reactive_couple
 from ..core.work import Work
 
 #: the machine's axes and the symbols its prose names (values are in the steps' trees)
@@ -56,10 +57,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text("machine axes: ", x, " forward, ", y, " to the left, ", z, " up. Going forward the "
               "road wheels roll: their spin vector points to the left ", tup(plus(y)), ". The "
               "engine's points the same way (engine_sense: same) or the other way (opposite).")
-    work.text(H0, ": the angular momentum of the spinning parts; ", wp0, ": the precession (the "
-              "turn's angular velocity, about the vertical); couple on the rotors ",
-              rel(C0, "=", cross(wp0, H0)), " (Eq. 11.29); the machine feels the reactive "
-              "couple ", -C0, ". Couples below are about the fore-and-aft line through the contact "
+    work.text(*reactive_couple("machine", "rotors"), ". Couples below are about the fore-and-aft line through the contact "
               "points, positive overturning the machine outward (away from the centre).")
 
     v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
