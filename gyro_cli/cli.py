@@ -363,10 +363,13 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
     from .checking.results import Tally
     from .render import check_report, junit
 
+    def printed(problem):  # type: ignore[no-untyped-def]
+        return check_report.printed(problem, fmt, junit_file is not None)
+
     checked = None
     try:
         if merge:
-            results, shards = checking.merged(paths, strict), None
+            results, shards = map(printed, checking.merged(paths, strict)), None
         else:
             files, missing = checking.collect(paths)
             if shard:
@@ -379,10 +382,11 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                 from .api import check_files
 
                 report = check_files([m.file for m in missing] + files, strict=strict)
-                results = iter(report.run.problems)
+                results = map(printed, report.run.problems)
             else:
-                checked = checking.checks(files, strict, jobs, timeout)
-                results = chain(missing, checked)
+                # each file's report text is made where it is checked: in the workers
+                checked = checking.checks(files, strict, jobs, timeout, then=printed)
+                results = chain(map(printed, missing), checked)
         if junit_file:
             from .core.files import refuse_special
 
@@ -397,11 +401,10 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         for problem in results:
             if problem.error:
                 click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
-            tally.add(problem)
+            tally.count(problem.status, problem.internal, problem.passed, problem.failed)
             if spool:
-                spool.add(problem)
-            click.echo(stream.problem(problem) if stream else check_report.table_rows(problem),
-                       nl=False)
+                spool.add_text(*problem.junit)
+            click.echo(stream.line(problem.report) if stream else problem.report, nl=False)
     finally:
         if checked is not None:
             checked.close()  # a reader that left, or Ctrl-C: the workers end now

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
-from typing import Any, Iterator
+from typing import Any, Callable, Iterator
 
 from ..core.errors import InputError
 from .expected import Expected, parse_expected
@@ -240,25 +240,29 @@ def crashed(path: str, exitcode: int | None) -> ProblemCheck:
 
 
 def checks(files: list[str], strict: bool = False, jobs: int = 1,
-           timeout: float | None = TIMEOUT) -> Iterator[ProblemCheck]:
-    """Each file's ProblemCheck, in the order of ``files``, as soon as it is known.
+           timeout: float | None = TIMEOUT,
+           then: Callable[[ProblemCheck], Any] | None = None) -> Iterator[Any]:
+    """Each file's ProblemCheck, in the order of ``files``, as soon as it is known; or,
+    given ``then``, ``then`` of it, applied where the file was checked (so a worker
+    hands back what the caller makes of a result, e.g. its report text).
 
     ``jobs`` > 1 spreads the files over that many worker processes (checking/pool.py);
     then a file that crashes its worker or outlasts ``timeout`` costs only that file.
     With one job the files are checked in this process, the time limit by an alarm signal.
     """
+    finish = then or (lambda problem: problem)
     if min(jobs, len(files)) > 1:
         from . import pool  # multiprocessing, only for a pool
 
         if pool.forks():
-            import functools
-
             warm()
-            yield from pool.pooled(files, functools.partial(check_file, strict=strict),
-                                   min(jobs, len(files)), timeout, timed_out, crashed)
+            yield from pool.pooled(
+                files, lambda path: finish(check_file(path, strict)), min(jobs, len(files)),
+                timeout, lambda path, limit: finish(timed_out(path, limit)),
+                lambda path, code: finish(crashed(path, code)))
             return
     for path in files:
-        yield check_in_time(path, strict, timeout)
+        yield finish(check_in_time(path, strict, timeout))
 
 
 def warm() -> None:

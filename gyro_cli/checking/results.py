@@ -4,6 +4,7 @@ per file, one CheckRun per command; the reports in render/ print them."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields
+from typing import NamedTuple
 
 
 # ---- results ----------------------------------------------------------------
@@ -62,6 +63,22 @@ class ProblemCheck:
 _ANSWER_FIELDS = {f.name for f in fields(AnswerCheck)}
 
 
+class Printed(NamedTuple):
+    """One problem as the command writes it, made where it was checked (a worker): its
+    report text (the table's rows or the JSON line), its JUnit ``<testsuite>`` and
+    counts, and what the summary counts of it. The parent writes and counts it without
+    the ProblemCheck, so the reports' text is made in parallel and only text crosses
+    the pipe."""
+
+    error: str | None
+    status: str
+    internal: bool
+    passed: int  # keyed answers that passed
+    failed: int  # keyed answers that failed
+    report: str
+    junit: tuple[str, tuple[int, int, int, int]] | None
+
+
 class Tally:
     """The counts of a run, added to one problem at a time: what the summary line and the
     exit code need, without keeping the problems (a run of any size in constant memory)."""
@@ -72,16 +89,22 @@ class Tally:
                                       "bad_files", "internal_errors", "no_expected"), 0)
 
     def add(self, problem: ProblemCheck) -> None:
+        passed = sum(1 for a in problem.answers if a.keyed and a.passed)
+        failed = sum(1 for a in problem.answers if a.keyed and not a.passed)
+        self.count(problem.status, problem.internal, passed, failed)
+
+    def count(self, status: str, internal: bool, passed: int, failed: int) -> None:
+        """One problem, by what the counts need of it: its status, whether its error is
+        gyro's own, and its keyed answers that passed and failed."""
         c = self._counts
         c["files"] += 1
-        c["checked"] += problem.status in ("pass", "fail")
-        c["bad_files"] += problem.status == "error"
-        c["internal_errors"] += problem.internal
-        c["no_expected"] += problem.status == "no expected answers"
-        for a in problem.answers:
-            if a.keyed:
-                c["answers"] += 1
-                c["passed" if a.passed else "failed"] += 1
+        c["checked"] += status in ("pass", "fail")
+        c["bad_files"] += status == "error"
+        c["internal_errors"] += internal
+        c["no_expected"] += status == "no expected answers"
+        c["answers"] += passed + failed
+        c["passed"] += passed
+        c["failed"] += failed
 
     def counts(self) -> dict[str, int]:
         return dict(self._counts)

@@ -4,7 +4,7 @@ printing; imports only the standard library, numpy, scipy and core.errors."""
 
 #: what the solvers import inside the functions that need it (so that a command that does
 #: not solve such a problem never loads it)
-LAZY_IMPORTS = ("numpy", "scipy.special")
+LAZY_IMPORTS = ("numpy",)
 
 
 def preload() -> None:

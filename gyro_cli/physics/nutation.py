@@ -19,7 +19,7 @@ Everything is computed relative to the starting point, d = u - u0, where f has
 coefficients free of cancellation (f(u0) = sin^2(theta0) thetadot0^2 exactly), so
 double roots (steady precession) and release from rest (u0 a root) stay exact.
 
-Pure floats; scipy is imported inside the functions that need it.
+Pure floats; the elliptic integrals are elliptic.py's (no scipy).
 """
 
 from __future__ import annotations
@@ -281,7 +281,7 @@ def _mean_precession(k: dict, B: float, d1: float, d2: float, d3: float, one_min
                      one_plus0: float) -> float:
     """(phi advance over a period) / period, third-kind integrals in Carlson form:
     Pi(n, m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n)."""
-    from scipy.special import elliprj
+    from .elliptic import carlson_rj
 
     width, span = d2 - d1, d3 - d1
     y = (d3 - d2) / span                                           # 1 - m, exactly
@@ -294,18 +294,18 @@ def _mean_precession(k: dict, B: float, d1: float, d2: float, d3: float, one_min
     total = 0.0
     if minus:       # n1 = (u2 - u1)/(1 - u1), 1 - n1 = (1 - u2)/(1 - u1)
         n, p = width / one_minus1, (one_minus0 - d2) / one_minus1
-        total += minus * (K + n / 3 * float(elliprj(0.0, y, 1.0, p))) / one_minus1
+        total += minus * (K + n / 3 * carlson_rj(0.0, y, 1.0, p)) / one_minus1
     if plus:        # -n2 = -(u2 - u1)/(1 + u1), 1 + n2 = (1 + u2)/(1 + u1)
         n, p = -width / one_plus1, (one_plus0 + d2) / one_plus1
-        total += plus * (K + n / 3 * float(elliprj(0.0, y, 1.0, p))) / one_plus1
+        total += plus * (K + n / 3 * carlson_rj(0.0, y, 1.0, p)) / one_plus1
     return total / (2 * K)
 
 
 def complete_K(d1: float, d2: float, d3: float) -> float:
-    """K(m), m = (u2 - u1)/(u3 - u1), as R_F(0, 1 - m, 1) with 1 - m = (u3 - u2)/(u3 - u1)."""
-    from scipy.special import elliprf
+    """K(m), m = (u2 - u1)/(u3 - u1), from 1 - m = (u3 - u2)/(u3 - u1) (elliptic.py)."""
+    from .elliptic import complete_K as K_of
 
-    return float(elliprf(0.0, (d3 - d2) / (d3 - d1), 1.0))
+    return K_of((d3 - d2) / (d3 - d1))
 
 
 def _sleeping(top: Top, start: Start, k: dict, roots, common: dict) -> Nutation:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..checking.results import AnswerCheck, CheckRun, ProblemCheck, Tally
+from ..checking.results import AnswerCheck, CheckRun, Printed, ProblemCheck, Tally
 from ..core.errors import terminal_text
 from ..core.work import num
 
@@ -105,6 +105,23 @@ def problem_dict(p: ProblemCheck) -> dict[str, Any]:
             "slip": a.slip, "keyed": a.keyed} for a in p.answers]}
 
 
+def json_line(p: ProblemCheck) -> str:
+    """One problem of the JSON report, as its line."""
+    return _dumps(problem_dict(p))
+
+
+def printed(p: ProblemCheck, fmt: str, junit: bool) -> Printed:
+    """``p`` as `gyro check` writes it: its JSON line (``fmt`` "json") or table rows, its
+    JUnit testsuite if ``junit``, and its counts."""
+    from . import junit as junit_xml
+
+    return Printed(p.error, p.status, p.internal,
+                   sum(1 for a in p.answers if a.keyed and a.passed),
+                   sum(1 for a in p.answers if a.keyed and not a.passed),
+                   json_line(p) if fmt == "json" else table_rows(p),
+                   junit_xml.suite_text(p) if junit else None)
+
+
 def as_dict(run_: CheckRun) -> dict[str, Any]:
     """The JSON report: every problem and answer, plus the summary."""
     return {"summary": _summary(run_), "problems": [problem_dict(p) for p in run_.problems]}
@@ -159,8 +176,13 @@ class JsonStream:
         return '{"problems": ['
 
     def problem(self, p: ProblemCheck) -> str:
+        return self.line(json_line(p))
+
+    def line(self, text: str) -> str:
+        """A problem's line (``json_line``), after the comma that separates it from the
+        one before."""
         self._count += 1
-        return ("," if self._count > 1 else "") + "\n" + _dumps(problem_dict(p))
+        return ("," if self._count > 1 else "") + "\n" + text
 
     def tail(self, tally: Tally, shard: tuple[int, int] | None = None) -> str:
         """The end: the summary (with ``"shard": "K/N"`` for a shard's report)."""

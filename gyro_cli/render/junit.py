@@ -145,7 +145,10 @@ class Spool:
         self.totals = dict(tests=0, failures=0, errors=0, skipped=0)
 
     def add(self, problem: ProblemCheck) -> None:
-        text, counts = suite_text(problem)
+        self.add_text(*suite_text(problem))
+
+    def add_text(self, text: str, counts: tuple[int, int, int, int]) -> None:
+        """A testsuite as ``suite_text`` wrote it, with its counts."""
         for key, count in zip(("tests", "failures", "errors", "skipped"), counts):
             self.totals[key] += count
         self._file.write(f"  {text}\n".encode("utf-8", "backslashreplace"))
