@@ -75,3 +75,35 @@ def test_special_characters_are_escaped(tmp_path):
     case = root.find(".//testcase")
     assert case.get("name").startswith('a<b & "c"')
     assert root.find("testsuite").get("name").endswith("we<ird&.yaml")
+
+
+# ---- the direct writer against ElementTree ------------------------------------------
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+_texts = st.text(alphabet=st.characters(blacklist_categories=("Cs",)), max_size=30)
+
+
+@settings(max_examples=300, deadline=None)
+@given(file=_texts, pid=_texts, status=st.sampled_from(["pass", "fail", "error",
+                                                         "no expected answers"]),
+       error=_texts, messages=st.lists(st.tuples(_texts, st.booleans(), _texts), max_size=3))
+def test_suite_text_is_elementtree_s_text(file, pid, status, error, messages):
+    """suite_text writes what ElementTree writes for suite(): escaping (&, <, quotes,
+    newlines, tabs) and characters XML forbids, for any file name, id or message."""
+    import xml.etree.ElementTree as ET
+
+    from gyro_cli.checking.results import AnswerCheck, ProblemCheck
+    from gyro_cli.render.junit import suite, suite_text
+
+    answers = [AnswerCheck("n", None, "1", "2", passed, message=message, slip=slip or None)
+               for message, passed, slip in messages]
+    problem = ProblemCheck(file or "f.yaml", pid, "t", "k", status=status,
+                           error=error if status == "error" else None, answers=answers)
+    root = ET.Element("testsuites")
+    root.append(suite(problem))
+    ET.indent(root)
+    whole = ET.tostring(root, encoding="unicode")
+    inner = whole[len("<testsuites>\n  "):-len("\n</testsuites>")]
+    assert suite_text(problem)[0] == inner

@@ -50,7 +50,26 @@ class Tolerance:
 
 
 def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> Tolerance:
-    """One tolerance: ``"1%"``, ``"3 sig"`` or a quantity in the answer's dimension."""
+    """One tolerance: ``"1%"``, ``"3 sig"`` or a quantity in the answer's dimension.
+
+    A text read before for the same dimension is not read again: a bank's files repeat
+    a few tolerances (``1%``), each read twice per answer (validated, then used). Only
+    tolerances that were read without error are kept; a bad one is refused each time,
+    at its own key."""
+    if raw.__class__ is str:
+        cached = _READ.get((raw, dimension))
+        if cached is not None:
+            return cached
+    tolerance = _parse_tolerance(raw, dimension, key)
+    if raw.__class__ is str and len(_READ) < 1024:
+        _READ[(raw, dimension)] = tolerance
+    return tolerance
+
+
+_READ: dict[tuple[str, str | None], Tolerance] = {}
+
+
+def _parse_tolerance(raw: Any, dimension: str | None, key: str) -> Tolerance:
     if isinstance(raw, bool) or not isinstance(raw, (str, int, float)):
         raise InputError(f"expected a tolerance such as '1%', '3 sig' or '0.01 rad/s', got "
                          f"{shown(raw)}", key=key)

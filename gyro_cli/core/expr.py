@@ -51,10 +51,12 @@ def num(x: float, sig: int = SIG) -> str:
 
 
 def _node(x: "Expr | float") -> "Expr":
-    if isinstance(x, Chain):
-        raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
     if isinstance(x, Expr):
+        if isinstance(x, Chain):
+            raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
         return x
+    if x.__class__ is float:  # the common operand, before the general tests
+        return Num(x)
     if isinstance(x, bool) or not isinstance(x, (int, float)):
         raise TypeError(f"not an expression: {x!r}")
     return Num(float(x))

@@ -303,8 +303,19 @@ class Prime(Typeset):
 # ---- building -----------------------------------------------------------------
 
 def names(text: str, unit: str = "") -> tuple[Sym, ...]:
-    """Symbols known by their names only (no value): ``names("I_v H Omega")``."""
-    return tuple(Sym(name, math.nan, unit) for name in text.split())
+    """Symbols known by their names only (no value): ``names("I_v H Omega")``.
+
+    The same text gives the same symbols (a tree never changes a node, so they are
+    shared): the kinds name the same symbols in every file they solve."""
+    made = _NAMED.get((text, unit))
+    if made is None:
+        made = tuple(Sym(name, math.nan, unit) for name in text.split())
+        if len(_NAMED) < 4096:
+            _NAMED[(text, unit)] = made
+    return made
+
+
+_NAMED: dict[tuple[str, str], tuple[Sym, ...]] = {}
 
 
 def rel(first: Expr | float | None, *chain: str | Expr | float) -> Rel:

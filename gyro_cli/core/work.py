@@ -101,6 +101,21 @@ Step.substitution = _printed("substitution", lambda s: tree_substitution(s.expr)
 Step.text = _printed("text", lambda s: s.prose.text)  # type: ignore[method-assign, assignment]
 
 
+def _step_init(self, symbol: str = "", formula: str = "", substitution: str = "",  # type: ignore[no-untyped-def]
+               value: float | None = None, unit: str = "", ref: str = "", text: str = "",
+               expr: Expr | None = None, view: Expr | None = None,
+               si: tuple[float, str] | None = None, prose: Prose | None = None,
+               symbol_expr: Expr | None = None) -> None:
+    """The dataclass's __init__, storing the printed fields directly rather than through
+    their properties' setters (a file's check makes some twenty steps)."""
+    self.__dict__.update(symbol=symbol, _formula=formula, _substitution=substitution,
+                         value=value, unit=unit, ref=ref, _text=text, expr=expr, view=view,
+                         si=si, prose=prose, symbol_expr=symbol_expr)
+
+
+Step.__init__ = _step_init  # type: ignore[method-assign]
+
+
 @dataclass
 class Section:
     title: str

@@ -10,6 +10,7 @@ expected answers. Built with ElementTree, so every attribute is escaped.
 from __future__ import annotations
 
 import os
+import re
 import xml.etree.ElementTree as ET
 
 from ..checking.results import CheckRun, ProblemCheck
@@ -19,7 +20,7 @@ _FORBIDDEN = {c: None for c in range(32) if c not in (9, 10, 13)}
 
 
 def _clean(text: str) -> str:
-    return text.translate(_FORBIDDEN)
+    return text if text.isprintable() else text.translate(_FORBIDDEN)
 
 
 def _classname(problem: ProblemCheck) -> str:
@@ -104,12 +105,20 @@ def suite_text(problem: ProblemCheck) -> tuple[str, tuple[int, int, int, int]]:
 
 
 def _escape_text(text: str) -> str:
+    if _TEXT_SPECIAL.search(text) is None:  # most names and messages hold none
+        return text
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
 def _escape_attribute(text: str) -> str:
+    if _ATTRIBUTE_SPECIAL.search(text) is None:
+        return text
     return (_escape_text(text).replace('"', "&quot;").replace("\r", "&#13;")
             .replace("\n", "&#10;").replace("\t", "&#09;"))
+
+
+_TEXT_SPECIAL = re.compile(r"[&<>]")
+_ATTRIBUTE_SPECIAL = re.compile(r'[&<>"\r\n\t]')
 
 
 def _serialize(node: ET.Element, write) -> None:  # type: ignore[no-untyped-def]

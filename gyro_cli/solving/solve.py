@@ -136,6 +136,7 @@ _NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
 def _all_finite(solution: Solution) -> None:
     """Every number in the worked answer is finite: an overflow in a step (1e200 rpm
     squared) is bad input for this kind, not a worked answer with inf in it."""
+    finite: set[int] = set()  # the symbols found finite so far (the steps share many)
     for section in solution.sections:
         for step in section.steps:
             where = step.symbol or _Title(section)  # the title printed only for a message
@@ -144,7 +145,7 @@ def _all_finite(solution: Solution) -> None:
                                  "(overflow or a degenerate case); check the magnitudes and "
                                  "units", key="given")
             if step.expr is not None:  # a tree: its symbols' values, no text to read
-                if not _symbols_finite(step.expr):
+                if not _symbols_finite(step.expr, finite):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
             # a sentence's values were held to be finite as they were made (core/prose.py)
@@ -185,10 +186,13 @@ def _not_finite(text: str) -> bool:
     return _NOT_FINITE.search(text) is not None
 
 
-def _symbols_finite(expr) -> bool:  # type: ignore[no-untyped-def]
+def _symbols_finite(expr, finite: set[int] | None = None) -> bool:  # type: ignore[no-untyped-def]
     """Whether every symbol of ``symbols(expr)`` (the first of each name; of a `Let`, its
-    symbol) holds a finite value: the same walk, without building the mapping."""
+    symbol) holds a finite value: the same walk, without building the mapping.
+    ``finite``: the ids of symbol objects already found finite (in other steps of the same
+    solution, which holds them); each found now is added."""
     seen: set[str] = set()
+    done = finite if finite is not None else set()
     todo = [expr]
     pop, push, isfinite = todo.pop, todo.append, math.isfinite
     while todo:
@@ -197,8 +201,11 @@ def _symbols_finite(expr) -> bool:  # type: ignore[no-untyped-def]
         if kind is Sym or (kind not in _TREE_NODES and isinstance(node, Sym)):
             if node.name not in seen:
                 seen.add(node.name)
+                if id(node) in done:
+                    continue
                 if not isfinite(node.si):
                     return False
+                done.add(id(node))
         elif kind is Let or (kind not in _TREE_NODES and isinstance(node, Let)):
             push(node.sym)
         elif kind in _BINARY:
