@@ -26,6 +26,7 @@ import math
 TYPE_CHECKING = False  # typing is not imported on the solve path (its import costs ms)
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from typing import Any
 
 SIG = 4
 
@@ -50,6 +51,11 @@ def num(x: float, sig: int = SIG) -> str:
     return f"{mantissa}e{exponent}" if exponent else mantissa
 
 
+#: the classes of tree nodes an operator takes as they are (every node but a Chain): the
+#: operators look an operand's class up here before calling _node, which checks it whole
+_OPERANDS: set[type] = set()
+
+
 def _node(x: "Expr | float") -> "Expr":
     if isinstance(x, Expr):
         if isinstance(x, Chain):
@@ -67,32 +73,37 @@ class Expr:
 
     __slots__ = ()
 
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        if cls.__name__ != "Chain":  # a chain is a step's whole tree, never an operand
+            _OPERANDS.add(cls)
+
     def __add__(self, other: "Expr | float") -> "Expr":
-        return Add(self, _node(other))
+        return Add(self, other if other.__class__ in _OPERANDS else _node(other))
 
     def __radd__(self, other: "Expr | float") -> "Expr":
-        return Add(_node(other), self)
+        return Add(other if other.__class__ in _OPERANDS else _node(other), self)
 
     def __sub__(self, other: "Expr | float") -> "Expr":
-        return Sub(self, _node(other))
+        return Sub(self, other if other.__class__ in _OPERANDS else _node(other))
 
     def __rsub__(self, other: "Expr | float") -> "Expr":
-        return Sub(_node(other), self)
+        return Sub(other if other.__class__ in _OPERANDS else _node(other), self)
 
     def __mul__(self, other: "Expr | float") -> "Expr":
-        return Mul(self, _node(other))
+        return Mul(self, other if other.__class__ in _OPERANDS else _node(other))
 
     def __rmul__(self, other: "Expr | float") -> "Expr":
-        return Mul(_node(other), self)
+        return Mul(other if other.__class__ in _OPERANDS else _node(other), self)
 
     def __truediv__(self, other: "Expr | float") -> "Expr":
-        return Div(self, _node(other))
+        return Div(self, other if other.__class__ in _OPERANDS else _node(other))
 
     def __rtruediv__(self, other: "Expr | float") -> "Expr":
-        return Div(_node(other), self)
+        return Div(other if other.__class__ in _OPERANDS else _node(other), self)
 
     def __pow__(self, other: "Expr | float") -> "Expr":
-        return Pow(self, _node(other))
+        return Pow(self, other if other.__class__ in _OPERANDS else _node(other))
 
     def __neg__(self) -> "Expr":
         return Neg(self)

@@ -255,9 +255,20 @@ def params_of(kind: Kind) -> tuple[Param, ...]:
     return kind.params + (BODY_PARAMS if kind.uses_body else ())
 
 
+def params_by_name(kind: Kind) -> dict[str, Param]:
+    """``params_of(kind)`` by name, made once per kind (read for every file)."""
+    made = _BY_NAME.get(kind.name)
+    if made is None or made[0] is not kind:
+        made = _BY_NAME[kind.name] = (kind, {p.name: p for p in params_of(kind)})
+    return made[1]
+
+
+_BY_NAME: dict[str, tuple[Kind, dict[str, Param]]] = {}
+
+
 def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
     """Parse every given quantity into SI; apply the kind's defaults."""
-    params = {p.name: p for p in params_of(kind)}
+    params = params_by_name(kind)
     values: dict[str, float | str] = {}
     quantities: dict[str, Any] = {}
     for key, text in raw.items():

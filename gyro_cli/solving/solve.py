@@ -10,7 +10,7 @@ from ..core import units
 from ..core.body import build_body
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
-from .problem import Problem, load, params_of
+from .problem import Problem, load, params_by_name
 from ..core.work import GivenLine, Solution, Work, num
 
 
@@ -221,7 +221,7 @@ _TREE_NODES = _BINARY | {Sym, Let, Neg, Num, Const, Call}  # exactly these class
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
-    params = {p.name: p for p in params_of(problem.kind)}
+    params = params_by_name(problem.kind)
     lines = []
     for key, value in problem.given.values.items():
         param = params[key]
