@@ -362,3 +362,26 @@ def test_the_spooled_junit_is_what_elementtree_writes_for_awkward_text():
                     + ET.tostring(root, encoding="unicode") + "\n")
     assert ET.fromstring(text.encode("utf-8")).find(".//failure").get("message").startswith(
         "expected a&b <c>")
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_report_that_fails_to_print_costs_only_its_file(monkeypatch, tmp_path, run, jobs):
+    """The report text is made where a file is checked (a worker): a bug there is that
+    file's internal error, in one line, and the others are reported."""
+    from gyro_cli.render import check_report
+
+    files = _steady_bank(tmp_path, 3)
+    real = check_report.json_line
+
+    def failing(problem):
+        if problem.file.endswith("p01.yaml") and problem.status == "pass":
+            raise RuntimeError("no report")
+        return real(problem)
+
+    monkeypatch.setattr(check_report, "json_line", failing)
+    result = run("check", tmp_path, "--jobs", jobs, "--format", "json")
+    assert result.exit_code == 3
+    problems = json.loads(result.stdout)["problems"]
+    assert [p["status"] for p in problems] == ["pass", "error", "pass"]
+    assert result.stderr.splitlines() == [
+        f"gyro: {files[1]}: internal error: RuntimeError: no report (please report)"]

@@ -250,7 +250,17 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
     then a file that crashes its worker or outlasts ``timeout`` costs only that file.
     With one job the files are checked in this process, the time limit by an alarm signal.
     """
-    finish = then or (lambda problem: problem)
+    def finish(problem: ProblemCheck) -> Any:
+        if then is None:
+            return problem
+        try:
+            return then(problem)
+        except Exception as err:  # a bug in what the caller makes of it: this file's error
+            from ..core.errors import internal_message
+
+            return then(ProblemCheck(problem.file, status="error", internal=True,
+                                     error=internal_message(problem.file, err)))
+
     if min(jobs, len(files)) > 1:
         from . import pool  # multiprocessing, only for a pool
 
