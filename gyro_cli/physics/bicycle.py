@@ -218,9 +218,12 @@ def eigenvalues(m: Matrices, v: float, g: float) -> Spectrum:
     exact conjugates (bit-equal real parts), a real eigenvalue with imaginary part 0.0,
     so the order is exact.
     """
-    a = [polyval(v, c) for c in characteristic(m, g)]
-    ev = roots(a)
-    return Spectrum(sorted(ev, key=lambda e: (e.real, e.imag)))
+    return _spectrum([polyval(v, c) for c in _characteristic(m, g)])
+
+
+def _spectrum(a: list[float]) -> Spectrum:
+    """The roots of sum a[k] s^k, ascending real part, then imaginary part."""
+    return Spectrum(sorted(roots(a), key=lambda e: (e.real, e.imag)))
 
 
 # ---- polynomials: lists of float coefficients, lowest power first ----------------
@@ -494,6 +497,52 @@ def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
     return max(eigenvalues(m, v, g).real)
 
 
+# A Hurwitz quantity within this fraction of the sum of its terms' magnitudes is
+# rounding's to decide: far above the few ulps of rounding in a_k(v) and H3, far below
+# any margin a root finder's backward error could cross.
+HURWITZ_TOL = 1e-9
+
+
+def routh_hurwitz(a: list[float], terms: list[float]) -> bool | None:
+    """Whether every root of a0 + a1 s + a2 s^2 + a3 s^3 + a4 s^4 has Re(s) < 0, from its
+    coefficients alone; None where rounding could decide it (then find the roots).
+
+    Routh-Hurwitz for the quartic of Eq. 5.3 (in the Lienard-Chipart form, as ``hurwitz``):
+    with a4 > 0, all four roots have Re(s) < 0 iff a0, a1, a2, a3 > 0 and
+    H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 > 0; a coefficient < 0 alone means a root with
+    Re(s) > 0. ``terms[k]`` is the sum of the magnitudes of the terms that made a[k]
+    (for a_k(v) = sum c_j v^j, sum |c_j| v^j): a coefficient, or H3, no larger than
+    HURWITZ_TOL times its terms' magnitudes is undecided (None), and so is a lead
+    a4 <= 0 or a non-finite value.
+    """
+    a0, a1, a2, a3, a4 = a
+    if not a4 > 0 or not all(math.isfinite(x) for x in a):
+        return None
+    for ak, scale in zip(a, terms):
+        if not abs(ak) > HURWITZ_TOL * scale:
+            return None
+    if a0 < 0 or a1 < 0 or a2 < 0 or a3 < 0:
+        return False
+    t1, t2, t3 = a1 * a2 * a3, a0 * a3 * a3, a1 * a1 * a4
+    h3 = t1 - t2 - t3
+    if not abs(h3) > HURWITZ_TOL * (abs(t1) + abs(t2) + abs(t3)):
+        return None
+    return h3 > 0
+
+
+def _stable_at(m: Matrices, v: float, g: float) -> bool:
+    """Whether every eigenvalue at speed v has Re(s) < 0 (spectral_abscissa < 0): by
+    routh_hurwitz on a_k(v) (Eq. 5.3's characteristic quartic), and by the eigenvalues
+    only where rounding could decide it."""
+    coeffs = _characteristic(m, g)
+    a = [polyval(v, c) for c in coeffs]
+    x = abs(v)
+    decided = routh_hurwitz(a, [polyval(x, [abs(cj) for cj in c]) for c in coeffs])
+    if decided is None:
+        return max(_spectrum(a).real) < 0
+    return decided
+
+
 def stability(m: Matrices, g: float) -> Stability:
     """Weave and capsize speeds and the self-stable speed range(s), v > 0.
 
@@ -523,7 +572,7 @@ def stability(m: Matrices, g: float) -> Stability:
     stable: list[tuple[float, float]] = []
     for lo, hi in zip(points, points[1:]):
         probe = 0.5 * (lo + hi) if math.isfinite(hi) else (2 * lo if lo > 0 else 1.0)
-        if spectral_abscissa(m, probe, g) < 0:
+        if _stable_at(m, probe, g):
             if stable and stable[-1][1] == lo:
                 stable[-1] = (stable[-1][0], hi)
             else:
