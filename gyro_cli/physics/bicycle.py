@@ -301,10 +301,11 @@ def roots(c: list[float]) -> list[complex]:
     # the same floats): the iteration is most of a bicycle's check
     top, rest = monic[-1], monic[-2::-1]
     dtop, drest = dmonic[-1], dmonic[-2::-1]
-    indices = range(n)
+    others_of = [(i, [j for j in range(n) if j != i]) for i in range(n)]
+    tol, isfinite = 4 * _EPS, cmath.isfinite
     for _ in range(500):
         moved = False
-        for i in indices:
+        for i, js in others_of:
             zi = z[i]
             value = top + zi * 0
             for coefficient in rest:
@@ -315,25 +316,24 @@ def roots(c: list[float]) -> list[complex]:
             for coefficient in drest:
                 slope = coefficient + slope * zi
             others = 0
-            for j in indices:
-                if j != i:
-                    zj = z[j]
-                    if zi != zj:
-                        others = others + 1.0 / (zi - zj)
+            for j in js:
+                zj = z[j]
+                if zi != zj:
+                    others = others + 1.0 / (zi - zj)
             ratio = value / slope if slope != 0 else complex(math.inf)
             denominator = 1.0 - ratio * others
             step = ratio if denominator == 0 else ratio / denominator
-            if not cmath.isfinite(step):
+            if not isfinite(step):
                 continue
-            z[i] = zi - step
-            if abs(step) > 4 * _EPS * abs(z[i]):
+            z[i] = zi = zi - step
+            if abs(step) > tol * abs(zi):
                 moved = True
         if not moved:
             break
     d = polyder(c)
     polished = []
     for zi in z:
-        polished.append(_newton(zi, c, d))
+        polished.append(complex(_newton(zi, c, d)))
     # real roots: imaginary part at the rounding level
     real, upper, lower = [], [], []
     for zi in polished:
@@ -353,39 +353,46 @@ def roots(c: list[float]) -> list[complex]:
     for zu in upper:
         partner = min(lower, key=lambda e: abs(e - zu.conjugate()))
         lower.remove(partner)
-        zp = _newton(0.5 * (zu + partner.conjugate()), c, d)
+        zp = complex(_newton(0.5 * (zu + partner.conjugate()), c, d))
         zp = complex(zp.real, abs(zp.imag))
         out.extend([zp, zp.conjugate()])
     return out
 
 
-def _newton(z: complex, c: list[float], d: list[float], steps: int = 4) -> complex:
-    """Newton steps on c from z, kept while the residual does not grow."""
-    value = polyval(z, c)
-    for _ in range(steps):
-        slope = polyval(z, d)
-        if value == 0 or slope == 0:
-            break
-        trial = z - value / slope
-        new = polyval(trial, c)
-        if not abs(new) <= abs(value):
-            break
-        z, value = trial, new
-    return complex(z)
+def _newton(x: complex | float, c: list[float], d: list[float],
+            steps: int = 4) -> complex | float:
+    """Newton steps on c from x (complex or real; d = polyder(c)), kept while the residual
+    does not grow.
 
-
-def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> float:
-    value = polyval(x, c)
+    polyval written out (the same operations in the same order, so the same floats): the
+    polishing is a third of ``roots``.
+    """
+    ctop, crest = c[-1], c[-2::-1]
+    dtop, drest = d[-1], d[-2::-1]
+    value = ctop + x * 0
+    for coefficient in crest:
+        value = coefficient + value * x
     for _ in range(steps):
-        slope = polyval(x, d)
-        if value == 0 or slope == 0:
+        if value == 0:
+            break
+        slope = dtop + x * 0
+        for coefficient in drest:
+            slope = coefficient + slope * x
+        if slope == 0:
             break
         trial = x - value / slope
-        new = polyval(trial, c)
+        new = ctop + trial * 0
+        for coefficient in crest:
+            new = coefficient + new * trial
         if not abs(new) <= abs(value):
             break
         x, value = trial, new
-    return float(x)
+    return x
+
+
+def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> float:
+    """``_newton`` in real arithmetic: a real root polished."""
+    return float(_newton(x, c, d, steps))
 
 
 # ---- the characteristic polynomial as polynomials in v ------------------------
@@ -548,9 +555,11 @@ def stability(m: Matrices, g: float) -> Stability:
 
     Candidates are the positive roots of a0(v) and H3(v); between consecutive
     candidates the eigenvalues' signs cannot change, so one speed inside each
-    interval decides it.
+    interval decides it (``_stable_at``: Routh-Hurwitz on a_k(v), the eigenvalues
+    where rounding could decide). The eigenvalues are found at the candidates only,
+    to tell a capsize or weave speed from a root where the stability does not change.
     """
-    coeffs = characteristic(m, g)
+    coeffs = _characteristic(m, g)
     capsize, weave, other = [], [], []
     spectra: dict[float, Spectrum] = {}
     for v in _positive_roots(coeffs[0]):
