@@ -293,7 +293,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     stab = bike.stability(m, g)
     work.section("Self-stable speeds (", rel(V, ">", 0), ")")
-    work.text(rel(fn("H3", V), "=", _poly(bike.hurwitz(coeffs))))
+    work.text(rel(fn("H3", V), "=", _poly(bike.hurwitz_of(m, g))))
     # the speeds are roots of H3(v) and a0(v), conditions rather than formulas: value steps
     for v in stab.weave:
         work.step("v_w", value=v, unit="m/s", note=(

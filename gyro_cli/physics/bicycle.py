@@ -450,6 +450,17 @@ def hurwitz(coeffs: list[list[float]]) -> list[float]:
                    polyadd(polymul(a0, polymul(a3, a3)), polymul(polymul(a1, a1), a4)))
 
 
+def hurwitz_of(m: Matrices, g: float) -> list[float]:
+    """``hurwitz(characteristic(m, g))``: H3(v), worked once per bicycle (``stability`` and
+    the worked answer both ask for it)."""
+    return list(_hurwitz_of(m, g))
+
+
+@functools.lru_cache(maxsize=64)
+def _hurwitz_of(m: Matrices, g: float) -> tuple[float, ...]:
+    return tuple(hurwitz(characteristic(m, g)))
+
+
 def _positive_roots(poly: list[float]) -> list[float]:
     """Real roots v > 0 of a polynomial in v that is even in v: solved in w = v^2.
 
@@ -568,7 +579,7 @@ def stability(m: Matrices, g: float) -> Stability:
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
-    for v in _positive_roots(hurwitz(coeffs)):
+    for v in _positive_roots(_hurwitz_of(m, g)):
         ev = spectra[v] = eigenvalues(m, v, g)
         scale = max(1.0, max(abs(e) for e in ev))
         near = min(ev, key=lambda e: abs(e.real))
