@@ -18,6 +18,7 @@ worked answer says how the stable range moves without it.
 
 from __future__ import annotations
 
+import functools
 import math
 
 from ..core.errors import InputError
@@ -78,17 +79,13 @@ PRESET = "benchmark"
 
 def parameters(given: Given, work: Work) -> dict[str, float]:
     """The paper's parameters in SI: from `given`, the rest from `preset: benchmark`."""
-    from ..physics import bicycle as bike
-
     preset = given.word("preset")
     p: dict[str, float] = {"g": given["g"]}
     for key, (dimension, symbol, _) in KEYS.items():
         if key in given:
             p[key] = given[key]
         elif preset == PRESET:
-            p[key] = bike.BENCHMARK[key]
-            text = "pi/10 rad" if key == "lambda" else f"{p[key]:.12g} {SI[dimension]}"
-            shown = None if key == "lambda" else (f"{p[key]:.12g}", SI[dimension])
+            p[key], text, shown = _preset()[key]
             work.given.append(GivenLine(key, symbol, text, p[key], SI[dimension],
                                         "preset: Table 1", shown=shown))
         else:
@@ -97,6 +94,21 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
                              "al. (2007)", key=f"given.{key}")
     _validate(p)
     return p
+
+
+@functools.cache
+def _preset() -> dict[str, tuple[float, str, tuple[str, str] | None]]:
+    """Each key's value in Table 1 with its Given line's text and number as printed (the
+    same for every file: written once)."""
+    from ..physics import bicycle as bike
+
+    out: dict[str, tuple[float, str, tuple[str, str] | None]] = {}
+    for key, (dimension, _, _) in KEYS.items():
+        value = bike.BENCHMARK[key]
+        text = "pi/10 rad" if key == "lambda" else f"{value:.12g} {SI[dimension]}"
+        shown = None if key == "lambda" else (f"{value:.12g}", SI[dimension])
+        out[key] = (value, text, shown)
+    return out
 
 
 def _validate(p: dict[str, float]) -> None:
@@ -382,8 +394,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         for e in ev:
             work.text(rel(S_, "=", q(_eigen(e), "1/s", sig=12)))
         work.text(f"motion: {state}", *_MOTION[state])
+        a = [bike.polyval(speed, c) for c in coeffs]     # a_k at this speed
         for e in ev:
-            residual = _char_value(coeffs, speed, e)
+            residual = _char_value(a, e)
             work.check(rel(S_, "=", q(_eigen(e), sig=6)), ": ",
                        rel(_RESIDUAL, "=", q(abs(residual), sig=2)))
         work.answer("eigenvalues_real", _RE_S, [float(e.real) for e in ev], "inverse_time")
@@ -415,10 +428,8 @@ def _spectrum(stab, m, v: float, g: float):  # type: ignore[no-untyped-def]
     return stab.spectra[v] if v in stab.spectra else bike.eigenvalues(m, v, g)
 
 
-def _char_value(coeffs, v: float, s: complex) -> complex:
-    from ..physics.bicycle import polyval
-
-    a = [polyval(v, c) for c in coeffs]
+def _char_value(a: list[float], s: complex) -> complex:
+    """The characteristic polynomial at s over its lead, sum a_k s^k / a4 (a_k at the speed)."""
     return sum(a[k] * s ** k for k in range(5)) / a[4]
 
 
