@@ -31,7 +31,9 @@ the speeds where the stability changes are the roots of polynomials in v^2 (the
 characteristic polynomial's constant term and its Hurwitz determinant). One root finder
 serves both: Aberth-Ehrlich iteration in complex arithmetic, then Newton steps on the
 polynomial itself; a real polynomial's roots come out as exact reals or exact conjugate
-pairs. Polynomials are lists of coefficients, lowest power first.
+pairs. Whether a speed between those is self-stable needs no roots: the Routh-Hurwitz
+conditions on the coefficients there decide it (``routh_hurwitz``), and the eigenvalues
+only where rounding could. Polynomials are lists of coefficients, lowest power first.
 """
 
 from __future__ import annotations
@@ -400,8 +402,8 @@ def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> fl
 def characteristic(m: Matrices, g: float) -> list[list[float]]:
     """[a0, a1, a2, a3, a4]: det(M s^2 + v C1 s + g K0 + v^2 K2) = sum a_k(v) s^k.
 
-    Worked once per bicycle (``eigenvalues`` asks for it at every speed): a copy of the
-    remembered coefficients.
+    Worked once per bicycle (every speed's eigenvalues and stability ask for it): a copy
+    of the remembered coefficients.
     """
     return [list(a) for a in _characteristic(m, g)]
 
