@@ -18,6 +18,7 @@ worked answer says how the stable range moves without it.
 
 from __future__ import annotations
 
+import functools
 import math
 
 from ..core.errors import InputError
@@ -78,17 +79,13 @@ PRESET = "benchmark"
 
 def parameters(given: Given, work: Work) -> dict[str, float]:
     """The paper's parameters in SI: from `given`, the rest from `preset: benchmark`."""
-    from ..physics import bicycle as bike
-
     preset = given.word("preset")
     p: dict[str, float] = {"g": given["g"]}
     for key, (dimension, symbol, _) in KEYS.items():
         if key in given:
             p[key] = given[key]
         elif preset == PRESET:
-            p[key] = bike.BENCHMARK[key]
-            text = "pi/10 rad" if key == "lambda" else f"{p[key]:.12g} {SI[dimension]}"
-            shown = None if key == "lambda" else (f"{p[key]:.12g}", SI[dimension])
+            p[key], text, shown = _preset()[key]
             work.given.append(GivenLine(key, symbol, text, p[key], SI[dimension],
                                         "preset: Table 1", shown=shown))
         else:
@@ -97,6 +94,21 @@ def parameters(given: Given, work: Work) -> dict[str, float]:
                              "al. (2007)", key=f"given.{key}")
     _validate(p)
     return p
+
+
+@functools.cache
+def _preset() -> dict[str, tuple[float, str, tuple[str, str] | None]]:
+    """Each key's value in Table 1 with its Given line's text and number as printed (the
+    same for every file: written once)."""
+    from ..physics import bicycle as bike
+
+    out: dict[str, tuple[float, str, tuple[str, str] | None]] = {}
+    for key, (dimension, _, _) in KEYS.items():
+        value = bike.BENCHMARK[key]
+        text = "pi/10 rad" if key == "lambda" else f"{value:.12g} {SI[dimension]}"
+        shown = None if key == "lambda" else (f"{value:.12g}", SI[dimension])
+        out[key] = (value, text, shown)
+    return out
 
 
 def _validate(p: dict[str, float]) -> None:
@@ -131,6 +143,111 @@ def _validate(p: dict[str, float]) -> None:
 
 V, S_, INF = names("v s infinity")
 
+# The worked answer's formulas and sentences that no datum changes, built once (trees are
+# not changed once made, so every solve can share them): building them for every file
+# was a tenth of a bicycle's check. The data's trees and values are built in `solve`.
+_x, _y, _z, _phi, _delta, _q, _g = names("x y z phi delta q g")
+_M, _C1, _K0, _K2 = names("M C1 K0 K2")
+_S_R, _S_F = names("S_R S_F")
+_RE_S, _IM_S = fn("Re", S_), fn("Im", S_)
+_A = names("a0 a1 a2 a3 a4")
+_A_K, _H3 = names("a_k H3")
+_H3_V, _A0_V = fn("H3", V), fn("a0", V)
+_DET = fn("det", _M * S_ ** 2 + V * _C1 * S_ + _g * _K0 + V ** 2 * _K2)
+_CONVENTIONS = (
+    (_x, " forward, ", _y, " to the right, ", _z, " down; origin at the rear wheel's "
+     "contact point. ", _phi, ": the lean to the right; ", _delta, ": the steer to the "
+     "right (rad); ", rel(_q, "=", tup(_phi, _delta)), ". Small motions about upright "
+     "straight running at speed ", V, ", no rider torques:"),
+    (_M, ": the mass matrix; ", _C1, ": the velocity matrix (times ", V, "); ", _K0, ", ",
+     _K2, ": the stiffness matrices of gravity (times ", _g, ") and of speed (times ",
+     V ** 2, "):"),
+    (rel(_M * prime(_q, 2) + V * _C1 * prime(_q) + (_g * _K0 + V ** 2 * _K2) * _q, "=", 0),
+     "    (Eq. 5.3)"))
+
+
+def _no_spin() -> tuple:
+    """The line ``gyroscopic: false`` adds under the conventions."""
+    I_Ryy, r_R, I_Fyy, r_F = names("I_Ryy r_R I_Fyy r_F")
+    return ("gyroscopic: false -- the wheels' spin angular momentum is removed: ",
+            rel(_S_R, "=", _S_F, "=", 0), " wherever ", I_Ryy / r_R, " and ", I_Fyy / r_F,
+            " enter (", _C1, " and ", _K2, ").")
+
+
+def _matrix_entries() -> tuple[tuple, ...]:
+    """Eqs. A 20-A 23 as four lines, M, C1, K0, K2."""
+    (I_Txx, I_Txz, I_Tzz, I_All, I_Alx, I_Alz, mu_, S_T, S_F, S_A, m_T, z_T, w_,
+     lam_) = names("I_Txx I_Txz I_Tzz I_All I_Alx I_Alz mu S_T S_F S_A m_T z_T w lambda")
+    sep = ";  "
+    entries = {name: names(" ".join(f"{name}_{e}" for e in ("pp", "pd", "dp", "dd")))
+               for name in ("M", "C1", "K0", "K2")}
+    lines = []
+    pp, pd, dp, dd = entries["M"]
+    lines.append((rel(pp, "=", I_Txx), sep, rel(pd, "=", dp, "=", I_Alx + mu_ * I_Txz), sep,
+                  rel(dd, "=", I_All + 2 * mu_ * I_Alz + mu_ ** 2 * I_Tzz)))
+    pp, pd, dp, dd = entries["C1"]
+    lines.append((rel(pp, "=", 0), sep,
+                  rel(pd, "=", mu_ * S_T + S_F * cos(lam_) + I_Txz * cos(lam_) / w_
+                      - mu_ * m_T * z_T), sep,
+                  rel(dp, "=", -(mu_ * S_T + S_F * cos(lam_))), sep,
+                  rel(dd, "=", I_Alz * cos(lam_) / w_ + mu_ * (S_A + I_Tzz * cos(lam_) / w_))))
+    pp, pd, dp, dd = entries["K0"]
+    lines.append((rel(pp, "=", m_T * z_T), sep, rel(pd, "=", dp, "=", -S_A), sep,
+                  rel(dd, "=", -S_A * sin(lam_))))
+    pp, pd, dp, dd = entries["K2"]
+    lines.append((rel(pp, "=", dp, "=", 0), sep,
+                  rel(pd, "=", (S_T - m_T * z_T) * cos(lam_) / w_), sep,
+                  rel(dd, "=", (S_A + S_F * sin(lam_)) * cos(lam_) / w_)))
+    return tuple(lines)
+
+
+_NO_SPIN = _no_spin()
+_MATRIX_ENTRIES = _matrix_entries()
+_T_TITLE = ("The whole bicycle ", *names("T"), " about the rear contact point (Eqs. A 1-A 5)")
+_WHEELS_ZZ = ("for the wheels ", rel(*names("I_Rzz"), "=", *names("I_Rxx")),
+              " and ", rel(*names("I_Fzz"), "=", *names("I_Fxx")))
+_A_, _H_, _F_ = names("A H F")
+# the assembly named in words: its parts are bodies, not terms of a sum
+_A_TITLE = ("The front assembly ", _A_, " = front frame ", _H_, " + front wheel ", _F_,
+            " (Eqs. A 6-A 15)")
+_U_A_NOTE = ("distance of ", *names("A"), "'s centre of mass ahead of the steer axis")
+_MATRICES_TITLE = ("The matrices (Eqs. A 20-A 23), rows and columns ", tup(_phi, _delta))
+_CHAR_TITLE = ("The characteristic equation: ", rel(_DET, "=", 0))
+_CHAR_POLY = (rel(_A[4] * S_ ** 4 + _A[3] * S_ ** 3 + _A[2] * S_ ** 2 + _A[1] * S_ + _A[0],
+                  "=", 0),
+              ": the characteristic polynomial in the eigenvalue ", S_, "; its coefficients ",
+              _A_K, ", below, are ", _A[4], ", ", _A[3], ", ", _A[2], ", ", _A[1], ", ", _A[0],
+              " (", V, " in m/s, ", S_, " in 1/s)")
+_ROUTH_HURWITZ = (
+    "Routh-Hurwitz: all four roots have ", rel(_RE_S, "<", 0), " iff every ",
+    rel(_A_K, ">", 0), " and ",
+    rel(_H3, "=", _A[1] * _A[2] * _A[3] - _A[0] * _A[3] ** 2 - _A[1] ** 2 * _A[4], ">", 0),
+    ". A real root crosses ", Num(0), " where ", rel(_A0_V, "=", 0),
+    " (capsize speed); a complex pair crosses the imaginary axis where ",
+    rel(_H3_V, "=", 0), " (weave speed).")
+_STABLE_TITLE = ("Self-stable speeds (", rel(V, ">", 0), ")")
+_H3_ZERO = (": ", rel(_H3_V, "=", 0), ", a complex pair on the imaginary axis")
+_A0_ZERO = (": ", rel(_A0_V, "=", 0), ", a real eigenvalue at ", Num(0))
+_STABLE_EVERY = ("stable (every ", rel(_RE_S, "<", 0), "): ")
+_SHARE_TITLE = ("The wheels' gyroscopic share (", rel(_S_R, "=", _S_F, "=", 0),
+                ": no spin angular momentum)")
+_I = names("I")[0]
+_STATE_MATRIX = (": the eigenvalues of the state matrix ",
+                 bracket(bracket(0, _I), bracket(-_M ** -1 * (_g * _K0 + V ** 2 * _K2),
+                                                 -_M ** -1 * V * _C1)))
+_IDENTITY = (*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
+_MOTION = {
+    "stable": (" -- every eigenvalue has ", rel(_RE_S, "<", 0), ": a small disturbance "
+               "dies out, the bicycle balances itself"),
+    "capsize": (" -- a real eigenvalue ", rel(S_, ">", 0), ": it falls over without "
+                "oscillating"),
+    "weave": (" -- a complex pair with ", rel(_RE_S, ">", 0), ": lean and steer "
+              "oscillate and grow"),
+    "capsize and weave": (" -- both a capsize and a weave mode grow",)}
+_RESIDUAL = absolute(_DET) / _A[4]
+_NEAREST = absolute(_RE_S)
+_V_POWERS = {1: V, **{k: V ** k for k in range(2, 13)}}
+
 
 def _speeds(intervals: list[tuple[float, float]]) -> tuple:
     """The self-stable ranges as pieces: ``4.292383 m/s < v < 6.024262 m/s``."""
@@ -154,7 +271,7 @@ def _poly(coeffs) -> Expr:
             continue
         term: Expr = q(abs(c) if tree is not None else c, sig=7)
         if power:
-            term = term * (V if power == 1 else V ** power)
+            term = term * (_V_POWERS[power] if power in _V_POWERS else V ** power)
         tree = term if tree is None else tree - term if c < 0 else tree + term
     return tree if tree is not None else Num(0)
 
@@ -166,31 +283,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     g = p["g"]
     gyroscopic = given.word("gyroscopic", "true") == "true"
     speed = given.get("speed")
-    t = bike.totals(p, gyroscopic)
     m = bike.matrices(p, gyroscopic)
     if not (m.M[0, 0] > 0 and m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2 > 0):
         raise InputError("the mass matrix M is not positive definite for these data; check the "
                          "inertias and their units", key="given")
 
     work.section("Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)")
-    x, y, z, phi, delta, q_, g_ = names("x y z phi delta q g")
-    M_, C1, K0, K2 = names("M C1 K0 K2")
-    work.text(x, " forward, ", y, " to the right, ", z, " down; origin at the rear wheel's "
-              "contact point. ", phi, ": the lean to the right; ", delta, ": the steer to the "
-              "right (rad); ", rel(q_, "=", tup(phi, delta)), ". Small motions about upright "
-              "straight running at speed ", V, ", no rider torques:")
-    work.text(M_, ": the mass matrix; ", C1, ": the velocity matrix (times ", V, "); ", K0, ", ",
-              K2, ": the stiffness matrices of gravity (times ", g_, ") and of speed (times ",
-              V ** 2, "):")
-    work.text(rel(M_ * prime(q_, 2) + V * C1 * prime(q_) + (g_ * K0 + V ** 2 * K2) * q_, "=", 0),
-              "    (Eq. 5.3)")
+    for line in _CONVENTIONS:
+        work.text(*line)
     if not gyroscopic:
-        S_R, S_F, I_Ryy, r_R, I_Fyy, r_F = names("S_R S_F I_Ryy r_R I_Fyy r_F")
-        work.text("gyroscopic: false -- the wheels' spin angular momentum is removed: ",
-                  rel(S_R, "=", S_F, "=", 0), " wherever ", I_Ryy / r_R, " and ", I_Fyy / r_F,
-                  " enter (", C1, " and ", K2, ").")
+        work.text(*_NO_SPIN)
 
-    work.section("The whole bicycle ", *names("T"), " about the rear contact point (Eqs. A 1-A 5)")
+    work.section(*_T_TITLE)
     S = _symbols(p)
     mR, mB, mH, mF = S["mR"], S["mB"], S["mH"], S["mF"]
     xB, zB, xH, zH, rR, rF, w, c, lam = (S[k] for k in ("xB", "zB", "xH", "zH", "rR", "rF",
@@ -211,13 +315,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
          + mH * zH ** 2 + mF * rF ** 2, "kg*m^2")
     step("I_Txz", I["IBxz"] + I["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF, "kg*m^2")
     step("I_Tzz", I["IRxx"] + I["IBzz"] + I["IHzz"] + I["IFxx"] + mB * xB ** 2 + mH * xH ** 2
-         + mF * w ** 2, "kg*m^2", note=("for the wheels ", rel(*names("I_Rzz"), "=", *names("I_Rxx")),
-                                         " and ", rel(*names("I_Fzz"), "=", *names("I_Fxx"))))
+         + mF * w ** 2, "kg*m^2", note=_WHEELS_ZZ)
 
-    A_, H_, F_ = names("A H F")
-    # the assembly named in words: its parts are bodies, not terms of a sum
-    work.section("The front assembly ", A_, " = front frame ", H_, " + front wheel ", F_,
-                 " (Eqs. A 6-A 15)")
+    work.section(*_A_TITLE)
     mA = step("m_A", mH + mF, "kg")
     xA = step("x_A", (xH * mH + w * mF) / mA, "m")
     zA = step("z_A", (zH * mH - rF * mF) / mA, "m")
@@ -227,8 +327,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 "kg*m^2")
     IAzz = step("I_Azz", I["IHzz"] + I["IFxx"] + mH * (xH - xA) ** 2 + mF * (w - xA) ** 2,
                 "kg*m^2")
-    uA = step("u_A", (xA - w - c) * cos(lam) - zA * sin(lam), "m",
-              note=("distance of ", *names("A"), "'s centre of mass ahead of the steer axis"))
+    uA = step("u_A", (xA - w - c) * cos(lam) - zA * sin(lam), "m", note=_U_A_NOTE)
     step("I_All", mA * uA ** 2 + IAxx * sin(lam) ** 2 + 2 * IAxz * sin(lam) * cos(lam)
          + IAzz * cos(lam) ** 2, "kg*m^2", note="about the steer axis")
     step("I_Alx", -(mA * uA * zA) + IAxx * sin(lam) + IAxz * cos(lam), "kg*m^2")
@@ -240,70 +339,39 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         SF = step("S_F", I["IFyy"] / rF, "kg m")
         step("S_T", SR + SF, "kg m")
     else:  # the spin terms removed: a datum of the problem (0), not a formula
+        t = bike.totals(p, gyroscopic)
         work.step("S_R", value=t.SR, unit="kg m",
                   note="gyroscopic: false; rear wheel spin angular momentum per unit speed")
         work.step("S_F", value=t.SF, unit="kg m", note="gyroscopic: false")
         step("S_T", Sym("S_R", t.SR, "kg m") + Sym("S_F", t.SF, "kg m"), "kg m")
     step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
 
-    work.section("The matrices (Eqs. A 20-A 23), rows and columns ", tup(phi, delta))
-    (I_Txx, I_Txz, I_Tzz, I_All, I_Alx, I_Alz, mu_, S_T, S_F, S_A, m_T, z_T, w_,
-     lam_) = names("I_Txx I_Txz I_Tzz I_All I_Alx I_Alz mu S_T S_F S_A m_T z_T w lambda")
-    sep = ";  "
-    entries = {name: names(" ".join(f"{name}_{e}" for e in ("pp", "pd", "dp", "dd")))
-               for name in ("M", "C1", "K0", "K2")}
-    pp, pd, dp, dd = entries["M"]
-    work.text(rel(pp, "=", I_Txx), sep, rel(pd, "=", dp, "=", I_Alx + mu_ * I_Txz), sep,
-              rel(dd, "=", I_All + 2 * mu_ * I_Alz + mu_ ** 2 * I_Tzz))
-    work.text(rel(M_, "=", matrix(m.M, "kg m^2", sig=10)))
-    pp, pd, dp, dd = entries["C1"]
-    work.text(rel(pp, "=", 0), sep,
-              rel(pd, "=", mu_ * S_T + S_F * cos(lam_) + I_Txz * cos(lam_) / w_
-                  - mu_ * m_T * z_T), sep,
-              rel(dp, "=", -(mu_ * S_T + S_F * cos(lam_))), sep,
-              rel(dd, "=", I_Alz * cos(lam_) / w_ + mu_ * (S_A + I_Tzz * cos(lam_) / w_)))
-    work.text(rel(C1, "=", matrix(m.C1, "kg m", sig=10)))
-    pp, pd, dp, dd = entries["K0"]
-    work.text(rel(pp, "=", m_T * z_T), sep, rel(pd, "=", dp, "=", -S_A), sep,
-              rel(dd, "=", -S_A * sin(lam_)))
-    work.text(rel(K0, "=", matrix(m.K0, "kg m", sig=10)))
-    pp, pd, dp, dd = entries["K2"]
-    work.text(rel(pp, "=", dp, "=", 0), sep, rel(pd, "=", (S_T - m_T * z_T) * cos(lam_) / w_),
-              sep, rel(dd, "=", (S_A + S_F * sin(lam_)) * cos(lam_) / w_))
-    work.text(rel(K2, "=", matrix(m.K2, "kg", sig=10)))
+    work.section(*_MATRICES_TITLE)
+    for entries, (name, a, unit) in zip(_MATRIX_ENTRIES, ((_M, m.M, "kg m^2"),
+                                                          (_C1, m.C1, "kg m"),
+                                                          (_K0, m.K0, "kg m"),
+                                                          (_K2, m.K2, "kg"))):
+        work.text(*entries)
+        work.text(rel(name, "=", matrix(a, unit, sig=10)))
 
     coeffs = bike.characteristic(m, g)
-    work.section("The characteristic equation: ",
-                 rel(fn("det", M_ * S_ ** 2 + V * C1 * S_ + g_ * K0 + V ** 2 * K2), "=", 0))
-    a = names("a0 a1 a2 a3 a4")
-    a_k, H3 = names("a_k H3")
-    work.text(rel(a[4] * S_ ** 4 + a[3] * S_ ** 3 + a[2] * S_ ** 2 + a[1] * S_ + a[0], "=", 0),
-              ": the characteristic polynomial in the eigenvalue ", S_, "; its coefficients ",
-              a_k, ", below, are ", a[4], ", ", a[3], ", ", a[2], ", ", a[1], ", ", a[0], " (",
-              V, " in m/s, ", S_, " in 1/s)")
+    work.section(*_CHAR_TITLE)
+    work.text(*_CHAR_POLY)
     for k in (4, 3, 2, 1, 0):
-        work.text(rel(a[k], "=", _poly(coeffs[k])))
-    re_s = fn("Re", S_)
-    work.text("Routh-Hurwitz: all four roots have ", rel(re_s, "<", 0), " iff every ",
-              rel(a_k, ">", 0), " and ",
-              rel(H3, "=", a[1] * a[2] * a[3] - a[0] * a[3] ** 2 - a[1] ** 2 * a[4], ">", 0),
-              ". A real root crosses ", Num(0), " where ", rel(fn("a0", V), "=", 0),
-              " (capsize speed); a complex pair crosses the imaginary axis where ",
-              rel(fn("H3", V), "=", 0), " (weave speed).")
+        work.text(rel(_A[k], "=", _poly(coeffs[k])))
+    work.text(*_ROUTH_HURWITZ)
 
     stab = bike.stability(m, g)
-    work.section("Self-stable speeds (", rel(V, ">", 0), ")")
-    work.text(rel(fn("H3", V), "=", _poly(bike.hurwitz(coeffs))))
+    work.section(*_STABLE_TITLE)
+    work.text(rel(_H3_V, "=", _poly(bike.hurwitz_of(m, g))))
     # the speeds are roots of H3(v) and a0(v), conditions rather than formulas: value steps
     for v in stab.weave:
-        work.step("v_w", value=v, unit="m/s", note=(
-            "weave speed, ", q(v, "m/s", sig=12), ": ", rel(fn("H3", V), "=", 0),
-            ", a complex pair on the imaginary axis"))
+        work.step("v_w", value=v, unit="m/s", note=("weave speed, ", q(v, "m/s", sig=12),
+                                                    *_H3_ZERO))
     for v in stab.capsize:
-        work.step("v_c", value=v, unit="m/s", note=(
-            "capsize speed, ", q(v, "m/s", sig=12), ": ", rel(fn("a0", V), "=", 0),
-            ", a real eigenvalue at ", Num(0)))
-    work.text("stable (every ", rel(re_s, "<", 0), "): ", *_speeds(stab.stable))
+        work.step("v_c", value=v, unit="m/s", note=("capsize speed, ", q(v, "m/s", sig=12),
+                                                    *_A0_ZERO))
+    work.text(*_STABLE_EVERY, *_speeds(stab.stable))
     if not stab.stable:
         work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "
                   "every speed")
@@ -312,9 +380,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     if gyroscopic:
         plain = bike.stability(bike.matrices(p, gyroscopic=False), g)
-        S_R, S_F = names("S_R S_F")
-        work.section("The wheels' gyroscopic share (", rel(S_R, "=", S_F, "=", 0),
-                     ": no spin angular momentum)")
+        work.section(*_SHARE_TITLE)
         work.text("with the wheels' spin angular momentum: ", *_speeds(stab.stable))
         work.text("without it (gyroscopic: false): ", *_speeds(plain.stable))
         work.text(*_share(stab, plain))
@@ -322,30 +388,19 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if speed is not None:
         ev = bike.eigenvalues(m, speed, g)
         state = bike.motion(ev)
-        I_ = names("I")[0]
         work.section("At ", rel(V, "=", q(speed, "m/s", label=f"{speed:.12g}")),
-                     ": the eigenvalues of the state matrix ",
-                     bracket(bracket(0, I_), bracket(-M_ ** -1 * (g_ * K0 + V ** 2 * K2),
-                                                     -M_ ** -1 * V * C1)))
-        work.text(*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
+                     *_STATE_MATRIX)
+        work.text(*_IDENTITY)
         for e in ev:
             work.text(rel(S_, "=", q(_eigen(e), "1/s", sig=12)))
-        work.text(f"motion: {state}", *{
-            "stable": (" -- every eigenvalue has ", rel(re_s, "<", 0), ": a small disturbance "
-                       "dies out, the bicycle balances itself"),
-            "capsize": (" -- a real eigenvalue ", rel(S_, ">", 0), ": it falls over without "
-                        "oscillating"),
-            "weave": (" -- a complex pair with ", rel(re_s, ">", 0), ": lean and steer "
-                      "oscillate and grow"),
-            "capsize and weave": (" -- both a capsize and a weave mode grow",)}[state])
-        det = fn("det", M_ * S_ ** 2 + V * C1 * S_ + g_ * K0 + V ** 2 * K2)
+        work.text(f"motion: {state}", *_MOTION[state])
+        a = [bike.polyval(speed, c) for c in coeffs]     # a_k at this speed
         for e in ev:
-            residual = _char_value(coeffs, speed, e)
+            residual = _char_value(a, e)
             work.check(rel(S_, "=", q(_eigen(e), sig=6)), ": ",
-                       rel(absolute(det) / a[4], "=", q(abs(residual), sig=2)))
-        work.answer("eigenvalues_real", re_s, [float(e.real) for e in ev], "inverse_time")
-        work.answer("eigenvalues_imag", fn("Im", S_), [float(e.imag) for e in ev],
-                    "inverse_time")
+                       rel(_RESIDUAL, "=", q(abs(residual), sig=2)))
+        work.answer("eigenvalues_real", _RE_S, [float(e.real) for e in ev], "inverse_time")
+        work.answer("eigenvalues_imag", _IM_S, [float(e.imag) for e in ev], "inverse_time")
         work.answer("motion", "motion", [state], None)
     elif find & {"eigenvalues_real", "eigenvalues_imag", "motion"}:
         raise InputError("the eigenvalues and the motion are at a speed: give `speed`",
@@ -353,7 +408,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     for v in stab.weave + stab.capsize:
         nearest = min(abs(x) for x in _spectrum(stab, m, v, g).real)
         work.check(rel(V, "=", q(v, "m/s", sig=10)), ": the eigenvalue nearest the imaginary "
-                   "axis has ", rel(absolute(fn("Re", S_)), "=", q(nearest, "1/s", sig=2)))
+                   "axis has ", rel(_NEAREST, "=", q(nearest, "1/s", sig=2)))
     work.answer("weave_speed", "v_w", stab.weave, "speed")
     work.answer("capsize_speed", "v_c", stab.capsize, "speed")
     ends = [x for lo, hi in stab.stable for x in (lo, hi) if math.isfinite(x)]
@@ -373,10 +428,8 @@ def _spectrum(stab, m, v: float, g: float):  # type: ignore[no-untyped-def]
     return stab.spectra[v] if v in stab.spectra else bike.eigenvalues(m, v, g)
 
 
-def _char_value(coeffs, v: float, s: complex) -> complex:
-    from ..physics.bicycle import polyval
-
-    a = [polyval(v, c) for c in coeffs]
+def _char_value(a: list[float], s: complex) -> complex:
+    """The characteristic polynomial at s over its lead, sum a_k s^k / a4 (a_k at the speed)."""
     return sum(a[k] * s ** k for k in range(5)) / a[4]
 
 

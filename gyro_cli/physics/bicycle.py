@@ -31,7 +31,9 @@ the speeds where the stability changes are the roots of polynomials in v^2 (the
 characteristic polynomial's constant term and its Hurwitz determinant). One root finder
 serves both: Aberth-Ehrlich iteration in complex arithmetic, then Newton steps on the
 polynomial itself; a real polynomial's roots come out as exact reals or exact conjugate
-pairs. Polynomials are lists of coefficients, lowest power first.
+pairs. Whether a speed between those is self-stable needs no roots: the Routh-Hurwitz
+conditions on the coefficients there decide it (``routh_hurwitz``), and the eigenvalues
+only where rounding could. Polynomials are lists of coefficients, lowest power first.
 """
 
 from __future__ import annotations
@@ -218,9 +220,12 @@ def eigenvalues(m: Matrices, v: float, g: float) -> Spectrum:
     exact conjugates (bit-equal real parts), a real eigenvalue with imaginary part 0.0,
     so the order is exact.
     """
-    a = [polyval(v, c) for c in characteristic(m, g)]
-    ev = roots(a)
-    return Spectrum(sorted(ev, key=lambda e: (e.real, e.imag)))
+    return _spectrum([polyval(v, c) for c in _characteristic(m, g)])
+
+
+def _spectrum(a: list[float]) -> Spectrum:
+    """The roots of sum a[k] s^k, ascending real part, then imaginary part."""
+    return Spectrum(sorted(roots(a), key=lambda e: (e.real, e.imag)))
 
 
 # ---- polynomials: lists of float coefficients, lowest power first ----------------
@@ -298,10 +303,11 @@ def roots(c: list[float]) -> list[complex]:
     # the same floats): the iteration is most of a bicycle's check
     top, rest = monic[-1], monic[-2::-1]
     dtop, drest = dmonic[-1], dmonic[-2::-1]
-    indices = range(n)
+    others_of = [(i, [j for j in range(n) if j != i]) for i in range(n)]
+    tol, isfinite = 4 * _EPS, cmath.isfinite
     for _ in range(500):
         moved = False
-        for i in indices:
+        for i, js in others_of:
             zi = z[i]
             value = top + zi * 0
             for coefficient in rest:
@@ -312,25 +318,24 @@ def roots(c: list[float]) -> list[complex]:
             for coefficient in drest:
                 slope = coefficient + slope * zi
             others = 0
-            for j in indices:
-                if j != i:
-                    zj = z[j]
-                    if zi != zj:
-                        others = others + 1.0 / (zi - zj)
+            for j in js:
+                zj = z[j]
+                if zi != zj:
+                    others = others + 1.0 / (zi - zj)
             ratio = value / slope if slope != 0 else complex(math.inf)
             denominator = 1.0 - ratio * others
             step = ratio if denominator == 0 else ratio / denominator
-            if not cmath.isfinite(step):
+            if not isfinite(step):
                 continue
-            z[i] = zi - step
-            if abs(step) > 4 * _EPS * abs(z[i]):
+            z[i] = zi = zi - step
+            if abs(step) > tol * abs(zi):
                 moved = True
         if not moved:
             break
     d = polyder(c)
     polished = []
     for zi in z:
-        polished.append(_newton(zi, c, d))
+        polished.append(complex(_newton(zi, c, d)))
     # real roots: imaginary part at the rounding level
     real, upper, lower = [], [], []
     for zi in polished:
@@ -350,39 +355,46 @@ def roots(c: list[float]) -> list[complex]:
     for zu in upper:
         partner = min(lower, key=lambda e: abs(e - zu.conjugate()))
         lower.remove(partner)
-        zp = _newton(0.5 * (zu + partner.conjugate()), c, d)
+        zp = complex(_newton(0.5 * (zu + partner.conjugate()), c, d))
         zp = complex(zp.real, abs(zp.imag))
         out.extend([zp, zp.conjugate()])
     return out
 
 
-def _newton(z: complex, c: list[float], d: list[float], steps: int = 4) -> complex:
-    """Newton steps on c from z, kept while the residual does not grow."""
-    value = polyval(z, c)
-    for _ in range(steps):
-        slope = polyval(z, d)
-        if value == 0 or slope == 0:
-            break
-        trial = z - value / slope
-        new = polyval(trial, c)
-        if not abs(new) <= abs(value):
-            break
-        z, value = trial, new
-    return complex(z)
+def _newton(x: complex | float, c: list[float], d: list[float],
+            steps: int = 4) -> complex | float:
+    """Newton steps on c from x (complex or real; d = polyder(c)), kept while the residual
+    does not grow.
 
-
-def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> float:
-    value = polyval(x, c)
+    polyval written out (the same operations in the same order, so the same floats): the
+    polishing is a third of ``roots``.
+    """
+    ctop, crest = c[-1], c[-2::-1]
+    dtop, drest = d[-1], d[-2::-1]
+    value = ctop + x * 0
+    for coefficient in crest:
+        value = coefficient + value * x
     for _ in range(steps):
-        slope = polyval(x, d)
-        if value == 0 or slope == 0:
+        if value == 0:
+            break
+        slope = dtop + x * 0
+        for coefficient in drest:
+            slope = coefficient + slope * x
+        if slope == 0:
             break
         trial = x - value / slope
-        new = polyval(trial, c)
+        new = ctop + trial * 0
+        for coefficient in crest:
+            new = coefficient + new * trial
         if not abs(new) <= abs(value):
             break
         x, value = trial, new
-    return float(x)
+    return x
+
+
+def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> float:
+    """``_newton`` in real arithmetic: a real root polished."""
+    return float(_newton(x, c, d, steps))
 
 
 # ---- the characteristic polynomial as polynomials in v ------------------------
@@ -390,8 +402,8 @@ def _newton_real(x: float, c: list[float], d: list[float], steps: int = 4) -> fl
 def characteristic(m: Matrices, g: float) -> list[list[float]]:
     """[a0, a1, a2, a3, a4]: det(M s^2 + v C1 s + g K0 + v^2 K2) = sum a_k(v) s^k.
 
-    Worked once per bicycle (``eigenvalues`` asks for it at every speed): a copy of the
-    remembered coefficients.
+    Worked once per bicycle (every speed's eigenvalues and stability ask for it): a copy
+    of the remembered coefficients.
     """
     return [list(a) for a in _characteristic(m, g)]
 
@@ -438,6 +450,17 @@ def hurwitz(coeffs: list[list[float]]) -> list[float]:
     a0, a1, a2, a3, a4 = coeffs
     return polysub(polymul(polymul(a1, a2), a3),
                    polyadd(polymul(a0, polymul(a3, a3)), polymul(polymul(a1, a1), a4)))
+
+
+def hurwitz_of(m: Matrices, g: float) -> list[float]:
+    """``hurwitz(characteristic(m, g))``: H3(v), worked once per bicycle (``stability`` and
+    the worked answer both ask for it)."""
+    return list(_hurwitz_of(m, g))
+
+
+@functools.lru_cache(maxsize=64)
+def _hurwitz_of(m: Matrices, g: float) -> tuple[float, ...]:
+    return tuple(hurwitz(characteristic(m, g)))
 
 
 def _positive_roots(poly: list[float]) -> list[float]:
@@ -494,14 +517,62 @@ def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
     return max(eigenvalues(m, v, g).real)
 
 
+# A Hurwitz quantity within this fraction of the sum of its terms' magnitudes is
+# rounding's to decide: far above the few ulps of rounding in a_k(v) and H3, far below
+# any margin a root finder's backward error could cross.
+HURWITZ_TOL = 1e-9
+
+
+def routh_hurwitz(a: list[float], terms: list[float]) -> bool | None:
+    """Whether every root of a0 + a1 s + a2 s^2 + a3 s^3 + a4 s^4 has Re(s) < 0, from its
+    coefficients alone; None where rounding could decide it (then find the roots).
+
+    Routh-Hurwitz for the quartic of Eq. 5.3 (in the Lienard-Chipart form, as ``hurwitz``):
+    with a4 > 0, all four roots have Re(s) < 0 iff a0, a1, a2, a3 > 0 and
+    H3 = a1 a2 a3 - a0 a3^2 - a1^2 a4 > 0; a coefficient < 0 alone means a root with
+    Re(s) > 0. ``terms[k]`` is the sum of the magnitudes of the terms that made a[k]
+    (for a_k(v) = sum c_j v^j, sum |c_j| v^j): a coefficient, or H3, no larger than
+    HURWITZ_TOL times its terms' magnitudes is undecided (None), and so is a lead
+    a4 <= 0 or a non-finite value.
+    """
+    a0, a1, a2, a3, a4 = a
+    if not a4 > 0 or not all(math.isfinite(x) for x in a):
+        return None
+    for ak, scale in zip(a, terms):
+        if not abs(ak) > HURWITZ_TOL * scale:
+            return None
+    if a0 < 0 or a1 < 0 or a2 < 0 or a3 < 0:
+        return False
+    t1, t2, t3 = a1 * a2 * a3, a0 * a3 * a3, a1 * a1 * a4
+    h3 = t1 - t2 - t3
+    if not abs(h3) > HURWITZ_TOL * (abs(t1) + abs(t2) + abs(t3)):
+        return None
+    return h3 > 0
+
+
+def _stable_at(m: Matrices, v: float, g: float) -> bool:
+    """Whether every eigenvalue at speed v has Re(s) < 0 (spectral_abscissa < 0): by
+    routh_hurwitz on a_k(v) (Eq. 5.3's characteristic quartic), and by the eigenvalues
+    only where rounding could decide it."""
+    coeffs = _characteristic(m, g)
+    a = [polyval(v, c) for c in coeffs]
+    x = abs(v)
+    decided = routh_hurwitz(a, [polyval(x, [abs(cj) for cj in c]) for c in coeffs])
+    if decided is None:
+        return max(_spectrum(a).real) < 0
+    return decided
+
+
 def stability(m: Matrices, g: float) -> Stability:
     """Weave and capsize speeds and the self-stable speed range(s), v > 0.
 
     Candidates are the positive roots of a0(v) and H3(v); between consecutive
     candidates the eigenvalues' signs cannot change, so one speed inside each
-    interval decides it.
+    interval decides it (``_stable_at``: Routh-Hurwitz on a_k(v), the eigenvalues
+    where rounding could decide). The eigenvalues are found at the candidates only,
+    to tell a capsize or weave speed from a root where the stability does not change.
     """
-    coeffs = characteristic(m, g)
+    coeffs = _characteristic(m, g)
     capsize, weave, other = [], [], []
     spectra: dict[float, Spectrum] = {}
     for v in _positive_roots(coeffs[0]):
@@ -510,7 +581,7 @@ def stability(m: Matrices, g: float) -> Stability:
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
-    for v in _positive_roots(hurwitz(coeffs)):
+    for v in _positive_roots(_hurwitz_of(m, g)):
         ev = spectra[v] = eigenvalues(m, v, g)
         scale = max(1.0, max(abs(e) for e in ev))
         near = min(ev, key=lambda e: abs(e.real))
@@ -523,7 +594,7 @@ def stability(m: Matrices, g: float) -> Stability:
     stable: list[tuple[float, float]] = []
     for lo, hi in zip(points, points[1:]):
         probe = 0.5 * (lo + hi) if math.isfinite(hi) else (2 * lo if lo > 0 else 1.0)
-        if spectral_abscissa(m, probe, g) < 0:
+        if _stable_at(m, probe, g):
             if stable and stable[-1][1] == lo:
                 stable[-1] = (stable[-1][0], hi)
             else:
