@@ -112,7 +112,8 @@ _FORCES = ("Forces are those of the bearings on the rotor assembly: 'arm' compon
            ".")
 _SWING_TITLE = ("Swing: energy and moments about ", AB)
 _TD2 = td ** 2
-_COUPLE_TITLE = ("Gyroscopic couple: ", rel(deriv(H_O), "=", I_O0 * tdd * i + J0 * p0 * td * cross(i, k)))
+_COUPLE_TITLE = ("Gyroscopic couple: ",
+                 rel(deriv(H_O), "=", I_O0 * tdd * i + J0 * p0 * td * cross(i, k)))
 _H_O_LINE = (rel(H_O, "=", I_O0 * td * i + J0 * p0 * k), ": the angular momentum about ", O,
              ", the centre of the shaft; ", k, " turns about ", i, " at ", td)
 _COUPLE = J0 * p0 * td / d0
