@@ -427,3 +427,32 @@ def test_omega_H_angle_at_rest_is_refused_plainly(run, write):
         find: [omega_H_angle]
         """))
     one_line(result, "find.omega_H_angle", "undefined")
+
+
+def test_principal_moments_on_principal_axes_are_lapacks_to_the_last_bit():
+    """On principal axes principal_moments sorts the moments instead of asking LAPACK: the
+    same floats as numpy's eigvalsh for every diagonal matrix inside DIAGONAL_RANGE (equal
+    moments, zeros, widely spread ones), and eigvalsh itself is asked outside it, or as soon
+    as one product is not exactly 0."""
+    import random
+
+    rng = random.Random(11)
+    cases = [(0.0, 2.0, 2.0), (1.0, 1.0, 1.0), (3.0, 1.0, 2.0), (1e-100, 1e100, 1.0)]
+    for _ in range(3000):
+        d = [10 ** rng.uniform(-100, 100) if rng.random() < 0.5 else rng.uniform(0.001, 10)
+             for _ in range(3)]
+        if rng.random() < 0.2:
+            d[1] = d[0]
+        if rng.random() < 0.1:
+            d[2] = 0.0
+        cases.append(tuple(d))
+    for d in cases:
+        matrix = ek.inertia_matrix(*d)
+        expected = [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
+        assert ek.principal_moments(matrix) == expected, d
+    # outside the range, or with a product, it is eigvalsh's answer whatever that is
+    for d, products in [((1e-120, 1.0, 2.0), (0.0, 0.0, 0.0)), ((1e150, 1.0, 2.0), (0.0,) * 3),
+                        ((1.0, 2.0, 2.5), (1e-30, 0.0, 0.0)), ((1.0, 2.0, 2.5), (0.0, 0.3, 0.1))]:
+        matrix = ek.inertia_matrix(*d, *products)
+        expected = [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
+        assert ek.principal_moments(matrix) == expected, (d, products)

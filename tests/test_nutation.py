@@ -259,3 +259,42 @@ def test_bad_tops_are_refused():
             analyse(top, Start(0.5, 10.0))
     with pytest.raises(ValueError):
         analyse(TOP, Start(0.0, 0.0))
+
+
+def test_limit_angles_from_one_minus_plus_are_acos_to_the_last_bit_of_the_vectorised():
+    """analyse's theta of a limit in plain floats (_theta_of) is the vectorised
+    _theta_from_one_minus_plus's bit for bit (clipping, -0.0 and NaN included), and both are
+    acos(u) within a few ulps where acos itself is well conditioned."""
+    from gyro_cli.physics.nutation import _theta_from_one_minus_plus, _theta_of
+
+    rng = np.random.default_rng(7)
+    u = np.concatenate([rng.uniform(-1, 1, 4000), 1 - 10.0 ** rng.uniform(-16, 0, 500),
+                        -1 + 10.0 ** rng.uniform(-16, 0, 500)])
+    one_minus, one_plus = 1 - u, 1 + u
+    edges = [(0.0, 2.0), (2.0, 0.0), (-0.0, 2.0), (-1e-18, 2.0), (2.0 + 1e-15, -1e-18),
+             (1.0, 1.0), (math.nan, 1.0), (1.0, math.nan)]
+    pairs = list(zip(one_minus.tolist(), one_plus.tolist())) + edges
+    vectorised = _theta_from_one_minus_plus(np.array([p[0] for p in pairs]),
+                                            np.array([p[1] for p in pairs]))
+    for (a, b), expected in zip(pairs, vectorised.tolist()):
+        got = _theta_of(a, b)
+        assert got == expected or (math.isnan(got) and math.isnan(expected)), (a, b)
+        assert math.copysign(1, got) == math.copysign(1, expected), (a, b)
+    for x in u[:4000].tolist():   # away from the poles acos(u) is accurate itself
+        assert _theta_of(1 - x, 1 + x) == pytest.approx(math.acos(x), rel=1e-14, abs=1e-15)
+
+
+def test_K_of_the_period_is_the_first_kind_integral_by_quadrature():
+    """Nutation.K (the K(m) analyse worked the period from, and the worked answer shows)
+    against K(m) = int_0^(pi/2) ds / sqrt(1 - m sin^2 s) by the trapezium rule, which
+    converges geometrically for this periodic integrand, and T = 4 K / sqrt(a (u3 - u1))."""
+    for top, start in CASES[:8]:
+        nut = analyse(top, start)
+        u1, u2, u3 = nut.u_roots
+        m = (u2 - u1) / (u3 - u1)
+        s = np.linspace(0.0, math.pi / 2, 2001)
+        f = 1 / np.sqrt(1 - m * np.sin(s) ** 2)
+        K = float((f.sum() - 0.5 * (f[0] + f[-1])) * (s[1] - s[0]))
+        assert nut.K == pytest.approx(K, rel=1e-12)
+        assert nut.nutation_period == pytest.approx(4 * K / math.sqrt(nut.a * (u3 - u1)),
+                                                    rel=1e-12)

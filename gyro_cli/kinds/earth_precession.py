@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 import operator
-from functools import reduce
+from functools import cache, reduce
 
 from ..core.errors import InputError
 from ..core.given import Given
@@ -101,12 +101,8 @@ def _values(given: Given, work: Work) -> dict[str, float]:
             values[key] = EARTH[key]
             filled.append(key)
     work.section("preset: earth (IERS Conventions 2010, IAU 2009 constants, J2000 elements)")
-    preset_text = _preset_text()
     for key in filled:
-        value, *rest = preset_text[key]
-        chain = ("=", value) + (tuple(rest[:2]) if rest[:1] == ["="] else ())
-        rest = rest[2:] if rest[:1] == ["="] else rest
-        work.text(f"{key}: ", rel(*names(_symbols()[key]), *chain), *rest)
+        work.text(*_preset_lines()[key])
     overridden = [k for k in given.values if k != "preset"]
     if overridden:
         work.text(f"given in the file instead of the preset: {', '.join(overridden)}")
@@ -115,6 +111,18 @@ def _values(given: Given, work: Work) -> dict[str, float]:
 
 def _symbols() -> dict[str, str]:
     return {p.name: p.symbol for p in KIND.params}
+
+
+@cache
+def _preset_lines() -> dict[str, tuple]:
+    """Each preset key's line in the worked answer, ``key: symbol = value (source)``: the
+    same words for every problem, so built once (on first use: they need KIND's symbols)."""
+    symbols, lines = _symbols(), {}
+    for key, (value, *rest) in _preset_text().items():
+        chain = ("=", value) + (tuple(rest[:2]) if rest[:1] == ["="] else ())
+        rest = rest[2:] if rest[:1] == ["="] else rest
+        lines[key] = (f"{key}: ", rel(*names(symbols[key]), *chain), *rest)
+    return lines
 
 
 NAN = float("nan")  # a symbol named in a definition, its value not needed
@@ -190,13 +198,12 @@ def _tidal(values: dict, b: str, work: Work) -> float | None:
         if planet is not None:
             ratio = work.step(f"q_{b}", Sym(f"M_{b}", a_value, "kg") / Sym("M", planet, "kg"))
         q_ = Sym(f"q_{b}", ratio)
-        return work.step(_tidal_symbol(b), (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
+        return work.step(_TIDAL_SYMBOL[b], (2 * PI / Sym(f"P_{b}", o_value, "s")) ** 2 * q_
                          / (1 + q_), unit="1/s^2", ref="Kepler III")
     mass = Sym(f"M_{b}", a_value, "kg") if planet is None else \
         Sym(f"q_{b}", a_value) * Sym("M", planet, "kg")
-    return work.step(_tidal_symbol(b), Const("G", G) * mass / Sym(f"a_{b}", o_value, "m") ** 3,
-                     unit="1/s^2",
-                     note=(rel(*names("G"), "=", q(G, "m^3/(kg s^2)", label=f"{G:g}")),))
+    return work.step(_TIDAL_SYMBOL[b], Const("G", G) * mass / Sym(f"a_{b}", o_value, "m") ** 3,
+                     unit="1/s^2", note=_CONSTANT_OF_GRAVITATION)
 
 
 def _tidal_symbol(b: str) -> Expr:
@@ -205,43 +212,70 @@ def _tidal_symbol(b: str) -> Expr:
     return G_ * M_b / a_b**3
 
 
+_TIDAL_SYMBOL = {b: _tidal_symbol(b) for b in BODIES}
+_CONSTANT_OF_GRAVITATION = (rel(*names("G"), "=", q(G, "m^3/(kg s^2)", label=f"{G:g}")),)
+
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's time in gyro check.
+_A, _C, _M, _R, _H, _w, _e = names("A C M R H omega epsilon")  # C, M, R: polar_moment_factor's too
+_M_b, _r, _u, _s, _G, _T, _a, _ecc, _n, _T_mean, _W_p, _i, _dH, _dt = names(
+    "M_b r u s G T a e n T_mean Omega_p i dH dt")
+_THREE_HALVES, _F_E = Num(1.5, "3/2"), (1 - _ecc**2) ** Num(-1.5, "-3/2")
+_PLANET = (_A, ", ", _C, ": the planet's moments of inertia about an equatorial axis and about "
+           "its polar axis; ", _M, ", ", _R, ": its mass and equatorial radius; ",
+           rel(_H, "=", (_C - _A) / _C), ", its dynamical ellipticity; ", _w, ": its rate of "
+           "rotation; ", _e, ": its obliquity")
+_ELLIPTICITY = (_H, "=", (_C - _A) / _C, "=")
+_MACCULLAGH = ("MacCullagh: a body of mass ", _M_b, " at distance ", _r, ", in the direction ",
+               _u, ", exerts on the planet the torque ",
+               rel(_T, "=", 3 * _G * _M_b * (_C - _A) / _r**3 * dot(_u, _s) * cross(_u, _s)),
+               ", where ", _s, " is the spin axis and ", _G, " the constant of gravitation.")
+_AVERAGED = ("Averaged over a Kepler orbit (semi-major axis ", _a, ") of eccentricity ", _ecc,
+             ", ", _a**3 / _r**3, " becomes ", _F_E, ", and the direction ", _u, " is spread "
+             "evenly round the orbit plane: the mean torque is ",
+             rel(_T_mean, "=", -(_THREE_HALVES * (_G * _M_b / _a**3) * _F_E * (_C - _A)
+                                 * cos(_e) * cross(_n, _s))), ", ", _n, " the orbit normal.")
+_STEADY = ("Steady precession (the chapter's ", rel(_dH / _dt, "=", _T), ", the angular "
+           "momentum being ", _C * _w * _s, "): ", _s, " turns about ", -_n, " (westward, "
+           "retrograde) at ", rel(_W_p, "=", absolute(_T_mean) / (_C * _w * sin(_e)), "=",
+                                  _THREE_HALVES * (_G * _M_b / _a**3) * _F_E * _H * cos(_e)
+                                  / _w), ".")
+_NODE = ("An orbit inclined at ", _i, " whose node turns round quickly (the Moon's, in "
+         "18.6 years) is averaged over the node too: factor ",
+         paren(1 - _THREE_HALVES * sin(_i) ** 2), ".")
+_JULIAN_YEAR = ("(", rel(q(JULIAN_YEAR, "yr", True), "=", q(JULIAN_YEAR, "d", True)), ")")
+_T_p, _t_1 = names("T_p t_1deg")
+_SLOW, _GYROSCOPIC, _PER_DEGREE = _W_p / _w, _C * _w * _s, _T_p / _t_1
+
+
+def _body_words(b: str) -> tuple[Expr, Expr]:
+    """Body b's eccentricity and node factors as symbols: (1 - e_b^2)^(-3/2) and
+    1 - (3/2) sin^2(i_b)."""
+    e_b, i_b = names(f"e_{b} i_{b}")
+    return (1 - e_b ** 2) ** Num(-1.5, "-3/2"), 1 - Num(1.5, "3/2") * sin(i_b) ** 2
+
+
+_BODY_WORDS = {b: _body_words(b) for b in BODIES}
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     values = _values(given, work)
     work.section("The planet")
-    A, C, M, R, H_, w, e_ = names("A C M R H omega epsilon")
-    work.text(A, ", ", C, ": the planet's moments of inertia about an equatorial axis and about "
-              "its polar axis; ", M, ", ", R, ": its mass and equatorial radius; ",
-              rel(H_, "=", (C - A) / C), ", its dynamical ellipticity; ", w, ": its rate of "
-              "rotation; ", e_, ": its obliquity")
+    work.text(*_PLANET)
     H = _ellipticity(values, work)
     omega = _spin(values, work)
     if "obliquity" not in values:
         raise InputError("give the obliquity (angle between the spin axis and the orbit "
                          "normal)", key="given.obliquity")
     eps = values["obliquity"]
-    work.text(rel(H_, "=", (C - A) / C, "=", q(H)), ", ", rel(e_, "=", q(eps, "deg")), ", ",
-              rel(w, "=", q(omega, "rad/s")))
+    work.text(rel(*_ELLIPTICITY, q(H)), ", ", rel(_e, "=", q(eps, "deg")), ", ",
+              rel(_w, "=", q(omega, "rad/s")))
     work.section("Torque on the bulge, orbit-averaged, and the precession it drives")
-    M_b, r, u, s_, G_, T, a, e, n, T_mean, W_p, i_, dH, dt = names(
-        "M_b r u s G T a e n T_mean Omega_p i dH dt")
-    three_halves, f_e = Num(1.5, "3/2"), (1 - e**2) ** Num(-1.5, "-3/2")
-    work.text("MacCullagh: a body of mass ", M_b, " at distance ", r, ", in the direction ", u,
-              ", exerts on the planet the torque ",
-              rel(T, "=", 3 * G_ * M_b * (C - A) / r**3 * dot(u, s_) * cross(u, s_)),
-              ", where ", s_, " is the spin axis and ", G_, " the constant of gravitation.")
-    work.text("Averaged over a Kepler orbit (semi-major axis ", a, ") of eccentricity ", e, ", ",
-              a**3 / r**3, " becomes ", f_e, ", and the direction ", u, " is spread evenly round "
-              "the orbit plane: the mean torque is ",
-              rel(T_mean, "=", -(three_halves * (G_ * M_b / a**3) * f_e * (C - A) * cos(e_)
-                                 * cross(n, s_))), ", ", n, " the orbit normal.")
-    work.text("Steady precession (the chapter's ", rel(dH / dt, "=", T), ", the angular "
-              "momentum being ", C * w * s_, "): ", s_, " turns about ", -n, " (westward, "
-              "retrograde) at ", rel(W_p, "=", absolute(T_mean) / (C * w * sin(e_)), "=",
-                                     three_halves * (G_ * M_b / a**3) * f_e * H_ * cos(e_) / w),
-              ".")
-    work.text("An orbit inclined at ", i_, " whose node turns round quickly (the Moon's, in "
-              "18.6 years) is averaged over the node too: factor ",
-              paren(1 - three_halves * sin(i_) ** 2), ".")
+    work.text(*_MACCULLAGH)
+    work.text(*_AVERAGED)
+    work.text(*_STEADY)
+    work.text(*_NODE)
     shares: dict[str, float] = {}
     for b in BODIES:
         work.section(f"{BODY_NAMES[b][0].upper()}{BODY_NAMES[b][1:]}")
@@ -253,11 +287,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         i = values.get(f"{b}_inclination", 0.0)
         three_halves = Num(1.5, "3/2")
         fe_tree = (1 - Sym(f"e_{b}", e) ** 2) ** Num(-1.5, "-3/2")
-        e_b, i_b = names(f"e_{b} i_{b}")
-        fe = work.step((1 - e_b ** 2) ** Num(-1.5, "-3/2"), fe_tree, state=False)
+        fe_symbol, fi_symbol = _BODY_WORDS[b]
+        fe = work.step(fe_symbol, fe_tree, state=False)
         fi_tree = 1 - three_halves * sin(Sym(f"i_{b}", i, "deg")) ** 2
-        fi = work.step(1 - three_halves * sin(i_b) ** 2, fi_tree, state=False,
-                       note="node-averaged") if i else 1.0
+        fi = work.step(fi_symbol, fi_tree, state=False, note="node-averaged") if i else 1.0
         tidal_ = Let(Sym(f"GM_a3_{b}", tidal, "1/s^2"),
                      Const("G", G) * Sym(f"M_{b}", NAN) / Sym(f"a_{b}", NAN) ** 3)
         tree = three_halves * tidal_ * Let(Sym(f"f_e_{b}", fe), fe_tree) * Sym("H", H) * cos(
@@ -265,9 +298,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if i:
             tree = tree * Let(Sym(f"f_i_{b}", fi), fi_tree)
         rate = work.step(f"Omega_{b}", tree / Sym("omega", omega, "rad/s"), unit="rad/s")
-        work.step(f"Omega_{b}", value=arcsec_per_year(rate), unit="arcsec/yr",
-                  note=("(", rel(q(JULIAN_YEAR, "yr", True), "=", q(JULIAN_YEAR, "d", True)),
-                        ")"))
+        work.step(f"Omega_{b}", value=arcsec_per_year(rate), unit="arcsec/yr", note=_JULIAN_YEAR)
         if fi < 0:
             work.warn(f"{b}_inclination beyond ", q(math.radians(54.74), "deg", exact=True),
                       " reverses that body's mean torque")
@@ -308,11 +339,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               q(per_degree), " years.")
     work.answer("precession_period", "T_p", [period], "time")
     work.answer("years_per_degree", "t_1deg", [1 / abs(total)], "time_per_angle")
-    W_p, w, C, s_, T_p, t_1 = names("Omega_p omega C s T_p t_1deg")
-    work.check(rel(W_p / w, "=", q(abs(total) / omega)), ": the precession is slow against the "
-               "spin, so the angular momentum is ", C * w * s_, " (the gyroscopic "
-               "approximation); ",
-               rel(T_p / t_1, "=", q(math.radians(period / (per_degree * JULIAN_YEAR)), "deg")))
+    turned = math.radians(period / (per_degree * JULIAN_YEAR))  # T_p / t_1deg: 360 deg
+    work.check(rel(_SLOW, "=", q(abs(total) / omega)), ": the precession is slow against "
+               "the spin, so the angular momentum is ", _GYROSCOPIC, " (the gyroscopic "
+               "approximation); ", rel(_PER_DEGREE, "=", q(turned, "deg")))
 
 
 def _body_params(b: str) -> tuple[Param, ...]:
@@ -335,8 +365,6 @@ def _body_params(b: str) -> tuple[Param, ...]:
     )
 
 
-
-_C, _M, _R = names("C M R")  # the symbol of polar_moment_factor
 
 KIND = Kind(
     name="earth_precession",

@@ -72,6 +72,46 @@ def _deg(x: float) -> str:
     return f"{num(math.degrees(x))} deg"
 
 
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's time in gyro check.
+_x, _y, _z = names("x y z")
+_INERTIA_AXES = (_x, ", ", _y, ", ", _z, ": the body axes through the fixed point, about which "
+                 "the moments and products of inertia are taken; no angle or rate is needed "
+                 "for them")
+
+
+def _conventions_zxz() -> tuple:
+    I, J, K, i, j, k, x, y, z, ph, th, ps, phd, thd, psd = \
+        names("I J K i j k x y z phi theta psi phidot thetadot psidot")
+    return ("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {", I, ", ", J, ", ",
+            K, "} by ", ph, " about ", K, ", then by ", th, " about the line of nodes ",
+            rel(prime(i), "=", prime(i, 2)), ", then by ", ps, " about the body's ", k,
+            "; ", i, ", ", j, ", ", k, ": the body axes, along ", x, ", ", y, ", ", z,
+            ". The body axes in the fixed frame are the columns of ",
+            rel(names("R")[0], "=", fn("Rz", ph) * fn("Rx", th) * fn("Rz", ps)), ". ",
+            phd, ", ", thd, ", ", psd, ": the rates of ", ph, ", ", th, ", ", ps, ".")
+
+
+def _conventions_zyx() -> tuple:
+    X, Y, Z, x, y, z, yaw, pitch, roll, p, q_, r, wx, wy, wz, w = names(
+        "X Y Z x y z yaw pitch roll p q r omega_x omega_y omega_z omega")
+    return ("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
+            "the fixed frame ", X, ", ", Y, ", ", Z, " by the yaw angle about ", Z,
+            ", then by the pitch angle about the new ", y, ", then by the roll angle "
+            "about the body's ", x, ". ",
+            rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll)),
+            "; ", *names("yawdot"), ", ", *names("pitchdot"), ", ", *names("rolldot"),
+            ": the rates of the three angles; ", p, ", ", q_, ", ", r, ": the components "
+            "of ", w, " along the body's ", x, ", ", y, ", ", z, ", also written ", wx,
+            ", ", wy, ", ", wz, ".")
+
+
+_CONVENTIONS = {"zxz": _conventions_zxz(), "zyx": _conventions_zyx()}
+_OMEGA = (*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
+          "origin is the fixed point, about which the moments of inertia are taken.")
+_W_ABS = absolute(names("omega")[0])
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _drop_empty_body_section(work)
     sequence = given.word("sequence", "zxz")
@@ -90,10 +130,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if find and find <= INERTIA_ONLY and not any(k in given for k in (second, third)):
         # the inertia tensor needs no angles (Eq. 11.3): answer it alone
         work.section("Conventions")
-        x, y, z = names("x y z")
-        work.text(x, ", ", y, ", ", z, ": the body axes through the fixed point, about which "
-                  "the moments and products of inertia are taken; no angle or rate is needed "
-                  "for them")
+        work.text(*_INERTIA_AXES)
         if _inertia(given, find, work) is None:
             raise InputError(f"{sorted(find)[0]} needs the body's inertia: give particles, "
                              "I_x, I_y, I_z, or I and J", key="given.particles")
@@ -108,30 +145,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     a1 = given.get(first)
 
     work.section("Conventions")
-    if sequence == "zxz":
-        I, J, K, i, j, k, x, y, z, ph, th, ps, phd, thd, psd = \
-            names("I J K i j k x y z phi theta psi phidot thetadot psidot")
-        work.text("Euler angles z-x-z (Fig. 11-2): rotate the fixed frame {", I, ", ", J, ", ",
-                  K, "} by ", ph, " about ", K, ", then by ", th, " about the line of nodes ",
-                  rel(prime(i), "=", prime(i, 2)), ", then by ", ps, " about the body's ", k,
-                  "; ", i, ", ", j, ", ", k, ": the body axes, along ", x, ", ", y, ", ", z,
-                  ". The body axes in the fixed frame are the columns of ",
-                  rel(names("R")[0], "=", fn("Rz", ph) * fn("Rx", th) * fn("Rz", ps)), ". ",
-                  phd, ", ", thd, ", ", psd, ": the rates of ", ph, ", ", th, ", ", ps, ".")
-    else:
-        X, Y, Z, x, y, z, yaw, pitch, roll, p, q_, r, wx, wy, wz, w = names(
-            "X Y Z x y z yaw pitch roll p q r omega_x omega_y omega_z omega")
-        work.text("Euler angles z-y-x (yaw, pitch, roll, as aircraft books write them): rotate "
-                  "the fixed frame ", X, ", ", Y, ", ", Z, " by the yaw angle about ", Z,
-                  ", then by the pitch angle about the new ", y, ", then by the roll angle "
-                  "about the body's ", x, ". ",
-                  rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll)),
-                  "; ", *names("yawdot"), ", ", *names("pitchdot"), ", ", *names("rolldot"),
-                  ": the rates of the three angles; ", p, ", ", q_, ", ", r, ": the components "
-                  "of ", w, " along the body's ", x, ", ", y, ", ", z, ", also written ", wx,
-                  ", ", wy, ", ", wz, ".")
-    work.text(*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
-              "origin is the fixed point, about which the moments of inertia are taken.")
+    work.text(*_CONVENTIONS[sequence])
+    work.text(*_OMEGA)
 
     omega, rates = _angular_velocity(given, find, sequence, a2, a3, work)
     if a1 is not None:
@@ -147,7 +162,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError(f"{asked[0]} (a fixed-frame component) depends on the first angle: "
                              f"give {first}", key=f"given.{first}")
     wx, wy, wz = (_sym(n, v) for n, v in zip(("omega_x", "omega_y", "omega_z"), omega))
-    wabs = absolute(names("omega")[0])
+    wabs = _W_ABS
     work.step(wabs, sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
     for name, value in zip(("omega_x", "omega_y", "omega_z"), omega):
         work.answer(name, name, [value], "rate")
@@ -181,6 +196,31 @@ def _drop_empty_body_section(work: Work) -> None:
     work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
 
 
+def _eq_11_5() -> tuple:
+    w, phd, thd, psd, K, i, j, k, ps, th = names("omega phidot thetadot psidot K i j k psi theta")
+    i2, j2 = prime(i, 2), prime(j, 2)
+    return (rel(w, "=", phd * K + thd * i2 + psd * k), "  (Eq. 11.5), with ",
+            rel(i2, "=", cos(ps) * i - sin(ps) * j), ", ",
+            rel(K, "=", cos(th) * k + sin(th) * j2), " (Eq. 11.6)")
+
+
+def _yaw_pitch_roll() -> tuple:
+    w, yd, pd, rd, Z, y, x = names("omega yawdot pitchdot rolldot Z y x")
+    return (rel(w, "=", yd * Z + pd * prime(y) + rd * x), " (each rate about its own axis)")
+
+
+_RATES_LINE = {"zxz": _eq_11_5(), "zyx": _yaw_pitch_roll()}
+#: the names of each sequence's three rates, and the words of the inverse's check
+_DOTS = {sequence: names(" ".join(f"{SYMBOLS[k]}dot" for k in keys))
+         for sequence, keys in ANGLES.items()}
+_GIVES_BACK = "the inverse of Eq. 11.8 gives back the rates: "
+_p, _q, _r = names("p q r")
+_RATES_TITLE = {"zxz": ("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)"),
+                "zyx": ("Euler rates from ", _p, ", ", _q, ", ", _r, " (yaw, pitch, roll)")}
+_PUT_BACK = ("the rates put back into Eq. 11.8 give ",)
+_OMEGA0 = names("omega")[0]
+
+
 def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: float, a3: float,
                       work: Work) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
     """omega in body axes and the three Euler rates, forward (rates given) or inverse."""
@@ -202,13 +242,8 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                      else "Angular velocity in body axes (yaw, pitch, roll)")
         if missing:
             work.text(f"not given, taken as zero: {', '.join(missing)}")
+        work.text(*_RATES_LINE[sequence])
         if sequence == "zxz":
-            w, phd, thd, psd, K, i, j, k, ps, th = names(
-                "omega phidot thetadot psidot K i j k psi theta")
-            i2, j2 = prime(i, 2), prime(j, 2)
-            work.text(rel(w, "=", phd * K + thd * i2 + psd * k), "  (Eq. 11.5), with ",
-                      rel(i2, "=", cos(ps) * i - sin(ps) * j), ", ",
-                      rel(K, "=", cos(th) * k + sin(th) * j2), " (Eq. 11.6)")
             omega = ek.body_rates_zxz(a2, a3, r1, r2, r3)
             th, ps = _sym("theta", a2), _sym("psi", a3)
             p1, p2, p3 = _sym("phidot", r1), _sym("thetadot", r2), _sym("psidot", r3)
@@ -218,9 +253,6 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                       ref="Eq. 11.8")
             work.step("omega_z", p1 * _cos(th) + p3, unit="rad/s", ref="Eq. 11.8")
         else:
-            w, yd, pd, rd, Z, y, x = names("omega yawdot pitchdot rolldot Z y x")
-            work.text(rel(w, "=", yd * Z + pd * prime(y) + rd * x),
-                      " (each rate about its own axis)")
             omega = ek.body_rates_zyx(a2, a3, r1, r2, r3)
             pi_, ro = _sym("pitch", a2), _sym("roll", a3)
             y1, y2, y3 = _sym("yawdot", r1), _sym("pitchdot", r2), _sym("rolldot", r3)
@@ -229,8 +261,8 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
             work.step("r", -y2 * _sin(ro) + y1 * _cos(pi_) * _cos(ro), unit="rad/s")
         back = _inverse(sequence, a2, a3, omega, raise_singular=False)
         if back is not None:
-            dots = names(" ".join(f"{SYMBOLS[k]}dot" for k in (first, second, third)))
-            pieces: list = ["the inverse of Eq. 11.8 gives back the rates: "]
+            dots = _DOTS[sequence]
+            pieces: list = [_GIVES_BACK]
             for n, (sym, v) in enumerate(zip(dots, back)):
                 pieces += [", "] * bool(n) + [rel(sym, "=", qv(v, "rad/s"))]
             work.check(*pieces)
@@ -239,11 +271,7 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
     missing = [k for k in omega_keys if k not in given]
     omega = tuple(given.get(k, 0.0) for k in omega_keys)
     rates = _inverse(sequence, a2, a3, omega, raise_singular=True)
-    if sequence == "zxz":
-        work.section("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)")
-    else:
-        p_, q_, r_ = names("p q r")
-        work.section("Euler rates from ", p_, ", ", q_, ", ", r_, " (yaw, pitch, roll)")
+    work.section(*_RATES_TITLE[sequence])
     if missing:
         work.text(f"not given, taken as zero: {', '.join(missing)}")
     if sequence == "zxz":
@@ -265,8 +293,7 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
                   "large and sensitive to rounding in the data")
     check = (ek.body_rates_zxz(a2, a3, *rates) if sequence == "zxz"
              else ek.body_rates_zyx(a2, a3, *rates))
-    work.check("the rates put back into Eq. 11.8 give ",
-               rel(names("omega")[0], "=", tup(*(qv(v, "rad/s") for v in check))))
+    work.check(*_PUT_BACK, rel(_OMEGA0, "=", tup(*(qv(v, "rad/s") for v in check))))
     return omega, rates
 
 
@@ -290,27 +317,36 @@ def _inverse(sequence: str, a2: float, a3: float, omega, raise_singular: bool):
     raise InputError(msg, key=f"given.{second}")
 
 
+def _fixed_frame_words() -> tuple[tuple, tuple, tuple]:
+    w_XYZ, R_, w_xyz = names("omega_XYZ R omega_xyz")
+    title = ("Angular velocity in the fixed frame: ", rel(w_XYZ, "=", R_ * w_xyz), ", with ",
+             w_xyz, " the body components")
+    w, phd, thd, psd, I0, J0, K0, k0, ph0, th0 = names(
+        "omega phidot thetadot psidot I J K k phi theta")
+    equivalently = ("equivalently ", rel(w, "=", phd * K0 + thd * (cos(ph0) * I0 + sin(ph0) * J0)
+                                         + psd * k0), ", ",
+                    rel(k0, "=", sin(th0) * sin(ph0) * I0 - sin(th0) * cos(ph0) * J0
+                        + cos(th0) * K0), ":")
+    yaw, pitch, roll = names("yaw pitch roll")
+    attitude = (names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll), "=")
+    return title, equivalently, attitude
+
+
+_FIXED_TITLE, _EQUIVALENTLY, _ATTITUDE = _fixed_frame_words()
+
+
 def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3: float,
                  work: Work) -> None:
-    w_XYZ, R_, w_xyz = names("omega_XYZ R omega_xyz")
-    work.section("Angular velocity in the fixed frame: ", rel(w_XYZ, "=", R_ * w_xyz), ", with ",
-                 w_xyz, " the body components")
+    work.section(*_FIXED_TITLE)
     if sequence == "zxz":
         p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
         ph, th = _sym("phi", a1), _sym("theta", a2)
-        w, phd, thd, psd, I0, J0, K0, k0, ph0, th0 = names(
-            "omega phidot thetadot psidot I J K k phi theta")
-        work.text("equivalently ", rel(w, "=", phd * K0 + thd * (cos(ph0) * I0 + sin(ph0) * J0)
-                                       + psd * k0), ", ",
-                  rel(k0, "=", sin(th0) * sin(ph0) * I0 - sin(th0) * cos(ph0) * J0
-                      + cos(th0) * K0), ":")
+        work.text(*_EQUIVALENTLY)
         work.step("omega_X", p2 * _cos(ph) + p3 * _sin(th) * _sin(ph), unit="rad/s")
         work.step("omega_Y", p2 * _sin(ph) - p3 * _sin(th) * _cos(ph), unit="rad/s")
         work.step("omega_Z", p1 + p3 * _cos(th), unit="rad/s")
     else:
-        yaw, pitch, roll = names("yaw pitch roll")
-        work.text(rel(names("R")[0], "=", fn("Rz", yaw) * fn("Ry", pitch) * fn("Rx", roll), "=",
-                      mat(*((qv(v) for v in row) for row in R))))
+        work.text(rel(*_ATTITUDE, mat(*((qv(v) for v in row) for row in R))))
         for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
             work.step(name, value=value, unit="rad/s")
 
@@ -352,12 +388,9 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             values.append(given[key])
         products = [given.get(k, 0.0) for k in PRODUCT_KEYS]
         matrix = ek.inertia_matrix(*values, *products)
-        Ix, Iy, Iz, Ixy, Iyz, Izx = names("I_x I_y I_z I_xy I_yz I_zx")
-        work.text(Ix, ", ", Iy, ", ", Iz, " as given", *((", with the products ", Ixy, ", ", Iyz,
-                                                        ", ", Izx) if any(products)
-                                                       else (" (principal axes)",)))
-        _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
-        _report_matrix(matrix, products, work)
+        work.text(*_AS_GIVEN[any(products)])
+        moments = _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
+        _report_matrix(matrix, products, work, moments=moments)
         return matrix
     body = given.body
     J = body.J
@@ -374,21 +407,36 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
             I = body.I_pivot
         elif body.I_cg is not None:
             I = body.I_cg
-            work.text("no cg_distance: the fixed point is taken at the centre of mass, ",
-                      rel(*names("I"), "=", *names("I_G")))
+            work.text(*_AT_THE_CENTRE)
         else:
             raise InputError("the body needs its transverse inertia about the fixed point: "
                              "I_pivot, k_pivot, I_cg or k_cg (with cg_distance), or a shape",
                              key="given.I_pivot")
-    Ix, Iy, Iz, I0, J0 = names("I_x I_y I_z I J")
-    work.text("symmetric body (Eq. 11.9): ", rel(Ix, "=", Iy, "=", I0), ", ", rel(Iz, "=", J0))
+    work.text(*_SYMMETRIC)
     matrix = ek.inertia_matrix(I, I, J)
-    _check_rigid(matrix, "given.J")
-    _report_matrix(matrix, [0.0, 0.0, 0.0], work)
+    moments = _check_rigid(matrix, "given.J")
+    _report_matrix(matrix, [0.0, 0.0, 0.0], work, moments=moments)
     return matrix
 
 
-def _check_rigid(matrix, key: str) -> None:
+def _inertia_words() -> tuple[dict[bool, tuple], tuple, tuple]:
+    Ix, Iy, Iz, Ixy, Iyz, Izx, I0, J0 = names("I_x I_y I_z I_xy I_yz I_zx I J")
+    as_given = {products: (Ix, ", ", Iy, ", ", Iz, " as given",
+                           *((", with the products ", Ixy, ", ", Iyz, ", ", Izx) if products
+                             else (" (principal axes)",)))
+                for products in (True, False)}
+    centre = ("no cg_distance: the fixed point is taken at the centre of mass, ",
+              rel(*names("I"), "=", *names("I_G")))
+    symmetric = ("symmetric body (Eq. 11.9): ", rel(Ix, "=", Iy, "=", I0), ", ", rel(Iz, "=", J0))
+    return as_given, centre, symmetric
+
+
+_AS_GIVEN, _AT_THE_CENTRE, _SYMMETRIC = _inertia_words()
+
+
+def _check_rigid(matrix, key: str) -> list[float]:
+    """The principal moments of a body's inertia matrix; InputError if no rigid body has
+    them (not positive definite, or the largest above the sum of the other two)."""
     moments = ek.principal_moments(matrix)
     if moments[0] <= 0:
         raise InputError(f"the inertia matrix is not positive definite (principal moments "
@@ -398,55 +446,84 @@ def _check_rigid(matrix, key: str) -> None:
                          f"of the other two, {num(moments[0] + moments[1])} kg m^2: no rigid "
                          "body has these inertias (I_z = sum m (x^2 + y^2) <= I_x + I_y)",
                          key=key)
+    return moments
+
+
+#: each moment and product of inertia as a term of its sum over the particles (Eq. 11.3)
+_SUMS = {"I_x": lambda m, x, y, z: m * (y ** 2 + z ** 2),
+         "I_y": lambda m, x, y, z: m * (z ** 2 + x ** 2),
+         "I_z": lambda m, x, y, z: m * (x ** 2 + y ** 2),
+         "I_xy": lambda m, x, y, z: m * x * y, "I_yz": lambda m, x, y, z: m * y * z,
+         "I_zx": lambda m, x, y, z: m * z * x}
+
+
+def _particle_words() -> tuple[tuple, tuple[tuple, ...], Sym, dict[str, Expr]]:
+    m, x, y, z = names("m x y z")
+    intro = ("particles of mass ", m, " at the coordinates ", x, ", ", y, ", ", z, " in body "
+             "axes from the fixed point; the products of inertia as the chapter defines them "
+             "(the matrix has their negatives off the diagonal):")
+    products = tuple((rel(*names(name), "=", total(m * a * b)),)
+                     for name, (a, b) in zip(PRODUCT_KEYS, ((x, y), (y, z), (z, x))))
+    # the formula of each sum as the chapter writes it, in symbols of their own
+    m, x, y, z = names("m x y z")
+    return intro, products, m, {name: term(m, x, y, z) for name, term in _SUMS.items()}
+
+
+_PARTICLES, _PRODUCTS, _M, _SUM_FORMULAS = _particle_words()
 
 
 def _from_particles(particles, work: Work):
-    m, x, y, z = names("m x y z")
-    work.text("particles of mass ", m, " at the coordinates ", x, ", ", y, ", ", z, " in body "
-              "axes from the fixed point; the products of inertia as the chapter defines them "
-              "(the matrix has their negatives off the diagonal):")
-    for name, (a, b) in zip(PRODUCT_KEYS, ((x, y), (y, z), (z, x))):
-        work.text(rel(*names(name), "=", total(m * a * b)))
+    work.text(*_PARTICLES)
+    for line in _PRODUCTS:
+        work.text(*line)
     for i, (mi, xi, yi, zi) in enumerate(particles[:MAX_LISTED]):
-        work.text(f"  [{i}] ", rel(m, "=", qv(mi, "kg")), " at ",
+        work.text(f"  [{i}] ", rel(_M, "=", qv(mi, "kg")), " at ",
                   tup(qv(xi, "m"), qv(yi, "m"), qv(zi, "m")))
     if len(particles) > MAX_LISTED:
         work.text(f"  ... {len(particles) - MAX_LISTED} more")
     Ix, Iy, Iz, Ixy, Iyz, Izx = ek.inertia_from_particles(particles)
     # each particle's m, x, y, z as symbols named with its index: the sums evaluate term by
     # term (the JSON expr lists them), the formula is written as the chapter writes it
-    m, x, y, z = names("m x y z")
     parts = [(Sym(f"m_{i}", p[0], "kg"), Sym(f"x_{i}", p[1], "m"), Sym(f"y_{i}", p[2], "m"),
               Sym(f"z_{i}", p[3], "m")) for i, p in enumerate(particles)]
-    sums = {"I_x": lambda m, x, y, z: m * (y ** 2 + z ** 2),
-            "I_y": lambda m, x, y, z: m * (z ** 2 + x ** 2),
-            "I_z": lambda m, x, y, z: m * (x ** 2 + y ** 2),
-            "I_xy": lambda m, x, y, z: m * x * y, "I_yz": lambda m, x, y, z: m * y * z,
-            "I_zx": lambda m, x, y, z: m * z * x}
-    for name, term in sums.items():  # the float values stay physics' (ek.inertia_from_particles)
-        work.step(name, SumOf(term(m, x, y, z), tuple(term(*p) for p in parts)),
+    for name, term in _SUMS.items():  # the float values stay physics' (ek.inertia_from_particles)
+        work.step(name, SumOf(_SUM_FORMULAS[name], tuple(term(*p) for p in parts)),
                   unit="kg*m^2", ref="Eq. 11.3" if len(name) == 3 else "", substitute=False)
     matrix = ek.inertia_matrix(Ix, Iy, Iz, Ixy, Iyz, Izx)
     _report_matrix(matrix, [Ixy, Iyz, Izx], work, listed=True)
     return matrix
 
 
-def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
+def _matrix_words() -> tuple[tuple, tuple, tuple, Expr]:
+    Ixy, Iyz, Izx, x, y, z, T, H = names("I_xy I_yz I_zx x y z T H")
+    principal = ("the products of inertia are zero, ", rel(Ixy, "=", Iyz, "=", Izx, "=", 0),
+                 ": ", x, ", ", y, ", ", z, " are principal axes")
+    not_principal = ("the products of inertia are not zero: ", x, ", ", y, ", ", z, " are NOT "
+                     "principal axes, and ", T, " and ", H, " below use the whole inertia "
+                     "matrix, not Eq. 11.2's diagonal form")
+    warning = ("the body axes are not principal axes (products of inertia not zero); ", T,
+               " and ", H, " use the whole inertia matrix")
+    return principal, not_principal, warning, tup(*names("I_1 I_2 I_3"))
+
+
+_PRINCIPAL, _NOT_PRINCIPAL, _NOT_PRINCIPAL_WARNING, _MOMENTS = _matrix_words()
+
+
+def _report_matrix(matrix, products, work: Work, listed: bool = False,
+                   moments: list[float] | None = None) -> None:
+    """The inertia matrix's steps and answers; ``moments``: its principal moments where they
+    are known already (_check_rigid), so that its eigenvalues are not worked out again."""
     Ix, Iy, Iz = matrix[0][0], matrix[1][1], matrix[2][2]
     if not listed:
         for name, value in zip(PRINCIPAL_KEYS, (Ix, Iy, Iz)):
             work.step(name, value=value, unit="kg*m^2")
-    moments = ek.principal_moments(matrix)
-    Ixy, Iyz, Izx, x, y, z, T, H = names("I_xy I_yz I_zx x y z T H")
+    if moments is None:
+        moments = ek.principal_moments(matrix)
     if ek.is_diagonal(matrix):
-        work.text("the products of inertia are zero, ", rel(Ixy, "=", Iyz, "=", Izx, "=", 0),
-                  ": ", x, ", ", y, ", ", z, " are principal axes")
+        work.text(*_PRINCIPAL)
     else:
-        work.text("the products of inertia are not zero: ", x, ", ", y, ", ", z, " are NOT "
-                  "principal axes, and ", T, " and ", H, " below use the whole inertia matrix, "
-                  "not Eq. 11.2's diagonal form")
-        work.warn("the body axes are not principal axes (products of inertia not zero); ", T,
-                  " and ", H, " use the whole inertia matrix")
+        work.text(*_NOT_PRINCIPAL)
+        work.warn(*_NOT_PRINCIPAL_WARNING)
     for k, value in enumerate(moments):  # not a formula: the matrix's eigenvalues
         work.step(f"I_{k + 1}", value=value, unit="kg*m^2",
                   note="" if k else "the principal moments: the eigenvalues of the inertia "
@@ -455,7 +532,21 @@ def _report_matrix(matrix, products, work: Work, listed: bool = False) -> None:
         work.answer(name, name, [value], "inertia")
     for name, value in zip(PRODUCT_KEYS, products):
         work.answer(name, name, [value], "inertia")
-    work.answer("principal_moments", tup(*names("I_1 I_2 I_3")), moments, "inertia")
+    work.answer("principal_moments", _MOMENTS, moments, "inertia")
+
+
+def _momentum_words() -> tuple[Expr, tuple, tuple, Expr, tuple, tuple]:
+    w0, H0 = names("omega H")
+    half_dot = (names("T")[0], "=", HALF * dot(*names("omega H")), "=")
+    fixed_note = ("fixed-frame component of ", names("R")[0] * names("H")[0])
+    angle = fn("angle", w0, H0)
+    angle_note = ("zero only when ", w0, " lies along a principal axis")
+    at_rest = (rel(w0, "=", 0), ": the body is at rest, ", rel(H0, "=", 0), " and the angle "
+               "between them is undefined")
+    return absolute(names("H")[0]), half_dot, fixed_note, angle, angle_note, at_rest
+
+
+_H_ABS, _HALF_DOT, _FIXED_NOTE, _ANGLE, _ANGLE_NOTE, _AT_REST = _momentum_words()
 
 
 def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
@@ -484,10 +575,9 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
                   substitute=False)
     Hmag = ek.norm(H)
     Hx, Hy, Hz = (_sym(n, v) for n, v in zip(("H_x", "H_y", "H_z"), H))
-    Habs = absolute(names("H")[0])
+    Habs = _H_ABS
     work.step(Habs, sqrt(Hx ** 2 + Hy ** 2 + Hz ** 2), unit="kg m^2/s", substitute=False)
-    work.check(rel(names("T")[0], "=", HALF * dot(*names("omega H")), "=",
-                   qv(0.5 * ek.dot(omega, H), "J")))
+    work.check(rel(*_HALF_DOT, qv(0.5 * ek.dot(omega, H), "J")))
     work.answer("kinetic_energy", "T", [T], "energy")
     for name, value in zip(("H_x", "H_y", "H_z"), H):
         work.answer(name, name, [value], "angular_momentum")
@@ -495,23 +585,19 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
     if R is not None:
         fixed = ek.matvec(R, H)
         for name, value in zip(("H_X", "H_Y", "H_Z"), fixed):
-            work.step(name, value=value, unit="kg m^2/s",
-                      note=("fixed-frame component of ", names("R")[0] * names("H")[0]))
+            work.step(name, value=value, unit="kg m^2/s", note=_FIXED_NOTE)
             work.answer(name, name, [value], "angular_momentum")
         work.check("in the fixed frame ", rel(Habs, "=", qv(ek.norm(fixed), "kg m^2/s")))
-    w0, H0 = names("omega H")
     if Hmag > 0:
         angle = ek.angle_between(omega, H)
         # atan2(|omega x H|, omega . H), the cross and dot products by their components
         cross_ = sqrt((w["y"] * Hz - w["z"] * Hy) ** 2 + (w["z"] * Hx - w["x"] * Hz) ** 2
                       + (w["x"] * Hy - w["y"] * Hx) ** 2)
-        work.step(fn("angle", w0, H0), atan2(cross_, w["x"] * Hx + w["y"] * Hy + w["z"] * Hz),
-                  unit="deg", substitute=False,
-                  note=("zero only when ", w0, " lies along a principal axis"))
-        work.answer("omega_H_angle", fn("angle", w0, H0), [angle], "angle")
+        work.step(_ANGLE, atan2(cross_, w["x"] * Hx + w["y"] * Hy + w["z"] * Hz),
+                  unit="deg", substitute=False, note=_ANGLE_NOTE)
+        work.answer("omega_H_angle", _ANGLE, [angle], "angle")
     else:
-        work.text(rel(w0, "=", 0), ": the body is at rest, ", rel(H0, "=", 0), " and the angle "
-                  "between them is undefined")
+        work.text(*_AT_REST)
 
 
 KIND = Kind(

@@ -57,17 +57,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError(f"theta0 = {_deg(theta0)} with no spin about the axis: the top stands "
                          "(or hangs) on the vertical and does not move", key="given.theta0")
     nut = analyse(top, start)
-    _constants(top, start, nut, omega_z, work)
-    _roots(top, start, nut, work)
+    t = _syms(top, start, nut, omega_z)
+    _constants(t, nut, work)
+    _roots(nut, work)
     if nut.motion == "sleeping":
-        _sleeping(top, start, nut, omega_z, find, work)
+        _sleeping(top, start, nut, omega_z, t, find, work)
         return
     released = precession0 == 0 and theta_rate0 == 0
     if released:
-        _released(top, start, nut, omega_z, work)
+        _released(nut, t, work)
     _period(nut, work)
     _precession(start, nut, work)
-    _fast_top(top, start, nut, omega_z, released, work)
+    _fast_top(nut, t, released, work)
     _answers(nut, work)
     if find & {"spin_at_limits", "reversal_theta"}:
         _spin_and_reversal(nut, omega_z, find, work)
@@ -88,16 +89,21 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   "a fixed point free to swing, as in a ball joint)")
 
 
-def _constants(top, start, nut, omega_z: float, work: Work) -> None:
-    work.section("Constants of the motion at ", rel(t_, "=", 0),
-                 " (Eqs. 11.8, 11.14, 11.17, 11.18)")
-    work.text("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
-              theta, " from the upward vertical to the axis through the centre of mass, ",
-              rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
-              " is relative to the precessing frame, which turns about the vertical at the "
-              "precession rate ", phidot, "; ", *names("thetadot"), ": the rate of ", theta,
-              "; the suffix ", Num(0), " marks a value at ", rel(t_, "=", 0))
-    t = _syms(top, start, nut, omega_z)
+# The sentences that hold no values are built once, here, and only their values' steps
+# each time: building a sentence's trees cost as much as a third of the kind's time.
+_CONSTANTS_TITLE = ("Constants of the motion at ", rel(t_, "=", 0),
+                    " (Eqs. 11.8, 11.14, 11.17, 11.18)")
+_CONVENTIONS = ("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
+                theta, " from the upward vertical to the axis through the centre of mass, ",
+                rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
+                " is relative to the precessing frame, which turns about the vertical at the "
+                "precession rate ", phidot, "; ", *names("thetadot"), ": the rate of ", theta,
+                "; the suffix ", Num(0), " marks a value at ", rel(t_, "=", 0))
+
+
+def _constants(t: dict[str, Expr], nut, work: Work) -> None:
+    work.section(*_CONSTANTS_TITLE)
+    work.text(*_CONVENTIONS)
     th0 = cos(t["theta0"])
     work.step("omega_z", t["psidot"] + t["phidot0"] * th0, unit="rad/s", ref="Eq. 11.8")
     work.step("P2", t["J"] * t["omega_z"], unit="kg m^2/s", ref="Eq. 11.14")
@@ -126,15 +132,28 @@ def _syms(top, start, nut, omega_z: float) -> dict[str, Expr]:
             "beta": Sym("beta", nut.beta, "rad/s")}
 
 
-def _roots(top, start, nut, work: Work) -> None:
+_U = names("u")[0]  # u: a root below
+_ROOTS_TITLE = ("Energy integral in ", rel(_U, "=", cos(theta)), ", Eq. 11.19")
+_EQ_11_19 = (rel(udot ** 2, "=", fn("f", _U), "=", (1 - _U ** 2) * (alpha_ - a_ * _U)
+                 - (beta_ - gamma_ * _U) ** 2), "    (Eq. 11.19)")
+_EQ_11_19_EXPANDED = ("       ", rel(None, "=", a_ * _U ** 3 - (alpha_ + gamma_ ** 2) * _U ** 2
+                                   + (2 * beta_ * gamma_ - a_) * _U
+                                   + bracket(alpha_ - beta_ ** 2, open="(")))
+_ROOTS_LIE = (rel(fn("f", pm(None, 1)), "=", -pm(beta_, gamma_, "-+") ** 2, "<=", 0), " and ",
+              rel(fn("f", u0), "=", sin(theta0) ** 2 * thetadot0 ** 2, ">=", 0), ", where ",
+              rel(u0, "=", cos(theta0)), ": so the roots ", u1, ", ", u2, ", ", u3, " of ", f,
+              " lie ", rel(u1, "<=", u0, "<=", u2), " in ", bracket(-1, 1), ", ",
+              rel(u3, ">=", 1))
+_RESIDUAL = ("at each root ", u_i, ", ", fn("f", u_i), " from Eq. 11.19 itself, largest ",
+             absolute(fn("f", u_i)), " / (largest coefficient) ")
+
+
+def _roots(nut, work: Work) -> None:
     a, al, b, g = nut.a, nut.alpha, nut.beta, nut.gamma
-    U = names("u")[0]  # u: a root below
-    work.section("Energy integral in ", rel(U, "=", cos(theta)), ", Eq. 11.19")
-    work.text(rel(udot ** 2, "=", fn("f", U), "=", (1 - U ** 2) * (alpha_ - a_ * U)
-                  - (beta_ - gamma_ * U) ** 2), "    (Eq. 11.19)")
-    work.text("       ", rel(None, "=", a_ * U ** 3 - (alpha_ + gamma_ ** 2) * U ** 2
-                             + (2 * beta_ * gamma_ - a_) * U
-                             + bracket(alpha_ - beta_ ** 2, open="(")))
+    U = _U
+    work.section(*_ROOTS_TITLE)
+    work.text(*_EQ_11_19)
+    work.text(*_EQ_11_19_EXPANDED)
     c0 = al - b * b
     per_s2 = "1/s^2"  # the coefficients' unit (u is a number)
     cubic = (bracket(q(a, per_s2), open="(") * U ** 3
@@ -142,11 +161,7 @@ def _roots(top, start, nut, work: Work) -> None:
              + bracket(q(2 * b * g - a, per_s2), open="(") * U)
     work.text("       ", rel(None, "=", cubic - q(-c0, per_s2) if c0 < 0 else
                              cubic + q(c0, per_s2)))
-    work.text(rel(fn("f", pm(None, 1)), "=", -pm(beta_, gamma_, "-+") ** 2, "<=", 0), " and ",
-              rel(fn("f", u0), "=", sin(theta0) ** 2 * thetadot0 ** 2, ">=", 0), ", where ",
-              rel(u0, "=", cos(theta0)), ": so the roots ", u1, ", ", u2, ", ", u3, " of ", f,
-              " lie ", rel(u1, "<=", u0, "<=", u2), " in ", bracket(-1, 1), ", ",
-              rel(u3, ">=", 1))
+    work.text(*_ROOTS_LIE)
     for i, u in enumerate(nut.u_roots, 1):
         work.step(f"u{i}", value=u)
     if nut.motion == "sleeping":
@@ -158,9 +173,7 @@ def _roots(top, start, nut, work: Work) -> None:
 
     scale = max(abs(a), abs(al + g * g), abs(2 * b * g - a), abs(al - b * b))
     residual = max(abs(f_of_u(nut, u)) for u in nut.u_roots) / scale
-    work.check("at each root ", u_i, ", ", fn("f", u_i), " from Eq. 11.19 itself, largest ",
-               absolute(fn("f", u_i)), " / (largest coefficient) ", rel(None, "=", q(residual,
-                                                                                  sig=2)))
+    work.check(*_RESIDUAL, rel(None, "=", q(residual, sig=2)))
 
 
 def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
@@ -173,16 +186,22 @@ def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
     return PI - 2 * asin(sqrt(Let(Sym(f"one_plus_{u}", one_plus), 1 + Sym(u, math.nan)) / 2))
 
 
-def _released(top, start, nut, omega_z: float, work: Work) -> None:
-    work.section("Released from rest (", rel(*names("phidot0"), "=", thetadot0, "=", 0),
-                 "): Eqs. 11.22-11.25")
-    P1, P2 = names("P1 P2")
-    work.text(rel(P1, "=", P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2), ", ",
-              rel(fn("f", u), "=", (u2 - u) * bracket(a_ * (1 - u ** 2) - gamma_ ** 2
-                                                       * (u2 - u))), " (Eq. 11.23)")
-    work.text("Eq. 11.24 as corrected in the errata: ", gamma_ ** 2 / a_ * u2, " under the root, "
-              "not ", gamma_ ** 2 / 2)
-    t = _syms(top, start, nut, omega_z)
+_RELEASED_TITLE = ("Released from rest (", rel(*names("phidot0"), "=", thetadot0, "=", 0),
+                   "): Eqs. 11.22-11.25")
+_P1, _P2 = names("P1 P2")
+_EQ_11_23 = (rel(_P1, "=", _P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2), ", ",
+             rel(fn("f", u), "=", (u2 - u) * bracket(a_ * (1 - u ** 2) - gamma_ ** 2
+                                                      * (u2 - u))), " (Eq. 11.23)")
+_ERRATA = ("Eq. 11.24 as corrected in the errata: ", gamma_ ** 2 / a_ * u2, " under the root, "
+           "not ", gamma_ ** 2 / 2)
+_FALLS = ("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
+          *names("theta_1"), " and back")
+
+
+def _released(nut, t: dict[str, Expr], work: Work) -> None:
+    work.section(*_RELEASED_TITLE)
+    work.text(*_EQ_11_23)
+    work.text(*_ERRATA)
     g, a = t["gamma"], t["a"]
     u1_ = names("u1")[0]
     # as printed; released_u1 computes it without cancellation (a test holds the two together)
@@ -190,8 +209,7 @@ def _released(top, start, nut, omega_z: float, work: Work) -> None:
                                                   * cos(t["theta0"]) + 1), ref="Eq. 11.25")
     assert u1 is not None
     work.step("theta_1", acos(Sym("u1", max(-1.0, min(1.0, u1)))), unit="deg", substitute=False,
-              note=("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
-                    *names("theta_1"), " and back"))
+              note=_FALLS)
     work.check("Eq. 11.25 ", rel(u1_, "=", q(u1, sig=10)), " against the root of Eq. 11.19 ",
                rel(u1_, "=", q(nut.u_roots[0], sig=10)))
 
@@ -205,31 +223,32 @@ def _differences(nut) -> tuple[Expr, Expr]:
     return (Let(Sym("u2_minus_u1", d2 - d1), u2 - u1), Let(Sym("u3_minus_u1", d3 - d1), u3 - u1))
 
 
-def _period(nut, work: Work) -> None:
-    from ..physics.nutation import complete_K
+_PERIOD_TITLE = ("Nutation period: ", rel(fn("f", u), "=", a_ * (u - u1) * (u - u2) * (u - u3)),
+                 ", ", rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2))
+_PERIOD = (rel(T_, "=", 2 * integral(u1, u2, names("du")[0] / sqrt(fn("f", u))), "=",
+               4 * fn("K", m_) / sqrt(a_ * (u3 - u1))), ", where ", K_, " is the complete "
+           "elliptic integral of the first kind and ", m_, ", below, its parameter; the "
+           "substitution is ", rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2), " for ", s_,
+           " from ", Num(0), " to ", PI / 2)
+_K_OF_M = fn("K", m_)
+_NUTATES = (rel(theta_max, "->", theta_min, "->", theta_max),)
+_STEADY = (rel(u1, "=", u2), " (to rounding): no nutation; ", T_, " is the period of "
+           "small oscillations about ", theta0, ", the ", rel(m_, "->", 0), " limit ",
+           2 * PI / sqrt(a_ * (u3 - u1)))
 
-    d1, d2, d3 = nut.d_roots
-    K = complete_K(d1, d2, d3)
+
+def _period(nut, work: Work) -> None:
+    K = nut.K  # K(m) as analyse computed it for the period
     width, span = _differences(nut)
-    work.section("Nutation period: ",
-                 rel(fn("f", u), "=", a_ * (u - u1) * (u - u2) * (u - u3)), ", ",
-                 rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2))
-    du = names("du")[0]
-    work.text(rel(T_, "=", 2 * integral(u1, u2, du / sqrt(fn("f", u))), "=",
-                  4 * fn("K", m_) / sqrt(a_ * (u3 - u1))), ", where ", K_, " is the complete "
-              "elliptic integral of the first kind and ", m_, ", below, its parameter; the "
-              "substitution is ", rel(u, "=", u1 + (u2 - u1) * sin(s_) ** 2), " for ", s_,
-              " from ", Num(0), " to ", PI / 2)
+    work.section(*_PERIOD_TITLE)
+    work.text(*_PERIOD)
     m = work.step("m", width / span)
-    work.step(fn("K", m_), value=K)
+    work.step(_K_OF_M, value=K)
     # K(m) from R_F with 1 - m = (u3 - u2) / (u3 - u1) exact; ellipk(m) would lose it as m -> 1
     K_m = Let(Sym("K", K), ellipk(Sym("m", m if m is not None else math.nan)))
-    work.step("T", 4 * K_m / sqrt(Sym("a", nut.a, "1/s^2") * span), unit="s",
-              note=(rel(theta_max, "->", theta_min, "->", theta_max),))
+    work.step("T", 4 * K_m / sqrt(Sym("a", nut.a, "1/s^2") * span), unit="s", note=_NUTATES)
     if nut.motion == "steady":
-        work.text(rel(u1, "=", u2), " (to rounding): no nutation; ", T_, " is the period of "
-                  "small oscillations about ", theta0, ", the ", rel(m_, "->", 0), " limit ",
-                  2 * PI / sqrt(a_ * (u3 - u1)))
+        work.text(*_STEADY)
 
 
 def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
@@ -249,21 +268,50 @@ def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
             / Let(Sym(f"one_minus_{u}_squared", one_minus * one_plus), 1 - U ** 2))
 
 
+_PHIDOT_OF_U = (beta_ - gamma_ * _U) / (1 - _U ** 2)
+_PRECESSION_TITLE = ("Precession: ", rel(phidot, "=", _PHIDOT_OF_U), " (Eqs. 11.16, 11.26)")
+_ON_POLE = ("; the limit of ", _PHIDOT_OF_U, " on the pole")
+#: each nutation limit: its root's name, phidot there (the step's symbol), the limit's name
+_LIMITS = tuple((u_, fn("phidot", *names(u_)), names(where)[0])
+                for u_, where in (("u1", "theta_max"), ("u2", "theta_min")))
+_N1 = (n1, (u2 - u1) / (1 - u1))
+_N2 = (n2, (u2 - u1) / (1 + u1))
+_HALVES = (rel(phidot, "=", Num(0.5, "1/2") * bracket((beta_ - gamma_) / (1 - _U)
+                                                      + (beta_ + gamma_) / (1 + _U))),
+           "; with ", rel(1 - _U, "=", (1 - u1) * (1 - n1 * sin(s_) ** 2)), ", ",
+           rel(1 + _U, "=", (1 + u1) * (1 + n2 * sin(s_) ** 2)), ":")
+_Pi, _R_F, _R_J = names("Pi R_F R_J")
+_MEAN = ("mean ", rel(phidot, "=", bracket(
+    (beta_ - gamma_) * fn("Pi", n1, m_, sep="|") / (1 - u1)
+    + (beta_ + gamma_) * fn("Pi", -n2, m_, sep="|") / (1 + u1)) / (2 * fn("K", m_))),
+    ", where ", _Pi, " is the complete elliptic integral of the third kind, ",
+    rel(fn("Pi", n_, m_, sep="|"), "=", fn("R_F", 0, 1 - m_, 1)
+        + n_ / 3 * fn("R_J", 0, 1 - m_, 1, 1 - n_)),
+    ", with Carlson's symmetric integrals ", _R_F, " and ", _R_J)
+_ADVANCE = ("; ", phi, " advance over one period / ", T_, ")")
+#: the closing sentence for each motion (Figs. 11-7, 11-9, 11-10)
+_MOTION = {motion: (f"motion: {motion}. The numerator ", beta_ - gamma_ * _U, " is linear in ",
+                    _U, ", so ", phidot, "'s signs over the nutation are those at ", u1, " and ",
+                    u2, ": ", *reason) for motion, reason in {
+    "cusps": (rel(phidot, "=", 0), " at a limit of the nutation: the axis stops there, the "
+              "path has cusps (Fig. 11-9)"),
+    "loops": (phidot, " changes sign between the limits: the path loops back (Fig. 11-10)"),
+    "waves": (phidot, " keeps one sign between the limits: the path waves (Fig. 11-10)"),
+    "steady": ("no nutation: steady precession at ", theta0, " (Fig. 11-7)"),
+}.items()}
+
+
 def _precession(start, nut, work: Work) -> None:
     from ..physics.nutation import limit_precession_terms
 
     d1, d2, d3 = nut.d_roots
     u1_, u2_, _ = nut.u_roots
-    U = names("u")[0]  # u: the limit below
-    work.section("Precession: ", rel(phidot, "=", (beta_ - gamma_ * U) / (1 - U ** 2)),
-                 " (Eqs. 11.16, 11.26)")
-    for u, terms, where in zip(("u1", "u2"), limit_precession_terms(nut, start),
-                               ("theta_max", "theta_min")):
+    work.section(*_PRECESSION_TITLE)
+    for (u, symbol, where), terms in zip(_LIMITS, limit_precession_terms(nut, start)):
         tree = _limit_precession(nut, u, terms)
-        pole = ("; the limit of ", (beta_ - gamma_ * U) / (1 - U ** 2),
-                " on the pole") if min(terms[1:]) <= 0 else ()
-        work.step(fn("phidot", *names(u)), tree, unit="rad/s", substitute=False,
-                  note=("at ", *names(where), " (", q(tree.value / RPM, "rpm"), ")", *pole))
+        pole = _ON_POLE if min(terms[1:]) <= 0 else ()
+        work.step(symbol, tree, unit="rad/s", substitute=False,
+                  note=("at ", where, " (", q(tree.value / RPM, "rpm"), ")", *pole))
     if nut.motion != "steady":
         m = (d2 - d1) / (d3 - d1)
         n1_ = (u2_ - u1_) / (1 - u1_) if u1_ < 1 else math.inf
@@ -275,45 +323,34 @@ def _precession(start, nut, work: Work) -> None:
             return (rel(name, "=", formula), " = unbounded (", rel(u1, "=", pole),
                     ": the term drops)")
 
-        work.text(*shown(n1, (u2 - u1) / (1 - u1), n1_, 1), ", ",
-                  *shown(n2, (u2 - u1) / (1 + u1), n2_, -1), ", ", rel(m_, "=", q(m)))
-        work.text(rel(phidot, "=", Num(0.5, "1/2") * bracket((beta_ - gamma_) / (1 - U)
-                                                          + (beta_ + gamma_) / (1 + U))),
-                  "; with ", rel(1 - U, "=", (1 - u1) * (1 - n1 * sin(s_) ** 2)), ", ",
-                  rel(1 + U, "=", (1 + u1) * (1 + n2 * sin(s_) ** 2)), ":")
-        Pi, R_F, R_J = names("Pi R_F R_J")
-        work.text("mean ", rel(phidot, "=", bracket(
-            (beta_ - gamma_) * fn("Pi", n1, m_, sep="|") / (1 - u1)
-            + (beta_ + gamma_) * fn("Pi", -n2, m_, sep="|") / (1 + u1)) / (2 * fn("K", m_))),
-            ", where ", Pi, " is the complete elliptic integral of the third kind, ",
-            rel(fn("Pi", n_, m_, sep="|"), "=", fn("R_F", 0, 1 - m_, 1)
-                + n_ / 3 * fn("R_J", 0, 1 - m_, 1, 1 - n_)),
-            ", with Carlson's symmetric integrals ", R_F, " and ", R_J)
+        work.text(*shown(*_N1, n1_, 1), ", ", *shown(*_N2, n2_, -1), ", ", rel(m_, "=", q(m)))
+        work.text(*_HALVES)
+        work.text(*_MEAN)
     work.step("phidot_mean", value=nut.mean_precession, unit="rad/s",
-              note=("(", q(nut.mean_precession / RPM, "rpm"), "; ", phi, " advance over one "
-                    "period / ", T_, ")"))
-    reason = {
-        "cusps": (rel(phidot, "=", 0), " at a limit of the nutation: the axis stops there, the "
-                  "path has cusps (Fig. 11-9)"),
-        "loops": (phidot, " changes sign between the limits: the path loops back (Fig. 11-10)"),
-        "waves": (phidot, " keeps one sign between the limits: the path waves (Fig. 11-10)"),
-        "steady": ("no nutation: steady precession at ", theta0, " (Fig. 11-7)"),
-    }[nut.motion]
-    work.text(f"motion: {nut.motion}. The numerator ", beta_ - gamma_ * U, " is linear in ", U,
-              ", so ", phidot, "'s signs over the nutation are those at ", u1, " and ", u2, ": ",
-              *reason)
+              note=("(", q(nut.mean_precession / RPM, "rpm"), *_ADVANCE))
+    work.text(*_MOTION[nut.motion])
 
 
-def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> None:
-    work.section("Fast-top approximation (", rel(gamma_ ** 2, ">>", a_), ")")
-    w_z = names("omega_z")[0]
+_FAST_TITLE = ("Fast-top approximation (", rel(gamma_ ** 2, ">>", a_), ")")
+_GAMMA2_A = gamma_ ** 2 / a_
+_NEEDS = ("(the approximation needs this ", rel(None, ">>", 1), ")")
+_W_Z = names("omega_z")[0]
+_FAST = (rel(u3, "~", gamma_ ** 2 / a_), ", so ", rel(sqrt(a_ * (u3 - u1)), "~", gamma_),
+         ": nutation at ", J_ * _W_Z / I_, "; the slow root of Eq. 11.20 gives the mean "
+         "precession ", rel(a_ / (2 * gamma_), "=", m * g * l / (J_ * _W_Z)))
+_U_, _DU, _DTHETA = names("u du dtheta")
+_FAST_RELEASED = ("Released from rest: ", rel(a_ * (1 - _U_ ** 2), "=", gamma_ ** 2 * (u2 - _U_)),
+                  " at ", u1, " (Eq. 11.23); for ", rel(gamma_ ** 2, ">>", a_), ", ",
+                  rel(u2 - u1, "~", a_ * sin(theta0) ** 2 / gamma_ ** 2), " and ",
+                  rel(_DTHETA, "~", _DU / sin(theta0)), ":")
+_AMPLITUDE = theta_max - theta_min
+
+
+def _fast_top(nut, t: dict[str, Expr], released: bool, work: Work) -> None:
+    work.section(*_FAST_TITLE)
     ratio = nut.gamma ** 2 / nut.a
-    work.step(gamma_ ** 2 / a_, value=ratio, note=("(the approximation needs this ",
-                                                   rel(None, ">>", 1), ")"))
-    work.text(rel(u3, "~", gamma_ ** 2 / a_), ", so ", rel(sqrt(a_ * (u3 - u1)), "~", gamma_),
-              ": nutation at ", J_ * w_z / I_, "; the slow root of Eq. 11.20 gives the mean "
-              "precession ", rel(a_ / (2 * gamma_), "=", m * g * l / (J_ * w_z)))
-    t = _syms(top, start, nut, omega_z)
+    work.step(_GAMMA2_A, value=ratio, note=_NEEDS)
+    work.text(*_FAST)
     Jw = t["J"] * t["omega_z"]
     T = (2 * PI * t["I"] / Jw).value  # fast_nutation_period: a test holds the two together
     work.step("T_fast", 2 * PI * t["I"] / Jw, unit="s",
@@ -324,36 +361,43 @@ def _fast_top(top, start, nut, omega_z: float, released: bool, work: Work) -> No
               note=("exact ", q(nut.mean_precession, "rad/s"), ", error ",
                     *_rel(mean, nut.mean_precession)))
     if released:
-        U, du, dtheta = names("u du dtheta")
-        work.text("Released from rest: ", rel(a_ * (1 - U ** 2), "=", gamma_ ** 2 * (u2 - U)),
-                  " at ", u1, " (Eq. 11.23); for ", rel(gamma_ ** 2, ">>", a_), ", ",
-                  rel(u2 - u1, "~", a_ * sin(theta0) ** 2 / gamma_ ** 2), " and ",
-                  rel(dtheta, "~", du / sin(theta0)), ":")
+        work.text(*_FAST_RELEASED)
         tree = 2 * t["I"] * t["mgl"] * sin(t["theta0"]) / Jw ** 2  # fast_nutation_amplitude
         amp, exact = tree.value, nut.theta_max - nut.theta_min
         work.step("dtheta_fast", tree, unit="deg",
-                  note=("exact ", rel(theta_max - theta_min, "=", q(exact, "deg")), ", error ",
+                  note=("exact ", rel(_AMPLITUDE, "=", q(exact, "deg")), ", error ",
                         *_rel(amp, exact)))
 
 
-def _sleeping(top, start, nut, omega_z_: float, find: frozenset[str], work: Work) -> None:
+#: upright (True) or hanging: the section's title and its first line
+_SLEEPING = {upright: (
+    ("Sleeping top: the axis on the vertical (",
+     rel(theta0, "=", q(0.0 if upright else math.pi, "deg", exact=True)), ", ",
+     rel(thetadot0, "=", 0), ")"),
+    (rel(u, "=", Num(1 if upright else -1)), " is a double root of ", fn("f", u), "; ",
+     phi, " is undefined on the vertical (", phidot, " and ", psidot, " only add up to ",
+     omega_z, "); ", rel(theta_max, "=", theta_min, "=", theta0), ": the axis stays "
+     "there")) for upright in (True, False)}
+_SPIN2, _WEIGHT4 = J_ ** 2 * omega_z ** 2, 4 * I_ * m * g * l
+_STABLE = (rel(_SPIN2, ">", _WEIGHT4), " (Eq. 11.21 with ", rel(theta0, "=", 0),
+           ", i.e. ", rel(gamma_ ** 2, ">", 2 * a_), "): stable; ",
+           rel(u3, "=", gamma_ ** 2 / a_ - 1, ">", 1))
+_DISTURBED = ("nutation period of a slightly disturbed sleeping top (",
+              2 * PI / sqrt(a_ * (u3 - u1)), ")")
+
+
+def _sleeping(top, start, nut, omega_z_: float, t: dict[str, Expr], find: frozenset[str],
+              work: Work) -> None:
     upright = start.theta0 < 1
-    work.section("Sleeping top: the axis on the vertical (",
-                 rel(theta0, "=", q(0.0 if upright else math.pi, "deg", exact=True)), ", ",
-                 rel(thetadot0, "=", 0), ")")
-    work.text(rel(u, "=", Num(1 if upright else -1)), " is a double root of ", fn("f", u), "; ",
-              phi, " is undefined on the vertical (", phidot, " and ", psidot, " only add up to ",
-              omega_z, "); ", rel(theta_max, "=", theta_min, "=", theta0), ": the axis stays "
-              "there")
-    t = _syms(top, start, nut, omega_z_)
-    spin2, weight4 = J_ ** 2 * omega_z ** 2, 4 * I_ * m * g * l
+    title, line = _SLEEPING[upright]
+    work.section(*title)
+    work.text(*line)
+    spin2, weight4 = _SPIN2, _WEIGHT4
     if upright:
         work.step(spin2, (t["J"] * t["omega_z"]) ** 2, unit="kg^2 m^4/s^2", state=False)
         work.step(weight4, 4 * t["I"] * t["mgl"], unit="kg^2 m^4/s^2", state=False)
         if nut.stable:
-            work.text(rel(spin2, ">", weight4), " (Eq. 11.21 with ", rel(theta0, "=", 0),
-                      ", i.e. ", rel(gamma_ ** 2, ">", 2 * a_), "): stable; ",
-                      rel(u3, "=", gamma_ ** 2 / a_ - 1, ">", 1))
+            work.text(*_STABLE)
         else:
             root = nut.u_roots[0]
             work.text(rel(spin2, "<=", weight4), ": not stable; the least disturbance lets the "
@@ -367,9 +411,7 @@ def _sleeping(top, start, nut, omega_z_: float, find: frozenset[str], work: Work
         work.text("hanging: always stable (gravity restores the axis)")
     if nut.stable:
         beat = t["gamma"] ** 2 - 2 * t["a"] if upright else t["gamma"] ** 2 + 2 * t["a"]
-        work.step("T", 2 * PI / sqrt(beat), unit="s",
-                  note=("nutation period of a slightly disturbed sleeping top (",
-                        2 * PI / sqrt(a_ * (u3 - u1)), ")"))
+        work.step("T", 2 * PI / sqrt(beat), unit="s", note=_DISTURBED)
     undefined = {"mean_precession", "max_precession", "min_precession"} & find
     if undefined:
         raise InputError(f"{sorted(undefined)[0]} is undefined for a sleeping top: the axis "

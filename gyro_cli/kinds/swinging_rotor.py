@@ -93,6 +93,44 @@ def _inertia_trees(body, m: float) -> tuple[Expr, Expr]:
             Sym("k_z", math.sqrt(body.J / m), "m") ** 2)
 
 
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's time in gyro check.
+i, k, n, A, B, AB, O, G, td, tdd, p0 = names("i k n A B AB O G thetadot thetaddot p")
+H_O, I_O0, J0, d0 = names("H_O I_O J d")
+a_G, L0 = names("a_G L")
+F_A, F_B, m0, g0 = names("F_A F_B m g")
+a0, b0 = names("a b")
+F_Aarm, F_Barm = names("F_A,arm F_B,arm")
+_AXES = (i, ": along the shaft from ", A, " to ", B, "; the arm swings at the rate ", td,
+         ", its angular velocity ", signed("+", td) * i, " (counter-clockwise seen from ", B,
+         "); ", k, ": along the arm from the shaft to the rotor; spin ", p0, " positive about ",
+         k, " (counter-clockwise seen from outside the rotor's face). ", n, ": perpendicular "
+         "to the arm and the shaft on the upper side (against the swing).")
+_FORCES = ("Forces are those of the bearings on the rotor assembly: 'arm' components along ", k,
+           " (from the shaft toward the rotor positive), 'normal' components along ", n,
+           ". Labelled ", A, ", ", B, " in that order. The bearings exert no moment about ", AB,
+           ".")
+_SWING_TITLE = ("Swing: energy and moments about ", AB)
+_TD2 = td ** 2
+_COUPLE_TITLE = ("Gyroscopic couple: ",
+                 rel(deriv(H_O), "=", I_O0 * tdd * i + J0 * p0 * td * cross(i, k)))
+_H_O_LINE = (rel(H_O, "=", I_O0 * td * i + J0 * p0 * k), ": the angular momentum about ", O,
+             ", the centre of the shaft; ", k, " turns about ", i, " at ", td)
+_COUPLE = J0 * p0 * td / d0
+_COUPLE_NOTE = ("+ at ", B, ", - at ", A, ", along the arm")
+_FREE_BODY_TITLE = ("Bearing forces: free body of the rotor, ",
+                    rel(F_A + F_B, "=", m0 * a_G + m0 * g0), " (up)")
+_ACCELERATION = (a_G, ": the acceleration of the rotor's centre ", G, ", ", L0 * tdd, " across "
+                 "the arm and ", L0 * td ** 2, " toward the shaft")
+_F_ABS = {end: absolute(names(f"F_{end}")[0]) for end in "AB"}
+_PUSHES = ("the gyroscopic couple pushes ", B, " along ", signed("+", k), " and ", A, " along ",
+           -k, " when ", rel(p0 * td, ">", 0), "; reversing the spin swaps the two")
+_F = absolute(names("F")[0])
+_MOMENTS = ("moments about ", O, " along ", cross(i, k), ": ")
+_ARM_MOMENTS = b0 * F_Barm - a0 * F_Aarm
+_J_P_THETADOT = J0 * p0 * td
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J", "I_cg")
@@ -114,17 +152,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     I_O = I_G + m * L * L
 
     work.section("Conventions")
-    i, k, n, A, B, AB, O, G, td, tdd, p0 = names("i k n A B AB O G thetadot thetaddot p")
-    work.text(i, ": along the shaft from ", A, " to ", B, "; the arm swings at the rate ", td,
-              ", its angular velocity ", signed("+", td) * i, " (counter-clockwise seen from ",
-              B, "); ", k, ": along the arm from the shaft to the rotor; spin ", p0, " positive "
-              "about ", k, " (counter-clockwise seen from outside the rotor's face). ", n,
-              ": perpendicular to the arm and the shaft on the upper side (against the swing).")
-    work.text("Forces are those of the bearings on the rotor assembly: 'arm' components along ",
-              k, " (from the shaft toward the rotor positive), 'normal' components along ", n,
-              ". Labelled ", A, ", ", B, " in that order. The bearings exert no moment about ",
-              AB, ".")
-    work.section("Swing: energy and moments about ", AB)
+    work.text(*_AXES)
+    work.text(*_FORCES)
+    work.section(*_SWING_TITLE)
     m_, g_, L_, d_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("d", d, "m")
     th, th0, p_ = Sym("theta", theta, "deg"), Sym("theta0", theta0, "deg"), Sym("p", p, "rad/s")
     kG2_, kz2_ = _inertia_trees(body, m)
@@ -134,25 +164,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     # I_O / m in the rotor's own symbols, its value from I_O as swing_forces takes it
     per_m = Let(Sym("I_O/m", I_O / m, "m^2"), kG2_ + L_ ** 2)
     drop = cos(th0) - cos(th)  # cos theta0 - cos theta: the centre's fall is L times it
-    work.step(td ** 2, Chain(2 * m_ * g_ * L_ * drop / I_O_, 2 * g_ * L_ * drop / per_m),
+    work.step(_TD2, Chain(2 * m_ * g_ * L_ * drop / I_O_, 2 * g_ * L_ * drop / per_m),
               unit="rad^2/s^2", ref="energy")
     work.step("thetadot", value=f.thetadot, unit="rad/s")
     work.step("thetaddot", Chain(m_ * g_ * L_ * sin(th) / I_O_, g_ * L_ * sin(th) / per_m),
               unit="rad/s^2", ref="moments about AB")
-    H_O, I_O0, J0, d0 = names("H_O I_O J d")
-    work.section("Gyroscopic couple: ",
-                 rel(deriv(H_O), "=", I_O0 * tdd * i + J0 * p0 * td * cross(i, k)))
-    work.text(rel(H_O, "=", I_O0 * td * i + J0 * p0 * k), ": the angular momentum about ", O,
-              ", the centre of the shaft; ", k, " turns about ", i, " at ", td)
+    work.section(*_COUPLE_TITLE)
+    work.text(*_H_O_LINE)
     thetadot = Sym("thetadot", f.thetadot, "rad/s")
-    couple = work.step(J0 * p0 * td / d0, Let(Sym("J", J, "kg m^2"), m_ * kz2_) * p_ * thetadot
-                       / d_, unit="N", note=("+ at ", B, ", - at ", A, ", along the arm"))
-    a_G, L0 = names("a_G L")
-    F_A, F_B, m0, g0 = names("F_A F_B m g")
-    work.section("Bearing forces: free body of the rotor, ",
-                 rel(F_A + F_B, "=", m0 * a_G + m0 * g0), " (up)")
-    work.text(a_G, ": the acceleration of the rotor's centre ", G, ", ", L0 * tdd, " across the "
-              "arm and ", L0 * td ** 2, " toward the shaft")
+    couple = work.step(_COUPLE, Let(Sym("J", J, "kg m^2"), m_ * kz2_) * p_ * thetadot
+                       / d_, unit="N", note=_COUPLE_NOTE)
+    work.section(*_FREE_BODY_TITLE)
+    work.text(*_ACCELERATION)
     # the common parts, shown by their definitions in the formula and by value after it
     per_m_sq = kG2_ + L_ ** 2
     arm_part = Let(Sym("S_arm", m * (g * c - L * f.thetadot ** 2), "N"),
@@ -163,7 +186,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                       m_ * kz2_ * p_ * sqrt(2 * g_ * L_ * drop / per_m_sq) / d_)
     b_d = Let(Sym("b/d", b / d), Sym("b", b, "m") / d_)
     a_d = Let(Sym("a/d", a / d), Sym("a", a, "m") / d_)
-    a0, b0 = names("a b")
     work.text(rel(a0, "=", q(a, "m")), " (", A, " to the arm), ",
               rel(b0, "=", d0 - a0, "=", q(b, "m")), "; ", rel(b0 / d0, "=", q(b / d)), ", ",
               rel(a0 / d0, "=", q(a / d)))
@@ -173,21 +195,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     for end in "AB":
         arm, normal = (Sym(f"F_{end},{part}", values[f"F_{end},{part}"], "N")
                        for part in ("arm", "normal"))
-        work.step(absolute(names(f"F_{end}")[0]), sqrt(arm ** 2 + normal ** 2), unit="N",
-                  substitute=False)
+        work.step(_F_ABS[end], sqrt(arm ** 2 + normal ** 2), unit="N", substitute=False)
     if abs(f.couple) > 0:
-        work.text("the gyroscopic couple pushes ", B, " along ", signed("+", k), " and ", A,
-                  " along ", -k, " when ", rel(p0 * td, ">", 0), "; reversing the spin swaps "
-                  "the two")
-    work.answer("bearing_forces", absolute(names("F")[0]), list(f.magnitudes), "force",
-                ["A", "B"])
+        work.text(*_PUSHES)
+    work.answer("bearing_forces", _F, list(f.magnitudes), "force", ["A", "B"])
     work.answer("bearing_forces_arm", "F_arm", list(f.arm), "force", ["A", "B"])
     work.answer("bearing_forces_normal", "F_normal", list(f.normal), "force", ["A", "B"])
     work.answer("angular_rate", "thetadot", [f.thetadot], "rate")
-    F_Aarm, F_Barm = names("F_A,arm F_B,arm")
-    work.check("moments about ", O, " along ", cross(i, k), ": ",
-               rel(b0 * F_Barm - a0 * F_Aarm, "=", q(b * f.arm[1] - a * f.arm[0], "N m")), "; ",
-               rel(J0 * p0 * td, "=", q(J * p * f.thetadot, "N m")))
+    work.check(*_MOMENTS, rel(_ARM_MOMENTS, "=", q(b * f.arm[1] - a * f.arm[0], "N m")), "; ",
+               rel(_J_P_THETADOT, "=", q(J * p * f.thetadot, "N m")))
 
 
 KIND = Kind(

@@ -37,6 +37,38 @@ def _sym(name: str, value: float) -> Sym:
     return Sym(name, value, UNITS[name])
 
 
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's time in gyro check.
+def _conventions() -> tuple[tuple, ...]:
+    G, H, Z, k, phi, theta, psi, phidot, psidot, omega, omega_z, omega_e, beta, I_, I_G, J_ = \
+        names("G H Z k phi theta psi phidot psidot omega omega_z omega_e beta I I_G J")
+    frame = ("No moment about the centre of mass ", G, ": ", H, ", the angular momentum "
+             "about ", G, ", is fixed in space. ", Z, ": along ", H, "; ", k, ": the symmetry "
+             "axis, taken on the side of ", H, ", so that ", H, " has a positive component "
+             "along ", k, ". z-x-z Euler angles as in the chapter (Eqs. 11.5-11.8): ", phi,
+             " about ", Z, ", ", theta, " from ", Z, " to ", k, ", ", psi, " about ", k,
+             ", with the rates ", phidot, " (precession) and ", psidot, " (spin); ",
+             rel(omega, "=", phidot * Z + psidot * k), ", ",
+             rel(omega_z, "=", psidot + phidot * cos(theta)), "; ", beta, ": the angle from ",
+             k, " to ", omega, ". Then ", rel(omega_z, ">", 0), " and ", theta, ", ",
+             rel(beta, "<", q(math.pi / 2, "deg", exact=True)), ".")
+    inertia = (rel(I_, "=", I_G), ": the transverse moment of inertia about ", G, ", the fixed "
+               "point; ", omega_e, ": the component of ", omega, " across ", k)
+    relations = ("Along ", k, ": ", rel(J_ * omega_z, "=", H * cos(theta)), "; across ", k,
+                 ": ", rel(I_ * omega_e, "=", H * sin(theta)), " with ",
+                 rel(omega_e, "=", phidot * sin(theta)), ". Hence ", rel(phidot, "=", H / I_),
+                 ", ", rel(tan(theta), "=", I_ / J_ * tan(beta)), " and ",
+                 rel(psidot, "=", omega_z - phidot * cos(theta), "=",
+                     (I_ - J_) / I_ * omega_z), ".")
+    I_, I_G = names("I I_G")
+    apex = (I_, " about the apex is not used: a free body turns about its centre of mass, "
+            "so ", rel(I_, "=", I_G))
+    return frame, inertia, relations, apex
+
+
+_FRAME, _INERTIA, _RELATIONS, _APEX = _conventions()
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     for key in ("I_pivot", "k_pivot", "cg_distance"):
@@ -47,9 +79,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body.require("J", "I_cg")
     J, I = body.J, body.I_cg
     if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
-        I_, I_G = names("I I_G")
-        work.text(I_, " about the apex is not used: a free body turns about its centre of "
-                  "mass, so ", rel(I_, "=", I_G))
+        work.text(*_APEX)
     known = {k: given[k] for k in MOTION_KEYS if k in given}
     sense = given.word("precession_sense")
     books = _books_sense(J, I, sense, known) if sense is not None else ""
@@ -68,26 +98,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _representable(state, known)
 
     work.section("Conventions")
-    G, H, Z, k, phi, theta, psi, phidot, psidot, omega, omega_z, omega_e, beta, I_, I_G, J_ = \
-        names("G H Z k phi theta psi phidot psidot omega omega_z omega_e beta I I_G J")
-    work.text("No moment about the centre of mass ", G, ": ", H, ", the angular momentum "
-              "about ", G, ", is fixed in space. ", Z, ": along ", H, "; ", k, ": the symmetry "
-              "axis, taken on the side of ", H, ", so that ", H, " has a positive component "
-              "along ", k, ". z-x-z Euler angles as in the chapter (Eqs. 11.5-11.8): ", phi,
-              " about ", Z, ", ", theta, " from ", Z, " to ", k, ", ", psi, " about ", k,
-              ", with the rates ", phidot, " (precession) and ", psidot, " (spin); ",
-              rel(omega, "=", phidot * Z + psidot * k), ", ",
-              rel(omega_z, "=", psidot + phidot * cos(theta)), "; ", beta, ": the angle from ",
-              k, " to ", omega, ". Then ", rel(omega_z, ">", 0), " and ", theta, ", ",
-              rel(beta, "<", q(math.pi / 2, "deg", exact=True)), ".")
-    work.text(rel(I_, "=", I_G), ": the transverse moment of inertia about ", G, ", the fixed "
-              "point; ", omega_e, ": the component of ", omega, " across ", k)
-    work.text("Along ", k, ": ", rel(J_ * omega_z, "=", H * cos(theta)), "; across ", k, ": ",
-              rel(I_ * omega_e, "=", H * sin(theta)), " with ",
-              rel(omega_e, "=", phidot * sin(theta)), ". Hence ", rel(phidot, "=", H / I_), ", ",
-              rel(tan(theta), "=", I_ / J_ * tan(beta)), " and ",
-              rel(psidot, "=", omega_z - phidot * cos(theta), "=", (I_ - J_) / I_ * omega_z),
-              ".")
+    work.text(*_FRAME)
+    work.text(*_INERTIA)
+    work.text(*_RELATIONS)
     if books:
         work.text(*books)
         for line in work.given:
@@ -131,9 +144,14 @@ def _representable(s: FreeMotion, known: dict[str, float]) -> None:
                          "magnitudes and units", key=f"given.{next(iter(known))}")
 
 
+_GIVEN_SYMS = {key: names(word)[0] for key, word in WORDS.items()}
+_FIX_THE_MOTION = (*names("beta"), " and ", *names("omega_z"), " are given: together with ",
+                   *names("J"), " and ", *names("I"), " they fix the motion")
+
+
 def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Work) -> None:
     """The steps that turn the two given quantities into omega_z and beta."""
-    given_syms = [piece for k in known for piece in (" and ", *names(WORDS[k]))][1:]
+    given_syms = [piece for k in known for piece in (" and ", _GIVEN_SYMS[k])][1:]
     work.section("The motion from ", *given_syms)
     J_, I_ = _sym("J", J), _sym("I", I)
     beta, theta, wz = _sym("beta", s.omega_angle), _sym("theta", s.nutation_angle), \
@@ -147,9 +165,7 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
     axial = "axial_rate" in known or "spin" in known
     if angle and axial:
         if "omega_angle" in known and "axial_rate" in known:
-            b, w, J0, I0 = names("beta omega_z J I")
-            work.text(b, " and ", w, " are given: together with ", J0, " and ", I0,
-                      " they fix the motion")
+            work.text(*_FIX_THE_MOTION)
     elif angle and "omega" in known:
         work.step("omega_z", _sym("omega", known["omega"]) * cos(beta), unit="rad/s")
     elif angle and "precession" in known:
@@ -177,54 +193,66 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
         work.step("beta", atan(J_ / I_ * tan(theta)), unit="deg", substitute=False)
 
 
+_H, _k, _omega = names("H k omega")
+_I0, _J0, _th, _be, _ps, _ph, _wz0, _we0 = names("I J theta beta psidot phidot omega_z omega_e")
+_BETA_NOTE = ("angle from ", _k, " to ", _omega)
+_THETA_NOTE = ("angle from ", _H, " to ", _k)
+_PRECESSION_NOTE = ("precession of ", _k, " about ", _H)
+_T_P_NOTE = ("period of the axis about ", _H)
+_T_W_NOTE = ("period of ", _omega, " and ", _H, " about ", _k, ", seen in the body")
+_BODY_CONE, _SPACE_CONE = words("body cone"), words("space cone")
+_BODY_NOTE = ("semi-angle of the cone ", _omega, " traces about ", _k, " in the body")
+_SPACE_NOTE = ("semi-angle of the cone ", _omega, " traces about ", _H, " in space")
+_MOTION = {
+    "direct": (rel(_I0, ">", _J0), " (prolate): ", rel(_th, ">", _be), ", ", _ps, " has the "
+               "sense of ", _ph, "; the body cone rolls on the outside of the space cone: "
+               "direct precession."),
+    "retrograde": (rel(_J0, ">", _I0), " (oblate): ", rel(_be, ">", _th), ", ", _ps, " is "
+                   "against ", _ph, "; the body cone rolls with the space cone inside it: "
+                   "retrograde precession.")}
+_EQ_11_8 = rel(_wz0, "=", _ps + _ph * cos(_th))
+_ACROSS = rel(_we0, "=", _ph * sin(_th))
+_ALONG = (_H, " along ", _k, ": ")
+_J_OMEGA_Z, _H_COS = (_J0 * _wz0, "="), (_H * cos(_th), "=")
+_SPACE_CONE_ANGLE = absolute(_th - _be)
+_MERIAM = ("the ratio of the spin to the precession (Meriam's ", *names("n"))
+_RATIO, _SPIN_OVER_PRECESSION = ((_I0 - _J0) * cos(_th) / _J0, "="), (_ps / _ph, "=")
+
+
 def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = False) -> None:
     work.section("Rates, angles and periods")
     beta, theta, wz, we = s.omega_angle, s.nutation_angle, s.axial_rate, s.transverse_rate
     J_, I_, beta_, theta_ = _sym("J", J), _sym("I", I), _sym("beta", beta), _sym("theta", theta)
     wz_, we_ = _sym("omega_z", wz), _sym("omega_e", we)
     phidot_, psidot_ = _sym("phidot", s.precession), _sym("psidot", s.spin)
-    H_, k, omega = names("H k omega")
     stated = {step.symbol for section in work.sections for step in section.steps}
     if "beta" not in stated:  # worked out above from the data: not repeated
-        work.step("beta", value=math.degrees(beta), unit="deg",
-                  note=("angle from ", k, " to ", omega))
+        work.step("beta", value=math.degrees(beta), unit="deg", note=_BETA_NOTE)
     if "theta" not in stated:
-        work.step("theta", atan(I_ / J_ * tan(beta_)), unit="deg",
-                  note=("angle from ", H_, " to ", k))
+        work.step("theta", atan(I_ / J_ * tan(beta_)), unit="deg", note=_THETA_NOTE)
     if "omega_z" not in stated:
         work.step("omega_z", value=wz, unit="rad/s", note="axial rate")
     work.step("omega_e", wz_ * tan(beta_), unit="rad/s", note="across the axis")
     work.step("omega", sqrt(wz_ ** 2 + we_ ** 2), unit="rad/s", substitute=False)
     work.step("H", sqrt((J_ * wz_) ** 2 + (I_ * we_) ** 2), unit="kg m^2/s")
     H = s.angular_momentum
-    work.step("phidot", _sym("H", H) / I_, unit="rad/s",
-              note=("precession of ", k, " about ", H_))
+    work.step("phidot", _sym("H", H) / I_, unit="rad/s", note=_PRECESSION_NOTE)
     work.step("psidot", (I_ - J_) / I_ * wz_, unit="rad/s",
               note="spin relative to the precessing frame")
-    work.step("T_p", 2 * PI / phidot_, unit="s", substitute=False,
-              note=("period of the axis about ", H_))
+    work.step("T_p", 2 * PI / phidot_, unit="s", substitute=False, note=_T_P_NOTE)
     work.step("T_w", 2 * PI / absolute(psidot_), unit="s", substitute=False,
-              note=("period of ", omega, " and ", H_, " about ", k, ", seen in the body"))
-    work.step(words("body cone"), beta_, unit="deg", substitute=False,
-              note=("semi-angle of the cone ", omega, " traces about ", k, " in the body"))
-    work.step(words("space cone"), absolute(theta_ - beta_), unit="deg", substitute=False,
-              note=("semi-angle of the cone ", omega, " traces about ", H_, " in space"))
-    I0, J0, th, be, ps, ph, wz0, we0 = names("I J theta beta psidot phidot omega_z omega_e")
-    if s.motion == "direct":
-        work.text(rel(I0, ">", J0), " (prolate): ", rel(th, ">", be), ", ", ps, " has the "
-                  "sense of ", ph, "; the body cone rolls on the outside of the space cone: "
-                  "direct precession.")
-    else:
-        work.text(rel(J0, ">", I0), " (oblate): ", rel(be, ">", th), ", ", ps, " is against ",
-                  ph, "; the body cone rolls with the space cone inside it: retrograde "
-                  "precession.")
-    work.check(rel(wz0, "=", ps + ph * cos(th)), ": ",
+              note=_T_W_NOTE)
+    work.step(_BODY_CONE, beta_, unit="deg", substitute=False, note=_BODY_NOTE)
+    work.step(_SPACE_CONE, absolute(theta_ - beta_), unit="deg", substitute=False,
+              note=_SPACE_NOTE)
+    work.text(*_MOTION[s.motion])
+    work.check(_EQ_11_8, ": ",
                rel(q(wz), "=", q(s.spin) + q(s.precession) * tup(q(math.cos(theta))), "=",
                    q(s.spin + s.precession * math.cos(theta), "rad/s")), " (Eq. 11.8)")
-    work.check(rel(we0, "=", ph * sin(th)), ": ",
+    work.check(_ACROSS, ": ",
                rel(q(we), "=", q(s.precession * math.sin(theta), "rad/s")))
-    work.check(H_, " along ", k, ": ", rel(J0 * wz0, "=", q(J * wz, "kg m^2/s")), ", ",
-               rel(H_ * cos(th), "=", q(H * math.cos(theta), "kg m^2/s")))
+    work.check(*_ALONG, rel(*_J_OMEGA_Z, q(J * wz, "kg m^2/s")), ", ",
+               rel(*_H_COS, q(H * math.cos(theta), "kg m^2/s")))
 
     work.answer("precession", "phidot", [s.precession], "rate")
     work.answer("spin", "psidot", [s.spin], "rate")
@@ -236,20 +264,18 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
     work.answer("precession_period", "T_p", [s.precession_period], "time")
     work.answer("body_wobble_period", "T_w", [s.body_wobble_period], "time")
     work.answer("body_cone_angle", "beta", [s.body_cone_angle], "angle")
-    work.answer("space_cone_angle", absolute(th - be), [s.space_cone_angle], "angle")
+    work.answer("space_cone_angle", _SPACE_CONE_ANGLE, [s.space_cone_angle], "angle")
     work.answer("motion", "motion", [s.motion], None)
     n = s.spin / s.precession
     if magnitude:  # the books' convention: a ratio of magnitudes, the sense in words
         n = work.step("n", absolute(psidot_) / phidot_, unit="", note=(
-            "the ratio of the spin to the precession (Meriam's ", *names("n"),
-            f"), the precession {s.motion}"))
+            *_MERIAM, f"), the precession {s.motion}"))
     else:
         work.step("n", psidot_ / phidot_, unit="", note=(
-            "the ratio of the spin to the precession (Meriam's ", *names("n"),
-            "); negative: retrograde"))
+            *_MERIAM, "); negative: retrograde"))
     work.answer("spin_ratio", "n", [n], "dimensionless")
-    work.check(rel((I0 - J0) * cos(th) / J0, "=", q((I - J) * math.cos(theta) / J)), "; ",
-               rel(ps / ph, "=", q(s.spin / s.precession)))
+    work.check(rel(*_RATIO, q((I - J) * math.cos(theta) / J)), "; ",
+               rel(*_SPIN_OVER_PRECESSION, q(s.spin / s.precession)))
 
 
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free

@@ -76,6 +76,7 @@ class Nutation:
     rising: bool = False       # u increasing at t = 0 (theta decreasing)
     stable: bool = True        # sleeping top: J^2 omega_z^2 > 4 I m g l cos(theta0)
     limit_precession: tuple[float, float] = (math.nan, math.nan)   # phidot at u1, at u2
+    K: float = math.nan        # K(m) of the period, m = (u2 - u1) / (u3 - u1) (not sleeping)
 
 
 # ---- constants of the motion ---------------------------------------------------
@@ -128,7 +129,11 @@ def shifted_cubic(top: Top, start: Start) -> tuple[float, float, float, float]:
     c0 = sin^2(theta0) thetadot0^2, c1 = sin^2(theta0) (2 phidot0 gamma - a - 2 u0 phidot0^2)
     - 2 u0 thetadot0^2, c2 = 2 a u0 - A - gamma^2, c3 = a.
     """
-    k = constants(top, start)
+    return _shifted_cubic(constants(top, start), start)
+
+
+def _shifted_cubic(k: dict[str, float], start: Start) -> tuple[float, float, float, float]:
+    """shifted_cubic from the constants of the motion already worked out (``constants``)."""
     c0_, s0 = _cos_sin(start.theta0)
     s2 = s0 * s0
     p, r = start.precession0, start.theta_rate0
@@ -183,8 +188,13 @@ def _quadratic_roots(a: float, b: float, c: float) -> tuple[float, float]:
 
 def d_roots(top: Top, start: Start) -> tuple[float, float, float]:
     """Roots d1 <= d2 <= d3 of f(u0 + d): u_i = u0 + d_i (Eq. 11.19), ascending."""
-    c = shifted_cubic(top, start)
-    one_minus, one_plus = _one_minus_plus(start.theta0)
+    return _d_roots(_shifted_cubic(constants(top, start), start),
+                    *_one_minus_plus(start.theta0))
+
+
+def _d_roots(c: tuple[float, float, float, float], one_minus: float,
+             one_plus: float) -> tuple[float, float, float]:
+    """d_roots of the shifted cubic ``c``, with 1 -+ u0 of the start."""
     if c[0] == 0:                     # u0 is a root: divide it out, Eq. 11.23
         return tuple(sorted((0.0,) + _quadratic_roots(c[3], c[2], c[1])))
     # f(-1) <= 0 < f(u0) and f(1) <= 0: one root on each side of u0, the third above 1
@@ -204,10 +214,10 @@ def analyse(top: Top, start: Start) -> Nutation:
     vertical = s0 == 0.0
     if vertical and start.theta_rate0 == 0.0 and k["omega_z"] == 0.0:
         raise ValueError("a top standing or hanging on the vertical without spin does not move")
-    d1, d2, d3 = d_roots(top, start)
+    d1, d2, d3 = _d_roots(_shifted_cubic(k, start), one_minus0, one_plus0)
     u0 = c0_
     roots = (u0 + d1, u0 + d2, u0 + d3)
-    theta_of = _theta_from_one_minus_plus
+    theta_of = _theta_of
     theta_max = theta_of(one_minus0 - d1, one_plus0 + d1)
     theta_min = theta_of(one_minus0 - d2, one_plus0 + d2)
     common = dict(a=k["a"], alpha=k["alpha"], beta=k["beta"], gamma=k["gamma"], P1=k["P1"],
@@ -221,7 +231,8 @@ def analyse(top: Top, start: Start) -> Nutation:
     # the roots as the motion sees them; (u3 - u1) from the d's keeps full precision
     span, width = d3 - d1, d2 - d1
     a = k["a"]
-    period = 4 * complete_K(d1, d2, d3) / math.sqrt(a * span)
+    K = complete_K(d1, d2, d3)
+    period = 4 * K / math.sqrt(a * span)
     B = start.precession0 * s0 * s0          # beta - gamma u0, exactly
     rates = [_phidot_at(k, B, d, one_minus0, one_plus0) for d in (d1, d2)]
     if theta_max - theta_min < STEADY_AMPLITUDE:
@@ -231,14 +242,14 @@ def analyse(top: Top, start: Start) -> Nutation:
                         nutation_period=period, mean_precession=mean,
                         max_precession=max(rates, key=abs), min_precession=min(rates, key=abs),
                         motion="steady", d_roots=(d1, d2, d3),
-                        limit_precession=tuple(rates), **common)
-    mean = _mean_precession(k, B, d1, d2, d3, one_minus0, one_plus0)
+                        limit_precession=tuple(rates), K=K, **common)
+    mean = _mean_precession(k, B, d1, d2, d3, one_minus0, one_plus0, K)
     big = max(range(2), key=lambda i: abs(rates[i]))
     return Nutation(u_roots=roots, theta_min=theta_min, theta_max=theta_max,
                     nutation_period=period, mean_precession=mean,
                     max_precession=rates[big], min_precession=rates[1 - big],
                     motion=classify(*rates), d_roots=(d1, d2, d3),
-                    limit_precession=tuple(rates), **common)
+                    limit_precession=tuple(rates), K=K, **common)
 
 
 def classify(phidot_at_u1: float, phidot_at_u2: float) -> str:
@@ -278,14 +289,13 @@ def limit_precession_terms(nut: Nutation, start: Start) -> tuple[tuple[float, fl
 
 
 def _mean_precession(k: dict, B: float, d1: float, d2: float, d3: float, one_minus0: float,
-                     one_plus0: float) -> float:
+                     one_plus0: float, K: float) -> float:
     """(phi advance over a period) / period, third-kind integrals in Carlson form:
-    Pi(n, m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n)."""
+    Pi(n, m) = R_F(0, 1 - m, 1) + n/3 R_J(0, 1 - m, 1, 1 - n); K = K(m) of the period."""
     from .elliptic import carlson_rj
 
     width, span = d2 - d1, d3 - d1
     y = (d3 - d2) / span                                           # 1 - m, exactly
-    K = complete_K(d1, d2, d3)
     gamma = k["gamma"]
     one_minus1, one_plus1 = one_minus0 - d1, one_plus0 + d1       # 1 - u1, 1 + u1
     # beta -+ gamma = B - gamma (u0 -+ 1) with B = beta - gamma u0: no cancellation
@@ -393,6 +403,19 @@ def _one_minus_plus(theta: float) -> tuple[float, float]:
     if s == 0:
         return (0.0, 2.0) if c > 0 else (2.0, 0.0)
     return 2 * math.sin(theta / 2) ** 2, 2 * math.cos(theta / 2) ** 2
+
+
+def _theta_of(one_minus: float, one_plus: float) -> float:
+    """_theta_from_one_minus_plus for one pair of floats, without numpy's array machinery:
+    the clip, the choice and sqrt (correctly rounded either way) in plain floats, only
+    arcsin numpy's, so the angle is the vectorised one's to the last bit."""
+    import numpy as np
+
+    one_minus = min(max(one_minus, 0.0), 2.0)   # as np.clip, NaN and -0.0 included
+    one_plus = min(max(one_plus, 0.0), 2.0)
+    if one_minus <= one_plus:
+        return 2 * float(np.arcsin(math.sqrt(0.5 * one_minus)))
+    return math.pi - 2 * float(np.arcsin(math.sqrt(0.5 * one_plus)))
 
 
 def _theta_from_one_minus_plus(one_minus, one_plus):

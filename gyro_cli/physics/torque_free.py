@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 # What may be given: two of these.
 MOTION_KEYS = ("omega", "omega_angle", "nutation_angle", "axial_rate", "precession", "spin")
@@ -56,60 +57,64 @@ class TorqueFreeError(ValueError):
 
 @dataclass(frozen=True)
 class FreeMotion:
-    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 < beta < 90 deg."""
+    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 < beta < 90 deg.
+
+    Every other quantity is worked out from these four when first asked for and kept (a
+    worked answer asks for each several times; precession alone was H, so tan and hypot,
+    again on every reading)."""
 
     J: float
     I: float
     axial_rate: float   # omega_z, along k
     omega_angle: float  # beta, from k to omega
 
-    @property
+    @cached_property
     def nutation_angle(self) -> float:
         """theta from tan(theta) = (I / J) tan(beta), as atan2 (no overflow near 90 deg)."""
         return math.atan2(self.I * math.sin(self.omega_angle), self.J * math.cos(self.omega_angle))
 
-    @property
+    @cached_property
     def transverse_rate(self) -> float:
         """omega_e = omega_z tan(beta), the part of omega across the axis."""
         return self.axial_rate * math.tan(self.omega_angle)
 
-    @property
+    @cached_property
     def omega(self) -> float:
         return math.hypot(self.axial_rate, self.transverse_rate)
 
-    @property
+    @cached_property
     def angular_momentum(self) -> float:
         """H = sqrt((J omega_z)^2 + (I omega_e)^2)."""
         return math.hypot(self.J * self.axial_rate, self.I * self.transverse_rate)
 
-    @property
+    @cached_property
     def precession(self) -> float:
         """phidot = H / I."""
         return self.angular_momentum / self.I
 
-    @property
+    @cached_property
     def spin(self) -> float:
         """psidot = (I - J) / I omega_z: positive for I > J, negative for J > I."""
         return (self.I - self.J) / self.I * self.axial_rate
 
-    @property
+    @cached_property
     def precession_period(self) -> float:
         return 2 * math.pi / self.precession
 
-    @property
+    @cached_property
     def body_wobble_period(self) -> float:
         """2 pi / |psidot|: the period of omega (and H) going round k, seen in the body."""
         return 2 * math.pi / abs(self.spin)
 
-    @property
+    @cached_property
     def body_cone_angle(self) -> float:
         return self.omega_angle
 
-    @property
+    @cached_property
     def space_cone_angle(self) -> float:
         return abs(self.nutation_angle - self.omega_angle)
 
-    @property
+    @cached_property
     def motion(self) -> str:
         return "direct" if self.I > self.J else "retrograde"
 
