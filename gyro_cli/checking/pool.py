@@ -120,12 +120,15 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
                     continue
                 failed = None
                 if worker.conn in ready:
-                    try:
-                        result = worker.conn.recv()
+                    try:  # every result already waiting, not one per wake-up
+                        while True:
+                            done[worker.batch[0]] = worker.conn.recv()
+                            worker.batch.popleft()
+                            if not worker.batch or not worker.conn.poll():
+                                break
                     except (EOFError, OSError):
                         failed = crashed(files[worker.batch[0]], worker.stop())
                     else:
-                        done[worker.batch.popleft()] = result
                         worker.since = time.monotonic()
                         continue
                 elif timeout and time.monotonic() - worker.since >= timeout:
