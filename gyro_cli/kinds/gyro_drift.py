@@ -166,8 +166,8 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
     work.section("Nutation, the moment switched on with the gyro at rest")
     work.text(*source)
     H_, I_x, I_y = Sym("H", abs(H), "kg m^2/s"), Sym("I_x", Ix, "kg m^2"), Sym("I_y", Iy, "kg m^2")
-    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s",
-                   note=_equals(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi), "Hz"))
+    w = gd.nutation_frequency(abs(H), Ix, Iy)
+    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s", note=_equals(w / (2 * math.pi), "Hz"))
     period = work.step("T_n", 2 * PI / Sym("w_n", wn, "rad/s"), unit="s")
     work.text(*_FROM_REST)
     M_, H_ = Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")
@@ -177,7 +177,7 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
     work.step("alpha_max", 2 * M_ * I_y / H_ ** 2, unit="rad", substitute=False,
               note=_LARGEST)
     quarter = period / 4
-    residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
+    residual = Ix * _a_dd(M, H, Iy, w, quarter) + H * _b_d(M, H, w, quarter)
     work.check(*_AT_A_QUARTER_PERIOD, rel(_FIRST_EQUATION.first, "=", q(residual, "N m")), ", ",
                rel(M0, "=", q(M, "N m")))
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
@@ -195,13 +195,14 @@ def _equals(value: float, unit: str) -> tuple:
     return (rel(None, "=", q(value, unit)),)
 
 
-def _a_dd(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
-    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+def _a_dd(M: float, H: float, Iy: float, wn: float, t: float) -> float:
+    """alpha''(t) of the motion from rest, (M I_y / H^2) w_n^2 cos(w_n t), at the nutation
+    frequency ``wn`` the caller has found (physics/gyro_drift.py)."""
     return M * Iy / (H * H) * wn * wn * math.cos(wn * t)
 
 
-def _b_d(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
-    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+def _b_d(M: float, H: float, wn: float, t: float) -> float:
+    """beta'(t) of the motion from rest, (M / H) (1 - cos(w_n t)) (physics/gyro_drift.py)."""
     return M / H * (1 - math.cos(wn * t))
 
 

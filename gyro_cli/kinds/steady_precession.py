@@ -749,8 +749,8 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
         m, g = body.m, body.g
         work.text(*_NEWTON)
         values, parts = [], []
-        for i, (p, tag) in enumerate(zip(rates, labels)):
-            up, toward, size = steady.pivot_force(m, g, l, theta, p)
+        forces = [steady.pivot_force(m, g, l, theta, p) for p in rates]  # for the steps and check
+        for i, (p, tag, (up, toward, size)) in enumerate(zip(rates, labels, forces)):
             if i == 0:
                 work.step("F_vertical", Sym("m", m, "kg") * Sym("g", g, "m/s^2"), unit="N",
                           note="upward")
@@ -767,8 +767,7 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
         work.answer("pivot_force", "F", values, "force", parts)
         if body.I_pivot is not None and "moment" not in given_keys(work):
             I_G = body.I_pivot - m * l * l
-            for p in rates:
-                up, toward, _ = steady.pivot_force(m, g, l, theta, p)
+            for p, (up, toward, _) in zip(rates, forces):
                 spin = _spin_for(work, p)
                 axial = spin + p * cos_theta(theta)
                 rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
