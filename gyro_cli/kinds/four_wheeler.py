@@ -108,7 +108,8 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     v = given["speed"]
     turn = given.word("turn", "left")
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
-    if not all(math.isfinite(q) for q in (s.outer, s.inner, s.gyroscopic_couple,
+    outer, inner = s.outer, s.inner  # each wheel's reaction: its three shares, added once
+    if not all(math.isfinite(q) for q in (outer, inner, s.gyroscopic_couple,
                                            s.centrifugal_couple, s.wheel_rate)):
         raise InputError("these data are outside what gyro can compute reliably in double "
                          "precision (a product overflows); check the magnitudes and units",
@@ -139,17 +140,17 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
                                note="centrifugal: + outer, - inner"), "N")
     work.step("R_outer", P_w + P_g + P_c, unit="N", note="each outer wheel")
     work.step("R_inner", P_w - P_g - P_c, unit="N", note="each inner wheel")
-    if s.inner < 0:
-        work.warn("the inner wheels' reaction is negative (", q(s.inner, "N"), "): at this speed "
+    if inner < 0:
+        work.warn("the inner wheels' reaction is negative (", q(inner, "N"), "): at this speed "
                   "the inner wheels leave the road (the vehicle overturns) unless held down")
-    if s.outer < 0:
-        work.warn("the outer wheels' reaction is negative (", q(s.outer, "N"), "): they leave "
+    if outer < 0:
+        work.warn("the outer wheels' reaction is negative (", q(outer, "N"), "): they leave "
                   "the road")
-    work.check(rel(_REACTIONS, "=", q(2 * (s.outer + s.inner), "N"), "=", _WEIGHT, "=",
+    work.check(rel(_REACTIONS, "=", q(2 * (outer + inner), "N"), "=", _WEIGHT, "=",
                    q(m * g, "N")), "; ",
-               rel(_MOMENT_OF_REACTIONS, "=", q(x * (s.outer - s.inner), "N m"), "=", _COUPLES,
+               rel(_MOMENT_OF_REACTIONS, "=", q(x * (outer - inner), "N m"), "=", _COUPLES,
                    "=", q(s.gyroscopic_couple + s.centrifugal_couple, "N m")))
-    work.answer("wheel_reactions", "R", [s.outer, s.inner], "force", ["outer", "inner"])
+    work.answer("wheel_reactions", "R", [outer, inner], "force", ["outer", "inner"])
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
 
