@@ -25,6 +25,22 @@ from ..core.prose import cross, names, paren, plus, q, qvec, rel
 from ..core.vehicle_words import reactive_couple
 from ..core.work import Work
 
+#: the aeroplane's axes and the symbols its prose names (values are in the steps' trees)
+x, y, z, H0, wp0, C0 = names("x y z H omega_p C")
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_AXES = ("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left (looking "
+         "forward), ", z, " up. The engine's axis lies fore and aft. A rotation that looks "
+         "clockwise to an observer has its vector pointing away from the observer "
+         "(right-hand rule).")
+_REACTIVE = (*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
+             plus(y), " it dips it.")
+_FORWARD, _AFT = plus(x), -x
+_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotor (Eq. 11.29)
+_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", _COUPLE))
+_REACTION, _SIZE = -paren(_COUPLE), absolute(_COUPLE)
+
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
@@ -42,13 +58,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     turn = given.word("turn", "left")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    x, y, z, H_, wp_, C_ = names("x y z H omega_p C")
-    work.text("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left (looking "
-              "forward), ", z, " up. The engine's axis lies fore and aft. A rotation that looks "
-              "clockwise to an observer has its vector pointing away from the observer "
-              "(right-hand rule).")
-    work.text(*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
-              plus(y), " it dips it.")
+    work.text(*_AXES)
+    work.text(*_REACTIVE)
 
     direction = V.spin_direction(sense) if sense else 1.0
     work.section("Engine and propeller")
@@ -60,15 +71,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'forward (toward the nose), ' if direction > 0 else 'aft (toward the tail), '}",
-                  plus(x) if direction > 0 else -x, "; ", rel(H_, "=", qvec(H, "kg m^2/s")))
+                  _FORWARD if direction > 0 else _AFT, "; ", rel(H0, "=", qvec(H, "kg m^2/s")))
 
     work.section("Turn: precession about the vertical")
     rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
     work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
-              "from above): ", rel(wp_, "=", qvec(wp, "rad/s")))
+              "from above): ", rel(wp0, "=", qvec(wp, "rad/s")))
 
-    work.section("Gyroscopic couple, ", rel(C_, "=", cross(wp_, H_)))
+    work.section(*_COUPLE_TITLE)
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
     if not math.isfinite(C):
         raise InputError("these data are outside what gyro can compute reliably in double "
@@ -79,14 +90,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text("couple on the rotor ", rel(cross(wp_, H_), "=", qvec(active, "N m")))
-        work.text("reactive couple on the aeroplane ",
-                  rel(-paren(cross(wp_, H_)), "=", qvec(reactive, "N m")))
+        work.text("couple on the rotor ", rel(_COUPLE, "=", qvec(active, "N m")))
+        work.text("reactive couple on the aeroplane ", rel(_REACTION, "=", qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "aeroplane")
         work.text(f"effect on the aeroplane: {words}")
         work.answer("effect", "effect", [words], None)
-        work.check(rel(absolute(cross(wp_, H_)), "=", q(V.norm(active), "N m"), "=", C_, "=",
-                       q(C, "N m")))
+        work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
 
 
 KIND = Kind(

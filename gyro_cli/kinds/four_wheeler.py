@@ -37,6 +37,26 @@ from ..core.work import Work, qty
 #: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
 ax, ay, az = names("x y z")
 H0, C0, wp0, Cg0, Cc0, m0, g0, R0 = names("H C omega_p C_g C_c m g R")
+I_w0, I_E0, R_o0, R_i0, x0, v_lim0, I_eq0, r_w0, h0 = names("I_w I_E R_outer R_inner x v_lim I_eq "
+                                                             "r_w h")
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_LEFT = plus(ay)
+_AXES = ("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Going forward the "
+         "wheels roll: their spin vector points to the left ", tup(_LEFT), "; each engine's "
+         "points the same way (engine_sense: same) or the other way (opposite).")
+_REACTIVE = (*reactive_couple("vehicle", "rotors"), ". Couples are about the fore-and-aft "
+             "axis, positive overturning the vehicle outward (lifting the inner wheels). "
+             "Reactions are the road's vertical forces on each wheel; the centre of mass is "
+             "taken midway between the axles and the wheels, so each pair shares equally.")
+_SUM_I_W, _SUM_I_E = total(I_w0), total(I_E0)
+_ALONG_LEFT = ("along ", _LEFT, " (left) if positive")
+_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotors (Eq. 11.29)
+_REACTIONS, _WEIGHT = 2 * R_o0 + 2 * R_i0, m0 * g0  # the check's vertical balance
+_MOMENT_OF_REACTIONS, _COUPLES = x0 * (R_o0 - R_i0), Cg0 + Cc0  # and its moment balance
+_AT_THE_LIMIT = ("at the limiting speed ", v_lim0, ": ",
+                 rel(m0 * g0 / 4, "=", (v_lim0 ** 2 / (2 * x0 * R0)) * (I_eq0 / r_w0 + m0 * h0)))
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -48,17 +68,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     wheels = _wheels(given)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Going forward "
-              "the wheels roll: their spin vector points to the left ", tup(plus(ay)), "; each "
-              "engine's points the same way (engine_sense: same) or the other way (opposite).")
-    work.text(*reactive_couple("vehicle", "rotors"), ". Couples are about the fore-and-aft axis, positive "
-              "overturning the vehicle outward (lifting the inner wheels). Reactions are the "
-              "road's vertical forces on each wheel; the centre of mass is taken midway between "
-              "the axles and the wheels, so each pair shares equally.")
+    work.text(*_AXES)
+    work.text(*_REACTIVE)
     work.section("Rotating parts")
-    I_w, I_E = names("I_w I_E")
-    wheel_total = work.step(total(I_w), wheels, unit="kg*m^2")
-    engine_total = work.step(total(I_E), Sym("n_E", engines) * Sym("I_E", IE, "kg m^2"),
+    wheel_total = work.step(_SUM_I_W, wheels, unit="kg*m^2")
+    engine_total = work.step(_SUM_I_E, Sym("n_E", engines) * Sym("I_E", IE, "kg m^2"),
                              unit="kg*m^2")
     sum_w, sum_E = Sym("sum I_w", wheel_total, "kg m^2"), Sym("sum I_E", engine_total, "kg m^2")
     # in the wheels' sense: sum I_w + G sum I_E, or - with the engines against the wheels
@@ -94,7 +108,8 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     v = given["speed"]
     turn = given.word("turn", "left")
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
-    if not all(math.isfinite(q) for q in (s.outer, s.inner, s.gyroscopic_couple,
+    outer, inner = s.outer, s.inner  # each wheel's reaction: its three shares, added once
+    if not all(math.isfinite(q) for q in (outer, inner, s.gyroscopic_couple,
                                            s.centrifugal_couple, s.wheel_rate)):
         raise InputError("these data are outside what gyro can compute reliably in double "
                          "precision (a product overflows); check the magnitudes and units",
@@ -106,10 +121,10 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     work.step("omega_p", v_ / R_, unit="rad/s")
     work.section("Vector rule")
     H = work.step("H", equivalent.sym * Sym("omega_w", omega_w, "rad/s"), unit="kg m^2/s",
-                  note=("along ", plus(ay), " (left) if positive"))
+                  note=_ALONG_LEFT)
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
     work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
-              rel(cross(wp0, H0), "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              rel(_COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the vehicle, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"), ", "
               + ("overturns it outward (lifts the inner wheels)" if H >= 0 else
@@ -125,18 +140,17 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
                                note="centrifugal: + outer, - inner"), "N")
     work.step("R_outer", P_w + P_g + P_c, unit="N", note="each outer wheel")
     work.step("R_inner", P_w - P_g - P_c, unit="N", note="each inner wheel")
-    if s.inner < 0:
-        work.warn("the inner wheels' reaction is negative (", q(s.inner, "N"), "): at this speed "
+    if inner < 0:
+        work.warn("the inner wheels' reaction is negative (", q(inner, "N"), "): at this speed "
                   "the inner wheels leave the road (the vehicle overturns) unless held down")
-    if s.outer < 0:
-        work.warn("the outer wheels' reaction is negative (", q(s.outer, "N"), "): they leave "
+    if outer < 0:
+        work.warn("the outer wheels' reaction is negative (", q(outer, "N"), "): they leave "
                   "the road")
-    R_o, R_i, x0 = names("R_outer R_inner x")
-    work.check(rel(2 * R_o + 2 * R_i, "=", q(2 * (s.outer + s.inner), "N"), "=", m0 * g0, "=",
+    work.check(rel(_REACTIONS, "=", q(2 * (outer + inner), "N"), "=", _WEIGHT, "=",
                    q(m * g, "N")), "; ",
-               rel(x0 * (R_o - R_i), "=", q(x * (s.outer - s.inner), "N m"), "=", Cg0 + Cc0, "=",
-                   q(s.gyroscopic_couple + s.centrifugal_couple, "N m")))
-    work.answer("wheel_reactions", "R", [s.outer, s.inner], "force", ["outer", "inner"])
+               rel(_MOMENT_OF_REACTIONS, "=", q(x * (outer - inner), "N m"), "=", _COUPLES,
+                   "=", q(s.gyroscopic_couple + s.centrifugal_couple, "N m")))
+    work.answer("wheel_reactions", "R", [outer, inner], "force", ["outer", "inner"])
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
 
@@ -144,9 +158,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
 def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: float,
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
-    v_lim, x0, I_eq0, r_w, h0 = names("v_lim x I_eq r_w h")
-    work.text("at the limiting speed ", v_lim, ": ",
-              rel(m0 * g0 / 4, "=", (v_lim ** 2 / (2 * x0 * R0)) * (I_eq0 / r_w + m0 * h0)))
+    work.text(*_AT_THE_LIMIT)
     v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
     if v2 is None:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "

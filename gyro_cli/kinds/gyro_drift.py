@@ -18,7 +18,7 @@ from ..core.given import Given
 from ..physics import gyro_drift as gd
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Let, Sym, cos, sin, sqrt
-from ..core.prose import Rel, fn, names, prime, q, rel, words
+from ..core.prose import fn, names, prime, q, rel, words
 from ..core.work import Work, qty
 
 DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
@@ -29,18 +29,30 @@ def _h(x: float) -> str:
     return qty(x, "kg m^2/s")
 
 
+#: the symbols the sentences name (values are in the steps' trees)
+k0, H0, x0, y0, M0, a0, b0, I_x0, I_y0, I0 = names("k H x y M alpha beta I_x I_y I")
+t0, w_n0, T_n0, W_d0 = names("t w_n T_n Omega_d")
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+#: I_x alpha'' + H beta' = M, the gimbal equation about the moment's axis
+_FIRST_EQUATION = rel(I_x0 * prime(a0, 2) + H0 * prime(b0), "=", M0)
+_AXES = (k0, ": the spin axis; ", H0, ": the rotor's angular momentum along it; ", x0, ": the "
+         "gimbal axis about which the disturbing moment ", M0, " acts; ", y0, ": the other "
+         "gimbal axis, at right angles to both. ", a0, ", ", b0, ": small rotations of the spin "
+         "axis about ", x0, " and ", y0, "; ", I_x0, ", ", I_y0, ": inertias of rotor and "
+         "gimbals about ", x0, " and ", y0, ".")
+_GIMBAL_EQUATIONS = ("Linearised gimbal equations: ", _FIRST_EQUATION, ",  ",
+                     rel(I_y0 * prime(b0, 2) - H0 * prime(a0), "=", 0), ". The moment does not "
+                     "turn the rotor about ", x0, ": the spin axis drifts about ", y0, ".")
+_DRIFT_ANGLE, _DRIFT_ANGLE_SYMBOL = words("drift angle"), M0 / H0 * t0
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.sections[:] = [s for s in work.sections if s.steps or s.title != "Body"]
     work.section("Conventions")
-    k, H_, x, y, M_, a, b, I_x, I_y = names("k H x y M alpha beta I_x I_y")
-    work.text(k, ": the spin axis; ", H_, ": the rotor's angular momentum along it; ", x, ": the "
-              "gimbal axis about which the disturbing moment ", M_, " acts; ", y, ": the other "
-              "gimbal axis, at right angles to both. ", a, ", ", b, ": small rotations of the spin "
-              "axis about ", x, " and ", y, "; ", I_x, ", ", I_y, ": inertias of rotor and gimbals "
-              "about ", x, " and ", y, ".")
-    work.text("Linearised gimbal equations: ", _first_equation(), ",  ",
-              rel(I_y * prime(b, 2) - H_ * prime(a), "=", 0), ". The moment does not turn the "
-              "rotor about ", x, ": the spin axis drifts about ", y, ".")
+    work.text(*_AXES)
+    work.text(*_GIMBAL_EQUATIONS)
     H = _momentum(given, work)
     M, rate = _moment_and_rate(given, H, work)
     work.answer("angular_momentum", "H", [H], "angular_momentum")
@@ -49,10 +61,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if "duration" in given:
         t = given["duration"]
         drift = Let(Sym("Omega_d", rate, "rad/s"), Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"))
-        angle = work.step(words("drift angle"), drift * Sym("t", t, "s"), unit="rad",
+        angle = work.step(_DRIFT_ANGLE, drift * Sym("t", t, "s"), unit="rad",
                           note=_equals(rate * t, "deg"))
-        M_, H_, t_ = names("M H t")
-        work.answer("drift_angle", M_ / H_ * t_, [angle], "angle")
+        work.answer("drift_angle", _DRIFT_ANGLE_SYMBOL, [angle], "angle")
     elif "drift_angle" in find:
         raise InputError("drift_angle needs the time the moment acts: give duration",
                          key="given.duration")
@@ -69,6 +80,12 @@ def _momentum(given: Given, work: Work) -> float:
     return H
 
 
+_DRIFT_TITLE = ("Drift: steady precession of the spin axis about ", y0, " (Eq. 11.29)")
+_BUDGET_TITLE = ("Largest disturbing moment for the drift budget: ", rel(M0, "=", H0 * W_d0))
+_FASTER_THAN_BUDGET = ("any larger moment about ", x0, " makes the spin axis drift faster than "
+                       "the budget")
+
+
 def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
     ways = [k for k in ("moment", "drift_rate", "drift_period") if k in given]
     if len(ways) > 1:
@@ -79,8 +96,7 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
                          "drift_period) to find the largest moment", key="given.moment")
     if ways == ["moment"]:
         M = given["moment"]
-        work.section("Drift: steady precession of the spin axis about ", *names("y"),
-                     " (Eq. 11.29)")
+        work.section(*_DRIFT_TITLE)
         rate = work.step("Omega_d", Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"), unit="rad/s",
                          note=_equals(gd.drift_rate(M, H) / DEG_PER_HOUR, "deg/h"))
         return M, rate
@@ -91,11 +107,9 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
                          note=_equals(2 * math.pi / T / DEG_PER_HOUR, "deg/h"))
     else:
         rate = given["drift_rate"]
-    M_, H_, W_d = names("M H Omega_d")
-    work.section("Largest disturbing moment for the drift budget: ", rel(M_, "=", H_ * W_d))
+    work.section(*_BUDGET_TITLE)
     M = work.step("M", Sym("H", abs(H), "kg m^2/s") * Sym("Omega_d", rate, "rad/s"), unit="N*m")
-    work.text("any larger moment about ", *names("x"), " makes the spin axis drift faster "
-              "than the budget")
+    work.text(*_FASTER_THAN_BUDGET)
     return M, math.copysign(rate, H) if rate else 0.0
 
 
@@ -121,6 +135,20 @@ def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | Non
     return Ix, Iy
 
 
+_ROTOR_ALONE = ("transverse inertias: ", "the rotor alone (gimbals' inertia neglected)")
+_EQUAL_INERTIAS = ("transverse inertias: ", rel(I_x0, "=", I_y0, "=", I0))
+_TWO_INERTIAS = ("transverse inertias: ", I_x0, ", ", I_y0)
+_FROM_REST = ("solution from rest: ",
+              rel(fn("alpha", t0), "=", M0 * I_y0 / H0**2 * (1 - cos(w_n0 * t0))), ",  ",
+              rel(fn("beta", t0), "=", M0 / H0 * t0 - M0 / (H0 * w_n0) * sin(w_n0 * t0)))
+_ABOUT_X = ("about ", x0, ", the moment's axis (", M0 * I0 / H0**2, " for equal inertias ", I0,
+            ")")
+_ABOUT_Y = ("about ", y0, ", the drift axis: the ripple on the drift")
+_LARGEST = ("largest deflection about ", x0, ", reached every half period")
+_AT_A_QUARTER_PERIOD = ("the solution in the first gimbal equation at ", rel(t0, "=", T_n0 / 4),
+                        ": ")
+
+
 def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work) -> None:
     nutation_answers = {"nutation_frequency", "nutation_period", "nutation_amplitude",
                         "nutation_amplitude_drift", "max_deflection"}
@@ -133,33 +161,24 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
                              key="given.I")
         return
     Ix, Iy = inertias
-    x_, y_, I_ = names("I_x I_y I")
-    source: tuple = (rel(x_, "=", y_, "=", I_),) if Ix == Iy else (x_, ", ", y_)
-    if "I" not in given and "I_x" not in given:
-        source = ("the rotor alone (gimbals' inertia neglected)",)
+    source = _ROTOR_ALONE if "I" not in given and "I_x" not in given else \
+        _EQUAL_INERTIAS if Ix == Iy else _TWO_INERTIAS
     work.section("Nutation, the moment switched on with the gyro at rest")
-    work.text("transverse inertias: ", *source)
+    work.text(*source)
     H_, I_x, I_y = Sym("H", abs(H), "kg m^2/s"), Sym("I_x", Ix, "kg m^2"), Sym("I_y", Iy, "kg m^2")
-    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s",
-                   note=_equals(gd.nutation_frequency(abs(H), Ix, Iy) / (2 * math.pi), "Hz"))
+    w = gd.nutation_frequency(abs(H), Ix, Iy)
+    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s", note=_equals(w / (2 * math.pi), "Hz"))
     period = work.step("T_n", 2 * PI / Sym("w_n", wn, "rad/s"), unit="s")
-    a, b, M0, H0, Iy0, w, t = names("alpha beta M H I_y w_n t")
-    work.text("solution from rest: ", rel(fn("alpha", t), "=", M0 * Iy0 / H0**2 * (1 - cos(w * t))),
-              ",  ", rel(fn("beta", t), "=", M0 / H0 * t - M0 / (H0 * w) * sin(w * t)))
+    work.text(*_FROM_REST)
     M_, H_ = Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")
-    x, y, I0 = names("x y I")
-    ax = work.step("A_x", M_ * I_y / H_ ** 2, unit="rad",
-                   note=("about ", x, ", the moment's axis (", M0 * I0 / H0**2,
-                         " for equal inertias ", I0, ")"))
+    ax = work.step("A_x", M_ * I_y / H_ ** 2, unit="rad", note=_ABOUT_X)
     ay = work.step("A_y", M_ * sqrt(I_x * I_y) / H_ ** 2, unit="rad", substitute=False,
-                   note=("about ", y, ", the drift axis: the ripple on the drift"))
+                   note=_ABOUT_Y)
     work.step("alpha_max", 2 * M_ * I_y / H_ ** 2, unit="rad", substitute=False,
-              note=("largest deflection about ", x, ", reached every half period"))
+              note=_LARGEST)
     quarter = period / 4
-    residual = Ix * _a_dd(M, H, Ix, Iy, quarter) + H * _b_d(M, H, Ix, Iy, quarter)
-    t, T_n, M0 = names("t T_n M")
-    work.check("the solution in the first gimbal equation at ", rel(t, "=", T_n / 4), ": ",
-               rel(_first_equation().first, "=", q(residual, "N m")), ", ",
+    residual = Ix * _a_dd(M, H, Iy, w, quarter) + H * _b_d(M, H, w, quarter)
+    work.check(*_AT_A_QUARTER_PERIOD, rel(_FIRST_EQUATION.first, "=", q(residual, "N m")), ", ",
                rel(M0, "=", q(M, "N m")))
     if abs(2 * ax) > LINEAR_LIMIT or abs(ay) > LINEAR_LIMIT:
         work.warn("the nutation reaches ", q(max(abs(2 * ax), abs(ay)), "deg"), ": the "
@@ -176,19 +195,14 @@ def _equals(value: float, unit: str) -> tuple:
     return (rel(None, "=", q(value, unit)),)
 
 
-def _first_equation() -> Rel:
-    """I_x alpha'' + H beta' = M, the gimbal equation about the moment's axis."""
-    I_x, a, H, b, M = names("I_x alpha H beta M")
-    return rel(I_x * prime(a, 2) + H * prime(b), "=", M)
-
-
-def _a_dd(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
-    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+def _a_dd(M: float, H: float, Iy: float, wn: float, t: float) -> float:
+    """alpha''(t) of the motion from rest, (M I_y / H^2) w_n^2 cos(w_n t), at the nutation
+    frequency ``wn`` the caller has found (physics/gyro_drift.py)."""
     return M * Iy / (H * H) * wn * wn * math.cos(wn * t)
 
 
-def _b_d(M: float, H: float, Ix: float, Iy: float, t: float) -> float:
-    wn = gd.nutation_frequency(abs(H), Ix, Iy)
+def _b_d(M: float, H: float, wn: float, t: float) -> float:
+    """beta'(t) of the motion from rest, (M / H) (1 - cos(w_n t)) (physics/gyro_drift.py)."""
     return M / H * (1 - math.cos(wn * t))
 
 

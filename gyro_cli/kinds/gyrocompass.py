@@ -28,6 +28,44 @@ from ..physics.algebra import cos_theta
 
 POLAR_WARNING_LATITUDE = math.radians(70)
 
+#: the symbols the sentences name (values are in the steps' trees)
+E, N, U, a0, W0, OmE0, lam0 = names("E N U alpha Omega Omega_E lambda")
+M_U0, I_v0, adot0, addot0, H0, T0, K0, m0, alpha_eq0, I_G0 = \
+    names("M_U I_v alphadot alphaddot H T K m alpha_eq I_G")
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_AXES = (E, ", ", N, ", ", U, ": east, north, up at the site. The rotor's spin vector "
+         "(right-hand rule) points along the horizontal axis at azimuth ", a0, ", east of north "
+         "positive; moments about the vertical are positive counter-clockwise seen from above.")
+_EARTH_RATE = ("Earth rate: ", rel(OmE0, "=", W0 * (cos(lam0) * N + sin(lam0) * U)), ", where ",
+               W0, " is the Earth's rotation rate; only the horizontal part ",
+               W0 * cos(lam0) * N, " can turn a horizontal spin vector.")
+_MOMENT_TITLE = ("Moment about the vertical (angular momentum about ", U, " on the rotating "
+                 "Earth)")
+_MOMENT_SYMBOLS = (M_U0, ": the moment about the vertical on the rotor and its gimbal; ", I_v0,
+                   ": their moment of inertia about the vertical; ", adot0, ": the rate of the "
+                   "azimuth ", a0)
+_ANGULAR_MOMENTUM = (rel(fn("d/dt", dot(H0, U)), "=", M_U0 + dot(H0, cross(OmE0, U))), ",  ",
+                     rel(cross(OmE0, U), "=", W0 * cos(lam0) * E), ",  ",
+                     rel(dot(H0, U), "=", I_v0 * (W0 * sin(lam0) - adot0)))
+_PENDULUM = ("so  ", rel(I_v0 * addot0, "=", -H0 * W0 * cos(lam0) * sin(a0)),
+             "  (terms of order ", I_v0 * W0**2, " dropped): a pendulum about north")
+_SOUTH = q(math.pi, "deg", exact=True)  # the deviation of the unstable equilibrium
+_SETTLES = (rel(alpha_eq0, "=", 0), " (spin vector north) is the stable equilibrium (",
+            rel(a0, "=", _SOUTH), " is unstable): the axis swings about north and, with any "
+            "damping about the vertical, settles there.")
+_POINTS_SOUTH = (rel(a0, "=", _SOUTH), ": the spin vector points south, the unstable "
+                 "equilibrium; released there at rest the axis stays (in theory) and never "
+                 "swings")
+_RELEASED = ("released at rest at ", a0, " (the pendulum's exact period; ", K0, " is the "
+             "complete elliptic integral of the first kind, of parameter ",
+             rel(m0, "=", sin(a0 / 2) ** 2), ")")
+_SWING_STIFFNESS = I_v0 * (2 * PI / T0)**2  # the check: I_v (2 pi / T)^2 = H Omega_E cos(lambda)
+_DIRECTIVE = H0 * OmE0 * cos(lam0)
+_ROTOR_ALONE = ("no I_vertical: the rotor alone turns about the vertical (massless gimbal), ",
+                rel(I_v0, "=", I_G0), ", its transverse moment about a diameter")
+
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     lat = given["latitude"]
@@ -46,28 +84,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     alpha = given["deviation"]
 
     work.section("Conventions")
-    E, N, U, a, W, OmE, lam0 = names("E N U alpha Omega Omega_E lambda")
-    work.text(E, ", ", N, ", ", U, ": east, north, up at the site. The rotor's spin vector "
-              "(right-hand rule) points along the horizontal axis at azimuth ", a, ", east of "
-              "north positive; moments about the vertical are positive counter-clockwise seen "
-              "from above.")
-    work.text("Earth rate: ", rel(OmE, "=", W * (cos(lam0) * N + sin(lam0) * U)), ", where ", W,
-              " is the Earth's rotation rate; only the horizontal part ", W * cos(lam0) * N,
-              " can turn a horizontal spin vector.")
+    work.text(*_AXES)
+    work.text(*_EARTH_RATE)
     if H < 0:
         work.text("spin < 0: the spin vector points along the other end of the axis; that end "
                   "seeks north")
-    work.section("Moment about the vertical (angular momentum about ", U,
-                 " on the rotating Earth)")
-    M_U, I_v, adot, addot, H0 = names("M_U I_v alphadot alphaddot H")
-    work.text(M_U, ": the moment about the vertical on the rotor and its gimbal; ", I_v,
-              ": their moment of inertia about the vertical; ", adot, ": the rate of the "
-              "azimuth ", a)
-    work.text(rel(fn("d/dt", dot(H0, U)), "=", M_U + dot(H0, cross(OmE, U))), ",  ",
-              rel(cross(OmE, U), "=", W * cos(lam0) * E), ",  ",
-              rel(dot(H0, U), "=", I_v * (W * sin(lam0) - adot)))
-    work.text("so  ", rel(I_v * addot, "=", -H0 * W * cos(lam0) * sin(a)), "  (terms of order ",
-              I_v * W**2, " dropped): a pendulum about north")
+    work.section(*_MOMENT_TITLE)
+    work.text(*_MOMENT_SYMBOLS)
+    work.text(*_ANGULAR_MOMENTUM)
+    work.text(*_PENDULUM)
     H_, Omega_E = Sym("H", H_abs, "kg m^2/s"), Sym("Omega_E", Omega, "rad/s")
     lam, alpha_ = Sym("lambda", lat, "deg"), Sym("alpha", alpha, "deg")
     stiffness = H_ * Omega_E * cos(lam)  # directive_stiffness, Eq. in physics/gyrocompass.py
@@ -81,9 +106,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
     work.answer("settles", "alpha_eq", ["north"], None)
     work.answer("directive_moment", "D", [D], "stiffness")
-    work.text(rel(names("alpha_eq")[0], "=", 0), " (spin vector north) is the stable "
-              "equilibrium (", rel(a, "=", q(math.pi, "deg", exact=True)), " is unstable): the axis swings "
-              "about north and, with any damping about the vertical, settles there.")
+    work.text(*_SETTLES)
 
     I_v = _vertical_inertia(given, work)
     if I_v is not None:
@@ -94,23 +117,17 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.step("T", value=T / 60, unit="min")
         work.answer("period", "T", [T], "time")
         if abs(alpha) > math.pi * (1 - 1e-9):
-            work.text(rel(names("alpha")[0], "=", q(math.pi, "deg", exact=True)), ": the spin vector "
-                      "points south, the unstable equilibrium; released there at rest the axis "
-                      "stays (in theory) and never swings")
+            work.text(*_POINTS_SOUTH)
             if "swing_period" in find:
                 raise InputError("at a deviation of 180 deg the axis balances in unstable "
                                  "equilibrium (spin vector south): a swing released there at rest "
                                  "never returns, its period is unbounded", key="given.deviation")
         elif alpha:
             Ts = work.step("T(alpha)", Sym("T", T, "s") * (2 / PI) * ellipk(
-                sin(alpha_ / 2) ** 2), unit="s", substitute=False, note=(
-                "released at rest at ", a, " (the pendulum's exact period; ", *names("K"),
-                " is the complete elliptic integral of the first kind, of parameter ",
-                rel(*names("m"), "=", sin(a / 2) ** 2), ")"))
+                sin(alpha_ / 2) ** 2), unit="s", substitute=False, note=_RELEASED)
             work.answer("swing_period", "T(alpha)", [Ts], "time")
-        I_v0, T0, H0, OmE, lam0 = names("I_v T H Omega_E lambda")
-        work.check(rel(I_v0 * (2 * PI / T0)**2, "=", q(I_v * (2 * math.pi / T) ** 2, "N m/rad"),
-                       "=", H0 * OmE * cos(lam0), "=", q(D, "N m/rad")))
+        work.check(rel(_SWING_STIFFNESS, "=", q(I_v * (2 * math.pi / T) ** 2, "N m/rad"), "=",
+                       _DIRECTIVE, "=", q(D, "N m/rad")))
     elif {"period", "swing_period"} & find:
         raise InputError("the period needs I_vertical (or the rotor's I_cg, k_cg or shape)",
                          key="given.I_vertical")
@@ -130,8 +147,7 @@ def _vertical_inertia(given: Given, work: Work) -> float | None:
                              "sensitive element includes the rotor", key="given.I_vertical")
         return I_v
     if body.I_cg is not None:
-        work.text("no I_vertical: the rotor alone turns about the vertical (massless gimbal), ",
-                  rel(*names("I_v"), "=", *names("I_G")), ", its transverse moment about a diameter")
+        work.text(*_ROTOR_ALONE)
         return body.I_cg
     return None
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from ..core.errors import InputError
 from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, sin as sin_, sqrt
@@ -157,6 +158,47 @@ def _slow_root(J: Sym, I: Sym, spin: Sym, theta: float, M: Sym, root: float) -> 
     return best[1]
 
 
+#: the symbols the sentences name (values are in the steps' trees)
+K0, k0, n0, A0, B0, th0, W0, L0, H0, G0 = names("K k n A B theta Omega L H G")
+w_z0, ps0, I0, J0, M0, v0, R0, r_w0 = names("omega_z psidot I J M v R r_w")
+h0, T_d0, y0, t0 = names("h T_d y t")  # a wheel's drop
+F_A0, F_B0, a_up0, a_k0, g0, a0, b0 = names("F_A F_B a_up a_k g a b")  # the bearing forces
+b_balance0, db0, m_c0 = names("b0 db m_c")  # the counterweight
+
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+def _conventions(drop: bool) -> tuple[tuple, tuple]:
+    """The axes and the line of nodes: K horizontal along the track when a wheel drops
+    (``drop``), else upward."""
+    axes = (K0, ": the precession axis, ",
+            *(("horizontal along the track (the axle tilts about it while a wheel drops)",)
+              if drop else ("upward (gravity along ", -K0, ")")),
+            "; ", k0, ": the spin axis, from bearing ", A0, " to bearing ", B0, "; spin and "
+            "precession positive counter-clockwise seen from the tips of ", k0, " and of ", K0,
+            " (right-hand rule).")
+    nodes = (rel(n0, "=", cross(K0, k0) / sin_(th0)), ": the line of nodes, perpendicular to "
+             "both the spin and the precession axes",
+             *((" (vertical here).",) if drop else
+               (" (with ", k0, " pointing east and ", K0, " up, ", n0, " points north).")))
+    return axes, nodes
+
+
+_CONVENTIONS = {drop: _conventions(drop) for drop in (False, True)}
+_WHEEL_DROPS = ("a wheel drops: the wheel set tilts about ", K0, " at the rate ", W0, "; ", k0,
+                " is the axle, from wheel ", A0, " to wheel ", B0, ", and the bearing_spacing ",
+                L0, " is the distance between the wheels (rails)")
+_MOMENT_TITLE = ("Moment on the rotor, ", rel(deriv(H0), "=", cross(W0 * K0, H0)),
+                 " (Eqs. 11.28-11.29 generalised)")
+_MOMENT_SYMBOLS = (H0, ": the angular momentum of the rotor about its centre of mass; ", W0,
+                   ": the precession rate about ", K0)
+_AT_90 = (rel(th0, "=", q(math.pi / 2, "deg", exact=True)), ": ", rel(w_z0, "=", ps0),
+          ", the ", I0, " term drops out (", I0, " is not needed)")
+_H_CONSTANT = (absolute(H0), " is constant in the turning frame; ")
+_RATE_OF_H = absolute(deriv(H0))
+_TURNING_H = absolute(W0) * absolute(cross(K0, H0))
+
+
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     theta = given["theta"]
@@ -169,35 +211,21 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         body.require("I_cg")
     J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
     work.section("Conventions")
-    K, k, n, A, B, th, W, L = names("K k n A B theta Omega L")
-    work.text(K, ": the precession axis, ",
-              *(("horizontal along the track (the axle tilts about it while a wheel drops)",)
-                if "drop" in given else ("upward (gravity along ", -K, ")")),
-              "; ", k, ": the spin axis, from bearing ", A, " to bearing ", B, "; spin and "
-              "precession positive counter-clockwise seen from the tips of ", k, " and of ", K,
-              " (right-hand rule).")
-    work.text(rel(n, "=", cross(K, k) / sin_(th)), ": the line of nodes, perpendicular to both "
-              "the spin and the precession axes",
-              *((" (vertical here).",) if "drop" in given else
-                (" (with ", k, " pointing east and ", K, " up, ", n, " points north).")))
-    if "drop" in given:
-        work.text("a wheel drops: the wheel set tilts about ", K, " at the rate ", W, "; ", k,
-                  " is the axle, from wheel ", A, " to wheel ", B, ", and the bearing_spacing ",
-                  L, " is the distance between the wheels (rails)")
+    drop = "drop" in given
+    axes, nodes = _CONVENTIONS[drop]
+    work.text(*axes)
+    work.text(*nodes)
+    if drop:
+        work.text(*_WHEEL_DROPS)
     spin = _spin(given, work)
     precession = _precession(given, J, I, spin, theta, work)
-    H = names("H")[0]
-    work.section("Moment on the rotor, ", rel(deriv(H), "=", cross(W * K, H)),
-                 " (Eqs. 11.28-11.29 generalised)")
-    work.text(H, ": the angular momentum of the rotor about its centre of mass; ", W, ": the "
-              "precession rate about ", K)
+    work.section(*_MOMENT_TITLE)
+    work.text(*_MOMENT_SYMBOLS)
     psidot, Omega = _rate("psidot", spin), _rate("Omega", precession)
     J_, I_ = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
     axial = work.step("omega_z", psidot + Omega * _cos(theta), unit="rad/s", ref="Eq. 11.8")
     if cos == 0:
-        w_z, ps, I0 = names("omega_z psidot I")
-        work.text(rel(th, "=", q(math.pi / 2, "deg", exact=True)), ": ", rel(w_z, "=", ps),
-                  ", the ", I0, " term drops out (", I0, " is not needed)")
+        work.text(*_AT_90)
         M = work.step("M", J_ * psidot * Omega, unit="N*m", ref="Eq. 11.29")
     else:
         M = work.step("M", Omega * sin_(_theta(theta)) * (
@@ -206,9 +234,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _sense(M, work)
     work.answer("moment", "M", [M], "moment")
     work.answer("precession", "Omega", [precession], "rate")
-    work.check(absolute(H), " is constant in the turning frame; ",
-               rel(absolute(deriv(H)), "=", absolute(W) * absolute(cross(K, H)), "=",
-                   q(abs(M), "N m")))
+    work.check(*_H_CONSTANT, rel(_RATE_OF_H, "=", _TURNING_H, "=", q(abs(M), "N m")))
 
     bearing_keys = [k for k in ("cg_position", "arrangement", "supported_mass", "cg_radius",
                                 "cg_offset") if k in given]
@@ -258,6 +284,10 @@ def _along_the_axis(given: Given, find: frozenset[str], theta: float, work: Work
     work.answer("precession", "Omega", [precession], "rate")
 
 
+_ROLLING_WHEELS = (ps0, ", the wheels' spin: they roll without slipping, so the axle's speed "
+                   "is ", rel(v0, "=", ps0 * r_w0))
+
+
 def _spin(given: Given, work: Work) -> float:
     """psidot: given, or a road or rail wheel's v / r_w (rolling without slip)."""
     if "wheel_radius" in given:
@@ -269,9 +299,7 @@ def _spin(given: Given, work: Work) -> float:
                              "psidot = v / r_w; give speed", key="given.speed")
         r = given["wheel_radius"]
         work.section("Spin of the wheels from the vehicle's speed")
-        psidot, v, r_w = names("psidot v r_w")
-        work.text(psidot, ", the wheels' spin: they roll without slipping, so the axle's speed "
-                  "is ", rel(v, "=", psidot * r_w))
+        work.text(*_ROLLING_WHEELS)
         return work.step("psidot", Sym("v", given["speed"], "m/s") / Sym("r_w", r, "m"),
                          unit="rad/s")
     if "spin" not in given:
@@ -290,6 +318,12 @@ def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
     """Greatest tilt rate when one wheel falls ``drop`` and rises again in ``drop_time`` with
     simple harmonic motion: y = (drop / 2)(1 - cos(2 pi t / T)), so y' peaks at pi drop / T."""
     return math.pi * drop / (drop_time * spacing)
+
+
+_AXLE_TURNS = ("the axle turns through ", h0 / L0, " (small angle) while the wheel drops")
+_HARMONIC_DROP = ("the wheel falls ", h0, " and rises again in the time ", T_d0, " with simple "
+                  "harmonic motion: ", rel(y0, "=", h0 / 2 * (1 - cos_(2 * PI * t0 / T_d0))),
+                  ", whose greatest speed is ", h0 / 2 * (2 * PI / T_d0))
 
 
 def _drop(given: Given, work: Work) -> float:
@@ -313,19 +347,22 @@ def _drop(given: Given, work: Work) -> float:
         s, v = given["drop_length"], given["speed"]
         t = work.step("t", Sym("s", s, "m") / Sym("v", v, "m/s"), unit="s",
                       note="time the wheel takes to drop")
-        h_, L_ = names("h L")
         return work.step("Omega", Sym("h", h, "m") / Sym("L", L, "m") / Sym("t", t, "s"),
-                         unit="rad/s", note=("the axle turns through ", h_ / L_, " (small "
-                                             "angle) while the wheel drops"))
+                         unit="rad/s", note=_AXLE_TURNS)
     T = given["drop_time"]
-    h_, T_d, y, t_ = names("h T_d y t")
-    work.text("the wheel falls ", h_, " and rises again in the time ", T_d, " with simple "
-              "harmonic motion: ", rel(y, "=", h_ / 2 * (1 - cos_(2 * PI * t_ / T_d))),
-              ", whose greatest speed is ", h_ / 2 * (2 * PI / T_d))
+    work.text(*_HARMONIC_DROP)
     y_dot = work.step("ydot_max", Sym("h", h, "m") / 2 * (2 * PI / Sym("T_d", T, "s")),
                       unit="m/s")
     return work.step("Omega", Sym("ydot_max", y_dot, "m/s") / Sym("L", L, "m"), unit="rad/s",
                      note="greatest tilt rate of the axle")
+
+
+#: Omega = +v / R on a left turn, -v / R on a right one
+_PATH_RATE = {"left": rel(W0, "=", signed("+", v0) / R0), "right": rel(W0, "=", -v0 / R0)}
+_SOUGHT = (W0, ": the precession rate sought; ", I0, ": the transverse moment of inertia about "
+           "the centre of mass")
+_SUSTAINED = (rel((J0 - I0) * cos_(th0) * sin_(th0) * W0 ** 2 + J0 * ps0 * sin_(th0) * W0 - M0,
+                  "=", 0),)
 
 
 def _precession(given: Given, J: float, I: float, spin: float, theta: float,
@@ -362,19 +399,14 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
         turn = given.word("turn", "left")
         sign = 1.0 if turn == "left" else -1.0
         work.section("Precession from the path")
-        W, v_, R_ = names("Omega v R")
-        work.text(f"the frame turns {turn} on a circle: ",
-                  rel(W, "=", (signed("+", v_) if sign > 0 else -v_) / R_),
+        work.text(f"the frame turns {turn} on a circle: ", _PATH_RATE[turn],
                   " about the upward vertical (a left turn is counter-clockwise from above)")
         v = Sym("v", given["speed"], "m/s")
         return work.step("Omega", (v if sign > 0 else -v) / Sym("R", R, "m"), unit="rad/s")
     M = given["moment"]
     work.section("Precession that the applied moment sustains (moment along n given)")
-    W, I0, J0, th, ps, M0 = names("Omega I J theta psidot M")
-    work.text(W, ": the precession rate sought; ", I0, ": the transverse moment of inertia "
-              "about the centre of mass")
-    work.text(rel((J0 - I0) * cos_(th) * sin_(th) * W ** 2 + J0 * ps * sin_(th) * W - M0, "=",
-                  0))
+    work.text(*_SOUGHT)
+    work.text(*_SUSTAINED)
     roots = precession_for_moment(J, I, spin, theta, M)
     if not roots:
         raise InputError(f"no steady precession carries the moment {num(M)} N m at this spin "
@@ -393,16 +425,64 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                      "written without cancellation")
 
 
+def _sense_of(positive: bool) -> tuple:
+    """Where the moment points and which end of the axis it pushes down."""
+    return ("Sense: the moment the bearings exert on the rotor points along ",
+            signed("+", n0) if positive else -n0, ", the line of nodes; it turns the spin axis "
+            "about ", n0, " so that the ", B0 if positive else A0, " end of the axis is pushed "
+            "toward ", -K0, " (down). The rotor exerts the equal and opposite moment on its "
+            "frame.")
+
+
+_NO_MOMENT = (rel(M0, "=", 0), ": no moment is needed")
+_SENSE = {positive: _sense_of(positive) for positive in (True, False)}
+
+
 def _sense(M: float, work: Work) -> None:
-    M_, n, K, A, B = names("M n K A B")
     if M == 0:
-        work.text(rel(M_, "=", 0), ": no moment is needed")
+        work.text(*_NO_MOMENT)
         return
-    work.text("Sense: the moment the bearings exert on the rotor points along ",
-              signed("+", n) if M > 0 else -n, ", the line of nodes; it turns the spin axis "
-              "about ", n, " so that the ", B if M > 0 else A, " end of the axis is pushed "
-              "toward ", -K, " (down). The rotor exerts the equal and opposite moment on its "
-              "frame.")
+    work.text(*_SENSE[M > 0])
+
+
+_BEARING_FORCES = (F_A0, ", ", F_B0, ": forces of the bearings on the rotor, perpendicular to "
+                   "the spin axis. 'up' components lie in the plane of ", K0, " and ", k0,
+                   ", positive toward ", signed("+", K0), " (upward); 'side' components lie "
+                   "along ", n0, ", positive toward the precession axis. Labelled ", A0, ", ", B0,
+                   " in that order.")
+_CG_FROM_A = ("from bearing ", A0, " to the centre of mass ", G0, " along ", k0)
+_CG_FROM_A_DEFAULT = _CG_FROM_A + (" (default: midway)",)
+_CG_ACCELERATION = (a_up0, ", ", a_k0, ": the acceleration of ", G0, " upward and along ", k0,
+                    "; ", G0, " moves on a circle of radius ", R0, " about the precession "
+                    "axis, with the centripetal acceleration ", W0 ** 2 * R0)
+_SUM_OF_FORCES, _MOMENT_ABOUT_G = F_A0 + F_B0, a0 * F_A0 - b0 * F_B0
+_OFF_THE_AXIS = ("(centre off the axis along ", k0, ")")
+_NO_SIDE_FORCES = (rel(*names("F_A,side"), "=", *names("F_B,side"), "=", 0), ": no side forces "
+                   "(the centre of mass is not off the axis across the spin axis)")
+_AXIAL = ("axial, along ", k0, ", taken by the thrust bearing")
+_LOAD = absolute(names("F")[0])  # |F|, a bearing's load
+
+
+class _FreeBody(NamedTuple):
+    """The free body's sentences that name the mass the bearings carry."""
+
+    up: tuple  # the forces and moments perpendicular to the spin axis, in the plane of K, k
+    side: tuple  # along the line of nodes
+    weight_and_acceleration: Expr  # the check's m g sin(theta) + m a_up
+
+
+def _free_body(ms: str) -> _FreeBody:
+    """The sentences with the mass written ``ms``: m, or m_s for a supported_mass."""
+    m = names(ms)[0]
+    return _FreeBody(
+        up=("up:   ", rel(_SUM_OF_FORCES, "=", m * (g0 * sin_(th0) + a_up0)), ";   ",
+            rel(_MOMENT_ABOUT_G, "=", M0), "   (moments about ", G0, " along ", n0, ")"),
+        side=("side: ", rel(_SUM_OF_FORCES, "=", m * W0 ** 2 * R0), " (toward the axis);   ",
+              rel(_MOMENT_ABOUT_G, "=", 0)),
+        weight_and_acceleration=m * g0 * sin_(th0) + m * a_up0)
+
+
+_FREE_BODY = {ms: _free_body(ms) for ms in ("m", "m_s")}
 
 
 def _bearings(given: Given, find: frozenset[str], M: float, precession: float, theta: float, work: Work) -> None:
@@ -441,23 +521,15 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
     b = L - a
     work.section("Bearing forces: free body of the rotor (forces on the rotor)")
     ms = "m_s" if "supported_mass" in given else "m"  # the Given table's symbol
-    F_A, F_B, K, k, n, A, B, G = names("F_A F_B K k n A B G")
-    work.text(F_A, ", ", F_B, ": forces of the bearings on the rotor, perpendicular to the spin "
-              "axis. 'up' components lie in the plane of ", K, " and ", k, ", positive toward ",
-              signed("+", K), " (upward); 'side' components lie along ", n, ", positive toward "
-              "the precession axis. Labelled ", A, ", ", B, " in that order.")
-    work.step("a", value=a, unit="m", note=("from bearing ", A, " to the centre of mass ", G,
-                                            " along ", k) +
-              ((" (default: midway)",) if "cg_position" not in given else ()))
+    work.text(*_BEARING_FORCES)
+    work.step("a", value=a, unit="m", note=_CG_FROM_A_DEFAULT if "cg_position" not in given
+              else _CG_FROM_A)
     m_, g_, L_, a_ = Sym(ms, m, "kg"), Sym("g", g, "m/s^2"), Sym("L", L, "m"), Sym("a", a, "m")
     b_ = Sym("b", work.step("b", L_ - a_, unit="m"), "m")
     Omega, R_, th = _rate("Omega", precession), Sym("R", R, "m"), _theta(theta)
-    a_up_, a_k_, R0, W0, m0, g0, th0, a0, b0, M0 = names(f"a_up a_k R Omega {ms} g theta a b M")
-    work.text(a_up_, ", ", a_k_, ": the acceleration of ", G, " upward and along ", k, "; ", G,
-              " moves on a circle of radius ", R0, " about the precession axis, with the "
-              "centripetal acceleration ", W0 ** 2 * R0)
-    work.text("up:   ", rel(F_A + F_B, "=", m0 * (g0 * sin_(th0) + a_up_)), ";   ",
-              rel(a0 * F_A - b0 * F_B, "=", M0), "   (moments about ", G, " along ", n, ")")
+    free_body = _FREE_BODY[ms]
+    work.text(*_CG_ACCELERATION)
+    work.text(*free_body.up)
     parts: dict[str, list[Sym]] = {"A": [], "B": []}
     for end, arm in (("A", b_), ("B", a_)):
         parts[end].append(Sym(f"F_{end},weight", work.step(
@@ -465,7 +537,7 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
             note="static share of the weight" if end == "A" else ""), "N"))
     if forces.inertial != (0.0, 0.0):
         a_up = Sym("a_up", work.step("a_up", Omega ** 2 * R_ * _cos(theta), unit="m/s^2",
-                                     note=("(centre off the axis along ", k, ")")), "m/s^2")
+                                     note=_OFF_THE_AXIS), "m/s^2")
         for end, arm in (("A", b_), ("B", a_)):
             parts[end].append(Sym(f"F_{end},accel", work.step(
                 f"F_{end},accel", m_ * a_up * arm / L_, unit="N", substitute=False), "N"))
@@ -479,31 +551,28 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
         for part in rest:
             total = total + part
         work.step(f"F_{end}", total, unit="N", substitute=False)
-    work.text("side: ", rel(F_A + F_B, "=", m0 * W0 ** 2 * R0), " (toward the axis);   ",
-              rel(a0 * F_A - b0 * F_B, "=", 0))
+    work.text(*free_body.side)
     if offset == "across" and R:
         work.step("F_A,side", m_ * Omega ** 2 * R_ * b_ / L_, unit="N",
                   note="centripetal force of the centre of mass")
         work.step("F_B,side", m_ * Omega ** 2 * R_ * a_ / L_, unit="N", substitute=False)
     else:
-        work.text(rel(*names("F_A,side"), "=", *names("F_B,side"), "=", 0), ": no side forces "
-                  "(the centre of mass is not off the axis across the spin axis)")
+        work.text(*_NO_SIDE_FORCES)
     a_k = Sym("a_k", centre_acceleration(precession, theta, R, offset)[0], "m/s^2")
     work.step("T", m_ * (g_ * _cos(theta) + a_k), unit="N", substitute=False,
-              note=("axial, along ", k, ", taken by the thrust bearing"))
+              note=_AXIAL)
     if min(forces.up) < 0:
         work.text("a negative 'up' force pulls the rotor down: that bearing must hold the shaft "
                   "against lifting")
     work.answer("bearing_forces", "F", list(forces.up), "force", ["A", "B"])
     work.answer("couple_forces", "F_couple", list(forces.couple), "force", ["A", "B"])
     work.answer("bearing_side_forces", "F_side", list(forces.side), "force", ["A", "B"])
-    work.answer("bearing_loads", absolute(names("F")[0]), list(forces.loads), "force",
-                ["A", "B"])
+    work.answer("bearing_loads", _LOAD, list(forces.loads), "force", ["A", "B"])
     work.answer("axial_thrust", "T", [forces.thrust], "force")
-    work.check("up: ", rel(F_A + F_B, "=", q(sum(forces.up), "N")), ", ",
-               rel(m0 * g0 * sin_(th0) + m0 * a_up_, "=",
+    work.check("up: ", rel(_SUM_OF_FORCES, "=", q(sum(forces.up), "N")), ", ",
+               rel(free_body.weight_and_acceleration, "=",
                    q(m * g * sin + sum(forces.inertial), "N")), "; ",
-               rel(a0 * F_A - b0 * F_B, "=", q(a * forces.up[0] - b * forces.up[1], "N m")), ", ",
+               rel(_MOMENT_ABOUT_G, "=", q(a * forces.up[0] - b * forces.up[1], "N m")), ", ",
                rel(M0, "=", q(M, "N m")))
 
 
@@ -513,32 +582,52 @@ def couple_forces(moment: float, spacing: float) -> tuple[float, float]:
     return moment / spacing, -moment / spacing
 
 
+_TILTS = ("the wheel set tilts about a horizontal axis, so the weight is not along ", K0)
+_NO_MASS = ("no mass is given",)
+_COUPLE_SHARE = (": the forces below are the gyroscopic couple's share alone, equal and opposite "
+                 "at ", A0, " and ", B0, "; the static load (the weight's share) is added to them "
+                 "where the weight is known")
+_ON_THE_ROTOR = ("on the rotor at ", A0)
+_ON_THE_ROTOR_UP = _ON_THE_ROTOR + (", toward ", signed("+", K0))
+_PUSHES_BACK = ("the rotor pushes each bearing (rail) the other way: one is loaded by ",
+                absolute(M0) / L0, " more, the other relieved by as much")
+_PLUS_MINUS_SHARE = signed("+-", M0) / L0  # +-M / L
+_COUPLE_OF_FORCES = names("F_A,couple")[0] * L0
+_FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
+
+
 def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> None:
     """No mass (or a tilting axle): the couple's share of the bearing forces alone."""
     work.section("Forces of the gyroscopic couple on the bearings (rails)")
-    K, A, B, M0, L0 = names("K A B M L")
-    why_pieces = (("the wheel set tilts about a horizontal axis, so the weight is not along ", K)
-                  if "drop" in given else ("no mass is given",))
-    work.text(*why_pieces, ": the forces below are the gyroscopic couple's share alone, equal "
-              "and opposite at ", A, " and ", B, "; the static load (the weight's share) is added "
-              "to them where the weight is known")
+    why_pieces = _TILTS if "drop" in given else _NO_MASS
+    work.text(*why_pieces, *_COUPLE_SHARE)
     F_A, F_B = couple_forces(M, L)
     M_, L_ = Sym("M", M, "N m"), Sym("L", L, "m")
-    work.step("F_A,couple", M_ / L_, unit="N",
-              note=("on the rotor at ", A) + ((", toward ", signed("+", K)) if M >= 0 else ()))
+    work.step("F_A,couple", M_ / L_, unit="N", note=_ON_THE_ROTOR_UP if M >= 0 else _ON_THE_ROTOR)
     work.step("F_B,couple", -M_ / L_, unit="N")
-    work.text("the rotor pushes each bearing (rail) the other way: one is loaded by ",
-              absolute(M0) / L0, " more, the other relieved by as much")
+    work.text(*_PUSHES_BACK)
     work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
     work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])
     if warn:
         work.warn(*why_pieces, ": bearing_forces are the gyroscopic couple's share alone, ",
-                  rel(signed("+-", M0) / L0, "=", signed("+-", q(abs(F_A), "N"))),
+                  rel(_PLUS_MINUS_SHARE, "=", signed("+-", q(abs(F_A), "N"))),
                   ", without the weight's share" +
                   ("" if "drop" in given else " (give mass for the whole force)"))
-    F_Ac, F_A0, F_B0 = names("F_A,couple F_A F_B")
-    work.check(rel(F_Ac * L0, "=", q(F_A * L, "N m"), "=", M0, "=", q(M, "N m")), "; ",
-               rel(F_A0 + F_B0, "=", 0))
+    work.check(rel(_COUPLE_OF_FORCES, "=", q(F_A * L, "N m"), "=", M0, "=", q(M, "N m")),
+               *_FORCES_CANCEL)
+
+
+_ARM = ("At ", rel(b0, "=", b_balance0), " the arm balances with the rotor at rest. Moving the "
+        "block by ", db0, " unbalances the arm by ", m_c0 * g0 * db0, ", which must equal the "
+        "moment ", M0, " the precession needs; the spin may turn either way, so the block may go "
+        "out or in.")
+_ROTOR_SIDE, _BLOCK_SIDE = b_balance0 - db0, b_balance0 + db0  # the two positions, b0 -+ db
+_SENSE_OF_PRECESSION = (
+    "With the spin vector pointing out along the arm toward the rotor, the rotor-side-heavier "
+    "position (", _ROTOR_SIDE, ") gives precession counter-clockwise seen from above; the "
+    "block-side-heavier one (", _BLOCK_SIDE, ") clockwise (or the same sense with the spin "
+    "reversed).")
+_UNBALANCE, _SIZE_OF_M = m_c0 * g0 * (b0 - b_balance0), absolute(M0)
 
 
 def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
@@ -554,25 +643,18 @@ def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
     mc, b0 = given["counterweight"], given["balance_position"]
     g = body.g
     work.section("Counterweight on the pivoted arm (problem 11/4)")
-    b_, b0n, db0, m_c, g0, M0 = names("b b0 db m_c g M")
-    work.text("At ", rel(b_, "=", b0n), " the arm balances with the rotor at rest. Moving the "
-              "block by ", db0, " unbalances the arm by ", m_c * g0 * db0, ", which must equal "
-              "the moment ", M0, " the precession needs; the spin may turn either way, so the "
-              "block may go out or in.")
+    work.text(*_ARM)
     abs_M = Let(Sym("abs_M", abs(M), "N m"), absolute(Sym("M", M, "N m")))
     db = work.step("db", abs_M / (Sym("m_c", mc, "kg") * Sym("g", g, "m/s^2")), unit="m")
     b0_, db_ = Sym("b0", b0, "m"), Sym("db", db, "m")
     positions = [work.step("b", b0_ - db_, unit="m", note="rotor side heavier"),
                  work.step("b", b0_ + db_, unit="m", note="block side heavier")]
-    work.text("With the spin vector pointing out along the arm toward the rotor, the rotor-side-"
-              "heavier position (", b0n - db0, ") gives precession counter-clockwise seen from "
-              "above; the block-side-heavier one (", b0n + db0, ") clockwise (or the same sense "
-              "with the spin reversed).")
+    work.text(*_SENSE_OF_PRECESSION)
     if positions[0] < 0:
-        work.warn(b0n - db0, " is negative: the block would have to pass the pivot")
+        work.warn(_ROTOR_SIDE, " is negative: the block would have to pass the pivot")
     work.answer("counterweight_position", "b", positions, "length",
                 ["rotor side heavier", "block side heavier"])
-    work.check(rel(m_c * g0 * (b_ - b0n), "=", q(mc * g * db, "N m"), "=", absolute(M0), "=",
+    work.check(rel(_UNBALANCE, "=", q(mc * g * db, "N m"), "=", _SIZE_OF_M, "=",
                    q(abs(M), "N m")))
 
 

@@ -41,6 +41,42 @@ def _sym(name: str, value: float) -> Sym:
     return Sym(name, value, UNITS[name])
 
 
+#: the symbols the sentences name (values are in the steps' trees)
+th, thd, thdd, Om, H0, I0, k0, c0, M0, phi0, zeta0, Q0 = \
+    names("theta thetadot thetaddot Omega H I_g k c M phi zeta Q_theta")
+
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_AXES = ("Spin axis, output (gimbal) axis and input axis mutually perpendicular at ",
+         rel(th, "=", 0), "; positive senses chosen so that a positive input rate deflects the "
+         "gimbal positively. All results are for small gimbal angles.")
+_GYROSCOPIC_MOMENT = H0 * Om  # Eq. 11.29 about the output axis
+_TILTED = H0 * Om * cos(th)  # its exact value with the spin axis tilted by theta
+_EQUATION_TITLE = ("Gimbal equation (Eq. 11.29: ", rel(Q0, "=", _GYROSCOPIC_MOMENT),
+                   " about the output axis)")
+_SYMBOLS = (Om, ": the input rate, about the input axis; ", th, ": the gimbal's deflection "
+            "about the output axis; ", I0, ": the gimbal's moment of inertia about that axis; ",
+            k0, ": the spring's stiffness; ", c0, ": the damping coefficient")
+_EQUATION = (rel(I0 * thdd + c0 * thd + k0 * th, "=", _GYROSCOPIC_MOMENT), "   (small ", th,
+             "; exactly ", _TILTED, " on the right)")
+#: the steady state of each restraint
+_STEADY = {"spring": ("spring-restrained rate gyro: steady ", rel(th, "=", H0 * Om / k0)),
+           "integrating": ("rate-integrating gyro (damper, no spring): steady ",
+                           rel(thd, "=", H0 * Om / c0), ", ", rel(th, "=", H0 / c0 * phi0),
+                           ", where ", phi0, " is the angle the case turned"),
+           "rigid": ("rigidly restrained rotor: the bearings supply ",
+                     rel(M0, "=", _GYROSCOPIC_MOMENT), " (Eq. 11.29)")}
+_SPRING_MOMENT = k0 * th
+_TILTED_BALANCE = rel(_SPRING_MOMENT, "=", _TILTED)  # k theta = H Omega cos(theta)
+_GAIN = H0 / c0  # a rate-integrating gyro's gimbal angle per unit angle turned
+_DAMPER_MOMENT, _RATE_FROM_MOMENT = c0 * thd, M0 / H0
+_SETTLES_FASTEST = (zeta0, " near ", q(0.7, exact=True), " lets the reading settle fastest "
+                    "without much overshoot")
+_RINGS = (rel(zeta0, "<", q(0.5, exact=True)), ": the reading rings before it settles")
+_OVERDAMPED = (rel(zeta0, ">", 1), ": overdamped, the reading creeps up to its value")
+_NO_INERTIA = ("damping given without gimbal_inertia: the damping ratio needs ", I0)
+
+
 def _angular_momentum(given: Given, work: Work) -> float:
     H = spin_angular_momentum(given, work)
     return H
@@ -74,26 +110,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         raise InputError("input_angle goes with a rate-integrating gyro (damping, no "
                          "stiffness)", key="given.input_angle")
 
-    th, thd, thdd, Om, H0, I0, k0, c0, M0, phi = \
-        names("theta thetadot thetaddot Omega H I_g k c M phi")
     work.section("Conventions")
-    work.text("Spin axis, output (gimbal) axis and input axis mutually perpendicular at ",
-              rel(th, "=", 0), "; positive senses chosen so that a positive input rate deflects "
-              "the gimbal positively. All results are for small gimbal angles.")
-    work.section("Gimbal equation (Eq. 11.29: ", rel(names("Q_theta")[0], "=", H0 * Om),
-                 " about the output axis)")
-    work.text(Om, ": the input rate, about the input axis; ", th, ": the gimbal's deflection "
-              "about the output axis; ", I0, ": the gimbal's moment of inertia about that "
-              "axis; ", k0, ": the spring's stiffness; ", c0, ": the damping coefficient")
-    work.text(rel(I0 * thdd + c0 * thd + k0 * th, "=", H0 * Om), "   (small ", th,
-              "; exactly ", H0 * Om * cos(th), " on the right)")
-    label = {"spring": ("spring-restrained rate gyro: steady ", rel(th, "=", H0 * Om / k0)),
-             "integrating": ("rate-integrating gyro (damper, no spring): steady ",
-                             rel(thd, "=", H0 * Om / c0), ", ", rel(th, "=", H0 / c0 * phi),
-                             ", where ", phi, " is the angle the case turned"),
-             "rigid": ("rigidly restrained rotor: the bearings supply ", rel(M0, "=", H0 * Om),
-                       " (Eq. 11.29)")}
-    work.text(*label[mode])
+    work.text(*_AXES)
+    work.section(*_EQUATION_TITLE)
+    work.text(*_SYMBOLS)
+    work.text(*_EQUATION)
+    work.text(*_STEADY[mode])
 
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     if given_key == "input_angle":
@@ -125,9 +147,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if abs(theta) > SMALL_ANGLE and given_key != "deflection":
             exact = large_angle_deflection(H, rate, k)
             work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
-                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
-                      q(exact, "deg"))
-        work.check(rel(k0 * th, "=", q(k * theta, "N m"), "=", H0 * Om, "=", q(M, "N m")))
+                      "tilted, ", _TILTED_BALANCE, " gives ", q(exact, "deg"))
+        work.check(rel(_SPRING_MOMENT, "=", q(k * theta, "N m"), "=", _GYROSCOPIC_MOMENT, "=",
+                       q(M, "N m")))
         if I_g is not None:
             work.section("Dynamics of the gimbal")
             I_g_ = _sym("I_g", I_g)
@@ -139,30 +161,27 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 zeta = work.step("zeta", _sym("c", c) / (2 * sqrt(k_ * I_g_)),
                                  unit="")  # damping_ratio
                 work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
-                z = names("zeta")[0]
                 if 0.5 <= zeta <= 1:
-                    work.text(z, " near ", q(0.7, exact=True), " lets the reading settle "
-                              "fastest without much overshoot")
+                    work.text(*_SETTLES_FASTEST)
                 elif zeta < 0.5:
-                    work.text(rel(z, "<", q(0.5, exact=True)), ": the reading rings before it "
-                              "settles")
+                    work.text(*_RINGS)
                 else:
-                    work.text(rel(z, ">", 1), ": overdamped, the reading creeps up to its value")
+                    work.text(*_OVERDAMPED)
         elif c is not None:
-            work.text("damping given without gimbal_inertia: the damping ratio needs ", I0)
+            work.text(*_NO_INERTIA)
     elif mode == "integrating":
         work.section("Rate-integrating: gimbal rate and gain")
         c_ = _sym("c", c)
         td = work.step("thetadot", H_ * Omega / c_, unit="rad/s")  # gimbal_rate
-        gain = work.step(H0 / c0, H_ / c_, unit="", state=False,
+        gain = work.step(_GAIN, H_ / c_, unit="", state=False,
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
-        work.answer("gain", H0 / c0, [gain], "dimensionless")
+        work.answer("gain", _GAIN, [gain], "dimensionless")
         _time_constant(c, I_g, work)
-        work.check(rel(c0 * names("thetadot")[0], "=", q(c * td, "N m"), "=", H0 * Om, "=",
+        work.check(rel(_DAMPER_MOMENT, "=", q(c * td, "N m"), "=", _GYROSCOPIC_MOMENT, "=",
                        q(M, "N m")))
     else:
-        work.check(rel(M0 / H0, "=", q(M / H, "rad/s"), "=", Om))
+        work.check(rel(_RATE_FROM_MOMENT, "=", q(M / H, "rad/s"), "=", Om))
     if "gimbal_inertia" in given and mode == "rigid":
         work.text("gimbal_inertia is not used: a rigid restraint does not move")
     _refuse_missing(find, work)
@@ -175,27 +194,31 @@ def _time_constant(c: float, I_g: float | None, work: Work) -> None:
         work.answer("time_constant", "tau", [tau], "time")
 
 
+_DAMPER_IMPULSE, _ANGULAR_IMPULSE = c0 * th, H0 * phi0  # c theta = H phi
+_INTEGRATING = ("integrating ", rel(_DAMPER_MOMENT, "=", _GYROSCOPIC_MOMENT), " over time: ",
+                rel(_DAMPER_IMPULSE, "=", _ANGULAR_IMPULSE), ", where ", phi0, ", the integral "
+                "of ", Om, " over time, is the angle the case turned (once the transient, time "
+                "constant ", I0 / c0, ", has passed)")
+_ANGLE_TURNED = (phi0, ": the angle the case turned")
+
+
 def _integrated_angle(given: Given, H: float, c: float, I_g: float | None, work: Work) -> None:
     """Rate-integrating gyro: the gimbal angle for the angle the case turned."""
     work.section("Rate-integrating: gimbal angle for the angle turned")
-    th, thd, Om, H0, c0, I0, phi0 = names("theta thetadot Omega H c I_g phi")
-    work.text("integrating ", rel(c0 * thd, "=", H0 * Om), " over time: ",
-              rel(c0 * th, "=", H0 * phi0), ", where ", phi0, ", the integral of ", Om, " over "
-              "time, is the angle the case turned (once the transient, time constant ",
-              I0 / c0, ", has passed)")
+    work.text(*_INTEGRATING)
     H_c = _sym("H", H) / _sym("c", c)
-    gain = work.step(H0 / c0, H_c, unit="", state=False)
+    gain = work.step(_GAIN, H_c, unit="", state=False)
     phi = given["input_angle"]
     theta = work.step("theta", Let(_sym("H/c", gain), H_c) * _sym("phi", phi), unit="rad",
-                      note=(phi0, ": the angle the case turned"))
+                      note=_ANGLE_TURNED)
     work.step("theta", value=theta / DEG, unit="deg")
     work.answer("deflection", "theta", [theta], "angle")
-    work.answer("gain", H0 / c0, [gain], "dimensionless")
+    work.answer("gain", _GAIN, [gain], "dimensionless")
     _time_constant(c, I_g, work)
     if abs(theta) > SMALL_ANGLE:
         work.warn("the gimbal angle ", q(theta, "deg"), " is not small: the linear relation "
                   "holds only for small angles")
-    work.check(rel(c0 * th, "=", q(c * theta, "N m s"), "=", H0 * phi0, "=",
+    work.check(rel(_DAMPER_IMPULSE, "=", q(c * theta, "N m s"), "=", _ANGULAR_IMPULSE, "=",
                    q(H * phi, "N m s")))
 
 
@@ -222,9 +245,8 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
     if key == "deflection":
         theta = given["deflection"]
         if abs(theta) > SMALL_ANGLE:
-            th, k0, H0, Om = names("theta k H Omega")
             work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
-                      "tilted, ", rel(k0 * th, "=", H0 * Om * cos(th)), " gives ",
+                      "tilted, ", _TILTED_BALANCE, " gives ",
                       rel(Om, "=", q(k * theta / (H * math.cos(theta)), "rad/s")))
         return work.step("Omega", _sym("k", k) * _sym("theta", theta) / _sym("H", H),
                          unit="rad/s")

@@ -33,6 +33,21 @@ from ..core.work import Work
 x, y, z = names("x y z")
 H0, C0, wp0, phi0, w10, t0, theta0, alpha0 = names("H C omega_p phi omega_1 t theta alpha")
 
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to port (left, looking forward), ",
+         z, " up. The rotor's axis lies fore and aft. A rotation that looks clockwise to an "
+         "observer has its vector pointing away from the observer (right-hand rule).")
+#: the axes' senses as the sentences write them: +x forward, -x aft, +z up, ...
+_PLUS_X, _MINUS_X, _PLUS_Y, _MINUS_Y, _PLUS_Z, _MINUS_Z = plus(x), -x, plus(y), -y, plus(z), -z
+_REACTIVE = (*reactive_couple("ship"), ". About ", _MINUS_Y, " it raises the bow; about ",
+             _PLUS_Z, " it turns the ship to port.")
+_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotor (Eq. 11.29)
+_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", _COUPLE))
+_NO_ROLLING_COUPLE = (wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(_COUPLE, "=", 0),
+                      ". Rolling gives no gyroscopic couple.")
+_REACTION, _SIZE = -_COUPLE, absolute(_COUPLE)
+
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
@@ -46,12 +61,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     _refuse_foreign(given, motion)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("ship axes: ", x, " forward (toward the bow), ", y, " to port (left, looking "
-              "forward), ", z, " up. The rotor's axis lies fore and aft. A rotation that looks "
-              "clockwise to an observer has its vector pointing away from the observer "
-              "(right-hand rule).")
-    work.text(*reactive_couple("ship"), ". About ", -y, " it raises the bow; about ", plus(z),
-              " it turns the ship to port.")
+    work.text(*_AXES)
+    work.text(*_REACTIVE)
 
     if sense is None:
         if "effect" in find:
@@ -70,7 +81,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         way = "forward (toward the bow), " if direction > 0 else "aft (toward the stern), "
         work.text(f"{sense.replace('_', ' ')}: the spin vector points {way}",
-                  plus(x) if direction > 0 else -x, "; ", rel(H0, "=", qvec(H, "kg m^2/s")))
+                  _PLUS_X if direction > 0 else _MINUS_X, "; ", rel(H0, "=", qvec(H, "kg m^2/s")))
 
     if motion == "steering":
         wp = _steering(given, work)
@@ -82,10 +93,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     rate = V.norm(wp)
     if motion == "rolling":
         rate = abs(given["roll_rate"]) if "roll_rate" in given else None
-    work.section("Gyroscopic couple, ", rel(C0, "=", cross(wp0, H0)))
+    work.section(*_COUPLE_TITLE)
     if motion == "rolling":
-        work.text(wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(cross(wp0, H0), "=", 0),
-                  ". Rolling gives no gyroscopic couple.")
+        work.text(*_NO_ROLLING_COUPLE)
         # with no roll_rate any rate will do (V.rolling_precession takes 1 rad/s)
         omega_p = Sym("omega_p", 1.0 if rate is None else rate, "rad/s")
         C = work.step("C", J_ * omega * omega_p * sin(Num(0)), unit="N*m", substitute=False)
@@ -103,23 +113,17 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text("couple on the rotor ", rel(cross(wp0, H0), "=", qvec(active, "N m")))
-        work.text("reactive couple on the ship ", rel(-cross(wp0, H0), "=",
-                                                      qvec(reactive, "N m")))
+        work.text("couple on the rotor ", rel(_COUPLE, "=", qvec(active, "N m")))
+        work.text("reactive couple on the ship ", rel(_REACTION, "=", qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "ship")
         work.text(f"effect on the ship: {words}")
         work.answer("effect", "effect", [words], None)
-        work.check(rel(absolute(cross(wp0, H0)), "=", q(V.norm(active), "N m"), "=", C0, "=",
-                       q(C, "N m")))
+        work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
 
 
 def _refuse_foreign(given: Given, motion: str) -> None:
     """Keys of another motion are refused rather than silently ignored."""
-    belongs = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
-               "turn_rate": "steering",
-               "bow": "pitching", "pitch_rate": "pitching", "roll_rate": "rolling",
-               **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS}}
-    for key, owner in belongs.items():
+    for key, owner in _MOTION_OF_KEY.items():
         if key in given and owner != motion:
             raise InputError(f"{key} belongs to `motion: {owner}`, but motion is {motion}",
                              key=f"given.{key}")
@@ -155,7 +159,16 @@ def _steering(given: Given, work: Work) -> V.Vector:
 def _steering_line(turn: str, wp: V.Vector, work: Work) -> None:
     work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
               "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")), ", along ",
-              plus(z) if turn == "left" else -z)
+              _PLUS_Z if turn == "left" else _MINUS_Z)
+
+
+_FROM_FREQUENCY = ("from the frequency (", q(1.0, "Hz", exact=True), " = one oscillation per "
+                   "second = ", q(2 * math.pi, "rad/s"), ")")
+_PITCH_ANGLE = (rel(theta0, "=", phi0 * sin(w10 * t0)), ": the pitch angle at the time ", t0)
+_PITCH_RATE = (rel(wp0, "=", deriv(theta0), "=", phi0 * w10 * cos(w10 * t0)),
+               ": largest at the mean position (cos = 1)")
+_PITCH_ACCELERATION = (rel(alpha0, "=", -phi0 * w10 ** 2 * sin(w10 * t0)),
+                       ": largest at the extremes")
 
 
 def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
@@ -195,8 +208,7 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
         if period_key == "frequency":
             f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
             T = work.step("T", 2 * PI / Sym("omega_1", f_rate, "rad/s"), unit="s",
-                          note=("from the frequency (", q(1.0, "Hz", exact=True), " = one "
-                                "oscillation per second = ", q(2 * math.pi, "rad/s"), ")"))
+                          note=_FROM_FREQUENCY)
         else:
             T = given["period"]
         p = V.pitching(phi, T)
@@ -205,12 +217,11 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
                       "frequency of the pitching")
         else:
             work.step("omega_1", 2 * PI / Sym("T", T, "s"), unit="rad/s")
-        work.text(rel(theta0, "=", phi0 * sin(w10 * t0)), ": the pitch angle at the time ", t0)
-        work.text(rel(wp0, "=", deriv(theta0), "=", phi0 * w10 * cos(w10 * t0)),
-                  ": largest at the mean position (cos = 1)")
+        work.text(*_PITCH_ANGLE)
+        work.text(*_PITCH_RATE)
         phi_, omega_1 = Sym("phi", phi), Sym("omega_1", p.frequency, "rad/s")  # phi in rad
         rate = work.step("omega_p,max", phi_ * omega_1, unit="rad/s")
-        work.text(rel(alpha0, "=", -phi0 * w10 ** 2 * sin(w10 * t0)), ": largest at the extremes")
+        work.text(*_PITCH_ACCELERATION)
         work.step("alpha_max", phi_ * omega_1 ** 2, unit="rad/s^2")
         work.answer("max_precession", "omega_p,max", [p.max_precession], "rate")
         work.answer("max_angular_acceleration", "alpha_max", [p.max_acceleration],
@@ -224,8 +235,8 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
         work.text("bow not given: the couple's size is the same rising or falling")
     wp = V.pitching_precession(rate, bow)
     rising = bow == "rising"
-    work.text(f"bow {bow}: the rotation carries ", x, " toward ", plus(z) if rising else -z,
-              ", a rotation about ", -y if rising else plus(y), ": ",
+    work.text(f"bow {bow}: the rotation carries ", x, " toward ", _PLUS_Z if rising else _MINUS_Z,
+              ", a rotation about ", _MINUS_Y if rising else _PLUS_Y, ": ",
               rel(wp0, "=", qvec(wp, "rad/s")))
     return wp
 
@@ -237,6 +248,11 @@ _AMPLITUDE = dict(range=(0.0, math.pi / 2), bounds="()",
 _TOTAL = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
               "cannot pitch through 90 deg")
 PERIOD_KEYS = ("period", "frequency")
+#: the motion each motion's own key belongs to (_refuse_foreign)
+_MOTION_OF_KEY = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
+                  "turn_rate": "steering",
+                  "bow": "pitching", "pitch_rate": "pitching", "roll_rate": "rolling",
+                  **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS}}
 
 
 def _one_of(given: Given, keys: tuple[str, ...], missing: str) -> str:

@@ -54,17 +54,46 @@ def _theta(theta: float) -> Sym:
 # ---- the symbols of the sentences (known by name only) -------------------------
 
 th, psd, phd, wz, H, I_, J_, D_ = names("theta psidot phidot omega_z H I J D")
+m0, g0, l0, tdd0, V0 = names("m g l thetaddot V")
+
+#: the moment per unit sin(theta) in a sentence: m g l (gravity) or D (applied), by driver
+_MOMENT_OF = {"m g l": m0 * g0 * l0, "D": D_}
+_DRIVERS = tuple(_MOMENT_OF)
 
 
 def _moment_of(driver: str) -> Expr:
     """The moment per unit sin(theta) in a sentence: m g l (gravity) or D (applied)."""
-    m, g, l = names("m g l")
-    return m * g * l if driver == "m g l" else D_
+    return _MOMENT_OF[driver]
 
 
 def _deg(degrees: float) -> Expr:
     """An angle of the text, 90 deg, with the digits it needs."""
     return q(math.radians(degrees), "deg", exact=True)
+
+
+# The sentences that hold no values are built once, here and beside the functions that use
+# them: building their trees again on every solve was a large part of the kind's own time in
+# gyro check.
+_AT_90 = rel(th, "=", _deg(90))  # theta = 90 deg
+_COS_0 = rel(cos_(th), "=", 0)
+_AXIAL_RATE = rel(wz, "=", psd + phd * cos_(th))  # omega_z = psidot + phidot cos(theta), Eq. 11.8
+_DROPPED_TERM = I_ * phd * cos_(th)  # the term of Eq. 11.13 the gyroscopic approximation drops
+
+
+def _conventions(gravity: bool) -> tuple:
+    """Euler angles, the rates and H; with ``gravity`` its potential V (Eq. 11.11)."""
+    return ("Euler angles z-x-z; ", th, " from the upward vertical to the axis through the "
+            "centre of mass",
+            *((", ", rel(V0, "=", _moment_of("m g l") * cos_(th)), " (Eq. 11.11)") if gravity
+              else ()),
+            "; spin ", psd, " is relative to the precessing frame, which turns about the "
+            "vertical at the precession rate ", phd, "; ", H, ": the angular momentum about the "
+            "fixed point; ", _AXIAL_RATE, " (Eq. 11.8); ", I_, " is about the fixed point")
+
+
+_CONVENTIONS = {gravity: _conventions(gravity) for gravity in (True, False)}
+_I_DROPS_OUT = (_AT_90, ": ", _COS_0, ", so the transverse inertia ", I_, " drops out of Eq. "
+                "11.13 and is not needed")
 
 
 def _label(symbol: "str | Expr", label: str) -> "str | Expr":
@@ -157,16 +186,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "I_cg or k_cg (with cg_distance) or a shape (only at theta = 90 deg "
                          "does it drop out)", key="given.I_pivot")
     work.section("Conventions (errata)")
-    gravity = (", ", rel(names("V")[0], "=", _moment_of("m g l") * cos_(th)), " (Eq. 11.11)") \
-        if "moment" not in given and body.l else ()
-    work.text("Euler angles z-x-z; ", th, " from the upward vertical to the axis through the "
-              "centre of mass", *gravity, "; spin ", psd, " is relative to the precessing frame, "
-              "which turns about the vertical at the precession rate ", phd, "; ", H, ": the "
-              "angular momentum about the fixed point; ", rel(wz, "=", psd + phd * cos_(th)),
-              " (Eq. 11.8); ", I_, " is about the fixed point")
+    work.text(*_CONVENTIONS["moment" not in given and bool(body.l)])
     if body.I_pivot is None and cos == 0:
-        work.text(rel(th, "=", _deg(90)), ": ", rel(cos_(th), "=", 0), ", so the transverse "
-                  "inertia ", I_, " drops out of Eq. 11.13 and is not needed")
+        work.text(*_I_DROPS_OUT)
     D, driver = _driver(given, theta, work)
     if not rates:
         if find - {"min_spin"}:
@@ -206,6 +228,23 @@ WITHOUT_THETA = {"precession", "precession_approx", "precession_period", "spin",
 SPREAD_ANGLES = (30.0, 60.0, 90.0)  # deg: how far the exact slow root moves with theta
 
 
+w0 = names("omega")[0]
+_APPROXIMATE_RATE = _moment_of("m g l") / (J_ * w0)  # m g l / (J omega)
+#: what the sentences name, with the spin written psidot or omega_z
+_NO_ANGLE = {symbol: (th, ", the angle of the axis from the upward vertical, is not given; ",
+                      phd, ", the precession rate about the vertical; ", w0, ", the spin (here ",
+                      names(symbol)[0], ")") for symbol in ("psidot", "omega_z")}
+_WHATEVER_THETA = (
+    "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
+    J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
+    rel(phd, "=", _APPROXIMATE_RATE), " whatever ", th, " is, once the ", _DROPPED_TERM,
+    " term of Eq. 11.13 is dropped (exact at ", _AT_90, ", where ", _COS_0, ")")
+_PER_UNIT_SIN = ("per unit ", sin_(th))
+_APPROXIMATION_ONLY = ("no ", th, " given: the answers use the gyroscopic approximation ",
+                       _APPROXIMATE_RATE, ", exact only with the axis horizontal (", _AT_90,
+                       "); the exact roots of Eq. 11.13 need ", th)
+
+
 def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     """No theta: the gyroscopic approximation and its period, and how far the exact roots
     would move with theta (introductory books: Omega = m g l / (J omega), no angle)."""
@@ -229,18 +268,10 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
                          key="given.cg_distance")
     work.section("No angle given: the gyroscopic approximation")
     symbol = {"spin": "psidot", "axial_rate": "omega_z", "precession": "psidot"}[rates[0]]
-    w, mgl = names("omega")[0], _moment_of("m g l")
-    work.text(th, ", the angle of the axis from the upward vertical, is not given; ", phd, ", the "
-              "precession rate about the vertical; ", w, ", the spin (here ", names(symbol)[0],
-              ")")
-    work.text("gravity's moment ", mgl * sin_(th), " turns the horizontal part ",
-              J_ * w * sin_(th), " of the spin angular momentum at ", phd, ", so ",
-              rel(phd, "=", mgl / (J_ * w)), " whatever ", th, " is, once the ",
-              I_ * phd * cos_(th), " term of Eq. 11.13 is dropped (exact at ",
-              rel(th, "=", _deg(90)), ", where ", rel(cos_(th), "=", 0), ")")
+    work.text(*_NO_ANGLE[symbol])
+    work.text(*_WHATEVER_THETA)
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
-                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11",
-                  note=("per unit ", sin_(th)))
+                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=_PER_UNIT_SIN)
     J_v = Sym("J", body.J, "kg m^2")
     rate = rates[0]
     if rate == "precession":
@@ -272,18 +303,23 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     if missing:
         raise InputError(f"{missing[0]} needs the angle theta of the axis from the upward "
                          "vertical (omega_z = psidot + phidot cos(theta))", key="given.theta")
-    work.warn("no ", th, " given: the answers use the gyroscopic approximation ",
-              mgl / (J_ * w), ", exact only with the axis horizontal (", rel(th, "=", _deg(90)),
-              "); the exact roots of Eq. 11.13 need ", th,
-              *_spread(body, rate, given[rate], D, work))
+    work.warn(*_APPROXIMATION_ONLY, *_spread(body, rate, given[rate], D, work))
+
+
+_NEITHER_GIVEN = ("the exact roots need ", th, " and the transverse inertia about the pivot "
+                  "(I_pivot, k_pivot, I_cg or k_cg, or a shape), neither given")
+_AND_I = (" and the transverse inertia ", I_)
+_ANGLE = {degrees: _deg(degrees) for degrees in SPREAD_ANGLES}  # 30 deg, 60 deg, 90 deg
+#: ``phidot_slow at 30 deg``: the exact root at each angle, by its symbol and the angle
+_AT_ANGLE = {(root, degrees): words("at", names(root)[0], angle)
+             for root in ("psidot", "phidot_slow") for degrees, angle in _ANGLE.items()}
 
 
 def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
     """How far the exact slow root moves between 30 and 90 deg, as a clause for the warning."""
     if body.I_pivot is None:
-        work.text("the exact roots need ", th, " and the transverse inertia about the pivot "
-                  "(I_pivot, k_pivot, I_cg or k_cg, or a shape), neither given")
-        return (" and the transverse inertia ", I_)
+        work.text(*_NEITHER_GIVEN)
+        return _AND_I
     I, J = body.I_pivot, body.J
     slow = {}
     for degrees in SPREAD_ANGLES:
@@ -295,23 +331,26 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
             precession_from_axial_rate(I, J, theta, value, D)
         slow[degrees] = min(roots, key=abs) if roots else None
     name = "spin" if rate == "precession" else "slow precession root"
-    work.text("for comparison, the exact " + name + " of Eq. 11.13 (",
-              rel(names("thetaddot")[0], "=", 0), ") with the transverse inertia ",
-              rel(I_, "=", q(I, "kg m^2")), " at three angles:")
-    exact_root = names("psidot" if rate == "precession" else "phidot_slow")[0]
+    work.text("for comparison, the exact " + name + " of Eq. 11.13 (", _THETA_STEADY,
+              ") with the transverse inertia ", rel(I_, "=", q(I, "kg m^2")), " at three angles:")
+    exact_root = "psidot" if rate == "precession" else "phidot_slow"
     for degrees, root in slow.items():
-        work.step(words("at", exact_root, _deg(degrees)), value=root, unit="rad/s",
+        work.step(_AT_ANGLE[exact_root, degrees], value=root, unit="rad/s",
                   note="exact, Eq. 11.13" if root is not None else
                   "no steady precession: below the least spin (Eq. 11.21)")
     exact = slow[90.0]
     if slow[30.0] is None:
         return ("; for these data the exact " + name + " is ", q(exact, "rad/s"), " at ",
-                _deg(90), " and there is none at ", _deg(30), " (the spin is below the least, "
-                "Eq. 11.21)")
+                _ANGLE[90.0], " and there is none at ", _ANGLE[30.0], " (the spin is below the "
+                "least, Eq. 11.21)")
     apart = abs(slow[30.0] - exact) / abs(exact)
     return ("; for these data the exact " + name + " is ", q(slow[30.0], "rad/s"), " at ",
-            _deg(30), " and ", q(exact, "rad/s"), " at ", _deg(90), ", ", _percent(apart, 2),
-            "% apart")
+            _ANGLE[30.0], " and ", q(exact, "rad/s"), " at ", _ANGLE[90.0], ", ",
+            _percent(apart, 2), "% apart")
+
+
+_TORQUE_FREE = (rel(l0, "=", 0), " and no applied moment: a torque-free body, ", rel(D_, "=", 0),
+                ", where ", D_, " is the moment per unit ", sin_(th))
 
 
 def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
@@ -326,8 +365,7 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
         D = work.step("D", Sym("M", M, "N m") / sin_(_theta(theta)), unit="N*m")
         return D, "D"
     if body.l == 0:
-        work.text(rel(names("l")[0], "=", 0), " and no applied moment: a torque-free body, ",
-                  rel(D_, "=", 0), ", where ", D_, " is the moment per unit ", sin_(th))
+        work.text(*_TORQUE_FREE)
         return 0.0, "D"
     work.step("M", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
               * Sym("l", body.l, "m") * sin_(_theta(theta)), unit="N*m",
@@ -335,38 +373,65 @@ def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
     return body.mgl, "m g l"
 
 
+_THETA_STEADY = rel(tdd0, "=", 0)  # thetaddot = 0
+_STEADY_TITLE = ("Steady precession, Eq. 11.13 with ", _THETA_STEADY, " and ", _AXIAL_RATE)
+_PHIDOT_SQUARED = phd ** 2
+
+
+def _spin_quadratic(driver: str) -> tuple:
+    """(J - I) cos(theta) phidot^2 + J psidot phidot - m g l = 0 (Eq. 11.13, thetaddot = 0)."""
+    return (rel((J_ - I_) * cos_(th) * _PHIDOT_SQUARED + J_ * psd * phd - _moment_of(driver), "=",
+                0),)
+
+
+def _axial_quadratic(driver: str) -> tuple:
+    """phidot^2 cos(theta) - gamma phidot + a / 2 = 0 with its gamma and a (Eq. 11.20)."""
+    gamma, a_ = names("gamma a")
+    return (rel(_PHIDOT_SQUARED * cos_(th) - gamma * phd + a_ / 2, "=", 0), ", ",
+            rel(gamma, "=", J_ * wz / I_), ", ", rel(a_, "=", 2 * _moment_of(driver) / I_),
+            "    (Eq. 11.20)")
+
+
+_SPIN_QUADRATIC = {driver: _spin_quadratic(driver) for driver in _DRIVERS}
+_AXIAL_QUADRATIC = {driver: _axial_quadratic(driver) for driver in _DRIVERS}
+#: the least psidot and the least omega_z with a real root (Eq. 11.21 corrected), by driver
+_LEAST_SPIN = {driver: 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_
+               for driver in _DRIVERS}
+_LEAST_AXIAL_RATE = {driver: 2 * sqrt(I_ * _moment_of(driver) * cos_(th)) / J_
+                     for driver in _DRIVERS}
+_NO_PRECESSION = ("no moment: ", rel(phd, "=", 0), " (the body spinning about a fixed axis) also "
+                  "solves the equation; it is no precession and is left out")
+#: "one root: the phidot^2 term vanishes (...)", at theta = 90 deg or with I = J
+_ONE_ROOT = {at_90: ("one root: the ", _PHIDOT_SQUARED, " term vanishes (",
+                     _AT_90 if at_90 else rel(I_, "=", J_), ")") for at_90 in (True, False)}
+_EXACT_AT_90 = ("at ", _AT_90, ", exact")
+
+
 def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float, D: float,
                       driver: str, work: Work) -> None:
     cos = cos_theta(theta)
-    _tdd, _wz, _psd, _phd, _th = names("thetaddot omega_z psidot phidot theta")
-    work.section("Steady precession, Eq. 11.13 with ", rel(_tdd, "=", 0), " and ",
-                 rel(_wz, "=", _psd + _phd * cos_(_th)))
-    moment = _moment_of(driver)
+    work.section(*_STEADY_TITLE)
     if rate == "spin":
         spin = given["spin"]
         a, b = (J - I) * cos, J * spin
-        work.text(rel((J_ - I_) * cos_(th) * phd**2 + J_ * psd * phd - moment, "=", 0))
-        work.text(rel(paren(q(a, "kg m^2")) * phd**2 + paren(q(b, "kg m^2/s")) * phd
+        work.text(*_SPIN_QUADRATIC[driver])
+        work.text(rel(paren(q(a, "kg m^2")) * _PHIDOT_SQUARED + paren(q(b, "kg m^2/s")) * phd
                       - q(D, "N m"), "=", 0))
         roots = precession_from_spin(I, J, theta, spin, D)
-        least, formula = min_spin(I, J, theta, D), 2 * sqrt((I_ - J_) * moment * cos_(th)) / J_
+        least, formula = min_spin(I, J, theta, D), _LEAST_SPIN[driver]
         symbol = "psidot"
     else:
         axial = given["axial_rate"]
-        gamma, a_ = names("gamma a")
-        work.text(rel(phd**2 * cos_(th) - gamma * phd + a_ / 2, "=", 0), ", ",
-                  rel(gamma, "=", J_ * wz / I_), ", ", rel(a_, "=", 2 * moment / I_),
-                  "    (Eq. 11.20)")
+        work.text(*_AXIAL_QUADRATIC[driver])
         J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
         work.step("gamma", J_v * _rate("omega_z", axial) / I_v, unit="rad/s")
         work.step("a", 2 * _driver_tree(D, driver) / I_v, unit="1/s^2")
         roots = precession_from_axial_rate(I, J, theta, axial, D)
-        least, formula = min_axial_rate(I, J, theta, D), 2 * sqrt(I_ * moment * cos_(th)) / J_
+        least, formula = min_axial_rate(I, J, theta, D), _LEAST_AXIAL_RATE[driver]
         symbol, spin = "omega_z", None
     if D == 0 and 0.0 in roots:
         roots = [r for r in roots if r != 0.0]
-        work.text("no moment: ", rel(phd, "=", 0), " (the body spinning about a fixed axis) also "
-                  "solves the equation; it is no precession and is left out")
+        work.text(*_NO_PRECESSION)
         if not roots:
             raise InputError(f"with no moment there is no steady precession at theta = "
                              f"{num(math.degrees(theta))} deg other than phidot = 0 (a "
@@ -389,15 +454,14 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
                                                    names(_least(symbol))[0], "=", formula, "=",
                                                    q(least, "rad/s")), "    (Eq. 11.21)")
     if len(roots) == 1:
-        work.text("one root: the ", phd**2, " term vanishes (",
-                  rel(th, "=", _deg(90)) if abs(cos) < 1e-12 else rel(I_, "=", J_), ")")
+        work.text(*_ONE_ROOT[abs(cos) < 1e-12])
     labels = _labels(roots)
     if abs(cos) == 0 and len(roots) == 1 and D:
         omega = given["spin"] if rate == "spin" else given["axial_rate"]
         M = D * math.sin(theta)
         roots = [work.step("phidot", Sym("M", M, "N m") / (Sym("J", J, "kg m^2") * _rate(
             "psidot", omega)), unit="rad/s", ref="Eq. 11.13",
-            note=("at ", rel(*names("theta"), "=", _deg(90)), ", exact"))]
+            note=_EXACT_AT_90)]
     else:
         for root, label in zip(roots, labels):
             work.step(_label("phidot", label), value=root, unit="rad/s")
@@ -416,14 +480,21 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     _check(I, J, theta, spins, roots, D, work, driver)
 
 
+_SPIN_TITLE = ("Spin for the given precession, Eq. 11.13 with ", _THETA_STEADY, " solved for ", psd)
+#: J psidot phidot + (J - I) cos(theta) phidot^2 = m g l (or D), by driver
+_SPIN_EQUATION = {driver: (rel(J_ * psd * phd + (J_ - I_) * cos_(th) * _PHIDOT_SQUARED, "=",
+                               _moment_of(driver)),) for driver in _DRIVERS}
+_AGAINST = (rel(psd, "<", 0), ": the body spins against the sense that precession alone would "
+            "need; the sign is the answer, not an error")
+
+
 def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float, theta: float,
                              D: float, driver: str, work: Work) -> None:
     cos = cos_theta(theta)
     if "precession" in rates:
         precession = given["precession"]
     else:
-        _wz, _psd, _phd, _th = names("omega_z psidot phidot theta")
-        work.section("Precession from the two rates, ", rel(_wz, "=", _psd + _phd * cos_(_th)))
+        work.section("Precession from the two rates, ", _AXIAL_RATE)
         if abs(cos) < 1e-12:
             raise InputError("at theta = 90 deg omega_z = psidot whatever the precession: give "
                              "the precession itself", key="given.axial_rate")
@@ -438,18 +509,15 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if precession == 0:
         raise InputError("a steady precession of zero needs no spin and no moment: give a "
                          "non-zero precession", key="given.precession")
-    _tdd, _psd = names("thetaddot psidot")
-    work.section("Spin for the given precession, Eq. 11.13 with ", rel(_tdd, "=", 0),
-                 " solved for ", _psd)
-    work.text(rel(J_ * psd * phd + (J_ - I_) * cos_(th) * phd**2, "=", _moment_of(driver)))
+    work.section(*_SPIN_TITLE)
+    work.text(*_SPIN_EQUATION[driver])
     J_v, I_v, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
     spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
                                 * phidot ** 2) / (J_v * phidot), unit="rad/s")
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(_theta(theta)),
                       unit="rad/s", ref="Eq. 11.8")
     if spin < 0:
-        work.text(rel(psd, "<", 0), ": the body spins against the sense that precession alone "
-                  "would need; the sign is the answer, not an error")
+        work.text(*_AGAINST)
     work.answer("precession", "phidot", [precession], "rate")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
@@ -457,12 +525,17 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     _check(I, J, theta, [spin], [precession], D, work, driver)
 
 
+_DH = deriv(H)  # dH/dt
+_MOMENT_TITLE = ("Moment for the motion, Eq. 11.13 with ", _THETA_STEADY, " (",
+                 rel(_DH, "=", names("M")[0]), ")")
+#: the applied moment about the line of nodes, m g l sin(theta) (or D sin(theta)), by driver
+_APPLIED = {driver: _moment_of(driver) * sin_(th) for driver in _DRIVERS}
+
+
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
             driver: str, work: Work) -> None:
     sin = math.sin(theta)
-    _tdd, _H, _M = names("thetaddot H M")
-    work.section("Moment for the motion, Eq. 11.13 with ", rel(_tdd, "=", 0), " (",
-                 rel(deriv(_H), "=", _M), ")")
+    work.section(*_MOMENT_TITLE)
     phidot, th_v = _rate("phidot", precession), _theta(theta)
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th_v), unit="rad/s",
                       ref="Eq. 11.8")
@@ -470,11 +543,17 @@ def _moment(I: float, J: float, theta: float, spin: float, precession: float, D:
     M = work.step("M", phidot * sin_(th_v) * (J_v * _rate("omega_z", axial) - I_v * phidot
                                               * cos_(th_v)), unit="N*m")  # moment_required
     if D:
-        work.text("of which ", rel(_moment_of(driver) * sin_(th), "=", q(D * sin, "N m")),
+        work.text("of which ", rel(_APPLIED[driver], "=", q(D * sin, "N m")),
                   " is supplied; the rest, ", q(M - D * sin, "N m"), ", must be applied")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
     work.answer("moment", "M", [M], "moment")
+
+
+#: (I - J) m g l cos(theta) <= 0: no least spin (Eq. 11.21), by driver
+_NO_LEAST_SPIN = {driver: (rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0), ": real "
+                           "roots for every spin, no least spin (",
+                           rel(names("psidot_min")[0], "=", 0), ")") for driver in _DRIVERS}
 
 
 def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Work) -> None:
@@ -488,9 +567,12 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
         work.step("psidot_min", 2 * sqrt(difference * _driver_tree(D, driver) * cos_value)
                   / J_v, unit="rad/s")
     else:
-        work.text(rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0), ": real roots for "
-                  "every spin, no least spin (", rel(names("psidot_min")[0], "=", 0), ")")
+        work.text(*_NO_LEAST_SPIN[driver])
     work.answer("min_spin", "psidot_min", [least], "rate")
+
+
+#: dH/dt = phidot sin(theta) (J omega_z - I phidot cos(theta)), Eq. 11.13 with thetaddot = 0
+_RATE_OF_H = phd * sin_(th) * (J_ * wz - I_ * phd * cos_(th))
 
 
 def _check(I: float, J: float, theta: float, spins: list[float], precessions: list[float],
@@ -500,14 +582,27 @@ def _check(I: float, J: float, theta: float, spins: list[float], precessions: li
     for spin, precession in zip(spins, precessions):
         rate = moment_required(I, J, theta, spin, precession)
         work.check(rel(phd, "=", q(precession, "rad/s")), ": ",
-                   rel(deriv(H), "=", phd * sin_(th) * (J_ * wz - I_ * phd * cos_(th)), "=",
-                       q(rate, "N m")), "; applied ",
-                   rel(_moment_of(driver) * sin_(th), "=", q(D * math.sin(theta), "N m")))
+                   rel(_DH, "=", _RATE_OF_H, "=", q(rate, "N m")), "; applied ",
+                   rel(_APPLIED[driver], "=", q(D * math.sin(theta), "N m")))
 
 
 def _least(symbol: str) -> str:
     """The least value's symbol: psidot_min, omega_z,min (one subscript)."""
     return f"{symbol},min" if "_" in symbol else f"{symbol}_min"
+
+
+k0, U0, p_phi0, p_psi0, sigma0, t0 = names("k U_eff p_phi p_psi sigma t")
+_STABILITY_TITLE = ("Stability: small changes of ", th, " with ", p_phi0, " and ", p_psi0,
+                    " fixed, ", rel(prime(th, 2) + k0 * th, "=", 0))
+_SQRT_K, _GROWTH = sqrt(k0), exp(sigma0 * t0)  # the frequency, and the growth of an unstable root
+_STABILITY = (
+    rel(k0, "=", fn("U_eff''", th) / I_, "=",
+        ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + _PHIDOT_SQUARED * sin_(th)**2, ">=", 0),
+    " (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady precession of a heavy top about a "
+    "fixed point is a minimum of ", U0, ", stable; a change of ", p_phi0, " or ", p_psi0, " only "
+    "moves it to a neighbouring steady precession; an unstable root (", rel(k0, "<", 0), ") would "
+    "grow as ", _GROWTH, " with the growth rate ", rel(sigma0, "=", sqrt(-k0)), ", and ",
+    rel(sigma0, "=", 0), " for a stable one")
 
 
 def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
@@ -520,40 +615,33 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
                          "one of spin, axial_rate, precession): how an applied moment changes "
                          "with theta is not given", key="find.stability")
     answer = work.answers["precession"]
-    _th, _pph, _pps, _k = names("theta p_phi p_psi k")
-    work.section("Stability: small changes of ", _th, " with ", _pph, " and ", _pps, " fixed, ",
-                 rel(prime(_th, 2) + _k * _th, "=", 0))
-    k, U, p_phi, p_psi, sigma, t = names("k U_eff p_phi p_psi sigma t")
-    work.text(rel(k, "=", fn("U_eff''", th) / I_, "=",
-                  ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + phd**2 * sin_(th)**2, ">=", 0),
-              " (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady precession of a heavy top "
-              "about a fixed point is a minimum of ", U, ", stable; a change of ", p_phi, " or ",
-              p_psi, " only moves it to a neighbouring steady precession; an unstable root (",
-              rel(k, "<", 0), ") would grow as ", exp(sigma * t), " with the growth rate ",
-              rel(sigma, "=", sqrt(-k)), ", and ", rel(sigma, "=", 0), " for a stable one")
+    work.section(*_STABILITY_TITLE)
+    work.text(*_STABILITY)
     words, rates = [], []
     for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
                                     answer.labels or [""] * len(answer.si_values)):
         verdict = top_steady_precession(I, J, theta, phidot, axial)
         work.step(_label("k", label), value=verdict.k, unit="1/s^2", note=(
             verdict.word, ", ", th, " oscillates at ",
-            rel(sqrt(k), "=", q(verdict.frequency, "rad/s"))) if verdict.frequency else
+            rel(_SQRT_K, "=", q(verdict.frequency, "rad/s"))) if verdict.frequency else
             verdict.word)
         if verdict.word == UNSTABLE:
             work.warn("the steady precession ", rel(phd, "=", q(phidot, "rad/s")), " is "
-                      "unstable: a small disturbance grows as ", exp(sigma * t), " with ",
-                      rel(sigma, "=", q(verdict.growth_rate, "1/s")))
+                      "unstable: a small disturbance grows as ", _GROWTH, " with ",
+                      rel(sigma0, "=", q(verdict.growth_rate, "1/s")))
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
     work.answer("growth_rate", "sigma", rates, "rate", answer.labels)
+_APPROXIMATION_TITLE = ("Gyroscopic approximation (the ", _DROPPED_TERM, " term dropped)")
+
+
 def _approximation(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
                    work: Work) -> float:
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    _I, _phd, _th = names("I phidot theta")
-    work.section("Gyroscopic approximation (the ", _I * _phd * cos_(_th), " term dropped)")
+    work.section(*_APPROXIMATION_TITLE)
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
@@ -565,8 +653,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
         if slow:
             apart = abs(value - slow) / abs(slow)
             if apart < 1e-12:
-                work.text("at ", rel(th, "=", _deg(90)), " the approximation is exact: it equals "
-                          "the root ", q(slow, "rad/s"))
+                work.text("at ", _AT_90, " the approximation is exact: it equals the root ",
+                          q(slow, "rad/s"))
             else:
                 work.text("the approximation is ", _percent(apart, 3), "% from the slow root ",
                           q(slow, "rad/s"))
@@ -574,13 +662,17 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     return value
 
 
+_ONLY_THE_APPROXIMATION = (
+    "no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: `precession` "
+    "is the gyroscopic approximation ", names("phidot_approx")[0], ", not an exact root of Eq. "
+    "11.13; the exact roots need ", I_)
+
+
 def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
                       work: Work) -> None:
     """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
     value = _approximation(given, rate, J, theta, D, driver, work)
-    work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
-              "`precession` is the gyroscopic approximation ", names("phidot_approx")[0],
-              ", not an exact root of Eq. 11.13; the exact roots need ", I_)
+    work.warn(*_ONLY_THE_APPROXIMATION)
     cos = cos_theta(theta)
     spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
     work.answer("precession", "phidot", [value], "rate", ["approximation"])
@@ -608,6 +700,21 @@ def _by_root(find: frozenset[str], work: Work) -> None:
             work.answer(key, f"{answer.symbol}_{which}", [value], "rate")
 
 
+_CG_CIRCLE = ("the centre of mass runs round a horizontal circle of radius ", l0 * sin_(th),
+              " at the rate ", phd, " (", th, " constant)")
+F0, a_G0, G0, I_G0, H_G0, F_v0, F_h0 = names("F a_G G I_G H_G F_vertical F_horizontal")
+_NEWTON = ("Newton's second law for the centre of mass, ", rel(F0 + m0 * g0, "=", m0 * a_G0),
+           ", where ", F0, " is the force of the support: it carries the weight and supplies the "
+           "centripetal force")
+_SIZE_OF_F = absolute(F0)  # |F|
+# the check of the pivot force: its moment about G against dH_G/dt (Eq. 11.13 about G)
+_I_G = I_ - m0 * l0**2
+_ABOUT_G = (" the transverse moment about ", G0, " and ", H_G0, " the angular momentum about ",
+            G0, ", ")
+_PIVOT_MOMENT = l0 * (F_v0 * sin_(th) + F_h0 * cos_(th))
+_DH_G, _RATE_OF_H_G = deriv(H_G0), phd * sin_(th) * (J_ * wz - I_G0 * phd * cos_(th))
+
+
 def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
     """Period, centre-of-mass speed and acceleration and the pivot force, root by root."""
     answer = work.answers.get("precession")
@@ -617,8 +724,7 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
     rates, labels = answer.si_values, answer.labels or [""] * len(answer.si_values)
     l = body.l
     work.section("Motion of the centre of mass and the force at the pivot")
-    work.text("the centre of mass runs round a horizontal circle of radius ",
-              names("l")[0] * sin_(th), " at the rate ", phd, " (", th, " constant)")
+    work.text(*_CG_CIRCLE)
     if "precession_period" in find:
         if any(p == 0 for p in rates):
             raise InputError("the precession rate is 0: it never completes a turn",
@@ -641,13 +747,10 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        F, m_, g_, aG = names("F m g a_G")
-        work.text("Newton's second law for the centre of mass, ", rel(F + m_ * g_, "=", m_ * aG),
-                  ", where ", F, " is the force of the support: it carries the weight and "
-                  "supplies the centripetal force")
+        work.text(*_NEWTON)
         values, parts = [], []
-        for i, (p, tag) in enumerate(zip(rates, labels)):
-            up, toward, size = steady.pivot_force(m, g, l, theta, p)
+        forces = [steady.pivot_force(m, g, l, theta, p) for p in rates]  # for the steps and check
+        for i, (p, tag, (up, toward, size)) in enumerate(zip(rates, labels, forces)):
             if i == 0:
                 work.step("F_vertical", Sym("m", m, "kg") * Sym("g", g, "m/s^2"), unit="N",
                           note="upward")
@@ -657,28 +760,23 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                       Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p) ** 2)
             work.step(_label("F_horizontal", tag), Sym("m", m, "kg") * a_G, unit="N",
                       note="toward the precession axis")
-            size = work.step(_label(absolute(F), tag), sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
+            size = work.step(_label(_SIZE_OF_F, tag), sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
                 "F_horizontal", toward, "N") ** 2), unit="N", substitute=False)
             values += [toward, size]
             parts += [f"horizontal{_tag(tag)}", f"magnitude{_tag(tag)}"]
         work.answer("pivot_force", "F", values, "force", parts)
         if body.I_pivot is not None and "moment" not in given_keys(work):
             I_G = body.I_pivot - m * l * l
-            for p in rates:
-                up, toward, _ = steady.pivot_force(m, g, l, theta, p)
+            for p, (up, toward, _) in zip(rates, forces):
                 spin = _spin_for(work, p)
                 axial = spin + p * cos_theta(theta)
                 rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
-                G, I_Gs, H_G, l_, F_v, F_h = names("G I_G H_G l F_vertical F_horizontal")
                 work.check(rel(phd, "=", q(p, "rad/s")), ": moment of the pivot force about ",
-                           G, ", with ", rel(I_Gs, "=", I_ - m_ * l_**2, "=", q(I_G, "kg m^2")),
-                           " the transverse moment about ", G, " and ", H_G, " the angular "
-                           "momentum about ", G, ", ",
-                           rel(l_ * (F_v * sin_(th) + F_h * cos_(th)), "=",
+                           G0, ", with ", rel(I_G0, "=", _I_G, "=", q(I_G, "kg m^2")),
+                           *_ABOUT_G,
+                           rel(_PIVOT_MOMENT, "=",
                                q(l * (up * math.sin(theta) + toward * cos_theta(theta)), "N m")),
-                           "; ", rel(deriv(H_G), "=", phd * sin_(th) * (J_ * wz - I_Gs * phd
-                                                                         * cos_(th)), "=",
-                                     q(rate, "N m")))
+                           "; ", rel(_DH_G, "=", _RATE_OF_H_G, "=", q(rate, "N m")))
 
 
 def _tag(label: str) -> str:

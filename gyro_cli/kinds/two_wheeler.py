@@ -38,6 +38,30 @@ x, y, z = names("x y z")
 m0, g0, h0, v0, R0, N0, F0, G0, theta0 = names("m g h v R N F G theta")
 H0, C0, wp0, Cg0, Cc0 = names("H C omega_p C_g C_c")
 
+# The sentences that hold no values are built once, here: building their trees again on
+# every solve was a large part of the kind's own time in gyro check.
+_LEFT = plus(y)
+_AXES = ("machine axes: ", x, " forward, ", y, " to the left, ", z, " up. Going forward the "
+         "road wheels roll: their spin vector points to the left ", tup(_LEFT), ". The "
+         "engine's points the same way (engine_sense: same) or the other way (opposite).")
+_REACTIVE = (*reactive_couple("machine", "rotors"), ". Couples below are about the "
+             "fore-and-aft line through the contact points, positive overturning the machine "
+             "outward (away from the centre).")
+_ALONG_LEFT = ("along ", _LEFT, " (left) if positive")
+_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotors (Eq. 11.29)
+_CENTRIFUGAL_FORCE = m0 * v0 ** 2 / R0
+_CENTRIFUGAL = ("centrifugal force ", _CENTRIFUGAL_FORCE, " at the centre of mass")
+_HEEL_TITLE = ("Heel: free body of the machine heeled inward by ", theta0)
+_HEEL_FREE_BODY = (
+    "road: normal force ", rel(N0, "=", m0 * g0), " up and friction ",
+    rel(F0, "=", _CENTRIFUGAL_FORCE), " toward the centre, at the contact; ", G0, " at ",
+    h0 * sin(theta0), " inward and ", h0 * cos(theta0), " up from it. Moments about ", G0,
+    " along ", x, ": ", rel(h0 * (F0 * cos(theta0) - N0 * sin(theta0)), "=", deriv(H0), "=",
+                            -wp0 * H0 * cos(theta0)),
+    " (the spin axes tilt by ", theta0, "), that is")
+_HEEL_BALANCE = (rel(m0 * g0 * h0 * sin(theta0), "=", (Cg0 + Cc0) * cos(theta0)),)
+_NET_MOMENT = m0 * g0 * h0 * sin(theta0) - (Cg0 + Cc0) * cos(theta0)
+
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     given = vehicle_data(given, work, 'wheel', 'engine')
@@ -54,11 +78,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                                key="given")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
-    work.text("machine axes: ", x, " forward, ", y, " to the left, ", z, " up. Going forward the "
-              "road wheels roll: their spin vector points to the left ", tup(plus(y)), ". The "
-              "engine's points the same way (engine_sense: same) or the other way (opposite).")
-    work.text(*reactive_couple("machine", "rotors"), ". Couples below are about the fore-and-aft line through the contact "
-              "points, positive overturning the machine outward (away from the centre).")
+    work.text(*_AXES)
+    work.text(*_REACTIVE)
 
     v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
     m_, g_, h_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("h", h, "m")
@@ -75,11 +96,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     wheels, engine = 2 * Sym("I_w", Iw, "kg m^2"), G_ * Sym("I_E", IE, "kg m^2")
     rotors: Expr = wheels + engine if sense == "same" else wheels - engine
     work.step("H", rotors * omega_w, unit="kg m^2/s",
-              note=("along ", plus(y), " (left) if positive"))
+              note=_ALONG_LEFT)
     wp = V.steering_precession(v, R, turn)
     Hv = V.scale(H, V.LEFT)
     work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
-              rel(cross(wp0, H0), "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              rel(_COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the machine, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"),
               ", lifts the " + ("inner side: it overturns the machine outward"
@@ -87,18 +108,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section("Overturning couples, upright")
     C_g = work.step("C_g", rotors * v_ ** 2 / (R_ * r_w), unit="N*m", ref="Eq. 11.29")
-    C_c = work.step("C_c", m_ * v_ ** 2 * h_ / R_, unit="N*m", note=("centrifugal force ",
-                                                           m0 * v0 ** 2 / R0,
-                                                           " at the centre of mass"))
+    C_c = work.step("C_c", m_ * v_ ** 2 * h_ / R_, unit="N*m", note=_CENTRIFUGAL)
 
-    work.section("Heel: free body of the machine heeled inward by ", theta0)
-    work.text("road: normal force ", rel(N0, "=", m0 * g0), " up and friction ",
-              rel(F0, "=", m0 * v0 ** 2 / R0), " toward the centre, at the contact; ", G0, " at ",
-              h0 * sin(theta0), " inward and ", h0 * cos(theta0), " up from it. Moments about ",
-              G0, " along ", x, ": ", rel(h0 * (F0 * cos(theta0) - N0 * sin(theta0)), "=",
-                                         deriv(H0), "=", -wp0 * H0 * cos(theta0)),
-              " (the spin axes tilt by ", theta0, "), that is")
-    work.text(rel(m0 * g0 * h0 * sin(theta0), "=", (Cg0 + Cc0) * cos(theta0)))
+    work.section(*_HEEL_TITLE)
+    work.text(*_HEEL_FREE_BODY)
+    work.text(*_HEEL_BALANCE)
     work.step("theta", atan((Sym("C_g", C_g, "N m") + Sym("C_c", C_c, "N m")) / (m_ * g_ * h_)),
               unit="deg")
     if s.heel < 0:
@@ -106,8 +120,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   "machine leans outward")
     balance = m * g * h * math.sin(s.heel) - (s.gyroscopic_couple + s.centrifugal_couple) * \
         math.cos(s.heel)
-    work.check(rel(m0 * g0 * h0 * sin(theta0) - (Cg0 + Cc0) * cos(theta0), "=",
-                   q(balance, "N m")))
+    work.check(rel(_NET_MOMENT, "=", q(balance, "N m")))
     work.answer("heel_angle", "theta", [s.heel], "angle")
     work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
     work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")

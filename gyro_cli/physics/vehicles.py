@@ -131,8 +131,7 @@ def effect(couple: Vector, vehicle: str, tol: float = 1e-12) -> str:
     size = norm(couple)
     if size == 0 or not math.isfinite(size):
         return "none"
-    x, y, z = (c / size for c in couple)
-    front, back = ENDS[vehicle]
+    x, y, z = couple[0] / size, couple[1] / size, couple[2] / size
     words = []
     if abs(y) > tol:
         if vehicle == "ship":
@@ -155,15 +154,22 @@ def effect(couple: Vector, vehicle: str, tol: float = 1e-12) -> str:
 
 
 def direction(v: Vector) -> Vector | None:
-    """The unit vector along v, exact for overflowing (inf) or underflowing (tiny) v; None if 0."""
-    if any(math.isinf(c) for c in v):
-        v = tuple(math.copysign(1.0, c) if math.isinf(c) else 0.0 for c in v)
-    big = max(abs(c) for c in v)
+    """The unit vector along v, exact for overflowing (inf) or underflowing (tiny) v; None if 0.
+
+    Written out component by component, without generators: the vehicle kinds ask it twice
+    for every effect they name."""
+    x, y, z = v
+    isinf = math.isinf
+    if isinf(x) or isinf(y) or isinf(z):  # the infinite components alone, as +-1
+        x = math.copysign(1.0, x) if isinf(x) else 0.0
+        y = math.copysign(1.0, y) if isinf(y) else 0.0
+        z = math.copysign(1.0, z) if isinf(z) else 0.0
+    big = max(abs(x), abs(y), abs(z))
     if big == 0 or not math.isfinite(big):
         return None
-    v = (v[0] / big, v[1] / big, v[2] / big)
-    size = norm(v)
-    return (v[0] / size, v[1] / size, v[2] / size)
+    x, y, z = x / big, y / big, z / big
+    size = math.sqrt(x * x + y * y + z * z)  # norm((x, y, z))
+    return (x / size, y / size, z / size)
 
 
 def effect_of(precession: Vector, H: Vector, vehicle: str) -> str:
