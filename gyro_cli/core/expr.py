@@ -261,12 +261,18 @@ class Pow(BinOp):
         return base ** power
 
 
-def _ellipk(m: float) -> float:
-    """K(m) = int_0^(pi/2) dx / sqrt(1 - m sin^2 x), by the arithmetic-geometric mean."""
-    a, b = 1.0, math.sqrt(1.0 - m)
+def agm_K(y: float) -> float:
+    """K(m) = int_0^(pi/2) dx / sqrt(1 - m sin^2 x) from y = 1 - m (given exactly where m
+    is near 1), by the arithmetic-geometric mean: pi / (2 M(1, sqrt(y))) (DLMF 19.8.5)."""
+    a, b = 1.0, math.sqrt(y)
     while abs(a - b) > 1e-15 * a:
         a, b = (a + b) / 2, math.sqrt(a * b)
     return math.pi / (2 * a)
+
+
+def _ellipk(m: float) -> float:
+    """K(m), by the arithmetic-geometric mean (agm_K)."""
+    return agm_K(1.0 - m)
 
 
 def _ellipe(m: float) -> float:

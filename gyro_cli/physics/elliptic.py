@@ -11,7 +11,8 @@ are a dozen lines each and as accurate (tests/test_elliptic.py holds them to
 scipy's and to limiting cases at 1e-13).
 
 - K by the arithmetic-geometric mean (DLMF 19.8.5): K = pi / (2 M(1, sqrt(1 - m))),
-  quadratically convergent, exact to a few ulps.
+  quadratically convergent, exact to a few ulps; the one ``ellipk`` of the formulas
+  (core/expr.py) uses.
 - R_J by Carlson's duplication (B. C. Carlson, "Numerical computation of real or
   complex elliptic integrals", Numer. Algorithms 10 (1995) 13-26, Algorithm 3;
   DLMF 19.36(i)), for p > 0, with R_C(1, 1 + e) in closed form. Unlike the AGM
@@ -28,13 +29,11 @@ _RJ_SCALE = (_EPS / 4) ** (-1 / 6)  # Carlson's Q = (r/4)^(-1/6) max|A0 - x|: er
 
 
 def complete_K(y: float) -> float:
-    """K(m) with y = 1 - m given (0 <= y; y = 0 is the logarithmic pole, inf)."""
-    a, g = 1.0, math.sqrt(y)
-    if g == 0.0:
-        return math.inf
-    while abs(a - g) > 2 * _EPS * a:
-        a, g = (a + g) / 2, math.sqrt(a * g)
-    return math.pi / (a + g)
+    """K(m) with y = 1 - m given (0 <= y; y = 0 is the logarithmic pole, inf): the
+    arithmetic-geometric mean the formulas' ``ellipk`` uses (core.expr.agm_K)."""
+    from ..core.expr import agm_K
+
+    return math.inf if y == 0.0 else agm_K(y)
 
 
 def carlson_rj(x: float, y: float, z: float, p: float) -> float:
