@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import os
 import stat
-import tempfile
 from pathlib import Path
 from typing import Iterable
 
@@ -39,6 +38,8 @@ def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | byt
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
     pieces = [text] if isinstance(text, (str, bytes)) else text
+    import tempfile  # here: a solve to the terminal writes no file
+
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=parent)
     except OSError as err:
@@ -161,6 +162,8 @@ def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list
         if not force and (target.exists() or target.is_symlink()):
             raise InputError("exists; not overwritten (use --force to replace it)",
                              file=str(target))
+    import tempfile  # here: a solve to the terminal writes no file
+
     temps: list[str] = []
     placed: list[Path] = []
     try:
