@@ -916,3 +916,20 @@ def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
     assert {let.sym.name for let in lets} >= {"I_O/m", "S_arm", "S_normal", "F_couple", "b/d"}
     for let in lets:
         assert let.body.value == pytest.approx(let.sym.si, rel=1e-9, abs=1e-12), let.sym.name
+
+
+def test_a_steps_init_takes_every_field_of_the_dataclass():
+    """Step's __init__ is written out (core/work.py, _step_init) to store the printed
+    fields directly: it must take exactly the dataclass's fields, in order, with their
+    defaults, or a field added later would be left unset."""
+    import dataclasses
+    import inspect
+
+    from gyro_cli.core.work import Step
+
+    params = list(inspect.signature(Step.__init__).parameters.values())[1:]
+    fields = dataclasses.fields(Step)
+    assert [p.name for p in params] == [f.name for f in fields]
+    assert [p.default for p in params] == [f.default for f in fields]
+    step = Step()
+    assert all(getattr(step, f.name) == f.default for f in fields)
