@@ -48,6 +48,11 @@ class ProblemCheck:
     answers: list[AnswerCheck] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
 
+    def keyed_counts(self) -> tuple[int, int]:
+        """(passed, failed) among the answers the key quotes (what the summary counts)."""
+        passed = sum(1 for a in self.answers if a.keyed and a.passed)
+        return passed, sum(1 for a in self.answers if a.keyed) - passed
+
     @classmethod
     def from_dict(cls, data: dict) -> "ProblemCheck":
         """A problem of a JSON report (``gyro check --format json``), for ``--merge``."""
@@ -89,9 +94,7 @@ class Tally:
                                       "bad_files", "internal_errors", "no_expected"), 0)
 
     def add(self, problem: ProblemCheck) -> None:
-        passed = sum(1 for a in problem.answers if a.keyed and a.passed)
-        failed = sum(1 for a in problem.answers if a.keyed and not a.passed)
-        self.count(problem.status, problem.internal, passed, failed)
+        self.count(problem.status, problem.internal, *problem.keyed_counts())
 
     def count(self, status: str, internal: bool, passed: int, failed: int) -> None:
         """One problem, by what the counts need of it: its status, whether its error is

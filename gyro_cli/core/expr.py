@@ -51,18 +51,21 @@ def num(x: float, sig: int = SIG) -> str:
     return f"{mantissa}e{exponent}" if exponent else mantissa
 
 
-#: the classes of tree nodes an operator takes as they are (every node but a Chain): the
-#: operators look an operand's class up here before calling _node, which checks it whole
+#: the classes of tree nodes taken as operands as they are (every node but a Chain),
+#: looked up by class before the general tests below (most operands are such nodes)
 _OPERANDS: set[type] = set()
 
 
 def _node(x: "Expr | float") -> "Expr":
+    kind = x.__class__
+    if kind in _OPERANDS:
+        return x
+    if kind is float:
+        return Num(x)
     if isinstance(x, Expr):
         if isinstance(x, Chain):
             raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
         return x
-    if x.__class__ is float:  # the common operand, before the general tests
-        return Num(x)
     if isinstance(x, bool) or not isinstance(x, (int, float)):
         raise TypeError(f"not an expression: {x!r}")
     return Num(float(x))
@@ -79,31 +82,31 @@ class Expr:
             _OPERANDS.add(cls)
 
     def __add__(self, other: "Expr | float") -> "Expr":
-        return Add(self, other if other.__class__ in _OPERANDS else _node(other))
+        return Add(self, _node(other))
 
     def __radd__(self, other: "Expr | float") -> "Expr":
-        return Add(other if other.__class__ in _OPERANDS else _node(other), self)
+        return Add(_node(other), self)
 
     def __sub__(self, other: "Expr | float") -> "Expr":
-        return Sub(self, other if other.__class__ in _OPERANDS else _node(other))
+        return Sub(self, _node(other))
 
     def __rsub__(self, other: "Expr | float") -> "Expr":
-        return Sub(other if other.__class__ in _OPERANDS else _node(other), self)
+        return Sub(_node(other), self)
 
     def __mul__(self, other: "Expr | float") -> "Expr":
-        return Mul(self, other if other.__class__ in _OPERANDS else _node(other))
+        return Mul(self, _node(other))
 
     def __rmul__(self, other: "Expr | float") -> "Expr":
-        return Mul(other if other.__class__ in _OPERANDS else _node(other), self)
+        return Mul(_node(other), self)
 
     def __truediv__(self, other: "Expr | float") -> "Expr":
-        return Div(self, other if other.__class__ in _OPERANDS else _node(other))
+        return Div(self, _node(other))
 
     def __rtruediv__(self, other: "Expr | float") -> "Expr":
-        return Div(other if other.__class__ in _OPERANDS else _node(other), self)
+        return Div(_node(other), self)
 
     def __pow__(self, other: "Expr | float") -> "Expr":
-        return Pow(self, other if other.__class__ in _OPERANDS else _node(other))
+        return Pow(self, _node(other))
 
     def __neg__(self) -> "Expr":
         return Neg(self)

@@ -21,8 +21,8 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Sym, absolute
-from ..core.prose import cross, names, paren, plus, q, qvec, rel
-from ..core.vehicle_words import reactive_couple
+from ..core.prose import names, paren, plus, q, qvec, rel
+from ..core.vehicle_words import COUPLE, reactive_couple
 from ..core.work import Work
 
 #: the aeroplane's axes and the symbols its prose names (values are in the steps' trees)
@@ -37,9 +37,8 @@ _AXES = ("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left
 _REACTIVE = (*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
              plus(y), " it dips it.")
 _FORWARD, _AFT = plus(x), -x
-_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotor (Eq. 11.29)
-_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", _COUPLE))
-_REACTION, _SIZE = -paren(_COUPLE), absolute(_COUPLE)
+_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", COUPLE))
+_REACTION, _SIZE = -paren(COUPLE), absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -90,7 +89,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text("couple on the rotor ", rel(_COUPLE, "=", qvec(active, "N m")))
+        work.text("couple on the rotor ", rel(COUPLE, "=", qvec(active, "N m")))
         work.text("reactive couple on the aeroplane ", rel(_REACTION, "=", qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "aeroplane")
         work.text(f"effect on the aeroplane: {words}")

@@ -30,8 +30,8 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Sym, sqrt
-from ..core.prose import cross, names, plus, q, qvec, rel, total, tup
-from ..core.vehicle_words import reactive_couple
+from ..core.prose import names, plus, q, qvec, rel, total, tup
+from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
 from ..core.work import Work, qty
 
 #: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
@@ -51,8 +51,6 @@ _REACTIVE = (*reactive_couple("vehicle", "rotors"), ". Couples are about the for
              "Reactions are the road's vertical forces on each wheel; the centre of mass is "
              "taken midway between the axles and the wheels, so each pair shares equally.")
 _SUM_I_W, _SUM_I_E = total(I_w0), total(I_E0)
-_ALONG_LEFT = ("along ", _LEFT, " (left) if positive")
-_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotors (Eq. 11.29)
 _REACTIONS, _WEIGHT = 2 * R_o0 + 2 * R_i0, m0 * g0  # the check's vertical balance
 _MOMENT_OF_REACTIONS, _COUPLES = x0 * (R_o0 - R_i0), Cg0 + Cc0  # and its moment balance
 _AT_THE_LIMIT = ("at the limiting speed ", v_lim0, ": ",
@@ -121,10 +119,10 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     work.step("omega_p", v_ / R_, unit="rad/s")
     work.section("Vector rule")
     H = work.step("H", equivalent.sym * Sym("omega_w", omega_w, "rad/s"), unit="kg m^2/s",
-                  note=_ALONG_LEFT)
+                  note=ALONG_LEFT)
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
     work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
-              rel(_COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              rel(COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the vehicle, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"), ", "
               + ("overturns it outward (lifts the inner wheels)" if H >= 0 else

@@ -25,8 +25,8 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Num, Sym, absolute, cos, sin
-from ..core.prose import cross, deriv, names, plus, qvec, q, rel
-from ..core.vehicle_words import reactive_couple
+from ..core.prose import deriv, names, plus, qvec, q, rel
+from ..core.vehicle_words import COUPLE, reactive_couple
 from ..core.work import Work
 
 #: the ship's axes and the symbols its prose names (values are in the steps' trees)
@@ -42,11 +42,10 @@ _AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to port (left, lo
 _PLUS_X, _MINUS_X, _PLUS_Y, _MINUS_Y, _PLUS_Z, _MINUS_Z = plus(x), -x, plus(y), -y, plus(z), -z
 _REACTIVE = (*reactive_couple("ship"), ". About ", _MINUS_Y, " it raises the bow; about ",
              _PLUS_Z, " it turns the ship to port.")
-_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotor (Eq. 11.29)
-_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", _COUPLE))
-_NO_ROLLING_COUPLE = (wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(_COUPLE, "=", 0),
+_COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", COUPLE))
+_NO_ROLLING_COUPLE = (wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(COUPLE, "=", 0),
                       ". Rolling gives no gyroscopic couple.")
-_REACTION, _SIZE = -_COUPLE, absolute(_COUPLE)
+_REACTION, _SIZE = -COUPLE, absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
@@ -113,7 +112,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if sense:
         active = V.couple_on_rotor(wp, H)
         reactive = V.reactive_couple(wp, H)
-        work.text("couple on the rotor ", rel(_COUPLE, "=", qvec(active, "N m")))
+        work.text("couple on the rotor ", rel(COUPLE, "=", qvec(active, "N m")))
         work.text("reactive couple on the ship ", rel(_REACTION, "=", qvec(reactive, "N m")))
         words = V.effect_of(wp, H, "ship")
         work.text(f"effect on the ship: {words}")

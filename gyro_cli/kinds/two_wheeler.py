@@ -29,8 +29,8 @@ from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Sym, atan, cos, sin
-from ..core.prose import cross, deriv, names, plus, q, qvec, rel, tup
-from ..core.vehicle_words import reactive_couple
+from ..core.prose import deriv, names, plus, q, qvec, rel, tup
+from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
 from ..core.work import Work
 
 #: the machine's axes and the symbols its prose names (values are in the steps' trees)
@@ -47,8 +47,6 @@ _AXES = ("machine axes: ", x, " forward, ", y, " to the left, ", z, " up. Going 
 _REACTIVE = (*reactive_couple("machine", "rotors"), ". Couples below are about the "
              "fore-and-aft line through the contact points, positive overturning the machine "
              "outward (away from the centre).")
-_ALONG_LEFT = ("along ", _LEFT, " (left) if positive")
-_COUPLE = cross(wp0, H0)  # omega_p x H, the couple on the rotors (Eq. 11.29)
 _CENTRIFUGAL_FORCE = m0 * v0 ** 2 / R0
 _CENTRIFUGAL = ("centrifugal force ", _CENTRIFUGAL_FORCE, " at the centre of mass")
 _HEEL_TITLE = ("Heel: free body of the machine heeled inward by ", theta0)
@@ -96,11 +94,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     wheels, engine = 2 * Sym("I_w", Iw, "kg m^2"), G_ * Sym("I_E", IE, "kg m^2")
     rotors: Expr = wheels + engine if sense == "same" else wheels - engine
     work.step("H", rotors * omega_w, unit="kg m^2/s",
-              note=_ALONG_LEFT)
+              note=ALONG_LEFT)
     wp = V.steering_precession(v, R, turn)
     Hv = V.scale(H, V.LEFT)
     work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
-              rel(_COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
+              rel(COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the machine, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"),
               ", lifts the " + ("inner side: it overturns the machine outward"

@@ -115,9 +115,7 @@ def printed(p: ProblemCheck, fmt: str, junit: bool) -> Printed:
     JUnit testsuite if ``junit``, and its counts."""
     from . import junit as junit_xml
 
-    return Printed(p.error, p.status, p.internal,
-                   sum(1 for a in p.answers if a.keyed and a.passed),
-                   sum(1 for a in p.answers if a.keyed and not a.passed),
+    return Printed(p.error, p.status, p.internal, *p.keyed_counts(),
                    json_line(p) if fmt == "json" else table_rows(p),
                    junit_xml.suite_text(p) if junit else None)
 
