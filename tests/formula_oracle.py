@@ -324,12 +324,8 @@ class _Parser:
         self.expect(close)
         body = items[0] if len(items) == 1 else Tuple(tuple(items))
         node = Group(open_, body)
-        if self.units and isinstance(body, Tuple) and all(_numeric(x) for x in body.items):
-            n = unit_run(self.toks, self.i)
-            if n:
-                unit = _join(self.toks[self.i:self.i + n])
-                self.i += n
-                return Quantity(node, unit)
+        if isinstance(body, Tuple) and all(_numeric(x) for x in body.items):
+            return self._with_unit(node)
         return node
 
 

@@ -158,12 +158,9 @@ def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
 
 
 def _tree_steps(path: Path) -> tuple[dict, dict]:
-    from gyro_cli.core.expr import symbols
-
     result = solve_file(str(path))
     steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
-    syms = {name: s.si for st in steps.values() for name, s in symbols(st.expr).items()}
-    return steps, syms
+    return steps, _symbol_values(result)
 
 
 @pytest.mark.parametrize("name", ["11_3_equinoxes.yaml", "mars_precession.yaml"])
@@ -196,7 +193,7 @@ def test_released_top_trees_agree_with_the_physics(name):
 
     result = solve_file(str(ROOT / "problems" / name))
     steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
-    v = _released_top_data(result)
+    v = _symbol_values(result)
     top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
     start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
                     theta_rate0=v["thetadot0"])
@@ -212,8 +209,9 @@ def test_released_top_trees_agree_with_the_physics(name):
             N.fast_nutation_amplitude(top, omega_z, start.theta0), rel=1e-12)
 
 
-def _released_top_data(result):
-    """The data of the problem as the steps' symbols hold them (SI)."""
+def _symbol_values(result):
+    """The data of the problem as the steps' symbols hold them (SI): each symbol of each
+    tree step, a later step's value of a name over an earlier one's."""
     from gyro_cli.core.expr import symbols
 
     syms = {}
@@ -261,7 +259,6 @@ find: [{find}]
 def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_path):
     """Each step from its tree against the kind's and physics/steady.py's functions, with
     negative rates among them."""
-    from gyro_cli.core.expr import symbols
     from gyro_cli.kinds import steady_precession as K
     from gyro_cli.physics import steady
 
@@ -269,9 +266,7 @@ def test_steady_precession_trees_agree_with_the_physics(theta, rates, find, tmp_
     path.write_text(STEADY_TOP.format(theta=theta, rates=rates, find=find))
     result = solve_file(str(path))
     steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
-    v = {}
-    for s in steps:
-        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    v = _symbol_values(result)
     m = 2.0
     J, I = m * 0.075 ** 2 / 2, m * 0.075 ** 2 / 4 + m * 0.6 ** 2  # disk, parallel axes
     th = v["theta"]
@@ -552,7 +547,6 @@ def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path)
     """Each step from its tree against the kind's float functions (axle_pivot_spin,
     axle_pivot_normal_force, free_from_tilt_and_path, free_from_speed_and_tilt) and
     physics/stability.py's disk_critical_axial_rate."""
-    from gyro_cli.core.expr import symbols
     from gyro_cli.kinds import rolling_disk as K
     from gyro_cli.physics.stability import disk_critical_axial_rate
 
@@ -560,9 +554,7 @@ def test_rolling_disk_trees_agree_with_the_physics(shape, given, find, tmp_path)
     path.write_text(ROLLING.format(shape=shape, given=given, find=find))
     result = solve_file(str(path))
     steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
-    v = {}
-    for s in steps:
-        v |= {k: sym.si for k, sym in symbols(s.expr).items()}
+    v = _symbol_values(result)
     by = {s.symbol: s for s in steps}
     m, g, r, J = v["m"], v["g"], v["r"], v["J"]
     if "precession:" in given:
@@ -639,7 +631,7 @@ def test_released_top_limits_period_and_precession_trees_agree_with_the_physics(
         result = solve_file(str(path))
         _check_equations(report.as_dict(result), "released_top")
         steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps}
-        v = _released_top_data(result)
+        v = _symbol_values(result)
         top = N.Top(I=v["I"], J=v["J"], mgl=v["mgl"])
         start = N.Start(theta0=v["theta0"], spin=v["psidot"], precession0=v["phidot0"],
                         theta_rate0=v["thetadot0"])
@@ -816,7 +808,7 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
     result = solve_file(str(path))
     steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
     by = {s.symbol: s.value for s in steps}
-    v = _released_top_data(result)
+    v = _symbol_values(result)
     th = v.get("theta", math.pi / 2)
     J, I = v["J"], v.get("I", 0.0)
     if "psidot" in by and "v" in v and "r_w" in v:
@@ -893,7 +885,7 @@ def test_swinging_rotor_trees_agree_with_the_physics(given, tmp_path):
     result = solve_file(str(path))
     steps = [s for sec in result.solution.sections for s in sec.steps if s.expr is not None]
     by = {s.symbol: s for s in steps}
-    v = _released_top_data(result)
+    v = _symbol_values(result)
     m, g, L, d, p = v["m"], v["g"], v["L"], v["d"], v["p"]
     th0, th = v["theta0"], v["theta"]
     J, I_G = v["J"], by["I_G"].value
