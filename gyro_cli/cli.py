@@ -313,15 +313,17 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
             fail("--merge joins JSON reports: it goes with --format, --junit and --strict only")
+        found = None
         if junit_file is not None or html_file is not None:
             from .solving.paths import problem_files
 
-            _outputs_apart(problem_files(paths)[0], junit=junit_file, html=html_file)
+            found = problem_files(paths)  # collected once: for this and for the run
+            _outputs_apart(found[0], junit=junit_file, html=html_file)
             if junit_file and html_file and os.path.abspath(junit_file) == \
                     os.path.abspath(html_file):
                 fail("--junit and --html name the same file")
         _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or _cpus(), timeout,
-                   shard, merge)
+                   shard, merge, found)
     if junit_file or strict or html_file or jobs or shard or merge:
         fail("--junit, --html, --strict, --jobs, --shard and --merge go with checking the "
              "answer key, not with --answers")
@@ -354,7 +356,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
 def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
                html_file: str | None, force: bool, jobs: int, timeout: float,
-               shard: str | None, merge: bool) -> None:
+               shard: str | None, merge: bool,
+               found: tuple[list[str], list[tuple[str, str]]] | None = None) -> None:
     """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
     as it comes, in the files' order, then the summary; exits with the run's code."""
     from itertools import chain
@@ -371,7 +374,7 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         if merge:
             results, shards = map(printed, checking.merged(paths, strict)), None
         else:
-            files, missing = checking.collect(paths)
+            files, missing = checking.collect(paths, found)
             if shard:
                 k, n = shards = checking.parse_shard(shard)
                 files = [f for f in files if checking.shard_of(f, n) == k]
@@ -385,7 +388,8 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                 results = map(printed, report.run.problems)
             else:
                 # each file's report text is made where it is checked: in the workers
-                checked = checking.checks(files, strict, jobs, timeout, then=printed)
+                checked = checking.checks(files, strict, jobs, timeout, then=printed,
+                                          idle=sys.stdout.flush)
                 results = chain(map(printed, missing), checked)
         if junit_file:
             from .core.files import refuse_special
@@ -397,14 +401,16 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
     spool = junit.Spool() if junit_file else None
     stream = check_report.JsonStream() if fmt == "json" else None
     click.echo(stream.head() if stream else check_report.table_head(), nl=False)
+    write = sys.stdout.write  # flushed when the next result is not ready (idle), not per file
     try:
         for problem in results:
             if problem.error:
+                sys.stdout.flush()  # the report so far, then its error on stderr
                 click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
             tally.count(problem.status, problem.internal, problem.passed, problem.failed)
             if spool:
                 spool.add_text(*problem.junit)
-            click.echo(stream.line(problem.report) if stream else problem.report, nl=False)
+            write(stream.line(problem.report) if stream else problem.report)
     finally:
         if checked is not None:
             checked.close()  # a reader that left, or Ctrl-C: the workers end now

@@ -196,6 +196,33 @@ def test_a_file_that_hangs_is_stopped_at_the_time_limit(monkeypatch, tmp_path, r
     assert [e.get("type") for e in root.iter("error")] == ["InternalError"]
 
 
+@pytest.mark.parametrize("how", ["crash", "hang"])
+def test_the_failed_file_is_found_inside_a_batch(monkeypatch, tmp_path, how):
+    """Workers reply once per batch (pool.BATCH files): a crash or a hang in the middle
+    of a batch is still laid at its own file, the files before it in the batch (checked,
+    their reply lost with the worker) and after it are checked again, each once in the
+    output, in order."""
+    files = _steady_bank(tmp_path, 40)  # 2 jobs: batches of 10 files
+    bad = files[13]  # the fourth file of the second batch
+    real = check.check_file
+
+    def failing(path, strict=False):
+        if path == bad:
+            if how == "crash":
+                faulthandler.disable()
+                os.kill(os.getpid(), signal.SIGSEGV)
+            time.sleep(120)
+        return real(path, strict)
+
+    monkeypatch.setattr(check, "check_file", failing)
+    results = list(check.checks(files, jobs=2, timeout=3 if how == "hang" else 60))
+    assert [p.file for p in results] == files
+    assert [p.file for p in results if p.status != "pass"] == [bad]
+    assert results[13].internal
+    assert ("died (killed by signal 11)" if how == "crash" else "time limit of 3 s") \
+        in results[13].error
+
+
 def test_junit_spool_is_the_document_of_the_whole_run(bank):
     """The spooled JUnit parses, and its totals are the sums over its suites."""
     files = check.collect([str(bank / "b")])[0]

@@ -34,12 +34,15 @@ from .tolerance import Tolerance, tolerance_for, validate_tolerance
 
 # ---- the runner -------------------------------------------------------------
 
-def collect(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[ProblemCheck]]:
+def collect(paths: list[str] | tuple[str, ...],
+            found: tuple[list[str], list[tuple[str, str]]] | None = None,
+            ) -> tuple[list[str], list[ProblemCheck]]:
     """Problem files from files, directories and globs (solving.paths), with each path
-    that names nothing as an error entry."""
+    that names nothing as an error entry. ``found``: ``problem_files(paths)`` if the
+    caller has it already."""
     from ..solving.paths import problem_files
 
-    files, missing = problem_files(paths)
+    files, missing = found if found is not None else problem_files(paths)
     return files, [ProblemCheck(path, status="error", error=message) for path, message in missing]
 
 
@@ -241,10 +244,12 @@ def crashed(path: str, exitcode: int | None) -> ProblemCheck:
 
 def checks(files: list[str], strict: bool = False, jobs: int = 1,
            timeout: float | None = TIMEOUT,
-           then: Callable[[ProblemCheck], Any] | None = None) -> Iterator[Any]:
+           then: Callable[[ProblemCheck], Any] | None = None,
+           idle: Callable[[], Any] | None = None) -> Iterator[Any]:
     """Each file's ProblemCheck, in the order of ``files``, as soon as it is known; or,
     given ``then``, ``then`` of it, applied where the file was checked (so a worker
-    hands back what the caller makes of a result, e.g. its report text).
+    hands back what the caller makes of a result, e.g. its report text). ``idle()`` is
+    called when the next result is not ready yet (the caller flushes its output).
 
     ``jobs`` > 1 spreads the files over that many worker processes (checking/pool.py);
     then a file that crashes its worker or outlasts ``timeout`` costs only that file.
@@ -269,9 +274,11 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
             yield from pool.pooled(
                 files, lambda path: finish(check_file(path, strict)), min(jobs, len(files)),
                 timeout, lambda path, limit: finish(timed_out(path, limit)),
-                lambda path, code: finish(crashed(path, code)))
+                lambda path, code: finish(crashed(path, code)), idle)
             return
-    for path in files:
+    for i, path in enumerate(files):
+        if i and idle is not None:
+            idle()
         yield finish(check_in_time(path, strict, timeout))
 
 

@@ -1,12 +1,18 @@
 """`gyro check --jobs N`: problem files checked by N worker processes, results in order.
 
 Each worker is a forked copy of this process (modules already imported, the unit
-table already read) that takes a small batch of paths, checks them one by one
-(``work``, i.e. ``check.check_file``) and sends each result back as soon as it
-is known. The parent hands the results on in the files' order, holding only those
-that finished ahead of a slower file; it never sends work more than ``AHEAD``
-files past the first unfinished one, so memory stays flat however many files
-there are.
+table already read) that takes a batch of paths, checks them one by one (``work``,
+i.e. ``check.check_file``) and sends their results back in one reply; it holds a
+second batch in its pipe, so it never waits for the parent. The parent hands the
+results on in the files' order, holding only those that finished ahead of a slower
+file; it never sends work more than ``AHEAD`` files past the first unfinished one,
+so memory stays flat however many files there are. One message per batch, not per
+file: the parent wakes a sixteenth as often, and its time is the workers' too on a
+machine with as many cores as workers.
+
+Which file is under way, and since when, the worker writes in memory it shares with
+the parent (two numbers per file, no message), so the time limit still applies to
+each file and a crash is still laid at the right file.
 
 A file that takes longer than the time limit, or that kills its worker (a crash
 in compiled code), costs only that file: the worker is ended, the file is
@@ -19,6 +25,8 @@ Where fork is not available (Windows), the files are checked in this process.
 from __future__ import annotations
 
 import collections
+import math
+import mmap
 import multiprocessing
 import signal
 import time
@@ -29,16 +37,28 @@ from typing import Callable, TypeVar
 Result = TypeVar("Result")
 
 AHEAD = 256  # files sent out beyond the first unfinished one, at most
-BATCH = 8  # files per message to a worker, at most
+BATCH = 16  # files per message to a worker (and per reply), at most
+DONE, STARTED = 0, 1  # a worker's progress: files finished, when the file under way began
+IDLE = math.inf  # STARTED between batches: no file under way
 
 
-def _work(conn: Any, work: Callable[[str], Any]) -> None:
-    """A worker's loop: a batch of paths in, one result out per file, until None."""
+def _work(conn: Any, work: Callable[[str], Any], progress: Any) -> None:
+    """A worker's loop: a batch of paths in, their results out in one reply, until None.
+
+    Before each file it writes in shared memory when the file began, and after it how
+    many it has finished, so the parent knows which file outlasts the time limit or
+    kills the process without a message per file."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    clock = time.monotonic
     try:
         while (batch := conn.recv()) is not None:
+            results = []
             for path in batch:
-                conn.send(work(path))
+                progress[STARTED] = clock()
+                results.append(work(path))
+                progress[DONE] += 1
+            progress[STARTED] = IDLE
+            conn.send(results)
     except (EOFError, BrokenPipeError, KeyboardInterrupt):
         pass
     finally:
@@ -50,20 +70,35 @@ def _work(conn: Any, work: Callable[[str], Any]) -> None:
 class _Worker:
     def __init__(self, context: Any, work: Callable[[str], Any]) -> None:
         self.conn, child = context.Pipe()
-        self.process = context.Process(target=_work, args=(child, work), daemon=True)
+        # DONE, STARTED: two doubles in memory shared with the child (an anonymous shared
+        # mapping made before the fork: no file, so no writable folder needed)
+        self.progress = memoryview(mmap.mmap(-1, 16)).cast("d")
+        self.progress[STARTED] = IDLE
+        self.process = context.Process(target=_work, args=(child, work, self.progress),
+                                       daemon=True)
         self.process.start()
         child.close()
-        self.batch: collections.deque[int] = collections.deque()  # indices sent, unanswered
-        self.since = time.monotonic()  # when its current file started
+        self.fd = self.conn.fileno()
+        self.batches: collections.deque[list[int]] = collections.deque()  # sent, unanswered
+        self.answered = 0  # files whose results have come back
+
+    @property
+    def pending(self) -> int:
+        return sum(len(b) for b in self.batches)
 
     def send(self, indices: list[int], files: list[str]) -> None:
-        if not self.batch:  # else the next batch waits behind the file under way
-            self.since = time.monotonic()
-        self.batch.extend(indices)
+        self.batches.append(indices)
         try:
             self.conn.send([files[i] for i in indices])
         except OSError:  # it has died: its end of the pipe reads as closed, and says so
             pass
+
+    def current(self) -> int:
+        """How many of its unanswered files it has finished: the next is the one under way."""
+        return int(self.progress[DONE]) - self.answered
+
+    def unanswered(self) -> list[int]:
+        return [i for batch in self.batches for i in batch]
 
     def stop(self, kill: bool = False) -> int | None:
         """End the process (at once if ``kill``) and return its exit code."""
@@ -89,62 +124,85 @@ def forks() -> bool:
 
 def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: float | None,
            timed_out: Callable[[str, float], Result],
-           crashed: Callable[[str, int | None], Result]) -> Iterator[Result]:
+           crashed: Callable[[str, int | None], Result],
+           idle: Callable[[], Any] | None = None) -> Iterator[Result]:
     """``work(path)`` of each file in ``jobs`` forked workers, in the order of ``files``;
     ``timed_out(path, timeout)`` or ``crashed(path, exit code)`` for a file that outlasts
-    the time limit or kills its worker."""
-    from multiprocessing.connection import wait
+    the time limit or kills its worker. ``idle()``, if given, is called before waiting
+    for a worker when results were handed on since the last wait (the caller flushes
+    its output then: one write per wake-up, not one per file)."""
+    import select
 
     context = multiprocessing.get_context("fork")
+    poller = select.poll()  # one for the run: polled workers change by (un)registering
+    polled: dict[int, _Worker] = {}
+    handed_on = False
     queue = collections.deque(range(len(files)))  # indices not yet sent
     done: dict[int, Result] = {}  # finished ahead of the next one to hand on
     next_out = 0
     workers = [_Worker(context, work) for _ in range(jobs)]
     try:
         while next_out < len(files):
-            for worker in workers:  # keep every worker supplied, within the window
-                if len(worker.batch) <= 1 and queue and queue[0] < next_out + AHEAD:
+            for worker in workers:  # two batches each (one under way, one waiting), in the window
+                while len(worker.batches) < 2 and queue and queue[0] < next_out + AHEAD:
                     size = max(1, min(BATCH, (len(files) - next_out) // (2 * jobs)))
                     take = []
                     while queue and len(take) < size and queue[0] < next_out + AHEAD:
                         take.append(queue.popleft())
                     worker.send(take, files)
-            busy = [w for w in workers if w.batch]
+            busy = {w.fd: w for w in workers if w.batches}
+            for fd in polled.keys() - busy.keys():
+                poller.unregister(fd)
+            for fd in busy.keys() - polled.keys():
+                poller.register(fd, select.POLLIN)
+            polled = busy
             wait_for = None
             if timeout and busy:
+                # a worker between batches has no file under way: look again within a second
                 now = time.monotonic()
-                wait_for = max(0.0, min(w.since + timeout - now for w in busy))
-            ready = wait([w.conn for w in busy], wait_for)
+                wait_for = max(0.0, min(min(w.progress[STARTED] + timeout, now + 1.0) - now
+                                        for w in busy.values()))
+            ready: set[int] = set()
+            if handed_on and idle is not None:
+                ready = {fd for fd, _ in poller.poll(0)}
+                if not ready:
+                    idle()
+                    handed_on = False
+            if not ready:
+                ready = {fd for fd, _ in poller.poll(
+                    None if wait_for is None else math.ceil(wait_for * 1000))}
             for i, worker in enumerate(workers):
-                if not worker.batch:
+                if not worker.batches:
                     continue
                 failed = None
-                if worker.conn in ready:
-                    try:  # every result already waiting, not one per wake-up
+                if worker.fd in ready:
+                    try:  # every reply already waiting, not one per wake-up
                         while True:
-                            done[worker.batch[0]] = worker.conn.recv()
-                            worker.batch.popleft()
-                            if not worker.batch or not worker.conn.poll():
+                            results = worker.conn.recv()
+                            batch = worker.batches.popleft()
+                            done.update(zip(batch, results))
+                            worker.answered += len(batch)
+                            if not worker.batches or not worker.conn.poll():
                                 break
                     except (EOFError, OSError):
-                        failed = crashed(files[worker.batch[0]], worker.stop())
+                        failed = crashed
                     else:
-                        worker.since = time.monotonic()
                         continue
-                elif timeout and time.monotonic() - worker.since >= timeout:
-                    worker.stop(kill=True)
-                    failed = timed_out(files[worker.batch[0]], timeout)
-                if failed is not None:  # the file that failed, then the rest back to the queue
-                    done[worker.batch.popleft()] = failed
-                    queue.extendleft(reversed(worker.batch))
+                elif timeout and time.monotonic() - worker.progress[STARTED] >= timeout:
+                    failed = timed_out
+                if failed is not None:
+                    # the file under way fails; the rest (finished or not) go back to the queue
+                    left = worker.unanswered()
+                    k = min(max(worker.current(), 0), len(left) - 1)
+                    code = worker.stop(kill=True)
+                    done[left[k]] = crashed(files[left[k]], code) if failed is crashed \
+                        else timed_out(files[left[k]], timeout)
+                    queue.extendleft(reversed(left[:k] + left[k + 1:]))
                     workers[i] = _Worker(context, work)
-            handed = time.monotonic()
             while next_out in done:
                 yield done.pop(next_out)
                 next_out += 1
-            waited = time.monotonic() - handed  # the reader's time, not the workers'
-            for worker in workers:
-                worker.since += waited
+                handed_on = True
     finally:
         for worker in workers:
             worker.stop(kill=next_out < len(files))
