@@ -68,11 +68,11 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         dimension = kind.answer(name).dimension
         values = parse_expected(raw, dimension, f"expected.{name}")
         wanted[name] = (values, tolerance_for(problem.tolerance, name, dimension, answer_names))
-    find = dict(problem.find)
-    for name in wanted:
-        find.setdefault(name, None)
+    if any(name not in problem.find for name in wanted):  # asked for too, in its SI unit
+        problem = dataclasses.replace(problem, find=problem.find | {
+            name: None for name in wanted if name not in problem.find})
     # Solved even without expected answers: a file that cannot be solved is a bad file.
-    solved = solve(dataclasses.replace(problem, find=find))
+    solved = solve(problem)
     result.warnings = list(solved.solution.warnings)
     if not wanted and not step_values:
         result.status = "no expected answers"

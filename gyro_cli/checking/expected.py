@@ -22,14 +22,15 @@ class Expected:
     factor: float = 1.0  # SI per written unit (linear units only)
 
 
-_FACTORS: dict[tuple[str, str], float] = {}
+# (unit, dimension) -> (SI per unit, the unit as printed): pint asked once per unit
+_UNITS: dict[tuple[str, str], tuple[float, str]] = {}
 
 
 def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     """One expected value in the answer's dimension; a word for word answers.
 
-    The SI factor of each unit is cached, so checking many files asks pint
-    once per unit, not once per value.
+    The SI factor and printed form of each unit are cached, so checking many files asks
+    pint once per unit, not once per value.
     """
     if dimension is None:
         if not isinstance(raw, str) or not raw.strip():
@@ -38,23 +39,34 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
     if isinstance(raw, (dict, list)):
         raise InputError(f"expected a quantity such as '45.1 rpm', got a "
                          f"{'mapping' if isinstance(raw, dict) else 'nested list'}", key=key)
-    number, unit = _guarded(lambda t, d, k: units._split(t, k, (d, False)), raw, dimension, key)
-    factor = _FACTORS.get((unit, dimension))
-    if factor is None:
+    number, unit = _guarded(_split, raw, dimension, key)
+    known = _UNITS.get((unit, dimension))
+    if known is None:
         _guarded(units.parse, raw, dimension, key)  # every check, with the text as written
         factor, _ = _guarded(units.parse, f"1 {unit}" if unit else 1, dimension, key)
-        _FACTORS[(unit, dimension)] = factor
+        known = factor, units.display(unit, dimension, key)
+        if len(_UNITS) < 4096:
+            _UNITS[(unit, dimension)] = known
+    factor, printed = known
     si = number * factor
     if not math.isfinite(si):
         raise InputError(f"{shown(raw)} is not a finite number", key=key)
     text = " ".join(raw.split()) if isinstance(raw, str) else f"{raw:g}"
-    return Expected(text, si, number, units.display(unit, dimension, key), factor)
+    return Expected(text, si, number, printed, factor)
+
+
+def _split(text: Any, dimension: str, key: str) -> tuple[float, str]:
+    return units._split(text, key, (dimension, False))
 
 
 def _guarded(parse: Any, text: Any, dimension: str | None, key: str) -> Any:
-    from ..solving.problem import guarded
+    global _guard
+    if _guard is None:
+        from ..solving.problem import guarded as _guard
+    return _guard(parse, text, dimension, key)
 
-    return guarded(parse, text, dimension, key)
+
+_guard: Any = None  # solving.problem.guarded, imported on first use
 
 
 def parse_expected(raw: Any, dimension: str | None, key: str) -> list[Expected]:
