@@ -229,6 +229,41 @@ def test_a_step_that_overflows_is_bad_input(run, write, monkeypatch):
     everywhere(run, PROBLEMS / "11_5.yaml", "given", "the step Q is not a finite number")
 
 
+@pytest.mark.parametrize("bad", [float("inf"), float("-inf")])
+def test_a_symbol_that_overflows_in_a_tree_is_bad_input(run, write, monkeypatch, bad):
+    """A step whose value is finite (1/inf = 0) but whose formula shows a symbol that
+    overflowed: the solve made a symbol that is not finite, so its trees are walked and
+    the step refused. (A solve that made none skips the walk: Sym.unfinite.)"""
+    import dataclasses
+    import importlib
+
+    from gyro_cli.core.expr import Num, Sym
+
+    module = importlib.import_module("gyro_cli.kinds.gyroscopic_torque")
+    real = module.KIND.solve
+
+    def overflowing(given, find, work):
+        real(given, find, work)
+        work.step("Q", Num(1.0) / Sym("F_big", bad, "N"), unit="1/N")
+
+    monkeypatch.setattr(module, "KIND", dataclasses.replace(module.KIND, solve=overflowing))
+    everywhere(run, PROBLEMS / "11_5.yaml", "given", "the step Q overflows for these data")
+
+
+def test_only_a_symbol_made_with_a_value_that_is_not_finite_is_counted():
+    """Sym.unfinite counts inf and a nan made by arithmetic, not NAMED (a symbol only named
+    in a definition) nor any finite value."""
+    from gyro_cli.core.expr import NAMED, Sym
+
+    before = Sym.unfinite
+    for value in (0.0, -2.5, 1e308, 5e-324, 3, NAMED):
+        Sym("x", value)
+    assert Sym.unfinite == before
+    for value in (float("inf"), -float("inf"), float("inf") * 0, float("nan"), "text"):
+        Sym("x", value)
+    assert Sym.unfinite == before + 5
+
+
 def test_check_directory_lists_every_file_with_one_line_per_bad_file(run, tmp_path):
     good = (PROBLEMS / "11_3.yaml").read_text()
     (tmp_path / "a_good.yaml").write_text(good)

@@ -37,6 +37,10 @@ SHOWN = {"deg": (math.pi / 180, "rad"),
          "yr/deg": (365.25 * 86400.0 * 180 / math.pi, "s/rad"),
          "d": (86400.0, "s")}
 
+#: the value of a symbol only named, in a definition (a `Let`'s body): its value is not
+#: needed. This very object (``math.nan``), so it is told from a nan made by an overflow.
+NAMED = math.nan
+
 #: kinds' spellings of units, as printed
 UNIT_TEXT = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}
 
@@ -126,8 +130,18 @@ class Sym(Expr):
 
     __slots__ = ("name", "si", "unit")
 
+    #: how many symbols have been made with a value that is not finite, other than
+    #: `NAMED` (an overflow in the data): a solve during which this did not change made
+    #: no such symbol, so its steps' trees need no walk to find one (solving/solve.py)
+    unfinite = 0
+
     def __init__(self, name: str, si: float, unit: str = "") -> None:
         self.name, self.si, self.unit = name, si, unit
+        try:
+            if si - si != 0 and si is not NAMED:  # inf or nan: inf - inf is nan
+                Sym.unfinite += 1
+        except TypeError:  # not a number: counted, so the walk looks at it
+            Sym.unfinite += 1
 
     def __repr__(self) -> str:
         return f"Sym({self.name!r}, {self.si!r}, {self.unit!r})"

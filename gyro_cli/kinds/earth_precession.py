@@ -23,7 +23,7 @@ from functools import cache, reduce
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Const, Expr, Let, Num, Sym, absolute, cos, sin
+from ..core.expr import NAMED, PI, Const, Expr, Let, Num, Sym, absolute, cos, sin
 from ..core.prose import cross, dot, names, paren, q, rel
 from ..core.work import Work, num
 from ..physics.earth_precession import ARCSEC, G, JULIAN_YEAR
@@ -125,7 +125,7 @@ def _preset_lines() -> dict[str, tuple]:
     return lines
 
 
-NAN = float("nan")  # a symbol named in a definition, its value not needed
+NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 def _ellipticity(values: dict, work: Work) -> float:

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Let, Sym, absolute, cos, exp, sin, sqrt
+from ..core.expr import NAMED, PI, Let, Sym, absolute, cos, exp, sin, sqrt
 from ..core.prose import cross, deriv, names, prime, q, rel, tup
 from ..core.work import Work, num, qty
 
@@ -42,7 +42,7 @@ b0, rho0, v0, G0, wz0, IG0, HG0, sig0, t0, bd0, vc0 = names(
     "beta rho v G omega_z I_G H_G sigma t betadot v_contact")
 
 RPM = 2 * math.pi / 60
-NAN = float("nan")  # a symbol named in a definition, its value not needed
+NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 # ---- physics on floats ------------------------------------------------------

@@ -22,13 +22,13 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
 from ..physics.algebra import cos_theta, quadratic_roots
-from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, exp, sin as sin_, sqrt
+from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, cos as cos_, exp, sin as sin_, sqrt
 from ..core.prose import deriv, fn, names, paren, prime, q, rel, text as prose_text, words
 from ..core.work import Work, num, qty
 from ..physics import steady
 
 RPM = 2 * math.pi / 60
-NAN = float("nan")  # a symbol named in a definition, its value not needed
+NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 def _driver_tree(D: float, driver: str) -> Expr:

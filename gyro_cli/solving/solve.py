@@ -53,6 +53,7 @@ def solve(problem: Problem) -> Result:
 
 
 def _solve(problem: Problem) -> Result:
+    unfinite = Sym.unfinite  # symbols made so far with a value that is not finite
     work = Work()
     work.given.extend(_given_lines(problem))
     kind = problem.kind
@@ -81,7 +82,7 @@ def _solve(problem: Problem) -> Result:
     body = problem.given.body
     if body is not None and body.per_kg:  # worked per kilogram: no answer that scales with m
         _drop_mass_answers(solution, problem.find)
-    _all_finite(solution)
+    _all_finite(solution, trees=Sym.unfinite != unfinite)
     answers = {}
     for name, unit in problem.find.items():
         answer = solution.answers.get(name)
@@ -133,9 +134,12 @@ def _drop_mass_answers(solution, find) -> None:
 _NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
 
 
-def _all_finite(solution: Solution) -> None:
+def _all_finite(solution: Solution, trees: bool = True) -> None:
     """Every number in the worked answer is finite: an overflow in a step (1e200 rpm
-    squared) is bad input for this kind, not a worked answer with inf in it."""
+    squared) is bad input for this kind, not a worked answer with inf in it.
+
+    ``trees``: whether to walk the steps' trees for a symbol whose value is not finite;
+    needless when the solve made no such symbol (`Sym.unfinite` did not change)."""
     finite: set[int] = set()  # the symbols found finite so far (the steps share many)
     for section in solution.sections:
         for step in section.steps:
@@ -144,7 +148,7 @@ def _all_finite(solution: Solution) -> None:
                 raise InputError(f"the step {where} is not a finite number for these data "
                                  "(overflow or a degenerate case); check the magnitudes and "
                                  "units", key="given")
-            if step.expr is not None:  # a tree: its symbols' values, no text to read
+            if trees and step.expr is not None:  # a tree: its symbols' values, no text
                 if not _symbols_finite(step.expr, finite):
                     raise InputError(f"the step {where} overflows for these data; check "
                                      "the magnitudes and units", key="given")
