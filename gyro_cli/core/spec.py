@@ -43,4 +43,9 @@ class Kind:
         return next((p for p in self.params if p.name == name), None)
 
     def answer(self, name: str) -> AnswerSpec | None:
-        return next((a for a in self.answers if a.name == name), None)
+        by_name = self.__dict__.get("_answers_by_name")  # made on first use, per instance
+        if by_name is None:
+            by_name = self.__dict__["_answers_by_name"] = {}
+            for a in reversed(self.answers):  # the first of a name, as a search finds it
+                by_name[a.name] = a
+        return by_name.get(name) if isinstance(name, str) else None
