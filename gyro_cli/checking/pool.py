@@ -27,12 +27,14 @@ from __future__ import annotations
 import collections
 import math
 import mmap
-import multiprocessing
+import os
+import pickle
+import select
 import signal
+import struct
+import sys
 import time
-from typing import Any, Iterator
-
-from typing import Callable, TypeVar
+from typing import Any, Callable, Iterator, TypeVar
 
 Result = TypeVar("Result")
 
@@ -42,7 +44,7 @@ DONE, STARTED = 0, 1  # a worker's progress: files finished, when the file under
 IDLE = math.inf  # STARTED between batches: no file under way
 
 
-def _work(conn: Any, work: Callable[[str], Any], progress: Any) -> None:
+def _work(conn: "_Channel", work: Callable[[str], Any], progress: Any) -> None:
     """A worker's loop: a batch of paths in, their results out in one reply, until None.
 
     Before each file it writes in shared memory when the file began, and after it how
@@ -67,24 +69,81 @@ def _work(conn: Any, work: Callable[[str], Any], progress: Any) -> None:
         unit_cache.save()  # units met here, for the next run (a fork skips atexit)
 
 
+_HEAD = struct.Struct("!Q")  # a message's length, before its pickle
+
+
+class _Channel:
+    """One end of a worker's two pipes: each message a pickle after its length."""
+
+    def __init__(self, read: int, write: int) -> None:
+        self.read, self.write = read, write
+
+    def fileno(self) -> int:
+        return self.read
+
+    def send(self, obj: Any) -> None:
+        data = pickle.dumps(obj, pickle.HIGHEST_PROTOCOL)
+        view = memoryview(_HEAD.pack(len(data)) + data)
+        while view:
+            view = view[os.write(self.write, view):]
+
+    def _exactly(self, size: int) -> bytes:
+        chunks = []
+        while size:
+            chunk = os.read(self.read, min(size, 1 << 20))
+            if not chunk:
+                raise EOFError("the other end closed its pipe")
+            chunks.append(chunk)
+            size -= len(chunk)
+        return b"".join(chunks)
+
+    def recv(self) -> Any:
+        return pickle.loads(self._exactly(int(_HEAD.unpack(self._exactly(_HEAD.size))[0])))
+
+    def poll(self) -> bool:
+        """Whether a message (or the end of the pipe) is waiting."""
+        waiting = select.poll()
+        waiting.register(self.read, select.POLLIN)
+        return bool(waiting.poll(0))
+
+    def close(self) -> None:
+        for fd in (self.read, self.write):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
 class _Worker:
-    def __init__(self, context: Any, work: Callable[[str], Any]) -> None:
-        self.conn, child = context.Pipe()
+    def __init__(self, work: Callable[[str], Any]) -> None:
         # DONE, STARTED: two doubles in memory shared with the child (an anonymous shared
         # mapping made before the fork: no file, so no writable folder needed)
         self.progress = memoryview(mmap.mmap(-1, 16)).cast("d")
         self.progress[STARTED] = IDLE
-        self.process = context.Process(target=_work, args=(child, work, self.progress),
-                                       daemon=True)
-        self.process.start()
-        child.close()
+        down, up = os.pipe(), os.pipe()  # (read, write) each: parent -> child, child -> parent
+        for stream in (sys.stdout, sys.stderr):  # nothing buffered is copied into the child
+            try:
+                stream.flush()
+            except (OSError, ValueError, AttributeError):
+                pass
+        self.pid = os.fork()
+        if self.pid == 0:  # the child: work, then leave without the parent's exit handlers
+            code = 0
+            try:
+                os.close(down[1])
+                os.close(up[0])
+                _work(_Channel(down[0], up[1]), work, self.progress)
+            except BaseException:  # noqa: BLE001 -- a signal, a bug: the parent reports it
+                code = 1
+            finally:
+                os._exit(code)
+        os.close(down[0])
+        os.close(up[1])
+        self.conn = _Channel(up[0], down[1])
         self.fd = self.conn.fileno()
+        self.exitcode: int | None = None
         self.batches: collections.deque[list[int]] = collections.deque()  # sent, unanswered
         self.answered = 0  # files whose results have come back
-
-    @property
-    def pending(self) -> int:
-        return sum(len(b) for b in self.batches)
 
     def send(self, indices: list[int], files: list[str]) -> None:
         self.batches.append(indices)
@@ -100,26 +159,45 @@ class _Worker:
     def unanswered(self) -> list[int]:
         return [i for batch in self.batches for i in batch]
 
+    def _reaped(self, wait: float) -> bool:
+        """Whether the process has ended (its exit code kept), waiting up to ``wait`` s."""
+        end = time.monotonic() + wait
+        while self.exitcode is None:
+            try:
+                pid, status = os.waitpid(self.pid, os.WNOHANG)
+            except ChildProcessError:
+                self.exitcode = 0  # already reaped elsewhere: its code is lost
+                break
+            if pid:
+                self.exitcode = os.waitstatus_to_exitcode(status)
+                break
+            if time.monotonic() >= end:
+                return False
+            time.sleep(0.005)
+        return True
+
     def stop(self, kill: bool = False) -> int | None:
-        """End the process (at once if ``kill``) and return its exit code."""
-        if kill and self.process.is_alive():
-            self.process.kill()
-        else:
+        """End the process (at once if ``kill``) and return its exit code (minus the
+        signal's number if a signal ended it)."""
+        if not kill:
             try:
                 self.conn.send(None)
             except (OSError, ValueError):
                 pass
-        self.process.join(5)
-        if self.process.is_alive():
-            self.process.kill()
-            self.process.join()
+        if kill or not self._reaped(5):
+            if not self._reaped(0):
+                try:
+                    os.kill(self.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+            self._reaped(math.inf)
         self.conn.close()
-        return self.process.exitcode
+        return self.exitcode
 
 
 def forks() -> bool:
     """Whether worker processes can be forked here (not on Windows)."""
-    return "fork" in multiprocessing.get_all_start_methods()
+    return hasattr(os, "fork")
 
 
 def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: float | None,
@@ -131,16 +209,13 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
     the time limit or kills its worker. ``idle()``, if given, is called before waiting
     for a worker when results were handed on since the last wait (the caller flushes
     its output then: one write per wake-up, not one per file)."""
-    import select
-
-    context = multiprocessing.get_context("fork")
     poller = select.poll()  # one for the run: polled workers change by (un)registering
     polled: dict[int, _Worker] = {}
     handed_on = False
     queue = collections.deque(range(len(files)))  # indices not yet sent
     done: dict[int, Result] = {}  # finished ahead of the next one to hand on
     next_out = 0
-    workers = [_Worker(context, work) for _ in range(jobs)]
+    workers = [_Worker(work) for _ in range(jobs)]
     try:
         while next_out < len(files):
             for worker in workers:  # two batches each (one under way, one waiting), in the window
@@ -198,7 +273,7 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
                     done[left[k]] = crashed(files[left[k]], code) if failed is crashed \
                         else timed_out(files[left[k]], timeout)
                     queue.extendleft(reversed(left[:k] + left[k + 1:]))
-                    workers[i] = _Worker(context, work)
+                    workers[i] = _Worker(work)
             while next_out in done:
                 yield done.pop(next_out)
                 next_out += 1
