@@ -523,11 +523,12 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     number, unit = _split(text, key, (dimension, weight))
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
-    checked = _CHECKED.get((unit, dimension, weight))
+    reading = (unit, dimension, weight)
+    checked = _CHECKED.get(reading)
     if checked is None:
         stored = unit_cache.get("parse", unit, dimension, int(weight))
         if stored is not None:
-            checked = _CHECKED[(unit, dimension, weight)] = tuple(stored)
+            checked = _CHECKED[reading] = tuple(stored)
     if checked is not None:  # this unit was parsed and checked for this dimension before
         factor, shown, us = checked
         value = number * factor
@@ -535,7 +536,7 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
             raise InputError(f"{text!r} is out of range", key=key)
         parsed = value, Parsed(number, shown, us)
         if text.__class__ is str and len(_PARSED) < 4096:
-            _PARSED[(text, dimension, weight)] = ((unit, dimension, weight), checked, parsed)
+            _PARSED[(text, dimension, weight)] = (reading, checked, parsed)
         return parsed
     return _parse_with_pint(text, number, unit, dimension, key, weight)
 
