@@ -109,8 +109,7 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
     except yaml.YAMLError as err:
         raise InputError(f"YAML error: {err}", file=path) from None
     try:
-        _keep_written_text(data, node)
-        return data, _key_lines(node)
+        return data, _key_lines(node, data)
     except InputError as err:
         raise err.located(file=path) from None
 
@@ -118,28 +117,60 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
 TEXT_KEYS = ("id", "title", "source", "notes")
 
 
-def _keep_written_text(data: Any, node: Any) -> None:
-    """Give ``id``, ``title``, ``source`` and ``notes`` back the text the user wrote.
+def _key_lines(node: Any, data: Any = None) -> dict[str, int]:
+    """The line of each key, two levels deep (and of the items of a list of mappings under
+    a second-level key, with their keys); InputError for a key written twice.
 
-    YAML 1.1 reads an unquoted ``11.10`` as the float 11.1, ``12:30`` as 750,
-    ``011`` as 9 and ``yes`` as True; these keys are text, so a plain scalar's
-    original characters (kept in its node) are used instead. ``null`` (or ``~``,
-    or nothing) stays None and is refused where a value is required (the id).
+    In the same walk, ``id``, ``title``, ``source`` and ``notes`` of ``data`` (the
+    document's mapping, if it is one) get back the text the user wrote. YAML 1.1 reads an
+    unquoted ``11.10`` as the float 11.1, ``12:30`` as 750, ``011`` as 9 and ``yes`` as
+    True; these keys are text, so a plain scalar's original characters (kept in its node)
+    are used instead. ``null`` (or ``~``, or nothing) stays None and is refused where a
+    value is required (the id).
     """
     import yaml
 
-    if not isinstance(data, dict) or not isinstance(node, yaml.MappingNode):
-        return
-    for key_node, value_node in node.value:
-        name = key_node.value
-        if name not in TEXT_KEYS or name not in data:
-            continue
-        if isinstance(value_node, yaml.ScalarNode):
-            data[name] = _written(data[name], value_node)
-        elif isinstance(value_node, yaml.SequenceNode) and isinstance(data[name], list) and \
-                len(value_node.value) == len(data[name]):
-            data[name] = [_written(v, n) if isinstance(n, yaml.ScalarNode) else v
-                          for v, n in zip(data[name], value_node.value)]
+    lines: dict[str, int] = {}
+    mapping = yaml.MappingNode
+    if not isinstance(node, mapping):
+        return lines
+    sequence = yaml.SequenceNode
+    texts = data if isinstance(data, dict) else {}
+    for key, value in node.value:
+        name = str(key.value)
+        if name in lines:
+            _once(lines, name, key)  # raises: written twice
+        lines[name] = key.start_mark.line + 1
+        if name in TEXT_KEYS and name in texts:
+            _keep_written_text(texts, name, value)
+        if isinstance(value, mapping):
+            for sub_key, sub_value in value.value:
+                sub_name = f"{name}.{sub_key.value}"
+                if sub_name in lines:
+                    _once(lines, sub_name, sub_key)  # raises: written twice
+                lines[sub_name] = sub_key.start_mark.line + 1
+                if isinstance(sub_value, sequence):  # a list of mappings (particles)
+                    for i, item in enumerate(sub_value.value):
+                        where = f"{name}.{sub_key.value}[{i}]"
+                        lines[where] = item.start_mark.line + 1
+                        if isinstance(item, mapping):
+                            for item_key, _ in item.value:
+                                _once(lines, f"{where}.{item_key.value}", item_key)
+    return lines
+
+
+def _keep_written_text(data: dict, name: str, node: Any) -> None:
+    """``data[name]`` (a text key) as written: a plain scalar's own characters for the
+    number, boolean or date YAML made of it, item by item in a list."""
+    import yaml
+
+    value = data[name]
+    if isinstance(node, yaml.ScalarNode):
+        data[name] = _written(value, node)
+    elif isinstance(node, yaml.SequenceNode) and isinstance(value, list) and \
+            len(node.value) == len(value):
+        data[name] = [_written(v, n) if isinstance(n, yaml.ScalarNode) else v
+                      for v, n in zip(value, node.value)]
 
 
 def _written(value: Any, node: Any) -> Any:
@@ -147,28 +178,6 @@ def _written(value: Any, node: Any) -> Any:
     if value is None or isinstance(value, str) or node.style not in (None, ""):
         return value
     return node.value
-
-
-def _key_lines(node: Any) -> dict[str, int]:
-    import yaml
-
-    lines: dict[str, int] = {}
-    if not isinstance(node, yaml.MappingNode):
-        return lines
-    for key, value in node.value:
-        name = str(key.value)
-        _once(lines, name, key)
-        if isinstance(value, yaml.MappingNode):
-            for sub_key, sub_value in value.value:
-                _once(lines, f"{name}.{sub_key.value}", sub_key)
-                if isinstance(sub_value, yaml.SequenceNode):  # a list of mappings (particles)
-                    for i, item in enumerate(sub_value.value):
-                        where = f"{name}.{sub_key.value}[{i}]"
-                        lines[where] = item.start_mark.line + 1
-                        if isinstance(item, yaml.MappingNode):
-                            for item_key, _ in item.value:
-                                _once(lines, f"{where}.{item_key.value}", item_key)
-    return lines
 
 
 def _once(lines: dict[str, int], name: str, key: Any) -> None:
