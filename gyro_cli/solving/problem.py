@@ -7,6 +7,7 @@ from __future__ import annotations
 
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -246,11 +247,27 @@ def _statement(value: Any, given: dict) -> str:
         return ""
     if not isinstance(value, str) or not value.strip():
         raise InputError(f"expected the problem's text, got {shown(value)}", key="statement")
+    # fill_statement refuses a lone brace and a name that is not a key of `given`. Where
+    # every brace of the text is in a {name} and each name is a key of `given`, it has
+    # nothing to refuse, so the text is not filled here (only where it is shown); anything
+    # else ({{, }}, a lone brace, another name) is filled, to be refused in its words.
+    names = _PLACEHOLDER_NAMES.findall(value) if "{" in value else []
+    if value.count("{") + value.count("}") == 2 * len(names):
+        for name in names:
+            if name.strip() not in given:  # the test fill_statement makes of a name
+                break
+        else:
+            return value.strip()
     try:
         fill_statement(value, given)
     except StatementError as err:
         raise InputError(str(err), key="statement") from None
     return value.strip()
+
+
+# statement.PLACEHOLDER's {name}: where these account for every brace, the text holds no
+# {{, }} or lone brace, and PLACEHOLDER reads the same names from it.
+_PLACEHOLDER_NAMES = re.compile(r"\{([^{}]*)\}")
 
 
 def _unit_system(value: Any) -> str:
