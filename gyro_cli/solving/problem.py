@@ -15,7 +15,7 @@ from .. import kinds
 from ..core import units
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
-from ..core.params import normal_word, read_word, safe_choices
+from ..core.params import _OPS, normal_word, read_word, safe_choices
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -23,6 +23,7 @@ TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "note
             "tolerance", "vary", "units")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
+_TOP_KEY_SET = frozenset(TOP_KEYS)
 MAX_FILE_BYTES = 1_000_000
 
 
@@ -216,7 +217,7 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         raise InputError(f"expected a mapping with id, kind, given and find at the top, got a "
                          f"{_type_name(data)}")
     for key in data:
-        if key not in TOP_KEYS:
+        if key not in _TOP_KEY_SET:
             raise InputError(f"unknown key{suggest(str(key), TOP_KEYS)} (allowed: "
                              f"{', '.join(TOP_KEYS)})", key=str(key))
     for key in REQUIRED:
@@ -283,18 +284,42 @@ def params_of(kind: Kind) -> tuple[Param, ...]:
 
 def params_by_name(kind: Kind) -> dict[str, Param]:
     """``params_of(kind)`` by name, made once per kind (read for every file)."""
-    made = _BY_NAME.get(kind.name)
-    if made is None or made[0] is not kind:
-        made = _BY_NAME[kind.name] = (kind, {p.name: p for p in params_of(kind)})
-    return made[1]
+    return _facts(kind).params
 
 
-_BY_NAME: dict[str, tuple[Kind, dict[str, Param]]] = {}
+class _KindFacts:
+    """What reading a file of one kind looks up, made once per kind: its params by name,
+    how each quantity is read (its key in messages, whether lb means lbf, its declared
+    limits as tests), the params with a default and the answers by name."""
+
+    __slots__ = ("kind", "params", "reading", "defaults", "answers")
+
+    def __init__(self, kind: Kind) -> None:
+        self.kind = kind
+        self.params = {p.name: p for p in params_of(kind)}
+        self.reading = {name: (f"given.{name}", name == "weight",
+                               tuple((_OPS[op], x) for op, x in p.limits_declared()))
+                        for name, p in self.params.items()}
+        self.defaults = tuple(p for p in kind.params if p.default is not None)
+        self.answers: dict[str, Any] = {}
+        for answer in kind.answers:  # the first of a name, as Kind.answer finds it
+            self.answers.setdefault(answer.name, answer)
+
+
+def _facts(kind: Kind) -> _KindFacts:
+    made = _FACTS.get(kind.name)
+    if made is None or made.kind is not kind:
+        made = _FACTS[kind.name] = _KindFacts(kind)
+    return made
+
+
+_FACTS: dict[str, _KindFacts] = {}
 
 
 def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
     """Parse every given quantity into SI; apply the kind's defaults."""
-    params = params_by_name(kind)
+    facts = _facts(kind)
+    params = facts.params
     values: dict[str, float | str] = {}
     quantities: dict[str, Any] = {}
     for key, text in raw.items():
@@ -302,19 +327,22 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
         if param is None:
             raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), list(params))}"
                              f" (see `gyro kinds`)", key=f"given.{key}")
-        values[param.name], quantities[param.name] = _parse_param(param, text)
+        values[param.name], quantities[param.name] = _parse_param(param, text, facts)
     defaulted = set()
-    for param in kind.params:
-        if param.default is not None and param.name not in values:
-            values[param.name], quantities[param.name] = _parse_param(param, param.default)
+    for param in facts.defaults:
+        if param.name not in values:
+            values[param.name], quantities[param.name] = _parse_param(param, param.default,
+                                                                      facts)
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
     return Given(values, defaulted=defaulted), quantities, us
 
 
-def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
-    key = f"given.{param.name}"
-    if param.dimension == "word":
+def _parse_param(param: Param, text: Any,
+                 facts: _KindFacts | None = None) -> tuple[float | str, Any]:
+    dimension = param.dimension
+    if dimension == "word":
+        key = f"given.{param.name}"
         if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
             text = "true" if text else "false"  # YAML reads `false` as a boolean
         word = read_word(param, text) if isinstance(text, str) else None
@@ -324,12 +352,21 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
                              f"{suggest(normal_word(str(text)), safe) if safe else ''}",
                              key=key)
         return word, text
-    if param.dimension == "particles":
-        return parse_particles(text, key), text
-    value, quantity = guarded(units.parse, text, param.dimension, key,
-                              weight=param.name == "weight")
-    value = representable(value, text, param.dimension, key)
-    within_limits(param, value, text, key)
+    if dimension == "particles":
+        return parse_particles(text, f"given.{param.name}"), text
+    reading = facts.reading.get(param.name) if facts is not None else None
+    if reading is None or facts.params.get(param.name) is not param:
+        reading = (f"given.{param.name}", param.name == "weight", None)
+    key, weight, limits = reading
+    value, quantity = guarded(units.parse, text, dimension, key, weight=weight)
+    if value != 0 and abs(value) < LEAST_MAGNITUDE:
+        representable(value, text, dimension, key)  # refused
+    if limits is None:
+        within_limits(param, value, text, key)
+    else:
+        for test, x in limits:  # the declared limits, as Param.limits_broken tests them
+            if not test(value, x):
+                within_limits(param, value, text, key)  # refused, in its words
     return value, quantity
 
 
@@ -430,11 +467,12 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     if not isinstance(raw, dict) or not raw:
         raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
                          key="find")
-    names = [a.name for a in kind.answers]
+    answers = _facts(kind).answers
     find: dict[str, str | None] = {}
     for name, unit in raw.items():
-        answer = kind.answer(str(name))
+        answer = answers.get(str(name))
         if answer is None:
+            names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer for kind {kind.name}{suggest(str(name), names)} "
                              f"(answers: {', '.join(names)})", key=f"find.{name}")
         if answer.dimension is None:
@@ -454,15 +492,16 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
         return {}
     if not isinstance(raw, dict):
         raise InputError("expected a mapping of answer names to values", key="expected")
-    names = [a.name for a in kind.answers]
+    answers = _facts(kind).answers
     for name in raw:
-        if name == "steps" and kind.answer("steps") is None:
+        if name == "steps" and "steps" not in answers:
             steps = raw[name]
             if not isinstance(steps, dict) or not steps:
                 raise InputError("expected a mapping of the worked answer's step symbols to "
                                  "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
             continue
-        if kind.answer(str(name)) is None:
+        if str(name) not in answers:
+            names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
     return dict(raw)
