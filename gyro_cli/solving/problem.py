@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from .. import kinds
-from ..core import units
+from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
 from ..core.params import _OPS, normal_word, read_word, safe_choices
@@ -82,8 +82,6 @@ def read_yaml(path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, in
     Only a regular file of at most ``limit`` bytes is read; nesting and aliases
     are limited before anything is built (safeyaml.py).
     """
-    from ..core import safeyaml
-
     return parse_yaml(safeyaml.read_text(path, limit), path, limit)
 
 
@@ -91,8 +89,6 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
     """Safe-load YAML text (a file's, or text given to the Python API, named ``path`` in
     messages); also the line of each key."""
     import yaml
-
-    from ..core import safeyaml
 
     if len(text) > limit:  # read_text has already held a file to its limit
         raise InputError(f"longer than {limit:,} characters; a problem is at most that",
@@ -242,8 +238,6 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
 def _statement(value: Any, given: dict) -> str:
     """``statement``: text whose {key} placeholders are keys of `given` (checked here, so a
     handout never meets a bad one)."""
-    from ..core.statement import StatementError, fill_statement
-
     if value is None:
         return ""
     if not isinstance(value, str) or not value.strip():
@@ -259,6 +253,8 @@ def _statement(value: Any, given: dict) -> str:
                 break
         else:
             return value.strip()
+    from ..core.statement import StatementError, fill_statement
+
     try:
         fill_statement(value, given)
     except StatementError as err:
@@ -297,7 +293,7 @@ class _KindFacts:
     def __init__(self, kind: Kind) -> None:
         self.kind = kind
         self.params = {p.name: p for p in params_of(kind)}
-        self.reading = {name: (f"given.{name}", name == "weight",
+        self.reading = {name: (p, f"given.{name}", name == "weight",
                                tuple((_OPS[op], x) for op, x in p.limits_declared()))
                         for name, p in self.params.items()}
         self.defaults = tuple(p for p in kind.params if p.default is not None)
@@ -355,10 +351,18 @@ def _parse_param(param: Param, text: Any,
     if dimension == "particles":
         return parse_particles(text, f"given.{param.name}"), text
     reading = facts.reading.get(param.name) if facts is not None else None
-    if reading is None or facts.params.get(param.name) is not param:
-        reading = (f"given.{param.name}", param.name == "weight", None)
-    key, weight, limits = reading
-    value, quantity = guarded(units.parse, text, dimension, key, weight=weight)
+    if reading is None or reading[0] is not param:
+        reading = (param, f"given.{param.name}", param.name == "weight", None)
+    _, key, weight, limits = reading
+    if text.__class__ is str:  # guarded's own checks are of other values; its refusal here
+        try:
+            value, quantity = units.parse(text, dimension, key, weight=weight)
+        except InputError:
+            raise
+        except Exception as err:  # noqa: BLE001 - as guarded
+            raise _unreadable(text, err, key) from None
+    else:
+        value, quantity = guarded(units.parse, text, dimension, key, weight=weight)
     if value != 0 and abs(value) < LEAST_MAGNITUDE:
         representable(value, text, dimension, key)  # refused
     if limits is None:
@@ -414,9 +418,13 @@ def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> 
     except InputError:
         raise
     except Exception as err:  # noqa: BLE001 - e.g. AssertionError, TokenError from pint
-        written = " ".join(str(text).split())[:60]
-        raise InputError(f"cannot read the unit in {written!r} ({type(err).__name__})",
-                         key=key) from None
+        raise _unreadable(text, err, key) from None
+
+
+def _unreadable(text: Any, err: Exception, key: str) -> InputError:
+    """guarded's refusal of text the unit parser failed on unexpectedly."""
+    written = " ".join(str(text).split())[:60]
+    return InputError(f"cannot read the unit in {written!r} ({type(err).__name__})", key=key)
 
 
 PARTICLE_KEYS = ("mass", "x", "y", "z")
