@@ -41,6 +41,11 @@ def _not_regular(mode: int, what: str) -> str:
     return f"is {name}, not a regular file; gyro reads only regular files"
 
 
+# Read only, never waiting on a FIFO or a device, never taking a terminal as ours.
+_OPEN_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
+    | getattr(os, "O_BINARY", 0)
+
+
 def read_bytes(path: str, limit: int, what: str = "a problem file (.yaml)") -> bytes:
     """The bytes of a regular file of at most ``limit`` bytes; InputError otherwise."""
     try:
@@ -52,10 +57,8 @@ def read_bytes(path: str, limit: int, what: str = "a problem file (.yaml)") -> b
                          file=path) from None
     if not stat.S_ISREG(mode):
         raise InputError(_not_regular(mode, what), file=path)
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
-        | getattr(os, "O_BINARY", 0)
     try:
-        fd = os.open(path, flags)
+        fd = os.open(path, _OPEN_FLAGS)
     except OSError as err:
         raise InputError(f"cannot read: {err.strerror}", file=path) from None
     try:

@@ -139,8 +139,8 @@ def _key_lines(node: Any, data: Any = None) -> dict[str, int]:
         if name in lines:
             _once(lines, name, key)  # raises: written twice
         lines[name] = key.start_mark.line + 1
-        if name in TEXT_KEYS and name in texts:
-            _keep_written_text(texts, name, value)
+        if name in TEXT_KEYS and name in texts and not isinstance(texts[name], str):
+            _keep_written_text(texts, name, value)  # (text is kept as it is)
         if isinstance(value, mapping):
             for sub_key, sub_value in value.value:
                 sub_name = f"{name}.{sub_key.value}"
