@@ -535,7 +535,9 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
         if not math.isfinite(value):
             raise InputError(f"{text!r} is out of range", key=key)
         parsed = value, Parsed(number, shown, us)
-        if text.__class__ is str and len(_PARSED) < 4096:
+        if text.__class__ is str:
+            if len(_PARSED) >= _PARSED_MAX:  # emptied, not frozen: a kind's defaults and
+                _PARSED.clear()              # the texts a bank repeats come back at once
             _PARSED[(text, dimension, weight)] = (reading, checked, parsed)
         return parsed
     return _parse_with_pint(text, number, unit, dimension, key, weight)
@@ -548,6 +550,7 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
 # arithmetic depend on nothing else, so it is the answer parse would compute again.
 _PARSED: dict[tuple[str, str, bool], tuple[tuple[str, str, bool], tuple[float, str, bool],
                                             tuple[float, Parsed]]] = {}
+_PARSED_MAX = 1024  # entries (about 0.45 MB at most)
 
 
 def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: str,
