@@ -41,6 +41,11 @@ def _not_regular(mode: int, what: str) -> str:
     return f"is {name}, not a regular file; gyro reads only regular files"
 
 
+# Read only, never waiting on a FIFO or a device, never taking a terminal as ours.
+_OPEN_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
+    | getattr(os, "O_BINARY", 0)
+
+
 def read_bytes(path: str, limit: int, what: str = "a problem file (.yaml)") -> bytes:
     """The bytes of a regular file of at most ``limit`` bytes; InputError otherwise."""
     try:
@@ -52,10 +57,8 @@ def read_bytes(path: str, limit: int, what: str = "a problem file (.yaml)") -> b
                          file=path) from None
     if not stat.S_ISREG(mode):
         raise InputError(_not_regular(mode, what), file=path)
-    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) \
-        | getattr(os, "O_BINARY", 0)
     try:
-        fd = os.open(path, flags)
+        fd = os.open(path, _OPEN_FLAGS)
     except OSError as err:
         raise InputError(f"cannot read: {err.strerror}", file=path) from None
     try:
@@ -152,22 +155,39 @@ def loader_class() -> Any:
     # bank of problems repeats the same texts (keys, kinds, units) in every file: each
     # is resolved once, not once per occurrence, which was a third of composing a file.
     # The table stops growing at _RESOLVED_MAX texts, so memory stays flat.
+    # Without path resolvers, whatever is not a plain scalar gets its kind's default tag
+    # (BaseResolver.resolve): answered here, without a second call, for every quoted or
+    # block scalar, mapping and list of a file.
     resolved: dict[str, str] = {}
     resolve = base.resolve
-    scalar = yaml.ScalarNode
+    scalar, mapping, sequence = yaml.ScalarNode, yaml.MappingNode, yaml.SequenceNode
+    text_tag, map_tag, seq_tag = (base.DEFAULT_SCALAR_TAG, base.DEFAULT_MAPPING_TAG,
+                                  base.DEFAULT_SEQUENCE_TAG)
 
     def resolve_plain(self: Any, kind: Any, value: str, implicit: Any) -> str:
-        if kind is scalar and implicit[0]:
+        if kind is scalar:
+            if not implicit[0]:
+                return text_tag
             tag = resolved.get(value)
             if tag is None:
                 tag = resolve(self, kind, value, implicit)
                 if len(resolved) < _RESOLVED_MAX:
                     resolved[value] = tag
             return tag
+        if kind is mapping:
+            return map_tag
+        if kind is sequence:
+            return seq_tag
         return resolve(self, kind, value, implicit)
 
     if not base.yaml_path_resolvers:
         Loader.resolve = resolve_plain
+        # The composer calls these two around every node, and without path resolvers they
+        # do nothing (BaseResolver): a builtin that takes the same arguments does nothing
+        # faster than a Python function. (A slice of the parent node and the index, made
+        # and dropped; an empty tuple.)
+        Loader.descend_resolver = staticmethod(slice)
+        Loader.ascend_resolver = staticmethod(tuple)
     _loader_class = Loader
     return Loader
 
@@ -364,39 +384,53 @@ def _plain_data(loader: Any, root: Any) -> Any:
         return None
     constructors = loader.yaml_constructors
     scalar, mapping, sequence = yaml.ScalarNode, yaml.MappingNode, yaml.SequenceNode
-    count = 0
+    count = 1  # the nodes met so far; a collection counts its items as it is entered
 
+    def value_of(node: Any) -> Any:
+        """A scalar that is not text: null, or what PyYAML's constructor makes of it."""
+        tag = node.tag
+        if tag == _NULL:
+            return None
+        if tag in _SCALAR_TAGS:
+            return constructors[tag](loader, node)
+        raise _Unusual
+
+    # Scalars, most of a file, are read in the loops (text first), without a call each.
     def build(node: Any, depth: int) -> Any:
         nonlocal count
-        count += 1
-        if count > MAX_NODES:
-            raise _Unusual
-        kind, tag = node.__class__, node.tag
-        if kind is scalar:
-            if tag == _STR:
-                return node.value
-            if tag == _NULL:
-                return None
-            if tag in _SCALAR_TAGS:
-                return constructors[tag](loader, node)
-            raise _Unusual
         if depth > MAX_DEPTH:
             raise _Unusual
-        if kind is mapping and tag == _MAP:
+        kind, items = node.__class__, node.value
+        if kind is mapping and node.tag == _MAP:
+            count += 2 * len(items)
+            if count > MAX_NODES:
+                raise _Unusual
             out = {}
-            for key_node, value_node in node.value:
+            for key_node, value_node in items:
                 if key_node.__class__ is not scalar:
                     raise _Unusual
-                if key_node.tag in _NAME_TAGS and key_node.style in (None, ""):
-                    key_node.tag = _STR  # as loader_class's construct_mapping does
-                key = build(key_node, depth + 1)
-                out[key] = build(value_node, depth + 1)
+                tag = key_node.tag
+                if tag in _NAME_TAGS and key_node.style in (None, ""):
+                    key_node.tag = tag = _STR  # as loader_class's construct_mapping does
+                key = key_node.value if tag == _STR else value_of(key_node)
+                if value_node.__class__ is not scalar:
+                    out[key] = build(value_node, depth + 1)
+                elif value_node.tag == _STR:
+                    out[key] = value_node.value
+                else:
+                    out[key] = value_of(value_node)
             return out
-        if kind is sequence and tag == _SEQ:
-            return [build(item, depth + 1) for item in node.value]
+        if kind is sequence and node.tag == _SEQ:
+            count += len(items)
+            if count > MAX_NODES:
+                raise _Unusual
+            return [(item.value if item.tag == _STR else value_of(item))
+                    if item.__class__ is scalar else build(item, depth + 1) for item in items]
         raise _Unusual
 
     try:
+        if root.__class__ is scalar:
+            return root.value if root.tag == _STR else value_of(root)
         return build(root, 1)
     except Exception:  # noqa: BLE001 -- refused or unusual: built the usual way, which says why
         return _UNUSUAL

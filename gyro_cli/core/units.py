@@ -284,35 +284,41 @@ def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[
 
     ``known``: (dimension, weight) of a parse; a unit the disk table holds for them
     passed these checks in an earlier run, so its names need no pint now."""
+    if isinstance(text, str):  # the usual case first (text is never a bool, None or number)
+        if len(text) > MAX_TEXT:
+            raise InputError(f"quantity text is {len(text)} characters long; at most {MAX_TEXT} "
+                             "are accepted", key=key)
+        match = _NUMBER.fullmatch(text)
+        if not match:
+            raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}",
+                             key=key)
+        number, unit = match.groups()
+        unit = unit.strip()
+        unit = WHOLE_UNITS.get(unit, unit)
+        if unit in _VALID:
+            return float(number), unit
+        if known and unit_cache.get("parse", unit, known[0], int(known[1])):
+            if len(_VALID) < 4096:  # these checks passed for it: met again, no disk look-up
+                _VALID.add(unit)
+            return float(number), unit
+        words = _names(unit)
+        if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
+            # Prose after the number ("1800 rpm relative to the frame"): name the first word
+            # that is no unit, before any complaint about the punctuation around it.
+            for word in words:
+                if _lookup(word, None) is None:
+                    raise InputError(f"unknown unit {word!r} in {text!r}; a comment needs '#'",
+                                     key=key)
+        tokenize(unit, text, key)
+        if len(_VALID) < 4096:
+            _VALID.add(unit)
+        return float(number), unit
     if isinstance(text, bool) or text is None:
         raise InputError(f"expected a quantity, got {text!r}", key=key)
     if isinstance(text, (int, float)):
         return float(text), ""
-    if not isinstance(text, str):
-        raise InputError(f"expected a quantity string such as '150 mm', got a {type(text).__name__}",
-                         key=key)
-    if len(text) > MAX_TEXT:
-        raise InputError(f"quantity text is {len(text)} characters long; at most {MAX_TEXT} "
-                         "are accepted", key=key)
-    match = _NUMBER.fullmatch(text)
-    if not match:
-        raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}", key=key)
-    number, unit = match.group(1), match.group(2).strip()
-    unit = WHOLE_UNITS.get(unit, unit)
-    if unit in _VALID or (known and unit_cache.get("parse", unit, known[0], int(known[1]))):
-        return float(number), unit
-    words = _names(unit)
-    if len(words) >= 3 or (words and any(ch in unit for ch in ",;:!?")):
-        # Prose after the number ("1800 rpm relative to the frame"): name the first word
-        # that is no unit, before any complaint about the punctuation around it.
-        for word in words:
-            if _lookup(word, None) is None:
-                raise InputError(f"unknown unit {word!r} in {text!r}; a comment needs '#'",
-                                 key=key)
-    tokenize(unit, text, key)
-    if len(_VALID) < 4096:
-        _VALID.add(unit)
-    return float(number), unit
+    raise InputError(f"expected a quantity string such as '150 mm', got a {type(text).__name__}",
+                     key=key)
 
 
 # Unit texts that passed the checks of _split (their names may still be unknown).
@@ -510,21 +516,41 @@ def parse(text: Any, dimension: str, key: str, *, weight: bool = False) -> tuple
     reading would have the wrong dimension). A unit met before, in this process
     or (through unit_cache) an earlier one, is not asked of pint again.
     """
+    if text.__class__ is str:
+        known = _PARSED.get((text, dimension, weight))
+        if known is not None and _CHECKED.get(known[0]) is known[1]:
+            return known[2]
     number, unit = _split(text, key, (dimension, weight))
     if not math.isfinite(number):
         raise InputError(f"{text!r} is not a finite number", key=key)
-    checked = _CHECKED.get((unit, dimension, weight))
+    reading = (unit, dimension, weight)
+    checked = _CHECKED.get(reading)
     if checked is None:
         stored = unit_cache.get("parse", unit, dimension, int(weight))
         if stored is not None:
-            checked = _CHECKED[(unit, dimension, weight)] = tuple(stored)
+            checked = _CHECKED[reading] = tuple(stored)
     if checked is not None:  # this unit was parsed and checked for this dimension before
         factor, shown, us = checked
         value = number * factor
         if not math.isfinite(value):
             raise InputError(f"{text!r} is out of range", key=key)
-        return value, Parsed(number, shown, us)
+        parsed = value, Parsed(number, shown, us)
+        if text.__class__ is str:
+            if len(_PARSED) >= _PARSED_MAX:  # emptied, not frozen: a kind's defaults and
+                _PARSED.clear()              # the texts a bank repeats come back at once
+            _PARSED[(text, dimension, weight)] = (reading, checked, parsed)
+        return parsed
     return _parse_with_pint(text, number, unit, dimension, key, weight)
+
+
+# (text, dimension, weight) -> (its _CHECKED key, that entry, what parse returned): a bank
+# writes the same quantities ("9.81 m/s^2", "2 kg", a kind's defaults) in file after file,
+# and each is read once. An entry counts only while _CHECKED holds the very entry it was
+# computed from (a table replaced or cleared drops it), and the text's checks (_split) and
+# arithmetic depend on nothing else, so it is the answer parse would compute again.
+_PARSED: dict[tuple[str, str, bool], tuple[tuple[str, str, bool], tuple[float, str, bool],
+                                            tuple[float, Parsed]]] = {}
+_PARSED_MAX = 1024  # entries (about 0.45 MB at most)
 
 
 def _parse_with_pint(text: Any, number: float, unit: str, dimension: str, key: str,

@@ -7,14 +7,15 @@ from __future__ import annotations
 
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from .. import kinds
-from ..core import units
+from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
-from ..core.params import normal_word, read_word, safe_choices
+from ..core.params import _OPS, normal_word, read_word, safe_choices
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -22,6 +23,7 @@ TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "note
             "tolerance", "vary", "units")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
+_TOP_KEY_SET = frozenset(TOP_KEYS)
 MAX_FILE_BYTES = 1_000_000
 
 
@@ -80,8 +82,6 @@ def read_yaml(path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, dict[str, in
     Only a regular file of at most ``limit`` bytes is read; nesting and aliases
     are limited before anything is built (safeyaml.py).
     """
-    from ..core import safeyaml
-
     return parse_yaml(safeyaml.read_text(path, limit), path, limit)
 
 
@@ -89,8 +89,6 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
     """Safe-load YAML text (a file's, or text given to the Python API, named ``path`` in
     messages); also the line of each key."""
     import yaml
-
-    from ..core import safeyaml
 
     if len(text) > limit:  # read_text has already held a file to its limit
         raise InputError(f"longer than {limit:,} characters; a problem is at most that",
@@ -109,8 +107,7 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
     except yaml.YAMLError as err:
         raise InputError(f"YAML error: {err}", file=path) from None
     try:
-        _keep_written_text(data, node)
-        return data, _key_lines(node)
+        return data, _key_lines(node, data)
     except InputError as err:
         raise err.located(file=path) from None
 
@@ -118,28 +115,60 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
 TEXT_KEYS = ("id", "title", "source", "notes")
 
 
-def _keep_written_text(data: Any, node: Any) -> None:
-    """Give ``id``, ``title``, ``source`` and ``notes`` back the text the user wrote.
+def _key_lines(node: Any, data: Any = None) -> dict[str, int]:
+    """The line of each key, two levels deep (and of the items of a list of mappings under
+    a second-level key, with their keys); InputError for a key written twice.
 
-    YAML 1.1 reads an unquoted ``11.10`` as the float 11.1, ``12:30`` as 750,
-    ``011`` as 9 and ``yes`` as True; these keys are text, so a plain scalar's
-    original characters (kept in its node) are used instead. ``null`` (or ``~``,
-    or nothing) stays None and is refused where a value is required (the id).
+    In the same walk, ``id``, ``title``, ``source`` and ``notes`` of ``data`` (the
+    document's mapping, if it is one) get back the text the user wrote. YAML 1.1 reads an
+    unquoted ``11.10`` as the float 11.1, ``12:30`` as 750, ``011`` as 9 and ``yes`` as
+    True; these keys are text, so a plain scalar's original characters (kept in its node)
+    are used instead. ``null`` (or ``~``, or nothing) stays None and is refused where a
+    value is required (the id).
     """
     import yaml
 
-    if not isinstance(data, dict) or not isinstance(node, yaml.MappingNode):
-        return
-    for key_node, value_node in node.value:
-        name = key_node.value
-        if name not in TEXT_KEYS or name not in data:
-            continue
-        if isinstance(value_node, yaml.ScalarNode):
-            data[name] = _written(data[name], value_node)
-        elif isinstance(value_node, yaml.SequenceNode) and isinstance(data[name], list) and \
-                len(value_node.value) == len(data[name]):
-            data[name] = [_written(v, n) if isinstance(n, yaml.ScalarNode) else v
-                          for v, n in zip(data[name], value_node.value)]
+    lines: dict[str, int] = {}
+    mapping = yaml.MappingNode
+    if not isinstance(node, mapping):
+        return lines
+    sequence = yaml.SequenceNode
+    texts = data if isinstance(data, dict) else {}
+    for key, value in node.value:
+        name = str(key.value)
+        if name in lines:
+            _once(lines, name, key)  # raises: written twice
+        lines[name] = key.start_mark.line + 1
+        if name in TEXT_KEYS and name in texts and not isinstance(texts[name], str):
+            _keep_written_text(texts, name, value)  # (text is kept as it is)
+        if isinstance(value, mapping):
+            for sub_key, sub_value in value.value:
+                sub_name = f"{name}.{sub_key.value}"
+                if sub_name in lines:
+                    _once(lines, sub_name, sub_key)  # raises: written twice
+                lines[sub_name] = sub_key.start_mark.line + 1
+                if isinstance(sub_value, sequence):  # a list of mappings (particles)
+                    for i, item in enumerate(sub_value.value):
+                        where = f"{name}.{sub_key.value}[{i}]"
+                        lines[where] = item.start_mark.line + 1
+                        if isinstance(item, mapping):
+                            for item_key, _ in item.value:
+                                _once(lines, f"{where}.{item_key.value}", item_key)
+    return lines
+
+
+def _keep_written_text(data: dict, name: str, node: Any) -> None:
+    """``data[name]`` (a text key) as written: a plain scalar's own characters for the
+    number, boolean or date YAML made of it, item by item in a list."""
+    import yaml
+
+    value = data[name]
+    if isinstance(node, yaml.ScalarNode):
+        data[name] = _written(value, node)
+    elif isinstance(node, yaml.SequenceNode) and isinstance(value, list) and \
+            len(node.value) == len(value):
+        data[name] = [_written(v, n) if isinstance(n, yaml.ScalarNode) else v
+                      for v, n in zip(value, node.value)]
 
 
 def _written(value: Any, node: Any) -> Any:
@@ -147,28 +176,6 @@ def _written(value: Any, node: Any) -> Any:
     if value is None or isinstance(value, str) or node.style not in (None, ""):
         return value
     return node.value
-
-
-def _key_lines(node: Any) -> dict[str, int]:
-    import yaml
-
-    lines: dict[str, int] = {}
-    if not isinstance(node, yaml.MappingNode):
-        return lines
-    for key, value in node.value:
-        name = str(key.value)
-        _once(lines, name, key)
-        if isinstance(value, yaml.MappingNode):
-            for sub_key, sub_value in value.value:
-                _once(lines, f"{name}.{sub_key.value}", sub_key)
-                if isinstance(sub_value, yaml.SequenceNode):  # a list of mappings (particles)
-                    for i, item in enumerate(sub_value.value):
-                        where = f"{name}.{sub_key.value}[{i}]"
-                        lines[where] = item.start_mark.line + 1
-                        if isinstance(item, yaml.MappingNode):
-                            for item_key, _ in item.value:
-                                _once(lines, f"{where}.{item_key.value}", item_key)
-    return lines
 
 
 def _once(lines: dict[str, int], name: str, key: Any) -> None:
@@ -206,7 +213,7 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         raise InputError(f"expected a mapping with id, kind, given and find at the top, got a "
                          f"{_type_name(data)}")
     for key in data:
-        if key not in TOP_KEYS:
+        if key not in _TOP_KEY_SET:
             raise InputError(f"unknown key{suggest(str(key), TOP_KEYS)} (allowed: "
                              f"{', '.join(TOP_KEYS)})", key=str(key))
     for key in REQUIRED:
@@ -231,17 +238,33 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
 def _statement(value: Any, given: dict) -> str:
     """``statement``: text whose {key} placeholders are keys of `given` (checked here, so a
     handout never meets a bad one)."""
-    from ..core.statement import StatementError, fill_statement
-
     if value is None:
         return ""
     if not isinstance(value, str) or not value.strip():
         raise InputError(f"expected the problem's text, got {shown(value)}", key="statement")
+    # fill_statement refuses a lone brace and a name that is not a key of `given`. Where
+    # every brace of the text is in a {name} and each name is a key of `given`, it has
+    # nothing to refuse, so the text is not filled here (only where it is shown); anything
+    # else ({{, }}, a lone brace, another name) is filled, to be refused in its words.
+    names = _PLACEHOLDER_NAMES.findall(value) if "{" in value else []
+    if value.count("{") + value.count("}") == 2 * len(names):
+        for name in names:
+            if name.strip() not in given:  # the test fill_statement makes of a name
+                break
+        else:
+            return value.strip()
+    from ..core.statement import StatementError, fill_statement
+
     try:
         fill_statement(value, given)
     except StatementError as err:
         raise InputError(str(err), key="statement") from None
     return value.strip()
+
+
+# statement.PLACEHOLDER's {name}: where these account for every brace, the text holds no
+# {{, }} or lone brace, and PLACEHOLDER reads the same names from it.
+_PLACEHOLDER_NAMES = re.compile(r"\{([^{}]*)\}")
 
 
 def _unit_system(value: Any) -> str:
@@ -257,18 +280,42 @@ def params_of(kind: Kind) -> tuple[Param, ...]:
 
 def params_by_name(kind: Kind) -> dict[str, Param]:
     """``params_of(kind)`` by name, made once per kind (read for every file)."""
-    made = _BY_NAME.get(kind.name)
-    if made is None or made[0] is not kind:
-        made = _BY_NAME[kind.name] = (kind, {p.name: p for p in params_of(kind)})
-    return made[1]
+    return _facts(kind).params
 
 
-_BY_NAME: dict[str, tuple[Kind, dict[str, Param]]] = {}
+class _KindFacts:
+    """What reading a file of one kind looks up, made once per kind: its params by name,
+    how each quantity is read (its key in messages, whether lb means lbf, its declared
+    limits as tests), the params with a default and the answers by name."""
+
+    __slots__ = ("kind", "params", "reading", "defaults", "answers")
+
+    def __init__(self, kind: Kind) -> None:
+        self.kind = kind
+        self.params = {p.name: p for p in params_of(kind)}
+        self.reading = {name: (p, f"given.{name}", name == "weight",
+                               tuple((_OPS[op], x) for op, x in p.limits_declared()))
+                        for name, p in self.params.items()}
+        self.defaults = tuple(p for p in kind.params if p.default is not None)
+        self.answers: dict[str, Any] = {}
+        for answer in kind.answers:  # the first of a name, as Kind.answer finds it
+            self.answers.setdefault(answer.name, answer)
+
+
+def _facts(kind: Kind) -> _KindFacts:
+    made = _FACTS.get(kind.name)
+    if made is None or made.kind is not kind:
+        made = _FACTS[kind.name] = _KindFacts(kind)
+    return made
+
+
+_FACTS: dict[str, _KindFacts] = {}
 
 
 def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
     """Parse every given quantity into SI; apply the kind's defaults."""
-    params = params_by_name(kind)
+    facts = _facts(kind)
+    params = facts.params
     values: dict[str, float | str] = {}
     quantities: dict[str, Any] = {}
     for key, text in raw.items():
@@ -276,19 +323,22 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
         if param is None:
             raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), list(params))}"
                              f" (see `gyro kinds`)", key=f"given.{key}")
-        values[param.name], quantities[param.name] = _parse_param(param, text)
+        values[param.name], quantities[param.name] = _parse_param(param, text, facts)
     defaulted = set()
-    for param in kind.params:
-        if param.default is not None and param.name not in values:
-            values[param.name], quantities[param.name] = _parse_param(param, param.default)
+    for param in facts.defaults:
+        if param.name not in values:
+            values[param.name], quantities[param.name] = _parse_param(param, param.default,
+                                                                      facts)
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
     return Given(values, defaulted=defaulted), quantities, us
 
 
-def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
-    key = f"given.{param.name}"
-    if param.dimension == "word":
+def _parse_param(param: Param, text: Any,
+                 facts: _KindFacts | None = None) -> tuple[float | str, Any]:
+    dimension = param.dimension
+    if dimension == "word":
+        key = f"given.{param.name}"
         if isinstance(text, bool) and set(param.choices) == {"true", "false"}:
             text = "true" if text else "false"  # YAML reads `false` as a boolean
         word = read_word(param, text) if isinstance(text, str) else None
@@ -298,12 +348,29 @@ def _parse_param(param: Param, text: Any) -> tuple[float | str, Any]:
                              f"{suggest(normal_word(str(text)), safe) if safe else ''}",
                              key=key)
         return word, text
-    if param.dimension == "particles":
-        return parse_particles(text, key), text
-    value, quantity = guarded(units.parse, text, param.dimension, key,
-                              weight=param.name == "weight")
-    value = representable(value, text, param.dimension, key)
-    within_limits(param, value, text, key)
+    if dimension == "particles":
+        return parse_particles(text, f"given.{param.name}"), text
+    reading = facts.reading.get(param.name) if facts is not None else None
+    if reading is None or reading[0] is not param:
+        reading = (param, f"given.{param.name}", param.name == "weight", None)
+    _, key, weight, limits = reading
+    if text.__class__ is str:  # guarded's own checks are of other values; its refusal here
+        try:
+            value, quantity = units.parse(text, dimension, key, weight=weight)
+        except InputError:
+            raise
+        except Exception as err:  # noqa: BLE001 - as guarded
+            raise _unreadable(text, err, key) from None
+    else:
+        value, quantity = guarded(units.parse, text, dimension, key, weight=weight)
+    if value != 0 and abs(value) < LEAST_MAGNITUDE:
+        representable(value, text, dimension, key)  # refused
+    if limits is None:
+        within_limits(param, value, text, key)
+    else:
+        for test, x in limits:  # the declared limits, as Param.limits_broken tests them
+            if not test(value, x):
+                within_limits(param, value, text, key)  # refused, in its words
     return value, quantity
 
 
@@ -351,9 +418,13 @@ def guarded(parse: Any, text: Any, dimension: str, key: str, **options: Any) -> 
     except InputError:
         raise
     except Exception as err:  # noqa: BLE001 - e.g. AssertionError, TokenError from pint
-        written = " ".join(str(text).split())[:60]
-        raise InputError(f"cannot read the unit in {written!r} ({type(err).__name__})",
-                         key=key) from None
+        raise _unreadable(text, err, key) from None
+
+
+def _unreadable(text: Any, err: Exception, key: str) -> InputError:
+    """guarded's refusal of text the unit parser failed on unexpectedly."""
+    written = " ".join(str(text).split())[:60]
+    return InputError(f"cannot read the unit in {written!r} ({type(err).__name__})", key=key)
 
 
 PARTICLE_KEYS = ("mass", "x", "y", "z")
@@ -404,11 +475,12 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     if not isinstance(raw, dict) or not raw:
         raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
                          key="find")
-    names = [a.name for a in kind.answers]
+    answers = _facts(kind).answers
     find: dict[str, str | None] = {}
     for name, unit in raw.items():
-        answer = kind.answer(str(name))
+        answer = answers.get(str(name))
         if answer is None:
+            names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer for kind {kind.name}{suggest(str(name), names)} "
                              f"(answers: {', '.join(names)})", key=f"find.{name}")
         if answer.dimension is None:
@@ -428,15 +500,16 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
         return {}
     if not isinstance(raw, dict):
         raise InputError("expected a mapping of answer names to values", key="expected")
-    names = [a.name for a in kind.answers]
+    answers = _facts(kind).answers
     for name in raw:
-        if name == "steps" and kind.answer("steps") is None:
+        if name == "steps" and "steps" not in answers:
             steps = raw[name]
             if not isinstance(steps, dict) or not steps:
                 raise InputError("expected a mapping of the worked answer's step symbols to "
                                  "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
             continue
-        if kind.answer(str(name)) is None:
+        if str(name) not in answers:
+            names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
     return dict(raw)
