@@ -572,16 +572,16 @@ def stability(m: Matrices, g: float) -> Stability:
     where rounding could decide). The eigenvalues are found at the candidates only,
     to tell a capsize or weave speed from a root where the stability does not change.
     """
-    coeffs = _characteristic(m, g)
+    a0_roots, h3_roots = _candidates(m, g)
     capsize, weave, other = [], [], []
     spectra: dict[float, Spectrum] = {}
-    for v in _positive_roots(coeffs[0]):
+    for v in a0_roots:
         ev = spectra[v] = eigenvalues(m, v, g)
         if min(abs(e) for e in ev) <= 1e-6 * max(1.0, max(abs(e) for e in ev)):
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
-    for v in _positive_roots(_hurwitz_of(m, g)):
+    for v in h3_roots:
         ev = spectra[v] = eigenvalues(m, v, g)
         scale = max(1.0, max(abs(e) for e in ev))
         near = min(ev, key=lambda e: abs(e.real))
@@ -589,7 +589,28 @@ def stability(m: Matrices, g: float) -> Stability:
             weave.append(v)                  # a pair +-i omega on the imaginary axis
         else:
             other.append(v)                  # a real pair +-sigma: no change of stability
-    edges = sorted(set(capsize + weave + other))
+    stable = _stable_between(m, g, sorted(set(capsize + weave + other)))
+    return Stability(weave, capsize, stable, other, spectra)
+
+
+def stable_speeds(m: Matrices, g: float) -> list[tuple[float, float]]:
+    """``stability(m, g).stable``, the same intervals, without the eigenvalues at the
+    candidates: every candidate is an edge whether it is a capsize speed, a weave speed
+    or neither (the probes between the edges decide), so telling them apart, which is
+    what the eigenvalues are found for, is not needed for the stable range alone."""
+    a0_roots, h3_roots = _candidates(m, g)
+    return _stable_between(m, g, sorted(set(a0_roots + h3_roots)))
+
+
+def _candidates(m: Matrices, g: float) -> tuple[list[float], list[float]]:
+    """The speeds v > 0 where the stability can change: the roots of a0(v) (a real
+    eigenvalue through 0) and of H3(v) (a pair through the imaginary axis)."""
+    return _positive_roots(_characteristic(m, g)[0]), _positive_roots(_hurwitz_of(m, g))
+
+
+def _stable_between(m: Matrices, g: float, edges: list[float]) -> list[tuple[float, float]]:
+    """The stable intervals of v > 0 cut at ``edges`` (ascending): each decided at one
+    probe speed inside it, neighbours that are both stable joined."""
     points = [0.0] + edges + [math.inf]
     stable: list[tuple[float, float]] = []
     for lo, hi in zip(points, points[1:]):
@@ -599,7 +620,7 @@ def stability(m: Matrices, g: float) -> Stability:
                 stable[-1] = (stable[-1][0], hi)
             else:
                 stable.append((lo, hi))
-    return Stability(weave, capsize, stable, other, spectra)
+    return stable
 
 
 def motion(ev: Spectrum, tol: float = 1e-12) -> str:
