@@ -271,6 +271,8 @@ def polyder(c: list[float]) -> list[float]:
 
 
 _EPS = 2.220446049250313e-16
+_SWEEPS = 500       # Aberth sweeps at most
+_WATCH = 16         # the sweep from which ``roots`` looks for z going round a cycle
 
 
 def roots(c: list[float]) -> list[complex]:
@@ -305,7 +307,22 @@ def roots(c: list[float]) -> list[complex]:
     dtop, drest = dmonic[-1], dmonic[-2::-1]
     others_of = [(i, [j for j in range(n) if j != i]) for i in range(n)]
     tol, isfinite = 4 * _EPS, cmath.isfinite
-    for _ in range(500):
+    # A sweep is a function of z alone: once z is back (bit for bit) where it stood at the
+    # start of an earlier sweep, the sweeps go round that cycle to the last one, and z is
+    # where the cycle stands after _SWEEPS sweeps, without the sweeps in between. (Near a
+    # pair +-sigma or a double root the steps can circle in the last bits and never meet
+    # the tolerance.) Watched from sweep _WATCH on: most polynomials have converged by then.
+    history: list[tuple[complex, ...]] = []     # z at the start of sweeps _WATCH, ...
+    start: dict[tuple[complex, ...], int] = {}
+    for sweep in range(_SWEEPS):
+        if sweep >= _WATCH:
+            state = tuple(z)
+            first = start.setdefault(state, sweep)
+            # equal as numbers is not enough: 0.0 and -0.0 (repr tells them apart, exactly)
+            if first != sweep and repr(state) == repr(history[first - _WATCH]):
+                z = list(history[first - _WATCH + (_SWEEPS - first) % (sweep - first)])
+                break
+            history.append(state)
         moved = False
         for i, js in others_of:
             zi = z[i]
