@@ -11,6 +11,9 @@ test_bicycle_hurwitz.py):
 - ``roots`` stops its Aberth sweeps once z comes back to where an earlier sweep left it
   (the sweeps would go round that cycle to the 500th): the roots are those of the sweeps
   run to the end (``roots_plain`` below, the finder as it was, in its plainest form).
+- the characteristic coefficients a_k(v) and H3(v) have their polynomial products
+  written out: they are what the polynomial arithmetic gives (``polymul``, ``polyadd``,
+  ``polysub``), also for matrices with zero, negative-zero, tiny and huge entries.
 """
 
 from __future__ import annotations
@@ -200,3 +203,35 @@ def test_roots_cycle_of_a_pair_plus_minus_sigma():
                 assert same(bike.roots(c), want)
                 return
     pytest.fail("no quartic whose sweeps never settle")
+
+
+def special_matrices(seed: int, count: int):
+    """Matrices whose entries are drawn from ordinary numbers, 0.0, -0.0, numbers whose
+    products underflow or overflow, and infinities: where the written-out products must
+    still be the polynomials' (or be left to them)."""
+    rng = random.Random(seed)
+    special = (0.0, -0.0, 1e-170, -3e-200, 1e160, -2e200, math.inf)
+
+    def entry():
+        return rng.choice(special) if rng.random() < 0.3 else rng.gauss(0.0, 10.0)
+
+    for _ in range(count):
+        yield bike.Matrices(*(bike.Matrix2([[entry(), entry()], [entry(), entry()]])
+                              for _ in range(4)))
+
+
+def test_characteristic_and_hurwitz_written_out_are_the_polynomials():
+    ms = bicycles(150, seed=9)
+    ms += [bike.matrices(dict(bike.BENCHMARK, c=0.0)), bike.matrices(dict(bike.BENCHMARK,
+                                                                           **{"lambda": 0.0}))]
+    ms += list(special_matrices(10, 3000))
+    finite = 0
+    for m in ms:
+        for g in (G, 0.0):
+            want = bike._characteristic_by_polynomials(m, g)
+            got = bike._characteristic(m, g)
+            assert same(got, want), m
+            assert same(bike._hurwitz_of(m, g), tuple(bike.hurwitz([list(a) for a in want])))
+            finite += all(math.isfinite(x) for a in want for x in a)
+    # the comparison means something: many finite, many not (left to the polynomials)
+    assert finite > 1000 and 2 * len(ms) - finite > 1000

@@ -427,7 +427,51 @@ def characteristic(m: Matrices, g: float) -> list[list[float]]:
 
 @functools.lru_cache(maxsize=64)
 def _characteristic(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
-    """The coefficients of ``characteristic``.
+    """The coefficients of ``characteristic``: ``_characteristic_by_polynomials`` with its
+    products written out (``_characteristic_written_out``) wherever that one is finite."""
+    coeffs = _characteristic_written_out(m, g)
+    if all(math.isfinite(x) for a in coeffs for x in a):
+        return coeffs
+    return _characteristic_by_polynomials(m, g)
+
+
+def _characteristic_written_out(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """``_characteristic_by_polynomials`` with the polynomial products written out: the
+    same products added in the same order, so the same floats wherever these are finite.
+
+    A = M, B = v C1, C = g K0 + v^2 K2 have the coefficients [M_ij], [0, C1_ij] and
+    [g K0_ij, 0, K2_ij]. ``polymul`` sums each coefficient's products from 0.0, lowest
+    power of the first factor first; a product with one of those zero coefficients is
+    +-0 (its factors finite), and a sum that starts at 0.0 is never -0.0, so it neither
+    changes a sum nor its sign and is left out; for the same reason the zeros ``_trim``
+    drops and the 0.0 that ``polyadd`` pads with are the same. (An infinite coefficient
+    is where those products are not +-0: that case is left to the polynomials.)
+    """
+    (a00, a01), (a10, a11) = m.M
+    (b00, b01), (b10, b11) = m.C1
+    (k00, k01), (k10, k11) = ((g * x for x in row) for row in m.K0)
+    (q00, q01), (q10, q11) = m.K2
+    a4 = [(0.0 + a00 * a11) - (0.0 + a01 * a10)]
+    a3 = [0.0, ((0.0 + a00 * b11) + (0.0 + b00 * a11))
+          - ((0.0 + a01 * b10) + (0.0 + b01 * a10))]
+    a2 = [((0.0 + a00 * k11) + (0.0 + k00 * a11)) - ((0.0 + a01 * k10) + (0.0 + k01 * a10)),
+          0.0,
+          (((0.0 + a00 * q11) + (0.0 + q00 * a11)) - ((0.0 + a01 * q10) + (0.0 + q01 * a10)))
+          + ((0.0 + b00 * b11) - (0.0 + b01 * b10))]
+    a1 = [0.0,
+          ((0.0 + b00 * k11) + (0.0 + k00 * b11)) - ((0.0 + b01 * k10) + (0.0 + k01 * b10)),
+          0.0,
+          ((0.0 + b00 * q11) + (0.0 + q00 * b11)) - ((0.0 + b01 * q10) + (0.0 + q01 * b10))]
+    a0 = [(0.0 + k00 * k11) - (0.0 + k01 * k10),
+          0.0,
+          ((0.0 + k00 * q11) + q00 * k11) - ((0.0 + k01 * q10) + q01 * k10),
+          0.0,
+          (0.0 + q00 * q11) - (0.0 + q01 * q10)]
+    return tuple(tuple(_trim(a)) for a in (a0, a1, a2, a3, a4))
+
+
+def _characteristic_by_polynomials(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """The coefficients of ``characteristic``, by polynomial arithmetic.
 
     Each a_k is a list of coefficients in v (lowest power first).
     For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
@@ -477,7 +521,36 @@ def hurwitz_of(m: Matrices, g: float) -> list[float]:
 
 @functools.lru_cache(maxsize=64)
 def _hurwitz_of(m: Matrices, g: float) -> tuple[float, ...]:
+    coeffs = _characteristic(m, g)
+    if all(math.isfinite(x) for a in coeffs for x in a):
+        h3 = _hurwitz_written_out(coeffs)
+        if all(math.isfinite(x) for x in h3):
+            return h3
     return tuple(hurwitz(characteristic(m, g)))
+
+
+def _hurwitz_written_out(coeffs: tuple[tuple[float, ...], ...]) -> tuple[float, ...]:
+    """``hurwitz`` of Eq. 5.3's (finite) a_k(v), its products written out: the same products
+    added in the same order, so the same floats wherever these are finite.
+
+    a1 and a3 hold odd powers of v only, a0, a2 and a4 even ones (B = v C1 is odd in v,
+    A and C even): the other coefficients are 0.0, as are the products with them, left
+    out for the reasons ``_characteristic_written_out`` gives (a sum that starts at 0.0
+    is never -0.0), and so are the zeros ``_trim`` drops and ``polyadd`` pads with.
+    """
+    a0, a1, a2, a3, a4 = ((*a, 0.0, 0.0, 0.0, 0.0)[:5] for a in coeffs)
+    t0, t2, t4 = a0[0], a0[2], a0[4]
+    p1, p3 = a1[1], a1[3]
+    r0, r2 = a2[0], a2[2]
+    s1, u0 = a3[1], a4[0]
+    x1, x3, x5 = 0.0 + p1 * r0, (0.0 + p1 * r2) + p3 * r0, 0.0 + p3 * r2    # a1 a2
+    y2 = 0.0 + s1 * s1                                                    # a3^2
+    z2, z4, z6 = 0.0 + p1 * p1, (0.0 + p1 * p3) + p3 * p1, 0.0 + p3 * p3    # a1^2
+    # a1 a2 a3 - (a0 a3^2 + a1^2 a4), powers v^2, v^4, v^6
+    h2 = (0.0 + x1 * s1) - ((0.0 + t0 * y2) + (0.0 + z2 * u0))
+    h4 = (0.0 + x3 * s1) - ((0.0 + t2 * y2) + (0.0 + z4 * u0))
+    h6 = (0.0 + x5 * s1) - ((0.0 + t4 * y2) + (0.0 + z6 * u0))
+    return tuple(_trim([0.0, 0.0, h2, 0.0, h4, 0.0, h6]))
 
 
 def _positive_roots(poly: list[float]) -> list[float]:
