@@ -9,8 +9,9 @@ test_bicycle_hurwitz.py):
   worked answer shows), is ``stability(...).stable`` without the eigenvalues at the
   candidate speeds.
 - ``roots`` stops its Aberth sweeps once z comes back to where an earlier sweep left it
-  (the sweeps would go round that cycle to the 500th): the roots are those of the sweeps
-  run to the end (``roots_plain`` below, the finder as it was, in its plainest form).
+  (the sweeps would go round that cycle to the 500th), and its Newton polish at a step
+  that leaves x as it is: the roots are those of every sweep and step run
+  (``roots_plain`` below, the finder as it was, in its plainest form).
 - the characteristic coefficients a_k(v) and H3(v) have their polynomial products
   written out: they are what the polynomial arithmetic gives (``polymul``, ``polyadd``,
   ``polysub``), also for matrices with zero, negative-zero, tiny and huge entries.

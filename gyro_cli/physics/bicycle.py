@@ -299,13 +299,13 @@ def roots(c: list[float]) -> list[complex]:
     if not all(math.isfinite(x) for x in monic):
         return out + [complex(math.nan, 0.0)] * n
     radius = 2 * max(abs(monic[k]) ** (1.0 / (n - k)) for k in range(n))
-    z = [radius * cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)]
+    circle, others_of = _start(n)
+    z = [radius * point for point in circle]
     dmonic = polyder(monic)
     # polyval and sum written out in the loop (the same operations in the same order, so
     # the same floats): the iteration is most of a bicycle's check
     top, rest = monic[-1], monic[-2::-1]
     dtop, drest = dmonic[-1], dmonic[-2::-1]
-    others_of = [(i, [j for j in range(n) if j != i]) for i in range(n)]
     tol, isfinite = 4 * _EPS, cmath.isfinite
     # A sweep is a function of z alone: once z is back (bit for bit) where it stood at the
     # start of an earlier sweep, the sweeps go round that cycle to the last one, and z is
@@ -345,7 +345,7 @@ def roots(c: list[float]) -> list[complex]:
             if not isfinite(step):
                 continue
             z[i] = zi = zi - step
-            if abs(step) > tol * abs(zi):
+            if not moved and abs(step) > tol * abs(zi):
                 moved = True
         if not moved:
             break
@@ -378,13 +378,24 @@ def roots(c: list[float]) -> list[complex]:
     return out
 
 
+@functools.lru_cache(maxsize=16)
+def _start(n: int) -> tuple[tuple[complex, ...], tuple[tuple[int, tuple[int, ...]], ...]]:
+    """What ``roots`` starts from for degree n, the same for every polynomial: the n
+    points on the unit circle (times the radius, the start of the sweeps) and each index
+    with the others."""
+    return (tuple(cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)),
+            tuple((i, tuple(j for j in range(n) if j != i)) for i in range(n)))
+
+
 def _newton(x: complex | float, c: list[float], d: list[float],
             steps: int = 4) -> complex | float:
     """Newton steps on c from x (complex or real; d = polyder(c)), kept while the residual
     does not grow.
 
     polyval written out (the same operations in the same order, so the same floats): the
-    polishing is a third of ``roots``.
+    polishing is a third of ``roots``. A step that leaves x as it is (bit for bit: repr
+    tells 0.0 from -0.0) ends the steps: the residual there is the same, so every step
+    after it would leave x as it is too.
     """
     ctop, crest = c[-1], c[-2::-1]
     dtop, drest = d[-1], d[-2::-1]
@@ -400,6 +411,8 @@ def _newton(x: complex | float, c: list[float], d: list[float],
         if slope == 0:
             break
         trial = x - value / slope
+        if trial == x and repr(trial) == repr(x):
+            break
         new = ctop + trial * 0
         for coefficient in crest:
             new = coefficient + new * trial
