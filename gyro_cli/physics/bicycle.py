@@ -657,13 +657,19 @@ def _stable_at(m: Matrices, v: float, g: float) -> bool:
     """Whether every eigenvalue at speed v has Re(s) < 0 (spectral_abscissa < 0): by
     routh_hurwitz on a_k(v) (Eq. 5.3's characteristic quartic), and by the eigenvalues
     only where rounding could decide it."""
-    coeffs = _characteristic(m, g)
-    a = [polyval(v, c) for c in coeffs]
+    a = [polyval(v, c) for c in _characteristic(m, g)]
     x = abs(v)
-    decided = routh_hurwitz(a, [polyval(x, [abs(cj) for cj in c]) for c in coeffs])
+    decided = routh_hurwitz(a, [polyval(x, c) for c in _magnitudes(m, g)])
     if decided is None:
         return max(_spectrum(a).real) < 0
     return decided
+
+
+@functools.lru_cache(maxsize=64)
+def _magnitudes(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """The magnitudes of a_k(v)'s coefficients, |c_j| (``routh_hurwitz``'s scale of a_k(v)
+    is sum |c_j| |v|^j): the same at every probe speed of a bicycle, found once."""
+    return tuple(tuple(abs(cj) for cj in c) for c in _characteristic(m, g))
 
 
 def stability(m: Matrices, g: float) -> Stability:
