@@ -393,9 +393,10 @@ def _newton(x: complex | float, c: list[float], d: list[float],
     does not grow.
 
     polyval written out (the same operations in the same order, so the same floats): the
-    polishing is a third of ``roots``. A step that leaves x as it is (bit for bit: repr
-    tells 0.0 from -0.0) ends the steps: the residual there is the same, so every step
-    after it would leave x as it is too.
+    polishing is a third of ``roots``. A step that leaves x as it is, bit for bit, ends the
+    steps: the residual there is the same, so every step after it would leave x as it is
+    too. (Equal numbers are equal bits but for the sign of a zero: where x has a zero
+    part, repr tells 0.0 from -0.0.)
     """
     ctop, crest = c[-1], c[-2::-1]
     dtop, drest = d[-1], d[-2::-1]
@@ -411,7 +412,8 @@ def _newton(x: complex | float, c: list[float], d: list[float],
         if slope == 0:
             break
         trial = x - value / slope
-        if trial == x and repr(trial) == repr(x):
+        if trial == x and (x.real != 0 and (x.imag != 0 or x.__class__ is float)
+                           or repr(trial) == repr(x)):
             break
         new = ctop + trial * 0
         for coefficient in crest:
