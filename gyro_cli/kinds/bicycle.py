@@ -371,7 +371,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     for v in stab.capsize:
         work.step("v_c", value=v, unit="m/s", note=("capsize speed, ", q(v, "m/s", sig=12),
                                                     *_A0_ZERO))
-    work.text(*_STABLE_EVERY, *_speeds(stab.stable))
+    stable = _speeds(stab.stable)       # trees: the share section shows the same range
+    work.text(*_STABLE_EVERY, *stable)
     if not stab.stable:
         work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "
                   "every speed")
@@ -382,7 +383,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         # only the range without the spin is shown: no weave or capsize speed of its own
         plain = bike.stable_speeds(bike.matrices(p, gyroscopic=False), g)
         work.section(*_SHARE_TITLE)
-        work.text("with the wheels' spin angular momentum: ", *_speeds(stab.stable))
+        work.text("with the wheels' spin angular momentum: ", *stable)
         work.text("without it (gyroscopic: false): ", *_speeds(plain))
         work.text(*_share(stab.stable, plain))
 
