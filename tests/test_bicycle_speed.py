@@ -15,6 +15,9 @@ test_bicycle_hurwitz.py):
 - the characteristic coefficients a_k(v) and H3(v) have their polynomial products
   written out: they are what the polynomial arithmetic gives (``polymul``, ``polyadd``,
   ``polysub``), also for matrices with zero, negative-zero, tiny and huge entries.
+- ``stability`` and ``stable_speeds`` are remembered per bicycle, as the characteristic
+  coefficients are (keyed by the matrices' values: 0.0 and -0.0 are one key, and the
+  answers are the same bits for both); each call gets lists of its own.
 """
 
 from __future__ import annotations
@@ -236,3 +239,37 @@ def test_characteristic_and_hurwitz_written_out_are_the_polynomials():
             finite += all(math.isfinite(x) for a in want for x in a)
     # the comparison means something: many finite, many not (left to the polynomials)
     assert finite > 1000 and 2 * len(ms) - finite > 1000
+
+
+def _flipped_zeros(m: bike.Matrices) -> bike.Matrices:
+    """The same matrices with every zero entry of the other sign."""
+    def flip(a):
+        return bike.Matrix2([[-x if x == 0 else x for x in row] for row in a])
+    return bike.Matrices(flip(m.M), flip(m.C1), flip(m.K0), flip(m.K2))
+
+
+def _forget() -> None:
+    for cached in (bike._characteristic, bike._hurwitz_of, bike._magnitudes, bike._stability,
+                   bike._stable_speeds):
+        cached.cache_clear()
+
+
+def test_stability_remembered_per_bicycle_is_what_it_works_out():
+    for m in bicycles(40, seed=13):
+        other = _flipped_zeros(m)
+        assert other == m and hash(other) == hash(m)       # one key for the cache
+        _forget()
+        first = bike.stability(m, G)
+        want = repr((first, first.spectra, bike.stable_speeds(m, G)))
+        _forget()
+        flipped = bike.stability(other, G)
+        assert repr((flipped, flipped.spectra, bike.stable_speeds(other, G))) == want
+        again = bike.stability(m, G)                       # remembered
+        assert repr((again, again.spectra, bike.stable_speeds(m, G))) == want
+        # lists of its own: changing them changes nothing remembered
+        again.weave.append(1.0)
+        again.stable.clear()
+        again.spectra.clear()
+        bike.stable_speeds(m, G).append((0.0, 1.0))
+        last = bike.stability(m, G)
+        assert repr((last, last.spectra, bike.stable_speeds(m, G))) == want

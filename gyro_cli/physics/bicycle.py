@@ -682,7 +682,17 @@ def stability(m: Matrices, g: float) -> Stability:
     interval decides it (``_stable_at``: Routh-Hurwitz on a_k(v), the eigenvalues
     where rounding could decide). The eigenvalues are found at the candidates only,
     to tell a capsize or weave speed from a root where the stability does not change.
+
+    Worked once per bicycle, as its characteristic coefficients are (problems of one
+    bicycle at several speeds share it); each call gets lists of its own.
     """
+    weave, capsize, stable, other, spectra = _stability(m, g)
+    return Stability(list(weave), list(capsize), list(stable), list(other), dict(spectra))
+
+
+@functools.lru_cache(maxsize=64)
+def _stability(m: Matrices, g: float) -> tuple[tuple, ...]:
+    """``stability``'s speeds, intervals and spectra, as tuples."""
     a0_roots, h3_roots = _candidates(m, g)
     capsize, weave, other = [], [], []
     spectra: dict[float, Spectrum] = {}
@@ -701,16 +711,22 @@ def stability(m: Matrices, g: float) -> Stability:
         else:
             other.append(v)                  # a real pair +-sigma: no change of stability
     stable = _stable_between(m, g, sorted(set(capsize + weave + other)))
-    return Stability(weave, capsize, stable, other, spectra)
+    return tuple(weave), tuple(capsize), tuple(stable), tuple(other), tuple(spectra.items())
 
 
 def stable_speeds(m: Matrices, g: float) -> list[tuple[float, float]]:
     """``stability(m, g).stable``, the same intervals, without the eigenvalues at the
     candidates: every candidate is an edge whether it is a capsize speed, a weave speed
     or neither (the probes between the edges decide), so telling them apart, which is
-    what the eigenvalues are found for, is not needed for the stable range alone."""
+    what the eigenvalues are found for, is not needed for the stable range alone.
+    Worked once per bicycle, as ``stability`` is."""
+    return list(_stable_speeds(m, g))
+
+
+@functools.lru_cache(maxsize=64)
+def _stable_speeds(m: Matrices, g: float) -> tuple[tuple[float, float], ...]:
     a0_roots, h3_roots = _candidates(m, g)
-    return _stable_between(m, g, sorted(set(a0_roots + h3_roots)))
+    return tuple(_stable_between(m, g, sorted(set(a0_roots + h3_roots))))
 
 
 def _candidates(m: Matrices, g: float) -> tuple[list[float], list[float]]:
