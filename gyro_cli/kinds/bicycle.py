@@ -371,7 +371,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     for v in stab.capsize:
         work.step("v_c", value=v, unit="m/s", note=("capsize speed, ", q(v, "m/s", sig=12),
                                                     *_A0_ZERO))
-    work.text(*_STABLE_EVERY, *_speeds(stab.stable))
+    stable = _speeds(stab.stable)       # trees: the share section shows the same range
+    work.text(*_STABLE_EVERY, *stable)
     if not stab.stable:
         work.warn("no self-stable speed for these data: the bicycle needs a rider's control at "
                   "every speed")
@@ -379,11 +380,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.warn("the stable range has no upper end for these data (no capsize speed)")
 
     if gyroscopic:
-        plain = bike.stability(bike.matrices(p, gyroscopic=False), g)
+        # only the range without the spin is shown: no weave or capsize speed of its own
+        plain = bike.stable_speeds(bike.matrices(p, gyroscopic=False), g)
         work.section(*_SHARE_TITLE)
-        work.text("with the wheels' spin angular momentum: ", *_speeds(stab.stable))
-        work.text("without it (gyroscopic: false): ", *_speeds(plain.stable))
-        work.text(*_share(stab, plain))
+        work.text("with the wheels' spin angular momentum: ", *stable)
+        work.text("without it (gyroscopic: false): ", *_speeds(plain))
+        work.text(*_share(stab.stable, plain))
 
     if speed is not None:
         ev = bike.eigenvalues(m, speed, g)
@@ -438,18 +440,19 @@ def _eigen(e: complex) -> float | complex:
     return complex(e) if e.imag else float(e.real)
 
 
-def _share(with_spin, without) -> tuple:
-    """How the wheels' spin moves the self-stable range, as pieces of a sentence."""
-    if not with_spin.stable and not without.stable:
+def _share(with_spin: list[tuple[float, float]], without: list[tuple[float, float]]) -> tuple:
+    """How the wheels' spin moves the self-stable range (the stable intervals with and
+    without it), as pieces of a sentence."""
+    if not with_spin and not without:
         return ("neither has a self-stable speed.",)
-    if not without.stable:
+    if not without:
         return ("without the wheels' spin angular momentum there is no self-stable speed at all: "
                 "the weave never stabilises. For these data the wheels' spin is needed for "
                 "self-stability, while the rest of the design (trail, steer-axis tilt, mass "
                 "distribution) decides where the range lies: the chapter's 'partly'.",)
-    if not with_spin.stable:
+    if not with_spin:
         return ("the wheels' spin removes the self-stable range these data have without it.",)
-    (lo1, hi1), (lo0, hi0) = with_spin.stable[0], without.stable[0]
+    (lo1, hi1), (lo0, hi0) = with_spin[0], without[0]
 
     def end(x: float) -> Expr:
         return q(x, "m/s", sig=6) if math.isfinite(x) else INF

@@ -271,6 +271,8 @@ def polyder(c: list[float]) -> list[float]:
 
 
 _EPS = 2.220446049250313e-16
+_SWEEPS = 500       # Aberth sweeps at most
+_WATCH = 16         # the sweep from which ``roots`` looks for z going round a cycle
 
 
 def roots(c: list[float]) -> list[complex]:
@@ -297,15 +299,30 @@ def roots(c: list[float]) -> list[complex]:
     if not all(math.isfinite(x) for x in monic):
         return out + [complex(math.nan, 0.0)] * n
     radius = 2 * max(abs(monic[k]) ** (1.0 / (n - k)) for k in range(n))
-    z = [radius * cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)]
+    circle, others_of = _start(n)
+    z = [radius * point for point in circle]
     dmonic = polyder(monic)
     # polyval and sum written out in the loop (the same operations in the same order, so
     # the same floats): the iteration is most of a bicycle's check
     top, rest = monic[-1], monic[-2::-1]
     dtop, drest = dmonic[-1], dmonic[-2::-1]
-    others_of = [(i, [j for j in range(n) if j != i]) for i in range(n)]
     tol, isfinite = 4 * _EPS, cmath.isfinite
-    for _ in range(500):
+    # A sweep is a function of z alone: once z is back (bit for bit) where it stood at the
+    # start of an earlier sweep, the sweeps go round that cycle to the last one, and z is
+    # where the cycle stands after _SWEEPS sweeps, without the sweeps in between. (Near a
+    # pair +-sigma or a double root the steps can circle in the last bits and never meet
+    # the tolerance.) Watched from sweep _WATCH on: most polynomials have converged by then.
+    history: list[tuple[complex, ...]] = []     # z at the start of sweeps _WATCH, ...
+    start: dict[tuple[complex, ...], int] = {}
+    for sweep in range(_SWEEPS):
+        if sweep >= _WATCH:
+            state = tuple(z)
+            first = start.setdefault(state, sweep)
+            # equal as numbers is not enough: 0.0 and -0.0 (repr tells them apart, exactly)
+            if first != sweep and repr(state) == repr(history[first - _WATCH]):
+                z = list(history[first - _WATCH + (_SWEEPS - first) % (sweep - first)])
+                break
+            history.append(state)
         moved = False
         for i, js in others_of:
             zi = z[i]
@@ -328,7 +345,7 @@ def roots(c: list[float]) -> list[complex]:
             if not isfinite(step):
                 continue
             z[i] = zi = zi - step
-            if abs(step) > tol * abs(zi):
+            if not moved and abs(step) > tol * abs(zi):
                 moved = True
         if not moved:
             break
@@ -361,13 +378,25 @@ def roots(c: list[float]) -> list[complex]:
     return out
 
 
+@functools.lru_cache(maxsize=16)
+def _start(n: int) -> tuple[tuple[complex, ...], tuple[tuple[int, tuple[int, ...]], ...]]:
+    """What ``roots`` starts from for degree n, the same for every polynomial: the n
+    points on the unit circle (times the radius, the start of the sweeps) and each index
+    with the others."""
+    return (tuple(cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)),
+            tuple((i, tuple(j for j in range(n) if j != i)) for i in range(n)))
+
+
 def _newton(x: complex | float, c: list[float], d: list[float],
             steps: int = 4) -> complex | float:
     """Newton steps on c from x (complex or real; d = polyder(c)), kept while the residual
     does not grow.
 
     polyval written out (the same operations in the same order, so the same floats): the
-    polishing is a third of ``roots``.
+    polishing is a third of ``roots``. A step that leaves x as it is, bit for bit, ends the
+    steps: the residual there is the same, so every step after it would leave x as it is
+    too. (Equal numbers are equal bits but for the sign of a zero: where x has a zero
+    part, repr tells 0.0 from -0.0.)
     """
     ctop, crest = c[-1], c[-2::-1]
     dtop, drest = d[-1], d[-2::-1]
@@ -383,6 +412,9 @@ def _newton(x: complex | float, c: list[float], d: list[float],
         if slope == 0:
             break
         trial = x - value / slope
+        if trial == x and (x.real != 0 and (x.imag != 0 or x.__class__ is float)
+                           or repr(trial) == repr(x)):
+            break
         new = ctop + trial * 0
         for coefficient in crest:
             new = coefficient + new * trial
@@ -410,7 +442,51 @@ def characteristic(m: Matrices, g: float) -> list[list[float]]:
 
 @functools.lru_cache(maxsize=64)
 def _characteristic(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
-    """The coefficients of ``characteristic``.
+    """The coefficients of ``characteristic``: ``_characteristic_by_polynomials`` with its
+    products written out (``_characteristic_written_out``) wherever that one is finite."""
+    coeffs = _characteristic_written_out(m, g)
+    if all(math.isfinite(x) for a in coeffs for x in a):
+        return coeffs
+    return _characteristic_by_polynomials(m, g)
+
+
+def _characteristic_written_out(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """``_characteristic_by_polynomials`` with the polynomial products written out: the
+    same products added in the same order, so the same floats wherever these are finite.
+
+    A = M, B = v C1, C = g K0 + v^2 K2 have the coefficients [M_ij], [0, C1_ij] and
+    [g K0_ij, 0, K2_ij]. ``polymul`` sums each coefficient's products from 0.0, lowest
+    power of the first factor first; a product with one of those zero coefficients is
+    +-0 (its factors finite), and a sum that starts at 0.0 is never -0.0, so it neither
+    changes a sum nor its sign and is left out; for the same reason the zeros ``_trim``
+    drops and the 0.0 that ``polyadd`` pads with are the same. (An infinite coefficient
+    is where those products are not +-0: that case is left to the polynomials.)
+    """
+    (a00, a01), (a10, a11) = m.M
+    (b00, b01), (b10, b11) = m.C1
+    (k00, k01), (k10, k11) = ((g * x for x in row) for row in m.K0)
+    (q00, q01), (q10, q11) = m.K2
+    a4 = [(0.0 + a00 * a11) - (0.0 + a01 * a10)]
+    a3 = [0.0, ((0.0 + a00 * b11) + (0.0 + b00 * a11))
+          - ((0.0 + a01 * b10) + (0.0 + b01 * a10))]
+    a2 = [((0.0 + a00 * k11) + (0.0 + k00 * a11)) - ((0.0 + a01 * k10) + (0.0 + k01 * a10)),
+          0.0,
+          (((0.0 + a00 * q11) + (0.0 + q00 * a11)) - ((0.0 + a01 * q10) + (0.0 + q01 * a10)))
+          + ((0.0 + b00 * b11) - (0.0 + b01 * b10))]
+    a1 = [0.0,
+          ((0.0 + b00 * k11) + (0.0 + k00 * b11)) - ((0.0 + b01 * k10) + (0.0 + k01 * b10)),
+          0.0,
+          ((0.0 + b00 * q11) + (0.0 + q00 * b11)) - ((0.0 + b01 * q10) + (0.0 + q01 * b10))]
+    a0 = [(0.0 + k00 * k11) - (0.0 + k01 * k10),
+          0.0,
+          ((0.0 + k00 * q11) + q00 * k11) - ((0.0 + k01 * q10) + q01 * k10),
+          0.0,
+          (0.0 + q00 * q11) - (0.0 + q01 * q10)]
+    return tuple(tuple(_trim(a)) for a in (a0, a1, a2, a3, a4))
+
+
+def _characteristic_by_polynomials(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """The coefficients of ``characteristic``, by polynomial arithmetic.
 
     Each a_k is a list of coefficients in v (lowest power first).
     For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
@@ -460,7 +536,36 @@ def hurwitz_of(m: Matrices, g: float) -> list[float]:
 
 @functools.lru_cache(maxsize=64)
 def _hurwitz_of(m: Matrices, g: float) -> tuple[float, ...]:
+    coeffs = _characteristic(m, g)
+    if all(math.isfinite(x) for a in coeffs for x in a):
+        h3 = _hurwitz_written_out(coeffs)
+        if all(math.isfinite(x) for x in h3):
+            return h3
     return tuple(hurwitz(characteristic(m, g)))
+
+
+def _hurwitz_written_out(coeffs: tuple[tuple[float, ...], ...]) -> tuple[float, ...]:
+    """``hurwitz`` of Eq. 5.3's (finite) a_k(v), its products written out: the same products
+    added in the same order, so the same floats wherever these are finite.
+
+    a1 and a3 hold odd powers of v only, a0, a2 and a4 even ones (B = v C1 is odd in v,
+    A and C even): the other coefficients are 0.0, as are the products with them, left
+    out for the reasons ``_characteristic_written_out`` gives (a sum that starts at 0.0
+    is never -0.0), and so are the zeros ``_trim`` drops and ``polyadd`` pads with.
+    """
+    a0, a1, a2, a3, a4 = ((*a, 0.0, 0.0, 0.0, 0.0)[:5] for a in coeffs)
+    t0, t2, t4 = a0[0], a0[2], a0[4]
+    p1, p3 = a1[1], a1[3]
+    r0, r2 = a2[0], a2[2]
+    s1, u0 = a3[1], a4[0]
+    x1, x3, x5 = 0.0 + p1 * r0, (0.0 + p1 * r2) + p3 * r0, 0.0 + p3 * r2    # a1 a2
+    y2 = 0.0 + s1 * s1                                                    # a3^2
+    z2, z4, z6 = 0.0 + p1 * p1, (0.0 + p1 * p3) + p3 * p1, 0.0 + p3 * p3    # a1^2
+    # a1 a2 a3 - (a0 a3^2 + a1^2 a4), powers v^2, v^4, v^6
+    h2 = (0.0 + x1 * s1) - ((0.0 + t0 * y2) + (0.0 + z2 * u0))
+    h4 = (0.0 + x3 * s1) - ((0.0 + t2 * y2) + (0.0 + z4 * u0))
+    h6 = (0.0 + x5 * s1) - ((0.0 + t4 * y2) + (0.0 + z6 * u0))
+    return tuple(_trim([0.0, 0.0, h2, 0.0, h4, 0.0, h6]))
 
 
 def _positive_roots(poly: list[float]) -> list[float]:
@@ -554,13 +659,19 @@ def _stable_at(m: Matrices, v: float, g: float) -> bool:
     """Whether every eigenvalue at speed v has Re(s) < 0 (spectral_abscissa < 0): by
     routh_hurwitz on a_k(v) (Eq. 5.3's characteristic quartic), and by the eigenvalues
     only where rounding could decide it."""
-    coeffs = _characteristic(m, g)
-    a = [polyval(v, c) for c in coeffs]
+    a = [polyval(v, c) for c in _characteristic(m, g)]
     x = abs(v)
-    decided = routh_hurwitz(a, [polyval(x, [abs(cj) for cj in c]) for c in coeffs])
+    decided = routh_hurwitz(a, [polyval(x, c) for c in _magnitudes(m, g)])
     if decided is None:
         return max(_spectrum(a).real) < 0
     return decided
+
+
+@functools.lru_cache(maxsize=64)
+def _magnitudes(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """The magnitudes of a_k(v)'s coefficients, |c_j| (``routh_hurwitz``'s scale of a_k(v)
+    is sum |c_j| |v|^j): the same at every probe speed of a bicycle, found once."""
+    return tuple(tuple(abs(cj) for cj in c) for c in _characteristic(m, g))
 
 
 def stability(m: Matrices, g: float) -> Stability:
@@ -571,17 +682,27 @@ def stability(m: Matrices, g: float) -> Stability:
     interval decides it (``_stable_at``: Routh-Hurwitz on a_k(v), the eigenvalues
     where rounding could decide). The eigenvalues are found at the candidates only,
     to tell a capsize or weave speed from a root where the stability does not change.
+
+    Worked once per bicycle, as its characteristic coefficients are (problems of one
+    bicycle at several speeds share it); each call gets lists of its own.
     """
-    coeffs = _characteristic(m, g)
+    weave, capsize, stable, other, spectra = _stability(m, g)
+    return Stability(list(weave), list(capsize), list(stable), list(other), dict(spectra))
+
+
+@functools.lru_cache(maxsize=64)
+def _stability(m: Matrices, g: float) -> tuple[tuple, ...]:
+    """``stability``'s speeds, intervals and spectra, as tuples."""
+    a0_roots, h3_roots = _candidates(m, g)
     capsize, weave, other = [], [], []
     spectra: dict[float, Spectrum] = {}
-    for v in _positive_roots(coeffs[0]):
+    for v in a0_roots:
         ev = spectra[v] = eigenvalues(m, v, g)
         if min(abs(e) for e in ev) <= 1e-6 * max(1.0, max(abs(e) for e in ev)):
             capsize.append(v)                # a real eigenvalue at 0
         else:
             other.append(v)                  # rounding: no eigenvalue there after all
-    for v in _positive_roots(_hurwitz_of(m, g)):
+    for v in h3_roots:
         ev = spectra[v] = eigenvalues(m, v, g)
         scale = max(1.0, max(abs(e) for e in ev))
         near = min(ev, key=lambda e: abs(e.real))
@@ -589,7 +710,34 @@ def stability(m: Matrices, g: float) -> Stability:
             weave.append(v)                  # a pair +-i omega on the imaginary axis
         else:
             other.append(v)                  # a real pair +-sigma: no change of stability
-    edges = sorted(set(capsize + weave + other))
+    stable = _stable_between(m, g, sorted(set(capsize + weave + other)))
+    return tuple(weave), tuple(capsize), tuple(stable), tuple(other), tuple(spectra.items())
+
+
+def stable_speeds(m: Matrices, g: float) -> list[tuple[float, float]]:
+    """``stability(m, g).stable``, the same intervals, without the eigenvalues at the
+    candidates: every candidate is an edge whether it is a capsize speed, a weave speed
+    or neither (the probes between the edges decide), so telling them apart, which is
+    what the eigenvalues are found for, is not needed for the stable range alone.
+    Worked once per bicycle, as ``stability`` is."""
+    return list(_stable_speeds(m, g))
+
+
+@functools.lru_cache(maxsize=64)
+def _stable_speeds(m: Matrices, g: float) -> tuple[tuple[float, float], ...]:
+    a0_roots, h3_roots = _candidates(m, g)
+    return tuple(_stable_between(m, g, sorted(set(a0_roots + h3_roots))))
+
+
+def _candidates(m: Matrices, g: float) -> tuple[list[float], list[float]]:
+    """The speeds v > 0 where the stability can change: the roots of a0(v) (a real
+    eigenvalue through 0) and of H3(v) (a pair through the imaginary axis)."""
+    return _positive_roots(_characteristic(m, g)[0]), _positive_roots(_hurwitz_of(m, g))
+
+
+def _stable_between(m: Matrices, g: float, edges: list[float]) -> list[tuple[float, float]]:
+    """The stable intervals of v > 0 cut at ``edges`` (ascending): each decided at one
+    probe speed inside it, neighbours that are both stable joined."""
     points = [0.0] + edges + [math.inf]
     stable: list[tuple[float, float]] = []
     for lo, hi in zip(points, points[1:]):
@@ -599,7 +747,7 @@ def stability(m: Matrices, g: float) -> Stability:
                 stable[-1] = (stable[-1][0], hi)
             else:
                 stable.append((lo, hi))
-    return Stability(weave, capsize, stable, other, spectra)
+    return stable
 
 
 def motion(ev: Spectrum, tol: float = 1e-12) -> str:
