@@ -267,7 +267,7 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
                                      error=internal_message(problem.file, err)))
 
     if min(jobs, len(files)) > 1:
-        from . import pool  # multiprocessing, only for a pool
+        from . import pool  # forked workers, only for a pool
 
         if pool.forks():
             warm()
