@@ -23,6 +23,7 @@ from gyro_cli import kinds
 from gyro_cli.core.body import BODY_PARAMS
 from gyro_cli.solving.problem import load
 
+from conftest import PROBLEMS
 from test_check import put
 
 G = 9.81
@@ -268,6 +269,42 @@ def test_vary_is_reproducible_and_every_variant_checks_clean(run, tmp_path):
         assert spin >= _least_spin(theta)
         assert len(data["expected"]["precession"]) == 2
         assert "vary" not in data
+
+
+def test_vary_leaves_out_an_answer_a_variant_does_not_have(run, tmp_path):
+    """A bicycle without its wheels' spin is never self-stable: it has no weave speed
+    (gyro solve gives none, with a warning), so a variant keys none rather than writing
+    `weave_speed: []`, which gyro check refuses as an expected value; the variants
+    check clean and still ask for it in `find`."""
+    text = (PROBLEMS / "bicycle_no_spin.yaml").read_text()
+    text = text.replace("find:\n  motion: null\n", "find:\n  motion: null\n  weave_speed: m/s\n")
+    text = re.sub(r"expected:\n(  .*\n)+", "", text) + "vary:\n  speed: [0.9, 1.1]\n"
+    source = put(tmp_path, "no_spin.yaml", text)
+    out = tmp_path / "out"
+    assert run("vary", source, "--count", "3", "--seed", "2", "-o", out).exit_code == 0
+    for name in sorted(os.listdir(out)):
+        data = yaml.safe_load((out / name).read_text())
+        assert "weave_speed" in data["find"] and "weave_speed" not in data["expected"]
+        assert data["expected"]["motion"] == "weave"
+    result = run("check", out)
+    assert result.exit_code == 0, result.output
+
+
+def test_vary_writes_the_digits_a_tight_tolerance_needs(run, tmp_path):
+    """With `tolerance: 14 sig` an expected value needs more than 12 significant digits
+    to be within half a unit of its 14th digit of the computed value: every variant
+    keys such values and checks clean against its own key."""
+    source = put(tmp_path, "top.yaml", TOP.replace("tolerance: 1%", "tolerance: 14 sig"))
+    out = tmp_path / "out"
+    assert run("vary", source, "--count", "12", "--seed", "3", "-o", out).exit_code == 0
+    digits = []
+    for name in sorted(os.listdir(out)):
+        data = yaml.safe_load((out / name).read_text())
+        digits += [len(re.sub(r"[^0-9]", "", v.split()[0].split("e")[0]).lstrip("0"))
+                   for v in data["expected"]["precession"]]
+    assert max(digits) > 12  # the old 12-digit text could not meet 14 sig
+    result = run("check", out)
+    assert result.exit_code == 0, result.output
 
 
 def test_vary_refuses_overwrite_and_impossible_ranges(run, tmp_path):
