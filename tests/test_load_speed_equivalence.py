@@ -110,8 +110,8 @@ def test_a_kinds_table_holds_what_the_kind_declares(name):
     assert facts is problem._facts(kind)                 # made once
     assert facts.params == {p.name: p for p in problem.params_of(kind)}
     assert facts.defaults == tuple(p for p in kind.params if p.default is not None)
-    for answer in [a.name for a in kind.answers] + ["nothing", "steps"]:
-        assert facts.answers.get(answer) is kind.answer(answer)
+    for answer in [a.name for a in kind.answers] + ["nothing", "steps"]:  # Kind.answer's table
+        assert kind.answer(answer) is next((a for a in kind.answers if a.name == answer), None)
     for param_name, (param, key, weight, limits) in facts.reading.items():
         assert param is facts.params[param_name]
         assert key == f"given.{param_name}" and weight == (param_name == "weight")

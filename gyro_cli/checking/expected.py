@@ -8,6 +8,7 @@ from typing import Any
 
 from ..core import units
 from ..core.errors import InputError, shown
+from ..solving.problem import guarded as _guarded
 
 # ---- expected values --------------------------------------------------------
 
@@ -57,16 +58,6 @@ def parse_value(raw: Any, dimension: str | None, key: str) -> Expected:
 
 def _split(text: Any, dimension: str, key: str) -> tuple[float, str]:
     return units._split(text, key, (dimension, False))
-
-
-def _guarded(parse: Any, text: Any, dimension: str | None, key: str) -> Any:
-    global _guard
-    if _guard is None:
-        from ..solving.problem import guarded as _guard
-    return _guard(parse, text, dimension, key)
-
-
-_guard: Any = None  # solving.problem.guarded, imported on first use
 
 
 def parse_expected(raw: Any, dimension: str | None, key: str) -> list[Expected]:

@@ -365,8 +365,9 @@ def round_sig(value: float, digits: int) -> float:
     return round(value, digits - 1 - math.floor(math.log10(abs(value))))
 
 
-def number_text(value: float) -> str:
-    return f"{value:.12g}"
+def number_text(value: float, digits: int = 12) -> str:
+    """A number as written in a variant: ``digits`` significant figures, at least 12."""
+    return f"{value:.{max(12, digits)}g}"
 
 
 def _expected_text(values: list, unit: str | None, tol_halfwidths: list[float]) -> Any:
@@ -378,8 +379,7 @@ def _expected_text(values: list, unit: str | None, tol_halfwidths: list[float]) 
             digits = 4
             while digits < 15 and abs(round_sig(value, digits) - value) > width / 10:
                 digits += 1
-            # as many digits as the tolerance needs (up to 15), at least number_text's 12
-            texts.append(f"{round_sig(value, digits):.{max(12, digits)}g} {unit}")
+            texts.append(f"{number_text(round_sig(value, digits), digits)} {unit}")
     return texts[0] if len(texts) == 1 else texts
 
 

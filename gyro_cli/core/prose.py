@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ADD, ATOM, MUL, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div, Expr, Let,
-                   Mul, Neg, Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num,
+from .expr import (ADD, ATOM, MUL, NAMED, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div,
+                   Expr, Let, Mul, Neg, Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num,
                    precedence)
 
 TYPE_CHECKING = False
@@ -309,7 +309,7 @@ def names(text: str, unit: str = "") -> tuple[Sym, ...]:
     shared): the kinds name the same symbols in every file they solve."""
     made = _NAMED.get((text, unit))
     if made is None:
-        made = tuple(Sym(name, math.nan, unit) for name in text.split())
+        made = tuple(Sym(name, NAMED, unit) for name in text.split())
         if len(_NAMED) < 4096:
             _NAMED[(text, unit)] = made
     return made

@@ -125,7 +125,6 @@ def _preset_lines() -> dict[str, tuple]:
     return lines
 
 
-NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 def _ellipticity(values: dict, work: Work) -> float:
@@ -141,7 +140,8 @@ def _ellipticity(values: dict, work: Work) -> float:
             raise InputError(f"J2 and polar_moment_factor go together (H = J2 / (C / (M R^2))); "
                              f"give {missing} too", key=f"given.{missing}")
         J2, k = values["J2"], values["polar_moment_factor"]  # their limits are declared
-        factor = Let(Sym("polar_moment_factor", k), Sym("C", NAN) / (Sym("M", NAN) * Sym("R", NAN) ** 2))
+        factor = Let(Sym("polar_moment_factor", k),
+                     Sym("C", NAMED) / (Sym("M", NAMED) * Sym("R", NAMED) ** 2))
         J2_, C, A, M, R = names("J2 C A M R")
         H = work.step("H", Sym("J2", J2) / factor, note=(rel(J2_, "=", (C - A) / (M * R**2)),))
         if not H < 1:  # two keys: each within its limits, their quotient may not be
@@ -292,7 +292,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         fi_tree = 1 - three_halves * sin(Sym(f"i_{b}", i, "deg")) ** 2
         fi = work.step(fi_symbol, fi_tree, state=False, note="node-averaged") if i else 1.0
         tidal_ = Let(Sym(f"GM_a3_{b}", tidal, "1/s^2"),
-                     Const("G", G) * Sym(f"M_{b}", NAN) / Sym(f"a_{b}", NAN) ** 3)
+                     Const("G", G) * Sym(f"M_{b}", NAMED) / Sym(f"a_{b}", NAMED) ** 3)
         tree = three_halves * tidal_ * Let(Sym(f"f_e_{b}", fe), fe_tree) * Sym("H", H) * cos(
             Sym("epsilon", eps, "deg"))
         if i:

@@ -12,7 +12,7 @@ import math
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Expr, Let, Num, Sym, absolute, acos, asin, cos, ellipk, sin, sqrt
+from ..core.expr import NAMED, PI, Expr, Let, Num, Sym, absolute, acos, asin, cos, ellipk, sin, sqrt
 from ..core.prose import bracket, fn, integral, names, pm, q, rel
 from ..core.work import Work, num
 
@@ -120,8 +120,7 @@ def _constants(t: dict[str, Expr], nut, work: Work) -> None:
 
 def _syms(top, start, nut, omega_z: float) -> dict[str, Expr]:
     """The symbols of the worked answer, SI values (m g l is one product, N m)."""
-    nan = math.nan
-    mgl = Let(Sym("mgl", top.mgl, "N m"), Sym("m", nan) * Sym("g", nan) * Sym("l", nan))
+    mgl = Let(Sym("mgl", top.mgl, "N m"), Sym("m", NAMED) * Sym("g", NAMED) * Sym("l", NAMED))
     return {"J": Sym("J", top.J, "kg m^2"), "I": Sym("I", top.I, "kg m^2"), "mgl": mgl,
             "theta0": Sym("theta0", start.theta0, "deg"),
             "psidot": Sym("psidot", start.spin, "rad/s"),
@@ -182,8 +181,8 @@ def _theta(u: str, one_minus: float, one_plus: float) -> Expr:
     / 2)) below; acos(u) of a rounded u loses the digits of a small angle."""
     one_minus, one_plus = min(max(one_minus, 0.0), 2.0), min(max(one_plus, 0.0), 2.0)
     if one_minus <= one_plus:
-        return 2 * asin(sqrt(Let(Sym(f"one_minus_{u}", one_minus), 1 - Sym(u, math.nan)) / 2))
-    return PI - 2 * asin(sqrt(Let(Sym(f"one_plus_{u}", one_plus), 1 + Sym(u, math.nan)) / 2))
+        return 2 * asin(sqrt(Let(Sym(f"one_minus_{u}", one_minus), 1 - Sym(u, NAMED)) / 2))
+    return PI - 2 * asin(sqrt(Let(Sym(f"one_plus_{u}", one_plus), 1 + Sym(u, NAMED)) / 2))
 
 
 _RELEASED_TITLE = ("Released from rest (", rel(*names("phidot0"), "=", thetadot0, "=", 0),
@@ -219,7 +218,7 @@ def _differences(nut) -> tuple[Expr, Expr]:
     physics/nutation.py computes without cancellation (u1 and u2 agree to many digits in a
     fast or nearly steady top)."""
     d1, d2, d3 = nut.d_roots
-    u1, u2, u3 = (Sym(f"u{i}", math.nan) for i in (1, 2, 3))
+    u1, u2, u3 = (Sym(f"u{i}", NAMED) for i in (1, 2, 3))
     return (Let(Sym("u2_minus_u1", d2 - d1), u2 - u1), Let(Sym("u3_minus_u1", d3 - d1), u3 - u1))
 
 
@@ -245,7 +244,7 @@ def _period(nut, work: Work) -> None:
     m = work.step("m", width / span)
     work.step(_K_OF_M, value=K)
     # K(m) from R_F with 1 - m = (u3 - u2) / (u3 - u1) exact; ellipk(m) would lose it as m -> 1
-    K_m = Let(Sym("K", K), ellipk(Sym("m", m if m is not None else math.nan)))
+    K_m = Let(Sym("K", K), ellipk(Sym("m", m if m is not None else NAMED)))
     work.step("T", 4 * K_m / sqrt(Sym("a", nut.a, "1/s^2") * span), unit="s", note=_NUTATES)
     if nut.motion == "steady":
         work.text(*_STEADY)
@@ -257,14 +256,14 @@ def _limit_precession(nut, u: str, terms: tuple[float, float, float]) -> Expr:
     gamma u vanishes exactly at a cusp). On a pole, where both vanish, the limit gamma / 2
     (u = 1) or -gamma / 2 (u = -1)."""
     numerator, one_minus, one_plus = terms
-    U = Sym(u, math.nan)
+    U = Sym(u, NAMED)
     gamma = Sym("gamma", nut.gamma, "rad/s")
     if one_minus <= 0:
         return gamma / 2
     if one_plus <= 0:
         return -gamma / 2
     return (Let(Sym(f"beta_minus_gamma_{u}", numerator),
-                Sym("beta", math.nan) - Sym("gamma", math.nan) * U)
+                Sym("beta", NAMED) - Sym("gamma", NAMED) * U)
             / Let(Sym(f"one_minus_{u}_squared", one_minus * one_plus), 1 - U ** 2))
 
 

@@ -42,7 +42,6 @@ b0, rho0, v0, G0, wz0, IG0, HG0, sig0, t0, bd0, vc0 = names(
     "beta rho v G omega_z I_G H_G sigma t betadot v_contact")
 
 RPM = 2 * math.pi / 60
-NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 # ---- physics on floats ------------------------------------------------------
@@ -268,7 +267,7 @@ def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(*_ABOUT_N)
     work.text(*_BALANCE)
     N = work.step("N", m_ * g_ + J_ * Omega_ ** 2 / r_, unit="N")  # axle_pivot_normal_force
-    weight = Let(Sym("mg", m * g, "N"), Sym("m", NAN) * Sym("g", NAN))  # m g, shown by value
+    weight = Let(Sym("mg", m * g, "N"), Sym("m", NAMED) * Sym("g", NAMED))  # m g, shown by value
     moment = work.step("M", (Sym("N", N, "N") - weight) * R_, unit="N*m", note=_NET_MOMENT)
     work.answer("normal_force", "N", [N], "force")
     work.answer("spin", "psidot", [spin], "rate")
@@ -286,7 +285,7 @@ def _lap_time(rates: list[float], work: Work) -> None:
                          key="find.precession_period")
     work.section("Time for one lap of the circle")
     periods = [work.step("T", 2 * PI / Let(Sym("abs_Omega", abs(rate), "rad/s"),
-                                           absolute(Sym("Omega", NAN))), unit="s")
+                                           absolute(Sym("Omega", NAMED))), unit="s")
                for rate in rates]
     work.answer("precession_period", "T", periods, "time")
 

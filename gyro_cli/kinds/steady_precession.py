@@ -28,14 +28,13 @@ from ..core.work import Work, num, qty
 from ..physics import steady
 
 RPM = 2 * math.pi / 60
-NAN = NAMED  # a symbol named in a definition, its value not needed
 
 
 def _driver_tree(D: float, driver: str) -> Expr:
     """D, the moment per unit sin(theta): printed m g l for gravity (its value in
     substitutions), D for an applied moment."""
     d = Sym("D", D, "N m")
-    return Let(d, Sym("m", NAN) * Sym("g", NAN) * Sym("l", NAN)) if driver == "m g l" else d
+    return Let(d, Sym("m", NAMED) * Sym("g", NAMED) * Sym("l", NAMED)) if driver == "m g l" else d
 
 
 def _rate(name: str, value: float) -> Sym:
@@ -44,7 +43,7 @@ def _rate(name: str, value: float) -> Sym:
 
 def _abs_rate(value: float) -> Expr:
     """|phidot|, shown with its magnitude in substitutions."""
-    return Let(Sym("abs_phidot", abs(value), "rad/s"), absolute(Sym("phidot", NAN)))
+    return Let(Sym("abs_phidot", abs(value), "rad/s"), absolute(Sym("phidot", NAMED)))
 
 
 def _theta(theta: float) -> Sym:

@@ -286,9 +286,9 @@ def params_by_name(kind: Kind) -> dict[str, Param]:
 class _KindFacts:
     """What reading a file of one kind looks up, made once per kind: its params by name,
     how each quantity is read (its key in messages, whether lb means lbf, its declared
-    limits as tests), the params with a default and the answers by name."""
+    limits as tests) and the params with a default. (Answers by name: `Kind.answer`.)"""
 
-    __slots__ = ("kind", "params", "reading", "defaults", "answers")
+    __slots__ = ("kind", "params", "reading", "defaults")
 
     def __init__(self, kind: Kind) -> None:
         self.kind = kind
@@ -297,9 +297,6 @@ class _KindFacts:
                                tuple((_OPS[op], x) for op, x in p.limits_declared()))
                         for name, p in self.params.items()}
         self.defaults = tuple(p for p in kind.params if p.default is not None)
-        self.answers: dict[str, Any] = {}
-        for answer in kind.answers:  # the first of a name, as Kind.answer finds it
-            self.answers.setdefault(answer.name, answer)
 
 
 def _facts(kind: Kind) -> _KindFacts:
@@ -475,10 +472,9 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     if not isinstance(raw, dict) or not raw:
         raise InputError("expected a mapping of answer names to units, e.g. {precession: rpm}",
                          key="find")
-    answers = _facts(kind).answers
     find: dict[str, str | None] = {}
     for name, unit in raw.items():
-        answer = answers.get(str(name))
+        answer = kind.answer(str(name))
         if answer is None:
             names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer for kind {kind.name}{suggest(str(name), names)} "
@@ -500,15 +496,14 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
         return {}
     if not isinstance(raw, dict):
         raise InputError("expected a mapping of answer names to values", key="expected")
-    answers = _facts(kind).answers
     for name in raw:
-        if name == "steps" and "steps" not in answers:
+        if name == "steps" and kind.answer("steps") is None:
             steps = raw[name]
             if not isinstance(steps, dict) or not steps:
                 raise InputError("expected a mapping of the worked answer's step symbols to "
                                  "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
             continue
-        if str(name) not in answers:
+        if kind.answer(str(name)) is None:
             names = [a.name for a in kind.answers]
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
