@@ -361,6 +361,105 @@ def test_the_rolling_disks_faster_scan_finds_the_same_tilts_bit_for_bit():
     assert found >= {0, 1, 2}  # no tilt, one, and two (a slow and a fast one)
 
 
+def test_a_checks_workers_import_nothing_after_warming_and_never_numpy():
+    """What checking needs is loaded once, before the workers are forked (check.warm), and
+    it is the standard library alone: checking every bundled problem (every kind, every
+    arrangement) and writing its reports imports no module of gyro's after that, and
+    numpy (about 45 ms of start-up, a twentieth of a bank's check) not at all."""
+    import subprocess
+    import sys
+
+    probe = """
+import glob, sys
+from gyro_cli.checking import check
+from gyro_cli.render import check_report, junit  # as the command imports them
+check.warm()
+before = set(sys.modules)
+for path in sorted(glob.glob(sys.argv[1] + '/**/*.yaml', recursive=True)):
+    check_report.printed(check.check_file(path), 'json', True)
+    check_report.printed(check.check_file(path), 'table', False)
+new = sorted(set(sys.modules) - before)
+print(' '.join(m for m in new if m.startswith(('gyro_cli', 'numpy', 'scipy', 'pint'))))
+"""
+    run = subprocess.run([sys.executable, "-c", probe, str(PROBLEMS)], capture_output=True,
+                         text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.split() == []
+
+
+def _root_counts_change(m, r, J, I, path, slow, fast):
+    """A speed between ``slow`` and ``fast`` (different numbers of tilts) where the number
+    of tilts changes, found by halving: there two tilts meet (the residual touches 0)."""
+    from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
+
+    count = len(free_from_speed_and_path(m, 9.81, r, J, I, slow, path))
+    for _ in range(60):
+        mid = (slow * fast) ** 0.5
+        if len(free_from_speed_and_path(m, 9.81, r, J, I, mid, path)) == count:
+            slow = mid
+        else:
+            fast = mid
+    return slow, fast
+
+
+def test_the_scan_finds_the_same_tilts_where_two_tilts_meet_and_where_it_halves_most():
+    """Where the scan gains most (it skips stretches of the grid on which the residual
+    cannot reach 0), it is tried hardest: at speeds where two tilts meet (the residual
+    touches 0 between two points of the grid, or on one), bracketed to the last bits of
+    the speed, and with the contact circle as large as the disk (the residual is nearly 0
+    over a wide range of tilts). The tilts are those of evaluating every point."""
+    import math
+    import random
+
+    from gyro_cli.kinds import rolling_disk as rd
+
+    rng = random.Random(2611)
+    cases = 0
+    while cases < 40:
+        m, r = 10 ** rng.uniform(-2, 2), 10 ** rng.uniform(-2, 0.5)
+        J = m * r * r * rng.uniform(0.2, 1.0)
+        I = J * rng.uniform(0.3, 1.0)
+        path = r * (rng.uniform(0.98, 1.02) if cases % 4 == 0 else 10 ** rng.uniform(-1, 3))
+        speeds = [10 ** (k / 4) for k in range(-12, 7)]
+        counts = [len(rd.free_from_speed_and_path(m, 9.81, r, J, I, v, path)) for v in speeds]
+        changes = [k for k in range(len(speeds) - 1) if counts[k] != counts[k + 1]]
+        if not changes:
+            continue
+        cases += 1
+        k = rng.choice(changes)
+        slow, fast = _root_counts_change(m, r, J, I, path, speeds[k], speeds[k + 1])
+        for speed in (slow, fast, math.nextafter(slow, 0), math.nextafter(fast, math.inf),
+                      speeds[k], speeds[k + 1]):
+            assert rd.free_from_speed_and_path(m, 9.81, r, J, I, speed, path) == \
+                _scan_as_it_was(m, 9.81, r, J, I, speed, path), (m, r, J, I, speed, path)
+
+
+def test_the_scan_evaluates_a_few_points_for_a_book_disk():
+    """The point of the halving: for a coin rolling on a circle of a metre at a few metres
+    per second the residual is far from 0 except near its one root, and the scan evaluates
+    it at some tens of points of the 4095 (the vectorised scan evaluated them all)."""
+    import math
+
+    from gyro_cli.kinds import rolling_disk as rd
+
+    calls = []
+
+    def counted(grid, f, slope, slack):  # type: ignore[no-untyped-def]
+        return rd_sign_changes(grid, lambda t: calls.append(t) or f(t), slope, slack)
+
+    rd_sign_changes = rd._sign_changes
+    m, r = 0.0081, 0.0121  # a coin: 8.1 g, 24.2 mm across
+    J = m * r * r / 2
+    try:
+        rd._sign_changes = counted
+        states = rd.free_from_speed_and_path(m, 9.81, r, J, J / 2, 1.5, 1.0)
+    finally:
+        rd._sign_changes = rd_sign_changes
+    assert len(states) == 1 and 0 < len(calls) <= 60, len(calls)
+    # tan(beta) ~ 3 v^2 / (2 g rho) for a thin disk on a large circle (the module's note)
+    assert math.tan(states[0].tilt) == pytest.approx(3 * 1.5 ** 2 / (2 * 9.81 * 1.0), rel=0.02)
+
+
 def test_the_spooled_junit_is_what_elementtree_writes_for_awkward_text():
     """The spool writes each suite itself; ElementTree's own serializer is the reference."""
     from gyro_cli.checking.results import AnswerCheck, ProblemCheck

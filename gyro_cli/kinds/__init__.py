@@ -54,16 +54,17 @@ def get(name: object) -> Kind:
     return import_module(REGISTRY[name]).KIND
 
 
-def preload() -> None:
-    """Import every kind, and what their solvers import only when first used (numpy,
-    scipy's special functions), now: for worker processes forked afterwards, which then
-    start with all of it in memory instead of each importing it again (a third of a
-    second per worker for scipy.special alone)."""
-    from ..physics import preload as preload_physics
+#: the physics the kinds import when they first solve (so that `gyro solve` of one file
+#: loads only its own)
+SOLVERS = ("gyro_cli.physics.bicycle", "gyro_cli.physics.elliptic",
+           "gyro_cli.physics.nutation", "gyro_cli.physics.stability")
 
-    for module in REGISTRY.values():
+
+def preload() -> None:
+    """Import every kind and its physics now: for worker processes forked afterwards,
+    which then start with them in memory instead of each importing them again."""
+    for module in (*REGISTRY.values(), *SOLVERS):
         import_module(module)
-    preload_physics()
 
 
 class _Registry(types.ModuleType):

@@ -27,6 +27,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 from ..core.errors import InputError
 from ..core.given import Given
@@ -122,10 +123,10 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
         rho = path_radius - r * s
         return mgr * s * rho * rho - v2 * cos(tilt) * (rho * inertia + I * s)
 
-    grid, sines, cosines = _scan_grid(top)
+    grid = _scan_grid(top)
     roots = []
-    for k in _sign_changes(grid, sines, cosines, f, mgr, v2, inertia, I, path_radius, r):
-        tk, tk1 = float(grid[k]), float(grid[k + 1])
+    for k in _sign_changes(grid, f, *_scan_bounds(mgr, v2, inertia, I, path_radius, r)):
+        tk, tk1 = grid[k], grid[k + 1]
         f0 = f(tk)
         if f0 == 0:
             roots.append(tk)
@@ -150,53 +151,85 @@ SCAN_FINE = tuple(10 ** (-k / 8) for k in range(96, 0, -1))
 
 
 @functools.lru_cache(maxsize=8)
-def _scan_grid(top: float):  # type: ignore[no-untyped-def]
-    """The tilts the scan evaluates, ascending, with their sines and cosines (numpy arrays,
-    read-only): evenly in tilt, top * i / n, and geometrically below the first step (a
-    nearly upright disk on a large circle tilts by less than 0.02 deg: tan(beta) ~ 3 v^2 /
-    (2 g rho) for a disk), top / n * 10^(-k/8).
+def _scan_grid(top: float) -> tuple[float, ...]:
+    """The tilts the scan may evaluate, ascending: evenly in tilt, top * i / n, and
+    geometrically below the first step (a nearly upright disk on a large circle tilts by
+    less than 0.02 deg: tan(beta) ~ 3 v^2 / (2 g rho) for a disk), top / n * 10^(-k/8).
 
-    Each point is the same product and quotient of floats as the list the scan used to
-    build point by point, so the same float. The grid depends on the largest tilt alone,
-    90 deg unless the contact circle is smaller than the disk, so it and its sines and
-    cosines are made once and kept: with them the scan of a problem costs 45 us instead
-    of 0.58 ms (4000 points made in Python, then sin and cos of each, every time)."""
-    import numpy as np
-
+    The grid depends on the largest tilt alone, 90 deg unless the contact circle is smaller
+    than the disk, so it is made once and kept (a tuple: nothing can change it)."""
     n = SCAN_STEPS
-    grid = np.concatenate((top / n * np.array(SCAN_FINE),
-                           top * np.arange(1, n, dtype=float) / n))
-    arrays = (grid, np.sin(grid), np.cos(grid))
-    for array in arrays:
-        array.flags.writeable = False
-    return arrays
+    step = top / n
+    return tuple([step * fine for fine in SCAN_FINE] + [top * i / n for i in range(1, n)])
 
 
-def _sign_changes(grid, s, c, f, mgr: float, v2: float, inertia: float,  # type: ignore[no-untyped-def]
-                  I: float, path_radius: float, r: float) -> list[int]:
-    """Every k where ``f`` may be 0 at grid[k] or change sign from grid[k] to grid[k + 1]
-    (the caller decides each with ``f``, as the scan point by point did).
+def _scan_bounds(mgr: float, v2: float, inertia: float, I: float, path_radius: float,
+                 r: float) -> tuple[Callable[[float], float], float]:
+    """(slope, slack) for `_sign_changes`: ``slope(b)`` bounds |dF/dbeta| of the residual
+    F = mgr s rho^2 - v^2 c (rho K + I s), rho = R - r s, K = ``inertia``, for tilts from
+    0 to b (b <= 90 deg), and ``slack`` bounds the rounding error of F as computed.
 
-    The residual is evaluated over the whole grid at once, from the grid's sines ``s`` and
-    cosines ``c`` (numpy: the same operations in the same order; only sin and cos may
-    round differently, by an ulp). Where a value is so near 0 that such a difference could
-    flip its sign, it is evaluated again with ``f``, so every sign, and every exact 0, is
-    the one ``f`` gives.
+    dF/dbeta = mgr c rho (rho - 2 r s) + v^2 s (rho K + I s) - v^2 c^2 (I - r K). Up to b,
+    0 <= s <= S = min(b, 1) and c <= 1; rho = R - r s and rho - 2 r s = R - 3 r s are
+    linear in s, so at most their larger size at s = 0 and s = S. Hence
+    |dF/dbeta| <= |mgr| max(|R|, |R - r S|) max(|R|, |R - 3 r S|)
+    + v^2 S (max(|R|, |R - r S|) |K| + |I| S) + v^2 |I - r K|. The rounding error of each
+    term is a few ulps of |mgr| P^2 + v^2 (P |K| + |I|), P = |R| + r, the most either term
+    can be; the slack allows 4500 ulps of it. Both are taken a little larger than computed
+    (and I - r K a little larger than its rounded difference), so that their own rounding
+    cannot make them too small."""
+    R, K, mgr, I = path_radius, abs(inertia), abs(mgr), abs(I)
+    twist = v2 * (abs(I - r * inertia) + 1e-12 * (I + r * K))
+
+    def slope(b: float) -> float:
+        S = min(b, 1.0)
+        rho = max(abs(R), abs(R - r * S))
+        return (mgr * rho * max(abs(R), abs(R - 3 * r * S)) + v2 * S * (rho * K + I * S)
+                + twist) * (1 + 1e-9)
+
+    P = abs(R) + r
+    return slope, (mgr * P * P + v2 * (P * K + I)) * 1e-12
+
+
+def _sign_changes(grid: tuple[float, ...], f: Callable[[float], float],
+                  slope: Callable[[float], float], slack: float) -> list[int]:
+    """Every k, ascending, where f(grid[k]) is 0 or the signs of f(grid[k]) and
+    f(grid[k + 1]) may differ (the caller decides each with f), with f evaluated at as few
+    points of the grid as the bounds allow: the answer of evaluating every point.
+
+    A stretch of the grid from a to b is halved until f(a) and f(b) have the same sign
+    and are too far from 0 for f to reach it in between: |f(a)| + |f(b)| > L (b - a) +
+    4 slack, L = slope(b), a bound on |dF/dbeta| up to b. F cannot then change sign on
+    [a, b] (|F| >= (|F(a)| + |F(b)| - L (b - a)) / 2 there, more than the rounding error
+    ``slack``), and neither can f, as computed, at any point between. Near a root the halving goes down to neighbouring
+    points; elsewhere a stretch of hundreds of points costs two values. A value that is
+    not finite never ends a halving: such a stretch is evaluated point by point, as the
+    whole grid was before.
     """
-    import numpy as np
+    known: dict[int, float] = {}
 
-    rho = path_radius - r * s
-    first = mgr * s * rho * rho
-    second = v2 * c * (rho * inertia + I * s)
-    values = first - second
-    doubtful = np.abs(values) <= 1e-9 * (np.abs(first) + np.abs(second))
-    doubtful |= ~np.isfinite(values)
-    for k in np.flatnonzero(doubtful).tolist():
-        values[k] = f(float(grid[k]))
-    # every k that may hold a root: the caller decides each with f, as the scan did
-    negative = values < 0
-    changes = (values[:-1] == 0) | (negative[:-1] != negative[1:])
-    return np.flatnonzero(changes).tolist()
+    def value(k: int) -> float:
+        v = known.get(k)
+        if v is None:
+            v = known[k] = f(grid[k])
+        return v
+
+    isfinite = math.isfinite
+    out: list[int] = []
+    todo = [(0, len(grid) - 1)]
+    while todo:
+        a, b = todo.pop()
+        fa, fb = value(a), value(b)
+        if b == a + 1:
+            if fa == 0 or (fa < 0) != (fb < 0):
+                out.append(a)
+            continue
+        if fa != 0 and fb != 0 and (fa < 0) == (fb < 0) and isfinite(fa) and isfinite(fb) \
+                and abs(fa) + abs(fb) > slope(grid[b]) * (grid[b] - grid[a]) + 4 * slack:
+            continue
+        mid = (a + b) // 2
+        todo += ((mid, b), (a, mid))  # the lower half first: k ascending
+    return out
 
 
 # ---- the worked answer ------------------------------------------------------

@@ -406,16 +406,14 @@ def _one_minus_plus(theta: float) -> tuple[float, float]:
 
 
 def _theta_of(one_minus: float, one_plus: float) -> float:
-    """_theta_from_one_minus_plus for one pair of floats, without numpy's array machinery:
-    the clip, the choice and sqrt (correctly rounded either way) in plain floats, only
-    arcsin numpy's, so the angle is the vectorised one's to the last bit."""
-    import numpy as np
-
+    """_theta_from_one_minus_plus for one pair of floats, in plain floats (math.asin, no
+    numpy: `gyro check` does not import it): the same clip and choice, the same angle
+    within an ulp or two (numpy's arcsin and math's may round differently)."""
     one_minus = min(max(one_minus, 0.0), 2.0)   # as np.clip, NaN and -0.0 included
     one_plus = min(max(one_plus, 0.0), 2.0)
     if one_minus <= one_plus:
-        return 2 * float(np.arcsin(math.sqrt(0.5 * one_minus)))
-    return math.pi - 2 * float(np.arcsin(math.sqrt(0.5 * one_plus)))
+        return 2 * math.asin(math.sqrt(0.5 * one_minus))
+    return math.pi - 2 * math.asin(math.sqrt(0.5 * one_plus))
 
 
 def _theta_from_one_minus_plus(one_minus, one_plus):
