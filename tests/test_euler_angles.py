@@ -17,9 +17,11 @@ from __future__ import annotations
 import json
 import math
 import re
+from fractions import Fraction
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from gyro_cli.physics import euler_kinematics as ek
 from rotations import rx, rz
@@ -429,11 +431,22 @@ def test_omega_H_angle_at_rest_is_refused_plainly(run, write):
     one_line(result, "find.omega_H_angle", "undefined")
 
 
-def test_principal_moments_on_principal_axes_are_lapacks_to_the_last_bit():
-    """On principal axes principal_moments sorts the moments instead of asking LAPACK: the
-    same floats as numpy's eigvalsh for every diagonal matrix inside DIAGONAL_RANGE (equal
-    moments, zeros, widely spread ones), and eigvalsh itself is asked outside it, or as soon
-    as one product is not exactly 0."""
+def eigvalsh(matrix) -> list[float]:
+    return [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
+
+
+def close_to_eigvalsh(values, matrix, rel=1e-13) -> bool:
+    """Each eigenvalue within rel * max|eigenvalue| of numpy's."""
+    expected = eigvalsh(matrix)
+    scale = max(abs(v) for v in expected)
+    return all(abs(v - e) <= rel * scale for v, e in zip(values, expected))
+
+
+def test_principal_moments_are_lapacks_on_principal_axes_and_close_elsewhere():
+    """On principal axes principal_moments sorts the moments: the same floats as numpy's
+    eigvalsh for every diagonal matrix inside DIAGONAL_RANGE (equal moments, zeros, widely
+    spread ones); outside it, or as soon as one product is not exactly 0, the Jacobi
+    rotations answer, within a few ulps of the norm of eigvalsh's answer."""
     import random
 
     rng = random.Random(11)
@@ -448,11 +461,134 @@ def test_principal_moments_on_principal_axes_are_lapacks_to_the_last_bit():
         cases.append(tuple(d))
     for d in cases:
         matrix = ek.inertia_matrix(*d)
-        expected = [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
-        assert ek.principal_moments(matrix) == expected, d
-    # outside the range, or with a product, it is eigvalsh's answer whatever that is
+        assert ek.principal_moments(matrix) == eigvalsh(matrix), d
+    # outside the range a diagonal matrix is still its sorted diagonal (no rotation)
+    for d in [(1e-120, 1.0, 2.0), (1e150, 1.0, 2.0), (2.0, -0.0, 1e-150)]:
+        assert ek.principal_moments(ek.inertia_matrix(*d)) == sorted(d), d
     for d, products in [((1e-120, 1.0, 2.0), (0.0, 0.0, 0.0)), ((1e150, 1.0, 2.0), (0.0,) * 3),
                         ((1.0, 2.0, 2.5), (1e-30, 0.0, 0.0)), ((1.0, 2.0, 2.5), (0.0, 0.3, 0.1))]:
         matrix = ek.inertia_matrix(*d, *products)
-        expected = [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
-        assert ek.principal_moments(matrix) == expected, (d, products)
+        assert close_to_eigvalsh(ek.principal_moments(matrix), matrix), (d, products)
+
+
+def random_symmetric(rng: np.random.Generator, case: int) -> np.ndarray:
+    """A symmetric 3x3 matrix of one of five sorts (case % 5): plain, nearly equal
+    eigenvalues, a zero eigenvalue, a common scale 1e-100..1e100, and entries 1e8 apart."""
+    sort = case % 5
+    if sort in (1, 2):
+        if sort == 1:
+            eigenvalues = 1.0 + np.array([0.0, rng.choice([0.0, 1e-15, 1e-12, 1e-8]),
+                                          rng.choice([0.0, 2e-16, 1e-10])])
+        else:
+            eigenvalues = np.array([0.0, rng.uniform(0.1, 5), rng.uniform(0.1, 5)])
+        Q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        A = Q @ np.diag(eigenvalues) @ Q.T
+    else:
+        A = rng.uniform(-1, 1, size=(3, 3))
+        if sort == 4:
+            A *= 10.0 ** rng.uniform(-8, 0, size=(3, 3))
+        if sort >= 3:
+            A *= 10.0 ** rng.uniform(-100, 100)
+    return (A + A.T) / 2
+
+
+def as_matrix(A: np.ndarray) -> ek.Matrix:
+    return tuple(tuple(float(x) for x in row) for row in A)  # type: ignore[return-value]
+
+
+def test_symmetric_eigenvalues_against_eigvalsh():
+    """5000 matrices: every eigenvalue within 1e-13 max|eigenvalue| of eigvalsh's (the worst
+    measured, 2e-15: a few ulps)."""
+    rng = np.random.default_rng(20)
+    for case in range(5000):
+        matrix = as_matrix(random_symmetric(rng, case))
+        values = ek.symmetric_eigenvalues(matrix)
+        assert values == sorted(values)
+        assert close_to_eigvalsh(values, matrix), matrix
+
+
+def test_symmetric_eigenvalues_by_hand():
+    # eight masses m at the corners of a cube of side a, about a corner: m a^2 times this
+    # matrix, with 4 about the body diagonal and 10 about every axis across it
+    cube = ((8.0, -2.0, -2.0), (-2.0, 8.0, -2.0), (-2.0, -2.0, 8.0))
+    assert ek.symmetric_eigenvalues(cube) == pytest.approx([4.0, 10.0, 10.0], rel=1e-15)
+    m, a = 0.5, 0.2
+    scaled = tuple(tuple(m * a * a * x for x in row) for row in cube)
+    assert ek.symmetric_eigenvalues(scaled) == pytest.approx([0.08, 0.2, 0.2], rel=1e-15)
+    # the 2x2 block [[2, 1], [1, 2]] (eigenvalues 1 and 3) beside 5
+    block = ((2.0, 1.0, 0.0), (1.0, 2.0, 0.0), (0.0, 0.0, 5.0))
+    assert ek.symmetric_eigenvalues(block) == pytest.approx([1.0, 3.0, 5.0], rel=1e-15)
+    # diag(1, 2, 3) turned by the rotation R = (1/3) [[2, -1, 2], [2, 2, -1], [-1, 2, 2]]:
+    # R diag(1, 2, 3) R^T = (1/9) [[18, -6, 6], [-6, 15, 0], [6, 0, 21]]
+    R = ((2 / 3, -1 / 3, 2 / 3), (2 / 3, 2 / 3, -1 / 3), (-1 / 3, 2 / 3, 2 / 3))
+    turned = ((2.0, -2 / 3, 2 / 3), (-2 / 3, 5 / 3, 0.0), (2 / 3, 0.0, 7 / 3))
+    assert np.allclose(np.array(R) @ np.diag([1.0, 2.0, 3.0]) @ np.array(R).T, turned,
+                       rtol=0, atol=1e-15)
+    assert ek.symmetric_eigenvalues(turned) == pytest.approx([1.0, 2.0, 3.0], rel=1e-15)
+    assert ek.principal_moments(turned) == pytest.approx([1.0, 2.0, 3.0], rel=1e-15)
+    # already diagonal: sorted, not rotated
+    assert ek.symmetric_eigenvalues(((3.0, 0.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 0.0))) == \
+        [-1.0, 0.0, 3.0]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.floats(-1e3, 1e3), min_size=6, max_size=6), st.integers(-60, 60))
+def test_symmetric_eigenvalues_keep_trace_and_determinant(entries, power):
+    """The sum of the eigenvalues is the trace and their product the determinant (computed
+    exactly in fractions), to a few ulps of the norm (its cube for the determinant)."""
+    a, b, c, d, e, f = (x * 10.0 ** power for x in entries)
+    matrix = ((a, d, e), (d, b, f), (e, f, c))
+    l1, l2, l3 = ek.symmetric_eigenvalues(matrix)
+    scale = max(abs(l1), abs(l3))
+    assert abs((l1 + l2 + l3) - (a + b + c)) <= 1e-14 * scale
+    F = [[Fraction(x) for x in row] for row in matrix]
+    det = (F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1])
+           - F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0])
+           + F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]))
+    assert abs(l1 * l2 * l3 - float(det)) <= 1e-13 * scale ** 3
+
+
+def test_symmetric_eigenvalues_refuse_what_is_not_finite():
+    for bad in (math.inf, -math.inf, math.nan):
+        with pytest.raises(ValueError, match="not finite"):
+            ek.symmetric_eigenvalues(ek.inertia_matrix(1.0, 2.0, 2.5, bad))
+    # scaled by a power of two, neither huge nor tiny entries overflow or underflow
+    for size in (1e307, 1e-300):
+        matrix = ek.inertia_matrix(size, size, size, size)
+        assert ek.symmetric_eigenvalues(matrix) == pytest.approx([0.0, size, 2 * size],
+                                                                 rel=1e-15, abs=1e-15 * size)
+
+
+def test_principal_moments_do_not_import_numpy():
+    """gyro check must not import numpy for a matrix with products of inertia."""
+    import subprocess
+    import sys
+
+    code = ("import sys\n"
+            "class NoNumpy:\n"
+            "    def find_spec(self, name, path=None, target=None):\n"
+            "        if name.split('.')[0] == 'numpy':\n"
+            "            raise ImportError('numpy is blocked')\n"
+            "sys.meta_path.insert(0, NoNumpy())\n"
+            "from gyro_cli.physics import euler_kinematics as ek\n"
+            "print(ek.principal_moments(ek.inertia_matrix(8.0, 8.0, 8.0, 2.0, 2.0, 2.0)))\n"
+            "print('numpy' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    values, numpy_loaded = out.stdout.split("\n")[:2]
+    assert [float(v) for v in values.strip("[]").split(",")] == pytest.approx([4, 10, 10])
+    assert numpy_loaded == "False"
+
+
+@pytest.mark.parametrize("extra, fragments", [
+    ("  I_x: 1 kg m^2\n  I_y: 2 kg m^2\n  I_z: 2.5 kg m^2\n  I_xy: 1e300 kg m^2",
+     ["given.I_xy", "not positive definite"]),
+    ("  particles:\n    - {mass: 1 kg, x: 1e200 m, y: 1 m, z: 0 m}\n"
+     "    - {mass: 1 kg, x: 1 m, y: 1e200 m, z: 1 m}",
+     ["given", "outside what euler_angles can compute", "not finite"]),
+])
+def test_huge_inertia_is_one_clear_line(run, tmp_path, extra, fragments):
+    path = tmp_path / "h.yaml"
+    path.write_text(BASE.format(extra="  phi_rate: 1 rad/s\n" + extra,
+                                find="principal_moments, kinetic_energy"))
+    one_line(run("solve", path), str(path), *fragments)

@@ -182,19 +182,70 @@ def inertia_matrix(Ix: float, Iy: float, Iz: float, Ixy: float = 0.0, Iyz: float
     return ((Ix, -Ixy, -Izx), (-Ixy, Iy, -Iyz), (-Izx, -Iyz, Iz))
 
 
-#: principal axes whose moments lie in this range (or are 0) are answered without LAPACK:
-#: inside it LAPACK never rescales a matrix, and the eigenvalues of a diagonal matrix it
-#: does not rescale are its diagonal, exactly (tests/test_euler_angles.py holds the two
-#: together); outside it eigvalsh is asked, as for every other matrix
+#: principal axes whose moments lie in this range (or are 0) are answered by sorting the
+#: moments; outside it symmetric_eigenvalues is asked, as for every other matrix (a diagonal
+#: matrix leaves it sorted, without a rotation: the same floats unless its power-of-two
+#: scaling takes a moment below the normal range)
 DIAGONAL_RANGE = (1e-100, 1e100)
+
+#: pairs (p, q) in cyclic order with r, the third index: the off-diagonal entry a_pq is kept
+#: as off[r], so a_rp is off[q] and a_rq is off[p]
+_JACOBI_PAIRS = ((0, 1, 2), (0, 2, 1), (1, 2, 0))
+_MAX_SWEEPS = 50
+
+
+def symmetric_eigenvalues(matrix: Matrix) -> list[float]:
+    """Eigenvalues of a real symmetric 3x3 matrix, ascending: the cyclic Jacobi method.
+
+    Each rotation in the plane (p, q) zeroes a_pq (Golub and Van Loan, Matrix Computations,
+    4th ed., sec. 8.5); sweeps repeat until every a_pq is 0 or below eps (|a_pp| + |a_qq|).
+    Accurate to a few ulps of the matrix's norm, nearly equal eigenvalues included. The
+    lower triangle is read; ValueError for an entry that is not finite.
+    """
+    lower = (matrix[0][0], matrix[1][0], matrix[1][1], matrix[2][0], matrix[2][1], matrix[2][2])
+    if not all(math.isfinite(x) for x in lower):
+        raise ValueError("an entry of the matrix is not finite")
+    # scaled by a power of two (exact) so that the largest entry lies in [0.5, 1): no sum
+    # below can overflow, for any finite matrix
+    exponent = math.frexp(max(abs(x) for x in lower))[1]
+    a00, a10, a11, a20, a21, a22 = (math.ldexp(x, -exponent) for x in lower)
+    diag = [a00, a11, a22]
+    off = [a21, a20, a10]
+    eps = math.ulp(1.0)
+    for _ in range(_MAX_SWEEPS):
+        rotated = False
+        for p, q, r in _JACOBI_PAIRS:
+            apq = off[r]
+            if apq == 0:
+                continue
+            if abs(apq) <= eps * (abs(diag[p]) + abs(diag[q])):
+                off[r] = 0.0
+                continue
+            rotated = True
+            # |theta| < 1 / (2 eps) here, so theta^2 cannot overflow
+            theta = (diag[q] - diag[p]) / (2.0 * apq)
+            t = math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0))
+            c = 1.0 / math.sqrt(t * t + 1.0)
+            s = t * c
+            tau = s / (1.0 + c)
+            diag[p] -= t * apq
+            diag[q] += t * apq
+            off[r] = 0.0
+            arp, arq = off[q], off[p]
+            off[q] = arp - s * (arq + tau * arp)
+            off[p] = arq + s * (arp - tau * arq)
+        if not rotated:
+            break
+    return sorted(math.ldexp(d, exponent) for d in diag)
 
 
 def principal_moments(matrix: Matrix) -> list[float]:
     """Eigenvalues of the (symmetric) inertia matrix, ascending (Eq. 11.3's matrix).
 
     On principal axes (every product exactly 0) they are the moments of inertia
-    themselves, sorted: exact, and 20 us of numpy's eigvalsh saved. Otherwise, and for
-    moments beyond DIAGONAL_RANGE, numpy's eigvalsh.
+    themselves, sorted. Otherwise, and for moments beyond DIAGONAL_RANGE,
+    symmetric_eigenvalues: pure Python, because gyro check must not import numpy (its
+    import would be a twentieth of the time a bank takes to check).
     """
     lo, hi = DIAGONAL_RANGE
     diagonal = (matrix[0][0], matrix[1][1], matrix[2][2])
@@ -203,9 +254,7 @@ def principal_moments(matrix: Matrix) -> list[float]:
             and all(lo <= d <= hi or (d == 0 and math.copysign(1.0, d) > 0)
                     for d in diagonal)):
         return sorted(float(d) for d in diagonal)
-    import numpy as np
-
-    return [float(v) for v in np.linalg.eigvalsh(np.array(matrix, dtype=float))]
+    return symmetric_eigenvalues(matrix)
 
 
 def is_diagonal(matrix: Matrix, rel: float = 1e-12) -> bool:
