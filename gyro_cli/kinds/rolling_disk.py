@@ -201,10 +201,10 @@ def _sign_changes(grid: tuple[float, ...], f: Callable[[float], float],
     and are too far from 0 for f to reach it in between: |f(a)| + |f(b)| > L (b - a) +
     4 slack, L = slope(b), a bound on |dF/dbeta| up to b. F cannot then change sign on
     [a, b] (|F| >= (|F(a)| + |F(b)| - L (b - a)) / 2 there, more than the rounding error
-    ``slack``), and neither can f, as computed, at any point between. Near a root the halving goes down to neighbouring
-    points; elsewhere a stretch of hundreds of points costs two values. A value that is
-    not finite never ends a halving: such a stretch is evaluated point by point, as the
-    whole grid was before.
+    ``slack``), and neither can f, as computed, at any point between. Near a root the
+    halving goes down to neighbouring points; elsewhere a stretch of hundreds of points
+    costs two values. A value that is not finite never ends a halving: such a stretch is
+    evaluated point by point, as the whole grid was before.
     """
     known: dict[int, float] = {}
 
