@@ -116,15 +116,19 @@ def main() -> None:
     """
 
 
-def _outputs_apart(inputs: list[str] | tuple[str, ...], **outputs: str | None) -> None:
+def _outputs_apart(inputs: list[str] | tuple[str, ...],
+                   identities: dict[str, tuple[int, int]] | None = None,
+                   **outputs: str | None) -> None:
     """Exit 2 with one line if an output file (by option name) is empty or would replace
-    one of the command's inputs (core/files.py: refuse_input_as_output)."""
+    one of the command's inputs (core/files.py: refuse_input_as_output; ``identities``
+    as it takes them)."""
     from .core.files import refuse_input_as_output
 
     for option, name in outputs.items():
         if name is not None:
             try:
-                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"))
+                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"),
+                                       identities=identities)
             except InputError as err:
                 fail(err)
 
@@ -317,8 +321,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         if junit_file is not None or html_file is not None:
             from .solving.paths import problem_files
 
-            found = problem_files(paths)  # collected once: for this and for the run
-            _outputs_apart(found[0], junit=junit_file, html=html_file)
+            identities: dict[str, tuple[int, int]] = {}
+            found = problem_files(paths, identities)  # collected once: for this and the run
+            _outputs_apart(found[0], identities, junit=junit_file, html=html_file)
             if junit_file and html_file and os.path.abspath(junit_file) == \
                     os.path.abspath(html_file):
                 fail("--junit and --html name the same file")

@@ -152,6 +152,20 @@ def test_i22_01_no_output_of_gyro_replaces_an_input(run, tmp_path):
     assert {p: digest(p) for p in before} == before
 
 
+def test_i22_01_junit_hard_linked_to_a_checked_file_is_refused(run, tmp_path):
+    """The bank's files are looked up once (their device and inode, found while collecting
+    them, serve the guard too): a report that is a hard link to one of them, in a folder
+    checked recursively, is still refused, and the file is untouched."""
+    folder = course(tmp_path)
+    (folder / "deep").mkdir()
+    shutil.copy(PROBLEMS / "11_5.yaml", folder / "deep" / "11_5.yaml")
+    (tmp_path / "report.xml").hardlink_to(folder / "deep" / "11_5.yaml")
+    kept = digest(folder / "deep" / "11_5.yaml")
+    result = run("check", folder, "--junit", tmp_path / "report.xml")
+    one_line(result.stderr, "--junit", "would replace an input file", "11_5.yaml")
+    assert result.exit_code == 2 and digest(folder / "deep" / "11_5.yaml") == kept
+
+
 def test_i22_01_guard_compares_files_not_names(tmp_path):
     a = tmp_path / "a.yaml"
     a.write_text("id: x\n")

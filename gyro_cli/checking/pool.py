@@ -144,6 +144,7 @@ class _Worker:
         self.exitcode: int | None = None
         self.batches: collections.deque[list[int]] = collections.deque()  # sent, unanswered
         self.answered = 0  # files whose results have come back
+        self.asked = False  # whether it has been told to stop
 
     def send(self, indices: list[int], files: list[str]) -> None:
         self.batches.append(indices)
@@ -160,8 +161,13 @@ class _Worker:
         return [i for batch in self.batches for i in batch]
 
     def _reaped(self, wait: float) -> bool:
-        """Whether the process has ended (its exit code kept), waiting up to ``wait`` s."""
+        """Whether the process has ended (its exit code kept), waiting up to ``wait`` s.
+
+        It is waited for on its pipe, which reads as hung up once the process has ended
+        (its end closes with it), rather than by naps of a fixed length: the parent's
+        last step before its summary, so every millisecond of it is a run's."""
         end = time.monotonic() + wait
+        hangup = None
         while self.exitcode is None:
             try:
                 pid, status = os.waitpid(self.pid, os.WNOHANG)
@@ -171,19 +177,32 @@ class _Worker:
             if pid:
                 self.exitcode = os.waitstatus_to_exitcode(status)
                 break
-            if time.monotonic() >= end:
+            left = end - time.monotonic()
+            if left <= 0:
                 return False
-            time.sleep(0.005)
+            if hangup is None:
+                hangup = select.poll()
+                hangup.register(self.conn.read, 0)  # no events asked: a hang-up only
+            if hangup.poll(0):  # it has ended, or is ending: its exit code is a moment away
+                time.sleep(min(left, 0.0005))
+            else:  # until it hangs up, or a while
+                hangup.poll(math.ceil(min(left, 0.05) * 1000))
         return True
+
+    def ask_to_stop(self) -> None:
+        """Tell the worker that no more files come: it ends after those it has."""
+        if not self.asked:
+            self.asked = True
+            try:
+                self.conn.send(None)
+            except (OSError, ValueError):
+                pass
 
     def stop(self, kill: bool = False) -> int | None:
         """End the process (at once if ``kill``) and return its exit code (minus the
         signal's number if a signal ended it)."""
         if not kill:
-            try:
-                self.conn.send(None)
-            except (OSError, ValueError):
-                pass
+            self.ask_to_stop()
         if kill or not self._reaped(5):
             if not self._reaped(0):
                 try:
@@ -279,5 +298,9 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
                 next_out += 1
                 handed_on = True
     finally:
+        kill = next_out < len(files)
+        if not kill:  # all told first, so that they end together
+            for worker in workers:
+                worker.ask_to_stop()
         for worker in workers:
-            worker.stop(kill=next_out < len(files))
+            worker.stop(kill=kill)

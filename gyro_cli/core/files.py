@@ -84,7 +84,8 @@ PROBLEM_SUFFIXES = (".yaml", ".yml")
 
 
 def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
-                           option: str = "the output", yaml_output: bool = False) -> None:
+                           option: str = "the output", yaml_output: bool = False,
+                           identities: dict[str, tuple[int, int]] | None = None) -> None:
     """InputError if writing ``output`` would replace one of the command's inputs.
 
     ``inputs`` are the files the command reads (problem files, an answer sheet):
@@ -92,6 +93,8 @@ def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
     ``./x``). Unless the output itself is YAML (``vary``, ``new``), an existing
     ``.yaml``/``.yml`` file is refused too: a report named like a problem file is
     a shell glob that swallowed the report's name (``--junit pj/*.yaml``).
+    ``identities``: the (device, inode) of inputs already looked up
+    (`solving.paths.problem_files`), so that a bank's files are not looked up twice.
     """
     name = os.fspath(output)
     if name.strip() == "":
@@ -100,12 +103,16 @@ def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
         out = os.stat(name)
     except (OSError, ValueError):
         return  # a new path: it cannot be an input
+    known = identities or {}
     for source in inputs:
         try:
-            same = os.path.samestat(out, os.stat(source))
+            found = known.get(source)
+            if found is None:
+                info = os.stat(source)
+                found = (info.st_dev, info.st_ino)
         except (OSError, ValueError):
             continue
-        if same:
+        if found == (out.st_dev, out.st_ino):  # os.path.samestat's test
             raise InputError(f"{option} would replace an input file ({os.fspath(source)}); "
                              "refused, give the output another name", file=name)
     if not yaml_output and name.lower().endswith(PROBLEM_SUFFIXES):

@@ -9,13 +9,17 @@ import os
 YAML_SUFFIXES = (".yaml", ".yml")
 
 
-def problem_files(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[tuple[str, str]]]:
+def problem_files(paths: list[str] | tuple[str, ...],
+                  identities: dict[str, tuple[int, int]] | None = None,
+                  ) -> tuple[list[str], list[tuple[str, str]]]:
     """Problem files from files, directories (recursive, *.yaml and *.yml) and globs.
 
     Hidden directories (.git, .venv) are skipped; each real file is named once,
     however many paths lead to it (a symlink, a hard link, ``./x``, a folder
     linked into itself under a ``**`` glob). A directory or a pattern that
     names nothing comes back as (path, message), so the others are still solved.
+    ``identities``, if given, gets each file's (device, inode), found on the way
+    (for `core.files.refuse_input_as_output`, which then need not look again).
     """
     files: list[str] = []
     errors: list[tuple[str, str]] = []
@@ -42,6 +46,8 @@ def problem_files(paths: list[str] | tuple[str, ...]) -> tuple[list[str], list[t
         try:
             info = os.stat(f)
             key: object = (info.st_dev, info.st_ino)
+            if identities is not None:
+                identities[f] = (info.st_dev, info.st_ino)
         except (OSError, ValueError):
             key = os.path.normpath(f)
         if key not in seen:
