@@ -324,6 +324,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             identities: dict[str, tuple[int, int]] = {}
             found = problem_files(paths, identities)  # collected once: for this and the run
             _outputs_apart(found[0], identities, junit=junit_file, html=html_file)
+            del identities  # a bank's worth: not kept for the run
             if junit_file and html_file and os.path.abspath(junit_file) == \
                     os.path.abspath(html_file):
                 fail("--junit and --html name the same file")

@@ -47,7 +47,7 @@ def problem_files(paths: list[str] | tuple[str, ...],
             info = os.stat(f)
             key: object = (info.st_dev, info.st_ino)
             if identities is not None:
-                identities[f] = (info.st_dev, info.st_ino)
+                identities[f] = key  # type: ignore[assignment]
         except (OSError, ValueError):
             key = os.path.normpath(f)
         if key not in seen:
