@@ -3,5 +3,6 @@ integrator of Euler's equations, shared algebra. No files, no units, no
 printing; imports only the standard library, numpy, scipy and core.errors.
 
 What `gyro check` and `gyro solve` run needs the standard library alone: numpy and
-scipy are imported inside the functions that draw and simulate (theta(t) over a grid,
-the integrator), so a check of a bank never loads them."""
+scipy serve only what draws and simulates (motion.py's theta(t) over a grid,
+simulate.py's and rolling_motion.py's integrators, nutation.py's vectorised rates), so
+a check of a bank never loads them (tests/test_check_scale.py)."""

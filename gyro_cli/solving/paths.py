@@ -45,9 +45,10 @@ def problem_files(paths: list[str] | tuple[str, ...],
     for f in files:
         try:
             info = os.stat(f)
-            key: object = (info.st_dev, info.st_ino)
+            identity = (info.st_dev, info.st_ino)
             if identities is not None:
-                identities[f] = key  # type: ignore[assignment]
+                identities[f] = identity
+            key: object = identity
         except (OSError, ValueError):
             key = os.path.normpath(f)
         if key not in seen:
