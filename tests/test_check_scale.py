@@ -310,10 +310,12 @@ def test_a_warm_check_of_every_bundled_problem_imports_no_pint(tmp_path):
 
 def _scan_as_it_was(m, g, r, J, I, speed, path_radius):
     """free_from_speed_and_path before it was made faster: free_residual called at every
-    point of the grid (the reference for 'the same answers, bit for bit')."""
+    point of the grid (the reference for 'the same answers, bit for bit'). Each tilt found
+    is refined as the module refines it (`_bisected`, `_tiny_tilt`): the scan is what is
+    compared."""
     import math
 
-    from gyro_cli.kinds.rolling_disk import free_residual, free_state
+    from gyro_cli.kinds.rolling_disk import _bisected, _tiny_tilt, free_residual, free_state
 
     top = math.pi / 2 if path_radius >= r else math.asin(path_radius / r)
 
@@ -325,21 +327,13 @@ def _scan_as_it_was(m, g, r, J, I, speed, path_radius):
     grid = fine + [top * i / n for i in range(1, n)]
     roots = []
     values = [f(t) for t in grid]
+    if f(0.0) < 0 < values[0]:
+        roots.append(_tiny_tilt(f, grid[0]))
     for (t0, f0), (t1, f1) in zip(zip(grid, values), zip(grid[1:], values[1:])):
         if f0 == 0:
             roots.append(t0)
         elif f0 * f1 < 0:
-            lo, hi, flo = t0, t1, f0
-            for _ in range(200):
-                mid = 0.5 * (lo + hi)
-                fm = f(mid)
-                if (fm < 0) == (flo < 0):
-                    lo, flo = mid, fm
-                else:
-                    hi = mid
-                if hi - lo < 1e-15:
-                    break
-            roots.append(0.5 * (lo + hi))
+            roots.append(_bisected(f, t0, t1, f0))
     return [free_state(m, r, t, path_radius - r * math.sin(t), speed) for t in roots]
 
 

@@ -224,3 +224,34 @@ def test_the_scan_grid_is_the_tilts_point_by_point_and_kept_unchanged(top):
     grid = _scan_grid(top)
     assert list(grid) == points and isinstance(grid, tuple)
     assert _scan_grid(top) is grid
+
+
+@pytest.mark.parametrize("path", [1e9, 1e12, 1e15, 1e16, 1e100, 1e300])
+def test_a_disk_on_a_huge_circle_tilts_as_the_large_circle_limit_says(path):
+    """On a circle of radius R >> r the moment balance m g r sin(b) rho^2 = v^2 cos(b)
+    [rho (m r + J / r) + I sin(b)] becomes b = v^2 (m r + J / r) / (m g r R), to within b
+    itself. The tilt is found to 1e-9 of itself however small: below a microradian the
+    bisection goes on past 1e-15 rad (it stopped there, and printed 7.887e-11 deg for
+    7.885e-11 at R = 1e12 m), and below the scan's finest point (about 4e-16 rad, beyond
+    R = 1e16 m at 3 m/s) the tilt is still found, not reported as missing."""
+    from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
+
+    m, r, v, g = 1.0, 0.05, 3.0, 9.81
+    J, I = m * r * r / 2, m * r * r / 4  # a thin disk
+    states = free_from_speed_and_path(m, g, r, J, I, v, path)
+    assert len(states) == 1
+    limit = v * v * (m * r + J / r) / (m * g * r * path)
+    assert states[0].tilt == pytest.approx(limit, rel=1e-8)
+
+
+def test_the_tilt_on_a_huge_circle_is_printed_right(run, write):
+    result = run("solve", write("""\
+        id: far
+        kind: rolling_disk
+        given: {arrangement: free, mass: 1 kg, shape: disk, radius: 50 mm, speed: 3 m/s,
+                path_radius: 1e12 m}
+        find: {tilt: deg}
+        """))
+    assert result.exit_code == 0, result.output
+    # 3 v^2 / (2 g R) rad = 27 / (2 9.81 1e12) rad = 1.3761e-12 rad = 7.885e-11 deg
+    assert "beta = 7.885e-11 deg" in result.output

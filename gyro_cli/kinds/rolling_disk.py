@@ -125,24 +125,42 @@ def free_from_speed_and_path(m: float, g: float, r: float, J: float, I: float, s
 
     grid = _scan_grid(top)
     roots = []
+    if f(0.0) < 0 < f(grid[0]):  # a tilt below the grid's finest point: a huge circle
+        roots.append(_tiny_tilt(f, grid[0]))
     for k in _sign_changes(grid, f, *_scan_bounds(mgr, v2, inertia, I, path_radius, r)):
         tk, tk1 = grid[k], grid[k + 1]
         f0 = f(tk)
         if f0 == 0:
             roots.append(tk)
         elif f0 * f(tk1) < 0:
-            lo, hi, flo = tk, tk1, f0
-            for _ in range(200):
-                mid = 0.5 * (lo + hi)
-                fm = f(mid)
-                if (fm < 0) == (flo < 0):
-                    lo, flo = mid, fm
-                else:
-                    hi = mid
-                if hi - lo < 1e-15:
-                    break
-            roots.append(0.5 * (lo + hi))
+            roots.append(_bisected(f, tk, tk1, f0))
     return [free_state(m, r, t, path_radius - r * math.sin(t), speed) for t in roots]
+
+
+def _bisected(f: Callable[[float], float], lo: float, hi: float, flo: float) -> float:
+    """The tilt in [lo, hi] where f changes sign (f(lo) = flo), by bisection: to 1e-15 rad,
+    and on to 1e-9 of itself where the tilt is below a microradian (a circle of hundreds
+    of kilometres, or slow rolling), so that every digit printed holds."""
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        fm = f(mid)
+        if (fm < 0) == (flo < 0):
+            lo, flo = mid, fm
+        else:
+            hi = mid
+        if hi - lo < 1e-15 and hi - lo <= 1e-9 * hi:
+            break
+    return 0.5 * (lo + hi)
+
+
+def _tiny_tilt(f: Callable[[float], float], below: float) -> float:
+    """The tilt under ``below``, the grid's finest point, where f changes sign, f(0) < 0 <
+    f(below): a contact circle so large that tan(beta) ~ 3 v^2 / (2 g rho) is under
+    1e-15. The tilt is halved until f < 0, then bisected between there and its double."""
+    hi, lo = below, below / 2
+    while lo > 0 and not f(lo) < 0:
+        hi, lo = lo, lo / 2
+    return _bisected(f, lo, hi, f(lo))
 
 
 SCAN_STEPS = 4000  # the scan's even steps in tilt, from 0 to the largest tilt
