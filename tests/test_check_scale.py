@@ -505,3 +505,24 @@ def test_a_report_that_fails_to_print_costs_only_its_file(monkeypatch, tmp_path,
     assert [p["status"] for p in problems] == ["pass", "error", "pass"]
     assert result.stderr.splitlines() == [
         f"gyro: {files[1]}: internal error: RuntimeError: no report (please report)"]
+
+
+@pytest.mark.parametrize("timeout", [60.0, None])
+def test_one_job_flushes_each_report_before_checking_the_next_file(monkeypatch, timeout):
+    """In one process the caller's ``idle`` (which flushes the report so far) runs before
+    each file but the first, so a file's line is out before the next file is checked (and
+    before a hang there runs out its time limit); and the alarm's handler is the caller's
+    again once the run ends."""
+    import signal
+
+    files = [str(p) for p in sorted(PROBLEMS.glob("11_*.yaml"))[:4]]
+    flushes, seen = [], []
+    real = check.check_file
+    monkeypatch.setattr(check, "check_file",
+                        lambda path, strict=False: seen.append(len(flushes)) or real(path, strict))
+    before = signal.getsignal(signal.SIGALRM)
+    results = list(check.checks(files, jobs=1, timeout=timeout,
+                                idle=lambda: flushes.append(1)))
+    assert [r.file for r in results] == files
+    assert seen == [0, 1, 2, 3]
+    assert signal.getsignal(signal.SIGALRM) is before

@@ -276,10 +276,8 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
                 timeout, lambda path, limit: finish(timed_out(path, limit)),
                 lambda path, code: finish(crashed(path, code)), idle)
             return
-    for i, path in enumerate(files):
-        if i and idle is not None:
-            idle()
-        yield finish(check_in_time(path, strict, timeout))
+    for problem in _in_time(files, strict, timeout, idle):
+        yield finish(problem)
 
 
 def warm() -> None:
@@ -306,27 +304,44 @@ class _Alarm(BaseException):
     ``except Exception`` does not swallow it)."""
 
 
-def check_in_time(path: str, strict: bool, timeout: float | None) -> ProblemCheck:
-    """check_file under a per-file time limit where this process can set an alarm (Unix,
-    main thread); elsewhere without one."""
+def _in_time(files: list[str], strict: bool, timeout: float | None,
+             idle: Callable[[], Any] | None = None) -> Iterator[ProblemCheck]:
+    """check_file of each file, each under the time limit where this process can set an
+    alarm (Unix, main thread); elsewhere without one. ``idle()`` is called before each
+    file but the first (the caller flushes what it wrote of the one before).
+
+    The alarm's handler is set once for the run, not once per file (setting it was a
+    twentieth of a file's time), and the alarm runs only while a file is checked:
+    between files (the caller writing its report) there is none."""
     import signal
     import threading
 
+    def ready(i: int) -> None:
+        if i and idle is not None:
+            idle()
+
     if not timeout or not hasattr(signal, "setitimer") \
             or threading.current_thread() is not threading.main_thread():
-        return check_file(path, strict)
+        for i, path in enumerate(files):
+            ready(i)
+            yield check_file(path, strict)
+        return
 
     def ring(signum: int, frame: Any) -> None:
         raise _Alarm()
 
     previous = signal.signal(signal.SIGALRM, ring)
     try:
-        signal.setitimer(signal.ITIMER_REAL, timeout)
-        try:
-            return check_file(path, strict)
-        finally:
-            signal.setitimer(signal.ITIMER_REAL, 0)
-    except _Alarm:
-        return timed_out(path, timeout)
+        for i, path in enumerate(files):
+            ready(i)
+            try:
+                signal.setitimer(signal.ITIMER_REAL, timeout)
+                try:
+                    problem = check_file(path, strict)
+                finally:
+                    signal.setitimer(signal.ITIMER_REAL, 0)
+            except _Alarm:
+                problem = timed_out(path, timeout)
+            yield problem
     finally:
         signal.signal(signal.SIGALRM, previous)
