@@ -283,10 +283,10 @@ def checks(files: list[str], strict: bool = False, jobs: int = 1,
 def warm() -> None:
     """Load, once, what checking a file needs: the kinds and the physics they import on
     first use (the standard library alone: no numpy), the YAML loader and the unit table.
-    Called before the workers
-    are forked, so each starts with it (shared, copy-on-write) instead of loading it
-    again; the objects made so far are then left out of the collector's passes
-    (gc.freeze), so a worker's collections do not touch, and copy, the pages it shares."""
+    Called before the workers are forked, so each starts with it (shared, copy-on-write)
+    instead of loading it again; the objects made so far are then left out of the
+    collector's passes (gc.freeze), so a worker's collections do not touch, and copy, the
+    pages it shares."""
     import gc
 
     from .. import kinds

@@ -288,7 +288,8 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
                     # the file under way fails; the rest (finished or not) go back to the queue
                     left = worker.unanswered()
                     k = min(max(worker.current(), 0), len(left) - 1)
-                    code = worker.stop(kill=True)
+                    # one that died is waited for, not killed: its exit status names the crash
+                    code = worker.stop(kill=failed is timed_out)
                     done[left[k]] = crashed(files[left[k]], code) if failed is crashed \
                         else timed_out(files[left[k]], timeout)
                     queue.extendleft(reversed(left[:k] + left[k + 1:]))
