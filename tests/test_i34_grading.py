@@ -218,7 +218,8 @@ def test_item17_a_sheet_naming_another_student_is_refused(run, tmp_path):
 def test_item17_only_the_submitter_is_graded_and_no_solver_value_shown(run, tmp_path):
     out = make_set(run, tmp_path, 3, TOP)
     roots, least = _answers(out, "s000")
-    sheet = put(tmp_path, "s.csv", f"s000,11/3,precession,{roots[0]:.4g} rpm\n")
+    sheet = put(tmp_path, "s.csv", f"s000,11/3,precession,{roots[0]:.4g} rpm\n"
+                                   f"s000,11/3,min_spin,{least * 1.2:.4g} rpm\n")
     assignment = out / "assignment.csv"
     result = run("check", "--answers", sheet, "--assignment", assignment, "--student", "s000")
     assert result.exit_code == 0, result.output
@@ -234,10 +235,11 @@ def test_item17_only_the_submitter_is_graded_and_no_solver_value_shown(run, tmp_
     for value in solver_values:
         assert value not in shown, value
     assert "s000" in shown and "score 0.5 / 2" in shown
+    assert "a root is missing" in shown and "off by" not in shown  # off by 20%: the answer
     data = _json(run("check", "--answers", sheet, "--assignment", assignment, "--student",
                      "s000", "--format", "json"))
     assert list(data["scores"]) == ["s000"] and {r["student"] for r in data["rows"]} == {"s000"}
-    assert all(r["correct"] == "" for r in data["rows"])
+    assert all(r["correct"] == "" and r["relative_error"] is None for r in data["rows"])
     target = tmp_path / "results.json"
     empty = put(tmp_path, "empty.csv", "")  # a submission with nothing in it is still graded
     for fmt in ("gradescope", "prairielearn"):

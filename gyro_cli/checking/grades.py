@@ -488,7 +488,7 @@ def _submitter_only(submissions: list[Submission], student: str, sheet: str) -> 
     refused (graded, it would give them the submitter's work)."""
     for s in submissions:
         if s.student != student:
-            raise InputError(f"this row is student {s.student!r}'s, but the submitter is "
+            raise InputError(f"this row names student {s.student!r}, but the submitter is "
                              f"{student!r} (--student); a submission holds its submitter's "
                              "answers only", file=sheet, line=s.line)
 
@@ -510,8 +510,10 @@ def _same_answer(first: Submission, first_id: str, again: Submission, sheet: str
 
 
 def conceal(graded: Graded, student: str) -> Graded:
-    """The submitter's grades only, without the solver's values: no correct answer, and
-    notes that say a root is missing or a word is not the expected one without saying it."""
+    """The submitter's grades only, without the solver's values: no correct answer, no
+    relative error (with the value submitted it gives the answer), and notes that say a
+    value is off, a root is missing or a word is not the expected one without saying by
+    how much or which."""
     import re
 
     graded.rows = [r for r in graded.rows if r.student == student]
@@ -519,8 +521,9 @@ def conceal(graded: Graded, student: str) -> Graded:
     graded.sheet_students = [student]
     graded.submitter = student
     for row in graded.rows:
-        row.correct = ""
+        row.correct, row.relative_error = "", None
         row.note = re.sub(r"missing root [^;]*", "a root is missing", row.note)
+        row.note = re.sub(r"off by [^%;]*%", "off", row.note)
         if row.result in ("wrong", "partial"):  # a word answer's note names the words
             row.note = re.sub(r"(^|; )expected .*?, got ", r"\1not the expected words; got ",
                               row.note)
