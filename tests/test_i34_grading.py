@@ -236,6 +236,13 @@ def test_item17_only_the_submitter_is_graded_and_no_solver_value_shown(run, tmp_
         assert value not in shown, value
     assert "s000" in shown and "score 0.5 / 2" in shown
     assert "a root is missing" in shown and "off by" not in shown  # off by 20%: the answer
+    # s000 hands in s001's numbers: their page does not say (or confirm) whose they are
+    _, copied_least = _answers(out, "s001")
+    copied = put(tmp_path, "c.csv", f"s000,11/3,min_spin,{copied_least:.4g} rpm\n")
+    result = run("check", "--answers", copied, "--assignment", assignment)
+    assert "student s001's variant" in result.stdout  # the teacher's report says so
+    result = run("check", "--answers", copied, "--assignment", assignment, "--student", "s000")
+    assert result.exit_code == 0 and "s001" not in result.stdout, result.output
     data = _json(run("check", "--answers", sheet, "--assignment", assignment, "--student",
                      "s000", "--format", "json"))
     assert list(data["scores"]) == ["s000"] and {r["student"] for r in data["rows"]} == {"s000"}

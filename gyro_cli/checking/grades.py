@@ -241,20 +241,20 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     grades are theirs only, without the solver's values (:func:`conceal`).
     """
     if assignment is not None:
-        graded = grade_assigned(sheet, paths, assignment, credit, student)
+        graded = grade_assigned(sheet, paths, assignment, credit, submitter=student)
     else:
-        graded = _grade_sheet(sheet, paths, credit, student)
+        graded = _grade_sheet(sheet, paths, credit, submitter=student)
     return conceal(graded, student) if student is not None else graded
 
 
 def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
-                 credit: dict[str, float] | None, student: str | None) -> Graded:
+                 credit: dict[str, float] | None, submitter: str | None) -> Graded:
     """Every submission of ``sheet`` against the problem of its id under ``paths``."""
     from ..solving.solve import solve
 
     submissions = read_sheet(sheet)
-    if student is not None:
-        _submitter_only(submissions, student, sheet)
+    if submitter is not None:
+        _submitter_only(submissions, submitter, sheet)
     problems = load_problems(paths)
     asked: dict[str, dict[str, None]] = {}
     for s in submissions:
@@ -314,7 +314,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
 
 
 def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
-                   credit: dict[str, float] | None = None, student: str | None = None
+                   credit: dict[str, float] | None = None, submitter: str | None = None
                    ) -> Graded:
     """Each student graded on their own variant of each assigned problem only.
 
@@ -333,11 +333,11 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
-    if student is not None:
-        if student not in plan.students:
-            raise InputError(f"--student {student!r} is not in the assignment",
+    if submitter is not None:
+        if submitter not in plan.students:
+            raise InputError(f"--student {submitter!r} is not in the assignment",
                              file=assignment_path)
-        _submitter_only(submissions, student, sheet)
+        _submitter_only(submissions, submitter, sheet)
     stored_key, why = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
     graded = Graded([], assignment=plan, notes=[why] if why else [],
                     sheet_students=list(dict.fromkeys(s.student for s in submissions)))
@@ -461,7 +461,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                             graded.errors.append(line)
                         row = GradeRow(student, own.problem, name, _submitted(values), "",
                                        None, "error", 0.0, note=line)
-                    if row.result in ("wrong", "partial") and values:
+                    # --student: the submitter's page must not confirm whose answers match
+                    if row.result in ("wrong", "partial") and values and submitter is None:
                         whose = lookup.whose(own, name, values)
                         if whose:
                             row.note = (f"these are the answers to student {whose.student}'s "
