@@ -166,8 +166,12 @@ def test_item05_a_damaged_key_is_ignored_and_the_variants_solved(run, tmp_path):
     listed["variants"] = [listed["variants"]]
     bad_problem = json.loads(original)
     bad_problem["problems"]["11/3"]["questions"] = "precession"
+    unhashable = json.loads(original)
+    unhashable["variants"]["11/3-s000"]["problem"] = ["11/3"]
+    assert '"values": [' in original
     damaged = [json.dumps(deleted), original[: len(original) // 2], json.dumps(no_answers),
-               json.dumps(listed), json.dumps(bad_problem), "[]", "null"]
+               json.dumps(listed), json.dumps(bad_problem), json.dumps(unhashable), "[]",
+               "null", original.replace('"values": [', '"values": [NaN, ', 1)]
     for text in damaged:
         key_path.write_text(text)
         result = _grade(run, out, sheet)

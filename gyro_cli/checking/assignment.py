@@ -219,6 +219,10 @@ def read_key(path: str) -> tuple[dict | None, str]:
 
 def key_fault(data: object) -> str:
     """What is wrong with a key's content ("" when it is whole and its digest matches)."""
+    from dataclasses import fields
+
+    from ..solving.solve import Reported
+
     if not (isinstance(data, dict) and data.get("format") == KEY_FORMAT):
         return f"not a {KEY_FORMAT} key"
     try:
@@ -235,33 +239,33 @@ def key_fault(data: object) -> str:
         if not (isinstance(about, dict) and isinstance(about.get("kind"), str)
                 and _strings(about.get("questions"))):
             return f"problem {pid!r} is incomplete"
+    answer_fields = {f.name for f in fields(Reported)}
     for vid, entry in variants.items():
-        fault = _variant_fault(entry, problems)
+        fault = _variant_fault(entry, problems, answer_fields)
         if fault:
             return f"variant {vid!r}: {fault}"
     return ""
 
 
-def _variant_fault(entry: object, problems: dict) -> str:
+def _variant_fault(entry: object, problems: dict, answer_fields: set[str]) -> str:
     """What is wrong with one variant's entry of a key ("" when nothing)."""
-    if not (isinstance(entry, dict) and entry.get("problem") in problems
+    if not (isinstance(entry, dict) and isinstance(entry.get("problem"), str)
+            and entry["problem"] in problems
             and isinstance(entry.get("sha256"), str) and isinstance(entry.get("answers"), dict)):
         return "incomplete"
     answers = entry["answers"]
     missing = [q for q in problems[entry["problem"]]["questions"] if q not in answers]
     if missing:
         return f"no answer {missing[0]!r}"
-    bad = next((name for name, answer in answers.items() if not _answer_whole(answer)), None)
+    bad = next((name for name, answer in answers.items()
+                if not _answer_whole(answer, answer_fields)), None)
     return f"answer {bad!r} is damaged" if bad is not None else ""
 
 
-def _answer_whole(answer: object) -> bool:
-    """A stored answer has every field of a reported answer, of the right types."""
-    from dataclasses import fields
-
-    from ..solving.solve import Reported
-
-    if not (isinstance(answer, dict) and set(answer) == {f.name for f in fields(Reported)}):
+def _answer_whole(answer: object, answer_fields: set[str]) -> bool:
+    """A stored answer has every field of a reported answer (``answer_fields``), of the
+    right types."""
+    if not (isinstance(answer, dict) and set(answer) == answer_fields):
         return False
     plain = (int, float, str)
     return (isinstance(answer["name"], str) and isinstance(answer["symbol"], str)
