@@ -178,6 +178,12 @@ def test_item05_a_damaged_key_is_ignored_and_the_variants_solved(run, tmp_path):
         assert result.exit_code == 0, (text[:80], result.output)
         assert json.loads(result.stdout)["scores"]["s000"]["points"] == 2.0
         assert result.stderr.count("key.json does not verify") == 1, result.stderr
+    other_code = json.loads(original)
+    other_code["code"] = "0" * 64  # a key of another gyro version: solved again, said so
+    key_path.write_text(json.dumps(other_code))
+    result = _grade(run, out, sheet)
+    assert json.loads(result.stdout)["scores"]["s000"]["points"] == 2.0
+    assert "key.json was written by other gyro code" in result.stderr
     key_path.write_text(original)  # the key as written: used, without a note
     result = _grade(run, out, sheet)
     assert result.exit_code == 0 and "key.json" not in result.stderr

@@ -209,11 +209,12 @@ def read_key(path: str) -> tuple[dict | None, str]:
         data = json.loads(read_bytes(path, MAX_KEY_BYTES, "a key file"))
     except (InputError, ValueError, RecursionError):
         return None, "key.json does not verify (not a readable key); re-solving the variants"
+    if isinstance(data, dict) and data.get("format") == KEY_FORMAT \
+            and data.get("code") != code_fingerprint():  # an older key has no digest yet
+        return None, "key.json was written by other gyro code; re-solving the variants"
     fault = key_fault(data)
     if fault:
         return None, f"key.json does not verify ({fault}); re-solving the variants"
-    if data["code"] != code_fingerprint():
-        return None, "key.json was written by other gyro code; re-solving the variants"
     return data, ""
 
 
