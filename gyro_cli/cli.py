@@ -291,6 +291,10 @@ def _cpus() -> int:
 @click.option("--assignment", metavar="ASSIGNMENT.csv",
               help="With --answers: grade each student only on their own variants, as "
                    "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
+@click.option("--student", metavar="ID",
+              help="With --answers: the one student who submitted SHEET (inside an "
+                   "autograder): a row naming anyone else is refused, and only their grades "
+                   "are printed and written, without the solver's values.")
 @click.option("--html", "html_file", metavar="FILE",
               help="Also write the report as a self-contained HTML page to FILE: failing "
                    "answers first, each linking to its worked answer.")
@@ -300,7 +304,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           assignment: str | None = None, out_format: str = "grades",
           credit: str | None = None, feedback_dir: str | None = None,
           jobs: int | None = None, timeout: float = 60.0, shard: str | None = None,
-          merge: bool = False) -> None:
+          merge: bool = False, student: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -311,8 +315,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if not paths and not (sheet and assignment):
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if assignment or credit is not None or feedback_dir:
-            fail("--assignment, --credit and --feedback go with --answers SHEET")
+        if assignment or credit is not None or feedback_dir or student is not None:
+            fail("--assignment, --credit, --feedback and --student go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
@@ -345,13 +349,16 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
     try:
         policy = grades.parse_credit(credit) if credit is not None else None
-        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy)
+        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy,
+                              student=student)
         if out:
             grades_report.write_out(graded, out, out_format, force)
         if feedback_dir:
             grades_report.write_feedback(graded, feedback_dir, force)
     except InputError as err:
         fail(err)
+    for line in graded.notes:
+        click.echo(f"gyro: note: {terminal_text(line)}", err=True)
     for line in graded.errors:
         click.echo(f"gyro: {terminal_text(line)}", err=True)
     click.echo(grades_report.as_json(graded) if fmt == "json" else grades_report.table(graded),

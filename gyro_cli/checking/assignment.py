@@ -22,6 +22,7 @@ import io
 import os
 import re
 from dataclasses import dataclass, field
+from typing import Any
 
 from ..core.csvsafe import plain_cell
 from ..core.errors import InputError
@@ -184,25 +185,119 @@ def file_digest(text: str | bytes) -> str:
     return hashlib.sha256(text.encode("utf-8") if isinstance(text, str) else text).hexdigest()
 
 
-def read_key(path: str) -> dict | None:
-    """The stored answer key of a roster set (``key.json`` beside the assignment), or None
-    when it is absent, damaged, or written by other code (then every variant is solved)."""
+def key_digest(data: dict) -> str:
+    """The SHA-256 of a key's content (every field but ``digest`` itself, answers
+    included), as canonical JSON: what `gyro vary` wrote is what grading uses."""
+    import json
+
+    body = {k: v for k, v in data.items() if k != "digest"}
+    return file_digest(json.dumps(body, sort_keys=True, separators=(",", ":"),
+                                  ensure_ascii=True, allow_nan=False))
+
+
+def read_key(path: str) -> tuple[dict | None, str]:
+    """The stored answer key of a roster set (``key.json`` beside the assignment) and "",
+    or None and why it is not used (then every variant is read and solved): "" when there
+    is none, else a note for the teacher (damaged, edited, or written by other code)."""
     import json
 
     from ..core.safeyaml import read_bytes
 
     if not os.path.isfile(path):
-        return None
+        return None, ""
     try:
         data = json.loads(read_bytes(path, MAX_KEY_BYTES, "a key file"))
-    except (InputError, ValueError):
-        return None
-    if not (isinstance(data, dict) and data.get("format") == KEY_FORMAT
-            and data.get("code") == code_fingerprint()
-            and isinstance(data.get("problems"), dict)
-            and isinstance(data.get("variants"), dict)):
-        return None
-    return data
+    except (InputError, ValueError, RecursionError):
+        return None, "key.json does not verify (not a readable key); re-solving the variants"
+    if isinstance(data, dict) and data.get("format") == KEY_FORMAT \
+            and data.get("code") != code_fingerprint():  # an older key has no digest yet
+        return None, "key.json was written by other gyro code; re-solving the variants"
+    fault = key_fault(data)
+    if fault:
+        return None, f"key.json does not verify ({fault}); re-solving the variants"
+    return data, ""
+
+
+def key_fault(data: object) -> str:
+    """What is wrong with a key's content ("" when it is whole and its digest matches)."""
+    from dataclasses import fields
+
+    from ..solving.solve import Reported
+
+    if not (isinstance(data, dict) and data.get("format") == KEY_FORMAT):
+        return f"not a {KEY_FORMAT} key"
+    try:
+        if data.get("digest") != key_digest(data):
+            return "its digest does not match its content: edited or damaged"
+    except (TypeError, ValueError):
+        return "it holds values JSON cannot write back"
+    if not isinstance(data.get("code"), str):
+        return "no code fingerprint"
+    problems, variants = data.get("problems"), data.get("variants")
+    if not (isinstance(problems, dict) and isinstance(variants, dict)):
+        return "no problems or variants"
+    for pid, about in problems.items():
+        if not (isinstance(about, dict) and isinstance(about.get("kind"), str)
+                and _strings(about.get("questions"))):
+            return f"problem {pid!r} is incomplete"
+    answer_fields = {f.name for f in fields(Reported)}
+    for vid, entry in variants.items():
+        fault = _variant_fault(entry, problems, answer_fields)
+        if fault:
+            return f"variant {vid!r}: {fault}"
+    return ""
+
+
+def _variant_fault(entry: object, problems: dict, answer_fields: set[str]) -> str:
+    """What is wrong with one variant's entry of a key ("" when nothing)."""
+    if not (isinstance(entry, dict) and isinstance(entry.get("problem"), str)
+            and entry["problem"] in problems
+            and isinstance(entry.get("sha256"), str) and isinstance(entry.get("answers"), dict)):
+        return "incomplete"
+    answers = entry["answers"]
+    missing = [q for q in problems[entry["problem"]]["questions"] if q not in answers]
+    if missing:
+        return f"no answer {missing[0]!r}"
+    bad = next((name for name, answer in answers.items()
+                if not _answer_whole(answer, answer_fields)), None)
+    return f"answer {bad!r} is damaged" if bad is not None else ""
+
+
+def _answer_whole(answer: object, answer_fields: set[str]) -> bool:
+    """A stored answer has every field of a reported answer (``answer_fields``), of the
+    right types."""
+    if not (isinstance(answer, dict) and set(answer) == answer_fields):
+        return False
+    plain = (int, float, str)
+    return (isinstance(answer["name"], str) and isinstance(answer["symbol"], str)
+            and all(isinstance(answer[k], str) or answer[k] is None for k in ("unit", "si_unit"))
+            and all(isinstance(answer[k], list)
+                    and all(isinstance(v, plain) and not isinstance(v, bool) for v in answer[k])
+                    for k in ("values", "si_values"))
+            and _strings(answer["labels"]))
+
+
+def _strings(value: object) -> bool:
+    return isinstance(value, list) and all(isinstance(v, str) for v in value)
+
+
+def load_variant(row: Assigned, assignment_path: str) -> Any:
+    """The variant file of an assignment row, loaded, holding the variant the row names
+    (a row pointing at another student's file is refused naming the row): the one check
+    of `gyro check --assignment` and `gyro handout --assignment`."""
+    from ..solving.problem import load
+
+    try:
+        problem = load(row.file)
+    except InputError as err:
+        raise err.located(file=row.file) from None
+    except Exception as err:  # a bug: reported (exit 3) naming the file
+        err.gyro_file = row.file  # type: ignore[attr-defined]
+        raise
+    if problem.id != row.variant:
+        raise InputError(f"{row.file} holds problem {problem.id!r}, but the assignment "
+                         f"says variant {row.variant!r}", file=assignment_path, line=row.line)
+    return problem
 
 
 def file_names(students: list[str]) -> dict[str, str]:

@@ -88,6 +88,8 @@ class Graded:
     errors: list[str] = field(default_factory=list)  # internal errors, one line each
     assignment: Any = None  # checking.assignment.Assignment when graded by assignment
     sheet_students: list[str] = field(default_factory=list)  # who the sheet holds answers of
+    notes: list[str] = field(default_factory=list)  # for the teacher, one line each (stderr)
+    submitter: str | None = None  # --student: only their rows, no solver value shown
 
 
 # ---- reading the sheet ------------------------------------------------------
@@ -229,18 +231,30 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
 
 
 def grade(sheet: str, paths: list[str] | tuple[str, ...],
-          assignment: str | None = None, credit: dict[str, float] | None = None) -> Graded:
+          assignment: str | None = None, credit: dict[str, float] | None = None,
+          student: str | None = None) -> Graded:
     """Grade every submission in ``sheet`` against the problems under ``paths``.
 
     With ``assignment`` (an assignment.csv from ``gyro vary --roster``) each student
-    is graded only on their own variants (:func:`grade_assigned`).
+    is graded only on their own variants (:func:`grade_assigned`). With ``student``
+    (the submitter, inside an autograder) the sheet must name no one else, and the
+    grades are theirs only, without the solver's values (:func:`conceal`).
     """
+    if assignment is not None:
+        graded = grade_assigned(sheet, paths, assignment, credit, submitter=student)
+    else:
+        graded = _grade_sheet(sheet, paths, credit, submitter=student)
+    return conceal(graded, student) if student is not None else graded
+
+
+def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
+                 credit: dict[str, float] | None, submitter: str | None) -> Graded:
+    """Every submission of ``sheet`` against the problem of its id under ``paths``."""
     from ..solving.solve import solve
 
-    if assignment is not None:
-        return grade_assigned(sheet, paths, assignment, credit)
-
     submissions = read_sheet(sheet)
+    if submitter is not None:
+        _submitter_only(submissions, submitter, sheet)
     problems = load_problems(paths)
     asked: dict[str, dict[str, None]] = {}
     for s in submissions:
@@ -300,7 +314,8 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
 
 
 def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
-                   credit: dict[str, float] | None = None) -> Graded:
+                   credit: dict[str, float] | None = None, submitter: str | None = None
+                   ) -> Graded:
     """Each student graded on their own variant of each assigned problem only.
 
     The questions of a problem are the answers its variants ask for (`find`, and
@@ -312,34 +327,30 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     """
     import os
 
-    from .assignment import read_assignment, read_key
+    from .assignment import load_variant, read_assignment, read_key
     from ..solving.problem import load
     from ..solving.solve import solve
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
-    key = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
+    if submitter is not None:
+        if submitter not in plan.students:
+            raise InputError(f"--student {submitter!r} is not in the assignment",
+                             file=assignment_path)
+        _submitter_only(submissions, submitter, sheet)
+    stored_key, why = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
+    graded = Graded([], assignment=plan, notes=[why] if why else [],
+                    sheet_students=list(dict.fromkeys(s.student for s in submissions)))
     variants: dict[str, Any] = {}
     stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
     seen_files: dict[str, str] = {}
     for row in plan.rows:
         seen_files[os.path.realpath(row.file)] = row.variant
-        keyed = _from_key(key, row) if key else None
+        keyed = _from_key(stored_key, row) if stored_key else None
         if keyed is not None:
             variants[row.variant], stored[row.variant] = keyed
             continue
-        try:
-            problem = load(row.file)
-        except InputError as err:
-            raise err.located(file=row.file) from None
-        except Exception as err:  # a bug: reported (exit 3) naming the file
-            err.gyro_file = row.file  # type: ignore[attr-defined]
-            raise
-        if problem.id != row.variant:
-            raise InputError(f"{row.file} holds problem {problem.id!r}, but the assignment "
-                             f"says variant {row.variant!r}", file=assignment_path,
-                             line=row.line)
-        variants[row.variant] = problem
+        variants[row.variant] = load_variant(row, assignment_path)
     if paths:  # the originals (or the variants' folder): every assigned problem among them
         files, errors = check.collect(paths)
         if errors:
@@ -358,13 +369,21 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             questions[row.problem] = list(dict.fromkeys(list(problem.find) +
                                                         list(problem.expected)))
     items: dict[tuple[str, str, str], Submission] = {}
+    named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
     extra: list[tuple[Submission, Any]] = []
+    assigned = set(plan.problems())
     for s in submissions:
         where = dict(file=sheet, line=s.line)
         if s.student not in plan.students:
             raise InputError(f"student {s.student!r} is not in the assignment "
                              f"{assignment_path}", **where)
+        if s.problem in assigned and s.problem in plan.by_variant:
+            other = plan.by_variant[s.problem]
+            raise InputError(f"the id {s.problem!r} is both problem {s.problem} of the "
+                             f"assignment and student {other.student}'s variant of problem "
+                             f"{other.problem} (assignment line {other.line}); write the "
+                             "student's own variant id instead", **where)
         own = plan.by_item.get((s.student, s.problem))
         note = ""
         if own is None:
@@ -389,14 +408,13 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             extra.append((s, own))
             continue
         key = (s.student, own.problem, s.answer)
-        if key in items:
-            items[key].values += s.values
-        else:
-            items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
+        if key in items:  # the same question under a second id: one question all the same
+            _same_answer(items[key], named[key], s, sheet)
+            continue
+        items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
+        named[key] = s.problem
         if note:
             notes.setdefault(key, []).append(note)
-    graded = Graded([], assignment=plan,
-                    sheet_students=list(dict.fromkeys(s.student for s in submissions)))
     solved: dict[str, Any] = {}
     for variant, problem in variants.items():
         if variant in stored:
@@ -443,7 +461,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                             graded.errors.append(line)
                         row = GradeRow(student, own.problem, name, _submitted(values), "",
                                        None, "error", 0.0, note=line)
-                    if row.result in ("wrong", "partial") and values:
+                    # --student: the submitter's page must not confirm whose answers match
+                    if row.result in ("wrong", "partial") and values and submitter is None:
                         whose = lookup.whose(own, name, values)
                         if whose:
                             row.note = (f"these are the answers to student {whose.student}'s "
@@ -462,6 +481,53 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                                              f"{', '.join(questions[own.problem])}); not graded",
                                         variant=own.variant))
         graded.scores[student] = (total, maximum)
+    return graded
+
+
+def _submitter_only(submissions: list[Submission], student: str, sheet: str) -> None:
+    """With --student the sheet is that student's submission: a row naming anyone else is
+    refused (graded, it would give them the submitter's work)."""
+    for s in submissions:
+        if s.student != student:
+            raise InputError(f"this row names student {s.student!r}, but the submitter is "
+                             f"{student!r} (--student); a submission holds its submitter's "
+                             "answers only", file=sheet, line=s.line)
+
+
+def _same_answer(first: Submission, first_id: str, again: Submission, sheet: str) -> None:
+    """A question answered under two ids (``11/3`` and ``11/3-ann``): the same values count
+    once; different ones are refused naming both lines (which one would count?)."""
+    def plain(values: list[Any]) -> list[str]:
+        return sorted(" ".join(str(v).split()).lower() for v in values)
+
+    if plain(first.values) == plain(again.values):
+        return
+    lines = (f"lines {first.line} and {again.line}" if first.line != again.line
+             else f"line {first.line}")
+    raise InputError(f"student {again.student!r} answers {again.answer} of problem "
+                     f"{first.problem} twice, under {first_id!r} and {again.problem!r} "
+                     f"({lines}), with different values; keep one", file=sheet,
+                     line=again.line)
+
+
+def conceal(graded: Graded, student: str) -> Graded:
+    """The submitter's grades only, without the solver's values: no correct answer, no
+    relative error (with the value submitted it gives the answer), and notes that say a
+    value is off, a root is missing or a word is not the expected one without saying by
+    how much or which."""
+    import re
+
+    graded.rows = [r for r in graded.rows if r.student == student]
+    graded.scores = {student: graded.scores.get(student, (0.0, 0.0))}
+    graded.sheet_students = [student]
+    graded.submitter = student
+    for row in graded.rows:
+        row.correct, row.relative_error = "", None
+        row.note = re.sub(r"missing root [^;]*", "a root is missing", row.note)
+        row.note = re.sub(r"off by [^%;]*%", "off", row.note)
+        if row.result in ("wrong", "partial"):  # a word answer's note names the words
+            row.note = re.sub(r"(^|; )expected .*?, got ", r"\1not the expected words; got ",
+                              row.note)
     return graded
 
 

@@ -65,15 +65,14 @@ def sheets(paths: list[str], roster: str | None = None, assignment: str | None =
     if roster and assignment:
         raise InputError("give --roster or --assignment, not both")
     if assignment:
-        from ..checking.assignment import read_assignment
-        from ..solving.problem import load
+        from ..checking.assignment import load_variant, read_assignment
 
         plan = read_assignment(assignment)
         out: dict[str, Sheet] = {}
         for row in plan.rows:
             sheet = out.setdefault(row.student, Sheet(row.student, _name(
                 plan.students[row.student].extra, row.student)))
-            sheet.problems.append(load(row.file))
+            sheet.problems.append(load_variant(row, assignment))
             sheet.variants.append(row.problem)
         return list(out.values())
     if roster:

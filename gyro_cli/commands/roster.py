@@ -8,13 +8,15 @@ problem's `vary:` block exactly as ``gyro vary --count`` does (ranges, 3
 significant figures, redrawn when there is no real solution).
 
 Written: ``DIR/<problem file stem>/<student>.yaml`` (the variant, with its
-computed `expected` answers; its id is ``<problem id>-<student>``) and
+computed `expected` answers; its id is ``<problem id>-<student>``, see
+:func:`variant_ids`) and
 ``DIR/assignment.csv`` (student, problem, variant, file, then the roster's other
 columns), the file that ``gyro check --answers --assignment`` and
 ``gyro handout --assignment`` read, and ``DIR/key.json``: each variant's answers
-as the solver gave them, the SHA-256 of its file and a hash of gyro's source,
-so that grading 10,000 students need not parse and solve 10,000 files again
-(a variant whose file changed, or a key from other code, is solved afresh).
+as the solver gave them, the SHA-256 of its file, a hash of gyro's source and a
+digest of the key's own content, so that grading 10,000 students need not parse
+and solve 10,000 files again (a variant whose file changed, or a key that was
+edited, damaged or written by other code, is solved afresh).
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ import random
 from typing import Any
 
 from ..checking.assignment import (ASSIGNMENT_COLUMNS, KEY_FORMAT, code_fingerprint,
-                                   file_digest, file_names, read_roster)
+                                   file_digest, file_names, key_digest, read_roster)
 from ..core.csvsafe import safe_cell
 from ..core.errors import InputError
 from .authoring import draw_variant, parse_vary, variant_yaml
@@ -40,6 +42,28 @@ def student_rng(seed: int, problem_id: str, student: str) -> random.Random:
     """The random stream of one student's variant of one problem (stable, independent)."""
     digest = hashlib.sha256(f"gyro-roster\0{seed}\0{problem_id}\0{student}".encode()).digest()
     return random.Random(int.from_bytes(digest[:16], "big"))
+
+
+def variant_ids(problem_ids: list[str], students: list[str]) -> dict[tuple[str, str], str]:
+    """The variant id of each (problem, student): ``<problem id>-<student>``, unless that
+    is the id of a problem of the set or another variant's plain id (problems ``P1`` and
+    ``P1-2``, student ``2``); then it gets ``-`` and 8 hex digits of a hash of both ids, so
+    that an id on an answer sheet names one thing."""
+    from collections import Counter
+
+    plain = {(p, s): f"{p}-{s}" for p in problem_ids for s in students}
+    count = Counter(plain.values())
+    taken = set(problem_ids)
+    out = {}
+    for (pid, sid), vid in plain.items():
+        if vid in taken or count[vid] > 1:
+            vid += "-" + hashlib.sha256(f"{pid}\0{sid}".encode()).hexdigest()[:8]
+        out[(pid, sid)] = vid
+    if len(set(out.values()) | taken) != len(out) + len(taken):  # a hash meeting an id
+        clash = Counter(list(out.values()) + list(taken)).most_common(1)[0][0]
+        raise InputError(f"the variant id {clash!r} would name two things; rename the "
+                         "problem or the student whose id it extends")
+    return out
 
 
 def roster_variants(paths: list[str], roster: str, seed: int
@@ -77,6 +101,7 @@ def roster_variants(paths: list[str], roster: str, seed: int
                              file=path, key="id")
         problems.append((problem, ranges, stem))
     rows = []
+    ids = variant_ids([p.id for p, _, _ in problems], [s.id for s in students])
     key: dict[str, Any] = {"format": KEY_FORMAT, "code": code_fingerprint(), "seed": seed,
                            "problems": {}, "variants": {}}
     for problem, ranges, stem in problems:
@@ -89,7 +114,7 @@ def roster_variants(paths: list[str], roster: str, seed: int
         source = os.path.basename(problem.file)
         for student in students:
             rng = student_rng(seed, problem.id, student.id)
-            variant_id = f"{problem.id}-{student.id}"
+            variant_id = ids[(problem.id, student.id)]
             solved: list[Any] = []
             for _ in range(MAX_DRAWS):
                 data = draw_variant(problem, base, ranges, rng, keyed, variant_id=variant_id,
@@ -116,6 +141,7 @@ def roster_variants(paths: list[str], roster: str, seed: int
     rows.sort(key=lambda r: order[r[0]])  # by student, each student's problems in order
     for row in rows:
         writer.writerow([safe_cell(c) for c in row])
+    key["digest"] = key_digest(key)  # covers the answers: an edited key is not used
     return files, out.getvalue(), json.dumps(key, allow_nan=False)
 
 

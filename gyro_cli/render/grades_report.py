@@ -39,12 +39,15 @@ def table(graded: Graded) -> str:
     widths = [max([len(head)] + [len(str(getattr(row, name))) for row in graded.rows])
               for head, name in (("student", "student"), ("problem", "problem"),
                                  ("answer", "answer"), ("result", "result"))]
+    solver = graded.submitter is None  # --student: the solver's values are not shown
     lines = [f"{'student':<{widths[0]}} {'problem':<{widths[1]}} {'answer':<{widths[2]}} "
-             f"{'result':<{widths[3]}} {'points':>6}  submitted  [solver: correct answer]"]
+             f"{'result':<{widths[3]}} {'points':>6}  submitted"
+             + ("  [solver: correct answer]" if solver else "")]
     for row in graded.rows:
         lines.append(f"{row.student:<{widths[0]}} {row.problem:<{widths[1]}} "
                      f"{row.answer:<{widths[2]}} {row.result:<{widths[3]}} "
-                     f"{row.points:>6g}  {row.submitted or '-'}  [solver: {row.correct}]"
+                     f"{row.points:>6g}  {row.submitted or '-'}"
+                     + (f"  [solver: {row.correct}]" if solver else "")
                      + (f"  {row.note}" if row.note and row.result != "correct" else ""))
     lines.append("")
     for student, (points, total) in graded.scores.items():
