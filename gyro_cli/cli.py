@@ -342,19 +342,22 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     from .checking import grades
     from .render import grades_report
 
-    if out is not None:
+    read = [sheet]  # and, graded by assignment, what grades_report.graded_inputs adds
+    if out is not None or feedback_dir:
         from .solving.paths import problem_files
 
-        _outputs_apart(problem_files(paths)[0] + [sheet], out=out)
+        read += problem_files(paths)[0]
+    if out is not None:
+        _outputs_apart(read, out=out)
 
     try:
         policy = grades.parse_credit(credit) if credit is not None else None
         graded = grades.grade(sheet, paths, assignment=assignment, credit=policy,
                               student=student)
         if out:
-            grades_report.write_out(graded, out, out_format, force)
+            grades_report.write_out(graded, out, out_format, force, read)
         if feedback_dir:
-            grades_report.write_feedback(graded, feedback_dir, force)
+            grades_report.write_feedback(graded, feedback_dir, force, read)
     except InputError as err:
         fail(err)
     for line in graded.notes:

@@ -21,6 +21,7 @@ import hashlib
 import io
 import os
 import re
+import unicodedata
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -61,11 +62,14 @@ class Assignment:
         return list(dict.fromkeys(a.problem for a in self.rows))
 
 
-def read_table(path: str, what: str) -> tuple[list[str], list[tuple[int, list[str]]]]:
+def read_table(path: str, what: str, ours: bool = False
+               ) -> tuple[list[str], list[tuple[int, list[str]]]]:
     """A CSV file with a header row: (column names, [(line, cells)]), blank rows skipped.
 
     A column named twice in the header is refused (which one would count?), and so is
-    a row with more cells than the header has names.
+    a row with more cells than the header has names. ``ours``: a file gyro wrote, whose
+    cells it guarded for spreadsheets (csvsafe.py); the guard is taken off again. A
+    roster is the teacher's: a leading quote in it is part of the id.
     """
     from ..core.safeyaml import read_text
 
@@ -90,18 +94,57 @@ def read_table(path: str, what: str) -> tuple[list[str], list[tuple[int, list[st
         if len(row) > len(header) and any(c.strip() for c in row[len(header):]):
             raise InputError(f"{len(row)} cells but the header names {len(header)} columns",
                              file=path, line=number)
-        out.append((number, [plain_cell(c.strip()) for c in row] + [""] * (len(header) - len(row))))
+        cells = [plain_cell(c.strip()) if ours else c.strip() for c in row]
+        out.append((number, cells + [""] * (len(header) - len(row))))
     return header, out
 
 
-def _plain_id(text: str, path: str, line: int) -> None:
-    """An id goes into file names, variant ids and LaTeX: no line breaks or control
-    characters."""
-    bad = next((c for c in text if ord(c) < 32 or 0x7f <= ord(c) < 0xa0
-                or c in "\u2028\u2029"), None)
+# Characters refused in an id: it goes into file names, variant ids and LaTeX, and two ids
+# must not look alike (a bidi override or a zero-width space hides in it).
+_NOT_IN_ID = frozenset(("Cc", "Cf", "Zl", "Zp", "Cs"))
+_NOT_IN_NAME = frozenset(("Cc", "Zl", "Zp", "Cs"))  # a zero-width joiner is part of a name
+NAME_COLUMNS = ("name", "student name", "full name", "sortable name")
+# Columns gyro's assignment.csv writes itself: a roster column so named would be one twice.
+RESERVED_COLUMNS = ASSIGNMENT_COLUMNS[1:]
+
+
+def _bad_character(text: str, categories: frozenset[str]) -> str | None:
+    return next((c for c in text if unicodedata.category(c) in categories), None)
+
+
+def _plain_id(text: str, path: str, line: int, what: str = "student id") -> None:
+    """An id is one line of printable text: a student id has no control, format (a bidi
+    override, a zero-width space) or line-break character; a problem or variant id, which
+    comes from a problem file, no control or line-break character."""
+    bad = _bad_character(text, _NOT_IN_ID if what == "student id" else _NOT_IN_NAME)
     if bad is not None:
-        raise InputError(f"the id {' '.join(text.split())[:40]!r} holds a control character "
-                         f"({bad!r}); ids are one line of printable text", file=path, line=line)
+        raise InputError(f"the {what} {_shown(text)} holds a control character "
+                         f"(U+{ord(bad):04X}); ids are one line of printable text",
+                         file=path, line=line)
+
+
+def _shown(text: str) -> str:
+    return repr(" ".join(text.split())[:40])
+
+
+def student_id(text: str) -> str:
+    """A student id as gyro compares it: Unicode NFC, so that ``café`` typed with one
+    character or with e and a combining accent is one student."""
+    return unicodedata.normalize("NFC", text)
+
+
+def _roster_cells(header: list[str], cells: list[str], path: str, line: int) -> None:
+    """A name is printable text; no cell holds a NUL."""
+    for column, cell in zip(header, cells):
+        categories = _NOT_IN_NAME if column.replace("_", " ") in NAME_COLUMNS else \
+            frozenset()
+        bad = _bad_character(cell, categories) if categories else \
+            ("\0" if "\0" in cell else None)
+        if bad is not None:
+            what = "name" if categories else "cell"
+            raise InputError(f"the {what} {_shown(cell)} (column {column!r}) holds a control "
+                             f"character (U+{ord(bad):04X}); write it as printable text",
+                             file=path, line=line)
 
 
 def read_roster(path: str) -> list[Student]:
@@ -110,18 +153,28 @@ def read_roster(path: str) -> list[Student]:
     if "student" not in header:
         raise InputError(f"no `student` column in the header (columns: {', '.join(header)})",
                          file=path, line=1)
+    reserved = next((c for c in header if c in RESERVED_COLUMNS), None)
+    if reserved is not None:
+        raise InputError(f"the roster has a column named {reserved!r}, which gyro's "
+                         f"assignment.csv writes itself ({', '.join(ASSIGNMENT_COLUMNS)}); "
+                         f"rename it (e.g. 'roster {reserved}')", file=path, line=1)
     at = header.index("student")
     students: dict[str, Student] = {}
+    written: dict[str, str] = {}
     for number, cells in rows:
-        sid = cells[at]
-        if not sid:
+        if not cells[at]:
             raise InputError("empty student id", file=path, line=number)
-        _plain_id(sid, path, number)
+        _plain_id(cells[at], path, number)
+        _roster_cells(header, cells, path, number)
+        sid = student_id(cells[at])
         if sid in students:
+            forms = "; the same letters in two Unicode forms" \
+                if written[sid] != cells[at] else ""
             raise InputError(f"student {sid!r} is listed twice (lines {students[sid].line} "
-                             f"and {number}); keep one", file=path, line=number)
+                             f"and {number}{forms}); keep one", file=path, line=number)
         extra = {h: c for h, c in zip(header, cells) if h and h != "student"}
         students[sid] = Student(sid, extra, number)
+        written[sid] = cells[at]
     if not students:
         raise InputError("no students in the roster", file=path)
     return list(students.values())
@@ -129,7 +182,8 @@ def read_roster(path: str) -> list[Student]:
 
 def read_assignment(path: str) -> Assignment:
     """An assignment CSV: who has which variant of which problem."""
-    header, rows = read_table(path, "an assignment (assignment.csv from gyro vary --roster)")
+    header, rows = read_table(path, "an assignment (assignment.csv from gyro vary --roster)",
+                              ours=True)
     missing = [c for c in ASSIGNMENT_COLUMNS if c not in header]
     if missing:
         raise InputError(f"the header must name {', '.join(ASSIGNMENT_COLUMNS)}; missing "
@@ -142,8 +196,10 @@ def read_assignment(path: str) -> Assignment:
         if not (student and problem and variant and file):
             raise InputError("student, problem, variant and file must not be empty",
                              file=path, line=number)
-        for text in (student, problem, variant):
-            _plain_id(text, path, number)
+        for text, what in ((student, "student id"), (problem, "problem id"),
+                           (variant, "variant id")):
+            _plain_id(text, path, number, what)
+        student = student_id(student)
         row = Assigned(student, problem, variant, os.path.join(folder, file), number)
         earlier = out.by_item.get((student, problem))
         if earlier is not None:
@@ -300,15 +356,43 @@ def load_variant(row: Assigned, assignment_path: str) -> Any:
     return problem
 
 
+# Names gyro gives its own files beside the students' (key.json, assignment.csv, the
+# handout's OUT-key.csv): no student's file is named so.
+RESERVED_NAMES = frozenset(("key", "assignment"))
+
+
 def file_names(students: list[str]) -> dict[str, str]:
-    """A file name stem per student id: the id itself when it is a safe name, else its
-    safe letters and a short hash; unique even on a case-insensitive file system."""
+    """A file name stem per student id, unique across the whole list and case-insensitively
+    too (a file system that folds case). A safe id is its own name unless an earlier id
+    took it (in any case) or gyro names its own files so (RESERVED_NAMES); any other id
+    gets its safe letters and a hash of the exact id, never a name another student has."""
     out: dict[str, str] = {}
     taken: set[str] = set()
+    for sid in students:  # first the ids that are their own names
+        if sid not in out and _safe_letters(sid) == sid and sid.lower() not in taken \
+                and sid.lower() not in RESERVED_NAMES:
+            out[sid] = sid
+            taken.add(sid.lower())
     for sid in students:
-        stem = SAFE_NAME.sub("_", sid).strip("._-")[:60]
-        if stem != sid or not stem or stem.lower() in taken:
-            stem = f"{stem or 'student'}-{hashlib.sha256(sid.encode()).hexdigest()[:8]}"
-        out[sid] = stem
-        taken.add(stem.lower())
+        if sid not in out:
+            out[sid] = _hashed_name(sid, taken)
+            taken.add(out[sid].lower())
     return out
+
+
+def _safe_letters(sid: str) -> str:
+    return SAFE_NAME.sub("_", sid).strip("._-")[:60]
+
+
+def _hashed_name(sid: str, taken: set[str]) -> str:
+    """``<safe letters>-<hash>``, the hash longer (then numbered) until no one has it."""
+    stem = _safe_letters(sid) or "student"
+    digest = hashlib.sha256(sid.encode("utf-8", "surrogatepass")).hexdigest()
+    for size in (8, 16, 64):
+        name = f"{stem}-{digest[:size]}"
+        if name.lower() not in taken:
+            return name
+    number = 2
+    while f"{name}-{number}".lower() in taken:
+        number += 1
+    return f"{name}-{number}"

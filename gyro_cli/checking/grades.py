@@ -102,6 +102,7 @@ def read_sheet(path: str) -> list[Submission]:
 
 
 def _read_csv(path: str) -> list[Submission]:
+    from .assignment import student_id
     from ..core.safeyaml import read_text
 
     text = read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)", "utf-8-sig")
@@ -143,7 +144,7 @@ def _read_csv(path: str) -> list[Submission]:
             raise InputError("student, problem and answer must not be empty", file=path,
                              line=number)
         values = [v.strip() for v in cells["value"].split(";") if v.strip()]
-        key = (cells["student"], cells["problem"], cells["answer"])
+        key = (student_id(cells["student"]), cells["problem"], cells["answer"])
         if key in merged:
             merged[key].values += values
         else:
@@ -152,32 +153,70 @@ def _read_csv(path: str) -> list[Submission]:
 
 
 def _read_yaml(path: str) -> list[Submission]:
+    from .assignment import student_id
     from ..solving.problem import read_yaml
 
-    data, lines = read_yaml(path, MAX_SHEET_BYTES)
-    _refuse_repeated_keys(path)
+    data, _ = read_yaml(path, MAX_SHEET_BYTES)
+    root = _refuse_repeated_keys(path)
     if not isinstance(data, dict):
         raise InputError("expected a mapping: student -> problem id -> answer -> value",
                          file=path)
     out = []
-    for student, problems in data.items():
-        where = dict(file=path, line=lines.get(str(student)))
+    for student, problems, node, line in _as_written(data, root, path, "student id"):
+        student = student_id(student)
+        where = dict(file=path, line=line)
         if not isinstance(problems, dict):
             raise InputError(f"student {student!r}: expected a mapping of problem ids", **where)
-        for problem, answers in problems.items():
+        for problem, answers, inner, _ in _as_written(problems, node, path, "problem id"):
             if not isinstance(answers, dict):
                 raise InputError(f"student {student!r}, problem {problem!r}: expected a mapping "
                                  "of answer names to values", **where)
-            for answer, value in answers.items():
+            for answer, value, _, _ in _as_written(answers, inner, path, "answer name"):
                 values = value if isinstance(value, list) else [value]
-                out.append(Submission(str(student), str(problem), str(answer),
-                                      [v for v in values if v is not None], where["line"]))
+                out.append(Submission(student, problem, answer,
+                                      [v for v in values if v is not None], line))
     return out
 
 
-def _refuse_repeated_keys(path: str) -> None:
+_NULL_TAG = "tag:yaml.org,2002:null"
+
+
+def _as_written(data: dict, node: Any, path: str, what: str
+                ) -> list[tuple[str, Any, Any, int | None]]:
+    """(key as written, value, value's node, key's line) of one mapping of a YAML sheet.
+
+    The loader keeps an unquoted ``true``, ``1.0`` or date key as its text; a key YAML
+    reads as null (``null``, ``~``) is a name too, the text written. An empty key, or two
+    that YAML would read as the same null, is refused naming the line.
+    """
+    import yaml
+
+    written: dict[Any, tuple[str, Any, int]] = {}
+    pairs = node.value if isinstance(node, yaml.MappingNode) else []
+    for key, value in pairs:
+        if not isinstance(key, yaml.ScalarNode) or key.tag == "tag:yaml.org,2002:merge":
+            continue
+        name = None if key.tag == _NULL_TAG else key.value
+        line = key.start_mark.line + 1
+        if name is None and None in written:
+            raise InputError(f"the keys {written[None][0]!r} (line {written[None][2]}) and "
+                             f"{key.value!r} are both null to YAML, so one key; quote the "
+                             f"{what} ('null')", file=path, line=line)
+        written[name] = (key.value if name is None else name, value, line)
+    out = []
+    for name, value in data.items():
+        text, inner, line = written.get(name, (name, None, None))
+        if not isinstance(text, str) or not text.strip():
+            raise InputError(f"an empty {what} (or one that is not text: {text!r})",
+                             file=path, line=line)
+        out.append((text, value, inner, line))
+    return out
+
+
+def _refuse_repeated_keys(path: str) -> Any:
     """A key written twice at any depth of a YAML sheet is bad input (YAML keeps the last
-    one silently, so one of the student's answers would be dropped without a word)."""
+    one silently, so one of the student's answers would be dropped without a word).
+    Returns the document's root node."""
     import yaml
 
     from ..core import safeyaml
@@ -186,7 +225,7 @@ def _refuse_repeated_keys(path: str) -> None:
     try:
         _, node = safeyaml.load(text)
     except Exception:  # read_yaml has already reported what is wrong with it
-        return
+        return None
     stack = [(node, "")]
     while stack:
         item, where = stack.pop()
@@ -203,6 +242,7 @@ def _refuse_repeated_keys(path: str) -> None:
                 stack.append((value, f"{where}{name} > "))
         elif isinstance(item, yaml.SequenceNode):
             stack.extend((v, where) for v in item.value)
+    return node
 
 
 # ---- grading ----------------------------------------------------------------

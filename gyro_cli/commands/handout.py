@@ -201,13 +201,25 @@ def key_csv(sheets_: list[Sheet]) -> str:
     return out.getvalue()
 
 
+def _inputs(paths: list[str], roster: str | None, assignment: str | None,
+            todo: list[Sheet]) -> list[str]:
+    """The files the handout read: the problem files (or, by assignment, each variant
+    file), the roster, the assignment."""
+    from ..solving.paths import problem_files
+
+    read = [p for p in (roster, assignment) if p]
+    if assignment:
+        return read + [problem.file for sheet in todo for problem in sheet.problems]
+    return read + problem_files(paths)[0]
+
+
 def write_handouts(paths: list[str], out: str, roster: str | None, assignment: str | None,
                    seed: int, solutions: bool, course: str, title: str,
                    force: bool) -> list[str]:
     """Write the handout(s) and, per student, the key CSV; nothing over an existing file
     without ``force`` (checked before anything is written)."""
     from ..checking.assignment import file_names
-    from ..core.files import write_atomic
+    from ..core.files import refuse_outputs_over_inputs, write_atomic
 
     stem, ext = os.path.splitext(out)
     if ext.lower() not in FORMATS:
@@ -222,6 +234,8 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
         targets.append((target, sheet))
     if per_student:
         targets.append((f"{stem}-key.csv", None))
+    refuse_outputs_over_inputs([target for target, _ in targets],
+                               _inputs(paths, roster, assignment, todo), option="the handout")
     if not force:
         for target, _ in targets:
             if os.path.exists(target) or os.path.islink(target):

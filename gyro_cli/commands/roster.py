@@ -150,7 +150,7 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     """Write the set and ``out_dir/assignment.csv``; nothing over an existing file without
     ``force`` (checked before anything is written). The set is written whole or not at
     all (core/files.py: write_set), and never over one of its inputs."""
-    from ..core.files import refuse_input_as_output, write_set_in
+    from ..core.files import refuse_outputs_over_inputs, write_set_in
 
     files, assignment, key = roster_variants(paths, roster, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
@@ -158,8 +158,8 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     targets = [(os.path.join(out_dir, name), text) for name, text in files]
     targets.append((os.path.join(out_dir, "key.json"), key))
     targets.append((os.path.join(out_dir, "assignment.csv"), assignment))
-    for target, _ in targets:
-        refuse_input_as_output(target, [*paths, roster], option="a variant", yaml_output=True)
+    refuse_outputs_over_inputs([target for target, _ in targets], [*paths, roster],
+                               option="a variant", yaml_output=True)
     if not force:
         clash = [t for t, _ in targets if os.path.lexists(t)]
         if clash:

@@ -20,7 +20,8 @@ from typing import Any
 
 TRIGGERS = ("=", "+", "-", "@", "\t", "\r", "\n", "\uff1d", "\uff0b", "\uff0d", "\uff20")
 PLAIN_NUMBER = re.compile(r"[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d+)?%?\Z")
-SEPARATED = re.compile(r"([,;\t\r\n|])(\s*)(?=[=+\-@\uff1d\uff0b\uff0d\uff20])")
+SEPARATED = re.compile(r"([,;\t\r\n|])(\s*)(?='*[=+\-@\uff1d\uff0b\uff0d\uff20])")
+QUOTED_TRIGGER = re.compile("'+[=+\\-@\t\r\n\uff1d\uff0b\uff0d\uff20]")
 
 
 def _part_is_number(text: str, start: int) -> bool:
@@ -33,7 +34,11 @@ def _part_is_number(text: str, start: int) -> bool:
 
 
 def safe_cell(value: Any) -> str:
-    """``value`` as a CSV cell a spreadsheet will read as text or a plain number."""
+    """``value`` as a CSV cell a spreadsheet will read as text or a plain number.
+
+    Text that already has quotes where a guard would go (``'=1+1``) gets one more
+    (``''=1+1``), so that :func:`plain_cell` gives back exactly the text written.
+    """
     text = "" if value is None else str(value)
     if not text:
         return text
@@ -45,14 +50,21 @@ def safe_cell(value: Any) -> str:
 
     if any(sep in text for sep in ",;\t\r\n|"):
         text = SEPARATED.sub(guard, text)
-    if text.startswith(TRIGGERS) and not PLAIN_NUMBER.match(text):
+    if (text.startswith(TRIGGERS) and not PLAIN_NUMBER.match(text)) \
+            or QUOTED_TRIGGER.match(text):
         return "'" + text
     return text
 
 
-UNGUARD = re.compile(r"(^|[,;\t\r\n|]\s*)'(?=[=+\-@\t\r\n\uff1d\uff0b\uff0d\uff20])")
+UNGUARD = re.compile(r"(^)'(?='*[=+\-@\t\r\n\uff1d\uff0b\uff0d\uff20])"
+                     r"|([,;\t\r\n|]\s*)'(?='*[=+\-@\uff1d\uff0b\uff0d\uff20])")
 
 
 def plain_cell(text: str) -> str:
-    """Undo :func:`safe_cell` on a cell gyro wrote (reading its own assignment back)."""
-    return UNGUARD.sub(lambda m: m.group(1), text) if "'" in text else text
+    """Undo :func:`safe_cell` on a cell gyro wrote (reading its own assignment back):
+    exactly, ``plain_cell(safe_cell(t)) == t`` for every text. A cell safe_cell would not
+    have written (edited by hand) is taken as it stands."""
+    if "'" not in text:
+        return text
+    plain = UNGUARD.sub(lambda m: m.group(1) or m.group(2) or "", text)
+    return plain if safe_cell(plain) == text else text

@@ -97,24 +97,52 @@ def refuse_input_as_output(output: str | os.PathLike, inputs=(), *,
     (`solving.paths.problem_files`), so that a bank's files are not looked up twice.
     """
     name = os.fspath(output)
+    if name.strip() and _identity(name) is None:
+        return  # a new path: it cannot be an input (and the inputs need no lookup)
+    known = identities or {}
+    by_identity: dict[tuple[int, int], str] = {}
+    for source in inputs:
+        found = known.get(source) or _identity(source)
+        if found is not None:
+            by_identity.setdefault(found, os.fspath(source))
+    _refuse_over(output, by_identity, option, yaml_output)
+
+
+def refuse_outputs_over_inputs(outputs: Iterable[str | os.PathLike],
+                               inputs: Iterable[str | os.PathLike], *,
+                               option: str = "the output", yaml_output: bool = False) -> None:
+    """:func:`refuse_input_as_output` for every file of a set (a file per student): the
+    inputs are looked up once, so 10,000 outputs against 10,000 variant files cost one
+    lookup each, not one per pair."""
+    by_identity: dict[tuple[int, int], str] = {}
+    for source in inputs:
+        found = _identity(source)
+        if found is not None:
+            by_identity.setdefault(found, os.fspath(source))
+    for output in outputs:
+        _refuse_over(output, by_identity, option, yaml_output)
+
+
+def _identity(path: str | os.PathLike) -> tuple[int, int] | None:
+    """(device, inode) of an existing file, the test of os.path.samestat; None if absent."""
+    try:
+        info = os.stat(path)
+    except (OSError, ValueError):
+        return None
+    return info.st_dev, info.st_ino
+
+
+def _refuse_over(output: str | os.PathLike, inputs: dict[tuple[int, int], str],
+                 option: str, yaml_output: bool) -> None:
+    name = os.fspath(output)
     if name.strip() == "":
         raise InputError(f"{option} needs a file name, got an empty one")
-    try:
-        out = os.stat(name)
-    except (OSError, ValueError):
+    found = _identity(name)
+    if found is None:
         return  # a new path: it cannot be an input
-    known = identities or {}
-    for source in inputs:
-        try:
-            found = known.get(source)
-            if found is None:
-                info = os.stat(source)
-                found = (info.st_dev, info.st_ino)
-        except (OSError, ValueError):
-            continue
-        if found == (out.st_dev, out.st_ino):  # os.path.samestat's test
-            raise InputError(f"{option} would replace an input file ({os.fspath(source)}); "
-                             "refused, give the output another name", file=name)
+    if found in inputs:
+        raise InputError(f"{option} would replace an input file ({inputs[found]}); "
+                         "refused, give the output another name", file=name)
     if not yaml_output and name.lower().endswith(PROBLEM_SUFFIXES):
         raise InputError(f"{option} would replace a YAML file; refused (was the output's "
                          "name left out, so that a shell glob filled it in?)", file=name)

@@ -6,7 +6,7 @@ import csv
 import dataclasses
 import io
 import json
-from typing import Any
+from typing import Any, Iterable
 
 from ..checking.grades import OUT_COLUMNS, Graded
 from ..core.csvsafe import safe_cell as _cell
@@ -101,7 +101,7 @@ def canvas_csv(graded: Graded, column: str) -> str:
     """
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
-    writer.writerow(list(CANVAS_COLUMNS) + [column])
+    writer.writerow(list(CANVAS_COLUMNS) + [_cell(column)])  # named after --out: user text
     totals = {total for _, total in graded.scores.values()}
     writer.writerow(["    Points Possible", "", "", "", "",
                      f"{max(totals):g}" if totals else ""])
@@ -158,20 +158,40 @@ def prairielearn_results(graded: Graded, student: str) -> str:
                        "tests": tests}, indent=2, allow_nan=False) + "\n"
 
 
-def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
-    """Write the grades to ``out`` in ``fmt``; the JSON formats are one file per student:
-    ``out`` itself when it ends in .json (the sheet must hold one student), else
-    ``out/<student>.json`` for every student graded."""
+def graded_inputs(graded: Graded, read: Iterable[str] = ()) -> list[str]:
+    """Every file the grading read: ``read`` (the sheet, the problem files) and, graded by
+    assignment, the assignment, its key.json and each variant file; no output may
+    replace one of them (core/files.py: refuse_outputs_over_inputs)."""
     import os
 
-    from ..core.files import write_atomic, write_set_in
+    inputs = list(read)
+    plan = graded.assignment
+    if plan is not None:
+        inputs += [plan.path, os.path.join(os.path.dirname(plan.path), "key.json")]
+        inputs += [row.file for row in plan.rows]
+    return inputs
 
-    if fmt == "grades":
-        write_atomic(out, csv_text(graded), force=force)
-        return [out]
-    if fmt == "canvas":
-        column = os.path.splitext(os.path.basename(out))[0] or "gyro"
-        write_atomic(out, canvas_csv(graded, column), force=force)
+
+def write_out(graded: Graded, out: str, fmt: str, force: bool,
+              read: Iterable[str] = ()) -> list[str]:
+    """Write the grades to ``out`` in ``fmt``; the JSON formats are one file per student:
+    ``out`` itself when it ends in .json (the sheet must hold one student), else
+    ``out/<student>.json`` for every student graded. No file written replaces one the
+    grading read (:func:`graded_inputs` of ``read``), with or without ``force``."""
+    import os
+
+    from ..core.files import refuse_outputs_over_inputs, write_atomic, write_set_in
+
+    def refuse_inputs(targets: list[str]) -> None:
+        refuse_outputs_over_inputs(targets, graded_inputs(graded, read), option="--out")
+
+    if fmt in ("grades", "canvas"):
+        refuse_inputs([out])
+        if fmt == "grades":
+            write_atomic(out, csv_text(graded), force=force)
+        else:
+            column = os.path.splitext(os.path.basename(out))[0] or "gyro"
+            write_atomic(out, canvas_csv(graded, column), force=force)
         return [out]
     from ..core.errors import InputError
 
@@ -181,6 +201,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
             raise InputError(f"a .json file holds one student's results; the sheet has "
                              f"{len(graded.sheet_students)} students: give a directory",
                              file=out)
+        refuse_inputs([out])
         write_atomic(out, render(graded, graded.sheet_students[0]), force=force)
         return [out]
     students = list(graded.scores)
@@ -188,6 +209,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool) -> list[str]:
 
     names = file_names(students)
     targets = [(os.path.join(out, names[s] + ".json"), render(graded, s)) for s in students]
+    refuse_inputs([t for t, _ in targets])
     write_set_in(out, targets, force=force)  # every student's file, or none
     return [t for t, _ in targets]
 
@@ -245,19 +267,23 @@ def _md(text: Any) -> str:
     return out
 
 
-def write_feedback(graded: Graded, folder: str, force: bool) -> list[str]:
+def write_feedback(graded: Graded, folder: str, force: bool,
+                   read: Iterable[str] = ()) -> list[str]:
     """``folder/<student>.md`` for every student graded; nothing over an existing file
-    without ``force`` (checked before anything is written)."""
+    without ``force``, nothing over a file the grading read (:func:`graded_inputs`) at
+    all (checked before anything is written)."""
     import os
 
     from ..checking.assignment import file_names
     from ..core.errors import InputError
-    from ..core.files import write_set_in
+    from ..core.files import refuse_outputs_over_inputs, write_set_in
 
     names = file_names(list(graded.scores))
     targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s))
                for s in graded.scores]
     if os.path.exists(folder) and not os.path.isdir(folder):
         raise InputError("exists and is not a directory", file=folder)
+    refuse_outputs_over_inputs([t for t, _ in targets], graded_inputs(graded, read),
+                               option="--feedback")
     write_set_in(folder, targets, force=force)  # every student's file, or none
     return [t for t, _ in targets]
