@@ -280,6 +280,10 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     (the submitter, inside an autograder) the sheet must name no one else, and the
     grades are theirs only, without the solver's values (:func:`conceal`).
     """
+    if student is not None:
+        from .assignment import student_id
+
+        student = student_id(student)  # the sheet's and the roster's ids are NFC
     if assignment is not None:
         graded = grade_assigned(sheet, paths, assignment, credit, submitter=student)
     else:
