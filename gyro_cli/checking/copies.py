@@ -31,7 +31,6 @@ EPS_MIN = 1e-9  # below this, floating point and not the student's digits decide
 # half-widths (on a log scale) of the boxes the variants' density is taken in: the first
 # that holds enough variants
 WINDOWS = (0.05, 0.1, 0.2, 0.4, 0.8)
-SAFETY = 2.0  # per direction: a density up to twice the box's mean
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
@@ -197,9 +196,9 @@ class VariantIndex:
                 # it tells the variants apart: they spread along it much more than the
                 # student's digits, and not only as the curve of a lesser dimension bends
                 if sigma >= max(10 * half, 0.1 * widest):
-                    share *= min(1.0, SAFETY * 2 * half / (math.sqrt(12) * sigma))
+                    share *= min(1.0, 2 * half / (math.sqrt(12) * sigma))
         else:  # too few variants near to see how they spread: as if along one direction
-            share = min(1.0, SAFETY * float(eps.max()) / window)
+            share = min(1.0, float(eps.max()) / window)
         return min(1.0, (len(box) + 1) / int(others.sum()) * share)
 
 
@@ -211,7 +210,7 @@ def whose(index: VariantIndex, student: str, wrong: dict[str, tuple[Any, dict[st
     if not wrong:
         return None
     common: set[str] | None = None
-    found: dict[str, tuple[Answered, set[str]]] = {}
+    found: dict[str, Answered] = {}
     for problem, (own, given) in wrong.items():
         answered = index.answered(own, given)
         if answered is None:
@@ -221,11 +220,11 @@ def whose(index: VariantIndex, student: str, wrong: dict[str, tuple[Any, dict[st
         common = owners if common is None else common & owners
         if not common:
             return None
-        found[problem] = (answered, owners)
+        found[problem] = answered
     other = sorted(common or ())[0]
     chance = float(class_size) * (class_size - 1)
     variants = {}
-    for problem, (answered, _) in found.items():
+    for problem, answered in found.items():
         own = wrong[problem][0]
         theirs = index.plan.by_item[(other, problem)].variant
         variants[problem] = (theirs, own.variant)

@@ -612,7 +612,8 @@ def direction(truth: float, submitted: float) -> str:
 
 def _slip_for_student(slip: str) -> str:
     """A likely slip as the student reads it: "yours" and "the answer", no solver value."""
-    return slip.replace("got is", "yours is").replace("times expected", "times the answer")
+    return slip.replace("got is", "yours is").replace("times expected", "times the answer") \
+        .replace("minus the expected value", "minus the answer")
 
 
 # Named slips (the names of --credit) and the words of matching.diagnose that name them.
