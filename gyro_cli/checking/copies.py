@@ -113,14 +113,16 @@ class VariantIndex:
         return out
 
     def answered(self, own: Any, given: dict[str, list[Any]]) -> Answered | None:
-        """A student's values of one problem, or None when one is not a number with a
-        dimension (a word, a value that does not parse)."""
+        """A student's values of one problem (words left out), or None when a value
+        does not parse or is 0."""
         problem = self.variants[own.variant]
         values: list[tuple[str, float, float]] = []
         for question, raw in given.items():
             spec = problem.kind.answer(question)
-            if spec is None or spec.dimension is None or not raw:
+            if spec is None or not raw:
                 return None
+            if spec.dimension is None:  # a word: a few possible, no evidence either way
+                continue
             parsed = []
             for value in raw:
                 try:

@@ -193,6 +193,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool,
 
     def render(graded: Graded, student: str) -> str:
         return results(graded, student, reveal)
+
     if out.endswith(".json"):  # one student's results, as inside an autograder
         if len(graded.sheet_students) != 1:
             raise InputError(f"a .json file holds one student's results; the sheet has "
