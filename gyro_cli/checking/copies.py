@@ -153,7 +153,8 @@ class VariantIndex:
         return found
 
     def _logs(self, problem: str, shape: tuple[tuple[str, int], ...]) -> Any:
-        """(variant ids, signs, log |values|) of every variant of ``problem`` of this shape."""
+        """({variant: row}, signs, log |values|) of every variant of ``problem`` of this
+        shape."""
         import numpy as np
 
         cached = self._vectors.get((problem, shape))
@@ -166,7 +167,8 @@ class VariantIndex:
                         ids.append(row.variant)
                         rows.append(vector)
             values = np.array(rows, dtype=float).reshape(len(rows), sum(c for _, c in shape))
-            cached = (ids, np.sign(values), np.log(np.abs(values)))
+            cached = ({v: k for k, v in enumerate(ids)}, np.sign(values),
+                      np.log(np.abs(values)))
             self._vectors[(problem, shape)] = cached
         return cached
 
@@ -176,7 +178,9 @@ class VariantIndex:
         import numpy as np
 
         ids, signs, logs = self._logs(problem, answered.shape())
-        others = np.array([v != own_variant for v in ids], dtype=bool)
+        others = np.ones(len(ids), dtype=bool)
+        if own_variant in ids:
+            others[ids[own_variant]] = False
         if not others.any():
             return 1.0
         x = np.array([math.log(abs(v)) for _, v, _ in answered.values])
