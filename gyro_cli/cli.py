@@ -288,6 +288,9 @@ def _cpus() -> int:
 @click.option("--feedback", "feedback_dir", metavar="DIR",
               help="With --answers: write each student a short page (DIR/STUDENT.md): what "
                    "was right, what was off and the likely slip.")
+@click.option("--reveal", is_flag=True,
+              help="With --feedback or a Gradescope / PrairieLearn --out: show each student "
+                   "the answers they did not get right (after the due date).")
 @click.option("--assignment", metavar="ASSIGNMENT.csv",
               help="With --answers: grade each student only on their own variants, as "
                    "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
@@ -303,8 +306,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
           assignment: str | None = None, out_format: str = "grades",
           credit: str | None = None, feedback_dir: str | None = None,
-          jobs: int | None = None, timeout: float = 60.0, shard: str | None = None,
-          merge: bool = False, student: str | None = None) -> None:
+          reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
+          shard: str | None = None, merge: bool = False, student: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -315,8 +318,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if not paths and not (sheet and assignment):
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if assignment or credit is not None or feedback_dir or student is not None:
-            fail("--assignment, --credit, --feedback and --student go with --answers SHEET")
+        if assignment or credit is not None or feedback_dir or student is not None or reveal:
+            fail("--assignment, --credit, --feedback, --student and --reveal go with --answers "
+                 "SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
@@ -339,6 +343,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
              "answer key, not with --answers")
     if out_format != "grades" and not out:
         fail("--out-format goes with --out FILE")
+    if reveal and not (feedback_dir or out_format in ("gradescope", "prairielearn")):
+        fail("--reveal goes with --feedback DIR or --out-format gradescope|prairielearn")
     from .checking import grades
     from .render import grades_report
 
@@ -353,11 +359,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     try:
         policy = grades.parse_credit(credit) if credit is not None else None
         graded = grades.grade(sheet, paths, assignment=assignment, credit=policy,
-                              student=student)
+                              student=student, reveal=reveal)
         if out:
-            grades_report.write_out(graded, out, out_format, force, read)
+            grades_report.write_out(graded, out, out_format, force, read, reveal)
         if feedback_dir:
-            grades_report.write_feedback(graded, feedback_dir, force, read)
+            grades_report.write_feedback(graded, feedback_dir, force, read, reveal)
     except InputError as err:
         fail(err)
     for line in graded.notes:

@@ -33,6 +33,7 @@ from typing import Any
 
 from . import check
 from .expected import parse_value
+from .copies import Match, VariantIndex, whose
 from .matching import compare, diagnose
 from .tolerance import tolerance_for
 from ..core.errors import InputError
@@ -77,8 +78,11 @@ class GradeRow:
     result: str  # correct | partial | wrong | invalid | missing | error (internal)
     points: float
     max_points: float = 1.0
-    note: str = ""
+    note: str = ""  # for the teacher: may name the solver's value and other students
     variant: str = ""  # graded by assignment: the variant this student was given
+    # for the student: what was off, with no number derived from the solver's value
+    # and no other student named (feedback pages, Gradescope, PrairieLearn)
+    feedback: str = ""
 
 
 @dataclass
@@ -272,7 +276,7 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
 
 def grade(sheet: str, paths: list[str] | tuple[str, ...],
           assignment: str | None = None, credit: dict[str, float] | None = None,
-          student: str | None = None) -> Graded:
+          student: str | None = None, reveal: bool = False) -> Graded:
     """Grade every submission in ``sheet`` against the problems under ``paths``.
 
     With ``assignment`` (an assignment.csv from ``gyro vary --roster``) each student
@@ -288,7 +292,7 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
         graded = grade_assigned(sheet, paths, assignment, credit, submitter=student)
     else:
         graded = _grade_sheet(sheet, paths, credit, submitter=student)
-    return conceal(graded, student) if student is not None else graded
+    return conceal(graded, student, reveal) if student is not None else graded
 
 
 def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
@@ -338,7 +342,8 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             values = submission.values if submission else None
             if pid not in solved:
                 row = GradeRow(student, pid, name, _submitted(values), "", None, "error", 0.0,
-                               note="internal error solving the problem (please report)")
+                               note="internal error solving the problem (please report)",
+                               feedback=ERROR_FEEDBACK)
             else:
                 try:
                     row = grade_item(student, problems[pid], name, solved[pid].answers[name],
@@ -350,7 +355,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                     if line not in graded.errors:
                         graded.errors.append(line)
                     row = GradeRow(student, pid, name, _submitted(values), "", None, "error",
-                                   0.0, note=line)
+                                   0.0, note=line, feedback=ERROR_FEEDBACK)
             graded.rows.append(row)
             total += row.points
         graded.scores[student] = (total, float(len(items)))
@@ -366,8 +371,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     `expected`); one row per student and question, so rows and time grow with the
     number of students. The sheet may name the original problem id (mapped to the
     student's variant by the assignment) or the variant's id; a variant that is
-    another student's is graded against the student's own, with a note. A wrong
-    answer that matches another student's variant says whose numbers it used.
+    another student's is graded against the student's own, with a note. Wrong
+    answers that match another student's variants so closely that chance cannot
+    explain it (:mod:`.copies`) say whose numbers they used, in the teacher's note only.
     """
     import os
 
@@ -475,16 +481,19 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             from ..core.errors import internal_message
 
             graded.errors.append(internal_message(problem.file, err))
-    lookup = _RootIndex(plan, variants, solved)
+    lookup = VariantIndex(plan, variants, solved)
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:
         extras_by_student.setdefault(s.student, []).append((s, own))
     assigned_problems = plan.problems()
     for student in plan.students:
         total = maximum = 0.0
+        rows: list[GradeRow] = []
+        wrong: dict[str, tuple[Any, dict[str, list[Any]]]] = {}
         for own in (plan.by_item[(student, pid)] for pid in assigned_problems
                     if (student, pid) in plan.by_item):
             problem = variants[own.variant]
+            given: dict[str, list[Any]] = {}
             for name in questions[own.problem]:
                 key = (student, own.problem, name)
                 submission = items.get(key)
@@ -493,6 +502,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                     row = GradeRow(student, own.problem, name, _submitted(values), "", None,
                                    "error", 0.0, note="internal error solving the problem "
                                    "(please report)")
+                    row.feedback = ERROR_FEEDBACK
                 else:
                     try:
                         row = grade_item(student, problem, name,
@@ -504,26 +514,28 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                         if line not in graded.errors:
                             graded.errors.append(line)
                         row = GradeRow(student, own.problem, name, _submitted(values), "",
-                                       None, "error", 0.0, note=line)
-                    # --student: the submitter's page must not confirm whose answers match
-                    if row.result in ("wrong", "partial") and values and submitter is None:
-                        whose = lookup.whose(own, name, values)
-                        if whose:
-                            row.note = (f"these are the answers to student {whose.student}'s "
-                                        f"variant {whose.variant}, not to this student's own "
-                                        f"{own.variant}; " + row.note).rstrip("; ")
+                                       None, "error", 0.0, note=line, feedback=ERROR_FEEDBACK)
+                    if row.result in ("wrong", "partial"):
+                        wrong.setdefault(own.problem, (own, given))
+                if values:
+                    given[name] = values
                 row.problem, row.variant = own.problem, own.variant
                 if notes.get(key):
                     row.note = "; ".join(notes[key] + ([row.note] if row.note else []))
-                graded.rows.append(row)
+                    row.feedback = "; ".join([f"graded on your own variant {own.variant}"]
+                                             + ([row.feedback] if row.feedback else []))
+                rows.append(row)
                 total += row.points
                 maximum += row.max_points
+        if submitter is None:  # --student: the submitter's output must not confirm whose
+            _name_match(rows, whose(lookup, student, wrong, len(plan.students)))
+        graded.rows += rows
         for s, own in extras_by_student.get(student, []):
+            text = (f"not asked in problem {own.problem} (it asks: "
+                    f"{', '.join(questions[own.problem])}); not graded")
             graded.rows.append(GradeRow(student, own.problem, s.answer, _submitted(s.values),
-                                        "", None, "extra", 0.0, 0.0,
-                                        note=f"not asked in problem {own.problem} (it asks: "
-                                             f"{', '.join(questions[own.problem])}); not graded",
-                                        variant=own.variant))
+                                        "", None, "extra", 0.0, 0.0, note=text,
+                                        variant=own.variant, feedback=text))
         graded.scores[student] = (total, maximum)
     return graded
 
@@ -554,25 +566,37 @@ def _same_answer(first: Submission, first_id: str, again: Submission, sheet: str
                      line=again.line)
 
 
-def conceal(graded: Graded, student: str) -> Graded:
-    """The submitter's grades only, without the solver's values: no correct answer, no
-    relative error (with the value submitted it gives the answer), and notes that say a
-    value is off, a root is missing or a word is not the expected one without saying by
-    how much or which."""
-    import re
-
+def conceal(graded: Graded, student: str, reveal: bool = False) -> Graded:
+    """The submitter's grades only, each note the student-facing one (too high, too low, a
+    root is missing: no other student, no number of the solver's); without ``reveal``
+    (after the due date) no correct answer and no relative error either (with the value
+    submitted it gives the answer)."""
     graded.rows = [r for r in graded.rows if r.student == student]
     graded.scores = {student: graded.scores.get(student, (0.0, 0.0))}
     graded.sheet_students = [student]
     graded.submitter = student
     for row in graded.rows:
-        row.correct, row.relative_error = "", None
-        row.note = re.sub(r"missing root [^;]*", "a root is missing", row.note)
-        row.note = re.sub(r"off by [^%;]*%", "off", row.note)
-        if row.result in ("wrong", "partial"):  # a word answer's note names the words
-            row.note = re.sub(r"(^|; )expected .*?, got ", r"\1not the expected words; got ",
-                              row.note)
+        if not reveal:
+            row.correct, row.relative_error = "", None
+        row.note = row.feedback
     return graded
+
+
+ERROR_FEEDBACK = "not graded: gyro failed on this problem (your teacher is told)"
+
+
+def _name_match(rows: list[GradeRow], match: Match | None) -> None:
+    """The teacher's note on each wrong row of a problem whose answers are another
+    student's: whose variant, and how unlikely a coincidence is."""
+    if match is None:
+        return
+    for row in rows:
+        if row.problem in match.variants and row.result in ("wrong", "partial"):
+            theirs, own = match.variants[row.problem]
+            row.note = (f"these are the answers to student {match.student}'s variant {theirs}, "
+                        f"not to this student's own {own} (expected number of students "
+                        f"matched by chance in this class: {match.chance:.1g}); "
+                        + row.note).rstrip("; ")
 
 
 def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
@@ -605,60 +629,6 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
     return problem, SimpleNamespace(answers=answers)
 
 
-class _RootIndex:
-    """Every variant's computed values of each (problem, answer), sorted, to find in
-    O(log n) whose numbers a wrong answer used."""
-
-    def __init__(self, plan: Any, variants: dict[str, Any], solved: dict[str, Any]) -> None:
-        self.plan, self.variants, self.solved = plan, variants, solved
-        self.index: dict[tuple[str, str], tuple[list[float], list[str]]] = {}
-
-    def _table(self, problem_id: str, name: str) -> tuple[list[float], list[str]]:
-        table = self.index.get((problem_id, name))
-        if table is None:
-            pairs = []
-            for row in self.plan.rows:
-                if row.problem != problem_id or row.variant not in self.solved:
-                    continue
-                answer = self.solved[row.variant].answers.get(name)
-                if answer is None or answer.si_unit is None and answer.unit is None:
-                    continue
-                pairs += [(float(v), row.variant) for v in answer.si_values
-                          if isinstance(v, (int, float)) and math.isfinite(v)]
-            pairs.sort()
-            table = ([p[0] for p in pairs], [p[1] for p in pairs])
-            self.index[(problem_id, name)] = table
-        return table
-
-    def whose(self, own: Any, name: str, values: list[Any]) -> Any:
-        """The assignment row of another student whose variant every submitted value of
-        ``values`` matches (within the problem's tolerance), or None."""
-        import bisect
-
-        problem = self.variants[own.variant]
-        spec = problem.kind.answer(name)
-        if spec.dimension is None:
-            return None
-        names = [a.name for a in problem.kind.answers]
-        tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
-        keys, owners = self._table(own.problem, name)
-        common: set[str] | None = None
-        for value in values:
-            try:
-                si = float(parse_value(value, spec.dimension, name).si)
-            except Exception:
-                return None
-            width = max(tolerance.half_width(si, si), abs(si) * 1e-9)
-            lo, hi = bisect.bisect_left(keys, si - width), bisect.bisect_right(keys, si + width)
-            found = {owners[k] for k in range(lo, min(hi, lo + 50))} - {own.variant}
-            common = found if common is None else common & found
-            if not common:
-                return None
-        if not common:
-            return None
-        return self.plan.by_variant[sorted(common)[0]]
-
-
 def grade_item(student: str, problem: Any, name: str, reported: Any,
                values: list[Any] | None, credit: dict[str, float] | None = None) -> GradeRow:
     """One student's answer to one question, against the solver's answer.
@@ -683,10 +653,12 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             parsed.append(parse_value(value, spec.dimension, name))
         except InputError as err:
             row.result, row.note = "invalid", err.message
+            row.feedback = err.message
             return row
         except Exception:  # the unit parser failed on it: still the student's slip
             row.result = "invalid"
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
+            row.feedback = row.note
             return row
     lines = compare(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
@@ -698,33 +670,55 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
               and float(line.got_si) != 0]
     errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
     row.relative_error = max(errors, key=abs) if errors else None
-    notes = []
+    notes, feedback = [], []
     credited = 0.0
     for line in lines:
         if line.passed:
             continue
         if line.expected is None:
             notes.append(f"missing root {line.got}")
+            feedback.append("a root is missing")
         elif line.got_si is None:
             notes.append(f"{line.expected}: no such root")
+            feedback.append(f"{line.expected}: no such root (one value too many)")
         else:
             truth, submitted = float(line.got_si), float(line.expected_si)
             off = (submitted - truth) / abs(truth) * 100 if truth else math.inf
             note = (f"{line.expected}: off by {off:+.3g}%" if math.isfinite(off)
                     else f"{line.expected}: wrong")
+            said = f"{line.expected}: {direction(truth, submitted)}"
             slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
             if slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
+                said += f" (likely slip: {_slip_for_student(slip)})"
                 share, named = slip_credit(slip, credit)
                 if share:
                     credited += share
                     note += f" [credit {share:g} for {' and '.join(named)}]"
+                    said += f" [credit {share:g} for {' and '.join(named)}]"
             notes.append(note)
+            feedback.append(said)
     row.note = "; ".join(notes)
+    row.feedback = "; ".join(feedback)
     if credited and lines:
         row.points = round((passed + credited) / len(lines), 4)
         row.result = "partial" if row.result == "wrong" else row.result
     return row
+
+
+def direction(truth: float, submitted: float) -> str:
+    """Which way a wrong value is off, in words that do not give the answer away."""
+    if truth and submitted and (truth < 0) != (submitted < 0):
+        return "the wrong sign"
+    if truth < 0:
+        return "too large in size" if submitted < truth else "too small in size"
+    return "too high" if submitted > truth else "too low"
+
+
+def _slip_for_student(slip: str) -> str:
+    """A likely slip as the student reads it: "yours" and "the answer", no solver value."""
+    return slip.replace("got is", "yours is").replace("times expected", "times the answer") \
+        .replace("minus the expected value", "minus the answer")
 
 
 # Named slips (the names of --credit) and the words of matching.diagnose that name them.
@@ -794,6 +788,7 @@ def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
     for value in values:
         if isinstance(value, (dict, list, bool)) or not str(value).strip():
             row.result, row.note = "invalid", f"expected a word, got {value!r}"
+            row.feedback = row.note
             return row
         submitted.append(normal_word(value))
     # A word written twice (`cusps; cusps`, or `cusp; cusps`) counts once (docs/check.md).
@@ -814,6 +809,8 @@ def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
         "partial" if hits else "wrong")
     if row.result != "correct":
         row.note = f"expected {', '.join(truth)}, got {row.submitted}"
+        row.feedback = ("not all the right words" if hits else "not the right word") + \
+            (f"; not among them: {', '.join(extra)}" if hits and extra else "")
     return row
 
 

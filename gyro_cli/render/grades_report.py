@@ -124,34 +124,50 @@ def _test_name(row: Any) -> str:
     return f"{row.problem}: {row.answer}"
 
 
-def _test_output(row: Any) -> str:
+def student_note(row: Any, reveal: bool = False) -> str:
+    """What a student is told about one answer: the grading's words for them (no solver
+    value, no other student), and with ``reveal`` (after the due date) the answer."""
+    text = row.feedback
+    if reveal and row.correct and row.result not in ("correct", "extra", "error"):
+        shown = f"the answer: {row.correct}"
+        if row.relative_error is not None:
+            shown += f" (yours is off by {row.relative_error * 100:+.3g}%)"
+        text = f"{text}; {shown}" if text else shown
+    return text
+
+
+def _test_output(row: Any, reveal: bool = False) -> str:
     text = f"submitted: {row.submitted or '(nothing)'}; result: {row.result}"
-    return text + (f"; {row.note}" if row.note else "")
+    note = student_note(row, reveal)
+    return text + (f"; {note}" if note else "")
 
 
-def gradescope_results(graded: Graded, student: str) -> str:
+def gradescope_results(graded: Graded, student: str, reveal: bool = False) -> str:
     """Gradescope's autograder results.json for one student: a test per answer (name,
-    score, max_score, status, output) and the total score."""
+    score, max_score, status, output) and the total score. The texts are the student's
+    (:func:`student_note`)."""
     rows = _student_rows(graded, student)
     points, total = graded.scores.get(student, (0.0, 0.0))
     tests = [{"name": _test_name(r), "score": r.points, "max_score": r.max_points,
               "status": "passed" if r.points >= r.max_points > 0 else "failed",
-              "output": _test_output(r), "visibility": "visible"}
+              "output": _test_output(r, reveal), "visibility": "visible"}
              for r in rows if r.max_points > 0]
     return json.dumps({"score": points, "output": f"{student}: {points:g} of {total:g} points "
                        "(graded by gyro)", "visibility": "visible", "tests": tests},
                       indent=2, allow_nan=False) + "\n"
 
 
-def prairielearn_results(graded: Graded, student: str) -> str:
+def prairielearn_results(graded: Graded, student: str, reveal: bool = False) -> str:
     """PrairieLearn's external-grader results.json for one student: gradable, score as a
-    fraction 0..1, a message, and a test per answer (name, points, max_points, message)."""
+    fraction 0..1, a message, and a test per answer (name, points, max_points, message).
+    The texts are the student's (:func:`student_note`)."""
     rows = _student_rows(graded, student)
     points, total = graded.scores.get(student, (0.0, 0.0))
     tests = [{"name": _test_name(r), "description": f"the answer {r.answer} of problem "
               f"{r.problem}", "points": r.points, "max_points": r.max_points,
-              "message": r.note if r.result != "correct" else "correct",
-              "output": _test_output(r)}
+              "message": (student_note(r, reveal) or RESULT_WORDS.get(r.result, r.result))
+              if r.result != "correct" else "correct",
+              "output": _test_output(r, reveal)}
              for r in rows if r.max_points > 0]
     return json.dumps({"gradable": True, "score": points / total if total else 0.0,
                        "message": f"{points:g} of {total:g} points", "output": "",
@@ -173,7 +189,7 @@ def graded_inputs(graded: Graded, read: Iterable[str] = ()) -> list[str]:
 
 
 def write_out(graded: Graded, out: str, fmt: str, force: bool,
-              read: Iterable[str] = ()) -> list[str]:
+              read: Iterable[str] = (), reveal: bool = False) -> list[str]:
     """Write the grades to ``out`` in ``fmt``; the JSON formats are one file per student:
     ``out`` itself when it ends in .json (the sheet must hold one student), else
     ``out/<student>.json`` for every student graded. No file written replaces one the
@@ -195,7 +211,11 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool,
         return [out]
     from ..core.errors import InputError
 
-    render = gradescope_results if fmt == "gradescope" else prairielearn_results
+    results = gradescope_results if fmt == "gradescope" else prairielearn_results
+
+    def render(graded: Graded, student: str) -> str:
+        return results(graded, student, reveal)
+
     if out.endswith(".json"):  # one student's results, as inside an autograder
         if len(graded.sheet_students) != 1:
             raise InputError(f"a .json file holds one student's results; the sheet has "
@@ -221,10 +241,11 @@ RESULT_WORDS = {"correct": "right", "partial": "partly right", "wrong": "off",
                 "error": "not graded (gyro failed on the problem)"}
 
 
-def feedback_text(graded: Graded, student: str) -> str:
-    """One student's feedback as Markdown: the score, then each answer: right, or what was
-    off and the likely slip (the grading note). The correct values are not printed, so the
-    page can go out before the due date."""
+def feedback_text(graded: Graded, student: str, reveal: bool = False) -> str:
+    """One student's feedback as Markdown: the score, then each answer: right, or which
+    way it was off and the likely slip (:func:`student_note`). Without ``reveal`` no number
+    derived from the solver's values is printed, so the page can go out before the due
+    date; with it (after the due date) each answer not right shows the solver's value."""
     points, total = graded.scores.get(student, (0.0, 0.0))
     percent = 100 * points / total if total else 0.0
     lines = [f"# Feedback for {_md(student)}", "",
@@ -242,19 +263,12 @@ def feedback_text(graded: Graded, student: str) -> str:
             text = f"- {_md(r.problem)}, {_md(r.answer)}: {RESULT_WORDS.get(r.result, r.result)}"
             if r.submitted:
                 text += f" (you gave {_md(r.submitted)})"
-            note = r.note if r.result != "missing" else ""
+            note = student_note(r, reveal)
             if note:
-                text += f". {_md(_without_truth(note))}"
+                text += f". {_md(note)}"
             lines.append(text + f"; {r.points:g} of {r.max_points:g} points.")
         lines.append("")
     return "\n".join(lines)
-
-
-def _without_truth(note: str) -> str:
-    """A grading note without the solver's values (a missing root's value is the answer)."""
-    import re
-
-    return re.sub(r"missing root [^;]*", "a root is missing", note)
 
 
 def _md(text: Any) -> str:
@@ -268,7 +282,7 @@ def _md(text: Any) -> str:
 
 
 def write_feedback(graded: Graded, folder: str, force: bool,
-                   read: Iterable[str] = ()) -> list[str]:
+                   read: Iterable[str] = (), reveal: bool = False) -> list[str]:
     """``folder/<student>.md`` for every student graded; nothing over an existing file
     without ``force``, nothing over a file the grading read (:func:`graded_inputs`) at
     all (checked before anything is written)."""
@@ -279,7 +293,7 @@ def write_feedback(graded: Graded, folder: str, force: bool,
     from ..core.files import refuse_outputs_over_inputs, write_set_in
 
     names = file_names(list(graded.scores))
-    targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s))
+    targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s, reveal))
                for s in graded.scores]
     if os.path.exists(folder) and not os.path.isdir(folder):
         raise InputError("exists and is not a directory", file=folder)
