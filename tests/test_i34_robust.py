@@ -1,0 +1,158 @@
+"""Issue 34, items 23-25: tagged YAML values, numbers given to the Python API, and
+rendering from several threads at once."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from test_bad_input import one_line_error
+
+# ---- item 23: a tagged YAML value is bad input naming its key, never exit 3 ----------
+
+GIVEN = """given:
+  weight: 3 oz
+  k_axial: 0.84 in
+  k_pivot: 1.80 in
+  cg_distance: 1.5 in
+  spin: {spin}
+  theta: 30 deg
+"""
+
+
+def tagged_problem(spin: str = "1800 rpm", find: str = "rpm", expected: str = "",
+                   top: str = "") -> str:
+    text = "id: x\nkind: steady_precession\n" + GIVEN.format(spin=spin) + \
+        f"find:\n  precession: {find}\n"
+    if expected:
+        text += f"expected:\n  precession: {expected}\n"
+    return text + top
+
+
+TAGS = ["!!map", "!!seq", "!!str", "!!int", "!!float", "!!bool", "!!null", "!!binary",
+        "!!timestamp", "!!set", "!!omap", "!!pairs", "!!merge",
+        "!!python/object:os.system", "!!python/object/apply:os.system",
+        "!!python/name:os.system", "!foo", "!<tag:example.com,2000:x>"]
+# A scalar, a list and a mapping under each tag, each in the right place for its key.
+SHAPES = {"given": ("1800 rpm", "[1]", "{a: 1}"), "find": ("rpm", "[1]", "{a: 1}"),
+          "expected": ("45.13 rpm", "[45.13 rpm]", "{a: 1}")}
+# Harmless: the tag says what YAML would have read anyway (text, a list, a mapping), or
+# reads as null where null is allowed (a `find` in SI units): as if written plain.
+HARMLESS = {("!!str", 0), ("!!timestamp", 0), ("!!seq", 1), ("!!map", 2)}
+
+
+def _plain(tag: str, shape: int, where: str) -> str | None:
+    """The value written without the tag, if the tag is harmless there."""
+    if (tag, shape) in HARMLESS:
+        return SHAPES[where][shape]
+    return "~" if (tag, shape, where) == ("!!null", 0, "find") else None
+
+
+def _place(where: str, value: str) -> str:
+    if where == "given":
+        return tagged_problem(spin=value)
+    if where == "find":
+        return tagged_problem(find=value)
+    return tagged_problem(expected=value)
+
+
+@pytest.mark.parametrize("where", SHAPES)
+@pytest.mark.parametrize("shape", [0, 1, 2])
+@pytest.mark.parametrize("tag", TAGS)
+def test_item23_tagged_value_is_bad_input_naming_the_key(run, write, where, shape, tag):
+    # `solve` reads given and find; `check` also reads the expected values
+    command = "check" if where == "expected" else "solve"
+    out = run(command, write(_place(where, f"{tag} {SHAPES[where][shape]}")))
+    if _plain(tag, shape, where) is not None:  # as if the tag were not there
+        plain = run(command, write(_place(where, _plain(tag, shape, where)), "plain.yaml"))
+        assert (out.exit_code, out.stdout) == (plain.exit_code, plain.stdout.replace(
+            "plain.yaml", "p.yaml")), out.output
+        return
+    key = f"{where}.{'spin' if where == 'given' else 'precession'} (line "
+    if where != "expected":
+        one_line_error(out, key)
+        return
+    assert out.exit_code == 2 and "Traceback" not in out.output, out.output
+    assert out.stderr.count("\n") == 1 and key in out.stderr, out.stderr
+
+
+@pytest.mark.parametrize("tag", TAGS)
+def test_item23_tagged_top_level_key(run, write, tag):
+    # a scalar key (the tag on the key `notes`), then a list as a key
+    out = run("solve", write(tagged_problem(top=f"{tag} notes: hi\n")))
+    if tag in ("!!str", "!!timestamp", "!!int", "!!float", "!!bool", "!!null"):
+        assert out.exit_code == 0, out.output  # a key is a name: the text written
+    else:
+        one_line_error(out, "line 12")
+    one_line_error(run("solve", write(tagged_problem(top=f"? {tag} [1]\n: hi\n"))), "line 1")
+
+
+def test_item23_python_tags_never_construct(run, write, tmp_path):
+    marker = tmp_path / "ran"
+    for tag in ("!!python/object/apply:os.system", "!!python/object/new:os.system"):
+        out = run("solve", write(tagged_problem(spin=f"{tag} ['touch {marker}']")))
+        one_line_error(out, "given.spin (line 8)", "not allowed")
+    assert not marker.exists()
+
+
+@pytest.mark.parametrize("body", ["given: {spin: !!map 1800 rpm}\nfind: {precession: rpm}\n",
+                                  "given: {spin: 1800 rpm}\nfind: {precession: !!map [1]}\n"])
+def test_item23_issue_examples_installed_command(tmp_path, body):
+    path = tmp_path / "p.yaml"
+    path.write_text("id: x\nkind: steady_precession\n" + body)
+    done = subprocess.run([sys.executable, "-m", "gyro_cli", "solve", str(path)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2, done.stderr
+    assert done.stdout == "" and done.stderr.count("\n") == 1, done.stderr
+    assert "Traceback" not in done.stderr
+    assert ("given.spin" if "!!map 1800" in body else "find.precession") in done.stderr
+
+
+_SCALARS = st.sampled_from(["1800 rpm", "rpm", "1", "2.5", "true", "", "AAAA", "2024-02-31",
+                            "0x1f", "'q'", "~", ".nan", "[1]", "{a: 1}", "[]", "{}",
+                            "[{a: 1}]", "{a: [1, {b: 2}]}"])
+_TAG = st.sampled_from(TAGS + ["!!value", "!", "!!", "!<!>", "!e!x", "!!yaml"])
+_SPOTS = st.sampled_from(["spin", "find", "expected", "top", "topkey", "id", "kind",
+                          "notes", "tolerance"])
+
+
+def _fuzzed(spot: str, tag: str, value: str) -> str:
+    tagged = f"{tag} {value}"
+    if spot == "spin":
+        return tagged_problem(spin=tagged)
+    if spot == "find":
+        return tagged_problem(find=tagged)
+    if spot == "expected":
+        return tagged_problem(expected=tagged)
+    if spot == "top":
+        return tagged_problem(top=f"notes: {tagged}\n")
+    if spot == "topkey":
+        return tagged_problem(top=f"? {tagged}\n: 1\n")
+    if spot == "tolerance":
+        return tagged_problem(expected="45.13 rpm", top=f"tolerance: {tagged}\n")
+    text = tagged_problem()
+    if spot == "notes":
+        return text + f"notes:\n  - {tagged}\n"
+    return text.replace(f"{spot}: ", f"{spot}: {tagged} #", 1)
+
+
+@settings(max_examples=150, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(spots=st.lists(st.tuples(_SPOTS, _TAG, _SCALARS), min_size=1, max_size=3))
+def test_item23_fuzz_tagged_documents_never_exit_3(run, tmp_path, spots):
+    # one to three tagged values in one document (later ones on top of the first)
+    text = _fuzzed(*spots[0])
+    for spot, tag, value in spots[1:]:
+        extra = _fuzzed(spot, tag, value)
+        text = extra if spot in ("spin", "find", "id", "kind") else text + extra[len(
+            tagged_problem()):]
+    path = tmp_path / "f.yaml"
+    path.write_text(text)
+    out = run("solve", path)
+    assert out.exit_code in (0, 1, 2), (text, out.output)
+    if out.exit_code == 2:
+        assert out.stderr.count("\n") == 1 and "Traceback" not in out.stderr, (text, out.stderr)
