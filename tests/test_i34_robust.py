@@ -156,3 +156,101 @@ def test_item23_fuzz_tagged_documents_never_exit_3(run, tmp_path, spots):
     assert out.exit_code in (0, 1, 2), (text, out.output)
     if out.exit_code == 2:
         assert out.stderr.count("\n") == 1 and "Traceback" not in out.stderr, (text, out.stderr)
+
+
+# ---- item 24: the API reads any real number in SI and refuses the rest naming the key ----
+
+P11_3 = "problems/11_3.yaml"
+
+
+def _numbers_in_si():
+    import decimal
+    import fractions
+
+    import numpy
+
+    return [numpy.int64(188), numpy.int32(188), numpy.uint16(188), numpy.float32(188.0),
+            numpy.float64(188.0), numpy.longdouble(188), numpy.array(188.0),
+            decimal.Decimal("188"), fractions.Fraction(376, 2), 188, 188.0]
+
+
+@pytest.mark.parametrize("number", _numbers_in_si(), ids=lambda n: type(n).__name__)
+def test_item24_any_real_number_is_read_in_si(number):
+    import gyro_cli
+
+    want = gyro_cli.solve(P11_3, spin="188 rad/s").answers
+    assert gyro_cli.solve(P11_3, spin=number).answers == want
+    data = {"kind": "steady_precession", "find": {"precession": "rpm"},
+            "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
+                      "cg_distance": 0.0381, "spin": number, "theta": 0.5235987755982988}}
+    assert gyro_cli.solve(data).answers["precession"].si == pytest.approx(want[
+        "precession"].si, rel=1e-9)
+
+
+def _refused():
+    import decimal
+    import fractions
+
+    import numpy
+
+    return [(10**400, "out of range"), (-10**400, "out of range"),
+            (fractions.Fraction(10**400, 3), "out of range"),
+            (decimal.Decimal("1e400"), "out of range"), (float("inf"), "out of range"),
+            (float("-inf"), "out of range"), (float("nan"), "not a number"),
+            (decimal.Decimal("NaN"), "not a number"), (decimal.Decimal("sNaN"), "not a number"),
+            (numpy.float64("nan"), "not a number"), (True, "true/false"),
+            (numpy.bool_(False), "true/false"), (1 + 2j, "real number"),
+            (numpy.array([188.0, 190.0]), "array of shape (2,)"),
+            (numpy.zeros((2, 2)), "array of shape (2, 2)"), (b"188", "given.spin"),
+            (object(), "given.spin"), ([188.0], "given.spin"), ({"a": 1}, "given.spin")]
+
+
+@pytest.mark.parametrize("value, fragment", _refused(), ids=lambda v: type(v).__name__)
+def test_item24_other_values_are_input_errors_naming_the_key(value, fragment):
+    import gyro_cli
+
+    with pytest.raises(gyro_cli.InputError) as caught:
+        gyro_cli.solve(P11_3, spin=value)
+    assert caught.value.key == "given.spin" and caught.value.file == P11_3
+    assert fragment in str(caught.value)
+    with pytest.raises(gyro_cli.InputError):  # a mapping's value is read the same way
+        gyro_cli.solve({"kind": "steady_precession", "given": {"spin": value},
+                        "find": {"precession": "rpm"}})
+
+
+def test_item24_huge_quantity_and_sweep_point_are_input_errors():
+    import gyro_cli
+
+    u = gyro_cli.registry()
+    with pytest.raises(gyro_cli.InputError, match="out of range"):
+        gyro_cli.solve(P11_3, spin=10**400 * u.rpm)
+    rows = gyro_cli.sweep(P11_3, spin=[10**400, 188.0]).records()  # the sweep goes on
+    assert "out of range" in rows[0]["error"] and rows[1]["error"] is None
+
+
+def test_item24_sweep_takes_arrays_and_iterables():
+    import numpy
+
+    import gyro_cli
+
+    want = [p["precession_slow"] for p in gyro_cli.sweep(
+        P11_3, spin=[f"{s} rad/s" for s in (150, 175, 200)]).records()]
+    for values in (numpy.arange(150, 201, 25), numpy.linspace(150, 200, 3),
+                   range(150, 201, 25), (v for v in (150, 175, 200)), (150.0, 175, 200),
+                   numpy.arange(150, 201, 25) * gyro_cli.registry().rad / gyro_cli.registry().s):
+        rows = gyro_cli.sweep(P11_3, spin=values).records()
+        assert [r["error"] for r in rows] == [None] * 3, rows
+        assert [r["precession_slow"] for r in rows] == pytest.approx(want, rel=1e-12)
+
+
+@pytest.mark.parametrize("values", [5, None, "150 rad/s", b"1", {"a": 1}, "numpy0d", "numpy2d"])
+def test_item24_sweep_refuses_what_is_not_values_naming_the_key(values):
+    import numpy
+
+    import gyro_cli
+
+    values = {"numpy0d": numpy.array(150.0), "numpy2d": numpy.ones((2, 2))}.get(
+        values, values) if isinstance(values, str) else values
+    with pytest.raises(gyro_cli.InputError) as caught:
+        gyro_cli.sweep(P11_3, spin=values)
+    assert caught.value.key == "given.spin"
