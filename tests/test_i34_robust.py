@@ -254,3 +254,55 @@ def test_item24_sweep_refuses_what_is_not_values_naming_the_key(values):
     with pytest.raises(gyro_cli.InputError) as caught:
         gyro_cli.sweep(P11_3, spin=values)
     assert caught.value.key == "given.spin"
+
+
+# ---- item 25: rendering changes no module state; threads give the serial output ----------
+
+FORMATS = ("text", "markdown", "latex", "html", "json")
+# drawn with their pictures (matplotlib, a second or two each); the rest without
+PICTURED = ("problems/11_2_released_top.yaml", "problems/bicycle_benchmark.yaml")
+
+
+def _render(result, fmt: str) -> str:
+    if fmt == "html":
+        return result.html(page=True) if result.file in PICTURED else \
+            result.html(picture=False)
+    return result.to_json() if fmt == "json" else getattr(result, fmt)()
+
+
+def test_item25_threads_render_what_one_thread_renders():
+    import glob
+    import threading
+
+    import gyro_cli
+
+    results = [gyro_cli.solve(path) for path in sorted(glob.glob("problems/*.yaml"))]
+    serial = {(i, fmt): _render(r, fmt) for i, r in enumerate(results) for fmt in FORMATS}
+    threads_n = 8
+    wrong: list[tuple] = []
+    start = threading.Barrier(threads_n)
+
+    def work(t: int) -> None:
+        start.wait()
+        # two rounds, each thread a different share of the problems and its own order of
+        # formats, so that every kind is drawn while others are
+        for i in list(range(t, len(results), threads_n)) + \
+                list(range((t + 3) % threads_n, len(results), threads_n)):
+            for fmt in FORMATS[t % 5:] + FORMATS[:t % 5]:
+                if _render(results[i], fmt) != serial[i, fmt]:
+                    wrong.append((results[i].id, fmt))
+
+    pool = [threading.Thread(target=work, args=(t,)) for t in range(threads_n)]
+    for thread in pool:
+        thread.start()
+    for thread in pool:
+        thread.join()
+    assert not wrong, sorted(set(wrong))
+
+
+def test_item25_a_picture_is_the_same_each_time_it_is_drawn():
+    import gyro_cli
+
+    for path in PICTURED:
+        result = gyro_cli.solve(path)
+        assert result.html() == result.html()
