@@ -156,6 +156,10 @@ def test_item23_fuzz_tagged_documents_never_exit_3(run, tmp_path, spots):
     assert out.exit_code in (0, 1, 2), (text, out.output)
     if out.exit_code == 2:
         assert out.stderr.count("\n") == 1 and "Traceback" not in out.stderr, (text, out.stderr)
+    checked = run("check", path)  # reads the expected values and the tolerance too
+    assert checked.exit_code in (0, 1, 2) and "internal error" not in checked.output, \
+        (text, checked.output)
+    assert checked.stderr.count("\n") <= 1 and "Traceback" not in checked.stderr
 
 
 # ---- item 24: the API reads any real number in SI and refuses the rest naming the key ----

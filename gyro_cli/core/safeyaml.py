@@ -220,7 +220,7 @@ def message(err: Any) -> str:
     what = f"{getattr(err, 'problem', None) or getattr(err, 'context', None) or err}"
     if "python/" in what or "could not determine a constructor" in what:
         tag = what.rsplit("tag ", 1)[-1].strip("'")
-        what = f"tag not allowed ({_short(tag)}); problem files are plain YAML (text, " \
+        what = f"tag not allowed ({_short(tag)}); gyro reads plain YAML only (text, " \
             "numbers, true/false, null, lists and mappings)"
     elif "expected a" in what and " node, but found " in what:
         # `spin: !!map 1800 rpm`: the tag asks for another kind of value than is written
