@@ -19,7 +19,9 @@ from __future__ import annotations
 
 import copy
 import itertools
+import math
 import os
+import sys
 from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
 
 from .core.errors import InputError
@@ -74,7 +76,10 @@ def load(source: Source, /, *, path: bool = False, **given: Any) -> "Problem":
             if stale:  # a key the statement names was removed: it no longer states this
                 data = {k: v for k, v in data.items() if k != "statement"}
     if isinstance(data, dict) and (isinstance(source, Mapping) or changed):
-        data = _plain(data, None if isinstance(source, Mapping) else changed)
+        try:
+            data = _plain(data, None if isinstance(source, Mapping) else changed)
+        except InputError as err:
+            raise err.located(file=name) from None
     return loader.build(name, data, lines)
 
 
@@ -107,22 +112,77 @@ def _is_quantity(value: Any) -> bool:
 def _quantity_text(value: Any, key: str) -> str:
     """A pint Quantity as the text a file would hold: ``1800.0 rpm``, ``0.01 kg * m ** 2``
     (read back with gyro's own registry, where Hz on a rotor is revolutions per second)."""
+    magnitude = value.magnitude
+    if getattr(magnitude, "shape", ()) != ():
+        raise InputError(f"expected one quantity, got an array of shape {magnitude.shape}",
+                         key=key)
+    number = _real(magnitude, key)
+    if number is None:
+        raise InputError(f"expected one quantity, got a {type(magnitude).__name__} "
+                         "magnitude", key=key)
+    return f"{float(number)!r} {value.units:~}".strip()
+
+
+def _real(value: Any, key: str) -> float | int | None:
+    """A real number given to the API as a Python number: an int, a float, numpy's
+    integers and floats (and a 0-d array of one), a Decimal or a Fraction; None for
+    anything else (a string, a list: the loader reads or refuses it). A boolean, a
+    complex number, an array of several values and a number beyond a double's range
+    (or inf, nan) are refused naming the key."""
+    import numbers
+
+    if isinstance(value, (str, bytes)) or value is None:
+        return None
+    shape = getattr(value, "shape", None)
+    if shape == () and hasattr(value, "item"):  # a numpy scalar or 0-d array: its number
+        value = value.item()
+    elif shape:
+        raise InputError(f"expected one number, got an array of shape {shape}; "
+                         "sweep() takes several", key=key)
+    if isinstance(value, bool):  # numpy's bool_ is a bool once item() has taken it out
+        raise InputError(f"expected a number, got {value!r} (true/false is not a number)",
+                         key=key)
+    decimal = sys.modules.get("decimal")  # never imported for this: no Decimal without it
+    if not isinstance(value, numbers.Real) and not (
+            decimal is not None and isinstance(value, decimal.Decimal)):
+        if isinstance(value, numbers.Complex):
+            raise InputError(f"expected a real number, got {value!r}", key=key)
+        return None
     try:
-        magnitude = float(value.magnitude)
-    except (TypeError, ValueError):
-        raise InputError(f"expected one quantity, got {type(value.magnitude).__name__} "
-                         "magnitudes", key=key) from None
-    return f"{magnitude!r} {value.units:~}".strip()
+        number = float(value)
+    except OverflowError:  # a huge int or Fraction
+        number = math.inf
+    except ValueError:  # a signalling NaN
+        number = math.nan
+    if not math.isfinite(number):
+        what = "not a number" if math.isnan(number) else \
+            "out of range (beyond a double's 1.8e308)"
+        raise InputError(f"{_short_number(value)} is {what}; expected a finite number",
+                         key=key)
+    return int(value) if isinstance(value, numbers.Integral) else number
 
 
-def _si_number(value: Any, dimension: str) -> Any:
+def _short_number(value: Any) -> str:
+    """A number for a message: a 400-digit one by its length."""
+    text = str(value)
+    if len(text) <= 30:
+        return text
+    return f"an integer of {len(text)} digits" if isinstance(value, int) else \
+        f"a number of {len(text)} characters ({text[:12]}...)"
+
+
+def _si_number(value: Any, dimension: str, key: str) -> Any:
     """A plain number of the API is in SI: ``0.3`` for a length is ``0.3 m``."""
     from .core import units
 
-    if isinstance(value, bool) or not isinstance(value, (int, float)) \
-            or dimension in ("word", "particles", "dimensionless"):
+    if dimension in ("word", "particles"):
         return value
-    return f"{float(value)!r} {units.si_text(dimension)}".strip()
+    number = _real(value, key)
+    if number is None:
+        return value
+    if dimension == "dimensionless":
+        return number
+    return f"{float(number)!r} {units.si_text(dimension)}".strip()
 
 
 def _plain(data: dict, only: set[str] | None = None) -> dict:
@@ -148,11 +208,11 @@ def _plain(data: dict, only: set[str] | None = None) -> dict:
                 value = _quantity_text(value, where)
             elif param is not None and param.dimension == "particles" and isinstance(value, list):
                 value = [{k: _quantity_text(v, f"{where}.{k}") if _is_quantity(v) else
-                          _si_number(v, "mass" if k == "mass" else "length")
+                          _si_number(v, "mass" if k == "mass" else "length", f"{where}.{k}")
                           for k, v in item.items()} if isinstance(item, dict) else item
                          for item in value]
             elif param is not None:
-                value = _si_number(value, param.dimension)
+                value = _si_number(value, param.dimension, where)
             out[key] = value
         data = dict(data, given=out)
     if only is not None:
@@ -546,7 +606,7 @@ def sweep(source: Source, /, *, units: str | None = None, **values: Iterable[Any
     error; the sweep goes on.
     """
     names = list(values)
-    grids = [list(values[name]) for name in names]
+    grids = [_grid(name, values[name]) for name in names]
     out = Sweep()
     for combo in itertools.product(*grids):
         given = dict(zip(names, combo))
@@ -555,6 +615,24 @@ def sweep(source: Source, /, *, units: str | None = None, **values: Iterable[Any
         except InputError as err:
             out.points.append(Point(given, error=err))
     return out
+
+
+def _grid(name: str, values: Any) -> list[Any]:
+    """The values swept for one key: a list, a tuple, a range, a generator or a 1-d
+    array (numpy's, or a pint Quantity of one); InputError naming the key otherwise."""
+    key = f"given.{name}"
+    if isinstance(values, (str, bytes, Mapping)) or values is None:
+        raise InputError(f"expected the values to sweep (a list or a 1-d array), got "
+                         f"{type(values).__name__} {values!r:.40}", key=key)
+    ndim = getattr(values, "ndim", 1)
+    if ndim != 1:
+        raise InputError(f"expected a list or a 1-d array of values to sweep, got a "
+                         f"{ndim}-d array", key=key)
+    try:
+        return list(values)
+    except TypeError:
+        raise InputError(f"expected the values to sweep (a list or a 1-d array), got "
+                         f"{type(values).__name__} {values!r:.40}", key=key) from None
 
 
 # ---- checking ----------------------------------------------------------------------

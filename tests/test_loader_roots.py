@@ -50,7 +50,8 @@ def everywhere(run, path, *fragments):
     ("k_axial: 35 mm", "k_axial: !!bool maybe", ["line 12", "as true/false"]),
     ("k_axial: 35 mm", "k_axial: !!bool yes", ["given.k_axial", "expected a quantity"]),
     ("k_axial: 35 mm", "k_axial: !!float abc", ["line 12", "as a number"]),
-    ("k_axial: 35 mm", "k_axial: !!binary '@@@'", ["given.k_axial", "got a bytes"]),
+    ("k_axial: 35 mm", "k_axial: !!binary '@@@'",
+     ["given.k_axial (line 12)", "tag not allowed (!!binary)"]),
     # huge integers: 5000 digits is past Python's int-from-text limit, 400 past a double
     ("k_axial: 35 mm", "k_axial: " + "9" * 5000, ["line 12", "as an integer"]),
     ("k_axial: 35 mm", "k_axial: " + "9" * 400, ["line 12", "400 digits is out of range"]),

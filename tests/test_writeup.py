@@ -182,9 +182,9 @@ def test_any_formula_text_gives_sound_latex():
         assert latex_problems(writeup.words(text)) == [], text
 
 
-def test_file_keys_in_prose_stay_words(monkeypatch):
+def test_file_keys_in_prose_stay_words():
     """`bearing_forces` in a note is a key of the file: words, "bearing forces"."""
     from gyro_cli.kinds import get
 
-    monkeypatch.setattr(writeup, "_KEYS", [writeup.file_keys(get("gyroscopic_torque"))])
-    assert writeup.words("bearing_forces lists A and B").startswith("bearing forces lists")
+    with writeup.keys_of(get("gyroscopic_torque")):
+        assert writeup.words("bearing_forces lists A and B").startswith("bearing forces lists")

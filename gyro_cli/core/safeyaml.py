@@ -14,7 +14,9 @@ Two guards sit in front of every problem file and answer sheet:
   then is the document built, with a loader that keeps dates as text (YAML
   1.1 turns ``2024-02-31`` into a date, or an exception) and turns a value
   PyYAML cannot construct (``!!bool maybe``, ``!!int 0x``, a 5000-digit
-  integer) into a YAML error at its line.
+  integer, ``!!map 1800 rpm``, a tag YAML does not know, ``!!python/...``, or
+  ``!!binary``, ``!!set``, ``!!omap`` and ``!!pairs``, which no file needs) into
+  a YAML error naming its key and line.
 """
 
 from __future__ import annotations
@@ -138,10 +140,17 @@ def loader_class() -> Any:
         Loader.add_constructor(full, guarded(base.yaml_constructors[full], what))
     Loader.add_constructor("tag:yaml.org,2002:timestamp",
                            lambda self, node: str(self.construct_scalar(node)))
+    for tag in REFUSED_TAGS:
+        Loader.add_constructor(f"tag:yaml.org,2002:{tag}", _refuse_tag)
 
     def construct_mapping(self: Any, node: Any, deep: bool = False) -> Any:
+        # `!!map 1800 rpm` or `!!map [1]`: PyYAML's flatten_mapping would unpack the text
+        # or the list as pairs (a ValueError, not a YAML error).
+        if not isinstance(node, yaml.MappingNode):
+            raise ConstructorError(None, None, f"expected a mapping node, but found {node.id}",
+                                   node.start_mark)
         # A key is a name (a key of the format, a student, a problem id): an unquoted
-        # `11.10:`, `011:` or `yes:` keeps the characters written, not 11.1, 9 or True.
+        # `11.10:`, `011:`, `yes:` or `~:` keeps the characters written, not 11.1, 9, True, None.
         self.flatten_mapping(node)
         for key, _ in node.value:
             if isinstance(key, yaml.ScalarNode) and key.style in (None, "") and \
@@ -194,8 +203,69 @@ def loader_class() -> Any:
 
 _RESOLVED_MAX = 4096
 
+# Tags YAML 1.1 allows that make a Python type no problem file or sheet has (bytes, a set,
+# a list of pairs): refused at their line, like a tag YAML does not know.
+REFUSED_TAGS = ("binary", "set", "omap", "pairs")
+
+
+def _refuse_tag(self: Any, node: Any) -> Any:
+    from yaml.constructor import ConstructorError
+
+    raise ConstructorError(None, None, f"could not determine a constructor for the tag "
+                           f"{node.tag!r}", node.start_mark)
+
+
+def message(err: Any) -> str:
+    """The text of a YAML error for a one-line message (without where it is)."""
+    what = f"{getattr(err, 'problem', None) or getattr(err, 'context', None) or err}"
+    if "python/" in what or "could not determine a constructor" in what:
+        tag = what.rsplit("tag ", 1)[-1].strip("'")
+        what = f"tag not allowed ({_short(tag)}); gyro reads plain YAML only (text, " \
+            "numbers, true/false, null, lists and mappings)"
+    elif "expected a" in what and " node, but found " in what:
+        # `spin: !!map 1800 rpm`: the tag asks for another kind of value than is written
+        wanted, found = what.removeprefix("expected a").split(" node, but found ")
+        what = f"a{wanted} was tagged but a {found} is written; drop the tag"
+    elif what == "found unhashable key":
+        what = "a key is a list or a mapping; a key is a name"
+    return f"YAML error: {what}"
+
+
+def _short(tag: str) -> str:
+    """``tag:yaml.org,2002:binary`` as it is written, ``!!binary``."""
+    prefix = "tag:yaml.org,2002:"
+    return "!!" + tag.removeprefix(prefix) if tag.startswith(prefix) else tag
+
+
+def key_at(root: Any, mark: Any) -> str | None:
+    """The key path (``given.spin``, ``notes[2]``) of the value or key that starts at
+    ``mark`` in the composed document ``root``; None if none does."""
+    import yaml
+
+    if root is None or mark is None:
+        return None
+    where = (mark.line, mark.column)
+    seen: set[int] = set()
+    todo: list[tuple[Any, str]] = [(root, "")]
+    while todo:
+        node, path = todo.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        if path and (node.start_mark.line, node.start_mark.column) == where:
+            return path
+        if isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                name = str(key.value) if isinstance(key, yaml.ScalarNode) else "?"
+                if (key.start_mark.line, key.start_mark.column) == where:  # the key itself
+                    return path or None if name == "?" else f"{path}.{name}" if path else name
+                todo.append((value, f"{path}.{name}" if path else name))
+        elif isinstance(node, yaml.SequenceNode):
+            todo += ((item, f"{path}[{i}]") for i, item in enumerate(node.value))
+    return None
+
 # Plain scalars YAML 1.1 turns into something else than text; as a key, text is meant.
-_NAME_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("int", "float", "bool", "timestamp")}
+_NAME_TAGS = {f"tag:yaml.org,2002:{t}" for t in ("int", "float", "bool", "timestamp", "null")}
 
 
 def prescan(text: str) -> None:
@@ -322,7 +392,8 @@ def load(text: str) -> tuple[Any, Any]:
     composed first, by a libyaml that bounds nesting itself, and its nodes counted
     (half the work of walking the parser's events, for the same refusals); any other
     goes through ``prescan``. Raises yaml.YAMLError for malformed YAML and InputError
-    (with a line) for input refused by the limits.
+    (with a line) for input refused by the limits, or (with its key) for a value that
+    cannot be built.
     """
     global _COMPOSE_FIRST
     if _COMPOSE_FIRST is None:
@@ -343,7 +414,7 @@ def load(text: str) -> tuple[Any, Any]:
             if compose_first:
                 _check_tree(node)
             written = _mapping_values(node)
-            data = loader.construct_document(node) if node is not None else None
+            data = _construct(loader, node)
         else:
             written = ()
         # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
@@ -354,6 +425,21 @@ def load(text: str) -> tuple[Any, Any]:
     finally:
         loader.dispose()
     return data, node
+
+
+def _construct(loader: Any, node: Any) -> Any:
+    """PyYAML's build of a composed document; a value it cannot build (a tag it does not
+    know or that does not fit the value) is an InputError naming the key and line."""
+    import yaml
+
+    if node is None:
+        return None
+    try:
+        return loader.construct_document(node)
+    except yaml.MarkedYAMLError as err:
+        mark = err.problem_mark or err.context_mark
+        raise InputError(message(err), key=key_at(node, mark),
+                         line=mark.line + 1 if mark else None) from None
 
 
 _UNUSUAL = object()  # _plain_data's answer for a document it leaves to PyYAML

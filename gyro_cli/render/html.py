@@ -29,7 +29,7 @@ from .mathprint import text as plain_text
 from .mathml import MathMLPrinter, math_element
 from .mathtree import BinOp, Node, Num, Quantity, Rel
 from .exprnodes import prose_nodes, symbol_node
-from .writeup import _KEYS, _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, file_keys, width
+from .writeup import _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, keys_of, width
 
 def escape(text: str, quote: bool = True) -> str:
     """A string from a file in HTML (the one place they meet it): markup escaped, and a
@@ -386,11 +386,8 @@ def worked_answer(result: Result, level: int = 2, picture: bool = True,
     figure of the motion (render.animate.html_fragment) placed after the picture. Needs no
     stylesheet to read; `STYLE` lays it out (rows, tables, dark mode).
     """
-    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
-    try:
+    with keys_of(result.problem.kind):
         return _worked_answer(result, level, picture, ident or anchor(result), animation)
-    finally:
-        _KEYS[0] = saved
 
 
 def _worked_answer(result: Result, level: int, picture: bool, ident: str,

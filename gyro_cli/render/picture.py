@@ -48,16 +48,25 @@ def picture(result, prefix: str = "fig") -> Picture | None:
     return Picture(inline_svg(buffer.getvalue().decode("utf-8"), alt, prefix), alt)
 
 
+# matplotlib names a marker or a clip path by a hash salted at random on each savefig
+# (m0123456789, p0123456789): a page drawn twice would differ
+_SALTED = re.compile(r"[mp][0-9a-f]{10}$")
+
+
 def inline_svg(svg: str, alt: str, prefix: str) -> str:
     """matplotlib's SVG document as an element to inline: no XML prologue, ids made unique
     with ``prefix``, sized by CSS, and announced as one image with ``alt`` as its title."""
     svg = svg[svg.index("<svg"):]
     first: dict[str, str] = {}
     seen: set[str] = set()
+    counts: dict[str, int] = {}
 
     def unique(m: re.Match) -> str:
-        name = m.group(2)
-        new = f"{prefix}-" + re.sub(r"[^A-Za-z0-9_-]+", "-", name)
+        name = shown = m.group(2)
+        if _SALTED.match(name):  # numbered in order: the same figure, the same page
+            counts[name[0]] = counts.get(name[0], 0) + 1
+            shown = f"{name[0]}{counts[name[0]]}"
+        new = f"{prefix}-" + re.sub(r"[^A-Za-z0-9_-]+", "-", shown)
         while new in seen:  # matplotlib repeats a gid given to two lines
             new += "-"
         seen.add(new)

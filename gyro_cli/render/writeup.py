@@ -18,6 +18,9 @@ Nothing here is imported by ``gyro solve`` in text or JSON.
 from __future__ import annotations
 
 import re
+from contextlib import contextmanager
+from contextvars import ContextVar
+from typing import Iterator
 
 from ..core.errors import terminal_text
 from ..core.work import num
@@ -51,8 +54,20 @@ def symbol_latex(text: str, tree=None) -> str:
 # ---- the file's keys in prose -------------------------------------------------
 
 #: keys of the problem being written that hold an underscore and are not symbols of its
-#: kind (psi_rate, bearing_forces, engine_sense): in prose they are words, "psi rate"
-_KEYS: list[re.Pattern | None] = [None]
+#: kind (psi_rate, bearing_forces, engine_sense): in prose they are words, "psi rate".
+#: A context variable, set by `keys_of`: a render in another thread (or task) sees its
+#: own problem's keys, never this one's, and no module state changes.
+_KEYS: ContextVar[re.Pattern | None] = ContextVar("gyro_file_keys", default=None)
+
+
+@contextmanager
+def keys_of(kind) -> Iterator[None]:
+    """Within it, the keys of ``kind`` that are words come out as words in prose."""
+    token = _KEYS.set(file_keys(kind))
+    try:
+        yield
+    finally:
+        _KEYS.reset(token)
 
 
 def file_keys(kind) -> re.Pattern | None:
@@ -72,7 +87,7 @@ def file_keys(kind) -> re.Pattern | None:
 
 def _split_keys(text: str) -> list[tuple[bool, str]]:
     """``text`` as (is_key, piece): a key comes out as words, ``psi rate``."""
-    pattern = _KEYS[0]
+    pattern = _KEYS.get()
     if pattern is None or not pattern.search(text):
         return [(False, text)]
     out, pos = [], 0
@@ -442,11 +457,8 @@ def _si(g) -> str:
 
 def markdown(result: Result) -> str:
     """The worked answer as Markdown with $-delimited LaTeX maths."""
-    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
-    try:
+    with keys_of(result.problem.kind):
         return _markdown(result)
-    finally:
-        _KEYS[0] = saved
 
 
 def _markdown(result: Result) -> str:
@@ -492,11 +504,8 @@ def _squeeze(text: str) -> str:
 
 def latex(result: Result, level: str = "subsection*") -> str:
     """The worked answer as a LaTeX fragment (needs amsmath) to paste into a solution sheet."""
-    saved, _KEYS[0] = _KEYS[0], file_keys(result.problem.kind)
-    try:
+    with keys_of(result.problem.kind):
         return _latex(result, level)
-    finally:
-        _KEYS[0] = saved
 
 
 def _latex(result: Result, level: str) -> str:

@@ -99,10 +99,7 @@ def parse_yaml(text: str, path: str, limit: int = MAX_FILE_BYTES) -> tuple[Any, 
         raise err.located(file=path) from None
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
-        what = f"{err.problem or err.context}"
-        if "python/" in str(err) or "could not determine a constructor" in str(err):
-            what = f"tag not allowed ({what}); problem files are plain YAML"
-        raise InputError(f"YAML error: {what}", file=path,
+        raise InputError(safeyaml.message(err), file=path,
                          line=mark.line + 1 if mark else None) from None
     except yaml.YAMLError as err:
         raise InputError(f"YAML error: {err}", file=path) from None
