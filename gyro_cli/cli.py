@@ -86,6 +86,21 @@ class _Guarded(click.Group):
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
 
+    # Commands whose module is imported only when they run or are listed: `gyro solve`
+    # does not pay for their options.
+    LAZY = {"export": ("gyro_cli.commands.export", "export")}
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted(set(super().list_commands(ctx)) | set(self.LAZY))
+
+    def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
+        if name in self.LAZY and name not in self.commands:
+            from importlib import import_module
+
+            module, attribute = self.LAZY[name]
+            self.add_command(getattr(import_module(module), attribute), name)
+        return super().get_command(ctx, name)
+
     def make_context(self, *args, **kwargs):  # type: ignore[no-untyped-def]
         # `gyro --help` and `gyro --version` print while the arguments are parsed, before
         # invoke: a reader that left ends them as it ends every command (click's own
@@ -638,10 +653,6 @@ def kinds() -> None:
                "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
                "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
                "Nm, kN m (docs/real_problems.md)")
-
-
-from .commands.export import export as _export  # noqa: E402 - gyro export (docs/course.md)
-main.add_command(_export)
 
 
 if __name__ == "__main__":

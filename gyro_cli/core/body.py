@@ -8,7 +8,7 @@ formula used is written into the worked answer.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from .record import record
 from typing import Callable
 
 from .errors import InputError
@@ -64,7 +64,7 @@ BODY_PARAMS: tuple[Param, ...] = (
           nonnegative=True),
 )
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Shape:
     """A uniform body of revolution (or square section) about its symmetry axis.
 
@@ -153,7 +153,7 @@ def _outer(values: dict) -> float:
     return values["radius"] if "radius" in values else values["diameter"] / 2
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Body:
     """A symmetric body, SI. Absent inertias are None; ``require`` names what is missing."""
 

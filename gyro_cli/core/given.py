@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from .record import field, record
 from typing import TYPE_CHECKING
 
 from .errors import InputError
@@ -11,7 +11,7 @@ if TYPE_CHECKING:
     from .body import Body
 
 
-@dataclass
+@record
 class Given:
     """SI values by key, plus the body where the kind has one.
 

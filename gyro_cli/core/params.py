@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import math
 import operator
-from dataclasses import dataclass
+from .record import record
 
 BOUNDS = ("[]", "[)", "(]", "()")
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Param:
     """A key of `given`: its dimension (a name in units.DIMENSIONS), symbol and meaning,
     and the values it may take.
@@ -111,7 +111,7 @@ _FLIP = {"(": "<", "[": "<="}  # a range's lower end, read left to right
 _OPS_OF = {")": "<", "]": "<="}
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class AnswerSpec:
     """An answer a kind can give; dimension None for a word (``motion``)."""
 

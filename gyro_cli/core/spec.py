@@ -6,7 +6,7 @@ line in the registry ``gyro_cli/kinds/__init__.py``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from .record import field, record
 from typing import TYPE_CHECKING, Callable
 
 from .params import AnswerSpec, Param
@@ -18,7 +18,7 @@ if TYPE_CHECKING:
 __all__ = ["AnswerSpec", "Kind", "Param"]
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Kind:
     """A problem kind: the keys it reads, the answers it gives, its solver.
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from .record import record
 from typing import Any
 
 from . import unit_cache
@@ -498,7 +498,7 @@ def display(unit: str, dimension: str, key: str = "") -> str:
     return shown
 
 
-@dataclass(frozen=True)
+@record(frozen=True)
 class Parsed:
     """A quantity as written: its number, its unit as gyro prints it, and whether
     that unit is US customary (for the default g)."""

@@ -6,7 +6,7 @@ Values are SI floats; text is formatted to 4 significant figures here, once.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from .record import field, record
 
 from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
 from .prose import Prose, text as prose_text
@@ -27,7 +27,7 @@ def vec(components, unit: str) -> str:
     return "(" + ", ".join(num(c) if c else "0" for c in components) + f") {unit}".rstrip()
 
 
-@dataclass
+@record
 class Step:
     """One line: ``symbol = formula = substitution = value unit  (ref)``.
 
@@ -116,7 +116,7 @@ def _step_init(self, symbol: str = "", formula: str = "", substitution: str = ""
 Step.__init__ = _step_init  # type: ignore[method-assign]
 
 
-@dataclass
+@record
 class Section:
     title: str
     steps: list[Step] = field(default_factory=list)
@@ -126,7 +126,7 @@ class Section:
 Section.title = _printed("title", lambda s: s.prose.text)  # type: ignore[method-assign, assignment]
 
 
-@dataclass
+@record
 class Answer:
     """An answer in SI: a list of floats (roots ascending) or of words."""
 
@@ -142,7 +142,7 @@ class Answer:
         return si_text(self.dimension) if self.dimension else None
 
 
-@dataclass
+@record
 class GivenLine:
     """A given datum as written and in SI, for the report's first table."""
 
@@ -157,7 +157,7 @@ class GivenLine:
     shown: tuple[str, str] | None = None  # the quantity as read: its number and its unit
 
 
-@dataclass
+@record
 class Solution:
     given: list[GivenLine]
     sections: list[Section]

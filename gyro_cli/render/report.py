@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 from typing import Any
 
 from ..solving.solve import Result
@@ -107,4 +106,6 @@ def equation(step: Step) -> dict[str, Any]:
 
 
 def as_json(result: Result) -> str:
+    import json  # only for --format json
+
     return json.dumps(as_dict(result), allow_nan=False)

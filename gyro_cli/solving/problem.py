@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from ..core.record import field, record
 from typing import Any
 
 from .. import kinds
@@ -27,7 +27,7 @@ _TOP_KEY_SET = frozenset(TOP_KEYS)
 MAX_FILE_BYTES = 1_000_000
 
 
-@dataclass
+@record
 class Problem:
     """One problem file, checked and parsed (given data in SI)."""
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from ..core.record import record
 
 from ..core import units
 from ..core.body import build_body
@@ -14,7 +14,7 @@ from .problem import Problem, load, params_by_name
 from ..core.work import GivenLine, Solution, Work, num
 
 
-@dataclass
+@record
 class Reported:
     """An answer as asked for: values in ``unit`` (None for words)."""
 
@@ -28,7 +28,7 @@ class Reported:
     symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
 
 
-@dataclass
+@record
 class Result:
     problem: Problem
     solution: Solution
