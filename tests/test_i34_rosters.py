@@ -234,11 +234,13 @@ def test_item15_yaml_sheet_keys_keep_their_text(run, tmp_path):
                      "--format", "json")
         assert result.exit_code == 0, result.output
         assert list(json.loads(result.stdout)["scores"]) == [key]
-    # two keys YAML reads as one null, or an empty id: refused naming the line
+    # `null` and `~` keep their text as keys (the loader never reads a key as null): two
+    # students, each graded on their own row; an empty id is refused naming the line
     result = run("check", "--answers", put(tmp_path, "c.yaml", "null:\n  11/3:\n"
                                            "    min_spin: 1 rpm\n~:\n  11/3:\n"
-                                           "    min_spin: 2 rpm\n"), TOP)
-    _one_line(result, "c.yaml", "4")
+                                           "    min_spin: 2 rpm\n"), TOP, "--format", "json")
+    assert result.exit_code == 0, result.output
+    assert list(json.loads(result.stdout)["scores"]) == ["null", "~"]
     result = run("check", "--answers", put(tmp_path, "d.yaml", "ann:\n  11/3:\n"
                                            "    min_spin: 1 rpm\n'':\n  11/3:\n"
                                            "    min_spin: 1 rpm\n"), TOP)
