@@ -30,16 +30,20 @@ NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "gyro_cli/question-bank")
 
 @dataclass(frozen=True)
 class Blank:
-    """One number the student types: the solver's value and how far from it is right."""
+    """One number the student types: the solver's value and how far from it is right
+    (the problem's tolerance, widened to the student tolerance where the problem's is
+    tighter than ``digits`` significant figures can meet; commands/export.py)."""
 
     key: str          # unique in its question: precession_slow, min_spin
     label: str        # what is asked, in words: "precession (slow root)"
     value: float      # the solver's answer, in ``unit``
     unit: str         # as the file asks for it ("rpm"); "" for a pure number
-    half_width: float  # |typed - value| allowed, in ``unit`` (from the problem's tolerance)
-    tolerance: str    # the tolerance as written ("1%", "3 sig", "0.01 rad/s")
-    form: str         # "relative", "sig" or "absolute"
+    half_width: float  # |typed - value| allowed, in ``unit``
+    tolerance: str    # the problem's tolerance as written ("1%", "3 sig", "0.01 rad/s")
+    form: str         # the tolerance used: "relative", "sig" or "absolute"
     fraction: float   # relative: the fraction (0.01); sig: the digits; absolute: half_width
+    accepts: str = ""  # what is accepted, in words: "within 1%"
+    digits: int = 4    # significant figures the question asks for
 
 
 @dataclass
@@ -146,6 +150,28 @@ def _join(items: list[str]) -> str:
     if len(items) <= 1:
         return "".join(items)
     return ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def precision_text(blanks: list[Blank]) -> str:
+    """What the question asks and accepts, as a sentence: ``Give 4 significant figures;
+    answers within 1% are accepted.`` (each blank's own where they differ)."""
+    if not blanks:
+        return ""
+    digits = blanks[0].digits
+    accepted = list(dict.fromkeys(b.accepts for b in blanks if b.accepts))
+    head = f"Give {digits} significant figures"
+    if not accepted:
+        return head + "."
+    if len(accepted) == 1:
+        return f"{head}; answers {accepted[0]} are accepted."
+    each = "; ".join(f"{b.label} {b.accepts}" for b in blanks)
+    return f"{head}; accepted: {each}."
+
+
+def precision_html(blanks: list[Blank]) -> str:
+    """`precision_text` as a paragraph ("" for no blank)."""
+    text = precision_text(blanks)
+    return f'<p class="gyro-precision">{html_text(text)}</p>' if text else ""
 
 
 def blank_prompt(blank: Blank) -> str:

@@ -69,8 +69,19 @@ def _question(bank: ProblemBank, variant: Variant) -> str:
     return _cloze(bank, variant)
 
 
+def unit_spellings(unit: str) -> list[str]:
+    """The unit names a numerical question lists for ``unit`` (multiplier 1 each): Moodle
+    deletes every space of a response before it reads the unit, so ``12 kN m`` arrives as
+    ``12kNm``: the unit without its spaces first (the default unit), then with ``*`` and
+    ``·`` between its factors."""
+    parts = unit.split()
+    return list(dict.fromkeys(["".join(parts), "*".join(parts), "\u00b7".join(parts)]))
+
+
 def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
-    text = variant.statement_html + f"<p>{html_text(blank_prompt(blank))}:</p>"
+    prompt = blank_prompt(blank) + (f" (type the number and its unit: {_example(blank)})"
+                                    if blank.unit else "")
+    text = variant.statement_html + f"<p>{html_text(prompt)}:</p>"
     lines = ['  <question type="numerical">', *_common(bank, variant, text),
              "    <defaultgrade>1</defaultgrade>",
              "    <penalty>0.3333333</penalty>",
@@ -81,18 +92,27 @@ def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
              '      <feedback format="html"><text></text></feedback>',
              "    </answer>"]
     if blank.unit:
-        # units optional (unitgradingtype 0, showunits 0): a unit typed must be this one
-        lines += ["    <units>", "      <unit>", "        <multiplier>1</multiplier>",
-                  f"        <unit_name>{xml_text(blank.unit)}</unit_name>",
-                  "      </unit>", "    </units>",
-                  "    <unitgradingtype>0</unitgradingtype>",
-                  "    <unitpenalty>0.1</unitpenalty>",
+        # The unit typed after the number (showunits 0) must be one listed: Moodle cannot
+        # tell a missing unit from a wrong one, and with unitgradingtype 0 it takes either
+        # at full marks; graded (1) with a penalty of the whole mark, the number counts
+        # only with the unit asked.
+        units = "".join("      <unit>\n        <multiplier>1</multiplier>\n"
+                        f"        <unit_name>{xml_text(name)}</unit_name>\n      </unit>\n"
+                        for name in unit_spellings(blank.unit))
+        lines += ["    <units>\n" + units + "    </units>",
+                  "    <unitgradingtype>1</unitgradingtype>",
+                  "    <unitpenalty>1</unitpenalty>",
                   "    <showunits>0</showunits>",
                   "    <unitsleft>0</unitsleft>"]
     else:
         lines.append("    <showunits>3</showunits>")
     lines.append("  </question>")
     return "\n".join(lines)
+
+
+def _example(blank: Blank) -> str:
+    """How an answer is typed, with a made-up number: ``1.234 kN m``."""
+    return f"{'1.234567'[:blank.digits + 1]} {blank.unit}"
 
 
 def cloze_blank(blank: Blank) -> str:

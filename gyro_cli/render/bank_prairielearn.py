@@ -5,8 +5,8 @@
 type, title, topic) and tags; the UUID is derived from the problem id, so a
 second export of the same problem updates the question instead of adding one.
 ``question.html`` shows the statement, one ``pl-number-input`` per number asked
-(its ``answers-name``, the tolerance as ``rtol``/``atol`` or as significant
-``digits``, a ``label`` and the unit as ``suffix``) and the worked answer in the
+(its ``answers-name``, the variant's half-width as ``atol`` (a param), a
+``label`` and the unit as ``suffix``) and the worked answer in the
 answer panel. ``server.py`` holds the variants computed at export (the solver's
 answers, so PrairieLearn needs no gyro) and its ``generate(data)`` picks one from
 ``data["variant_seed"]``, setting ``data["params"]`` and
@@ -45,12 +45,9 @@ def _blanks(bank: ProblemBank) -> list[Blank]:
 
 
 def _input(blank: Blank) -> str:
-    if blank.form == "sig":
-        tolerance = f'comparison="sigfig" digits="{int(blank.fraction)}"'
-    elif blank.form == "relative":
-        tolerance = f'comparison="relabs" rtol="{number_text(blank.fraction)}" atol="0"'
-    else:
-        tolerance = f'comparison="relabs" rtol="0" atol="{number_text(blank.half_width)}"'
+    # The half-width is each variant's own (a relative tolerance widened to what rounding
+    # to the figures asked can cost differs from variant to variant): a param.
+    tolerance = f'comparison="relabs" rtol="0" atol="{{{{params.atol.{blank.key}}}}}"'
     suffix = f' suffix="{_attr(blank.unit)}"' if blank.unit else ""
     return (f"{{{{#params.ask.{blank.key}}}}}\n"
             f'<pl-number-input answers-name="{blank.key}" {tolerance} '
@@ -88,6 +85,7 @@ def generate(data):
     data["params"]["statement"] = variant["statement"]
     data["params"]["feedback"] = variant["feedback"]
     data["params"]["ask"] = {{key: True for key in variant["answers"]}}
+    data["params"]["atol"] = variant["atol"]
     for key, value in variant["answers"].items():
         data["correct_answers"][key] = value
 '''
@@ -97,7 +95,8 @@ def server_py(bank: ProblemBank) -> str:
     """The question's server.py, with every variant's statement, feedback and answers."""
     variants = [{"variant": v.number, "id": v.ident, "given": v.given,
                  "statement": v.statement_html, "feedback": v.feedback_html,
-                 "answers": {b.key: b.value for b in v.blanks}}
+                 "answers": {b.key: b.value for b in v.blanks},
+                 "atol": {b.key: number_text(b.half_width) for b in v.blanks}}
                 for v in bank.variants]
     doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
     doc = doc.replace("\\", "/").replace('"', "'")
