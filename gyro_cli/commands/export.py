@@ -5,9 +5,12 @@ For each problem file: the problem as written, or with ``--variants N`` the N
 variants that ``gyro vary FILE --count N --seed S`` writes (the same values, drawn
 by the same code). Each is solved as ``gyro solve`` solves it (in US units when
 the file says ``units: us``) and becomes a `render.bank.Variant`: the question
-text, the worked answer as HTML, and one blank per number in the answers the file
-asks for (``find`` and ``expected``), with the problem's tolerance around the
-solver's value. Word answers (``motion: cusps``) are not asked. The renderers in
+text, the worked answer as HTML, and one blank per number in the answers asked
+(``--ask``, else the file's ``ask``, else ``find`` and ``expected``), each with
+its own key. A blank accepts the problem's tolerance around the solver's value,
+unless that is tighter than the value printed to 4 significant figures (what
+the question asks for): then the student tolerance (``--tolerance``). Word
+answers (``motion: cusps``) are not asked. The renderers in
 ``render/bank_*.py`` write the files; nothing here or there computes an answer
 of its own.
 
