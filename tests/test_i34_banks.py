@@ -36,7 +36,7 @@ CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
 #: less than it finds (the released top, the bicycle at 12 sig), one number in kN m
 #: (ship_steering_3500kg asks couple and precession), and a plain one-number problem
 FILES = ["11_3.yaml", "11_2_released_top.yaml", "bicycle_benchmark.yaml",
-         "aircraft_360_kmph.yaml", "11_1.yaml"]
+         "aircraft_360_kmph.yaml", "11_1.yaml", "ship_steering_3500kg.yaml"]
 DIGITS = 4
 
 #: a problem whose answers collide on the old keys: the slow root of `precession` and the
@@ -91,12 +91,17 @@ def _pl_generate(server: Path, seed: int) -> dict:
 def _pl_page(template: str, params: dict) -> str:
     """question.html rendered as PrairieLearn's mustache does for these tags."""
     def section(match: re.Match) -> str:
-        return match.group(2) if params["ask"].get(match.group(1)) else ""
-    out = re.sub(r"\{\{#params\.ask\.(\w+)\}\}(.*?)\{\{/params\.ask\.\1\}\}", section,
+        return match.group(3) if params[match.group(1)].get(match.group(2)) else ""
+
+    def lookup(match: re.Match) -> str:
+        value = params
+        for name in match.group(1).split("."):
+            value = value[name]
+        return html.escape(str(value))
+    out = re.sub(r"\{\{#params\.(\w+)\.(\w+)\}\}(.*?)\{\{/params\.\1\.\2\}\}", section,
                  template, flags=re.S)
     out = re.sub(r"\{\{\{params\.(\w+)\}\}\}", lambda m: params[m.group(1)], out)
-    return re.sub(r"\{\{params\.(\w+)\.(\w+)\}\}",
-                  lambda m: html.escape(str(params[m.group(1)][m.group(2)])), out)
+    return re.sub(r"\{\{params\.([\w.]+)\}\}", lookup, out)
 
 
 def _pl_inputs(page: str) -> list[dict[str, str]]:
@@ -143,6 +148,8 @@ def _qti_items(path: Path):
 def _qti_blanks(path: Path) -> list[tuple[str, float, float, str]]:
     out = []
     for item in _qti_items(path):
+        if item.find(f".//{QTI}response_lid") is not None:
+            continue  # a word answer's multiple choice
         value = float(item.find(f".//{QTI}varequal").text)
         low = float(item.find(f".//{QTI}vargte").text)
         high = float(item.find(f".//{QTI}varlte").text)
@@ -334,6 +341,59 @@ def test_item21_ask_option_and_the_ask_key(write, tmp_path):
     assert schema["properties"]["ask"]["type"] == "array"
 
 
+# ---- item 22: word answers as multiple choice ---------------------------------------------
+
+def _words(stem: str) -> tuple[tuple[str, ...], str]:
+    """The kind's words for the file's word answer, and the solver's word."""
+    from gyro_cli import kinds
+
+    data = yaml.safe_load((PROBLEMS / f"{stem}.yaml").read_text())
+    name = "motion" if "motion" in data["find"] else "effect"
+    (word,) = gyro_cli.solve(data).answers[name].values
+    return kinds.get(data["kind"]).answer(name).words, word
+
+
+def test_item22_word_answers_are_multiple_choice_in_every_format(banks, tmp_path):
+    cases = {"11_2_released_top": "motion", "ship_steering_3500kg": "effect"}
+    for stem, name in cases.items():
+        words, word = _words(stem)
+        assert len(words) >= 2 and word in words
+        # Moodle: a cloze drop-down, the solver's word the one right answer
+        root = ET.parse(banks["moodle"]).getroot()
+        texts = [q.findtext("questiontext/text") for q in root.findall("question")]
+        menus = [m for t in texts for m in re.findall(r"\{1:MULTICHOICE:([^}]*)\}", t or "")]
+        assert "~".join(("=" if w == word else "") + w for w in words) in menus, stem
+        # QTI: a multiple-choice item whose right ident is the label of the word
+        ident = str(yaml.safe_load((PROBLEMS / f"{stem}.yaml").read_text())["id"])
+        items = [i for i in _qti_items(banks["qti"]) if i.find(f".//{QTI}response_lid")
+                 is not None and i.get("title").startswith(ident)]
+        assert items, stem
+        for item in items:
+            labels = {lab.get("ident"): lab.findtext(f".//{QTI}mattext")
+                      for lab in item.iter(f"{QTI}response_label")}
+            right = item.find(f".//{QTI}varequal").text
+            assert item.get("title").endswith(f": {name}")
+            if stem == "11_2_released_top" or "variant 1" in item.get("title"):
+                assert tuple(labels.values()) == words and labels[right] == word
+        # PrairieLearn: pl-multiple-choice, exactly the solver's word marked correct
+        question = banks["prairielearn"] / stem
+        data = _pl_generate(question / "server.py", 0)
+        page = _pl_page((question / "question.html").read_text(), data["params"])
+        block = re.search(rf'<pl-multiple-choice answers-name="{name}">(.*?)'
+                          r"</pl-multiple-choice>", page, re.S).group(1)
+        answers = re.findall(r'<pl-answer correct="(\w+)">([^<]*)</pl-answer>', block)
+        assert tuple(w for _, w in answers) == words
+        assert [w for c, w in answers if c == "true"] == [word]
+    # a word answer asked alone is a Moodle multichoice question
+    done = _run("export", "--to", "moodle", PROBLEMS / "11_2_released_top.yaml", "--ask",
+                "motion", "-o", tmp_path / "w.xml")
+    assert done.exit_code == 0, done.output
+    (question,) = ET.parse(tmp_path / "w.xml").getroot().findall("question[@type='multichoice']")
+    right = [a.findtext("text") for a in question.findall("answer") if a.get("fraction") == "100"]
+    assert right == ["cusps"] and question.findtext("single") == "true"
+    assert len(question.findall("answer")) == len(_words("11_2_released_top")[0])
+
+
 # ---- the platforms' schemas --------------------------------------------------------------
 
 class _LocalXml(etree.Resolver):
@@ -420,9 +480,14 @@ def test_moodle_xml_parses_and_its_cloze_is_what_moodle_reads(banks):
         found = _SUBQUESTION.findall(text)
         assert len(found) >= 2 and text.count("{") == len(found)  # nothing else looks like one
         for weight, kind, body in found:
-            assert kind == "NUMERICAL" and weight == "1"
-            (alternative,) = body.split("~")
-            assert alternative.startswith("=")
-            assert _NUMERICAL_ALTERNATIVE.match(alternative[1:]), alternative
+            assert kind in ("NUMERICAL", "MULTICHOICE") and weight == "1"
+            alternatives = re.split(r"(?<!\\)~", body)
+            assert sum(a.startswith("=") for a in alternatives) == 1, body
+            if kind == "NUMERICAL":
+                (alternative,) = alternatives
+                assert _NUMERICAL_ALTERNATIVE.match(alternative[1:]), alternative
+            else:  # no unescaped } # / " in an answer
+                assert len(alternatives) >= 2 and not any(
+                    re.search(r'(?<!\\)[}#/"]', a) for a in alternatives), body
     for question in root.findall("question[@type='numerical']"):
         assert float(question.findtext("answer/tolerance")) > 0

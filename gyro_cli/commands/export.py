@@ -30,7 +30,7 @@ from ..core.errors import InputError
 
 if TYPE_CHECKING:
     from ..checking.tolerance import Tolerance
-    from ..render.bank import Blank, ProblemBank, Variant
+    from ..render.bank import Blank, Choice, ProblemBank, Variant
     from ..solving.problem import Problem
 
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
@@ -113,7 +113,7 @@ def rounding(value: float, digits: int) -> float:
 
 
 def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Tolerance",
-            tight: list[str]) -> list["Blank"]:
+            tight: list[str], used: set[str]) -> list["Blank"]:
     """One blank per numeric value of the answers asked. Each accepts the value as the
     worked answer prints it (core.expr.SIG significant figures): where the problem's tolerance
     is tighter than that, the student tolerance (``student``) is used and the answer's name
@@ -124,7 +124,6 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
 
     names = [a.name for a in problem.kind.answers]
     out: list[Blank] = []
-    used: set[str] = set()
     for name, answer in solved.answers.items():
         spec = problem.kind.answer(name)
         if spec is None or spec.dimension is None or name not in asked:
@@ -155,6 +154,29 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
             out.append(Blank(key, text, float(value), unit, half, tol.text, used_tol.form,
                              fraction, accepts=accepts(used_tol, half, unit),
                              digits=digits))
+    return out
+
+
+def _choices(problem: "Problem", solved: Any, asked: list[str], used: set[str]
+             ) -> list["Choice"]:
+    """One multiple-choice question per word of the word answers asked whose kind names
+    their possible words (AnswerSpec.words): those words, the solver's among them."""
+    from ..render.bank import Choice
+
+    out = []
+    for name, answer in solved.answers.items():
+        spec = problem.kind.answer(name)
+        if spec is None or not spec.words or name not in asked:
+            continue
+        words = [v for v in answer.values if isinstance(v, str)]
+        for i, word in enumerate(words):
+            label = answer.labels[i] if i < len(answer.labels) and answer.labels[i] else ""
+            key = _key(name, label, i, len(words) > 1, set(asked), used)
+            text = name.replace("_", " ") + (f" ({label})" if label else
+                                             f" ({i + 1})" if len(words) > 1 else "")
+            shown = word.replace("_", " ")
+            choices = tuple(dict.fromkeys([*spec.words, shown]))
+            out.append(Choice(key, text, choices, shown))
     return out
 
 
@@ -209,19 +231,23 @@ def variant_of(problem: "Problem", number: int, title: str,
         from ..render.us_units import to_us
 
         solved = to_us(solved)
-    blanks = _blanks(problem, solved, asked, student, tight if tight is not None else [])
+    used: set[str] = set()  # the keys given so far (numbers and choices share them)
+    blanks = _blanks(problem, solved, asked, student, tight if tight is not None else [], used)
+    choices = _choices(problem, solved, asked, used)
     given = {str(k): v if isinstance(v, str) else str(v)
              for k, v in (problem.data.get("given") or {}).items()}
     text = statement_html(problem.statement_text() or None, title, _data_lines(solved),
-                          [blank_prompt(b) for b in blanks]) + precision_html(blanks)
+                          [blank_prompt(b) for b in blanks]
+                          + [c.label for c in choices]) + precision_html(blanks)
     # The page's anchors come from the file's path, which has no business in a bank: from
     # the problem id instead (11/3-v02 -> p-11-3-v02).
     shown = dataclasses.replace(solved, problem=dataclasses.replace(solved.problem, file=""))
     feedback = f'<div class="gyro">{html.worked_answer(shown, level=3, picture=False)}</div>'
-    words = [name for name, answer in solved.answers.items() if name in asked and (
-        getattr(problem.kind.answer(name), "dimension", None) is None
-        or any(isinstance(v, str) for v in answer.values))]
-    return Variant(number, str(problem.id), given, text, feedback, blanks, words)
+    words = [name for name, answer in solved.answers.items() if name in asked
+             and not getattr(problem.kind.answer(name), "words", ()) and (
+                 getattr(problem.kind.answer(name), "dimension", None) is None
+                 or any(isinstance(v, str) for v in answer.values))]
+    return Variant(number, str(problem.id), given, text, feedback, blanks, words, choices)
 
 
 def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
@@ -262,8 +288,8 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
         except InputError as err:
             errors.append(str(err.located(file=path)))
             continue
-        if not any(v.blanks for v in variants):
-            warn(f"{path}: no numeric answer to ask (word answers are not exported); skipped")
+        if not any(v.asks for v in variants):
+            warn(f"{path}: no answer to ask; skipped")
             continue
         ids[str(problem.id)] = path
         if tight:
@@ -279,7 +305,7 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
         slugs.add(unique)
         out.append(ProblemBank(str(problem.id), problem.title, problem.kind.name,
                                problem.source, unique, problem.kind.name.replace("_", " "),
-                               [v for v in variants if v.blanks]))
+                               [v for v in variants if v.asks]))
     unknown = [name for name in ask or () if name not in answered]
     if unknown and answered:
         errors.append(f"--ask: {', '.join(map(repr, unknown))} is an answer of none of the "
@@ -294,8 +320,8 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
              f"a student is asked for: those blanks accept {student.text} (--tolerance): "
              f"{_some(tightened)}")
     if worded:
-        warn(f"{len(worded)} file(s) have word answers ({', '.join(words)}), not asked (a bank "
-             f"asks numbers): {_some(worded)}")
+        warn(f"{len(worded)} file(s) have word answers without a list of choices "
+             f"({', '.join(words)}), not asked: {_some(worded)}")
     return out, errors
 
 
@@ -387,6 +413,9 @@ def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) ->
              "uploaded file (browser time-outs); export fewer problems per file "
              "(docs/course.md, Blackboard Learn)")
     warn("a Blackboard upload file has no feedback field: the worked answers are not in it")
+    if any(v.choices for b in made for v in b.variants):
+        warn("word answers (multiple choice in the other formats) are not in a Blackboard "
+             "file: it holds NUM questions")
 
 
 # ---- the command --------------------------------------------------------------------

@@ -46,6 +46,16 @@ class Blank:
     digits: int = 4    # significant figures the question asks for
 
 
+@dataclass(frozen=True)
+class Choice:
+    """A word answer asked as a multiple-choice question: the kind's words for it."""
+
+    key: str                  # unique in its question, with the blanks' keys: motion
+    label: str                # "motion", "stability (slow)"
+    choices: tuple[str, ...]  # the kind's words (AnswerSpec.words), the answer among them
+    answer: str               # the solver's word
+
+
 @dataclass
 class Variant:
     """One variant of a problem: its data, text, worked answer and blanks."""
@@ -56,7 +66,13 @@ class Variant:
     statement_html: str
     feedback_html: str
     blanks: list[Blank] = field(default_factory=list)
-    unasked: list[str] = field(default_factory=list)  # its word answers ("motion")
+    unasked: list[str] = field(default_factory=list)  # word answers without choices
+    choices: list[Choice] = field(default_factory=list)  # word answers asked (multiple choice)
+
+    @property
+    def asks(self) -> int:
+        """How many answers the variant asks: numbers and choices."""
+        return len(self.blanks) + len(self.choices)
 
 
 @dataclass
@@ -172,6 +188,11 @@ def precision_html(blanks: list[Blank]) -> str:
     """`precision_text` as a paragraph ("" for no blank)."""
     text = precision_text(blanks)
     return f'<p class="gyro-precision">{html_text(text)}</p>' if text else ""
+
+
+def choice_prompt(choice: Choice) -> str:
+    """What a multiple-choice question asks, as plain text: ``motion: choose one``."""
+    return f"{choice.label}: choose one"
 
 
 def blank_prompt(blank: Blank) -> str:

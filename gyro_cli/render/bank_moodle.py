@@ -16,8 +16,8 @@ categories as ``<question type="category">``).
 
 from __future__ import annotations
 
-from .bank import (Blank, ProblemBank, Variant, blank_prompt, cdata, html_text, number_text,
-                   xml_text)
+from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, cdata, choice_prompt,
+                   html_text, number_text, xml_text)
 
 #: the category every problem's category sits in
 TOP = "$course$/top/gyro"
@@ -64,9 +64,41 @@ def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:
 
 
 def _question(bank: ProblemBank, variant: Variant) -> str:
-    if len(variant.blanks) == 1:
+    if len(variant.blanks) == 1 and not variant.choices:
         return _numerical(bank, variant, variant.blanks[0])
+    if len(variant.choices) == 1 and not variant.blanks:
+        return _multichoice(bank, variant, variant.choices[0])
     return _cloze(bank, variant)
+
+
+def _multichoice(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
+    """A word answer alone: a multiple-choice question (one right answer, shuffled)."""
+    text = variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
+    lines = ['  <question type="multichoice">', *_common(bank, variant, text),
+             "    <defaultgrade>1</defaultgrade>",
+             "    <penalty>0.3333333</penalty>",
+             "    <hidden>0</hidden>",
+             "    <single>true</single>",
+             "    <shuffleanswers>true</shuffleanswers>",
+             "    <answernumbering>abc</answernumbering>"]
+    for word in choice.choices:
+        lines += [f'    <answer fraction="{100 if word == choice.answer else 0}" format="html">',
+                  f"      <text>{cdata(html_text(word))}</text>",
+                  '      <feedback format="html"><text></text></feedback>',
+                  "    </answer>"]
+    lines.append("  </question>")
+    return "\n".join(lines)
+
+
+#: what a cloze answer must escape with a backslash (Moodle's multianswer help: } # ~ / " \\)
+_CLOZE_SPECIAL = str.maketrans({c: "\\" + c for c in '}#~/"\\'})
+
+
+def cloze_choice(choice: Choice) -> str:
+    """One cloze multiple choice: ``{1:MULTICHOICE:=cusps~loops~waves}`` (a drop-down)."""
+    return "{1:MULTICHOICE:" + "~".join(
+        ("=" if word == choice.answer else "") + xml_text(word.translate(_CLOZE_SPECIAL))
+        for word in choice.choices) + "}"
 
 
 def unit_spellings(unit: str) -> list[str]:
@@ -124,6 +156,8 @@ def _cloze(bank: ProblemBank, variant: Variant) -> str:
     rows = "".join(f"<li>{html_text(blank.label)}: {cloze_blank(blank)}"
                    + (f" {html_text(blank.unit)}" if blank.unit else "") + "</li>"
                    for blank in variant.blanks)
+    rows += "".join(f"<li>{html_text(choice.label)}: {cloze_choice(choice)}</li>"
+                    for choice in variant.choices)
     text = variant.statement_html + f"<ul>{rows}</ul>"
     lines = ['  <question type="cloze">', *_common(bank, variant, text),
              "    <penalty>0.3333333</penalty>",

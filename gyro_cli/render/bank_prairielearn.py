@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import json
 
-from .bank import Blank, ProblemBank, html_text, number_text, stable_uuid, xml_attr
+from .bank import Blank, Choice, ProblemBank, html_text, number_text, stable_uuid, xml_attr
 
 TOPIC = "Gyroscopic motion"
 
@@ -55,13 +55,34 @@ def _input(blank: Blank) -> str:
             f"{{{{/params.ask.{blank.key}}}}}")
 
 
+def _choices(bank: ProblemBank) -> dict[str, tuple[str, tuple[str, ...]]]:
+    """Every multiple choice some variant asks: key -> (label, the words of all variants)."""
+    seen: dict[str, tuple[str, tuple[str, ...]]] = {}
+    for variant in bank.variants:
+        for choice in variant.choices:
+            label, words = seen.get(choice.key, (choice.label, ()))
+            seen[choice.key] = (label, tuple(dict.fromkeys([*words, *choice.choices])))
+    return seen
+
+
+def _multiple_choice(key: str, label: str, words: tuple[str, ...]) -> str:
+    # Which word is right differs from variant to variant: a param ("true"/"false").
+    answers = "".join(f'\n  <pl-answer correct="{{{{params.correct.{key}.c{n}}}}}">'
+                      f"{html_text(word)}</pl-answer>" for n, word in enumerate(words, 1))
+    return (f"{{{{#params.choose.{key}}}}}\n<p>{html_text(label)}:</p>\n"
+            f'<pl-multiple-choice answers-name="{key}">{answers}\n</pl-multiple-choice>\n'
+            f"{{{{/params.choose.{key}}}}}")
+
+
 def _attr(text: str) -> str:
     return xml_attr(text).replace("{", "&#123;").replace("}", "&#125;")
 
 
 def question_html(bank: ProblemBank) -> str:
     """The question's template: statement, inputs, worked answer."""
-    inputs = "\n".join(_input(b) for b in _blanks(bank))
+    inputs = "\n".join([*(_input(b) for b in _blanks(bank)),
+                        *(_multiple_choice(key, label, words)
+                          for key, (label, words) in _choices(bank).items())])
     return (f"<!-- {html_text(bank.name).replace('--', '- -')}: written by gyro export "
             "(the answers are gyro's) -->\n"
             "<pl-question-panel>\n{{{params.statement}}}\n</pl-question-panel>\n\n"
@@ -86,17 +107,27 @@ def generate(data):
     data["params"]["feedback"] = variant["feedback"]
     data["params"]["ask"] = {{key: True for key in variant["answers"]}}
     data["params"]["atol"] = variant["atol"]
+    data["params"]["choose"] = {{key: True for key in variant["correct"]}}
+    data["params"]["correct"] = variant["correct"]
     for key, value in variant["answers"].items():
         data["correct_answers"][key] = value
 '''
 
 
+def _correct(choice: Choice, words: tuple[str, ...]) -> dict[str, str]:
+    """Each word of the question's choice (c1, c2, ...): "true" for this variant's."""
+    return {f"c{n}": "true" if word == choice.answer else "false"
+            for n, word in enumerate(words, 1)}
+
+
 def server_py(bank: ProblemBank) -> str:
     """The question's server.py, with every variant's statement, feedback and answers."""
+    words = {key: choices for key, (_, choices) in _choices(bank).items()}
     variants = [{"variant": v.number, "id": v.ident, "given": v.given,
                  "statement": v.statement_html, "feedback": v.feedback_html,
                  "answers": {b.key: b.value for b in v.blanks},
-                 "atol": {b.key: number_text(b.half_width) for b in v.blanks}}
+                 "atol": {b.key: number_text(b.half_width) for b in v.blanks},
+                 "correct": {c.key: _correct(c, words[c.key]) for c in v.choices}}
                 for v in bank.variants]
     doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
     doc = doc.replace("\\", "/").replace('"', "'")
