@@ -90,15 +90,18 @@ def _pl_generate(server: Path, seed: int) -> dict:
 
 def _pl_page(template: str, params: dict) -> str:
     """question.html rendered as PrairieLearn's mustache does for these tags."""
+    def value(path: str):
+        found = params
+        for name in path.split("."):
+            found = found.get(name) if isinstance(found, dict) else None
+        return found
+
     def section(match: re.Match) -> str:
-        return match.group(3) if params[match.group(1)].get(match.group(2)) else ""
+        return match.group(2) if value(match.group(1)) else ""
 
     def lookup(match: re.Match) -> str:
-        value = params
-        for name in match.group(1).split("."):
-            value = value[name]
-        return html.escape(str(value))
-    out = re.sub(r"\{\{#params\.(\w+)\.(\w+)\}\}(.*?)\{\{/params\.\1\.\2\}\}", section,
+        return html.escape(str(value(match.group(1))))
+    out = re.sub(r"\{\{#params\.([\w.]+)\}\}(.*?)\{\{/params\.\1\}\}", section,
                  template, flags=re.S)
     out = re.sub(r"\{\{\{params\.(\w+)\}\}\}", lambda m: params[m.group(1)], out)
     return re.sub(r"\{\{params\.([\w.]+)\}\}", lookup, out)
@@ -141,7 +144,7 @@ def _moodle_blanks(path: Path) -> list[tuple[str, float, float, str]]:
 def _qti_items(path: Path):
     with zipfile.ZipFile(path) as archive:
         for name in archive.namelist():
-            if name != "imsmanifest.xml":
+            if name != "imsmanifest.xml" and name.endswith(".xml"):
                 yield from ET.fromstring(archive.read(name)).iter(f"{QTI}item")
 
 
@@ -394,6 +397,52 @@ def test_item22_word_answers_are_multiple_choice_in_every_format(banks, tmp_path
     assert len(question.findall("answer")) == len(_words("11_2_released_top")[0])
 
 
+def test_item22_the_worked_answers_picture_travels_with_the_feedback(banks):
+    """The released top's axis path (and the bicycle's eigenvalues) as a PNG packaged with
+    the feedback: Moodle's @@PLUGINFILE@@ with the file in base64, a file of the QTI zip
+    listed in the manifest, a clientFilesQuestion file shown by pl-figure."""
+    import base64
+
+    png = b"\x89PNG\r\n\x1a\n"
+    root = ET.parse(banks["moodle"]).getroot()
+    category = None
+    pictured = []
+    for question in root.findall("question"):
+        if question.get("type") == "category":
+            category = question.findtext("category/text")
+            continue
+        feedback = question.find("generalfeedback")
+        files = feedback.findall("file")
+        if "released" in category or "bicycle" in category:
+            (file,) = files
+            assert file.get("encoding") == "base64" and file.get("path") == "/"
+            assert base64.b64decode(file.text).startswith(png)
+            assert f'src="@@PLUGINFILE@@/{file.get("name")}"' in feedback.findtext("text")
+            pictured.append(category)
+        else:
+            assert not files and "<img" not in feedback.findtext("text")
+    assert len(pictured) == 2
+    with zipfile.ZipFile(banks["qti"]) as archive:
+        manifest = ET.fromstring(archive.read("imsmanifest.xml"))
+        listed = {f.get("href") for f in manifest.iter(f"{CP}file")}
+        figure = "11_2_released_top/figure-1.png"
+        assert archive.read(figure).startswith(png) and figure in listed
+        feedback = ET.fromstring(archive.read("11_2_released_top/11_2_released_top.xml")).find(
+            f".//{QTI}itemfeedback//{QTI}mattext").text
+        assert '<img src="figure-1.png" alt="Path of the top' in feedback
+        assert set(archive.namelist()) == listed | {"imsmanifest.xml"}
+    question = banks["prairielearn"] / "11_2_released_top"
+    assert (question / "clientFilesQuestion" / "figure-1.png").read_bytes().startswith(png)
+    page = _pl_page((question / "question.html").read_text(),
+                    _pl_generate(question / "server.py", 0)["params"])
+    assert re.search(r'<pl-answer-panel>.*<pl-figure file-name="figure-1.png" '
+                     r'directory="clientFilesQuestion" alt="Path of the top', page, re.S)
+    plain = banks["prairielearn"] / "11_3"
+    page = _pl_page((plain / "question.html").read_text(),
+                    _pl_generate(plain / "server.py", 0)["params"])
+    assert "<pl-figure" not in page and not (plain / "clientFilesQuestion").exists()
+
+
 # ---- the platforms' schemas --------------------------------------------------------------
 
 class _LocalXml(etree.Resolver):
@@ -417,7 +466,8 @@ def test_qti_and_manifest_validate_against_the_ims_schemas(banks):
     with zipfile.ZipFile(banks["qti"]) as archive:
         manifest = etree.fromstring(archive.read("imsmanifest.xml"))
         cp.assertValid(manifest)
-        files = [name for name in archive.namelist() if name != "imsmanifest.xml"]
+        files = [name for name in archive.namelist()
+                 if name != "imsmanifest.xml" and name.endswith(".xml")]
         assert len(files) == len(FILES)
         for name in files:
             qti.assertValid(etree.fromstring(archive.read(name)))

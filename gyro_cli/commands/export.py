@@ -209,13 +209,14 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
 
 def variant_of(problem: "Problem", number: int, title: str,
                ask: tuple[str, ...] | None = None, student: "Tolerance | None" = None,
-               tight: list[str] | None = None) -> "Variant":
+               tight: list[str] | None = None, pictures: bool = False) -> "Variant":
     """One problem solved and laid out as a bank's variant; its question text is its
     `statement` filled from its own given values (core/statement.py), else a sentence
     built from ``title``, its data and what is asked, then the precision asked and the
     tolerance accepted. ``ask``: the answers to ask (``--ask``; None: the file's `ask`,
     else all); ``student``: the tolerance of a blank whose problem's is tighter than the
-    printed answer (`_blanks`), whose answer names go to ``tight``."""
+    printed answer (`_blanks`), whose answer names go to ``tight``; ``pictures``: draw the
+    worked answer's picture (a released top's axis path, a bicycle's eigenvalues) as PNG."""
     import dataclasses
 
     from ..checking.tolerance import parse_tolerance
@@ -247,16 +248,28 @@ def variant_of(problem: "Problem", number: int, title: str,
              and not getattr(problem.kind.answer(name), "words", ()) and (
                  getattr(problem.kind.answer(name), "dimension", None) is None
                  or any(isinstance(v, str) for v in answer.values))]
-    return Variant(number, str(problem.id), given, text, feedback, blanks, words, choices)
+    figure, alt = _picture(shown) if pictures else (b"", "")
+    return Variant(number, str(problem.id), given, text, feedback, blanks, words, choices,
+                   figure, alt)
+
+
+def _picture(solved: Any) -> tuple[bytes, str]:
+    """The worked answer's picture as PNG and its alt text (b"" for a kind without one)."""
+    from ..render.picture import KINDS, png
+
+    if solved.problem.kind.name not in KINDS:
+        return b"", ""
+    return png(solved) or (b"", "")
 
 
 def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
           warn: Callable[[str], None] = lambda line: None,
-          ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE
-          ) -> tuple[list["ProblemBank"], list[str]]:
+          ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
+          pictures: bool = False) -> tuple[list["ProblemBank"], list[str]]:
     """The bank of every problem file in ``paths`` (files, directories, globs), and one
     line per file that could not be exported (bad input). ``ask``: the answers to ask
-    (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`)."""
+    (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`);
+    ``pictures``: the worked answers' pictures as PNG files (`variant_of`)."""
     from ..render.bank import ProblemBank, slug
 
     student = _student_tolerance(tolerance)
@@ -283,7 +296,7 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
                                  key="id", line=problem.line("id"))
             answered.update(problem.find, problem.expected)
             tight: list[str] = []
-            variants = [variant_of(p, n, problem.title, ask, student, tight)
+            variants = [variant_of(p, n, problem.title, ask, student, tight, pictures)
                         for n, p in enumerate(problems, 1)]
         except InputError as err:
             errors.append(str(err.located(file=path)))
@@ -443,9 +456,12 @@ def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) ->
 @click.option("--tolerance", default=STUDENT_TOLERANCE, show_default=True,
               help="What a blank accepts where the problem's tolerance is tighter than the "
                    "significant figures the question asks for (\"1%\" or \"3 sig\").")
+@click.option("--pictures/--no-pictures", default=True, show_default=True,
+              help="Package the worked answer's picture (a released top's axis path, a "
+                   "bicycle's eigenvalues) as a PNG with the feedback (not in blackboard).")
 @click.option("--force", is_flag=True, help="Replace files of OUT that exist.")
 def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
-           ask_text: str | None, tolerance: str, force: bool) -> None:
+           ask_text: str | None, tolerance: str, pictures: bool, force: bool) -> None:
     """Export problem FILES as a question bank whose every answer is gyro's.
 
     FILES may be directories (every *.yaml and *.yml in them) or quoted globs.
@@ -463,7 +479,8 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     except InputError as err:
         warn(str(err))
         sys.exit(2)
-    made, errors = banks(files, count, seed, warn, ask, tolerance)
+    made, errors = banks(files, count, seed, warn, ask, tolerance,
+                         pictures and fmt != "blackboard")
     for line in errors:
         warn(line)
     if not made:

@@ -68,6 +68,20 @@ class Variant:
     blanks: list[Blank] = field(default_factory=list)
     unasked: list[str] = field(default_factory=list)  # word answers without choices
     choices: list[Choice] = field(default_factory=list)  # word answers asked (multiple choice)
+    figure: bytes = b""       # the worked answer's picture as PNG (b"": none)
+    figure_alt: str = ""      # what it shows, in words
+
+    @property
+    def figure_name(self) -> str:
+        """The picture's file name in a package: ``figure-1.png`` for variant 1."""
+        return f"figure-{self.number}.png"
+
+    def figure_html(self, src: str) -> str:
+        """The picture as an ``<img>`` paragraph with ``src`` ("" without a picture)."""
+        if not self.figure:
+            return ""
+        return (f'<p><img src="{escape(src)}" alt="{escape(xml_clean(self.figure_alt))}" '
+                'style="max-width: 100%"></p>')
 
     @property
     def asks(self) -> int:

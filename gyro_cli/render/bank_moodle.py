@@ -16,6 +16,8 @@ categories as ``<question type="category">``).
 
 from __future__ import annotations
 
+import base64
+
 from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, cdata, choice_prompt,
                    html_text, number_text, xml_text)
 
@@ -59,8 +61,17 @@ def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:
     # same bank into the same category must not fail on it.
     return [f"    <name><text>{xml_text(_name(bank, variant))}</text></name>",
             f'    <questiontext format="html"><text>{cdata(text)}</text></questiontext>',
-            f'    <generalfeedback format="html"><text>{cdata(variant.feedback_html)}'
-            "</text></generalfeedback>"]
+            _feedback(variant)]
+
+
+def _feedback(variant: Variant) -> str:
+    """The general feedback: the worked answer, and its picture as a file of the question
+    (``@@PLUGINFILE@@``, the file inline in base64, as Moodle's importer reads it)."""
+    html = variant.feedback_html + variant.figure_html(f"@@PLUGINFILE@@/{variant.figure_name}")
+    file = (f'<file name="{variant.figure_name}" path="/" encoding="base64">'
+            f"{base64.b64encode(variant.figure).decode('ascii')}</file>"
+            if variant.figure else "")
+    return f'    <generalfeedback format="html"><text>{cdata(html)}</text>{file}</generalfeedback>'
 
 
 def _question(bank: ProblemBank, variant: Variant) -> str:

@@ -87,7 +87,10 @@ def question_html(bank: ProblemBank) -> str:
             "(the answers are gyro's) -->\n"
             "<pl-question-panel>\n{{{params.statement}}}\n</pl-question-panel>\n\n"
             f"{inputs}\n\n"
-            "<pl-answer-panel>\n{{{params.feedback}}}\n</pl-answer-panel>\n")
+            "<pl-answer-panel>\n{{{params.feedback}}}\n{{#params.figure}}\n"
+            '<pl-figure file-name="{{params.figure}}" directory="clientFilesQuestion" '
+            'alt="{{params.figure_alt}}"></pl-figure>\n{{/params.figure}}\n'
+            "</pl-answer-panel>\n")
 
 
 SERVER = '''"""{doc}
@@ -109,6 +112,8 @@ def generate(data):
     data["params"]["atol"] = variant["atol"]
     data["params"]["choose"] = {{key: True for key in variant["correct"]}}
     data["params"]["correct"] = variant["correct"]
+    data["params"]["figure"] = variant["figure"]
+    data["params"]["figure_alt"] = variant["figure_alt"]
     for key, value in variant["answers"].items():
         data["correct_answers"][key] = value
 '''
@@ -127,7 +132,8 @@ def server_py(bank: ProblemBank) -> str:
                  "statement": v.statement_html, "feedback": v.feedback_html,
                  "answers": {b.key: b.value for b in v.blanks},
                  "atol": {b.key: number_text(b.half_width) for b in v.blanks},
-                 "correct": {c.key: _correct(c, words[c.key]) for c in v.choices}}
+                 "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
+                 "figure": v.figure_name if v.figure else "", "figure_alt": v.figure_alt}
                 for v in bank.variants]
     doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
     doc = doc.replace("\\", "/").replace('"', "'")
@@ -136,12 +142,16 @@ def server_py(bank: ProblemBank) -> str:
                                                   allow_nan=False)))
 
 
-def files(banks: list[ProblemBank]) -> dict[str, str]:
-    """Relative path -> text of every file of the export."""
-    out = {}
+def files(banks: list[ProblemBank]) -> dict[str, str | bytes]:
+    """Relative path -> text (or PNG bytes) of every file of the export: a picture of the
+    worked answer is in the question's clientFilesQuestion/."""
+    out: dict[str, str | bytes] = {}
     for bank in banks:
         out[f"{bank.slug}/info.json"] = json.dumps(info(bank), indent=2,
                                                    ensure_ascii=False) + "\n"
         out[f"{bank.slug}/question.html"] = question_html(bank)
         out[f"{bank.slug}/server.py"] = server_py(bank)
+        for variant in bank.variants:
+            if variant.figure:
+                out[f"{bank.slug}/clientFilesQuestion/{variant.figure_name}"] = variant.figure
     return out

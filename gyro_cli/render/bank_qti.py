@@ -114,7 +114,7 @@ def _choice_item(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
         f"{i}  </resprocessing>",
         f'{i}  <itemfeedback ident="general_fb">',
         f'{i}    <flow_mat><material><mattext texttype="text/html">'
-        f"{xml_text(variant.feedback_html)}</mattext></material></flow_mat>",
+        f"{xml_text(_feedback(variant))}</mattext></material></flow_mat>",
         f"{i}  </itemfeedback>",
         f"{i}</item>"])
 
@@ -165,9 +165,19 @@ def _item(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
         f"{i}  </resprocessing>",
         f'{i}  <itemfeedback ident="general_fb">',
         f'{i}    <flow_mat><material><mattext texttype="text/html">'
-        f"{xml_text(variant.feedback_html)}</mattext></material></flow_mat>",
+        f"{xml_text(_feedback(variant))}</mattext></material></flow_mat>",
         f"{i}  </itemfeedback>",
         f"{i}</item>"])
+
+
+def _feedback(variant: Variant) -> str:
+    """The worked answer, and its picture: a file of the package beside the QTI file."""
+    return variant.feedback_html + variant.figure_html(variant.figure_name)
+
+
+def figures(bank: ProblemBank) -> list[tuple[str, bytes]]:
+    """The package's picture files of one problem: (path in the zip, PNG)."""
+    return [(f"{bank.slug}/{v.figure_name}", v.figure) for v in bank.variants if v.figure]
 
 
 def manifest(banks: list[ProblemBank]) -> str:
@@ -186,6 +196,7 @@ def manifest(banks: list[ProblemBank]) -> str:
         out += [f'    <resource identifier="{ident(bank.id, "resource")}" '
                 f'type="imsqti_xmlv1p2" href="{xml_attr(href)}">',
                 f'      <file href="{xml_attr(href)}"/>',
+                *(f'      <file href="{xml_attr(path)}"/>' for path, _ in figures(bank)),
                 "    </resource>"]
     out += ["  </resources>", "</manifest>"]
     return "\n".join(out) + "\n"
@@ -195,11 +206,12 @@ def package(banks: list[ProblemBank]) -> bytes:
     """The zip: ``imsmanifest.xml`` and one QTI file per problem (same bytes each time)."""
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
-        entries = [("imsmanifest.xml", manifest(banks))]
-        entries += [(file_name(bank), assessment(bank)) for bank in banks]
-        for name, text in entries:
+        entries: list[tuple[str, str | bytes]] = [("imsmanifest.xml", manifest(banks))]
+        for bank in banks:
+            entries += [(file_name(bank), assessment(bank)), *figures(bank)]
+        for name, data in entries:
             info = zipfile.ZipInfo(name, date_time=ZIP_TIME)
             info.compress_type = zipfile.ZIP_DEFLATED
             info.external_attr = 0o644 << 16
-            archive.writestr(info, text.encode("utf-8"))
+            archive.writestr(info, data.encode("utf-8") if isinstance(data, str) else data)
     return buffer.getvalue()
