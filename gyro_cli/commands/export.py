@@ -9,8 +9,10 @@ text, the worked answer as HTML, and one blank per number in the answers asked
 (``--ask``, else the file's ``ask``, else ``find`` and ``expected``), each with
 its own key. A blank accepts the problem's tolerance around the solver's value,
 unless that is tighter than the value printed to 4 significant figures (what
-the question asks for): then the student tolerance (``--tolerance``). Word
-answers (``motion: cusps``) are not asked. The renderers in
+the question asks for): then the student tolerance (``--tolerance``). A word
+answer (``motion: cusps``) is a multiple choice among its kind's words
+(``AnswerSpec.words``); with ``--pictures`` the worked answer's picture goes with
+the feedback as a PNG. The renderers in
 ``render/bank_*.py`` write the files; nothing here or there computes an answer
 of its own.
 
@@ -36,7 +38,8 @@ if TYPE_CHECKING:
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
 #: the formats written as one file
 FILE_FORMATS = ("moodle", "qti", "blackboard")
-#: the tolerance of a blank whose problem asks more than DIGITS figures (--tolerance)
+#: what a blank accepts where the problem's tolerance is tighter than the significant
+#: figures the question asks for (--tolerance)
 STUDENT_TOLERANCE = "1%"
 
 
@@ -141,14 +144,9 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
                 value, si, text = abs(value), abs(si), f"magnitude of {text}"
             unit = answer.unit or ""
             scale = _scale(value, si, unit, spec.dimension)
-            half = tol.half_width(si, value) / abs(scale)
-            least = rounding(float(value), digits)
-            used_tol = tol
-            if value == 0 and tol.form != "absolute":
-                used_tol = student  # 0 either way; said as the others of the question
-            elif half < least * (1 - 1e-9):
-                used_tol = student
-                half = max(student.half_width(float(value), float(value)), least)
+            half, used_tol = _width(tol, student, float(value),
+                                    tol.half_width(si, value) / abs(scale), digits)
+            if used_tol is student and value:
                 tight.append(name)
             fraction = used_tol.value if used_tol.form != "absolute" else half
             out.append(Blank(key, text, float(value), unit, half, tol.text, used_tol.form,
@@ -157,13 +155,26 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
     return out
 
 
+def _width(tol: "Tolerance", student: "Tolerance", value: float, half: float,
+           digits: int) -> tuple[float, "Tolerance"]:
+    """What a blank accepts around ``value``: ``half`` (the problem's tolerance ``tol``),
+    unless that is tighter than rounding to ``digits`` figures can cost; then the student
+    tolerance, never less than that cost. The half-width and the tolerance used."""
+    least = rounding(value, digits)
+    if value == 0 and tol.form != "absolute":
+        return half, student  # 0 either way; said as the others of the question
+    if half < least * (1 - 1e-9):
+        return max(student.half_width(value, value), least), student
+    return half, tol
+
+
 def _choices(problem: "Problem", solved: Any, asked: list[str], used: set[str]
              ) -> list["Choice"]:
     """One multiple-choice question per word of the word answers asked whose kind names
     their possible words (AnswerSpec.words): those words, the solver's among them."""
     from ..render.bank import Choice
 
-    out = []
+    out: list[Choice] = []
     for name, answer in solved.answers.items():
         spec = problem.kind.answer(name)
         if spec is None or not spec.words or name not in asked:
@@ -271,10 +282,9 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`);
     ``pictures``: the worked answers' pictures as PNG files (`variant_of`)."""
     from ..render.bank import ProblemBank, slug
-
-    student = _student_tolerance(tolerance)
     from ..solving.paths import problem_files
 
+    student = _student_tolerance(tolerance)
     files, missing = problem_files(paths)
     errors = [message for _, message in missing]
     out: list[ProblemBank] = []
