@@ -286,12 +286,13 @@ def test_item20_moodle_grades_the_unit_gyro_asks(banks):
     for question in numerical:
         value = float(question.findtext("answer/text"))
         text = question.findtext("questiontext/text")
-        unit = re.search(r", in ([^<(]+?) \(type the number and its unit", text).group(1)
+        unit = re.search(r", in ([^<(:]+?)\s*[(:][^<]*</p>$", text).group(1)
         shown = f"{_printed(value):.{DIGITS - 1}e}"
         assert _moodle_grade(question, f"{shown} {unit}") == 1.0, (unit, text[-200:])
+        assert _moodle_grade(question, f"{shown} furlongs") == 0.0
+        assert "type the number and its unit" in text         # the question says so
         assert _moodle_grade(question, shown) == 0.0          # the unit is asked for
         assert _moodle_grade(question, f"{shown} rad/s") == 0.0 or unit == "rad/s"
-        assert _moodle_grade(question, f"{shown} furlongs") == 0.0
         for name in (u.findtext("unit_name") for u in question.findall("units/unit")):
             assert " " not in name  # Moodle deletes spaces from the response first
     for question in spaced:
