@@ -117,6 +117,8 @@ def template(kind_name: str) -> str:
             out.append(f"  # {a.name}: {value}".rstrip())
     out += [_line("tolerance: 1%", "optional: \"1%\" relative, \"3 sig\" significant "
                   "figures, or a quantity (\"0.01 rad/s\") absolute; or answer -> tolerance"),
+            _line(f"# ask: [{first}]", "optional: the answers the statement asks (a question "
+                  "bank asks only these)"),
             "", _line("# vary:" if not example.get("vary") else "vary:",
                       "optional, for `gyro vary`: factors [0.8, 1.2] or a range "
                       "[20 deg, 40 deg]")]
