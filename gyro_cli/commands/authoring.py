@@ -117,6 +117,8 @@ def template(kind_name: str) -> str:
             out.append(f"  # {a.name}: {value}".rstrip())
     out += [_line("tolerance: 1%", "optional: \"1%\" relative, \"3 sig\" significant "
                   "figures, or a quantity (\"0.01 rad/s\") absolute; or answer -> tolerance"),
+            _line(f"# ask: [{first}]", "optional: the answers the statement asks (a question "
+                  "bank asks only these)"),
             "", _line("# vary:" if not example.get("vary") else "vary:",
                       "optional, for `gyro vary`: factors [0.8, 1.2] or a range "
                       "[20 deg, 40 deg]")]
@@ -207,6 +209,9 @@ def schema() -> dict[str, Any]:
                          "description": "answers `gyro check` compares against"},
             "tolerance": {"oneOf": [tolerance_one, {"type": "object",
                                                     "additionalProperties": tolerance_one}]},
+            "ask": {"type": "array", "minItems": 1, "items": {"type": "string"},
+                    "description": "the answers (of find and expected) the statement asks; "
+                                   "a question bank asks only these"},
             "units": {"enum": ["si", "us", "SI", "US"],
                       "description": "the worked answer in SI (default) or slug, ft, lbf"},
             "vary": {"type": "object", "description": "for `gyro vary`: given key -> [low, high]"
@@ -492,7 +497,7 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     if solved is not None:
         solved.append(result)
     order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
-             "expected", "tolerance"]
+             "expected", "tolerance", "ask"]
     return {k: data[k] for k in order if k in data}
 
 

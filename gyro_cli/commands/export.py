@@ -5,9 +5,14 @@ For each problem file: the problem as written, or with ``--variants N`` the N
 variants that ``gyro vary FILE --count N --seed S`` writes (the same values, drawn
 by the same code). Each is solved as ``gyro solve`` solves it (in US units when
 the file says ``units: us``) and becomes a `render.bank.Variant`: the question
-text, the worked answer as HTML, and one blank per number in the answers the file
-asks for (``find`` and ``expected``), with the problem's tolerance around the
-solver's value. Word answers (``motion: cusps``) are not asked. The renderers in
+text, the worked answer as HTML, and one blank per number in the answers asked
+(``--ask``, else the file's ``ask``, else ``find`` and ``expected``), each with
+its own key. A blank accepts the problem's tolerance around the solver's value,
+unless that is tighter than the value printed to 4 significant figures (what
+the question asks for): then the student tolerance (``--tolerance``). A word
+answer (``motion: cusps``) is a multiple choice among its kind's words
+(``AnswerSpec.words``); with ``--pictures`` the worked answer's picture goes with
+the feedback as a PNG. The renderers in
 ``render/bank_*.py`` write the files; nothing here or there computes an answer
 of its own.
 
@@ -16,6 +21,7 @@ See docs/course.md ("Question banks") for importing the result.
 
 from __future__ import annotations
 
+import math
 import os
 import sys
 from typing import TYPE_CHECKING, Any, Callable
@@ -25,12 +31,16 @@ import click
 from ..core.errors import InputError
 
 if TYPE_CHECKING:
-    from ..render.bank import Blank, ProblemBank, Variant
+    from ..checking.tolerance import Tolerance
+    from ..render.bank import Blank, Choice, ProblemBank, Variant
     from ..solving.problem import Problem
 
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
 #: the formats written as one file
 FILE_FORMATS = ("moodle", "qti", "blackboard")
+#: what a blank accepts where the problem's tolerance is tighter than the significant
+#: figures the question asks for (--tolerance)
+STUDENT_TOLERANCE = "1%"
 
 
 # ---- building the banks ----------------------------------------------------------
@@ -67,35 +77,130 @@ def _scale(value: float, si: float, unit: str, dimension: str) -> float:
         return 1.0
 
 
-def _blanks(problem: "Problem", solved: Any) -> list["Blank"]:
-    """One blank per numeric value of the answers the problem asks for."""
+def _asked(problem: "Problem", ask: tuple[str, ...] | None) -> list[str]:
+    """The answers a bank asks: ``--ask`` (those this problem finds), else the file's
+    `ask`, else every answer of `find` and `expected`."""
+    names = list(dict.fromkeys([*problem.find, *problem.expected]))
+    if ask is not None:
+        return [name for name in names if name in ask]
+    return problem.ask or names
+
+
+def _key(name: str, label: str, index: int, several: bool, answers: set[str],
+         used: set[str]) -> str:
+    """A blank's key, unique in its variant: ``precession_slow`` for the slow root of
+    ``precession``, unless an answer of that name is asked too (then
+    ``precession_1_slow``), and never one already used."""
+    from ..render.bank import slug
+
+    if not several:
+        key = name
+    else:
+        tail = slug(label).replace("-", "_").lower() if label else str(index + 1)
+        key = f"{name}_{tail}"
+        if key in answers and key != name or key in used:
+            key = f"{name}_{index + 1}" + (f"_{tail}" if label else "")
+    base, n = key, 2
+    while key in used:
+        key, n = f"{base}_{n}", n + 1
+    used.add(key)
+    return key
+
+
+def rounding(value: float, digits: int) -> float:
+    """How far ``value`` rounded to ``digits`` significant figures can be from it: half a
+    unit of the last digit kept."""
+    if not value or value != value:
+        return 0.0
+    return 0.5 * 10.0 ** (math.floor(math.log10(abs(value))) - digits + 1)
+
+
+def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Tolerance",
+            tight: list[str], used: set[str]) -> list["Blank"]:
+    """One blank per numeric value of the answers asked. Each accepts the value as the
+    worked answer prints it (core.expr.SIG significant figures): where the problem's tolerance
+    is tighter than that, the student tolerance (``student``) is used and the answer's name
+    added to ``tight``."""
     from ..checking.tolerance import tolerance_for
-    from ..render.bank import Blank, slug
+    from ..core.expr import SIG as digits
+    from ..render.bank import Blank
 
     names = [a.name for a in problem.kind.answers]
-    out = []
+    out: list[Blank] = []
     for name, answer in solved.answers.items():
         spec = problem.kind.answer(name)
-        if spec is None or spec.dimension is None:
-            continue  # a word answer: not asked
+        if spec is None or spec.dimension is None or name not in asked:
+            continue  # a word answer (not asked as a number), or one not asked
         tol = tolerance_for(problem.tolerance, name, spec.dimension, names)
         several = len(answer.values) > 1
         for i, (value, si) in enumerate(zip(answer.values, answer.si_values)):
             if isinstance(value, str):
                 continue
             label = answer.labels[i] if i < len(answer.labels) and answer.labels[i] else ""
-            key = name if not several else \
-                f"{name}_{slug(label).replace('-', '_').lower() if label else i + 1}"
+            key = _key(name, label, i, several, set(asked), used)
             words = name.replace("_", " ")
             text = f"{words} ({label})" if label else (f"{words} ({i + 1})" if several else words)
             if tol.magnitude:  # the book quotes a magnitude: ask for it
                 value, si, text = abs(value), abs(si), f"magnitude of {text}"
             unit = answer.unit or ""
             scale = _scale(value, si, unit, spec.dimension)
-            half = tol.half_width(si, value) / abs(scale)
-            fraction = tol.value if tol.form != "absolute" else half
-            out.append(Blank(key, text, float(value), unit, half, tol.text, tol.form, fraction))
+            half, used_tol = _width(tol, student, float(value),
+                                    tol.half_width(si, value) / abs(scale), digits)
+            if used_tol is student and value:
+                tight.append(name)
+            fraction = used_tol.value if used_tol.form != "absolute" else half
+            out.append(Blank(key, text, float(value), unit, half, tol.text, used_tol.form,
+                             fraction, accepts=accepts(used_tol, half, unit),
+                             digits=digits))
     return out
+
+
+def _width(tol: "Tolerance", student: "Tolerance", value: float, half: float,
+           digits: int) -> tuple[float, "Tolerance"]:
+    """What a blank accepts around ``value``: ``half`` (the problem's tolerance ``tol``),
+    unless that is tighter than rounding to ``digits`` figures can cost; then the student
+    tolerance, never less than that cost. The half-width and the tolerance used."""
+    least = rounding(value, digits)
+    if value == 0 and tol.form != "absolute":
+        return half, student  # 0 either way; said as the others of the question
+    if half < least * (1 - 1e-9):
+        return max(student.half_width(value, value), least), student
+    return half, tol
+
+
+def _choices(problem: "Problem", solved: Any, asked: list[str], used: set[str]
+             ) -> list["Choice"]:
+    """One multiple-choice question per word of the word answers asked whose kind names
+    their possible words (AnswerSpec.words): those words, the solver's among them."""
+    from ..render.bank import Choice
+
+    out: list[Choice] = []
+    for name, answer in solved.answers.items():
+        spec = problem.kind.answer(name)
+        if spec is None or not spec.words or name not in asked:
+            continue
+        words = [v for v in answer.values if isinstance(v, str)]
+        for i, word in enumerate(words):
+            label = answer.labels[i] if i < len(answer.labels) and answer.labels[i] else ""
+            key = _key(name, label, i, len(words) > 1, set(asked), used)
+            text = name.replace("_", " ") + (f" ({label})" if label else
+                                             f" ({i + 1})" if len(words) > 1 else "")
+            shown = word.replace("_", " ")
+            choices = tuple(dict.fromkeys([*spec.words, shown]))
+            out.append(Choice(key, text, choices, shown))
+    return out
+
+
+def accepts(tol: "Tolerance", half: float, unit: str) -> str:
+    """What a blank accepts, in words: ``within 1%``, ``to 3 significant figures``,
+    ``within 0.01 rad/s``."""
+    from ..render.bank import number_text
+
+    if tol.form == "relative":
+        return f"within {100 * tol.value:g}%"
+    if tol.form == "sig":
+        return f"correct to {int(tol.value)} significant figures"
+    return f"within {float(number_text(half)):.3g} {unit}".strip()
 
 
 def _with_expected(problem: "Problem") -> "Problem":
@@ -113,45 +218,73 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
              + (f" ({g.note})" if g.note else "")) for g in solved.solution.given]
 
 
-def variant_of(problem: "Problem", number: int, title: str) -> "Variant":
+def variant_of(problem: "Problem", number: int, title: str,
+               ask: tuple[str, ...] | None = None, student: "Tolerance | None" = None,
+               tight: list[str] | None = None, pictures: bool = False) -> "Variant":
     """One problem solved and laid out as a bank's variant; its question text is its
     `statement` filled from its own given values (core/statement.py), else a sentence
-    built from ``title``, its data and what is asked."""
+    built from ``title``, its data and what is asked, then the precision asked and the
+    tolerance accepted. ``ask``: the answers to ask (``--ask``; None: the file's `ask`,
+    else all); ``student``: the tolerance of a blank whose problem's is tighter than the
+    printed answer (`_blanks`), whose answer names go to ``tight``; ``pictures``: draw the
+    worked answer's picture (a released top's axis path, a bicycle's eigenvalues) as PNG."""
     import dataclasses
 
+    from ..checking.tolerance import parse_tolerance
     from ..render import html
-    from ..render.bank import Variant, blank_prompt, statement_html
+    from ..render.bank import Variant, blank_prompt, precision_html, statement_html
     from ..solving.solve import solve
 
+    student = student or parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
+    asked = _asked(problem, ask)
     problem = _with_expected(problem)
     solved = solve(problem)
     if problem.units == "us":
         from ..render.us_units import to_us
 
         solved = to_us(solved)
-    blanks = _blanks(problem, solved)
+    used: set[str] = set()  # the keys given so far (numbers and choices share them)
+    blanks = _blanks(problem, solved, asked, student, tight if tight is not None else [], used)
+    choices = _choices(problem, solved, asked, used)
     given = {str(k): v if isinstance(v, str) else str(v)
              for k, v in (problem.data.get("given") or {}).items()}
     text = statement_html(problem.statement_text() or None, title, _data_lines(solved),
-                          [blank_prompt(b) for b in blanks])
+                          [blank_prompt(b) for b in blanks]
+                          + [c.label for c in choices]) + precision_html(blanks)
     # The page's anchors come from the file's path, which has no business in a bank: from
     # the problem id instead (11/3-v02 -> p-11-3-v02).
     shown = dataclasses.replace(solved, problem=dataclasses.replace(solved.problem, file=""))
     feedback = f'<div class="gyro">{html.worked_answer(shown, level=3, picture=False)}</div>'
-    words = [name for name, answer in solved.answers.items()
-             if getattr(problem.kind.answer(name), "dimension", None) is None
-             or any(isinstance(v, str) for v in answer.values)]
-    return Variant(number, str(problem.id), given, text, feedback, blanks, words)
+    words = [name for name, answer in solved.answers.items() if name in asked
+             and not getattr(problem.kind.answer(name), "words", ()) and (
+                 getattr(problem.kind.answer(name), "dimension", None) is None
+                 or any(isinstance(v, str) for v in answer.values))]
+    figure, alt = _picture(shown) if pictures else (b"", "")
+    return Variant(number, str(problem.id), given, text, feedback, blanks, words, choices,
+                   figure, alt)
+
+
+def _picture(solved: Any) -> tuple[bytes, str]:
+    """The worked answer's picture as PNG and its alt text (b"" for a kind without one)."""
+    from ..render.picture import KINDS, png
+
+    if solved.problem.kind.name not in KINDS:
+        return b"", ""
+    return png(solved) or (b"", "")
 
 
 def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
-          warn: Callable[[str], None] = lambda line: None
-          ) -> tuple[list["ProblemBank"], list[str]]:
+          warn: Callable[[str], None] = lambda line: None,
+          ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
+          pictures: bool = False) -> tuple[list["ProblemBank"], list[str]]:
     """The bank of every problem file in ``paths`` (files, directories, globs), and one
-    line per file that could not be exported (bad input)."""
+    line per file that could not be exported (bad input). ``ask``: the answers to ask
+    (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`);
+    ``pictures``: the worked answers' pictures as PNG files (`variant_of`)."""
     from ..render.bank import ProblemBank, slug
     from ..solving.paths import problem_files
 
+    student = _student_tolerance(tolerance)
     files, missing = problem_files(paths)
     errors = [message for _, message in missing]
     out: list[ProblemBank] = []
@@ -160,6 +293,8 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     unvaried: list[str] = []
     worded: list[str] = []                # files with word answers
     words: dict[str, None] = {}           # their names, in order ("motion", "effect")
+    tightened: list[str] = []             # files whose tolerance is below the printed figures
+    answered: set[str] = set()            # the answers the files find (for --ask)
     for path in files:
         try:
             problem, problems = _variants_of(path, count, seed, unvaried)
@@ -169,14 +304,19 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
                 raise InputError(f"id {str(problem.id)!r} is already exported from "
                                  f"{ids[str(problem.id)]}; ids must differ within a bank",
                                  key="id", line=problem.line("id"))
-            variants = [variant_of(p, n, problem.title) for n, p in enumerate(problems, 1)]
+            answered.update(problem.find, problem.expected)
+            tight: list[str] = []
+            variants = [variant_of(p, n, problem.title, ask, student, tight, pictures)
+                        for n, p in enumerate(problems, 1)]
         except InputError as err:
             errors.append(str(err.located(file=path)))
             continue
-        if not any(v.blanks for v in variants):
-            warn(f"{path}: no numeric answer to ask (word answers are not exported); skipped")
+        if not any(v.asks for v in variants):
+            warn(f"{path}: no answer to ask; skipped")
             continue
         ids[str(problem.id)] = path
+        if tight:
+            tightened.append(path)
         if any(v.unasked for v in variants):
             worded.append(path)
             for variant in variants:
@@ -188,14 +328,47 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
         slugs.add(unique)
         out.append(ProblemBank(str(problem.id), problem.title, problem.kind.name,
                                problem.source, unique, problem.kind.name.replace("_", " "),
-                               [v for v in variants if v.blanks]))
+                               [v for v in variants if v.asks]))
+    unknown = [name for name in ask or () if name not in answered]
+    if unknown and answered:
+        errors.append(f"--ask: {', '.join(map(repr, unknown))} is an answer of none of the "
+                      f"files (their answers: {', '.join(sorted(answered))})")
     if unvaried:
         warn(f"{len(unvaried)} file(s) have no `vary` block and give one variant, the problem "
              f"as written: {_some(unvaried)}")
+    if tightened:
+        from ..core.expr import SIG
+
+        warn(f"{len(tightened)} file(s) ask a tolerance tighter than the {SIG} significant figures "
+             f"a student is asked for: those blanks accept {student.text} (--tolerance): "
+             f"{_some(tightened)}")
     if worded:
-        warn(f"{len(worded)} file(s) have word answers ({', '.join(words)}), not asked (a bank "
-             f"asks numbers): {_some(worded)}")
+        warn(f"{len(worded)} file(s) have word answers without a list of choices "
+             f"({', '.join(words)}), not asked: {_some(worded)}")
     return out, errors
+
+
+def _student_tolerance(text: str) -> "Tolerance":
+    """``--tolerance``: a relative tolerance or significant figures (an absolute one would
+    need every answer's unit)."""
+    from ..checking.tolerance import parse_tolerance
+
+    tol = parse_tolerance(text, None, "--tolerance")
+    if tol.form == "absolute" or tol.magnitude or (tol.form == "relative" and tol.value <= 0):
+        raise InputError(f"expected a relative tolerance (\"1%\") or significant figures "
+                         f"(\"3 sig\"), got {text!r}", key="--tolerance")
+    return tol
+
+
+def _ask_option(text: str | None) -> tuple[str, ...] | None:
+    """``--ask NAMES``: answer names, comma-separated."""
+    if text is None:
+        return None
+    names = tuple(dict.fromkeys(n.strip() for n in text.split(",") if n.strip()))
+    if not names or not all(n.replace("_", "").isalnum() for n in names):
+        raise InputError(f"expected answer names separated by commas (precession,min_spin), "
+                         f"got {text!r}", key="--ask")
+    return names
 
 
 def _some(paths: list[str]) -> str:
@@ -263,6 +436,9 @@ def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) ->
              "uploaded file (browser time-outs); export fewer problems per file "
              "(docs/course.md, Blackboard Learn)")
     warn("a Blackboard upload file has no feedback field: the worked answers are not in it")
+    if any(v.choices for b in made for v in b.variants):
+        warn("word answers (multiple choice in the other formats) are not in a Blackboard "
+             "file: it holds NUM questions")
 
 
 # ---- the command --------------------------------------------------------------------
@@ -283,9 +459,19 @@ def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) ->
 @click.option("-o", "--output", "out", metavar="OUT", required=True,
               help="The file to write (moodle: .xml, qti: .zip, blackboard: .txt) or, for "
                    "prairielearn, the directory to write the question directories into.")
+@click.option("--ask", "ask_text", metavar="NAMES",
+              help="The answers to ask, comma-separated (precession,min_spin); a file asks "
+                   "those of them it finds. Default: each file's `ask:`, else every answer "
+                   "of its find and expected.")
+@click.option("--tolerance", default=STUDENT_TOLERANCE, show_default=True,
+              help="What a blank accepts where the problem's tolerance is tighter than the "
+                   "significant figures the question asks for (\"1%\" or \"3 sig\").")
+@click.option("--pictures/--no-pictures", default=True, show_default=True,
+              help="Package the worked answer's picture (a released top's axis path, a "
+                   "bicycle's eigenvalues) as a PNG with the feedback (not in blackboard).")
 @click.option("--force", is_flag=True, help="Replace files of OUT that exist.")
 def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
-           force: bool) -> None:
+           ask_text: str | None, tolerance: str, pictures: bool, force: bool) -> None:
     """Export problem FILES as a question bank whose every answer is gyro's.
 
     FILES may be directories (every *.yaml and *.yml in them) or quoted globs.
@@ -297,7 +483,14 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
 
     from ..solving.paths import problem_files
 
-    made, errors = banks(files, count, seed, warn)
+    try:
+        _student_tolerance(tolerance)
+        ask = _ask_option(ask_text)
+    except InputError as err:
+        warn(str(err))
+        sys.exit(2)
+    made, errors = banks(files, count, seed, warn, ask, tolerance,
+                         pictures and fmt != "blackboard")
     for line in errors:
         warn(line)
     if not made:

@@ -119,6 +119,7 @@ class AnswerSpec:
     dimension: str | None
     symbol: str
     doc: str
+    words: tuple[str, ...] = ()  # a word answer's possible values (a bank's choices)
 
 
 # ---- words as books write them ------------------------------------------------

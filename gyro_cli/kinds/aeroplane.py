@@ -117,7 +117,8 @@ KIND = Kind(
         AnswerSpec("couple", "moment", "C", "gyroscopic couple J omega v / R"),
         AnswerSpec("precession", "rate", "omega_p", "rate of turn v / R"),
         AnswerSpec("effect", None, "effect", "what the reactive couple does: 'raises the nose "
-                   "and dips the tail' or 'dips the nose and raises the tail'"),
+                   "and dips the tail' or 'dips the nose and raises the tail'",
+                   words=V.EFFECT_WORDS["aeroplane"]),
     ),
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),

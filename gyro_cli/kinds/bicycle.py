@@ -499,7 +499,7 @@ KIND = Kind(
                    "eigenvalues at `speed` (ascending real part, then imaginary part)"),
         AnswerSpec("eigenvalues_imag", "inverse_time", "Im(s)", "imaginary parts, same order"),
         AnswerSpec("motion", None, "motion", "at `speed`: stable, capsize, weave, or capsize "
-                   "and weave (which mode grows)"),
+                   "and weave (which mode grows)", words=tuple(_MOTION)),
         AnswerSpec("M", "inertia", "M", "mass matrix, entries phi-phi, phi-delta, delta-phi, "
                    "delta-delta"),
         AnswerSpec("C1", "mass_length", "C1", "velocity matrix (times v), same order"),

@@ -510,7 +510,8 @@ KIND = Kind(
                    "magnitude (at a nutation limit), signed"),
         AnswerSpec("min_precession", "rate", "phidot_min", "precession rate at the other "
                    "nutation limit, signed"),
-        AnswerSpec("motion", None, "motion", "cusps, loops, waves, steady or sleeping"),
+        AnswerSpec("motion", None, "motion", "cusps, loops, waves, steady or sleeping",
+                   words=(*_MOTION, "sleeping")),
         AnswerSpec("spin_at_limits", "rate", "psidot", "[at theta_max, at theta_min]: spin "
                    "relative to the precessing frame at the nutation limits"),
         AnswerSpec("reversal_theta", "angle", "theta_rev", "theta where the precession passes "

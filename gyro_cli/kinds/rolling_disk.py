@@ -528,7 +528,7 @@ KIND = Kind(
         AnswerSpec("speed", "speed", "v", "free: speed of the centre"),
         AnswerSpec("precession", "rate", "Omega", "free: rate about the vertical, v / rho"),
         AnswerSpec("stability", None, "stability", "free: stable or unstable (tilt perturbed, "
-                   "linearised rolling equations)"),
+                   "linearised rolling equations)", words=("stable", "unstable")),
         AnswerSpec("growth_rate", "rate", "sigma", "free: growth rate of the unstable mode, 1/s (0 "
                    "when stable)"),
         AnswerSpec("upright_speed", "speed", "v_upright", "free: least speed at which upright "

@@ -342,7 +342,7 @@ KIND = Kind(
                    "pitching: largest angular acceleration phi (2 pi / T)^2"),
         AnswerSpec("effect", None, "effect", "what the reactive couple does to the ship: "
                    "'raises the bow and lowers the stern', 'turns the ship to starboard', "
-                   "'none' for rolling, ..."),
+                   "'none' for rolling, ...", words=V.EFFECT_WORDS["ship"]),
     ),
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),

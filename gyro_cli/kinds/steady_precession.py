@@ -820,7 +820,7 @@ KIND = Kind(
         AnswerSpec("moment", "moment", "M", "moment about the line of nodes for the motion"),
         AnswerSpec("min_spin", "rate", "psidot_min", "least spin for steady precession at theta"),
         AnswerSpec("stability", None, "stability", "stable or unstable, for each root (theta "
-                   "perturbed, gravity alone)"),
+                   "perturbed, gravity alone)", words=("stable", "unstable")),
         AnswerSpec("growth_rate", "rate", "sigma", "growth rate of the unstable mode, 1/s (0 when "
                    "stable)"),
         AnswerSpec("precession_slow", "rate", "phidot_slow", "the slow root alone (the one "

@@ -332,7 +332,7 @@ KIND = Kind(
         AnswerSpec("space_cone_angle", "angle", "|theta - beta|", "semi-angle of the space "
                    "cone (omega about H)"),
         AnswerSpec("motion", None, "motion", "direct (prolate, I > J) or retrograde (oblate, "
-                   "J > I)"),
+                   "J > I)", words=tuple(_MOTION)),
         AnswerSpec("spin_ratio", "dimensionless", "n", "psidot / phidot, the ratio of the spin "
                    "to the precession (Meriam's n), (I - J) cos(theta) / J; negative when "
                    "retrograde"),

@@ -121,6 +121,14 @@ def reactive_couple(precession: Vector, H: Vector) -> Vector:
 ENDS = {"ship": ("bow", "stern"), "aeroplane": ("nose", "tail")}
 
 
+#: every single effect `effect` names, per vehicle (a question bank's choices)
+EFFECT_WORDS = {
+    "ship": ("raises the bow and lowers the stern", "lowers the bow and raises the stern",
+             "turns the ship to port", "turns the ship to starboard", "none"),
+    "aeroplane": ("raises the nose and dips the tail", "dips the nose and raises the tail",
+                  "turns the nose to the left", "turns the nose to the right")}
+
+
 def effect(couple: Vector, vehicle: str, tol: float = 1e-12) -> str:
     """Words for what the reactive couple on the vehicle does; "none" if it is zero.
 

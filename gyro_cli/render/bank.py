@@ -30,16 +30,30 @@ NAMESPACE = uuid.uuid5(uuid.NAMESPACE_URL, "gyro_cli/question-bank")
 
 @dataclass(frozen=True)
 class Blank:
-    """One number the student types: the solver's value and how far from it is right."""
+    """One number the student types: the solver's value and how far from it is right
+    (the problem's tolerance, widened to the student tolerance where the problem's is
+    tighter than ``digits`` significant figures can meet; commands/export.py)."""
 
     key: str          # unique in its question: precession_slow, min_spin
     label: str        # what is asked, in words: "precession (slow root)"
     value: float      # the solver's answer, in ``unit``
     unit: str         # as the file asks for it ("rpm"); "" for a pure number
-    half_width: float  # |typed - value| allowed, in ``unit`` (from the problem's tolerance)
-    tolerance: str    # the tolerance as written ("1%", "3 sig", "0.01 rad/s")
-    form: str         # "relative", "sig" or "absolute"
+    half_width: float  # |typed - value| allowed, in ``unit``
+    tolerance: str    # the problem's tolerance as written ("1%", "3 sig", "0.01 rad/s")
+    form: str         # the tolerance used: "relative", "sig" or "absolute"
     fraction: float   # relative: the fraction (0.01); sig: the digits; absolute: half_width
+    accepts: str = ""  # what is accepted, in words: "within 1%"
+    digits: int = 4    # significant figures the question asks for
+
+
+@dataclass(frozen=True)
+class Choice:
+    """A word answer asked as a multiple-choice question: the kind's words for it."""
+
+    key: str                  # unique in its question, with the blanks' keys: motion
+    label: str                # "motion", "stability (slow)"
+    choices: tuple[str, ...]  # the kind's words (AnswerSpec.words), the answer among them
+    answer: str               # the solver's word
 
 
 @dataclass
@@ -52,7 +66,27 @@ class Variant:
     statement_html: str
     feedback_html: str
     blanks: list[Blank] = field(default_factory=list)
-    unasked: list[str] = field(default_factory=list)  # its word answers ("motion")
+    unasked: list[str] = field(default_factory=list)  # word answers without choices
+    choices: list[Choice] = field(default_factory=list)  # word answers asked (multiple choice)
+    figure: bytes = b""       # the worked answer's picture as PNG (b"": none)
+    figure_alt: str = ""      # what it shows, in words
+
+    @property
+    def figure_name(self) -> str:
+        """The picture's file name in a package: ``figure-1.png`` for variant 1."""
+        return f"figure-{self.number}.png"
+
+    def figure_html(self, src: str) -> str:
+        """The picture as an ``<img>`` paragraph with ``src`` ("" without a picture)."""
+        if not self.figure:
+            return ""
+        return (f'<p><img src="{escape(src)}" alt="{escape(xml_clean(self.figure_alt))}" '
+                'style="max-width: 100%"></p>')
+
+    @property
+    def asks(self) -> int:
+        """How many answers the variant asks: numbers and choices."""
+        return len(self.blanks) + len(self.choices)
 
 
 @dataclass
@@ -146,6 +180,33 @@ def _join(items: list[str]) -> str:
     if len(items) <= 1:
         return "".join(items)
     return ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def precision_text(blanks: list[Blank]) -> str:
+    """What the question asks and accepts, as a sentence: ``Give 4 significant figures;
+    answers within 1% are accepted.`` (each blank's own where they differ)."""
+    if not blanks:
+        return ""
+    digits = blanks[0].digits
+    accepted = list(dict.fromkeys(b.accepts for b in blanks if b.accepts))
+    head = f"Give {digits} significant figures"
+    if not accepted:
+        return head + "."
+    if len(accepted) == 1:
+        return f"{head}; answers {accepted[0]} are accepted."
+    each = "; ".join(f"{b.label} {b.accepts}" for b in blanks)
+    return f"{head}; accepted: {each}."
+
+
+def precision_html(blanks: list[Blank]) -> str:
+    """`precision_text` as a paragraph ("" for no blank)."""
+    text = precision_text(blanks)
+    return f'<p class="gyro-precision">{html_text(text)}</p>' if text else ""
+
+
+def choice_prompt(choice: Choice) -> str:
+    """What a multiple-choice question asks, as plain text: ``motion: choose one``."""
+    return f"{choice.label}: choose one"
 
 
 def blank_prompt(blank: Blank) -> str:

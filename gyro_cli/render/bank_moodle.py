@@ -16,8 +16,10 @@ categories as ``<question type="category">``).
 
 from __future__ import annotations
 
-from .bank import (Blank, ProblemBank, Variant, blank_prompt, cdata, html_text, number_text,
-                   xml_text)
+import base64
+
+from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, cdata, choice_prompt,
+                   html_text, number_text, xml_text)
 
 #: the category every problem's category sits in
 TOP = "$course$/top/gyro"
@@ -59,18 +61,70 @@ def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:
     # same bank into the same category must not fail on it.
     return [f"    <name><text>{xml_text(_name(bank, variant))}</text></name>",
             f'    <questiontext format="html"><text>{cdata(text)}</text></questiontext>',
-            f'    <generalfeedback format="html"><text>{cdata(variant.feedback_html)}'
-            "</text></generalfeedback>"]
+            _feedback(variant)]
+
+
+def _feedback(variant: Variant) -> str:
+    """The general feedback: the worked answer, and its picture as a file of the question
+    (``@@PLUGINFILE@@``, the file inline in base64, as Moodle's importer reads it)."""
+    html = variant.feedback_html + variant.figure_html(f"@@PLUGINFILE@@/{variant.figure_name}")
+    file = (f'<file name="{variant.figure_name}" path="/" encoding="base64">'
+            f"{base64.b64encode(variant.figure).decode('ascii')}</file>"
+            if variant.figure else "")
+    return f'    <generalfeedback format="html"><text>{cdata(html)}</text>{file}</generalfeedback>'
 
 
 def _question(bank: ProblemBank, variant: Variant) -> str:
-    if len(variant.blanks) == 1:
+    if len(variant.blanks) == 1 and not variant.choices:
         return _numerical(bank, variant, variant.blanks[0])
+    if len(variant.choices) == 1 and not variant.blanks:
+        return _multichoice(bank, variant, variant.choices[0])
     return _cloze(bank, variant)
 
 
+def _multichoice(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
+    """A word answer alone: a multiple-choice question (one right answer, shuffled)."""
+    text = variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
+    lines = ['  <question type="multichoice">', *_common(bank, variant, text),
+             "    <defaultgrade>1</defaultgrade>",
+             "    <penalty>0.3333333</penalty>",
+             "    <hidden>0</hidden>",
+             "    <single>true</single>",
+             "    <shuffleanswers>true</shuffleanswers>",
+             "    <answernumbering>abc</answernumbering>"]
+    for word in choice.choices:
+        lines += [f'    <answer fraction="{100 if word == choice.answer else 0}" format="html">',
+                  f"      <text>{cdata(html_text(word))}</text>",
+                  '      <feedback format="html"><text></text></feedback>',
+                  "    </answer>"]
+    lines.append("  </question>")
+    return "\n".join(lines)
+
+
+#: what a cloze answer must escape with a backslash (Moodle's multianswer help: } # ~ / " \\)
+_CLOZE_SPECIAL = str.maketrans({c: "\\" + c for c in '}#~/"\\'})
+
+
+def cloze_choice(choice: Choice) -> str:
+    """One cloze multiple choice: ``{1:MULTICHOICE:=cusps~loops~waves}`` (a drop-down)."""
+    return "{1:MULTICHOICE:" + "~".join(
+        ("=" if word == choice.answer else "") + xml_text(word.translate(_CLOZE_SPECIAL))
+        for word in choice.choices) + "}"
+
+
+def unit_spellings(unit: str) -> list[str]:
+    """The unit names a numerical question lists for ``unit`` (multiplier 1 each): Moodle
+    deletes every space of a response before it reads the unit, so ``12 kN m`` arrives as
+    ``12kNm``: the unit without its spaces first (the default unit), then with ``*`` and
+    ``·`` between its factors."""
+    parts = unit.split()
+    return list(dict.fromkeys(["".join(parts), "*".join(parts), "\u00b7".join(parts)]))
+
+
 def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
-    text = variant.statement_html + f"<p>{html_text(blank_prompt(blank))}:</p>"
+    prompt = blank_prompt(blank) + (f" (type the number and its unit: {_example(blank)})"
+                                    if blank.unit else "")
+    text = variant.statement_html + f"<p>{html_text(prompt)}:</p>"
     lines = ['  <question type="numerical">', *_common(bank, variant, text),
              "    <defaultgrade>1</defaultgrade>",
              "    <penalty>0.3333333</penalty>",
@@ -81,18 +135,27 @@ def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
              '      <feedback format="html"><text></text></feedback>',
              "    </answer>"]
     if blank.unit:
-        # units optional (unitgradingtype 0, showunits 0): a unit typed must be this one
-        lines += ["    <units>", "      <unit>", "        <multiplier>1</multiplier>",
-                  f"        <unit_name>{xml_text(blank.unit)}</unit_name>",
-                  "      </unit>", "    </units>",
-                  "    <unitgradingtype>0</unitgradingtype>",
-                  "    <unitpenalty>0.1</unitpenalty>",
+        # The unit typed after the number (showunits 0) must be one listed: Moodle cannot
+        # tell a missing unit from a wrong one, and with unitgradingtype 0 it takes either
+        # at full marks; graded (1) with a penalty of the whole mark, the number counts
+        # only with the unit asked.
+        units = "".join("      <unit>\n        <multiplier>1</multiplier>\n"
+                        f"        <unit_name>{xml_text(name)}</unit_name>\n      </unit>\n"
+                        for name in unit_spellings(blank.unit))
+        lines += ["    <units>\n" + units + "    </units>",
+                  "    <unitgradingtype>1</unitgradingtype>",
+                  "    <unitpenalty>1</unitpenalty>",
                   "    <showunits>0</showunits>",
                   "    <unitsleft>0</unitsleft>"]
     else:
         lines.append("    <showunits>3</showunits>")
     lines.append("  </question>")
     return "\n".join(lines)
+
+
+def _example(blank: Blank) -> str:
+    """How an answer is typed, with a made-up number: ``1.234 kN m``."""
+    return f"{'1.234567'[:blank.digits + 1]} {blank.unit}"
 
 
 def cloze_blank(blank: Blank) -> str:
@@ -104,6 +167,8 @@ def _cloze(bank: ProblemBank, variant: Variant) -> str:
     rows = "".join(f"<li>{html_text(blank.label)}: {cloze_blank(blank)}"
                    + (f" {html_text(blank.unit)}" if blank.unit else "") + "</li>"
                    for blank in variant.blanks)
+    rows += "".join(f"<li>{html_text(choice.label)}: {cloze_choice(choice)}</li>"
+                    for choice in variant.choices)
     text = variant.statement_html + f"<ul>{rows}</ul>"
     lines = ['  <question type="cloze">', *_common(bank, variant, text),
              "    <penalty>0.3333333</penalty>",

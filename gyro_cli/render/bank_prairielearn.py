@@ -5,8 +5,8 @@
 type, title, topic) and tags; the UUID is derived from the problem id, so a
 second export of the same problem updates the question instead of adding one.
 ``question.html`` shows the statement, one ``pl-number-input`` per number asked
-(its ``answers-name``, the tolerance as ``rtol``/``atol`` or as significant
-``digits``, a ``label`` and the unit as ``suffix``) and the worked answer in the
+(its ``answers-name``, the variant's half-width as ``atol`` (a param), a
+``label`` and the unit as ``suffix``) and the worked answer in the
 answer panel. ``server.py`` holds the variants computed at export (the solver's
 answers, so PrairieLearn needs no gyro) and its ``generate(data)`` picks one from
 ``data["variant_seed"]``, setting ``data["params"]`` and
@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import json
 
-from .bank import Blank, ProblemBank, html_text, number_text, stable_uuid, xml_attr
+from .bank import Blank, Choice, ProblemBank, html_text, number_text, stable_uuid, xml_attr
 
 TOPIC = "Gyroscopic motion"
 
@@ -45,17 +45,33 @@ def _blanks(bank: ProblemBank) -> list[Blank]:
 
 
 def _input(blank: Blank) -> str:
-    if blank.form == "sig":
-        tolerance = f'comparison="sigfig" digits="{int(blank.fraction)}"'
-    elif blank.form == "relative":
-        tolerance = f'comparison="relabs" rtol="{number_text(blank.fraction)}" atol="0"'
-    else:
-        tolerance = f'comparison="relabs" rtol="0" atol="{number_text(blank.half_width)}"'
+    # The half-width is each variant's own (a relative tolerance widened to what rounding
+    # to the figures asked can cost differs from variant to variant): a param.
+    tolerance = f'comparison="relabs" rtol="0" atol="{{{{params.atol.{blank.key}}}}}"'
     suffix = f' suffix="{_attr(blank.unit)}"' if blank.unit else ""
     return (f"{{{{#params.ask.{blank.key}}}}}\n"
             f'<pl-number-input answers-name="{blank.key}" {tolerance} '
             f'label="{_attr(blank.label)} =" size="20"{suffix}></pl-number-input>\n'
             f"{{{{/params.ask.{blank.key}}}}}")
+
+
+def _choices(bank: ProblemBank) -> dict[str, tuple[str, tuple[str, ...]]]:
+    """Every multiple choice some variant asks: key -> (label, the words of all variants)."""
+    seen: dict[str, tuple[str, tuple[str, ...]]] = {}
+    for variant in bank.variants:
+        for choice in variant.choices:
+            label, words = seen.get(choice.key, (choice.label, ()))
+            seen[choice.key] = (label, tuple(dict.fromkeys([*words, *choice.choices])))
+    return seen
+
+
+def _multiple_choice(key: str, label: str, words: tuple[str, ...]) -> str:
+    # Which word is right differs from variant to variant: a param ("true"/"false").
+    answers = "".join(f'\n  <pl-answer correct="{{{{params.correct.{key}.c{n}}}}}">'
+                      f"{html_text(word)}</pl-answer>" for n, word in enumerate(words, 1))
+    return (f"{{{{#params.choose.{key}}}}}\n<p>{html_text(label)}:</p>\n"
+            f'<pl-multiple-choice answers-name="{key}">{answers}\n</pl-multiple-choice>\n'
+            f"{{{{/params.choose.{key}}}}}")
 
 
 def _attr(text: str) -> str:
@@ -64,12 +80,17 @@ def _attr(text: str) -> str:
 
 def question_html(bank: ProblemBank) -> str:
     """The question's template: statement, inputs, worked answer."""
-    inputs = "\n".join(_input(b) for b in _blanks(bank))
+    inputs = "\n".join([*(_input(b) for b in _blanks(bank)),
+                        *(_multiple_choice(key, label, words)
+                          for key, (label, words) in _choices(bank).items())])
     return (f"<!-- {html_text(bank.name).replace('--', '- -')}: written by gyro export "
             "(the answers are gyro's) -->\n"
             "<pl-question-panel>\n{{{params.statement}}}\n</pl-question-panel>\n\n"
             f"{inputs}\n\n"
-            "<pl-answer-panel>\n{{{params.feedback}}}\n</pl-answer-panel>\n")
+            "<pl-answer-panel>\n{{{params.feedback}}}\n{{#params.figure}}\n"
+            '<pl-figure file-name="{{params.figure}}" directory="clientFilesQuestion" '
+            'alt="{{params.figure_alt}}"></pl-figure>\n{{/params.figure}}\n'
+            "</pl-answer-panel>\n")
 
 
 SERVER = '''"""{doc}
@@ -88,16 +109,31 @@ def generate(data):
     data["params"]["statement"] = variant["statement"]
     data["params"]["feedback"] = variant["feedback"]
     data["params"]["ask"] = {{key: True for key in variant["answers"]}}
+    data["params"]["atol"] = variant["atol"]
+    data["params"]["choose"] = {{key: True for key in variant["correct"]}}
+    data["params"]["correct"] = variant["correct"]
+    data["params"]["figure"] = variant["figure"]
+    data["params"]["figure_alt"] = variant["figure_alt"]
     for key, value in variant["answers"].items():
         data["correct_answers"][key] = value
 '''
 
 
+def _correct(choice: Choice, words: tuple[str, ...]) -> dict[str, str]:
+    """Each word of the question's choice (c1, c2, ...): "true" for this variant's."""
+    return {f"c{n}": "true" if word == choice.answer else "false"
+            for n, word in enumerate(words, 1)}
+
+
 def server_py(bank: ProblemBank) -> str:
     """The question's server.py, with every variant's statement, feedback and answers."""
+    words = {key: choices for key, (_, choices) in _choices(bank).items()}
     variants = [{"variant": v.number, "id": v.ident, "given": v.given,
                  "statement": v.statement_html, "feedback": v.feedback_html,
-                 "answers": {b.key: b.value for b in v.blanks}}
+                 "answers": {b.key: b.value for b in v.blanks},
+                 "atol": {b.key: number_text(b.half_width) for b in v.blanks},
+                 "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
+                 "figure": v.figure_name if v.figure else "", "figure_alt": v.figure_alt}
                 for v in bank.variants]
     doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
     doc = doc.replace("\\", "/").replace('"', "'")
@@ -106,12 +142,16 @@ def server_py(bank: ProblemBank) -> str:
                                                   allow_nan=False)))
 
 
-def files(banks: list[ProblemBank]) -> dict[str, str]:
-    """Relative path -> text of every file of the export."""
-    out = {}
+def files(banks: list[ProblemBank]) -> dict[str, str | bytes]:
+    """Relative path -> text (or PNG bytes) of every file of the export: a picture of the
+    worked answer is in the question's clientFilesQuestion/."""
+    out: dict[str, str | bytes] = {}
     for bank in banks:
         out[f"{bank.slug}/info.json"] = json.dumps(info(bank), indent=2,
                                                    ensure_ascii=False) + "\n"
         out[f"{bank.slug}/question.html"] = question_html(bank)
         out[f"{bank.slug}/server.py"] = server_py(bank)
+        for variant in bank.variants:
+            if variant.figure:
+                out[f"{bank.slug}/clientFilesQuestion/{variant.figure_name}"] = variant.figure
     return out

@@ -20,8 +20,8 @@ from __future__ import annotations
 import io
 import zipfile
 
-from .bank import (Blank, ProblemBank, Variant, blank_prompt, html_text, number_text,
-                   stable_uuid, xml_attr, xml_text)
+from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, choice_prompt,
+                   html_text, number_text, stable_uuid, xml_attr, xml_text)
 
 QTI_NS = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
 QTI_XSD = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2p1.xsd"
@@ -54,6 +54,8 @@ def assessment(bank: ProblemBank) -> str:
     for variant in bank.variants:
         for blank in variant.blanks:
             out.append(_item(bank, variant, blank))
+        for choice in variant.choices:
+            out.append(_choice_item(bank, variant, choice))
     out += ["    </section>", "  </assessment>", "</questestinterop>"]
     return "\n".join(out) + "\n"
 
@@ -63,9 +65,58 @@ def _field(label: str, entry: str, indent: str = "      ") -> str:
             f"<fieldentry>{xml_text(entry)}</fieldentry></qtimetadatafield>")
 
 
-def item_title(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
+def item_title(bank: ProblemBank, variant: Variant, blank: Blank | Choice) -> str:
     name = f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
-    return f"{name}: {blank.label}" if len(variant.blanks) > 1 else name
+    return f"{name}: {blank.label}" if variant.asks > 1 else name
+
+
+def _choice_item(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
+    """A word answer as a multiple-choice item (Canvas's multiple_choice_question): a
+    response_lid rendered as choices, 100 for the solver's word."""
+    text = variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
+    idents = {word: f"c{n}" for n, word in enumerate(choice.choices, 1)}
+    i = "      "
+    labels = [f'{i}        <response_label ident="{idents[word]}"><material><mattext '
+              f'texttype="text/plain">{xml_text(word)}</mattext></material></response_label>'
+              for word in choice.choices]
+    return "\n".join([
+        f'{i}<item ident="{ident(bank.id, variant.number, choice.key)}" '
+        f'title="{xml_attr(item_title(bank, variant, choice))}">',
+        f"{i}  <itemmetadata>",
+        f"{i}    <qtimetadata>",
+        _field("question_type", "multiple_choice_question", i + "      "),
+        _field("points_possible", "1.0", i + "      "),
+        _field("gyro_answer", choice.key, i + "      "),
+        f"{i}    </qtimetadata>",
+        f"{i}  </itemmetadata>",
+        f"{i}  <presentation>",
+        f'{i}    <material><mattext texttype="text/html">{xml_text(text)}</mattext></material>',
+        f'{i}    <response_lid ident="response1" rcardinality="Single">',
+        f"{i}      <render_choice>",
+        *labels,
+        f"{i}      </render_choice>",
+        f"{i}    </response_lid>",
+        f"{i}  </presentation>",
+        f"{i}  <resprocessing>",
+        f"{i}    <outcomes>",
+        f'{i}      <decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>',
+        f"{i}    </outcomes>",
+        f'{i}    <respcondition continue="Yes">',
+        f"{i}      <conditionvar><other/></conditionvar>",
+        f'{i}      <displayfeedback feedbacktype="Response" linkrefid="general_fb"/>',
+        f"{i}    </respcondition>",
+        f'{i}    <respcondition continue="No">',
+        f"{i}      <conditionvar>",
+        f'{i}        <varequal respident="response1">{idents[choice.answer]}</varequal>',
+        f"{i}      </conditionvar>",
+        f'{i}      <setvar action="Set" varname="SCORE">100</setvar>',
+        f"{i}    </respcondition>",
+        f"{i}  </resprocessing>",
+        f'{i}  <itemfeedback ident="general_fb">',
+        f'{i}    <flow_mat><material><mattext texttype="text/html">'
+        f"{xml_text(_feedback(variant))}</mattext></material></flow_mat>",
+        f"{i}  </itemfeedback>",
+        f"{i}</item>"])
 
 
 def _item(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
@@ -114,9 +165,19 @@ def _item(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
         f"{i}  </resprocessing>",
         f'{i}  <itemfeedback ident="general_fb">',
         f'{i}    <flow_mat><material><mattext texttype="text/html">'
-        f"{xml_text(variant.feedback_html)}</mattext></material></flow_mat>",
+        f"{xml_text(_feedback(variant))}</mattext></material></flow_mat>",
         f"{i}  </itemfeedback>",
         f"{i}</item>"])
+
+
+def _feedback(variant: Variant) -> str:
+    """The worked answer, and its picture: a file of the package beside the QTI file."""
+    return variant.feedback_html + variant.figure_html(variant.figure_name)
+
+
+def figures(bank: ProblemBank) -> list[tuple[str, bytes]]:
+    """The package's picture files of one problem: (path in the zip, PNG)."""
+    return [(f"{bank.slug}/{v.figure_name}", v.figure) for v in bank.variants if v.figure]
 
 
 def manifest(banks: list[ProblemBank]) -> str:
@@ -135,6 +196,7 @@ def manifest(banks: list[ProblemBank]) -> str:
         out += [f'    <resource identifier="{ident(bank.id, "resource")}" '
                 f'type="imsqti_xmlv1p2" href="{xml_attr(href)}">',
                 f'      <file href="{xml_attr(href)}"/>',
+                *(f'      <file href="{xml_attr(path)}"/>' for path, _ in figures(bank)),
                 "    </resource>"]
     out += ["  </resources>", "</manifest>"]
     return "\n".join(out) + "\n"
@@ -144,11 +206,12 @@ def package(banks: list[ProblemBank]) -> bytes:
     """The zip: ``imsmanifest.xml`` and one QTI file per problem (same bytes each time)."""
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
-        entries = [("imsmanifest.xml", manifest(banks))]
-        entries += [(file_name(bank), assessment(bank)) for bank in banks]
-        for name, text in entries:
+        entries: list[tuple[str, str | bytes]] = [("imsmanifest.xml", manifest(banks))]
+        for bank in banks:
+            entries += [(file_name(bank), assessment(bank)), *figures(bank)]
+        for name, data in entries:
             info = zipfile.ZipInfo(name, date_time=ZIP_TIME)
             info.compress_type = zipfile.ZIP_DEFLATED
             info.external_attr = 0o644 << 16
-            archive.writestr(info, text.encode("utf-8"))
+            archive.writestr(info, data.encode("utf-8") if isinstance(data, str) else data)
     return buffer.getvalue()

@@ -29,6 +29,29 @@ class Picture:
 def picture(result, prefix: str = "fig") -> Picture | None:
     """The picture of a solved problem, or None for a kind without one (or a sleeping
     top, whose axis seen from above is one point)."""
+    drawn = _figure(result)
+    if drawn is None:
+        return None
+    fig, alt = drawn
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="svg", metadata={"Date": None})
+    return Picture(inline_svg(buffer.getvalue().decode("utf-8"), alt, prefix), alt)
+
+
+def png(result) -> tuple[bytes, str] | None:
+    """The picture as PNG bytes (a file to package, for a question bank) and its alt
+    text; None as for `picture`."""
+    drawn = _figure(result)
+    if drawn is None:
+        return None
+    fig, alt = drawn
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=100, metadata={"Software": None})
+    return buffer.getvalue(), alt
+
+
+def _figure(result):
+    """The matplotlib figure of a solved problem and its alt text, or None."""
     kind = result.problem.kind.name
     if kind == "released_top":
         from .plot import figure, released_top_data
@@ -43,9 +66,7 @@ def picture(result, prefix: str = "fig") -> Picture | None:
         fig, alt = result_figure(result), _bicycle_alt(result)
     else:
         return None
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="svg", metadata={"Date": None})
-    return Picture(inline_svg(buffer.getvalue().decode("utf-8"), alt, prefix), alt)
+    return fig, alt
 
 
 # matplotlib names a marker or a clip path by a hash salted at random on each savefig

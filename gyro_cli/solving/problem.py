@@ -20,7 +20,7 @@ from ..core.given import Given
 from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
-            "tolerance", "vary", "units")
+            "tolerance", "vary", "units", "ask")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
 _TOP_KEY_SET = frozenset(TOP_KEYS)
@@ -48,6 +48,7 @@ class Problem:
     us_customary: bool = False
     units: str = "si"  # the worked answer's units: "si", or "us" (slug, ft, lbf)
     statement: str = ""  # as written, with {key} placeholders (core/statement.py)
+    ask: list[str] = field(default_factory=list)  # the answers the statement asks ([]: all)
 
     def statement_text(self) -> str:
         """The statement with each {key} filled from `given` as written ("" if none)."""
@@ -229,7 +230,26 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         vary=data.get("vary"), data=data, lines=lines, us_customary=us,
         units=_unit_system(data.get("units", "si")),
         statement=_statement(data.get("statement"), data["given"]))
+    problem.ask = _ask(data.get("ask"), problem.find, problem.expected)
     return problem
+
+
+def _ask(value: Any, find: dict[str, Any], expected: dict[str, Any]) -> list[str]:
+    """``ask``: the answers (of `find` and `expected`) that the statement asks a student
+    for; a question bank asks only these (none given: every answer)."""
+    if value is None:
+        return []
+    names = value if isinstance(value, list) else [value]
+    if not names or not all(isinstance(name, str) for name in names):
+        raise InputError(f"expected a list of answer names from find or expected, got "
+                         f"{shown(value)}", key="ask")
+    known = list(dict.fromkeys([*find, *expected]))
+    for name in names:
+        if name not in known:
+            raise InputError(f"{name!r} is not an answer of find or expected"
+                             f"{suggest(name, known)} (answers: {', '.join(known)})",
+                             key="ask")
+    return list(dict.fromkeys(names))
 
 
 def _statement(value: Any, given: dict) -> str:
