@@ -269,3 +269,39 @@ def test_item17_only_the_submitter_is_graded_and_no_solver_value_shown(run, tmp_
                 assert value not in written.replace(f"{roots[0]:.4g} rpm", ""), (fmt, value)
             assert "s001" not in written and "s002" not in written
     assert json.loads(written)["score"] == 0
+
+
+def test_item17_reveal_shows_the_submitters_own_answers_only(run, tmp_path):
+    """After the due date (--reveal) the submitter sees their own variant's answers (worked
+    by hand here), still nobody else's."""
+    out = make_set(run, tmp_path, 3, TOP)
+    roots, least = _answers(out, "s000")
+    sheet = put(tmp_path, "s.csv", f"s000,11/3,min_spin,{least * 1.2:.4g} rpm\n")
+    data = _json(run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
+                     "--student", "s000", "--reveal", "--out", tmp_path / "r.json",
+                     "--out-format", "gradescope", "--format", "json"))
+    row = next(r for r in data["rows"] if r["answer"] == "min_spin")
+    assert abs(float(row["correct"].split()[0]) / least - 1) < 1e-3
+    assert abs(row["relative_error"] - 0.2) < 1e-3
+    written = (tmp_path / "r.json").read_text()
+    assert f"{least:.4g}" in written
+    for student in ("s001", "s002"):
+        other_roots, other_least = _answers(out, student)
+        for value in other_roots + [other_least]:
+            assert f"{value:.4g}" not in written and f"{value:.4g}" not in json.dumps(data)
+
+
+def test_item17_the_submitter_is_matched_by_nfc(run, tmp_path):
+    """--student typed in NFD names the roster's NFC student, not a stranger."""
+    import unicodedata
+
+    put(tmp_path, "r.csv", "student\ncafé\n")
+    out = tmp_path / "hw"
+    assert run("vary", TOP, "--roster", tmp_path / "r.csv", "-o", out).exit_code == 0
+    rows = assignment_rows(out)
+    least = by_hand(yaml.safe_load((out / rows[0]["file"]).read_text()))[1]
+    sheet = put(tmp_path, "s.csv", f"café,11/3,min_spin,{least:.4g} rpm\n")
+    data = _json(run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
+                     "--student", unicodedata.normalize("NFD", "café"), "--format", "json"))
+    assert list(data["scores"]) == ["café"]
+    assert data["scores"]["café"]["points"] == 1
