@@ -2,8 +2,8 @@
 
 No moment acts about the centre of mass, so H is fixed in space. The motion is
 fixed by J, I (about the centre of mass) and any two of omega, omega_angle
-(beta), nutation_angle (theta), axial_rate (omega_z), precession (phidot) and
-spin (psidot). The relations, their derivation and the sign conventions are in
+(beta), nutation_angle (theta), axial_rate (omega_z), precession (phidot),
+spin (psidot) and angular_momentum (H). The relations, their derivation and the sign conventions are in
 ``gyro_cli.physics.torque_free``:
 
     tan(theta) = (I / J) tan(beta),  phidot = H / I,  psidot = (I - J) / I * omega_z.
@@ -17,19 +17,23 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
+from ..core.expr import PI, Expr, Num, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
 from ..core.prose import Prose, names, q, rel, tup, words
 from ..core.work import Work
 
 
 WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
-         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot"}
+         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot",
+         "angular_momentum": "H"}
 
 
 #: the symbols of the kind's steps, beside its Params: name -> the unit each is shown in
 UNITS = {"J": "kg*m^2", "I": "kg*m^2", "theta": "deg", "beta": "deg", "omega": "rad/s",
          "omega_z": "rad/s", "omega_e": "rad/s", "phidot": "rad/s", "psidot": "rad/s",
-         "H": "kg m^2/s"}
+         "H": "kg m^2/s", "T": "J", "T_f": "J", "omega_f": "rad/s", "I_max": "kg*m^2"}
+
+
+HALF = Num(0.5, "1/2")
 
 
 def _sym(name: str, value: float) -> Sym:
@@ -110,6 +114,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 line.note, line.note_prose = note.text, note
     _route(J, I, known, state, work)
     _results(J, I, state, work, magnitude=sense is not None)
+    if find & ENERGY_ANSWERS:
+        _energy(J, I, state, work)
 
 
 def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tuple:
@@ -175,21 +181,34 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
         work.step("omega_z", I_ * _sym("phidot", known["precession"]) * cos(theta) / J_,
                   unit="rad/s", note=(tup(rel(H, "=", I_ * phidot),
                                           rel(H * cos(theta), "=", J_ * wz)),))
+    elif angle and "angular_momentum" in known:
+        if "nutation_angle" not in known:
+            work.step("theta", atan(I_ / J_ * tan(beta)), unit="deg")
+        H = names("H")[0]
+        work.step("omega_z", _sym("H", known["angular_momentum"]) * cos(theta) / J_,
+                  unit="rad/s", note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
     elif axial and "omega" in known:
         work.step("beta", acos(wz / _sym("omega", known["omega"])), unit="deg")
-    elif "omega" in known:  # with precession
-        w, p = _sym("omega", known["omega"]), _sym("phidot", known["precession"])
+    elif "omega" in known:  # with precession or H
+        w = _sym("omega", known["omega"])
         H, omega_z, omega_e, omega, phidot = names("H omega_z omega_e omega phidot")
-        work.text(rel(H**2, "=", (J_ * omega_z)**2 + (I_ * omega_e)**2, "=",
-                      J_**2 * omega**2 + (I_**2 - J_**2) * omega**2 * sin(beta)**2),
-                  ", with ", rel(H, "=", I_ * phidot))
-        work.step("beta", asin(sqrt(((I_ * p) ** 2 - (J_ * w) ** 2) / ((I_ ** 2 - J_ ** 2)
-                                                                      * w ** 2))), unit="deg")
+        law = (rel(H**2, "=", (J_ * omega_z)**2 + (I_ * omega_e)**2, "=",
+                   J_**2 * omega**2 + (I_**2 - J_**2) * omega**2 * sin(beta)**2),)
+        if "angular_momentum" in known:
+            work.text(*law)
+            Hg: Expr = _sym("H", known["angular_momentum"])
+        else:
+            work.text(*law, ", with ", rel(H, "=", I_ * phidot))
+            Hg = I_ * _sym("phidot", known["precession"])
+        work.step("beta", asin(sqrt((Hg ** 2 - (J_ * w) ** 2) / ((I_ ** 2 - J_ ** 2)
+                                                                 * w ** 2))), unit="deg")
         work.step("omega_z", w * cos(beta), unit="rad/s", substitute=False)
-    elif axial:  # with precession
+    elif axial:  # with precession or H
         H = names("H")[0]
-        work.step("theta", acos(J_ * wz / (I_ * _sym("phidot", known["precession"]))),
-                  unit="deg", note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
+        Hg = (_sym("H", known["angular_momentum"]) if "angular_momentum" in known
+              else I_ * _sym("phidot", known["precession"]))
+        work.step("theta", acos(J_ * wz / Hg), unit="deg",
+                  note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
         work.step("beta", atan(J_ / I_ * tan(theta)), unit="deg", substitute=False)
 
 
@@ -278,6 +297,47 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
                rel(*_SPIN_OVER_PRECESSION, q(s.spin / s.precession)))
 
 
+ENERGY_ANSWERS = frozenset({"kinetic_energy", "final_rate", "final_kinetic_energy",
+                            "energy_lost", "spin_stability"})
+_T, _Tf, _Imax, _wf, _Hs = names("T T_f I_max omega_f H")
+_DISSIPATION = ("Energy dissipation (flexing parts, sloshing fuel) with no external moment: ",
+                _Hs, " is kept and ", _T, " falls to the least energy a body with this ", _Hs,
+                " can have, ", rel(_Tf, "=", _Hs ** 2 / (2 * _Imax)), ", turning about its axis "
+                "of largest moment at ", rel(_wf, "=", _Hs / _Imax),
+                " (the major-axis rule; Curtis, Orbital Mechanics, Sec. 10.5).")
+_FINAL = {"stable": (rel(_J0, ">", _I0), ": the symmetry axis is the major axis; the wobble "
+                     "dies out and the body ends spinning about ", _k, ": its spin is stable."),
+          "unstable": (rel(_I0, ">", _J0), ": the symmetry axis is the minor axis; the wobble "
+                       "grows and the body ends in a flat spin about a transverse axis: its "
+                       "spin about ", _k, " is unstable.")}
+
+
+def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
+    """Kinetic energy (Eq. 11.2), and where energy dissipation takes the motion (H kept)."""
+    work.section("Kinetic energy and energy dissipation")
+    J_, I_ = _sym("J", J), _sym("I", I)
+    wz_, we_ = _sym("omega_z", s.axial_rate), _sym("omega_e", s.transverse_rate)
+    H_, T_ = _sym("H", s.angular_momentum), _sym("T", s.kinetic_energy)
+    work.step("T", HALF * (J_ * wz_ ** 2 + I_ * we_ ** 2), unit="J", ref="Eq. 11.2")
+    work.text(*_DISSIPATION)
+    Imax = _sym("I_max", s.major_moment)
+    work.step("I_max", J_ if J > I else I_, unit="kg*m^2",
+              substitute=False, note="the larger of J and I")
+    work.step("omega_f", H_ / Imax, unit="rad/s", note="about the major axis, at the end")
+    Tf = work.step("T_f", H_ ** 2 / (2 * Imax), unit="J")
+    lost = (HALF * I_ * we_ ** 2 * (J_ - I_) / J_ if J > I
+            else HALF * J_ * wz_ ** 2 * (I_ - J_) / I_)
+    work.step(_T - _Tf, lost, unit="J", note="energy dissipated")
+    work.text(*_FINAL[s.spin_stability])
+    work.check(rel(_T - _Tf, "=", q(s.kinetic_energy - (Tf or 0.0), "J")), " from ", T_,
+               " and ", _Tf)
+    work.answer("kinetic_energy", "T", [s.kinetic_energy], "energy")
+    work.answer("final_rate", "omega_f", [s.final_rate], "rate")
+    work.answer("final_kinetic_energy", "T_f", [s.final_kinetic_energy], "energy")
+    work.answer("energy_lost", _T - _Tf, [s.energy_lost], "energy")
+    work.answer("spin_stability", "stability", [s.spin_stability], None)
+
+
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
 # keeps the same checks for its own callers
 _SIDE = "H is taken along +Z and k on the side of H"
@@ -305,6 +365,8 @@ KIND = Kind(
               "I > J, negative for J > I (or a magnitude, with precession_sense)", nonzero=True,
               reason="with J != I the body always spins relative to its precessing frame, "
               "psidot = (I - J) / I omega_z"),
+        Param("angular_momentum", "angular_momentum", "H", "magnitude of H about the centre "
+              "of mass (Hibbeler's H_G), given instead of a rate", positive=True, reason=_SIDE),
         Param("precession_sense", "word", "sense", "the books' words: direct (spin and "
               "precession the same way, I > J) or retrograde (opposite, J > I); spin is then "
               "a magnitude", choices=("direct", "retrograde"),
@@ -333,6 +395,17 @@ KIND = Kind(
                    "cone (omega about H)"),
         AnswerSpec("motion", None, "motion", "direct (prolate, I > J) or retrograde (oblate, "
                    "J > I)"),
+        AnswerSpec("kinetic_energy", "energy", "T", "kinetic energy, (1/2) (J omega_z^2 + "
+                   "I omega_e^2) (Eq. 11.2)"),
+        AnswerSpec("final_rate", "rate", "omega_f", "energy dissipation, H kept: the rate at "
+                   "the end, about the axis of largest moment, H / I_max"),
+        AnswerSpec("final_kinetic_energy", "energy", "T_f", "energy dissipation: the least "
+                   "energy for this H, H^2 / (2 I_max)"),
+        AnswerSpec("energy_lost", "energy", "T - T_f", "energy dissipation: the kinetic "
+                   "energy lost on the way to the major axis"),
+        AnswerSpec("spin_stability", None, "stability", "stable (J > I: the symmetry axis is "
+                   "the major axis) or unstable (I > J: a flat spin at the end); the "
+                   "major-axis rule"),
         AnswerSpec("spin_ratio", "dimensionless", "n", "psidot / phidot, the ratio of the spin "
                    "to the precession (Meriam's n), (I - J) cos(theta) / J; negative when "
                    "retrograde"),
