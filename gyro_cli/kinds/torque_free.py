@@ -99,6 +99,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                "J": "J" if "J" in given else "k_axial" if "k_axial" in given else "shape"
                }.get(err.key, err.key)
         raise InputError(err.message, key=f"given.{key}") from None
+    if state.omega_angle == 0:
+        _representable(state, known, steady=True)
+        _steady(J, known, state, find, work)
+        if find & ENERGY_ANSWERS:
+            _energy(J, I, state, work)
+        return
     _representable(state, known)
 
     work.section("Conventions")
@@ -137,17 +143,62 @@ def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tup
                           q(known["spin"], "rad/s")))
 
 
-def _representable(s: FreeMotion, known: dict[str, float]) -> None:
+def _representable(s: FreeMotion, known: dict[str, float], steady: bool = False) -> None:
     """Refuse data whose rates or periods overflow or underflow double precision."""
     try:
-        values = (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
-                  s.precession_period, s.body_wobble_period)
+        values = ((s.omega, s.angular_momentum, s.kinetic_energy) if steady else
+                  (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
+                   s.precession_period, s.body_wobble_period))
     except ArithmeticError:
         values = (math.nan,)
     if not all(math.isfinite(v) and v != 0 for v in values):
         raise InputError("these rates and inertias overflow or underflow double precision (a "
                          "rate, H or a period is not a finite non-zero number): check the "
                          "magnitudes and units", key=f"given.{next(iter(known))}")
+
+
+#: the answers that describe the wobble: none exists in a steady spin about the axis
+WOBBLE_ANSWERS = frozenset({"precession", "spin", "precession_period", "body_wobble_period",
+                            "motion", "spin_ratio"})
+def _steady_words() -> tuple:
+    G, H, k, w, wz, J = names("G H k omega omega_z J")
+    return ("No moment about the centre of mass ", G, ": ", H, " is fixed in space. With no "
+            "angle between ", k, " and ", w, ", the body spins steadily about its symmetry "
+            "axis: ", rel(w, "=", wz), ", ", rel(H, "=", J * wz), " along ", k, ", and nothing "
+            "wobbles or precesses.")
+
+
+_STEADY = _steady_words()
+
+
+def _steady(J: float, known: dict[str, float], s: FreeMotion, find: frozenset[str],
+            work: Work) -> None:
+    """A spin about the symmetry axis with no wobble (an angle of 0): the rates and H only."""
+    angle = next(k for k in ("omega_angle", "nutation_angle") if k in known)
+    asked = sorted(find & WOBBLE_ANSWERS)
+    if asked:
+        raise InputError(f"{asked[0]} is not defined: with {angle} = 0 the body spins steadily "
+                         "about its axis and does not wobble; ask omega, axial_rate, "
+                         "angular_momentum, kinetic_energy or the energy-dissipation answers "
+                         "(final_rate, final_kinetic_energy, energy_lost, spin_stability)",
+                         key=f"given.{angle}")
+    work.section("Conventions")
+    work.text(*_STEADY)
+    work.section("The steady spin")
+    J_ = _sym("J", J)
+    if "angular_momentum" in known:
+        work.step("omega_z", _sym("H", known["angular_momentum"]) / J_, unit="rad/s")
+    else:
+        if "omega" in known:
+            work.step("omega_z", _sym("omega", known["omega"]), unit="rad/s", substitute=False)
+        work.step("H", J_ * _sym("omega_z", s.axial_rate), unit="kg m^2/s")
+    for name, symbol, value, dimension in (
+            ("axial_rate", "omega_z", s.axial_rate, "rate"), ("omega", "omega", s.omega, "rate"),
+            ("nutation_angle", "theta", 0.0, "angle"), ("omega_angle", "beta", 0.0, "angle"),
+            ("angular_momentum", "H", s.angular_momentum, "angular_momentum"),
+            ("body_cone_angle", "beta", 0.0, "angle")):
+        work.answer(name, symbol, [value], dimension)
+    work.answer("space_cone_angle", _SPACE_CONE_ANGLE, [0.0], "angle")
 
 
 _GIVEN_SYMS = {key: names(word)[0] for key, word in WORDS.items()}
@@ -305,9 +356,9 @@ _DISSIPATION = ("Energy dissipation (flexing parts, sloshing fuel) with no exter
                 " can have, ", rel(_Tf, "=", _Hs ** 2 / (2 * _Imax)), ", turning about its axis "
                 "of largest moment at ", rel(_wf, "=", _Hs / _Imax),
                 " (the major-axis rule; Curtis, Orbital Mechanics, Sec. 10.5).")
-_FINAL = {"stable": (rel(_J0, ">", _I0), ": the symmetry axis is the major axis; the wobble "
-                     "dies out and the body ends spinning about ", _k, ": its spin is stable."),
-          "unstable": (rel(_I0, ">", _J0), ": the symmetry axis is the minor axis; the wobble "
+_FINAL = {"stable": (rel(_J0, ">", _I0), ": the symmetry axis is the major axis; any wobble "
+                     "dies out and the body ends (or stays) spinning about ", _k, ": its spin is stable."),
+          "unstable": (rel(_I0, ">", _J0), ": the symmetry axis is the minor axis; any wobble "
                        "grows and the body ends in a flat spin about a transverse axis: its "
                        "spin about ", _k, " is unstable.")}
 
@@ -341,9 +392,10 @@ def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
 # keeps the same checks for its own callers
 _SIDE = "H is taken along +Z and k on the side of H"
-_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="()", reason="at 0 the body spins steadily "
-               "about its axis, at 90 deg it turns about a transverse axis, neither wobbles; "
-               "above 90 deg take the axis k the other way (180 deg minus the angle)")
+_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
+               "a transverse axis and does not wobble; above 90 deg take the axis k the other "
+               "way (180 deg minus the angle); 0 is a steady spin about the axis, which has "
+               "rates, H and energy but no precession")
 
 KIND = Kind(
     name="torque_free",

@@ -74,7 +74,9 @@ class TorqueFreeError(ValueError):
 
 @dataclass(frozen=True)
 class FreeMotion:
-    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 < beta < 90 deg.
+    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 <= beta < 90 deg
+    (beta = 0: a spin about the axis with no wobble, whose precession and spin are limits
+    with no motion behind them).
 
     Every other quantity is worked out from these four when first asked for and kept (a
     worked answer asks for each several times; precession alone was H, so tan and hypot,
@@ -213,16 +215,22 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
     for key in keys:
         value = known[key]
         if key in ANGLE_KEYS:
-            if not 0 < value < math.pi / 2:
+            if not 0 <= value < math.pi / 2:
                 raise TorqueFreeError(
-                    f"{key} must lie strictly between 0 and 90 deg, got "
-                    f"{math.degrees(value):.6g} deg: at 0 the body spins steadily about its "
-                    "axis, at 90 deg it turns about a transverse axis, neither wobbles; above "
-                    "90 deg take the axis k the other way (180 deg minus the angle)", key)
+                    f"{key} must lie from 0 up to (not at) 90 deg, got "
+                    f"{math.degrees(value):.6g} deg: at 90 deg the body turns about a "
+                    "transverse axis and does not wobble; above 90 deg take the axis k the "
+                    "other way (180 deg minus the angle)", key)
         elif key != "spin" and not value > 0:
             raise TorqueFreeError(f"{key} must be positive (H is taken along +Z and k on the "
                                   f"side of H), got {value:.6g} (SI)", key)
     pair = set(keys)
+    steady = [k for k in keys if k in ANGLE_KEYS and known[k] == 0]
+    if steady and pair & {"spin", "precession"}:
+        other = next(iter(pair & {"spin", "precession"}))
+        raise TorqueFreeError(f"{steady[0]} = 0: the body spins steadily about its axis and "
+                              f"nothing precesses, so {other} is not defined; give the rate as "
+                              "axial_rate or omega (equal here), or angular_momentum", other)
     if pair == set(ANGLE_KEYS):
         raise TorqueFreeError("omega_angle and nutation_angle are tied by tan(theta) = (I / J) "
                               "tan(beta) and fix no rate: give one of them with a rate",
