@@ -226,12 +226,22 @@ ANGLE_FREE = frozenset({"omega_x", "omega_y", "omega_z", "omega", "kinetic_energ
 
 def _body_only_words() -> tuple:
     x, y, z, w, T, H, M = names("x y z omega T H M")
-    return ("omega given by its components along the body axes ", x, ", ", y, ", ", z,
-            " through the fixed point (or the centre of mass): ", T, ", ", H, " and the moment ",
-            M, " are taken in those axes and need no Euler angle.")
+    return (x, ", ", y, ", ", z, ": the body axes through the fixed point (or the centre of "
+            "mass); ", w, ": the body's angular velocity, given by its components along them. "
+            "The kinetic energy, the angular momentum and the moment are taken in these axes "
+            "and need no Euler angle.")
 
 
 _BODY_ONLY = _body_only_words()
+
+
+def _taken_as_zero(missing: list[str], work: Work) -> None:
+    """The body components not given (symbols, so written as maths)."""
+    if missing:
+        pieces: list = ["not given, taken as zero: "]
+        for n, key in enumerate(missing):
+            pieces += [", "] * bool(n) + [names(key)[0]]
+        work.text(*pieces)
 
 
 def _without_angles(given: Given, find: frozenset[str], sequence: str, work: Work) -> None:
@@ -246,9 +256,7 @@ def _without_angles(given: Given, find: frozenset[str], sequence: str, work: Wor
     work.section("Conventions")
     work.text(*_BODY_ONLY)
     work.section("Angular velocity in body axes (given)")
-    missing = [k for k in BODY_OMEGA_KEYS if k not in given]
-    if missing:
-        work.text(f"not given, taken as zero: {', '.join(missing)}")
+    _taken_as_zero([k for k in BODY_OMEGA_KEYS if k not in given], work)
     omega = tuple(given.get(k, 0.0) for k in BODY_OMEGA_KEYS)
     wx, wy, wz = (_sym(n, v) for n, v in zip(BODY_OMEGA_KEYS, omega))
     work.step(_W_ABS, sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
@@ -444,6 +452,10 @@ def _accel_words() -> tuple:
 
 
 _ALPHA_SAME, _EULER = _accel_words()
+_PQR_DOT = tuple((sym,) for sym in names("pdot qdot rdot"))
+_WITH_PRODUCTS = (names("I")[0] * names("alpha")[0]
+                  + cross(names("omega")[0], names("I")[0] * names("omega")[0]),
+                  ", with the products of inertia")
 _A_ABS, _M_ABS = absolute(names("alpha")[0]), absolute(names("M")[0])
 
 
@@ -479,19 +491,19 @@ def _euler_acceleration(given: Given, sequence: str, a1: float | None, a2: float
         y1, y2, y3 = (_sym(n, v) for n, v in zip(("yawdot", "pitchdot", "rolldot"), rates))
         d1, d2, d3 = (_sym(n, v) for n, v in zip(("yawddot", "pitchddot", "rollddot"), accels))
         sq, cq, sr, cr = _sin(pi_), _cos(pi_), _sin(ro), _cos(ro)
-        work.step("alpha_x", d3 - d1 * sq - y1 * y2 * cq, unit="rad/s^2", note="pdot")
+        work.step("alpha_x", d3 - d1 * sq - y1 * y2 * cq, unit="rad/s^2", note=_PQR_DOT[0])
         work.step("alpha_y", d2 * cr - y2 * y3 * sr + d1 * cq * sr - y1 * y2 * sq * sr
-                  + y1 * y3 * cq * cr, unit="rad/s^2", note="qdot")
+                  + y1 * y3 * cq * cr, unit="rad/s^2", note=_PQR_DOT[1])
         work.step("alpha_z", -d2 * sr - y2 * y3 * cr + d1 * cq * cr - y1 * y2 * sq * cr
-                  - y1 * y3 * cq * sr, unit="rad/s^2", note="rdot")
+                  - y1 * y3 * cq * sr, unit="rad/s^2", note=_PQR_DOT[2])
     if sequence == "zxz" and a1 is not None:
         ph = _sym("phi", a1)
         p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
         d1, d2, d3 = (_sym(n, v) for n, v in zip(("phiddot", "thetaddot", "psiddot"), accels))
         th = _sym("theta", a2)
         st, ct, sf, cf = _sin(th), _cos(th), _sin(ph), _cos(ph)
-        work.section("Angular acceleration in the fixed frame (the fixed components of omega "
-                     "differentiated)")
+        work.section("Angular acceleration in the fixed frame (the fixed components of ",
+                     _OMEGA0, " differentiated)")
         work.step("alpha_X", d2 * cf - p2 * p1 * sf + d3 * st * sf + p3 * p2 * ct * sf
                   + p3 * p1 * st * cf, unit="rad/s^2")
         work.step("alpha_Y", d2 * sf + p2 * p1 * cf - d3 * st * cf - p3 * p2 * ct * cf
@@ -507,9 +519,7 @@ def _given_alpha(given: Given, sequence: str, work: Work) -> tuple[float, float,
         raise InputError(f"{wrong[0]} goes with the Euler rates; with omega_x, omega_y, omega_z "
                          "give alpha_x, alpha_y, alpha_z", key=f"given.{wrong[0]}")
     work.section("Angular acceleration in body axes (given)")
-    missing = [k for k in BODY_ALPHA_KEYS if k not in given]
-    if missing:
-        work.text(f"not given, taken as zero: {', '.join(missing)}")
+    _taken_as_zero([k for k in BODY_ALPHA_KEYS if k not in given], work)
     return tuple(given.get(k, 0.0) for k in BODY_ALPHA_KEYS)  # type: ignore[return-value]
 
 
@@ -527,8 +537,9 @@ def _alpha_answers(alpha, R, work: Work) -> None:
                 work.step(name, value=value, unit="rad/s^2", note=("fixed-frame component of ",
                                                                    names("R")[0] * names("alpha")[0]))
             work.answer(name, name, [value], "angular_acceleration")
-        work.check(rel(names("R")[0] * names("alpha_xyz")[0], "=",
-                       tup(*(qv(v, "rad/s^2") for v in fixed))))
+        work.check(*names("R"), " times the body components ",
+                   tup(*names("alpha_x alpha_y alpha_z")), ": ",
+                   tup(*(qv(v, "rad/s^2") for v in fixed)))
 
 
 def _moment(matrix, omega, alpha, R, work: Work) -> None:
@@ -547,8 +558,7 @@ def _moment(matrix, omega, alpha, R, work: Work) -> None:
                       ref="Euler's equations")
     else:
         for n, value in zip("xyz", M):
-            work.step(f"M_{n}", value=value, unit="N m", note="I alpha + omega x (I omega), "
-                      "with the products of inertia")
+            work.step(f"M_{n}", value=value, unit="N m", note=_WITH_PRODUCTS)
     Ms = [_sym(f"M_{n}", v) for n, v in zip("xyz", M)]
     work.step(_M_ABS, sqrt(Ms[0] ** 2 + Ms[1] ** 2 + Ms[2] ** 2), unit="N m", substitute=False)
     for n, value in zip("xyz", M):

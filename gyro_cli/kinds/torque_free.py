@@ -184,7 +184,10 @@ def _steady(J: float, known: dict[str, float], s: FreeMotion, find: frozenset[st
                          key=f"given.{angle}")
     work.section("Conventions")
     work.text(*_STEADY)
+    work.text(*_INERTIA)
     work.section("The steady spin")
+    work.text(rel(_be, "=", _th, "=", q(0.0, "deg", exact=True)), ": ", _k, ", ", _omega,
+              " and ", _H, " lie along one line")
     J_ = _sym("J", J)
     if "angular_momentum" in known:
         work.step("omega_z", _sym("H", known["angular_momentum"]) / J_, unit="rad/s")
@@ -369,11 +372,14 @@ def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
     J_, I_ = _sym("J", J), _sym("I", I)
     wz_, we_ = _sym("omega_z", s.axial_rate), _sym("omega_e", s.transverse_rate)
     H_, T_ = _sym("H", s.angular_momentum), _sym("T", s.kinetic_energy)
-    work.step("T", HALF * (J_ * wz_ ** 2 + I_ * we_ ** 2), unit="J", ref="Eq. 11.2")
-    work.text(*_DISSIPATION)
+    if s.omega_angle == 0:  # a steady spin: omega_e = 0
+        work.step("T", HALF * J_ * wz_ ** 2, unit="J", ref="Eq. 11.2")
+    else:
+        work.step("T", HALF * (J_ * wz_ ** 2 + I_ * we_ ** 2), unit="J", ref="Eq. 11.2")
     Imax = _sym("I_max", s.major_moment)
     work.step("I_max", J_ if J > I else I_, unit="kg*m^2",
-              substitute=False, note="the larger of J and I")
+              substitute=False, note=("the larger of ", _J0, " and ", _I0))
+    work.text(*_DISSIPATION)
     work.step("omega_f", H_ / Imax, unit="rad/s", note="about the major axis, at the end")
     Tf = work.step("T_f", H_ ** 2 / (2 * Imax), unit="J")
     lost = (HALF * I_ * we_ ** 2 * (J_ - I_) / J_ if J > I
