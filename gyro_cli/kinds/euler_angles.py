@@ -930,9 +930,10 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "example": {
         "given": {"phi": "30 deg", "theta": "60 deg", "psi": "45 deg", "phi_rate": "2 rad/s",
-                  "theta_rate": "1 rad/s", "psi_rate": "10 rad/s", "I": "0.02 kg m^2",
-                  "J": "0.03 kg m^2"},
+                  "theta_rate": "1 rad/s", "psi_rate": "10 rad/s",
+                  "phi_acceleration": "0.5 rad/s^2", "I": "0.02 kg m^2", "J": "0.03 kg m^2"},
         "find": {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s",
-                 "kinetic_energy": "J", "angular_momentum": "kg*m^2/s"},
+                 "kinetic_energy": "J", "angular_momentum": "kg*m^2/s",
+                 "angular_acceleration": "rad/s^2", "moment": "N*m"},
         "vary": {"theta": "[20 deg, 80 deg]"}}},
 )

@@ -473,6 +473,6 @@ KIND = Kind(
         "given": {"J": "100 kg m^2", "I_cg": "125 kg m^2", "nutation_angle": "20 deg",
                   "spin": "1 rpm"},
         "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",
-                 "motion": None},
+                 "motion": None, "kinetic_energy": "J", "spin_stability": None},
         "vary": {"nutation_angle": "[10 deg, 40 deg]"}}},
 )
