@@ -267,7 +267,7 @@ def _without_angles(given: Given, find: frozenset[str], sequence: str, work: Wor
     if find & ACCEL_ANSWERS or any(k in given for k in BODY_ALPHA_KEYS):
         alpha = _given_alpha(given, sequence, work)
         _alpha_answers(alpha, None, work)
-    _inertia_answers(given, find, omega, alpha, None, work)  # type: ignore[arg-type]
+    _inertia_answers(given, find, omega, alpha, None, work)
 
 
 INERTIA_ONLY = frozenset({"I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx", "principal_moments"})
