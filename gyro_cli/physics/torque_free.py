@@ -274,7 +274,8 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
             by = "axial_rate" if "axial_rate" in known else "spin"
             raise TorqueFreeError(f"omega = {omega:.6g} rad/s must exceed the axial rate "
                                   f"omega_z = {axial:.6g} rad/s (from {by}): omega_z is one "
-                                  "component of omega, equal only without wobble", "omega")
+                                  "component of omega, equal only without wobble (a spin "
+                                  "with no wobble: give omega_angle: 0 deg)", "omega")
         return FreeMotion(J, I, axial, math.acos(axial / omega))
     by = "angular_momentum" if "angular_momentum" in known else "precession"
     H = _momentum(I, known)
