@@ -269,7 +269,7 @@ BAD = {
                     ["given.nutation_angle", "tied", "fix no rate"]),
     "rates tied": (tf("axial_rate: 10 rad/s\n  spin: 6 rad/s"), ["given.spin", "tied"]),
     "theta 90": (tf("nutation_angle: 90 deg\n  omega: 1 rad/s"),
-                 ["given.nutation_angle", "expected 0 deg < nutation_angle < 90 deg", "got '90 deg'"]),
+                 ["given.nutation_angle", "expected 0 deg <= nutation_angle < 90 deg", "got '90 deg'"]),
     "theta over 90": (tf("nutation_angle: 120 deg\n  omega: 1 rad/s"),
                       ["given.nutation_angle", "180 deg minus"]),
     "beta 0": (tf("omega_angle: 0 deg\n  omega: 1 rad/s"),

@@ -21,7 +21,7 @@ from ..core.given import Given
 from ..physics import euler_kinematics as ek
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
-from ..core.prose import dot, fn, mat, names, prime, rel, total, tup
+from ..core.prose import cross, deriv, dot, fn, mat, names, prime, rel, total, tup
 from ..core.prose import q as qv
 from ..core.work import Work, num
 
@@ -46,6 +46,10 @@ def _sym(name: str, value: float) -> Sym:
         unit = "kg m^2"
     elif name.startswith("H_"):
         unit = "kg m^2/s"
+    elif name.startswith("M_"):
+        unit = "N m"
+    elif name.startswith("alpha_") or name.endswith("ddot"):
+        unit = "rad/s^2"
     else:
         unit = "rad/s"
     return Sym(name, value, unit)
@@ -117,7 +121,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     sequence = given.word("sequence", "zxz")
     first, second, third = ANGLES[sequence]
     other = ANGLES["zyx" if sequence == "zxz" else "zxz"]
-    for key in other + tuple(f"{k}_rate" for k in other):
+    for key in other + tuple(f"{k}_{w}" for k in other for w in ("rate", "acceleration")):
         if key in given:
             raise InputError(f"{key} belongs to `sequence: {'zyx' if sequence == 'zxz' else 'zxz'}`"
                              f"; with sequence {sequence} give {first}, {second}, {third} and "
@@ -134,6 +138,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if _inertia(given, find, work) is None:
             raise InputError(f"{sorted(find)[0]} needs the body's inertia: give particles, "
                              "I_x, I_y, I_z, or I and J", key="given.particles")
+        return
+    if (second not in given and third not in given
+            and any(k in given for k in BODY_OMEGA_KEYS)
+            and not any(f"{k}_{w}" in given for k in (first, second, third)
+                        for w in ("rate", "acceleration"))):
+        _without_angles(given, find, sequence, work)
         return
     for key in (second, third):
         if key not in given:
@@ -170,6 +180,22 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     for name, value in zip((first, second, third), rates):
         work.answer(f"{name}_rate", f"{SYMBOLS[name]}dot", [value], "rate")
 
+    alpha = None
+    if find & ACCEL_ANSWERS or any(k in given for k in ACCEL_KEYS[sequence] + BODY_ALPHA_KEYS):
+        if any(k in given for k in rate_keys_of(sequence)):
+            alpha = _euler_acceleration(given, sequence, a1, a2, a3, rates, work)
+        else:
+            alpha = _given_alpha(given, sequence, work)
+        _alpha_answers(alpha, R, work)
+    _inertia_answers(given, find, omega, alpha, R, work)
+
+
+def rate_keys_of(sequence: str) -> tuple[str, ...]:
+    return tuple(f"{k}_rate" for k in ANGLES[sequence])
+
+
+def _inertia_answers(given: Given, find: frozenset[str], omega, alpha, R, work: Work) -> None:
+    """The inertia, T and H from omega, and the moment Euler's equations ask for."""
     matrix = _inertia(given, find, work)
     if matrix is None:
         asked = sorted(n for n in find if n in NEEDS_INERTIA)
@@ -182,13 +208,74 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if "omega_H_angle" in find and "omega_H_angle" not in work.answers:
         raise InputError("omega_H_angle is undefined here: H = 0 (the body is at rest, or turns "
                          "about a line on which all its mass lies)", key="find.omega_H_angle")
+    if alpha is not None:
+        _moment(matrix, omega, alpha, R, work)
+
+
+BODY_OMEGA_KEYS = ("omega_x", "omega_y", "omega_z")
+BODY_ALPHA_KEYS = ("alpha_x", "alpha_y", "alpha_z")
+ACCEL_KEYS = {seq: tuple(f"{k}_acceleration" for k in keys) for seq, keys in ANGLES.items()}
+MOMENT_ANSWERS = frozenset({"M_x", "M_y", "M_z", "M_X", "M_Y", "M_Z", "moment"})
+ACCEL_ANSWERS = frozenset({"alpha_x", "alpha_y", "alpha_z", "alpha_X", "alpha_Y", "alpha_Z",
+                           "angular_acceleration"}) | MOMENT_ANSWERS
+#: what body components of omega (and alpha) answer with no Euler angle at all
+ANGLE_FREE = frozenset({"omega_x", "omega_y", "omega_z", "omega", "kinetic_energy", "H_x", "H_y",
+                        "H_z", "angular_momentum", "omega_H_angle", "alpha_x", "alpha_y",
+                        "alpha_z", "angular_acceleration", "M_x", "M_y", "M_z", "moment"})
+
+
+def _body_only_words() -> tuple:
+    x, y, z, w, T, H, M = names("x y z omega T H M")
+    return (x, ", ", y, ", ", z, ": the body axes through the fixed point (or the centre of "
+            "mass); ", w, ": the body's angular velocity, given by its components along them. "
+            "The kinetic energy, the angular momentum and the moment are taken in these axes "
+            "and need no Euler angle.")
+
+
+_BODY_ONLY = _body_only_words()
+
+
+def _taken_as_zero(missing: list[str], work: Work) -> None:
+    """The body components not given (symbols, so written as maths)."""
+    if missing:
+        pieces: list = ["not given, taken as zero: "]
+        for n, key in enumerate(missing):
+            pieces += [", "] * bool(n) + [names(key)[0]]
+        work.text(*pieces)
+
+
+def _without_angles(given: Given, find: frozenset[str], sequence: str, work: Work) -> None:
+    """T, H, alpha and M from the body components of omega (and alpha) alone: no angle is
+    needed for what is taken in body axes."""
+    first, second, third = ANGLES[sequence]
+    needing = sorted(find - ANGLE_FREE - INERTIA_ONLY)
+    if needing:
+        raise InputError(f"{needing[0]} needs the angles {second} and {third} (with omega_x, "
+                         "omega_y, omega_z alone only body-axis answers are found: T, H, alpha, "
+                         "M)", key=f"given.{second}")
+    work.section("Conventions")
+    work.text(*_BODY_ONLY)
+    work.section("Angular velocity in body axes (given)")
+    _taken_as_zero([k for k in BODY_OMEGA_KEYS if k not in given], work)
+    omega = tuple(given.get(k, 0.0) for k in BODY_OMEGA_KEYS)
+    wx, wy, wz = (_sym(n, v) for n, v in zip(BODY_OMEGA_KEYS, omega))
+    work.step(_W_ABS, sqrt(wx ** 2 + wy ** 2 + wz ** 2), unit="rad/s", substitute=False)
+    for name, value in zip(BODY_OMEGA_KEYS, omega):
+        work.answer(name, name, [value], "rate")
+    work.answer("omega", _W_ABS, [ek.norm(omega)], "rate")
+    alpha = None
+    if find & ACCEL_ANSWERS or any(k in given for k in BODY_ALPHA_KEYS):
+        alpha = _given_alpha(given, sequence, work)
+        _alpha_answers(alpha, None, work)
+    _inertia_answers(given, find, omega, alpha, None, work)
 
 
 INERTIA_ONLY = frozenset({"I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx", "principal_moments"})
-FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z"}
+FIXED_FRAME_ANSWERS = {"omega_X", "omega_Y", "omega_Z", "H_X", "H_Y", "H_Z", "alpha_X",
+                       "alpha_Y", "alpha_Z", "M_X", "M_Y", "M_Z"}
 NEEDS_INERTIA = {"kinetic_energy", "H_x", "H_y", "H_z", "H_X", "H_Y", "H_Z", "angular_momentum",
                  "omega_H_angle", "I_x", "I_y", "I_z", "I_xy", "I_yz", "I_zx",
-                 "principal_moments"}
+                 "principal_moments", "M_x", "M_y", "M_z", "M_X", "M_Y", "M_Z", "moment"}
 
 
 def _drop_empty_body_section(work: Work) -> None:
@@ -349,6 +436,145 @@ def _fixed_frame(sequence: str, R, omega, fixed, rates, a1: float, a2: float, a3
         work.text(rel(*_ATTITUDE, mat(*((qv(v) for v in row) for row in R))))
         for name, value in zip(("omega_X", "omega_Y", "omega_Z"), fixed):
             work.step(name, value=value, unit="rad/s")
+
+
+# ---- angular acceleration and the moment (Euler's equations) ------------------
+
+def _accel_words() -> tuple:
+    a, w, M, H, I_ = names("alpha omega M H I")
+    same = (rel(a, "=", deriv(w)), ": the same vector whether the derivative is taken in the "
+            "fixed frame or in the body (", rel(cross(w, w), "=", 0), "), so its body components are the "
+            "time derivatives of Eq. 11.8's")
+    euler = (rel(M, "=", deriv(H), "=", I_ * a + cross(w, I_ * w)),
+             " in body axes, in which ", I_, " is constant: Euler's equations (about the fixed "
+             "point, or the centre of mass)")
+    return same, euler
+
+
+_ALPHA_SAME, _EULER = _accel_words()
+_PQR_DOT = tuple((sym,) for sym in names("pdot qdot rdot"))
+_WITH_PRODUCTS = (names("I")[0] * names("alpha")[0]
+                  + cross(names("omega")[0], names("I")[0] * names("omega")[0]),
+                  ", with the products of inertia")
+_A_ABS, _M_ABS = absolute(names("alpha")[0]), absolute(names("M")[0])
+
+
+def _euler_acceleration(given: Given, sequence: str, a1: float | None, a2: float, a3: float,
+                        rates, work: Work) -> tuple[float, float, float]:
+    """alpha in body axes from the Euler angles' rates and accelerations."""
+    first, second, third = ANGLES[sequence]
+    keys = ACCEL_KEYS[sequence]
+    if any(k in given for k in BODY_ALPHA_KEYS):
+        key = next(k for k in BODY_ALPHA_KEYS if k in given)
+        raise InputError(f"{key} goes with omega_x, omega_y, omega_z; with the Euler rates give "
+                         f"the Euler accelerations {', '.join(keys)}", key=f"given.{key}")
+    accels = tuple(given.get(k, 0.0) for k in keys)
+    work.section("Angular acceleration in body axes (Eq. 11.8 differentiated)")
+    missing = [k for k in keys if k not in given]
+    if missing:
+        work.text(f"not given, taken as zero: {', '.join(missing)}")
+    work.text(*_ALPHA_SAME)
+    if sequence == "zxz":
+        alpha = ek.body_accel_zxz(a2, a3, rates, accels)
+        th, ps = _sym("theta", a2), _sym("psi", a3)
+        p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
+        d1, d2, d3 = (_sym(n, v) for n, v in zip(("phiddot", "thetaddot", "psiddot"), accels))
+        st, ct, sp, cp = _sin(th), _cos(th), _sin(ps), _cos(ps)
+        work.step("alpha_x", d1 * st * sp + p1 * p2 * ct * sp + p1 * p3 * st * cp + d2 * cp
+                  - p2 * p3 * sp, unit="rad/s^2")
+        work.step("alpha_y", d1 * st * cp + p1 * p2 * ct * cp - p1 * p3 * st * sp - d2 * sp
+                  - p2 * p3 * cp, unit="rad/s^2")
+        work.step("alpha_z", d1 * ct - p1 * p2 * st + d3, unit="rad/s^2")
+    else:
+        alpha = ek.body_accel_zyx(a2, a3, rates, accels)
+        pi_, ro = _sym("pitch", a2), _sym("roll", a3)
+        y1, y2, y3 = (_sym(n, v) for n, v in zip(("yawdot", "pitchdot", "rolldot"), rates))
+        d1, d2, d3 = (_sym(n, v) for n, v in zip(("yawddot", "pitchddot", "rollddot"), accels))
+        sq, cq, sr, cr = _sin(pi_), _cos(pi_), _sin(ro), _cos(ro)
+        work.step("alpha_x", d3 - d1 * sq - y1 * y2 * cq, unit="rad/s^2", note=_PQR_DOT[0])
+        work.step("alpha_y", d2 * cr - y2 * y3 * sr + d1 * cq * sr - y1 * y2 * sq * sr
+                  + y1 * y3 * cq * cr, unit="rad/s^2", note=_PQR_DOT[1])
+        work.step("alpha_z", -d2 * sr - y2 * y3 * cr + d1 * cq * cr - y1 * y2 * sq * cr
+                  - y1 * y3 * cq * sr, unit="rad/s^2", note=_PQR_DOT[2])
+    if sequence == "zxz" and a1 is not None:
+        ph = _sym("phi", a1)
+        p1, p2, p3 = (_sym(n, v) for n, v in zip(("phidot", "thetadot", "psidot"), rates))
+        d1, d2, d3 = (_sym(n, v) for n, v in zip(("phiddot", "thetaddot", "psiddot"), accels))
+        th = _sym("theta", a2)
+        st, ct, sf, cf = _sin(th), _cos(th), _sin(ph), _cos(ph)
+        work.section("Angular acceleration in the fixed frame (the fixed components of ",
+                     _OMEGA0, " differentiated)")
+        work.step("alpha_X", d2 * cf - p2 * p1 * sf + d3 * st * sf + p3 * p2 * ct * sf
+                  + p3 * p1 * st * cf, unit="rad/s^2")
+        work.step("alpha_Y", d2 * sf + p2 * p1 * cf - d3 * st * cf - p3 * p2 * ct * cf
+                  + p3 * p1 * st * sf, unit="rad/s^2")
+        work.step("alpha_Z", d1 + d3 * ct - p3 * p2 * st, unit="rad/s^2")
+    return alpha
+
+
+def _given_alpha(given: Given, sequence: str, work: Work) -> tuple[float, float, float]:
+    """alpha from its body components as given (missing ones zero)."""
+    wrong = [k for k in ACCEL_KEYS[sequence] if k in given]
+    if wrong:
+        raise InputError(f"{wrong[0]} goes with the Euler rates; with omega_x, omega_y, omega_z "
+                         "give alpha_x, alpha_y, alpha_z", key=f"given.{wrong[0]}")
+    work.section("Angular acceleration in body axes (given)")
+    _taken_as_zero([k for k in BODY_ALPHA_KEYS if k not in given], work)
+    return tuple(given.get(k, 0.0) for k in BODY_ALPHA_KEYS)  # type: ignore[return-value]
+
+
+def _alpha_answers(alpha, R, work: Work) -> None:
+    ax, ay, az = (_sym(n, v) for n, v in zip(BODY_ALPHA_KEYS, alpha))
+    work.step(_A_ABS, sqrt(ax ** 2 + ay ** 2 + az ** 2), unit="rad/s^2", substitute=False)
+    for name, value in zip(BODY_ALPHA_KEYS, alpha):
+        work.answer(name, name, [value], "angular_acceleration")
+    work.answer("angular_acceleration", _A_ABS, [ek.norm(alpha)], "angular_acceleration")
+    if R is not None:
+        fixed = ek.matvec(R, alpha)
+        stated = {step.symbol for section in work.sections for step in section.steps}
+        for name, value in zip(("alpha_X", "alpha_Y", "alpha_Z"), fixed):
+            if name not in stated:
+                work.step(name, value=value, unit="rad/s^2", note=("fixed-frame component of ",
+                                                                   names("R")[0] * names("alpha")[0]))
+            work.answer(name, name, [value], "angular_acceleration")
+        work.check(*names("R"), " times the body components ",
+                   tup(*names("alpha_x alpha_y alpha_z")), ": ",
+                   tup(*(qv(v, "rad/s^2") for v in fixed)))
+
+
+def _moment(matrix, omega, alpha, R, work: Work) -> None:
+    """M = I alpha + omega x (I omega) in body axes (Euler's equations), and in the fixed
+    frame R M."""
+    M = ek.euler_moment(matrix, omega, alpha)
+    work.section("Moment the motion needs: Euler's equations")
+    work.text(*_EULER)
+    w = [_sym(f"omega_{n}", v) for n, v in zip("xyz", omega)]
+    a = [_sym(f"alpha_{n}", v) for n, v in zip("xyz", alpha)]
+    if ek.is_diagonal(matrix):
+        I_ = [_sym(f"I_{n}", matrix[k][k]) for k, n in enumerate("xyz")]
+        for k, n in enumerate("xyz"):
+            i, j = (k + 1) % 3, (k + 2) % 3
+            work.step(f"M_{n}", I_[k] * a[k] - (I_[i] - I_[j]) * w[i] * w[j], unit="N m",
+                      ref="Euler's equations")
+    else:
+        for n, value in zip("xyz", M):
+            work.step(f"M_{n}", value=value, unit="N m", note=_WITH_PRODUCTS)
+    Ms = [_sym(f"M_{n}", v) for n, v in zip("xyz", M)]
+    work.step(_M_ABS, sqrt(Ms[0] ** 2 + Ms[1] ** 2 + Ms[2] ** 2), unit="N m", substitute=False)
+    for n, value in zip("xyz", M):
+        work.answer(f"M_{n}", f"M_{n}", [value], "moment")
+    work.answer("moment", _M_ABS, [ek.norm(M)], "moment")
+    w0, a0, M0, I0 = names("omega alpha M I")
+    work.check(rel(dot(M0, w0), "=", dot(w0, I0 * a0), "=", deriv(names("T")[0])),
+               " (the gyroscopic part does no work): ",
+               rel(qv(ek.dot(M, omega), "W"), "=", qv(ek.dot(omega, ek.matvec(matrix, alpha)),
+                                                      "W")))
+    if R is not None:
+        fixed = ek.matvec(R, M)
+        for name, value in zip(("M_X", "M_Y", "M_Z"), fixed):
+            work.step(name, value=value, unit="N m", note=("fixed-frame component of ",
+                                                           names("R")[0] * names("M")[0]))
+            work.answer(name, name, [value], "moment")
 
 
 # ---- inertia ----------------------------------------------------------------
@@ -626,6 +852,17 @@ KIND = Kind(
         Param("omega_x", "rate", "omega_x", "inverse: body component of omega along x (p)"),
         Param("omega_y", "rate", "omega_y", "inverse: along y (q)"),
         Param("omega_z", "rate", "omega_z", "inverse: along z (r)"),
+        Param("phi_acceleration", "angular_acceleration", "phiddot", "zxz: rate of change of "
+              "phi_rate (absent: 0)"),
+        Param("theta_acceleration", "angular_acceleration", "thetaddot", "zxz: of theta_rate"),
+        Param("psi_acceleration", "angular_acceleration", "psiddot", "zxz: of psi_rate"),
+        Param("yaw_acceleration", "angular_acceleration", "yawddot", "zyx: of yaw_rate"),
+        Param("pitch_acceleration", "angular_acceleration", "pitchddot", "zyx: of pitch_rate"),
+        Param("roll_acceleration", "angular_acceleration", "rollddot", "zyx: of roll_rate"),
+        Param("alpha_x", "angular_acceleration", "alpha_x", "with omega_x, omega_y, omega_z: "
+              "body component of the angular acceleration along x (absent: 0)"),
+        Param("alpha_y", "angular_acceleration", "alpha_y", "along y"),
+        Param("alpha_z", "angular_acceleration", "alpha_z", "along z"),
         Param("I_x", "inertia", "I_x", "moment of inertia about body x through the fixed point",
               positive=True),
         Param("I_y", "inertia", "I_y", "about body y", positive=True),
@@ -658,6 +895,23 @@ KIND = Kind(
         AnswerSpec("angular_momentum", "angular_momentum", "|H|", "magnitude of H"),
         AnswerSpec("omega_H_angle", "angle", "angle(omega, H)", "angle between omega and H "
                    "(zero only about a principal axis)"),
+        AnswerSpec("alpha_x", "angular_acceleration", "alpha_x", "angular acceleration, body "
+                   "component along i (Eq. 11.8 differentiated)"),
+        AnswerSpec("alpha_y", "angular_acceleration", "alpha_y", "along j"),
+        AnswerSpec("alpha_z", "angular_acceleration", "alpha_z", "along k"),
+        AnswerSpec("alpha_X", "angular_acceleration", "alpha_X", "fixed-frame component along I"),
+        AnswerSpec("alpha_Y", "angular_acceleration", "alpha_Y", "along J"),
+        AnswerSpec("alpha_Z", "angular_acceleration", "alpha_Z", "along K"),
+        AnswerSpec("angular_acceleration", "angular_acceleration", "|alpha|", "magnitude of "
+                   "the angular acceleration"),
+        AnswerSpec("M_x", "moment", "M_x", "moment the motion needs, M = dH/dt = I alpha + "
+                   "omega x (I omega) (Euler's equations), body x"),
+        AnswerSpec("M_y", "moment", "M_y", "body y"),
+        AnswerSpec("M_z", "moment", "M_z", "body z"),
+        AnswerSpec("M_X", "moment", "M_X", "fixed frame, along I"),
+        AnswerSpec("M_Y", "moment", "M_Y", "along J"),
+        AnswerSpec("M_Z", "moment", "M_Z", "along K"),
+        AnswerSpec("moment", "moment", "|M|", "magnitude of the moment"),
         AnswerSpec("I_x", "inertia", "I_x", "moment of inertia about body x (Eq. 11.3)"),
         AnswerSpec("I_y", "inertia", "I_y", "about body y"),
         AnswerSpec("I_z", "inertia", "I_z", "about body z"),
@@ -676,9 +930,10 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "example": {
         "given": {"phi": "30 deg", "theta": "60 deg", "psi": "45 deg", "phi_rate": "2 rad/s",
-                  "theta_rate": "1 rad/s", "psi_rate": "10 rad/s", "I": "0.02 kg m^2",
-                  "J": "0.03 kg m^2"},
+                  "theta_rate": "1 rad/s", "psi_rate": "10 rad/s",
+                  "phi_acceleration": "0.5 rad/s^2", "I": "0.02 kg m^2", "J": "0.03 kg m^2"},
         "find": {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s",
-                 "kinetic_energy": "J", "angular_momentum": "kg*m^2/s"},
+                 "kinetic_energy": "J", "angular_momentum": "kg*m^2/s",
+                 "angular_acceleration": "rad/s^2", "moment": "N*m"},
         "vary": {"theta": "[20 deg, 80 deg]"}}},
 )

@@ -2,8 +2,8 @@
 
 No moment acts about the centre of mass, so H is fixed in space. The motion is
 fixed by J, I (about the centre of mass) and any two of omega, omega_angle
-(beta), nutation_angle (theta), axial_rate (omega_z), precession (phidot) and
-spin (psidot). The relations, their derivation and the sign conventions are in
+(beta), nutation_angle (theta), axial_rate (omega_z), precession (phidot),
+spin (psidot) and angular_momentum (H). The relations, their derivation and the sign conventions are in
 ``gyro_cli.physics.torque_free``:
 
     tan(theta) = (I / J) tan(beta),  phidot = H / I,  psidot = (I - J) / I * omega_z.
@@ -17,19 +17,23 @@ from ..core.errors import InputError
 from ..core.given import Given
 from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
+from ..core.expr import PI, Expr, Num, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
 from ..core.prose import Prose, names, q, rel, tup, words
 from ..core.work import Work
 
 
 WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
-         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot"}
+         "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot",
+         "angular_momentum": "H"}
 
 
 #: the symbols of the kind's steps, beside its Params: name -> the unit each is shown in
 UNITS = {"J": "kg*m^2", "I": "kg*m^2", "theta": "deg", "beta": "deg", "omega": "rad/s",
          "omega_z": "rad/s", "omega_e": "rad/s", "phidot": "rad/s", "psidot": "rad/s",
-         "H": "kg m^2/s"}
+         "H": "kg m^2/s", "T": "J", "T_f": "J", "omega_f": "rad/s", "I_max": "kg*m^2"}
+
+
+HALF = Num(0.5, "1/2")
 
 
 def _sym(name: str, value: float) -> Sym:
@@ -95,6 +99,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                "J": "J" if "J" in given else "k_axial" if "k_axial" in given else "shape"
                }.get(err.key, err.key)
         raise InputError(err.message, key=f"given.{key}") from None
+    if state.omega_angle == 0:
+        _representable(state, known, steady=True)
+        _steady(J, known, state, find, work)
+        if find & ENERGY_ANSWERS:
+            _energy(J, I, state, work)
+        return
     _representable(state, known)
 
     work.section("Conventions")
@@ -110,6 +120,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                 line.note, line.note_prose = note.text, note
     _route(J, I, known, state, work)
     _results(J, I, state, work, magnitude=sense is not None)
+    if find & ENERGY_ANSWERS:
+        _energy(J, I, state, work)
 
 
 def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tuple:
@@ -131,17 +143,65 @@ def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tup
                           q(known["spin"], "rad/s")))
 
 
-def _representable(s: FreeMotion, known: dict[str, float]) -> None:
+def _representable(s: FreeMotion, known: dict[str, float], steady: bool = False) -> None:
     """Refuse data whose rates or periods overflow or underflow double precision."""
     try:
-        values = (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
-                  s.precession_period, s.body_wobble_period)
+        values = ((s.omega, s.angular_momentum, s.kinetic_energy) if steady else
+                  (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
+                   s.precession_period, s.body_wobble_period))
     except ArithmeticError:
         values = (math.nan,)
     if not all(math.isfinite(v) and v != 0 for v in values):
         raise InputError("these rates and inertias overflow or underflow double precision (a "
                          "rate, H or a period is not a finite non-zero number): check the "
                          "magnitudes and units", key=f"given.{next(iter(known))}")
+
+
+#: the answers that describe the wobble: none exists in a steady spin about the axis
+WOBBLE_ANSWERS = frozenset({"precession", "spin", "precession_period", "body_wobble_period",
+                            "motion", "spin_ratio"})
+def _steady_words() -> tuple:
+    G, H, k, w, wz, J = names("G H k omega omega_z J")
+    return ("No moment about the centre of mass ", G, ": ", H, " is fixed in space. With no "
+            "angle between ", k, " and ", w, ", the body spins steadily about its symmetry "
+            "axis: ", rel(w, "=", wz), ", ", rel(H, "=", J * wz), " along ", k, ", and nothing "
+            "wobbles or precesses.")
+
+
+_STEADY = _steady_words()
+
+
+def _steady(J: float, known: dict[str, float], s: FreeMotion, find: frozenset[str],
+            work: Work) -> None:
+    """A spin about the symmetry axis with no wobble (an angle of 0): the rates and H only."""
+    angle = next(k for k in ("omega_angle", "nutation_angle") if k in known)
+    asked = sorted(find & WOBBLE_ANSWERS)
+    if asked:
+        raise InputError(f"{asked[0]} is not defined: with {angle} = 0 the body spins steadily "
+                         "about its axis and does not wobble; ask omega, axial_rate, "
+                         "angular_momentum, kinetic_energy or the energy-dissipation answers "
+                         "(final_rate, final_kinetic_energy, energy_lost, spin_stability)",
+                         key=f"given.{angle}")
+    work.section("Conventions")
+    work.text(*_STEADY)
+    work.text(*_INERTIA)
+    work.section("The steady spin")
+    work.text(rel(_be, "=", _th, "=", q(0.0, "deg", exact=True)), ": ", _k, ", ", _omega,
+              " and ", _H, " lie along one line")
+    J_ = _sym("J", J)
+    if "angular_momentum" in known:
+        work.step("omega_z", _sym("H", known["angular_momentum"]) / J_, unit="rad/s")
+    else:
+        if "omega" in known:
+            work.step("omega_z", _sym("omega", known["omega"]), unit="rad/s", substitute=False)
+        work.step("H", J_ * _sym("omega_z", s.axial_rate), unit="kg m^2/s")
+    for name, symbol, value, dimension in (
+            ("axial_rate", "omega_z", s.axial_rate, "rate"), ("omega", "omega", s.omega, "rate"),
+            ("nutation_angle", "theta", 0.0, "angle"), ("omega_angle", "beta", 0.0, "angle"),
+            ("angular_momentum", "H", s.angular_momentum, "angular_momentum"),
+            ("body_cone_angle", "beta", 0.0, "angle")):
+        work.answer(name, symbol, [value], dimension)
+    work.answer("space_cone_angle", _SPACE_CONE_ANGLE, [0.0], "angle")
 
 
 _GIVEN_SYMS = {key: names(word)[0] for key, word in WORDS.items()}
@@ -175,21 +235,34 @@ def _route(J: float, I: float, known: dict[str, float], s: FreeMotion, work: Wor
         work.step("omega_z", I_ * _sym("phidot", known["precession"]) * cos(theta) / J_,
                   unit="rad/s", note=(tup(rel(H, "=", I_ * phidot),
                                           rel(H * cos(theta), "=", J_ * wz)),))
+    elif angle and "angular_momentum" in known:
+        if "nutation_angle" not in known:
+            work.step("theta", atan(I_ / J_ * tan(beta)), unit="deg")
+        H = names("H")[0]
+        work.step("omega_z", _sym("H", known["angular_momentum"]) * cos(theta) / J_,
+                  unit="rad/s", note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
     elif axial and "omega" in known:
         work.step("beta", acos(wz / _sym("omega", known["omega"])), unit="deg")
-    elif "omega" in known:  # with precession
-        w, p = _sym("omega", known["omega"]), _sym("phidot", known["precession"])
+    elif "omega" in known:  # with precession or H
+        w = _sym("omega", known["omega"])
         H, omega_z, omega_e, omega, phidot = names("H omega_z omega_e omega phidot")
-        work.text(rel(H**2, "=", (J_ * omega_z)**2 + (I_ * omega_e)**2, "=",
-                      J_**2 * omega**2 + (I_**2 - J_**2) * omega**2 * sin(beta)**2),
-                  ", with ", rel(H, "=", I_ * phidot))
-        work.step("beta", asin(sqrt(((I_ * p) ** 2 - (J_ * w) ** 2) / ((I_ ** 2 - J_ ** 2)
-                                                                      * w ** 2))), unit="deg")
+        law = (rel(H**2, "=", (J_ * omega_z)**2 + (I_ * omega_e)**2, "=",
+                   J_**2 * omega**2 + (I_**2 - J_**2) * omega**2 * sin(beta)**2),)
+        if "angular_momentum" in known:
+            work.text(*law)
+            Hg: Expr = _sym("H", known["angular_momentum"])
+        else:
+            work.text(*law, ", with ", rel(H, "=", I_ * phidot))
+            Hg = I_ * _sym("phidot", known["precession"])
+        work.step("beta", asin(sqrt((Hg ** 2 - (J_ * w) ** 2) / ((I_ ** 2 - J_ ** 2)
+                                                                 * w ** 2))), unit="deg")
         work.step("omega_z", w * cos(beta), unit="rad/s", substitute=False)
-    elif axial:  # with precession
+    elif axial:  # with precession or H
         H = names("H")[0]
-        work.step("theta", acos(J_ * wz / (I_ * _sym("phidot", known["precession"]))),
-                  unit="deg", note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
+        Hg = (_sym("H", known["angular_momentum"]) if "angular_momentum" in known
+              else I_ * _sym("phidot", known["precession"]))
+        work.step("theta", acos(J_ * wz / Hg), unit="deg",
+                  note=(tup(rel(H * cos(theta), "=", J_ * wz)),))
         work.step("beta", atan(J_ / I_ * tan(theta)), unit="deg", substitute=False)
 
 
@@ -278,12 +351,57 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
                rel(*_SPIN_OVER_PRECESSION, q(s.spin / s.precession)))
 
 
+ENERGY_ANSWERS = frozenset({"kinetic_energy", "final_rate", "final_kinetic_energy",
+                            "energy_lost", "spin_stability"})
+_T, _Tf, _Imax, _wf, _Hs = names("T T_f I_max omega_f H")
+_DISSIPATION = ("Energy dissipation (flexing parts, sloshing fuel) with no external moment: ",
+                _Hs, " is kept and ", _T, " falls to the least energy a body with this ", _Hs,
+                " can have, ", rel(_Tf, "=", _Hs ** 2 / (2 * _Imax)), ", turning about its axis "
+                "of largest moment at ", rel(_wf, "=", _Hs / _Imax),
+                " (the major-axis rule; Curtis, Orbital Mechanics, Sec. 10.5).")
+_FINAL = {"stable": (rel(_J0, ">", _I0), ": the symmetry axis is the major axis; any wobble "
+                     "dies out and the body ends (or stays) spinning about ", _k, ": its spin is stable."),
+          "unstable": (rel(_I0, ">", _J0), ": the symmetry axis is the minor axis; any wobble "
+                       "grows and the body ends in a flat spin about a transverse axis: its "
+                       "spin about ", _k, " is unstable.")}
+
+
+def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
+    """Kinetic energy (Eq. 11.2), and where energy dissipation takes the motion (H kept)."""
+    work.section("Kinetic energy and energy dissipation")
+    J_, I_ = _sym("J", J), _sym("I", I)
+    wz_, we_ = _sym("omega_z", s.axial_rate), _sym("omega_e", s.transverse_rate)
+    H_, T_ = _sym("H", s.angular_momentum), _sym("T", s.kinetic_energy)
+    if s.omega_angle == 0:  # a steady spin: omega_e = 0
+        work.step("T", HALF * J_ * wz_ ** 2, unit="J", ref="Eq. 11.2")
+    else:
+        work.step("T", HALF * (J_ * wz_ ** 2 + I_ * we_ ** 2), unit="J", ref="Eq. 11.2")
+    Imax = _sym("I_max", s.major_moment)
+    work.step("I_max", J_ if J > I else I_, unit="kg*m^2",
+              substitute=False, note=("the larger of ", _J0, " and ", _I0))
+    work.text(*_DISSIPATION)
+    work.step("omega_f", H_ / Imax, unit="rad/s", note="about the major axis, at the end")
+    Tf = work.step("T_f", H_ ** 2 / (2 * Imax), unit="J")
+    lost = (HALF * I_ * we_ ** 2 * (J_ - I_) / J_ if J > I
+            else HALF * J_ * wz_ ** 2 * (I_ - J_) / I_)
+    work.step(_T - _Tf, lost, unit="J", note="energy dissipated")
+    work.text(*_FINAL[s.spin_stability])
+    work.check(rel(_T - _Tf, "=", q(s.kinetic_energy - (Tf or 0.0), "J")), " from ", T_,
+               " and ", _Tf)
+    work.answer("kinetic_energy", "T", [s.kinetic_energy], "energy")
+    work.answer("final_rate", "omega_f", [s.final_rate], "rate")
+    work.answer("final_kinetic_energy", "T_f", [s.final_kinetic_energy], "energy")
+    work.answer("energy_lost", _T - _Tf, [s.energy_lost], "energy")
+    work.answer("spin_stability", "stability", [s.spin_stability], None)
+
+
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
 # keeps the same checks for its own callers
 _SIDE = "H is taken along +Z and k on the side of H"
-_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="()", reason="at 0 the body spins steadily "
-               "about its axis, at 90 deg it turns about a transverse axis, neither wobbles; "
-               "above 90 deg take the axis k the other way (180 deg minus the angle)")
+_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
+               "a transverse axis and does not wobble; above 90 deg take the axis k the other "
+               "way (180 deg minus the angle); 0 is a steady spin about the axis, which has "
+               "rates, H and energy but no precession")
 
 KIND = Kind(
     name="torque_free",
@@ -305,6 +423,8 @@ KIND = Kind(
               "I > J, negative for J > I (or a magnitude, with precession_sense)", nonzero=True,
               reason="with J != I the body always spins relative to its precessing frame, "
               "psidot = (I - J) / I omega_z"),
+        Param("angular_momentum", "angular_momentum", "H", "magnitude of H about the centre "
+              "of mass (Hibbeler's H_G), given instead of a rate", positive=True, reason=_SIDE),
         Param("precession_sense", "word", "sense", "the books' words: direct (spin and "
               "precession the same way, I > J) or retrograde (opposite, J > I); spin is then "
               "a magnitude", choices=("direct", "retrograde"),
@@ -333,6 +453,17 @@ KIND = Kind(
                    "cone (omega about H)"),
         AnswerSpec("motion", None, "motion", "direct (prolate, I > J) or retrograde (oblate, "
                    "J > I)", words=tuple(_MOTION)),
+        AnswerSpec("kinetic_energy", "energy", "T", "kinetic energy, (1/2) (J omega_z^2 + "
+                   "I omega_e^2) (Eq. 11.2)"),
+        AnswerSpec("final_rate", "rate", "omega_f", "energy dissipation, H kept: the rate at "
+                   "the end, about the axis of largest moment, H / I_max"),
+        AnswerSpec("final_kinetic_energy", "energy", "T_f", "energy dissipation: the least "
+                   "energy for this H, H^2 / (2 I_max)"),
+        AnswerSpec("energy_lost", "energy", "T - T_f", "energy dissipation: the kinetic "
+                   "energy lost on the way to the major axis"),
+        AnswerSpec("spin_stability", None, "stability", "stable (J > I: the symmetry axis is "
+                   "the major axis) or unstable (I > J: a flat spin at the end); the "
+                   "major-axis rule", words=tuple(_FINAL)),
         AnswerSpec("spin_ratio", "dimensionless", "n", "psidot / phidot, the ratio of the spin "
                    "to the precession (Meriam's n), (I - J) cos(theta) / J; negative when "
                    "retrograde"),
@@ -342,6 +473,6 @@ KIND = Kind(
         "given": {"J": "100 kg m^2", "I_cg": "125 kg m^2", "nutation_angle": "20 deg",
                   "spin": "1 rpm"},
         "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",
-                 "motion": None},
+                 "motion": None, "kinetic_energy": "J", "spin_stability": None},
         "vary": {"nutation_angle": "[10 deg, 40 deg]"}}},
 )

@@ -157,6 +157,65 @@ def euler_rates_zyx(pitch: float, roll: float, p: float, q: float, r: float) -> 
     return (yaw_rate, q * cr - r * sr, p + yaw_rate * sin_exact(pitch))
 
 
+# ---- angular acceleration ---------------------------------------------------
+#
+# alpha = d(omega)/dt is the same vector whether the derivative is taken in the fixed
+# frame or in the body (d/dt|fixed = d/dt|body + omega x, and omega x omega = 0), so the
+# body components of alpha are the time derivatives of Eq. 11.8's, and the fixed ones
+# the derivatives of the fixed components of omega (Hibbeler, Dynamics, Sec. 20.1).
+
+def body_accel_zxz(theta: float, psi: float, rates: Sequence[float],
+                   accels: Sequence[float]) -> Vector:
+    """(alpha_x, alpha_y, alpha_z): Eq. 11.8 differentiated in time.
+
+    alpha_x = phiddot s(th) s(ps) + phidot thetadot c(th) s(ps) + phidot psidot s(th) c(ps)
+              + thetaddot c(ps) - thetadot psidot s(ps)
+    alpha_y = phiddot s(th) c(ps) + phidot thetadot c(th) c(ps) - phidot psidot s(th) s(ps)
+              - thetaddot s(ps) - thetadot psidot c(ps)
+    alpha_z = phiddot c(th) - phidot thetadot s(th) + psiddot
+    """
+    p1, p2, p3 = rates
+    a1, a2, a3 = accels
+    st, ct, sp, cp = sin_exact(theta), cos_exact(theta), sin_exact(psi), cos_exact(psi)
+    return (a1 * st * sp + p1 * p2 * ct * sp + p1 * p3 * st * cp + a2 * cp - p2 * p3 * sp,
+            a1 * st * cp + p1 * p2 * ct * cp - p1 * p3 * st * sp - a2 * sp - p2 * p3 * cp,
+            a1 * ct - p1 * p2 * st + a3)
+
+
+def fixed_accel_zxz(phi: float, theta: float, rates: Sequence[float],
+                    accels: Sequence[float]) -> Vector:
+    """(alpha_X, alpha_Y, alpha_Z): the fixed components of omega differentiated,
+    omega_X = thetadot c(ph) + psidot s(th) s(ph), omega_Y = thetadot s(ph) - psidot s(th) c(ph),
+    omega_Z = phidot + psidot c(th)."""
+    p1, p2, p3 = rates
+    a1, a2, a3 = accels
+    st, ct, sf, cf = sin_exact(theta), cos_exact(theta), sin_exact(phi), cos_exact(phi)
+    return (a2 * cf - p2 * p1 * sf + a3 * st * sf + p3 * p2 * ct * sf + p3 * p1 * st * cf,
+            a2 * sf + p2 * p1 * cf - a3 * st * cf - p3 * p2 * ct * cf + p3 * p1 * st * sf,
+            a1 + a3 * ct - p3 * p2 * st)
+
+
+def body_accel_zyx(pitch: float, roll: float, rates: Sequence[float],
+                   accels: Sequence[float]) -> Vector:
+    """(pdot, qdot, rdot): the yaw-pitch-roll body rates differentiated in time."""
+    y1, y2, y3 = rates
+    a1, a2, a3 = accels
+    sq, cq, sr, cr = sin_exact(pitch), cos_exact(pitch), sin_exact(roll), cos_exact(roll)
+    return (a3 - a1 * sq - y1 * y2 * cq,
+            a2 * cr - y2 * y3 * sr + a1 * cq * sr - y1 * y2 * sq * sr + y1 * y3 * cq * cr,
+            -a2 * sr - y2 * y3 * cr + a1 * cq * cr - y1 * y2 * sq * cr - y1 * y3 * cq * sr)
+
+
+def euler_moment(matrix: Matrix, omega: Sequence[float], alpha: Sequence[float]) -> Vector:
+    """M = dH/dt = I alpha + omega x (I omega), body axes (I constant in the body): Euler's
+    equations, M_x = I_x alpha_x - (I_y - I_z) omega_y omega_z, ... on principal axes
+    (Hibbeler, Dynamics, Eqs. 21-25; Meriam, Art. 7/8)."""
+    Iw = matvec(matrix, omega)
+    Ia = matvec(matrix, alpha)
+    gyro = cross(omega, Iw)
+    return (Ia[0] + gyro[0], Ia[1] + gyro[1], Ia[2] + gyro[2])
+
+
 # ---- inertia ----------------------------------------------------------------
 
 def inertia_from_particles(particles: Iterable[Sequence[float]]

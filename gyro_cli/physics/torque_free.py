@@ -15,6 +15,11 @@ omega_e = phidot sin(theta) (thetadot = 0). From these, for 0 < theta < 90 deg:
     psidot = omega_z - phidot cos(theta) = (I - J) / I * omega_z      (spin)
     H^2 = J^2 omega_z^2 + I^2 omega_e^2
 
+Given H itself (Hibbeler's football, "H_G = ... kg m^2/s"), it stands for I phidot:
+with an angle omega_z = H cos(theta) / J; with omega_z, cos(theta) = J omega_z / H; with
+omega, sin^2(beta) = (H^2 - J^2 omega^2) / ((I^2 - J^2) omega^2). H and phidot together fix
+no angle.
+
 (Meriam & Kraige, Dynamics, Art. 7/9; Hibbeler, Dynamics, Sec. 21.6;
 Beer & Johnston, Vector Mechanics, Sec. 18.10; Goldstein, Classical
 Mechanics, Sec. 5.6.) Euler's equations with no moment,
@@ -30,6 +35,17 @@ sense and the body cone rolls on the outside of the space cone: direct
 precession. With J > I (oblate: a disk, the Earth) beta > theta, psidot is
 negative and the body cone rolls with the space cone inside it: retrograde.
 
+Energy and its dissipation (Curtis, Orbital Mechanics for Engineering Students,
+Sec. 10.5; Kaplan, Modern Spacecraft Dynamics and Control, the major-axis rule):
+T = (1/2) (J omega_z^2 + I omega_e^2) and, with H^2 = J^2 omega_z^2 + I^2 omega_e^2,
+2 T I_min <= H^2 <= 2 T I_max. Flexing parts or fuel sloshing turn kinetic energy into
+heat while no external moment acts, so H is kept and T falls to its least value for that
+H, T_f = H^2 / (2 I_max): the body ends turning about its axis of largest moment at
+omega_f = H / I_max. T - T_f = (1/2) I omega_e^2 (J - I) / J for an oblate body (J > I),
+which ends spinning about k, and (1/2) J omega_z^2 (I - J) / I for a prolate one, which
+ends in a flat spin about a transverse axis. So a spin about the symmetry axis is stable
+under dissipation only for J > I (Explorer 1, a prolate spinner, went into a flat spin).
+
 Sign conventions: H is along +Z and k is taken on the side of H
 (H . k > 0), so omega_z, phidot, H, theta and beta are positive, with
 theta and beta below 90 deg; psidot carries the sign of I - J.
@@ -42,7 +58,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 # What may be given: two of these.
-MOTION_KEYS = ("omega", "omega_angle", "nutation_angle", "axial_rate", "precession", "spin")
+MOTION_KEYS = ("omega", "omega_angle", "nutation_angle", "axial_rate", "precession", "spin",
+               "angular_momentum")
 ANGLE_KEYS = ("omega_angle", "nutation_angle")
 
 
@@ -57,7 +74,9 @@ class TorqueFreeError(ValueError):
 
 @dataclass(frozen=True)
 class FreeMotion:
-    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 < beta < 90 deg.
+    """The steady torque-free motion, SI: fixed by J, I, omega_z > 0 and 0 <= beta < 90 deg
+    (beta = 0: a spin about the axis with no wobble, whose precession and spin are limits
+    with no motion behind them).
 
     Every other quantity is worked out from these four when first asked for and kept (a
     worked answer asks for each several times; precession alone was H, so tan and hypot,
@@ -118,6 +137,40 @@ class FreeMotion:
     def motion(self) -> str:
         return "direct" if self.I > self.J else "retrograde"
 
+    @cached_property
+    def kinetic_energy(self) -> float:
+        """T = (1/2) (J omega_z^2 + I omega_e^2), Eq. 11.2 on the principal axes."""
+        return 0.5 * (self.J * self.axial_rate ** 2 + self.I * self.transverse_rate ** 2)
+
+    @cached_property
+    def major_moment(self) -> float:
+        """The largest principal moment: J (oblate) or I (prolate)."""
+        return max(self.J, self.I)
+
+    @cached_property
+    def final_rate(self) -> float:
+        """omega_f = H / I_max: the rate once dissipation has brought omega to the major axis."""
+        return self.angular_momentum / self.major_moment
+
+    @cached_property
+    def final_kinetic_energy(self) -> float:
+        """T_f = H^2 / (2 I_max), the least energy a body with this H can have."""
+        return self.angular_momentum * self.final_rate / 2
+
+    @cached_property
+    def energy_lost(self) -> float:
+        """T - T_f, written without the cancellation of T - H^2 / (2 I_max):
+        (1/2) I omega_e^2 (J - I) / J for J > I, (1/2) J omega_z^2 (I - J) / I for I > J."""
+        if self.J > self.I:
+            return 0.5 * self.I * self.transverse_rate ** 2 * (self.J - self.I) / self.J
+        return 0.5 * self.J * self.axial_rate ** 2 * (self.I - self.J) / self.I
+
+    @cached_property
+    def spin_stability(self) -> str:
+        """The major-axis rule: a spin about the symmetry axis survives energy dissipation
+        only if that axis has the largest moment (J > I)."""
+        return "stable" if self.J > self.I else "unstable"
+
 
 def omega_angle_from_nutation(J: float, I: float, theta: float) -> float:
     """beta from tan(beta) = (J / I) tan(theta)."""
@@ -143,9 +196,10 @@ def axial_rate_from_spin(J: float, I: float, spin: float) -> float:
 def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
     """The motion from exactly two of MOTION_KEYS (SI values); TorqueFreeError otherwise.
 
-    Every pair but two fixes one motion (no second root, since k is taken on
-    the side of H): omega_angle with nutation_angle, and axial_rate with spin,
-    are tied to each other by the inertias and fix no rate or no angle.
+    Every pair but three fixes one motion (no second root, since k is taken on
+    the side of H): omega_angle with nutation_angle, axial_rate with spin, and
+    angular_momentum with precession are tied to each other by the inertias and
+    fix no rate or no angle.
     """
     if J <= 0 or I <= 0:
         raise TorqueFreeError("J and I must be positive", "J" if J <= 0 else "I_cg")
@@ -161,20 +215,30 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
     for key in keys:
         value = known[key]
         if key in ANGLE_KEYS:
-            if not 0 < value < math.pi / 2:
+            if not 0 <= value < math.pi / 2:
                 raise TorqueFreeError(
-                    f"{key} must lie strictly between 0 and 90 deg, got "
-                    f"{math.degrees(value):.6g} deg: at 0 the body spins steadily about its "
-                    "axis, at 90 deg it turns about a transverse axis, neither wobbles; above "
-                    "90 deg take the axis k the other way (180 deg minus the angle)", key)
+                    f"{key} must lie from 0 up to (not at) 90 deg, got "
+                    f"{math.degrees(value):.6g} deg: at 90 deg the body turns about a "
+                    "transverse axis and does not wobble; above 90 deg take the axis k the "
+                    "other way (180 deg minus the angle)", key)
         elif key != "spin" and not value > 0:
             raise TorqueFreeError(f"{key} must be positive (H is taken along +Z and k on the "
                                   f"side of H), got {value:.6g} (SI)", key)
     pair = set(keys)
+    steady = [k for k in keys if k in ANGLE_KEYS and known[k] == 0]
+    if steady and pair & {"spin", "precession"}:
+        other = next(iter(pair & {"spin", "precession"}))
+        raise TorqueFreeError(f"{steady[0]} = 0: the body spins steadily about its axis and "
+                              f"nothing precesses, so {other} is not defined; give the rate as "
+                              "axial_rate or omega (equal here), or angular_momentum", other)
     if pair == set(ANGLE_KEYS):
         raise TorqueFreeError("omega_angle and nutation_angle are tied by tan(theta) = (I / J) "
                               "tan(beta) and fix no rate: give one of them with a rate",
                               "nutation_angle")
+    if pair == {"angular_momentum", "precession"}:
+        raise TorqueFreeError("angular_momentum and precession are tied by phidot = H / I and "
+                              "fix no angle: give one of them with an angle or another rate",
+                              "precession")
     if pair == {"axial_rate", "spin"}:
         raise TorqueFreeError("axial_rate and spin are tied by psidot = (I - J) / I omega_z and "
                               "fix no angle: give one of them with an angle or another rate",
@@ -198,9 +262,9 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
         if axial is None:
             if "omega" in known:
                 axial = known["omega"] * math.cos(beta)
-            else:  # precession: omega_z = I phidot cos(theta) / J
+            else:  # H (given, or I phidot): omega_z = H cos(theta) / J
                 theta = math.atan2(I * math.sin(beta), J * math.cos(beta))
-                axial = I * known["precession"] * math.cos(theta) / J
+                axial = _momentum(I, known) * math.cos(theta) / J
         return FreeMotion(J, I, axial, beta)
 
     # No angle: two rates.
@@ -210,24 +274,46 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
             by = "axial_rate" if "axial_rate" in known else "spin"
             raise TorqueFreeError(f"omega = {omega:.6g} rad/s must exceed the axial rate "
                                   f"omega_z = {axial:.6g} rad/s (from {by}): omega_z is one "
-                                  "component of omega, equal only without wobble", "omega")
+                                  "component of omega, equal only without wobble (a spin "
+                                  "with no wobble: give omega_angle: 0 deg)", "omega")
         return FreeMotion(J, I, axial, math.acos(axial / omega))
-    if "omega" in known:  # with precession: H^2 = J^2 omega^2 + (I^2 - J^2) omega^2 sin^2(beta)
-        omega, phidot = known["omega"], known["precession"]
-        s2 = ((I * phidot) ** 2 - (J * omega) ** 2) / ((I * I - J * J) * omega * omega)
+    by = "angular_momentum" if "angular_momentum" in known else "precession"
+    H = _momentum(I, known)
+    if "omega" in known:  # with H: H^2 = J^2 omega^2 + (I^2 - J^2) omega^2 sin^2(beta)
+        omega = known["omega"]
+        s2 = (H * H - (J * omega) ** 2) / ((I * I - J * J) * omega * omega)
         if not 0 < s2 < 1:
-            lo, hi = sorted((J * omega / I, omega))
-            raise TorqueFreeError(f"precession must lie strictly between J omega / I and omega "
-                                  f"({lo:.6g} and {hi:.6g} rad/s) for omega = {omega:.6g} "
-                                  f"rad/s, got {phidot:.6g} rad/s", "precession")
+            if by == "precession":
+                lo, hi = sorted((J * omega / I, omega))
+                raise TorqueFreeError(f"precession must lie strictly between J omega / I and "
+                                      f"omega ({lo:.6g} and {hi:.6g} rad/s) for omega = "
+                                      f"{omega:.6g} rad/s, got {known['precession']:.6g} rad/s",
+                                      "precession")
+            lo, hi = sorted((J * omega, I * omega))
+            raise TorqueFreeError(f"angular_momentum must lie strictly between J omega and "
+                                  f"I omega ({lo:.6g} and {hi:.6g} kg m^2/s) for omega = "
+                                  f"{omega:.6g} rad/s, got {H:.6g} kg m^2/s: H^2 = (J omega_z)^2 "
+                                  "+ (I omega_e)^2 with omega_z^2 + omega_e^2 = omega^2",
+                                  "angular_momentum")
         beta = math.asin(math.sqrt(s2))
         return FreeMotion(J, I, omega * math.cos(beta), beta)
-    # axial rate (given or from spin) with precession: cos(theta) = J omega_z / (I phidot)
-    phidot = known["precession"]
-    cos_theta = J * axial / (I * phidot)
+    # axial rate (given or from spin) with H: cos(theta) = J omega_z / H
+    cos_theta = J * axial / H
     if not cos_theta < 1:
-        raise TorqueFreeError(f"precession must exceed J omega_z / I = {J * axial / I:.6g} "
-                              f"rad/s (got {phidot:.6g} rad/s): phidot = H / I and H >= "
-                              "J omega_z, equal only without wobble", "precession")
+        if by == "precession":
+            raise TorqueFreeError(f"precession must exceed J omega_z / I = {J * axial / I:.6g} "
+                                  f"rad/s (got {known['precession']:.6g} rad/s): phidot = H / I "
+                                  "and H >= J omega_z, equal only without wobble", "precession")
+        source = "axial_rate" if "axial_rate" in known else "spin"
+        raise TorqueFreeError(f"angular_momentum must exceed J omega_z = {J * axial:.6g} kg m^2/s "
+                              f"(omega_z from {source}), got {H:.6g} kg m^2/s: H cos(theta) = "
+                              "J omega_z, equal only without wobble", "angular_momentum")
     theta = math.acos(cos_theta)
     return FreeMotion(J, I, axial, omega_angle_from_nutation(J, I, theta))
+
+
+def _momentum(I: float, known: dict[str, float]) -> float:
+    """H about the centre of mass: given, or I phidot from the precession (phidot = H / I)."""
+    if "angular_momentum" in known:
+        return known["angular_momentum"]
+    return I * known["precession"]
