@@ -212,6 +212,15 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A rail car of total mass {mass} has its centre of mass {cg_height} above "
+                      "the rails, which are {track} apart. Its wheels have a radius of "
+                      "{wheel_radius}, and each of its two axles, with its wheels and gears, has "
+                      "a moment of inertia of {axle_inertia}. It is driven by {engines} motors, "
+                      "each with a moment of inertia of {engine_inertia}, geared {gear_ratio} to "
+                      "1 to the axles and turning in the {engine_sense} sense to the wheels. It "
+                      "rounds a curve of radius {turn_radius} at {speed}. Find the reaction of "
+                      "the rails on each outer and each inner wheel, the gyroscopic couple and "
+                      "the centrifugal couple."),
         "given": {"mass": "2500 kg", "cg_height": "0.9 m", "track": "1.5 m",
                   "wheel_radius": "0.375 m", "axle_inertia": "18 kg*m^2",
                   "engine_inertia": "12 kg*m^2", "engines": "2", "gear_ratio": "5",
