@@ -204,6 +204,10 @@ def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -
 QUANTITY_PATTERN = (r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*"
                     r"[A-Za-z_°µΩ(1]?[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
 
+#: a latitude or longitude written with its hemisphere first, "S 30", "N45.5 deg"
+HEMISPHERE_FIRST = (r"^\s*([NSEWnsew]|[Nn]orth|[Ss]outh|[Ee]ast|[Ww]est)\.?\s*"
+                    r"(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
+
 
 def schema() -> dict[str, Any]:
     """A JSON Schema (draft-07) of the problem format, for editors."""
@@ -310,6 +314,11 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
                                                       ("mass", "x", "y", "z")}}}
         else:
             given[p.name] = dict(quantity, description=_described(p, p.dimension))
+            if p.hemisphere:  # "S 30" as well as "30 S" (which the quantity pattern takes)
+                given[p.name] = {"anyOf": [quantity, {"type": "string", "maxLength":
+                                                      units.MAX_TEXT,
+                                                      "pattern": HEMISPHERE_FIRST}],
+                                 "description": given[p.name]["description"]}
             if p.limits_declared():
                 # a quantity is text with a unit: the limits, in SI, are for editors to show
                 si = units.si_text(p.dimension)

@@ -158,8 +158,8 @@ KIND = Kind(
             "(north-seeking moment, period of the swing about north)",
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
-        Param("latitude", "angle", "lambda", "latitude of the site (north or south)",
-              range=(-math.pi / 2, math.pi / 2)),
+        Param("latitude", "angle", "lambda", "latitude of the site (north or south: '50 N', "
+              "'35 S')", range=(-math.pi / 2, math.pi / 2), hemisphere="NS"),
         Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
