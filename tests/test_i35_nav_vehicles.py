@@ -47,6 +47,10 @@ def sentence_faults(text: str) -> list[str]:
         faults.append("an operator dangling after punctuation")
     if re.search(rf"(^|\s){op}\s+{op}(\s|$)", text) or re.search(r"\^\d*\s*/", text):
         faults.append("two operators in a row")
+    if re.search(r"\s[/*^]\s", text):  # a unit is written m/s, a formula H / I
+        faults.append("a formula in the prose")
+    if re.search(r"\b(sin|cos|tan|sqrt)\b(?!\()", text):
+        faults.append("a function without its argument")
     if text.count("(") != text.count(")") or "()" in text:
         faults.append("unbalanced or empty brackets")
     if re.search(r"\s[,.;:]|[,;:]{2}|\.\.|\s{2}", text):
@@ -70,6 +74,8 @@ def test_item09_sentence_check_catches_the_old_garbled_statements():
     assert sentence_faults(old_four) and sentence_faults(old_drift)
     assert sentence_faults("Given the mass {mass}. Find the couple.")
     assert sentence_faults("Find the rotor_sense.")
+    assert sentence_faults("Find the moment along n = K x k / sin, [A, B]: forces.")
+    assert sentence_faults("Find the precession about H, H / I, magnitude of omega.")
     assert not sentence_faults("A top spins at 1800 rpm with its axis at 30 deg. Find the "
                                "rate of steady precession (slow root).")
 
@@ -288,3 +294,234 @@ def test_item03_answers_that_need_more_data_say_which_key(run, write):
                       ("{transport_wander: deg/h}", "given.ground_speed")]:
         result = run("solve", dg_file(write, "  latitude: 30 N", find))
         assert result.exit_code == 2 and key in result.stderr, (find, result.stderr)
+
+
+# ---- item 4: four-wheelers as the books draw them -----------------------------------
+
+from scipy.optimize import brentq  # noqa: E402
+
+RPM = 2 * math.pi / 60
+
+
+def free_body_loads(m, g, h, x, L, a_f, bank, v, R, turn, H_across, H_along):
+    """The four wheel loads (front outer, front inner, rear outer, rear inner) from the
+    car's free body, written with vectors: Newton's law for the centre of mass, the
+    moments about G of the track's forces equal to dH/dt of the rotors (by central
+    differences of H turning about the vertical), and the books' rule that each axle
+    takes the same share of the roll moment. H_across is along the car's left in the
+    track's plane (the wheels' sense), H_along along the car's forward axis."""
+    c = 1.0 if turn == "left" else -1.0  # the centre of the curve at +Y (left) or -Y
+    X, Y, Z = np.eye(3)
+    n = np.array([0.0, c * math.sin(bank), math.cos(bank)])   # normal to the track
+    y_in = np.array([0.0, c * math.cos(bank), -math.sin(bank)])  # across it, toward the centre
+    left = c * y_in
+    wp = c * v / R  # about +Z
+    H0 = H_across * left + H_along * X
+
+    def H(t):
+        a = wp * t
+        rot = np.array([[math.cos(a), -math.sin(a), 0], [math.sin(a), math.cos(a), 0],
+                        [0, 0, 1]])
+        return rot @ H0
+
+    dt = 1e-3
+    dH = (H(dt) - H(-dt)) / (2 * dt)
+    # force balance: sum N n + F y_in - m g Z = m (v^2 / R) (toward the centre, c Y)
+    A = np.array([[n @ Y, y_in @ Y], [n @ Z, y_in @ Z]])
+    N_total, F = np.linalg.solve(A, [m * v * v / R * c, m * g])
+    wheels = [(a_f, -1), (a_f, +1), (a_f - L, -1), (a_f - L, +1)]  # outer: away from the centre
+    rows, rhs = [[1.0] * 4], [N_total]
+    roll, pitch = [], []
+    for ahead, side in wheels:
+        r = ahead * X + side * x / 2 * y_in - h * n
+        moment = np.cross(r, n)
+        roll.append(moment @ X)
+        pitch.append(moment @ y_in)
+    friction_moment = np.cross(-h * n, F * y_in)
+    rows += [roll, pitch, [1.0, -1.0, -1.0, 1.0]]
+    rhs += [dH @ X - friction_moment @ X, dH @ y_in - friction_moment @ y_in, 0.0]
+    return np.linalg.solve(np.array(rows), np.array(rhs))
+
+
+CAR = """\
+id: car
+kind: four_wheeler
+given:
+  mass: 1600 kg
+  track: 1.5 m
+  cg_height: 0.55 m
+  wheel_radius: 0.3 m
+  wheel_inertia: 2.5 kg m^2
+  turn_radius: 80 m
+  speed: 72 km/h
+{extra}find:
+  wheel_loads: N
+  axle_loads: N
+  limiting_speed: m/s
+"""
+
+
+@pytest.mark.parametrize("bank", [0.0, 6.0])
+@pytest.mark.parametrize("cg", [None, 1.1, 1.7])
+@pytest.mark.parametrize("engine", ["none", "across same", "across opposite",
+                                    "along clockwise_from_front left",
+                                    "along clockwise_from_front right",
+                                    "along counterclockwise_from_rear right",
+                                    "along clockwise_from_rear left at speed"])
+def test_item04_wheel_loads_balance_the_free_body(write, bank, cg, engine):
+    m, x, h, rw, Iw, R, v = 1600, 1.5, 0.55, 0.3, 2.5, 80.0, 20.0
+    L = 2.6
+    extra = f"  wheelbase: {L} m\n" + (f"  cg_to_front: {cg} m\n" if cg else "")
+    if bank:
+        extra += f"  bank_angle: {bank} deg\n"
+    I_E, G, turn = 0.9, 3.5, "left"
+    H_across = 4 * Iw * v / rw
+    H_along = 0.0
+    if engine.startswith("across"):
+        sense = engine.split()[1]
+        extra += f"  engine_inertia: {I_E} kg m^2\n  gear_ratio: {G}\n  engine_sense: {sense}\n"
+        H_across += (1 if sense == "same" else -1) * I_E * G * v / rw
+    elif engine.startswith("along"):
+        _, rotation, turn, *at_speed = engine.split()
+        spin = I_E * (1500 * RPM if at_speed else G * v / rw)
+        extra += (f"  engine_axis: fore_and_aft\n  engine_inertia: {I_E} kg m^2\n"
+                  f"  engine_rotation: {rotation}\n  turn: {turn}\n")
+        extra += "  engine_speed: 1500 rpm\n" if at_speed else f"  gear_ratio: {G}\n"
+        # clockwise seen from the front: the vector points away from that observer, aft
+        forward = ("counterclockwise" in rotation) == rotation.endswith("front")
+        H_along = spin * (1 if forward else -1)
+    path = write(CAR.format(extra=extra))
+    got = si(path, "wheel_loads")
+    a_f = cg if cg else L / 2
+    expected = free_body_loads(m, 9.81, h, x, L, a_f, math.radians(bank), v, R, turn,
+                               H_across, H_along)
+    assert got == pytest.approx(list(expected), rel=1e-6)
+    front, rear = si(path, "axle_loads")
+    assert front + rear == pytest.approx(sum(expected), rel=1e-12)
+
+
+def test_item04_racing_car_with_its_flywheel_along(problems_dir):
+    """Worked in the file's notes: 6310.7, 3340.2, 6659.8, 3689.3 N."""
+    loads = si(problems_dir / "four_wheeler_racing_car_flywheel.yaml", "wheel_loads")
+    m, v, R, x = 20000 / 9.81, 30 / 3.6, 15.0, 1.0
+    wheels = 4 * 3 * (v / 0.4) * (v / R) / (2 * x)
+    centrifugal = m * v * v * 0.3 / R / (2 * x)
+    flywheel = 4 * 3000 * RPM * (v / R) / 2 / 2   # per wheel: C_p / L / 2, front less
+    hand = [5000 + wheels + centrifugal - flywheel, 5000 - wheels - centrifugal - flywheel,
+            5000 + wheels + centrifugal + flywheel, 5000 - wheels - centrifugal + flywheel]
+    assert loads == pytest.approx(hand, rel=1e-9)
+    assert sum(loads) == pytest.approx(20000)
+
+
+def test_item04_ncert_car_at_rest(problems_dir):
+    """Moments about the rear axle: F_front 1.8 = 17640 (0.75)."""
+    path = problems_dir / "four_wheeler_car_at_rest_cg_behind_front.yaml"
+    assert si(path, "wheel_loads") == pytest.approx([3675, 3675, 5145, 5145])
+
+
+def test_item04_banked_trolley(problems_dir):
+    path = problems_dir / "four_wheeler_banked_trolley.yaml"
+    b = math.radians(8)
+    N = 2000 * (9.81 * math.cos(b) + 7.5 * math.sin(b))
+    Cc = 2000 * 1 * (7.5 * math.cos(b) - 9.81 * math.sin(b))
+    Cg = 36 * (15 / 0.35) * 0.5 * math.cos(b)
+    outer, inner = N / 4 + (Cc + Cg) / 3.2, N / 4 - (Cc + Cg) / 3.2
+    assert si(path, "wheel_reactions") == pytest.approx([outer, inner], rel=1e-9)
+    # a limiting case: banked for the speed (tan b = v^2 / (g R)) no friction is needed
+    # across the track and the centrifugal couple vanishes
+    v_design = math.sqrt(9.81 * 30 * math.tan(b))
+    text = (problems_dir / "four_wheeler_banked_trolley.yaml").read_text()
+    import yaml as _yaml
+    data = _yaml.safe_load(text)
+    data["given"]["speed"] = f"{v_design!r} m/s"
+    data["find"] = {"centrifugal_couple": "N m"}
+    data.pop("expected"), data.pop("statement")
+    from gyro_cli.solving.problem import build
+    from gyro_cli.solving.solve import solve
+    result = solve(build("<banked>", data, {}))
+    assert abs(result.answers["centrifugal_couple"].si_values[0]) < 1e-9
+
+
+def test_item04_engine_along_and_centre_of_mass_forward(problems_dir):
+    path = problems_dir / "four_wheeler_car_engine_along_cg_forward.yaml"
+    v = 60 / 3.6
+    wp, ww = v / 60, v / 0.4
+    weight_f, weight_r = 19620 * 1.5 / 2.5 / 2, 19620 * 1.0 / 2.5 / 2
+    side = (4 * 0.8 * ww * wp + 2000 * v * v * 0.5 / 60) / (2 * 1.5)
+    pitch = 0.75 * 4 * ww * wp / 2.5 / 2
+    assert si(path, "wheel_loads") == pytest.approx(
+        [weight_f + side - pitch, weight_f - side - pitch, weight_r + side + pitch,
+         weight_r - side + pitch], rel=1e-9)
+
+
+@pytest.mark.parametrize("extra", ["  wheelbase: 2.6 m\n  cg_to_front: 1.0 m\n  bank_angle: 5 deg\n",
+                                   "  wheelbase: 2.6 m\n  cg_to_rear: 0.9 m\n"
+                                   "  engine_axis: fore_and_aft\n  engine_inertia: 1.2 kg m^2\n"
+                                   "  gear_ratio: 4\n  engine_rotation: clockwise seen from the rear"
+                                   "\n  turn: right\n"])
+def test_item04_limiting_speed_where_the_free_body_lifts_a_wheel(write, extra):
+    path = write(CAR.format(extra=extra))
+    v_lim = si(path, "limiting_speed")[0]
+    cg = 1.0 if "cg_to_front" in extra else 2.6 - 0.9
+    bank = math.radians(5) if "bank" in extra else 0.0
+    turn = "right" if "right" in extra else "left"
+
+    def least(v):
+        H_across = 4 * 2.5 * v / 0.3
+        H_along = 1.2 * 4 * v / 0.3 if "fore_and_aft" in extra else 0.0  # clockwise from the rear: forward
+        return min(free_body_loads(1600, 9.81, 0.55, 1.5, 2.6, cg, bank, v, 80.0, turn,
+                                   H_across, H_along))
+
+    assert v_lim == pytest.approx(brentq(least, 1.0, 200.0, xtol=1e-12), rel=1e-7)
+
+
+def test_item04_level_midway_car_is_the_old_model(write):
+    """With the wheelbase given and the centre of mass midway, the general car gives the
+    outer and inner reactions and limiting speed of the plain one."""
+    plain = write(CAR.format(extra="").replace("  axle_loads: N\n", "").replace(
+        "wheel_loads", "wheel_reactions"), "plain.yaml")
+    book = write(CAR.format(extra="  wheelbase: 2.6 m\n").replace("  axle_loads: N\n", "")
+                 .replace("wheel_loads", "wheel_reactions"), "book.yaml")
+    assert si(book, "wheel_reactions") == pytest.approx(si(plain, "wheel_reactions"), rel=1e-12)
+    assert si(book, "limiting_speed") == pytest.approx(si(plain, "limiting_speed"), rel=1e-9)
+
+
+@pytest.mark.parametrize("extra, find, key, words", [
+    ("  wheelbase: 2.6 m\n  cg_to_front: 1.0 m\n", "wheel_reactions", "find.wheel_reactions",
+     "wheel_loads"),
+    ("  wheelbase: 2.6 m\n  engine_axis: fore_and_aft\n  engine_inertia: 1 kg m^2\n"
+     "  engine_sense: same\n  engine_rotation: clockwise seen from the front\n  turn: left\n",
+     "wheel_loads", "given.engine_sense", "engine_rotation"),
+    ("  wheelbase: 2.6 m\n  engine_axis: fore_and_aft\n  engine_inertia: 1 kg m^2\n  turn: left\n",
+     "wheel_loads", "given.engine_rotation", "seen from"),
+    ("  wheelbase: 2.6 m\n  engine_axis: fore_and_aft\n  engine_inertia: 1 kg m^2\n"
+     "  engine_rotation: clockwise seen from the front\n", "wheel_loads", "given.turn", "turn"),
+    ("  engine_axis: fore_and_aft\n  engine_inertia: 1 kg m^2\n  turn: left\n"
+     "  engine_rotation: clockwise seen from the front\n", "wheel_loads", "given.wheelbase",
+     "wheelbase"),
+    ("  engine_rotation: clockwise seen from the front\n", "wheel_loads",
+     "given.engine_rotation", "fore_and_aft"),
+    ("  wheelbase: 2.6 m\n  cg_to_front: 3 m\n", "wheel_loads", "given.cg_to_front",
+     "between the axles"),
+    ("  cg_to_front: 1 m\n", "wheel_loads", "given.wheelbase", "wheelbase"),
+    ("  bank_angle: 95 deg\n", "wheel_loads", "given.bank_angle", "90 deg"),
+    ("  cant: 2 m\n", "wheel_loads", "given.cant", "track"),
+    ("  cant: 0.1 m\n  bank_angle: 4 deg\n", "wheel_loads", "given.cant", "not both"),
+    ("  engine_speed: 3000 rpm\n  gear_ratio: 3\n  engine_inertia: 1 kg m^2\n", "wheel_loads",
+     "given.engine_speed", "not both"),
+    ("  engine_axis: sideways\n", "wheel_loads", "given.engine_axis", "across"),
+])
+def test_item04_what_the_model_cannot_represent_is_refused(run, write, extra, find, key, words):
+    text = CAR.format(extra=extra).replace("  wheel_loads: N\n  axle_loads: N\n"
+                                           "  limiting_speed: m/s\n", f"  {find}: N\n")
+    result = run("solve", write(text))
+    assert result.exit_code == 2, result.output
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and key in lines[0] and words in lines[0], lines
+
+
+def test_item04_cant_is_the_bank_of_its_sine(write):
+    by_cant = write(CAR.format(extra="  cant: 0.12 m\n"), "c.yaml")
+    by_angle = write(CAR.format(extra=f"  bank_angle: {math.degrees(math.asin(0.12 / 1.5))!r} deg\n"),
+                     "a.yaml")
+    assert si(by_cant, "wheel_loads") == pytest.approx(si(by_angle, "wheel_loads"), rel=1e-12)
