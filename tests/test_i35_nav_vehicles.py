@@ -525,3 +525,22 @@ def test_item04_cant_is_the_bank_of_its_sine(write):
     by_angle = write(CAR.format(extra=f"  bank_angle: {math.degrees(math.asin(0.12 / 1.5))!r} deg\n"),
                      "a.yaml")
     assert si(by_cant, "wheel_loads") == pytest.approx(si(by_angle, "wheel_loads"), rel=1e-12)
+
+
+def test_item03_the_worked_steps_agree_with_the_physics_functions(write):
+    """The kind's trees and physics/directional_gyro.py compute the same quantities."""
+    from gyro_cli.physics import directional_gyro as dg
+
+    path = dg_file(write, "  latitude: 35 S\n  latitude_nut: 48 N\n  ground_speed: 320 kt\n"
+                          "  direction: west\n  angular_momentum: 0.5 kg m^2/s",
+                   "{drift_rate: deg/h, earth_rate_drift: deg/h, transport_wander: deg/h, "
+                   "nut_correction: deg/h, nut_moment: N m}")
+    lat, nut = math.radians(-35), math.radians(48)
+    assert si(path, "earth_rate_drift")[0] == pytest.approx(dg.earth_rate_drift(SIDEREAL, lat))
+    assert si(path, "transport_wander")[0] == pytest.approx(
+        dg.transport_wander(-320 * KT, lat, dg.NAUTICAL_EARTH_RADIUS))
+    assert si(path, "nut_correction")[0] == pytest.approx(dg.nut_correction(SIDEREAL, nut))
+    assert si(path, "nut_moment")[0] == pytest.approx(dg.nut_moment(0.5, SIDEREAL, nut))
+    # westward in the south: with the Earth's sense reversed there, the transport wander is
+    # to the right (clockwise), opposite to the Earth's apparent drift to the left
+    assert si(path, "transport_wander")[0] > 0 > si(path, "earth_rate_drift")[0]

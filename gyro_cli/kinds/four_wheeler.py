@@ -45,7 +45,7 @@ ax, ay, az = names("x y z")
 H0, C0, wp0, Cg0, Cc0, m0, g0, R0 = names("H C omega_p C_g C_c m g R")
 I_w0, I_E0, R_o0, R_i0, x0, v_lim0, I_eq0, r_w0, h0 = names("I_w I_E R_outer R_inner x v_lim I_eq "
                                                              "r_w h")
-beta0, v0, F_f0, F_r0, N0, a_f0, a_r0, Cp0 = names("beta v F_front F_rear N a_f a_r C_p")
+beta0, F_f0, F_r0, N0, a_f0, a_r0, Cp0 = names("beta F_front F_rear N a_f a_r C_p")
 P_fo0, P_fi0, P_ro0, P_ri0 = names("P_front,outer P_front,inner P_rear,outer P_rear,inner")
 
 # The sentences that hold no values are built once, here: building their trees again on
@@ -209,14 +209,14 @@ def _book_car(given: Given, find: frozenset[str], work: Work) -> None:
     """Each wheel's load on a banked track, the centre of mass anywhere on the wheelbase,
     engines across or along the car (physics/vehicles.py, CarLoads)."""
     bank = _bank(given, work)
-    L, a_f = _wheelbase(given, find)
+    L, a_f = _wheelbase(given)
     v = given["speed"] if "speed" in given else _no_speed(find)
     level_rest = v == 0 and not bank and "limiting_speed" not in find
     m, g = given["mass"], given["g"]
-    h = given.get("cg_height", 0.0) if level_rest else given["cg_height"]
-    x = given.get("track", 1.0) if level_rest else given["track"]
+    h = (given.get("cg_height") or 0.0) if level_rest else given["cg_height"]
+    x = (given.get("track") or 1.0) if level_rest else given["track"]
     along = given.word("engine_axis", "across") == "fore_and_aft"
-    _engine_words(given, along, v)
+    _engine_words(given, along)
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_BOOK_AXES)
     if not level_rest:
@@ -234,7 +234,7 @@ def _book_car(given: Given, find: frozenset[str], work: Work) -> None:
     loads = V.car_loads(m, g, h, x, L, a_f, bank, v, R, across_h, along_h)
     if "speed" in given:
         _book_steps(given, work, loads, v, R, bank, L, a_f, across_h, along_h)
-        _book_answers(given, find, work, loads, L, a_f)
+        _book_answers(find, work, loads)
     if "limiting_speed" in find:
         _book_limit(work, m, g, h, x, L, a_f, bank, R, across_h, along_h)
 
@@ -259,7 +259,7 @@ def _bank(given: Given, work: Work) -> float:
         math.pi / 180
 
 
-def _wheelbase(given: Given, find: frozenset[str]) -> tuple[float, float]:
+def _wheelbase(given: Given) -> tuple[float, float]:
     """(L, a_f): the wheelbase and the centre of mass's distance behind the front axle."""
     ahead = [k for k in ("cg_to_front", "cg_to_rear") if k in given]
     if len(ahead) == 2:
@@ -279,7 +279,7 @@ def _wheelbase(given: Given, find: frozenset[str]) -> tuple[float, float]:
     return L, d if ahead[0] == "cg_to_front" else L - d
 
 
-def _engine_words(given: Given, along: bool, v: float) -> None:
+def _engine_words(given: Given, along: bool) -> None:
     """Refuse a key the engine's mounting makes meaningless, or a missing one it needs."""
     engine = given["engine_inertia"] * given["engines"] > 0
     if along:
@@ -339,8 +339,7 @@ def _momenta(given: Given, work: Work, v: float, along: bool) -> tuple[float, fl
     """Steps for H across the car and H_L along it, at speed v (values as _rotors gave)."""
     rw = given["wheel_radius"]
     w_w = work.step("omega_w", Sym("v", v, "m/s") / Sym("r_w", rw, "m"), unit="rad/s")
-    sums = [s for s in work.sections if s.title == "Rotating parts"][-1].steps
-    wheels, engines = sums[0].value, sums[1].value
+    wheels, engines = _wheels(given).value, given["engines"] * given["engine_inertia"]
     S_w, S_E = Sym("sum I_w", wheels, "kg m^2"), Sym("sum I_E", engines, "kg m^2")
     omega_w = Sym("omega_w", w_w, "rad/s")
     if not engines and "engine_speed" not in given:  # the plain model's I_eq, G sum I_E = 0
@@ -450,8 +449,7 @@ def _book_steps(given: Given, work: Work, loads: V.CarLoads, v: float, R: float,
                        Cp0, "=", q(loads.pitch_couple, "N m")))
 
 
-def _book_answers(given: Given, find: frozenset[str], work: Work, loads: V.CarLoads,
-                  L: float, a_f: float) -> None:
+def _book_answers(find: frozenset[str], work: Work, loads: V.CarLoads) -> None:
     fo, fi, ro, ri = loads.wheels
     work.answer("wheel_loads", "P", [fo, fi, ro, ri], "force",
                 ["front outer", "front inner", "rear outer", "rear inner"])
