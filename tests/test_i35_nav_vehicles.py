@@ -510,10 +510,12 @@ def test_item04_level_midway_car_is_the_old_model(write):
     ("  engine_speed: 3000 rpm\n  gear_ratio: 3\n  engine_inertia: 1 kg m^2\n", "wheel_loads",
      "given.engine_speed", "not both"),
     ("  engine_axis: sideways\n", "wheel_loads", "given.engine_axis", "across"),
+    ("  cant: 1.3 m\n", "limiting_speed", "given.cant", "no load even at rest"),
 ])
 def test_item04_what_the_model_cannot_represent_is_refused(run, write, extra, find, key, words):
     text = CAR.format(extra=extra).replace("  wheel_loads: N\n  axle_loads: N\n"
-                                           "  limiting_speed: m/s\n", f"  {find}: N\n")
+                                           "  limiting_speed: m/s\n",
+                                           f"  {find}: {'m/s' if 'speed' in find else 'N'}\n")
     result = run("solve", write(text))
     assert result.exit_code == 2, result.output
     lines = result.stderr.strip().splitlines()

@@ -236,7 +236,8 @@ def _book_car(given: Given, find: frozenset[str], work: Work) -> None:
         _book_steps(given, work, loads, v, R, bank, L, a_f, across_h, along_h)
         _book_answers(find, work, loads)
     if "limiting_speed" in find:
-        _book_limit(work, m, g, h, x, L, a_f, bank, R, across_h, along_h)
+        _book_limit(work, m, g, h, x, L, a_f, bank, R, across_h, along_h,
+                    "given.cant" if "cant" in given else "given.bank_angle")
 
 
 def _no_speed(find: frozenset[str]) -> float:
@@ -471,7 +472,7 @@ def _book_answers(find: frozenset[str], work: Work, loads: V.CarLoads) -> None:
 
 def _book_limit(work: Work, m: float, g: float, h: float, x: float, L: float, a_f: float,
                 bank: float, R: float, across: tuple[float, float],
-                along: tuple[float, float]) -> None:
+                along: tuple[float, float], bank_key: str) -> None:
     work.section("Limiting speed: the first wheel's load falls to zero")
     work.text("each wheel's load is a quadratic in the speed (the couples grow with its "
               "square, or with it for an engine at a set speed): its root, found exactly")
@@ -479,7 +480,7 @@ def _book_limit(work: Work, m: float, g: float, h: float, x: float, L: float, a_
     if min(at_rest) < 0:
         raise InputError("a wheel carries no load even at rest: the bank tips the car inward "
                          "(its centre of mass lies outside the wheels)",
-                         key="given.bank_angle")
+                         key=bank_key)
     v = V.first_lift_speed(lambda s: V.car_loads(m, g, h, x, L, a_f, bank, s, R, across,
                                                  along).wheels)
     if v is None:
