@@ -9,14 +9,18 @@ couples), never by calling gyro's formula again.
 
 from __future__ import annotations
 
+import math
 import re
 
+import numpy as np
 import pytest
 import yaml
+from scipy.optimize import brentq
 
 from gyro_cli import kinds
 from gyro_cli.commands import authoring
-from gyro_cli.solving.problem import load
+from gyro_cli.solving.problem import build, load
+from gyro_cli.solving.solve import solve, solve_file
 
 
 # ---- item 9: every template's statement reads as a sentence -------------------------
@@ -108,12 +112,6 @@ def test_item09_a_kind_without_its_own_statement_still_gets_sentences(monkeypatc
 
 
 # ---- item 3: navigation gyros on the rotating Earth ---------------------------------
-
-import math  # noqa: E402
-
-import numpy as np  # noqa: E402
-
-from gyro_cli.solving.solve import solve_file  # noqa: E402
 
 DEG_H = math.pi / 180 / 3600
 SIDEREAL = 7.292115e-5  # rad/s
@@ -298,8 +296,6 @@ def test_item03_answers_that_need_more_data_say_which_key(run, write):
 
 # ---- item 4: four-wheelers as the books draw them -----------------------------------
 
-from scipy.optimize import brentq  # noqa: E402
-
 RPM = 2 * math.pi / 60
 
 
@@ -430,14 +426,10 @@ def test_item04_banked_trolley(problems_dir):
     # a limiting case: banked for the speed (tan b = v^2 / (g R)) no friction is needed
     # across the track and the centrifugal couple vanishes
     v_design = math.sqrt(9.81 * 30 * math.tan(b))
-    text = (problems_dir / "four_wheeler_banked_trolley.yaml").read_text()
-    import yaml as _yaml
-    data = _yaml.safe_load(text)
+    data = yaml.safe_load((problems_dir / "four_wheeler_banked_trolley.yaml").read_text())
     data["given"]["speed"] = f"{v_design!r} m/s"
     data["find"] = {"centrifugal_couple": "N m"}
     data.pop("expected"), data.pop("statement")
-    from gyro_cli.solving.problem import build
-    from gyro_cli.solving.solve import solve
     result = solve(build("<banked>", data, {}))
     assert abs(result.answers["centrifugal_couple"].si_values[0]) < 1e-9
 
