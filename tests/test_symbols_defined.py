@@ -231,6 +231,7 @@ def undefined(solution, asked=None) -> list[tuple[str, str]]:
 def _labelled(name: str, label: str) -> str:
     """F, A -> F_A; F_arm, A -> F_A,arm (the steps' names of one labelled value)."""
     base, _, sub = name.partition("_")
+    label = label.replace(" ", ",")  # "front outer": P_front,outer
     return f"{base}_{label},{sub}" if sub else f"{base}_{label}"
 
 

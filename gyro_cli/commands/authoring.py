@@ -129,19 +129,56 @@ def template(kind_name: str) -> str:
 
 
 def _statement_example(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> str:
-    """A statement for the template that names each given value by placeholder."""
-    import re
+    """A statement for the template that names each given value by placeholder.
 
+    A kind's example carries its own statement, written as a book states the problem;
+    without one the sentence is made from the keys' plain descriptions (never from the
+    formulas in the answers' docs, which read badly cut out of a sentence).
+    """
+    example = kind.extra.get("example") or {}
+    if example.get("statement"):
+        return " ".join(str(example["statement"]).split())
     params = {p.name: p for p in list(kind.params) +
               (list(BODY_PARAMS) if kind.uses_body else [])}
-    short = {k: re.sub(r"\s*\([^)]*\)", "", params[k].doc if k in params else k).split(";")[0]
-             for k in given}
-    data = [f"{short[k]} {{{k}}}" for k in given]
-    asked = ", ".join(re.sub(r"\s*\([^)]*\)", "", a.doc) for a in kind.answers
-                      if a.name in find) or kind.answers[0].doc
+    data = [f"{_phrase(_prose(params.get(k)), k)} {_value(params.get(k), k, given[k])}"
+            for k in given]
+    asked = [_phrase(a.doc if a.dimension else "", a.name) for a in kind.answers
+             if a.name in find] or [_phrase(kind.answers[0].doc, kind.answers[0].name)]
     if not data:
-        return f"State the problem here; write {{key}} for a given value. Find {asked}."
-    return f"Given: {'; '.join(data)}. Find {asked}."
+        return f"State the problem here; write {{key}} for a given value. Find {_and(asked)}."
+    return f"Given {_and(data)}. Find {_and(asked)}."
+
+
+def _value(param: Param | None, key: str, value: str) -> str:
+    """A given value in the statement: ``{key}``, or a word key's value in words."""
+    if param is not None and param.dimension == "word":
+        words = " ".join(str(value).replace("_", " ").split())
+        return words.replace("{", "{{").replace("}", "}}")
+    return f"{{{key}}}"
+
+
+def _prose(param: Param | None) -> str:
+    """A key's description, or nothing for a word key (its doc lists the choices)."""
+    return "" if param is None or param.dimension == "word" else param.doc
+
+
+def _phrase(doc: str, name: str) -> str:
+    """A noun phrase for a key or an answer: its description up to the first clause
+    break, when that is plain words, else its name in words ("the heel angle")."""
+    import re
+
+    text = re.sub(r"\s*\([^()]*\)", "", doc).split(";")[0].split(",")[0]
+    text = text.split(":")[-1].strip()
+    if not text or re.search(r"[/*^=+<>()\[\]{}'`_]|\d|\b[A-Z]\b|\bsqrt\b", text) \
+            or not re.fullmatch(r"[A-Za-z' -]+", text) or " or " in f" {text} " \
+            or text.split()[0] in ("along", "about", "at", "to", "from", "instead", "each"):
+        text = name.replace("_", " ")
+    return text if text.split()[0] in ("the", "a", "an") else f"the {text}"
+
+
+def _and(items: list[str]) -> str:
+    """'a', 'a and b', 'a, b and c'."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -> dict[str, str]:
@@ -168,6 +205,10 @@ def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -
 
 QUANTITY_PATTERN = (r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*"
                     r"[A-Za-z_°µΩ(1]?[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
+
+#: a latitude or longitude written with its hemisphere first, "S 30", "N45.5 deg"
+HEMISPHERE_FIRST = (r"^\s*([NSEWnsew]|[Nn]orth|[Ss]outh|[Ee]ast|[Ww]est)\.?\s*"
+                    r"(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
 
 
 def schema() -> dict[str, Any]:
@@ -278,6 +319,11 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
                                                       ("mass", "x", "y", "z")}}}
         else:
             given[p.name] = dict(quantity, description=_described(p, p.dimension))
+            if p.hemisphere:  # "S 30" as well as "30 S" (which the quantity pattern takes)
+                given[p.name] = {"anyOf": [quantity, {"type": "string", "maxLength":
+                                                      units.MAX_TEXT,
+                                                      "pattern": HEMISPHERE_FIRST}],
+                                 "description": given[p.name]["description"]}
             if p.limits_declared():
                 # a quantity is text with a unit: the limits, in SI, are for editors to show
                 si = units.si_text(p.dimension)

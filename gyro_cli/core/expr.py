@@ -35,7 +35,7 @@ SHOWN = {"deg": (math.pi / 180, "rad"),
          "arcsec/yr": (math.pi / 180 / 3600 / (365.25 * 86400.0), "rad/s"),  # Julian year
          "yr": (365.25 * 86400.0, "s"), "min": (60.0, "s"), "h": (3600.0, "s"),
          "yr/deg": (365.25 * 86400.0 * 180 / math.pi, "s/rad"),
-         "d": (86400.0, "s")}
+         "d": (86400.0, "s"), "deg/h": (math.pi / 180 / 3600, "rad/s")}
 
 #: the value of a symbol only named, in a definition (a `Let`'s body): its value is not
 #: needed. This very object (``math.nan``), so it is told from a nan made by an overflow.

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 import operator
+import re
+
 from .record import record
 
 BOUNDS = ("[]", "[)", "(]", "()")
@@ -40,6 +42,7 @@ class Param:
     limits: tuple[str, str] | None = None
     reason: str = ""
     symbol_tree: object = None  # a symbol that is not one name, as a tree (core.expr)
+    hemisphere: str = ""  # "NS" (a latitude) or "EW" (a longitude): "30 S" is -30 deg
 
     def __post_init__(self) -> None:
         if self.bounds not in BOUNDS:
@@ -103,6 +106,36 @@ class Param:
         if self.whole:
             return f"{said_all}, a whole number" if parts else f"{self.name} a whole number"
         return said_all
+
+
+_HEMISPHERE_WORDS = {"n": "N", "north": "N", "s": "S", "south": "S", "e": "E", "east": "E",
+                     "w": "W", "west": "W"}
+_WORD = r"(?<![A-Za-z])(north|south|east|west|[NSEWnsew])"
+_NUMBER = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?"
+_AFTER = re.compile(rf"^\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*{_WORD}\.?\s*$", re.I)
+_BEFORE = re.compile(rf"^\s*{_WORD}\.?\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*$", re.I)
+
+
+def split_hemisphere(text: str, letters: str) -> tuple[str, int] | None:
+    """``30 S``, ``30 deg S``, ``30°S``, ``S 30`` -> ("30 deg", -1) for letters "NS"
+    (N and E are +1; a bare number is in degrees); None when no hemisphere is written.
+
+    Raises ValueError, in words, for a letter of the other pair (``30 E`` as a latitude)
+    or a sign written with a hemisphere (``-30 S``).
+    """
+    match = _AFTER.match(text) or _BEFORE.match(text)
+    if match is None:
+        return None
+    word = next(g for g in match.groups() if g and g.lower() in _HEMISPHERE_WORDS)
+    letter = _HEMISPHERE_WORDS[word.lower()]
+    number, unit = match.group("number"), match.group("unit").strip() or "deg"
+    if letter not in letters:
+        raise ValueError(f"{word!r} is not a hemisphere of this key: write {letters[0]} or "
+                         f"{letters[1]}")
+    if number[0] in "+-":
+        raise ValueError(f"a sign and a hemisphere together: write {number.lstrip('+-')} "
+                         f"{letter} or {number} deg, not both")
+    return f"{number} {unit}", (1 if letter in "NE" else -1)
 
 
 _OPS = {">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le,

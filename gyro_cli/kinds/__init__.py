@@ -30,6 +30,7 @@ REGISTRY: dict[str, str] = {
     "earth_precession": "gyro_cli.kinds.earth_precession",
     "gyrocompass": "gyro_cli.kinds.gyrocompass",
     "rate_gyro": "gyro_cli.kinds.rate_gyro",
+    "directional_gyro": "gyro_cli.kinds.directional_gyro",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

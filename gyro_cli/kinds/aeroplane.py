@@ -123,8 +123,12 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
            "example": {
+        "statement": ("An aeroplane makes a {turn} turn of radius {turn_radius} at {speed}. Its "
+                      "engine and propeller have a mass of {mass} and a radius of gyration of "
+                      "{k_axial}, and they turn at {spin}, {rotor_sense}. Find the gyroscopic "
+                      "couple on the aeroplane and its effect."),
         "given": {"mass": "400 kg", "k_axial": "0.3 m", "spin": "2400 rpm",
-                  "rotor_sense": "clockwise_from_rear", "speed": "200 km/h",
+                  "rotor_sense": "clockwise seen from the rear", "speed": "200 km/h",
                   "turn_radius": "50 m", "turn": "left"},
         "find": {"couple": "N*m", "effect": None},
         "vary": {"speed": "[0.8, 1.2]"}}},

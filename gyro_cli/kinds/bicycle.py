@@ -509,6 +509,11 @@ KIND = Kind(
     solve=solve,
     uses_body=False,
     extra={"example": {
+        "statement": ("The benchmark bicycle of Meijaard, Papadopoulos, Ruina and Schwab (2007) "
+                      "rides straight ahead at "
+                      "{speed}. Find the speeds at which the weave and the capsize modes change "
+                      "their stability, the eigenvalues at this speed, and whether the bicycle is "
+                      "then self-stable."),
         "given": {"preset": "benchmark", "speed": "5 m/s"},
         "find": {"weave_speed": "m/s", "capsize_speed": "m/s", "eigenvalues_real": "s^-1",
                  "eigenvalues_imag": "s^-1", "motion": None},

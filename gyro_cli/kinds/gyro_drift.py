@@ -248,6 +248,11 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
            "example": {
+        "statement": ("A gyro rotor with a moment of inertia of {J} spins at {spin} in gimbals; "
+                      "rotor and gimbals have a moment of inertia of {I} about each gimbal axis. "
+                      "A disturbing moment of {moment} acts about one gimbal axis for {duration}. "
+                      "Find the rate at which the spin axis drifts, the angle it drifts through, "
+                      "and the frequency and amplitude of its nutation."),
         "given": {"J": "2.5e-4 kg m^2", "spin": "24000 rpm", "moment": "1e-7 N m",
                   "I": "2e-4 kg m^2", "duration": "1 h"},
         "find": {"drift_rate": "deg/h", "drift_angle": "deg", "nutation_frequency": "Hz",

@@ -158,8 +158,8 @@ KIND = Kind(
             "(north-seeking moment, period of the swing about north)",
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
-        Param("latitude", "angle", "lambda", "latitude of the site (north or south)",
-              range=(-math.pi / 2, math.pi / 2)),
+        Param("latitude", "angle", "lambda", "latitude of the site (north or south: '50 N', "
+              "'35 S')", range=(-math.pi / 2, math.pi / 2), hemisphere="NS"),
         Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
@@ -188,6 +188,11 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
            "example": {
+        "statement": ("The rotor of a gyrocompass, a {shape} of mass {mass} and radius {radius}, "
+                      "spins at {spin} at a latitude of {latitude}. Its sensitive element has a "
+                      "moment of inertia of {I_vertical} about the vertical. Find the period of "
+                      "its small swings about north, the north-seeking moment when its axis "
+                      "points {deviation} east of north, and where the axis settles."),
         "given": {"mass": "2 kg", "shape": "disk", "radius": "60 mm", "spin": "12000 rpm",
                   "I_vertical": "0.004 kg m^2", "latitude": "50 deg", "deviation": "10 deg"},
         "find": {"period": "s", "moment": "N*m", "settles": None},

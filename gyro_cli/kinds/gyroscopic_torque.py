@@ -726,6 +726,10 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A rotor of mass {mass} with a radius of gyration of {k_axial} spins at "
+                      "{spin} in two bearings {bearing_spacing} apart, which carry a total mass "
+                      "of {supported_mass}. Its frame turns about the vertical at {precession}. "
+                      "Find the forces on the two bearings and the gyroscopic moment."),
         "given": {"mass": "2.5 kg", "k_axial": "35 mm", "supported_mass": "10 kg",
                   "spin": "-1725 rpm", "precession": "48 rpm", "bearing_spacing": "200 mm"},
         "find": {"bearing_forces": "N", "moment": "N*m"},

@@ -310,6 +310,12 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
            "example": {
+        "statement": ("The rotor of a rate gyro has a moment of inertia of {J} and spins at "
+                      "{spin}. Its gimbal, with a moment of inertia of {gimbal_inertia} about the "
+                      "gimbal axis, is held by a torsion spring of stiffness {stiffness} and a "
+                      "damper of {damping}. The case turns at {rate} about the input axis. Find "
+                      "the steady gimbal angle, the sensitivity, the natural frequency and the "
+                      "damping ratio."),
         "given": {"J": "2e-4 kg m^2", "spin": "24000 rpm", "stiffness": "0.8 N m/rad",
                   "damping": "0.015 N m s/rad", "gimbal_inertia": "1e-4 kg m^2",
                   "rate": "5 deg/s"},

@@ -521,6 +521,12 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
+                      "and {k_pivot} about its point of support, and its centre of mass is "
+                      "{cg_distance} from that point. It is released with its axis at {theta0} "
+                      "from the upward vertical and a spin of {spin}. Find the largest angle of "
+                      "its axis from the vertical, the period of nutation, the mean rate of "
+                      "precession, and the kind of motion."),
         "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
                   "cg_distance": "1.5 in", "theta0": "30 deg", "spin": "1800 rpm"},
         "find": {"theta_max": "deg", "nutation_period": "s", "mean_precession": "rpm",

@@ -536,6 +536,10 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A {shape} weighing {weight}, of radius {radius}, is mounted on an axle "
+                      "pinned to a vertical shaft and rolls on a horizontal plane in a circle of "
+                      "radius {path_radius} while the shaft turns at {precession}. Find the "
+                      "normal force of the plane on the disk and the spin of the disk."),
         "given": {"arrangement": "axle_pivot", "weight": "96.6 lb", "shape": "disk",
                   "radius": "1 ft", "path_radius": "2 ft", "precession": "48 rpm"},
         "find": {"normal_force": "lbf", "spin": "rpm"},

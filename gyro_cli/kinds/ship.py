@@ -347,8 +347,12 @@ KIND = Kind(
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
            "example": {
+        "statement": ("The turbine rotor of a ship has a mass of {mass} and a radius of gyration "
+                      "of {k_axial}, and it turns at {spin}, {rotor_sense}. The ship steers to "
+                      "the {turn} at {speed} on a curve of radius {turn_radius}. Find the "
+                      "gyroscopic couple and its effect on the ship."),
         "given": {"mass": "8000 kg", "k_axial": "0.6 m", "spin": "1800 rpm",
-                  "rotor_sense": "clockwise_from_stern", "motion": "steering",
+                  "rotor_sense": "clockwise seen from the stern", "motion": "steering",
                   "speed": "100 km/h", "turn_radius": "75 m", "turn": "left"},
         "find": {"couple": "kN*m", "effect": None},
         "vary": {"speed": "[0.8, 1.2]"}}},

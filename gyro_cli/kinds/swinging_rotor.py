@@ -235,6 +235,11 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A {shape} of mass {mass} and radius {radius} spins at {spin} on an arm; "
+                      "its centre is {arm_length} from a horizontal shaft held in two bearings "
+                      "{bearing_spacing} apart, about which the arm swings. Find the forces on "
+                      "the bearings and the arm's rate of swing when the arm is at {theta} from "
+                      "the upward vertical."),
         "given": {"mass": "2 kg", "shape": "disk", "radius": "100 mm", "spin": "300 rad/s",
                   "arm_length": "250 mm", "bearing_spacing": "200 mm", "theta": "90 deg"},
         "find": {"bearing_forces": "N", "angular_rate": "rad/s"},

@@ -470,6 +470,12 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"gravity": False, "example": {
+        "statement": ("A free symmetric body has moments of inertia of {J} about its symmetry "
+                      "axis and {I_cg} about a transverse axis through its centre of mass. Its "
+                      "axis makes an angle of {nutation_angle} with its angular momentum, and it "
+                      "spins at {spin} relative to the precessing frame. Find the rate and the "
+                      "period of its precession, the magnitude of its angular velocity, and "
+                      "whether the precession is direct or retrograde."),
         "given": {"J": "100 kg m^2", "I_cg": "125 kg m^2", "nutation_angle": "20 deg",
                   "spin": "1 rpm"},
         "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",

@@ -159,6 +159,13 @@ KIND = Kind(
     ),
     solve=solve,
     extra={"example": {
+        "statement": ("A motor cycle with its rider has a mass of {mass}, with the centre of mass "
+                      "{cg_height} above the road when upright. Each road wheel has a moment of "
+                      "inertia of {wheel_inertia} and a radius of {wheel_radius}; the engine's "
+                      "rotating parts have a moment of inertia of {engine_inertia}, turn "
+                      "{gear_ratio} times as fast as the wheels and in the {engine_sense} sense. "
+                      "It rounds a curve of radius {turn_radius} at {speed}. Find the angle of "
+                      "heel, the gyroscopic couple and the centrifugal couple."),
         "given": {"mass": "250 kg", "cg_height": "0.6 m", "wheel_inertia": "1 kg*m^2",
                   "wheel_radius": "300 mm", "engine_inertia": "0.3 kg*m^2", "gear_ratio": "5",
                   "engine_sense": "same", "speed": "90 km/h", "turn_radius": "50 m"},

@@ -37,6 +37,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Callable
 
 Vector = tuple[float, float, float]
 
@@ -291,3 +292,116 @@ def limiting_speed_squared(mass: float, g: float, cg_height: float, track: float
     if per_v2 <= 0:
         return None
     return mass * g * track * turn_radius / (2 * per_v2)
+
+
+# ---- a four-wheeler as the books draw it: bank, wheelbase, engine along the car ---
+
+@dataclass(frozen=True)
+class CarLoads:
+    """Each wheel's load (the track's force normal to its plane), by cause, SI.
+
+    Axes in the track's plane: x forward, y' across it toward the centre of the curve,
+    n normal to it; the track is banked by ``bank`` with its outer side higher. The
+    forces on the car in the frame turning with it (weight, the centrifugal m v^2 / R
+    through G) and the moments about G of the track's forces equal dH/dt of the rotors,
+    omega_p x H (Eq. 11.29):
+
+    - normal:      N = m (g cos(bank) + (v^2 / R) sin(bank))
+    - roll (about x, overturning outward): C_c = m h ((v^2 / R) cos(bank) - g sin(bank))
+      from the friction across the track at height h below G, and
+      C_g = H_across omega_p cos(bank) from the rotors turning with the axles
+    - pitch (about y', loading the front wheels when positive):
+      C_p = -t s H_along omega_p cos(bank), t = +1 turning left, s = +1 for a spin
+      vector pointing forward (an engine along the car)
+
+    Vertical balance and the pitch moment give the axle loads:
+    front N a_r / L + C_p / L, rear N a_f / L - C_p / L (a_f, a_r: G to the front and
+    rear axles). The roll moment is one equation for two axles: as the books do, each
+    axle takes half of it, (C_g + C_c) / (2 x) more on its outer wheel and less on its
+    inner one.
+    """
+
+    normal: float
+    front_share: float  # a_r / L
+    wheelbase: float
+    track: float
+    gyroscopic_couple: float
+    centrifugal_couple: float
+    pitch_couple: float
+
+    @property
+    def front_axle(self) -> float:
+        return self.normal * self.front_share + self.pitch_couple / self.wheelbase
+
+    @property
+    def rear_axle(self) -> float:
+        return self.normal * (1 - self.front_share) - self.pitch_couple / self.wheelbase
+
+    @property
+    def side_share(self) -> float:
+        """Each wheel's share of the roll couple, + outer, - inner."""
+        return (self.gyroscopic_couple + self.centrifugal_couple) / (2 * self.track)
+
+    @property
+    def wheels(self) -> tuple[float, float, float, float]:
+        """(front outer, front inner, rear outer, rear inner)."""
+        f, r, s = self.front_axle / 2, self.rear_axle / 2, self.side_share
+        return f + s, f - s, r + s, r - s
+
+
+def car_loads(mass: float, g: float, cg_height: float, track: float, wheelbase: float,
+              cg_to_front: float, bank: float, speed: float, turn_radius: float,
+              across: tuple[float, float], along: tuple[float, float]) -> CarLoads:
+    """The loads of :class:`CarLoads` at ``speed``.
+
+    Each rotor group's angular momentum is given as (per m/s of speed, fixed): a rotor
+    geared to the wheels has H = I G v / r_w, one at a given speed H = I omega. ``across``
+    is the sum over the rotors across the car (wheels, transverse engines), signed with
+    the wheels' sense; ``along`` is t s H of the engine along the car (the signs of
+    C_p's docstring). omega_p = v / R.
+    """
+    wp = speed / turn_radius
+    cos_b, sin_b = math.cos(bank), math.sin(bank)
+    centripetal = speed * speed / turn_radius
+    H_across = across[0] * speed + across[1]
+    H_along = along[0] * speed + along[1]
+    return CarLoads(
+        normal=mass * (g * cos_b + centripetal * sin_b),
+        front_share=(wheelbase - cg_to_front) / wheelbase,
+        wheelbase=wheelbase, track=track,
+        gyroscopic_couple=H_across * wp * cos_b,
+        centrifugal_couple=mass * cg_height * (centripetal * cos_b - g * sin_b),
+        pitch_couple=-H_along * wp * cos_b)
+
+
+def first_lift_speed(load_at: Callable[[float], tuple[float, ...]]) -> float | None:
+    """The least speed > 0 at which a wheel's load falls to zero, None if none does.
+
+    Each load is a + b v + c v^2 (the couples grow with v^2, or with v for a rotor at a
+    fixed speed), so three speeds fix it exactly; the root is then found in closed form.
+    """
+    l0, l1, l2 = load_at(0.0), load_at(1.0), load_at(2.0)
+    roots = []
+    for a, p, q in zip(l0, l1, l2):
+        c = (q - 2 * p + a) / 2
+        b = p - a - c
+        roots += _positive_roots(a, b, c)
+    return min(roots) if roots else None
+
+
+def _positive_roots(a: float, b: float, c: float) -> list[float]:
+    """Positive roots of a + b v + c v^2 = 0 where the load goes from positive to
+    negative (a wheel lifting, not one landing)."""
+    scale = max(abs(a), abs(b), abs(c), 1e-300)
+    if abs(c) < 1e-12 * scale:
+        return [-a / b] if b and -a / b > 0 and b < 0 else []
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        return []
+    root = math.sqrt(disc)
+    out = []
+    for v in ((-b - root) / (2 * c), (-b + root) / (2 * c)):
+        slope = b + 2 * c * v
+        if v > 0 and slope < 0:
+            out.append(v)
+    return out

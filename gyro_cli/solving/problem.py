@@ -15,7 +15,7 @@ from .. import kinds
 from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
-from ..core.params import _OPS, normal_word, read_word, safe_choices
+from ..core.params import _OPS, normal_word, read_word, safe_choices, split_hemisphere
 from ..core.given import Given
 from ..core.spec import Kind, Param
 
@@ -338,6 +338,7 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
             raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), list(params))}"
                              f" (see `gyro kinds`)", key=f"given.{key}")
         values[param.name], quantities[param.name] = _parse_param(param, text, facts)
+    _hemisphere_once(params, raw, values)
     defaulted = set()
     for param in facts.defaults:
         if param.name not in values:
@@ -346,6 +347,19 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
     return Given(values, defaulted=defaulted), quantities, us
+
+
+def _hemisphere_once(params: dict[str, Param], raw: dict, values: dict) -> None:
+    """A `hemisphere` word beside a latitude that writes its own (``30 S``) is refused: the
+    two could disagree, and neither should silently win."""
+    if "hemisphere" not in values:
+        return
+    for key, param in params.items():
+        text = raw.get(key)
+        if param.hemisphere == "NS" and key == "latitude" and isinstance(text, str) and \
+                split_hemisphere(text, param.hemisphere) is not None:
+            raise InputError(f"the latitude already names its hemisphere ({shown(text)}): "
+                             "give the hemisphere once", key="given.hemisphere")
 
 
 def _parse_param(param: Param, text: Any,
@@ -368,6 +382,10 @@ def _parse_param(param: Param, text: Any,
     if reading is None or reading[0] is not param:
         reading = (param, f"given.{param.name}", param.name == "weight", None)
     _, key, weight, limits = reading
+    if param.hemisphere and isinstance(text, str):
+        with_hemisphere = _parse_hemisphere(param, text, key)
+        if with_hemisphere is not None:
+            return with_hemisphere
     if text.__class__ is str:  # guarded's own checks are of other values; its refusal here
         try:
             value, quantity = units.parse(text, dimension, key, weight=weight)
@@ -385,6 +403,23 @@ def _parse_param(param: Param, text: Any,
         for test, x in limits:  # the declared limits, as Param.limits_broken tests them
             if not test(value, x):
                 within_limits(param, value, text, key)  # refused, in its words
+    return value, quantity
+
+
+def _parse_hemisphere(param: Param, text: str, key: str) -> tuple[float, Any] | None:
+    """A latitude or longitude written with its hemisphere (``30 S``, ``30 deg S``, ``S 30``):
+    the angle read without the letter, negative south (west), within the key's limits;
+    None when no hemisphere is written."""
+    try:
+        split = split_hemisphere(text, param.hemisphere)
+    except ValueError as err:
+        raise InputError(f"{err}, got {shown(text)}", key=key) from None
+    if split is None:
+        return None
+    angle, sign = split
+    value, quantity = guarded(units.parse, angle, param.dimension, key)
+    value = sign * value
+    within_limits(param, value, text, key)
     return value, quantity
 
 
