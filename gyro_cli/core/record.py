@@ -6,7 +6,8 @@ fifteen classes a ``gyro solve`` imports were a tenth of its time. ``@record``
 makes the same class without compiling anything: the fields are real
 ``dataclasses.Field`` objects (so ``dataclasses.replace``, ``fields``, ``asdict``
 and ``is_dataclass`` work as before), ``__init__``, ``__repr__`` and ``__eq__`` are
-shared functions that read the fields. A class made often keeps its speed by
+shared functions that read the fields (``__post_init__`` is called, as
+``@dataclass`` calls it). A class made often keeps its speed by
 writing its own ``__init__`` (kept, as ``@dataclass`` keeps one).
 
 ``frozen=True`` makes instances hashable by their fields, as a frozen dataclass
@@ -37,7 +38,7 @@ def _init_spec(cls: type) -> tuple[tuple[str, Any, Any], ...]:
 COMPILE_AFTER = 40
 
 
-def _compiled_init(spec: tuple[tuple[str, Any, Any], ...]) -> Any:
+def _compiled_init(spec: tuple[tuple[str, Any, Any], ...], post_init: bool) -> Any:
     """The ``__init__`` @dataclass would write for these fields."""
     env: dict[str, Any] = {"MISSING": MISSING}
     params, lines = [], []
@@ -53,6 +54,8 @@ def _compiled_init(spec: tuple[tuple[str, Any, Any], ...]) -> Any:
         else:
             params.append(name)
             lines.append(f"self.{name} = {name}")
+    if post_init:
+        lines.append("self.__post_init__()")
     source = f"def __init__(self, {', '.join(params)}):\n    " + "\n    ".join(lines or ["pass"])
     exec(source, env)  # noqa: S102 - field names of gyro's own classes, never user text
     return env["__init__"]
@@ -65,7 +68,7 @@ def _init(self: Any, *args: Any, **kwargs: Any) -> None:
     calls = cls.__dict__.get("__record_calls__", 0) + 1
     cls.__record_calls__ = calls
     if calls == COMPILE_AFTER and cls.__dict__.get("__init__") is _init:
-        cls.__init__ = _compiled_init(spec)
+        cls.__init__ = _compiled_init(spec, hasattr(cls, "__post_init__"))
     if len(args) > len(spec):
         raise TypeError(f"{type(self).__name__}() takes {len(spec)} positional arguments "
                         f"but {len(args)} were given")
@@ -86,6 +89,9 @@ def _init(self: Any, *args: Any, **kwargs: Any) -> None:
     if kwargs:
         raise TypeError(f"{type(self).__name__}() got an unexpected keyword argument "
                         f"{next(iter(kwargs))!r}")
+    post_init = getattr(self, "__post_init__", None)
+    if post_init is not None:
+        post_init()
 
 
 def _values(self: Any) -> tuple:
