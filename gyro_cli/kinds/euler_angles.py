@@ -933,8 +933,11 @@ KIND = Kind(
                       "each transverse axis and {J} about its symmetry axis, both through the "
                       "fixed point. At an instant when its Euler angles are phi = {phi}, theta = "
                       "{theta} and psi = {psi}, their rates are {phi_rate}, {theta_rate} and "
-                      "{psi_rate}. Find the components of the angular velocity along the body "
-                      "axes, the kinetic energy, and the magnitude of the angular momentum."),
+                      "{psi_rate}, and the precession rate is increasing at {phi_acceleration}. "
+                      "Find the components of the angular velocity along the body axes, the "
+                      "kinetic energy, the magnitude of the angular momentum, the angular "
+                      "acceleration and the moment about the fixed point that this motion "
+                      "needs."),
         "given": {"phi": "30 deg", "theta": "60 deg", "psi": "45 deg", "phi_rate": "2 rad/s",
                   "theta_rate": "1 rad/s", "psi_rate": "10 rad/s",
                   "phi_acceleration": "0.5 rad/s^2", "I": "0.02 kg m^2", "J": "0.03 kg m^2"},
