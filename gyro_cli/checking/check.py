@@ -78,7 +78,8 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         result.status = "no expected answers"
         return result
     for name, (values, tolerance) in wanted.items():
-        result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict)
+        result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict,
+                                  convention=kind.answer(name).doc)
     for symbol, raw in step_values.items():
         result.answers += _compare_step(str(symbol), raw, problem, solved.solution, answer_names)
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"

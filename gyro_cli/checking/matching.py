@@ -69,15 +69,17 @@ def diagnose(expected: float, got: float, half_width: float,
     """The likely slip that turns ``expected`` into ``got``, or None.
 
     Tried in order: another computed root of the same answer, the sign, a power
-    of ten, then the factors in SLIPS. A factor counts when got is within the
-    answer's relative tolerance (at least 0.5%, at most 2%) of expected times it.
+    of ten, then the factors in SLIPS. A factor counts only when got is within the
+    answer's own tolerance (``half_width`` relative to expected, at most 2%) of
+    expected times it: a value that the slip, undone, would not make pass is just off.
     """
     for root in other_roots or []:
         if abs(root - expected) <= half_width:
             return f"the other root: expected matches the computed root {num(root)} (SI)"
     if expected == 0 or got == 0 or not math.isfinite(got):
         return None
-    window = min(max(half_width / abs(expected), 0.005), 0.02)
+    # 1e-12: the rounding of got / expected / factor, for an exact (zero) tolerance
+    window = min(half_width / abs(expected), 0.02) + 1e-12
     ratio = got / expected
     if not math.isfinite(ratio) or ratio == 0 or not math.isfinite(window):
         return None  # a denormal expected value: no slip to name
@@ -119,14 +121,15 @@ def match_in_order(n_expected: int, n_computed: int) -> list[tuple[int | None, i
 
 
 def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
-            strict: bool = True) -> list[AnswerCheck]:
+            strict: bool = True, convention: str = "") -> list[AnswerCheck]:
     """Compare the expected values of one answer with its computed values: roots as sets
     (each expected value with its nearest root), an ordered answer (labelled A, B, outer,
     inner, components) position by position.
 
     With ``strict`` False a computed root that no expected value claims, where
     every expected value found its root, is "not keyed": listed, not failed
-    (a book quotes the slow precession and not the fast one).
+    (a book quotes the slow precession and not the fast one). ``convention``: how
+    the kind signs this answer, quoted when an expected value is a computed one's size.
     """
     computed = list(reported.si_values)
     if tolerance.magnitude and reported.si_unit is not None:
@@ -226,6 +229,10 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                 check.message = (f"expected {value.text}, got {check.got}: too large to "
                                  f"express in {unit}")
             others = [c for k, c in enumerate(computed) if k != j]
+            if _size_only(float(value.si), got_si, width_si):
+                check.slip = _sign_convention(name, value, got, unit, label, tolerance, convention)
+                out.append(check)
+                continue
             check.slip = diagnose(float(value.si), got_si, width_si, others)
             if check.slip and check.slip.startswith("the other root") and in_order:
                 k = next(k for k, c in enumerate(computed)
@@ -243,3 +250,21 @@ def _other_root(value: Expected, roots: list[float], width_si: float, unit: str)
     root = next(c for c in roots if abs(c - float(value.si)) <= width_si)
     return (f"the other root: {value.text} is the computed root {num(root / value.factor)} "
             f"{unit}, which another expected value took")
+
+
+def _size_only(expected: float, got: float, width: float) -> bool:
+    """Whether got differs from expected in its sign alone: a book's magnitude
+    against gyro's signed value (checked before "the order", which the equal
+    sizes of a couple's two forces would also fit)."""
+    return (expected < 0 < got or got < 0 < expected) and \
+        abs(abs(got) - abs(expected)) <= width * (1 + 1e-12)
+
+
+def _sign_convention(name: str, value: Expected, got: float, unit: str, label: str,
+                     tolerance: Tolerance, convention: str) -> str:
+    """The sign slip of a value quoted as a size, naming how gyro signs the answer."""
+    where = f"the computed {label.strip(' ()')}" if label else "the computed value"
+    signs = f"gyro's sign convention for {name}: {convention}; " if convention else ""
+    return (f"the sign: got is minus the expected value: {value.text} is the size of {where}, "
+            f"{num(got)} {unit}".rstrip() + f"; {signs}write the signed value, or compare "
+            f"sizes with `tolerance: {tolerance.text} magnitude`")
