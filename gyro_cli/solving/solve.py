@@ -7,6 +7,7 @@ import re
 from ..core.record import record
 
 from ..core import units
+from ..core.alternatives import alternatives_of, step_tree
 from ..core.body import build_body
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
@@ -57,6 +58,7 @@ def _solve(problem: Problem) -> Result:
     work = Work()
     work.given.extend(_given_lines(problem))
     kind = problem.kind
+    _data_as_stated(problem, work)
     if kind.uses_body:
         problem.given.body = build_body(problem.given.values, problem.us_customary, work)
         if not kind.extra.get("gravity", True) and "weight" not in problem.given.values:
@@ -224,12 +226,32 @@ _BINARY = {Add, Sub, Mul, Div, Pow}
 _TREE_NODES = _BINARY | {Sym, Let, Neg, Num, Const, Call}  # exactly these classes
 
 
+def _data_as_stated(problem: Problem, work: Work) -> None:
+    """Each key the file stated another way (a diameter, an angle from the horizontal),
+    turned into the key the kind reads: a step of the worked answer."""
+    derived = problem.given.derived
+    if not derived:
+        return
+    params = params_by_name(problem.kind)
+    alternatives = alternatives_of(params)
+    work.section("Data as given")
+    for target, (key, si) in derived.items():
+        alternative = alternatives[key]
+        work.step(params[target].symbol, step_tree(alternative, si), unit=alternative.unit,
+                  note=f"({alternative.reading})")
+
+
 def _given_lines(problem: Problem) -> list[GivenLine]:
     params = params_by_name(problem.kind)
     lines = []
+    derived = problem.given.derived
     for key, value in problem.given.values.items():
         param = params[key]
         quantity = problem.quantities[key]
+        if key in derived:  # stated another way: the given line is the key as written
+            written, value = derived[key]
+            param = alternatives_of(params)[written].param_for(param)
+            key = written
         if isinstance(value, str):
             lines.append(GivenLine(key, param.symbol, str(quantity) if isinstance(quantity, str)
                                    else value, value, ""))
