@@ -69,3 +69,106 @@ def test_item6a_did_you_mean_wheel_diameter(write, run):
     result = run("solve", write(DRIVE.format(wheel="wheel_diametre: 1.8 m")))
     _one_line_refusal(result, "given.wheel_diametre")
     assert "did you mean 'wheel_diameter'" in result.stderr
+
+
+# ---- b. a shape with no size where only ratios matter ---------------------------------
+
+def _integrated_rates(theta: float, omega_z: float) -> tuple[float, float]:
+    """A thin disk (I = 1, J = 2: only the ratio matters) set free with its axis at theta to
+    H: Euler's equations and the attitude integrated with scipy. Returns (phidot, psidot):
+    the rate of the axis about H in space, and the spin relative to the precessing frame,
+    which is minus the rate at which omega turns about the axis seen in the body."""
+    import numpy as np
+    from scipy.integrate import solve_ivp
+
+    I, J = 1.0, 2.0
+    omega_e = omega_z * (J / I) * math.tan(theta)  # I omega_e / (J omega_z) = tan(theta)
+
+    def rates(_t, y):
+        w = y[:3]
+        R = y[3:].reshape(3, 3)
+        dw = [(I - J) / I * w[1] * w[2], (J - I) / I * w[0] * w[2], 0.0]
+        skew = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+        return np.concatenate([dw, (R @ skew).ravel()])
+
+    t = np.linspace(0.0, 2.0, 4001)
+    y0 = np.concatenate([[omega_e, 0.0, omega_z], np.eye(3).ravel()])
+    sol = solve_ivp(rates, (0.0, 2.0), y0, t_eval=t, rtol=1e-11, atol=1e-12)
+    w = sol.y[:3]
+    R = sol.y[3:].T.reshape(-1, 3, 3)
+    H = R[0] @ (np.diag([I, I, J]) @ w[:, 0])  # fixed in space
+    h = H / np.linalg.norm(H)
+    e1 = np.cross(h, [0.0, 1.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(h, e1)
+    k = R[:, :, 2]  # the symmetry axis in space
+    azimuth = np.unwrap(np.arctan2(k @ e2, k @ e1))
+    body_angle = np.unwrap(np.arctan2(w[1], w[0]))
+    return float(np.polyfit(t, azimuth, 1)[0]), float(-np.polyfit(t, body_angle, 1)[0])
+
+
+@pytest.mark.parametrize("theta_deg", [5.0, 30.0])
+def test_item6b_disk_with_no_size_against_eulers_equations(write, run, theta_deg):
+    """A tossed coin given as `shape: disk` only (no mass, no radius): the precession
+    gyro gives for the spin and the angle is the one a numerical integration finds."""
+    theta = math.radians(theta_deg)
+    phidot, psidot = _integrated_rates(theta, 10.0)
+    assert abs(phidot) == pytest.approx(2 * abs(psidot) / math.cos(theta), rel=1e-6)
+    result = run("solve", write(f"id: coin\nkind: torque_free\ngiven: {{shape: disk, spin: "
+                                f"{psidot!r} rad/s, nutation_angle: {theta_deg} deg}}\n"
+                                "find: {precession: rad/s}\n"))
+    assert result.exit_code == 0, result.output
+    answer = [line for line in result.stdout.splitlines() if "precession" in line][-1]
+    got = float(answer.split("=")[1].split()[0])
+    assert got == pytest.approx(phidot, rel=1e-3)
+    assert "no size given" in result.stdout
+
+
+def test_item6b_plate_wobbles_twice_per_spin(run, problems_dir):
+    """The bundled plate: for a slight wobble, twice as fast as the spin."""
+    result = run("check", problems_dir / "tossed_plate_wobble.yaml")
+    assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize("given, find, key", [
+    ("shape: disk, angular_momentum: 1 kg m^2/s, nutation_angle: 10 deg", "precession",
+     "given.radius"),
+    ("shape: disk, mass: 1 kg, angular_momentum: 1 kg m^2/s, nutation_angle: 10 deg",
+     "precession", "given.radius"),
+    ("shape: disk, radius: 1 cm, angular_momentum: 1 kg m^2/s, nutation_angle: 10 deg",
+     "precession", "given.mass"),
+    ("shape: disk, spin: -10 rad/s, nutation_angle: 10 deg", "angular_momentum",
+     "given.radius"),
+    ("shape: disk, spin: -10 rad/s, nutation_angle: 10 deg", "kinetic_energy",
+     "given.radius"),
+])
+def test_item6b_size_needed_is_refused(write, run, given, find, key):
+    """Where an answer needs the size (or the mass), one line names the missing key."""
+    result = run("solve", write(f"id: x\nkind: torque_free\ngiven: {{{given}}}\n"
+                                f"find: [{find}]\n"))
+    _one_line_refusal(result, key)
+
+
+def test_item6b_gravity_needs_the_size(write, run):
+    """A top's m g l against I ~ m r^2: the size is needed, and named."""
+    result = run("solve", write("id: x\nkind: steady_precession\ngiven: {shape: disk, "
+                                "cg_distance: 5 cm, spin: 3000 rpm, theta: 60 deg}\n"
+                                "find: [precession]\n"))
+    _one_line_refusal(result, "given.radius")
+
+
+def test_item6b_sizeless_disk_at_its_centre_in_steady_precession(write, run):
+    """steady_precession with the fixed point at the centre (torque-free): a disk with
+    no size; phidot = -J psidot / ((J - I) cos(theta)) = -2 psidot / cos(theta)."""
+    result = run("solve", write("id: x\nkind: steady_precession\ngiven: {shape: disk, "
+                                "cg_distance: 0 m, spin: -10 rad/s, theta: 60 deg}\n"
+                                "find: {precession: rad/s}\n"))
+    assert result.exit_code == 0, result.output
+    assert f"{2 * 10 / math.cos(math.radians(60)):.4g}" in result.stdout  # 40 rad/s
+
+
+def test_item6b_rolling_disk_still_needs_its_radius(write, run):
+    """A rolling disk's rates hold g / r: no size is refused, as before, naming it."""
+    result = run("solve", write("id: x\nkind: rolling_disk\ngiven: {shape: disk, mass: 1 kg, "
+                                "speed: 1 m/s}\nfind: [stability]\n"))
+    assert result.exit_code == 2 and "radius or diameter" in result.stderr

@@ -110,6 +110,20 @@ SHAPES: dict[str, Shape] = {
 DIMENSION_KEYS = {"radius": "r", "inner_radius": "r_i", "width": "w", "length": "L",
                   "height": "h"}
 
+#: shapes whose J / I_G is a pure number (one size, r): a problem asking only rates may
+#: give no size at all (a tossed coin), where the kind allows it
+SIZELESS = ("disk", "ring", "sphere", "hollow_sphere")
+_SIZE_KEYS = ("radius", "diameter", "inner_radius", "width", "length", "height")
+# an inertia-only key that would fix the size
+_INERTIA_KEYS = ("J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg")
+
+
+def sizeless_body(values: dict, allowed: bool) -> bool:
+    """Whether the body is a shape given with no size, its rates worked per unit r^2:
+    a shape of SIZELESS, no dimension and no inertia, in a kind that ``allowed`` it."""
+    return allowed and values.get("shape") in SIZELESS and \
+        not any(k in values for k in _SIZE_KEYS + _INERTIA_KEYS)
+
 
 def _shape_keys(shape: str) -> str:
     spec = SHAPES[shape]
@@ -118,8 +132,9 @@ def _shape_keys(shape: str) -> str:
     return ", ".join(names)
 
 
-def _check_shape_keys(values: dict, shape: str | None) -> None:
-    """Every dimension a shape needs is there; none it does not use is (a ring's length)."""
+def _check_shape_keys(values: dict, shape: str | None, sizeless: bool = False) -> None:
+    """Every dimension a shape needs is there (none, for a body of no size whose rates
+    need only its ratios); none it does not use is (a ring's length)."""
     if shape is None:
         for key in ("inner_radius", "width", "height", "length"):
             if key in values:
@@ -138,7 +153,8 @@ def _check_shape_keys(values: dict, shape: str | None) -> None:
             raise InputError(f"shape {shape} does not use {key}: its keys are "
                              f"{_shape_keys(shape)}{hint}", key=f"given.{key}")
     for key in spec.needs:
-        if key == "radius" and "radius" not in values and "diameter" not in values:
+        if key == "radius" and "radius" not in values and "diameter" not in values and \
+                not sizeless:
             raise InputError(f"shape {shape!r} needs radius or diameter (its keys: "
                              f"{_shape_keys(shape)})", key="given.shape")
         if key != "radius" and key not in values and not (shape == "cone"):
@@ -166,6 +182,7 @@ class Body:
     radius: float | None = None
     shape: str | None = None
     per_kg: bool = False  # no mass given and none needed: inertias and m g l per kilogram
+    per_size: bool = False  # a shape with no size: inertias per unit r^2 (only ratios used)
 
     @property
     def mass_for_rates(self) -> float:
@@ -199,8 +216,11 @@ class Body:
                                  key=f"given.{name}")
 
 
-def build_body(values: dict, us_customary: bool, work: Work) -> Body:
-    """Make the Body from SI values; writes the 'Body' section of the answer."""
+def build_body(values: dict, us_customary: bool, work: Work, sizeless_ok: bool = False) -> Body:
+    """Make the Body from SI values; writes the 'Body' section of the answer.
+
+    ``sizeless_ok``: the kind's rates need only J / I (no gravity, no force), so a shape
+    of SIZELESS may come with no size."""
     if "mass" in values and "weight" in values:
         raise InputError("give mass or weight, not both", key="given.weight")
     needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
@@ -213,7 +233,11 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
                          key="given.mass")
     if "radius" in values and "diameter" in values:
         raise InputError("give radius or diameter, not both", key="given.diameter")
-    _check_shape_keys(values, values.get("shape"))
+    sizeless = sizeless_body(values, sizeless_ok)
+    if sizeless and values.get("cg_distance"):
+        raise InputError("the gravity moment m g l against the inertia (m r^2) needs the "
+                         "body's size: give radius or diameter", key="given.radius")
+    _check_shape_keys(values, values.get("shape"), sizeless)
 
     work.section("Body")
     g = values.get("g", G_US if us_customary else G_SI)
@@ -232,6 +256,12 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     r = values.get("radius")
     if r is None and "diameter" in values:
         r = work.step("r", Sym("d", values["diameter"], "m") / 2, unit="m")
+    if sizeless:
+        r = 1.0
+        radius = names("r")[0]
+        work.text("no size given: the inertias below are all proportional to ", radius ** 2,
+                  ", so the rates, which need only their ratio, do not depend on it; the "
+                  "work is per unit radius (", rel(radius, "=", q(1.0, "m", exact=True)), ")")
     shape = values.get("shape")
     l = values.get("cg_distance")
     if shape == "cone" and l is None and "height" in values:
@@ -242,7 +272,7 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
     _check_inertias(values, m, J, I_cg, I_pivot, l, work)
     return Body(mass=None if per_kg else m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0,
-                radius=r, shape=shape, per_kg=per_kg)
+                radius=None if sizeless else r, shape=shape, per_kg=per_kg, per_size=sizeless)
 
 
 # Rounded textbook data may miss the inequalities below by a little; more than this is an error.
