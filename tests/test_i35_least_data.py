@@ -172,3 +172,100 @@ def test_item6b_rolling_disk_still_needs_its_radius(write, run):
     result = run("solve", write("id: x\nkind: rolling_disk\ngiven: {shape: disk, mass: 1 kg, "
                                 "speed: 1 m/s}\nfind: [stability]\n"))
     assert result.exit_code == 2 and "radius or diameter" in result.stderr
+
+
+# ---- c. a cone by its vertex angle; theta as books measure it ---------------------------
+
+TOP = ("id: t\nkind: steady_precession\ngiven: {{mass: 0.5 kg, k_axial: 30 mm, k_pivot: 60 mm, "
+       "cg_distance: 50 mm, spin: 3000 rpm, {angle}}}\nfind: {{precession_slow: rad/s}}\n")
+
+
+def _answer(result, name: str) -> float:
+    assert result.exit_code == 0, result.output
+    line = [line for line in result.stdout.splitlines() if line.strip().startswith(name)][-1]
+    return float(line.split("=")[-1].split()[0])
+
+
+def _slow_root(J: float, I: float, mgl: float, psidot: float, theta: float) -> float:
+    """The chapter's steady precession, by hand: mgl = phidot (J psidot + (J - I) phidot
+    cos(theta)), the smaller root."""
+    a, b, c = (J - I) * math.cos(theta), J * psidot, -mgl
+    roots = [(-b + s * math.sqrt(b * b - 4 * a * c)) / (2 * a) for s in (1, -1)]
+    return min(roots, key=abs)
+
+
+@pytest.mark.parametrize("angle", ["theta_from_horizontal: 30 deg",
+                                   "theta_from_downward_vertical: 120 deg"])
+def test_item6c_theta_as_books_measure_it(write, run, angle):
+    """30 deg above the horizontal and 120 deg from the downward vertical are both
+    theta = 60 deg from the upward vertical: the same slow root, worked by hand."""
+    result = run("solve", write(TOP.format(angle=angle)))
+    m, l, psidot = 0.5, 0.05, 3000 * math.pi / 30
+    expected = _slow_root(m * 0.03 ** 2, m * 0.06 ** 2, m * 9.81 * l, psidot, math.radians(60))
+    assert _answer(result, "precession_slow") == pytest.approx(expected, rel=1e-3)
+    assert "theta = " in result.stdout and "from the upward vertical" in result.stdout
+
+
+@pytest.mark.parametrize("angle, key, words", [
+    ("theta_from_horizontal: 30 deg, theta: 60 deg", "given.theta_from_horizontal", "one way"),
+    ("theta_from_horizontal: 30 deg, theta_from_downward_vertical: 120 deg",
+     "given.theta_from_", "one way"),
+    ("theta_from_downward_vertical: 190 deg", "given.theta_from_downward_vertical",
+     "theta = -10 deg"),
+    ("theta_from_horizontal: 30 kg", "given.theta_from_horizontal", "angle"),
+    ("theta_from_horizontl: 30 deg", "given.theta_from_horizontl",
+     "did you mean 'theta_from_horizontal'"),
+])
+def test_item6c_theta_bad_input(write, run, angle, key, words):
+    result = run("solve", write(TOP.format(angle=angle)))
+    _one_line_refusal(result, key)
+    assert words in result.stderr
+
+
+def test_item6c_cone_by_vertex_angle_and_height(run, problems_dir):
+    """The bundled cone top: r = h tan(alpha), theta = 90 - 30 deg; the slow root by hand."""
+    h, alpha = 0.12, math.radians(30)
+    r = h * math.tan(alpha)
+    J, I = 0.3 * r * r, 3 * r * r / 20 + 3 * h * h / 80 + (0.75 * h) ** 2  # per kilogram
+    expected = _slow_root(J, I, 9.81 * 0.75 * h, 1200 * math.pi / 30, math.radians(60))
+    result = run("solve", problems_dir / "cone_top_vertex_angle.yaml")
+    assert _answer(result, "precession_slow") == pytest.approx(expected, rel=1e-3)
+    assert "r = h tan(alpha)" in result.stdout
+    assert run("check", problems_dir / "cone_top_vertex_angle.yaml").exit_code == 0
+
+
+def test_item6c_cone_by_vertex_angle_and_radius_is_the_same_cone(write, run):
+    text = ("id: t\nkind: steady_precession\ngiven: {{shape: cone, mass: 1 kg, {size}, spin: "
+            "1200 rpm, theta: 60 deg}}\nfind: {{precession_slow: rad/s}}\n")
+    by_radius = run("solve", write(text.format(size="vertex_angle: 60 deg, radius: "
+                                               f"{120 * math.tan(math.radians(30))!r} mm"), "a"))
+    by_both = run("solve", write(text.format(size="height: 120 mm, radius: "
+                                             f"{120 * math.tan(math.radians(30))!r} mm"), "b"))
+    assert _answer(by_radius, "precession_slow") == pytest.approx(
+        _answer(by_both, "precession_slow"), rel=1e-9)
+
+
+def test_item6c_free_cone_by_its_vertex_angle_alone(write, run):
+    """A free cone needs only J / I_G = (3/10) / (3/20 + 3 / (80 tan^2(alpha))):
+    phidot = J psidot / ((I - J) cos(theta))."""
+    alpha, theta, psidot = math.radians(30), math.radians(10), -10.0
+    ratio = 0.3 / (3 / 20 + 3 / (80 * math.tan(alpha) ** 2))  # J / I_G
+    expected = ratio * psidot / ((1 - ratio) * math.cos(theta))
+    result = run("solve", write("id: t\nkind: torque_free\ngiven: {shape: cone, vertex_angle: "
+                                "60 deg, spin: -10 rad/s, nutation_angle: 10 deg}\n"
+                                "find: {precession: rad/s}\n"))
+    assert _answer(result, "precession") == pytest.approx(expected, rel=1e-3)
+
+
+@pytest.mark.parametrize("given, key", [
+    ("shape: disk, radius: 5 cm, vertex_angle: 60 deg", "given.vertex_angle"),
+    ("shape: cone, radius: 5 cm, height: 10 cm, vertex_angle: 60 deg", "given.vertex_angle"),
+    ("shape: cone, height: 10 cm, vertex_angle: 180 deg", "given.vertex_angle"),
+    ("shape: cone, height: 10 cm, vertex_angle: 0 deg", "given.vertex_angle"),
+    ("shape: cone, vertex_angle: 60 deg", "given.height"),  # gravity needs the size
+])
+def test_item6c_vertex_angle_bad_input(write, run, given, key):
+    result = run("solve", write(f"id: t\nkind: steady_precession\ngiven: {{{given}, mass: 1 kg, "
+                                "spin: 3000 rpm, theta: 60 deg}\nfind: [precession_slow]\n"))
+    _one_line_refusal(result, key)
+

@@ -61,7 +61,8 @@ def _solve(problem: Problem) -> Result:
     _data_as_stated(problem, work)
     if kind.uses_body:
         problem.given.body = build_body(problem.given.values, problem.us_customary, work,
-                                        sizeless_ok=bool(kind.extra.get("size_free")))
+                                        sizeless_ok=bool(kind.extra.get("size_free")),
+                                        gravity=kind.extra.get("gravity", True))
         _scaled_data_refused(problem)
         if not kind.extra.get("gravity", True) and "weight" not in problem.given.values:
             pass  # gravity plays no part in this kind (and no weight to turn into a mass)
@@ -266,7 +267,7 @@ def _data_as_stated(problem: Problem, work: Work) -> None:
     for target, (key, si) in derived.items():
         alternative = alternatives[key]
         work.step(params[target].symbol, step_tree(alternative, si), unit=alternative.unit,
-                  note=f"({alternative.reading})")
+                  note=alternative.note)
 
 
 def _given_lines(problem: Problem) -> list[GivenLine]:
