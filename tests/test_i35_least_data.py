@@ -269,3 +269,47 @@ def test_item6c_vertex_angle_bad_input(write, run, given, key):
                                 "spin: 3000 rpm, theta: 60 deg}\nfind: [precession_slow]\n"))
     _one_line_refusal(result, key)
 
+
+# ---- d. US data in inches with no mass: the US textbook g, and a word saying so ----------
+
+US_TOP = ("id: t\nkind: steady_precession\ngiven: {{shape: disk, radius: 2 in, cg_distance: 3 in, "
+          "spin: 3000 rpm, theta: 90 deg{more}}}\nfind: {{precession: rad/s}}\n")
+
+
+def _precession_by_hand(g_ft: float) -> float:
+    """phidot = g l / ((r^2 / 2) psidot) at theta = 90 deg, in feet (the mass cancels)."""
+    return g_ft * (3 / 12) / ((2 / 12) ** 2 / 2 * (3000 * math.pi / 30))
+
+
+def test_item6d_inches_and_no_mass_use_the_us_g(write, run):
+    result = run("solve", write(US_TOP.format(more="")))
+    assert _answer(result, "precession") == pytest.approx(_precession_by_hand(32.2), rel=1e-3)
+    warning = [line for line in result.stdout.splitlines() if "no g given" in line]
+    assert len(warning) == 1 and "g = 32.2 ft/s^2" in warning[0] and "lengths" in warning[0]
+
+
+def test_item6d_the_bundled_us_problem(run, problems_dir):
+    result = run("check", problems_dir / "us_toy_gyroscope_inches.yaml")
+    assert result.exit_code == 0, result.output
+
+
+@pytest.mark.parametrize("more, g_ft", [(", g: 32.0 ft/s^2", 32.0),
+                                        (", mass: 0.2 kg", 9.81 / 0.3048)])
+def test_item6d_no_warning_where_g_is_not_the_us_default(write, run, more, g_ft):
+    """g given, or a mass in kg (SI data with some lengths in inches): no US default."""
+    result = run("solve", write(US_TOP.format(more=more)))
+    assert _answer(result, "precession") == pytest.approx(_precession_by_hand(g_ft), rel=1e-3)
+    assert "no g given" not in result.stdout
+
+
+def test_item6d_us_weight_keeps_its_given_line(write, run):
+    """A weight in lb was US data before: the same g, said in the Given table as before
+    (the warning is for data that are US by their lengths alone)."""
+    result = run("solve", write(US_TOP.format(more=", weight: 0.5 lb")))
+    assert _answer(result, "precession") == pytest.approx(_precession_by_hand(32.2), rel=1e-3)
+    assert "32.2 ft/s^2 (default)" in result.stdout and "no g given" not in result.stdout
+
+
+def test_item6d_bad_g(write, run):
+    result = run("solve", write(US_TOP.format(more=", g: 32.2 ft")))
+    _one_line_refusal(result, "given.g")

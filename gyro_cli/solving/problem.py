@@ -354,7 +354,20 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
                                                                       facts)
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
+    if not us and "mass" not in quantities and "weight" not in quantities:
+        us = any(_us_length(q) for q in quantities.values())  # inches, no mass: US data
     return Given(values, defaulted=defaulted, derived=derived), quantities, us
+
+
+# US customary units of length (and speed) as gyro prints them: a file in these with no
+# mass is US data, and its default g is the US textbook 32.2 ft/s^2
+_US_LENGTHS = frozenset({"in", "ft", "yd", "mi", "mph", "inch", "foot", "yard", "mile"})
+
+
+def _us_length(quantity: Any) -> bool:
+    """Whether a parsed quantity's unit holds a US customary length (``12 in``, ``ft/s``)."""
+    text = getattr(quantity, "unit_text", None)
+    return isinstance(text, str) and not _US_LENGTHS.isdisjoint(re.findall(r"[A-Za-z]+", text))
 
 
 def _parse_alternative(facts: _KindFacts, alternative: Alternative, raw: dict,

@@ -9,6 +9,7 @@ from ..core.record import record
 from ..core import units
 from ..core.alternatives import alternatives_of, step_tree
 from ..core.body import build_body
+from ..core.prose import names, q, rel
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
 from .problem import Problem, load, params_by_name
@@ -70,6 +71,12 @@ def _solve(problem: Problem) -> Result:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
                                         "m/s^2", "US customary data: textbook g",
                                         shown=("32.2", "ft/s^2")))
+            if not {"mass", "weight"} & set(problem.given.values):  # US by its lengths alone
+                g = names("g")[0]
+                textbook = rel(g, "=", q(32.2, "ft/s^2", exact=True))
+                work.warn("no g given: the lengths are in US customary units and no mass is "
+                          "given, so the US textbook ", textbook, " is used; give g to use "
+                          "another")
         elif "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
                                         "m/s^2", shown=("9.81", "m/s^2")))
