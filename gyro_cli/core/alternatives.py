@@ -46,18 +46,17 @@ def alternatives_of(params: dict[str, Param]) -> dict[str, Alternative]:
     for name, param in params.items():
         if name in DIAMETERS and DIAMETERS[name] not in params:
             key = DIAMETERS[name]
-            found[key] = Alternative(key, name, "d" + param.symbol[1:], f"diameter: {name} = "
-                                     f"{key} / 2", lambda d: d / 2, "m",
-                                     "half the diameter given")
+            found[key] = Alternative(key, name, "d" + param.symbol[1:], f"{name} = {key} / 2",
+                                     lambda d: d / 2, "m", "half the diameter given")
         if param.dimension == "angle" and UPWARD in param.doc:
             s = param.symbol
             found[f"{name}_from_horizontal"] = Alternative(
-                f"{name}_from_horizontal", name, f"{s}_h", f"the axis's angle above the "
+                f"{name}_from_horizontal", name, f"{s}_h", f"the angle above the "
                 f"horizontal (negative below): {name} = 90 deg - {name}_from_horizontal, "
                 "from the upward vertical", lambda a: PI / 2 - a, "deg",
                 "the angle given from the horizontal, read from the upward vertical")
             found[f"{name}_from_downward_vertical"] = Alternative(
-                f"{name}_from_downward_vertical", name, f"{s}_d", f"the axis's angle from the "
+                f"{name}_from_downward_vertical", name, f"{s}_d", f"the angle from the "
                 f"downward vertical: {name} = 180 deg - {name}_from_downward_vertical, from "
                 "the upward vertical", lambda a: PI - a, "deg",
                 "the angle given from the downward vertical, read from the upward vertical")
