@@ -313,3 +313,36 @@ def test_item6d_us_weight_keeps_its_given_line(write, run):
 def test_item6d_bad_g(write, run):
     result = run("solve", write(US_TOP.format(more=", g: 32.2 ft")))
     _one_line_refusal(result, "given.g")
+
+
+# ---- the keys stated another way elsewhere: gyro vary, released_top ----------------------
+
+def test_item6a_vary_draws_a_wheel_diameter(write, run, tmp_path, problems_dir):
+    """`vary: {wheel_diameter: ...}` draws the diameter; each variant's moment is the
+    book's 663 N m scaled by 1.8 m / d (the spin is v / (d / 2))."""
+    text = (problems_dir / "khurmi_wheel_drop_diameter.yaml").read_text()
+    path = write(text + "vary:\n  wheel_diameter: [0.9, 1.1]\n", "kv.yaml")
+    out = tmp_path / "out"
+    result = run("vary", "-n", "2", "-s", "1", path, "-o", out)
+    assert result.exit_code == 0, result.output
+    import yaml
+
+    for variant in sorted(out.glob("*.yaml")):
+        data = yaml.safe_load(variant.read_text())
+        d = float(data["given"]["wheel_diameter"].split()[0])
+        moment = float(str(data["expected"]["moment"]).split()[0])
+        v, omega = 95 / 3.6, (0.006 / 2) * (2 * math.pi / 0.1) / 1.5
+        assert moment == pytest.approx(180 * v / (d / 2) * omega, rel=2e-3)
+
+
+def test_item6c_released_top_from_the_downward_vertical(write, run):
+    """released_top's theta0 given from the downward vertical: 150 deg from it is 30 deg
+    from the upward vertical, the same motion."""
+    text = ("id: r\nkind: released_top\ngiven: {{mass: 1 kg, J: 0.002 kg m^2, I_pivot: "
+            "0.01 kg m^2, cg_distance: 0.05 m, spin: 2000 rpm, {angle}}}\n"
+            "find: {{theta_max: deg}}\n")
+    up = run("solve", write(text.format(angle="theta0: 30 deg"), "up.yaml"))
+    down = run("solve", write(text.format(angle="theta0_from_downward_vertical: 150 deg"),
+                              "down.yaml"))
+    assert _answer(down, "theta_max") == _answer(up, "theta_max")
+    assert "theta0 = pi - theta0_d" in down.stdout

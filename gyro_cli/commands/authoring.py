@@ -379,10 +379,13 @@ def parse_vary(problem: Any) -> list[tuple[str, str, float, float, str, float]]:
     params = {p.name: p for p in list(problem.kind.params) +
               (list(BODY_PARAMS) if problem.kind.uses_body else [])}
     given_raw = problem.data.get("given", {})
+    stated = alternatives_of(params)  # a key as books state it (wheel_diameter)
     out = []
     for key, bounds in raw.items():
         where = f"vary.{key}"
         param = params.get(str(key))
+        if param is None and str(key) in stated:
+            param = stated[str(key)].param_for(params[stated[str(key)].target])
         if param is None or param.dimension in ("word", "particles"):
             raise InputError(f"{key!r} is not a numeric given key of kind {problem.kind.name}",
                              key=where)
