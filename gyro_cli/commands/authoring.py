@@ -26,6 +26,7 @@ from typing import Any
 
 from .. import kinds
 from ..core import units
+from ..core.alternatives import alternatives_of
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError
 from ..core.spec import Kind, Param
@@ -328,6 +329,9 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
                 # a quantity is text with a unit: the limits, in SI, are for editors to show
                 si = units.si_text(p.dimension)
                 given[p.name]["x-si-limits"] = dict(limits_schema(p), unit=si)
+    for key, alternative in alternatives_of({p.name: p for p in params}).items():
+        given[key] = dict(quantity, description=f"instead of {alternative.target}: "
+                          f"{alternative.reading}")  # the books' way of stating it
     answers = [a.name for a in kind.answers]
     find = {a.name: ({"type": "null"} if a.dimension is None else
                      {"type": ["string", "null"], "description": f"unit for {a.doc}"})
@@ -375,10 +379,13 @@ def parse_vary(problem: Any) -> list[tuple[str, str, float, float, str, float]]:
     params = {p.name: p for p in list(problem.kind.params) +
               (list(BODY_PARAMS) if problem.kind.uses_body else [])}
     given_raw = problem.data.get("given", {})
+    stated = alternatives_of(params)  # a key as books state it (wheel_diameter)
     out = []
     for key, bounds in raw.items():
         where = f"vary.{key}"
         param = params.get(str(key))
+        if param is None and str(key) in stated:
+            param = stated[str(key)].param_for(params[stated[str(key)].target])
         if param is None or param.dimension in ("word", "particles"):
             raise InputError(f"{key!r} is not a numeric given key of kind {problem.kind.name}",
                              key=where)

@@ -8,12 +8,14 @@ formula used is written into the worked answer.
 
 from __future__ import annotations
 
+import math
+
 from .record import record
 from typing import Callable
 
 from .errors import InputError
 from .params import Param
-from .expr import Expr, Sym
+from .expr import Expr, Sym, tan
 from .prose import names, q, rel
 from .work import Work
 
@@ -60,6 +62,9 @@ BODY_PARAMS: tuple[Param, ...] = (
     Param("length", "length", "L", "length of a cylinder, shell, rod, box or annulus along "
           "its axis", positive=True),
     Param("height", "length", "h", "height of a cone, apex to base", positive=True),
+    Param("vertex_angle", "angle", "theta_v", "a cone's total angle at its apex (twice the "
+          "semi-angle alpha), with its height or radius, or alone where only ratios matter",
+          range=(0.0, math.pi), bounds="()"),
     Param("cg_distance", "length", "l", "fixed point to centre of mass along the symmetry axis",
           nonnegative=True),
 )
@@ -110,6 +115,54 @@ SHAPES: dict[str, Shape] = {
 DIMENSION_KEYS = {"radius": "r", "inner_radius": "r_i", "width": "w", "length": "L",
                   "height": "h"}
 
+#: shapes whose J / I_G is a pure number (one size, r): a problem asking only rates may
+#: give no size at all (a tossed coin), where the kind allows it
+SIZELESS = ("disk", "ring", "sphere", "hollow_sphere")
+_SIZE_KEYS = ("radius", "diameter", "inner_radius", "width", "length", "height")
+# an inertia-only key that would fix the size
+_INERTIA_KEYS = ("J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg")
+
+
+def sizeless_body(values: dict, allowed: bool) -> bool:
+    """Whether the body is a shape given with no size, its rates worked per unit r^2:
+    a shape of SIZELESS (or a cone by its vertex angle), no dimension and no inertia, in a
+    kind that ``allowed`` it."""
+    shape = values.get("shape")
+    return allowed and (shape in SIZELESS or shape == "cone" and "vertex_angle" in values) \
+        and not any(k in values for k in _SIZE_KEYS + _INERTIA_KEYS)
+
+
+def _cone_by_vertex_angle(values: dict, sizeless: bool, work: Work) -> dict:
+    """``values`` with a cone's radius or height from its total vertex angle 2 alpha and
+    the other size (per unit radius where the body has no size), each a step."""
+    if "vertex_angle" not in values:
+        return values
+    if values.get("shape") != "cone":
+        raise InputError("vertex_angle is a cone's angle at its apex: give `shape: cone`",
+                         key="given.vertex_angle")
+    sizes = [k for k in ("radius", "diameter", "height") if k in values]
+    if len(sizes) > 1:
+        raise InputError(f"a cone is given by two of radius (or diameter), height and "
+                         f"vertex_angle: {sizes[0]}, {sizes[1]} and vertex_angle are three",
+                         key="given.vertex_angle")
+    if not sizes and not sizeless:
+        raise InputError("a cone by its vertex_angle needs its height or radius too (only "
+                         "rates that need no gravity moment can do without)",
+                         key="given.height")
+    values = dict(values)
+    alpha = Sym("alpha", work.step("alpha", Sym("theta_v", values["vertex_angle"], "deg") / 2,
+                                   unit="deg", note="the cone's semi-angle") * math.pi / 180,
+                "deg")
+    if "height" in values:
+        values["radius"] = work.step("r", Sym("h", values["height"], "m") * tan(alpha),
+                                     unit="m", note="base radius")
+    else:
+        r = values["radius"] if "radius" in values else \
+            values["diameter"] / 2 if "diameter" in values else 1.0  # no size: per unit r
+        values["height"] = work.step("h", Sym("r", r, "m") / tan(alpha), unit="m",
+                                     note="height, apex to base")
+    return values
+
 
 def _shape_keys(shape: str) -> str:
     spec = SHAPES[shape]
@@ -118,8 +171,9 @@ def _shape_keys(shape: str) -> str:
     return ", ".join(names)
 
 
-def _check_shape_keys(values: dict, shape: str | None) -> None:
-    """Every dimension a shape needs is there; none it does not use is (a ring's length)."""
+def _check_shape_keys(values: dict, shape: str | None, sizeless: bool = False) -> None:
+    """Every dimension a shape needs is there (none, for a body of no size whose rates
+    need only its ratios); none it does not use is (a ring's length)."""
     if shape is None:
         for key in ("inner_radius", "width", "height", "length"):
             if key in values:
@@ -138,7 +192,8 @@ def _check_shape_keys(values: dict, shape: str | None) -> None:
             raise InputError(f"shape {shape} does not use {key}: its keys are "
                              f"{_shape_keys(shape)}{hint}", key=f"given.{key}")
     for key in spec.needs:
-        if key == "radius" and "radius" not in values and "diameter" not in values:
+        if key == "radius" and "radius" not in values and "diameter" not in values and \
+                not sizeless and not (shape == "cone" and "vertex_angle" in values):
             raise InputError(f"shape {shape!r} needs radius or diameter (its keys: "
                              f"{_shape_keys(shape)})", key="given.shape")
         if key != "radius" and key not in values and not (shape == "cone"):
@@ -166,6 +221,7 @@ class Body:
     radius: float | None = None
     shape: str | None = None
     per_kg: bool = False  # no mass given and none needed: inertias and m g l per kilogram
+    per_size: bool = False  # a shape with no size: inertias per unit r^2 (only ratios used)
 
     @property
     def mass_for_rates(self) -> float:
@@ -199,8 +255,13 @@ class Body:
                                  key=f"given.{name}")
 
 
-def build_body(values: dict, us_customary: bool, work: Work) -> Body:
-    """Make the Body from SI values; writes the 'Body' section of the answer."""
+def build_body(values: dict, us_customary: bool, work: Work, sizeless_ok: bool = False,
+               gravity: bool = True) -> Body:
+    """Make the Body from SI values; writes the 'Body' section of the answer.
+
+    ``sizeless_ok``: the kind's rates need only J / I (no gravity, no force), so a shape
+    of SIZELESS may come with no size; ``gravity``: the kind has a gravity moment (a cone
+    pivoted at its apex unless cg_distance says otherwise)."""
     if "mass" in values and "weight" in values:
         raise InputError("give mass or weight, not both", key="given.weight")
     needs_mass = [k for k in ("k_axial", "k_pivot", "k_cg", "shape", "cg_distance") if k in values
@@ -213,7 +274,15 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
                          key="given.mass")
     if "radius" in values and "diameter" in values:
         raise InputError("give radius or diameter, not both", key="given.diameter")
-    _check_shape_keys(values, values.get("shape"))
+    sizeless = sizeless_body(values, sizeless_ok)
+    if sizeless and values.get("cg_distance"):
+        raise InputError("the gravity moment m g l against the inertia (m r^2) needs the "
+                         "body's size: give radius or diameter", key="given.radius")
+    if sizeless and gravity and values.get("shape") == "cone" and "cg_distance" not in values:
+        raise InputError("the gravity moment m g l (l = 3 h / 4, apex at the fixed point) "
+                         "against the inertia needs the cone's size: give its height or "
+                         "radius with vertex_angle", key="given.height")
+    _check_shape_keys(values, values.get("shape"), sizeless)
 
     work.section("Body")
     g = values.get("g", G_US if us_customary else G_SI)
@@ -232,6 +301,15 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     r = values.get("radius")
     if r is None and "diameter" in values:
         r = work.step("r", Sym("d", values["diameter"], "m") / 2, unit="m")
+    if sizeless:
+        r = 1.0
+        radius = names("r")[0]
+        work.text("no size given: the inertias below are all proportional to ", radius ** 2,
+                  ", so the rates, which need only their ratio, do not depend on it; the "
+                  "work is per unit radius (", rel(radius, "=", q(1.0, "m", exact=True)), ")")
+    values = _cone_by_vertex_angle(values, sizeless, work)
+    if r is None and "radius" in values:  # a cone's, from its height and vertex angle
+        r = values["radius"]
     shape = values.get("shape")
     l = values.get("cg_distance")
     if shape == "cone" and l is None and "height" in values:
@@ -242,7 +320,7 @@ def build_body(values: dict, us_customary: bool, work: Work) -> Body:
     I_pivot = _transverse_pivot(values, m, I_cg, l, work)
     _check_inertias(values, m, J, I_cg, I_pivot, l, work)
     return Body(mass=None if per_kg else m, g=g, J=J, I_cg=I_cg, I_pivot=I_pivot, l=l or 0.0,
-                radius=r, shape=shape, per_kg=per_kg)
+                radius=None if sizeless else r, shape=shape, per_kg=per_kg, per_size=sizeless)
 
 
 # Rounded textbook data may miss the inequalities below by a little; more than this is an error.

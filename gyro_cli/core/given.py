@@ -22,6 +22,9 @@ class Given:
     values: dict[str, float | str]
     body: "Body | None" = None
     defaulted: set[str] = field(default_factory=set)
+    #: a key stated another way (a diameter, an angle from the horizontal): the key
+    #: written and its SI value, by the key the kind reads
+    derived: dict[str, tuple[str, float]] = field(default_factory=dict)
 
     def __contains__(self, key: str) -> bool:
         return key in self.values

@@ -840,7 +840,7 @@ KIND = Kind(
                    "(up), horizontal (toward the axis), magnitude] per root"),
     ),
     solve=solve,
-    extra={"example": {
+    extra={"size_free": True, "example": {
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It spins at {spin} with its axis at {theta} "

@@ -469,7 +469,7 @@ KIND = Kind(
                    "retrograde"),
     ),
     solve=solve,
-    extra={"gravity": False, "example": {
+    extra={"size_free": True, "gravity": False, "example": {
         "statement": ("A free symmetric body has moments of inertia of {J} about its symmetry "
                       "axis and {I_cg} about a transverse axis through its centre of mass. Its "
                       "axis makes an angle of {nutation_angle} with its angular momentum, and it "

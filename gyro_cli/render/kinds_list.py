@@ -15,8 +15,13 @@ def _rows(rows: list[tuple[str, str, str]]) -> list[str]:
 def kind_text(kind, body_params) -> str:
     """One kind: its summary, given keys (with defaults) and answers."""
     lines = [f"{kind.name}: {kind.summary}  ({kind.chapter})", "  given:"]
+    from ..core.alternatives import alternatives_of
+
+    params = {p.name: p for p in kind.params}
     lines += _rows([(p.name, p.dimension, p.doc + (f" [default {p.default}]" if p.default else ""))
-                    for p in kind.params])
+                    for p in kind.params] +
+                   [(a.key, params[a.target].dimension, f"instead of {a.target}: {a.reading}")
+                    for a in alternatives_of(params).values()])  # as books state them
     if kind.uses_body:
         lines.append(f"    body keys: {', '.join(p.name for p in body_params)}")
     lines.append("  answers:")

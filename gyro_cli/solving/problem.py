@@ -13,6 +13,7 @@ from typing import Any
 
 from .. import kinds
 from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
+from ..core.alternatives import Alternative, alternatives_of, converted
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
 from ..core.params import _OPS, normal_word, read_word, safe_choices, split_hemisphere
@@ -305,7 +306,7 @@ class _KindFacts:
     how each quantity is read (its key in messages, whether lb means lbf, its declared
     limits as tests) and the params with a default. (Answers by name: `Kind.answer`.)"""
 
-    __slots__ = ("kind", "params", "reading", "defaults")
+    __slots__ = ("kind", "params", "reading", "defaults", "alternatives")
 
     def __init__(self, kind: Kind) -> None:
         self.kind = kind
@@ -314,6 +315,7 @@ class _KindFacts:
                                tuple((_OPS[op], x) for op, x in p.limits_declared()))
                         for name, p in self.params.items()}
         self.defaults = tuple(p for p in kind.params if p.default is not None)
+        self.alternatives = alternatives_of(self.params)
 
 
 def _facts(kind: Kind) -> _KindFacts:
@@ -332,10 +334,16 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
     params = facts.params
     values: dict[str, float | str] = {}
     quantities: dict[str, Any] = {}
+    derived: dict[str, tuple[str, float]] = {}
     for key, text in raw.items():
         param = params.get(str(key))
+        if param is None and str(key) in facts.alternatives:
+            _parse_alternative(facts, facts.alternatives[str(key)], raw, values, quantities,
+                               derived)
+            continue
         if param is None:
-            raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), list(params))}"
+            known = [*params, *facts.alternatives]
+            raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), known)}"
                              f" (see `gyro kinds`)", key=f"given.{key}")
         values[param.name], quantities[param.name] = _parse_param(param, text, facts)
     _hemisphere_once(params, raw, values)
@@ -346,7 +354,51 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
                                                                       facts)
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
-    return Given(values, defaulted=defaulted), quantities, us
+    if not us and "mass" not in quantities and "weight" not in quantities:
+        us = any(_us_length(q) for q in quantities.values())  # inches, no mass: US data
+    return Given(values, defaulted=defaulted, derived=derived), quantities, us
+
+
+# US customary units of length (and speed) as gyro prints them: a file in these with no
+# mass is US data, and its default g is the US textbook 32.2 ft/s^2
+_US_LENGTHS = frozenset({"in", "ft", "yd", "mi", "mph", "inch", "foot", "yard", "mile"})
+
+
+def _us_length(quantity: Any) -> bool:
+    """Whether a parsed quantity's unit holds a US customary length (``12 in``, ``ft/s``)."""
+    text = getattr(quantity, "unit_text", None)
+    return isinstance(text, str) and not _US_LENGTHS.isdisjoint(re.findall(r"[A-Za-z]+", text))
+
+
+def _parse_alternative(facts: _KindFacts, alternative: Alternative, raw: dict,
+                       values: dict, quantities: dict,
+                       derived: dict[str, tuple[str, float]]) -> None:
+    """A key stated as books do (``wheel_diameter``, ``theta_from_horizontal``), read into
+    the key the kind declares; refused beside that key or another way of stating it."""
+    target = facts.params[alternative.target]
+    key = f"given.{alternative.key}"
+    others = [k for k in raw if k != alternative.key and (
+        k == target.name or getattr(facts.alternatives.get(k), "target", None) == target.name)]
+    if others:
+        raise InputError(f"give {target.name} one way: {alternative.key} and {others[0]} "
+                         f"both state it ({alternative.reading})", key=key)
+    text = raw[alternative.key]
+    si, quantity = _parse_param(alternative.param_for(target), text)
+    value = converted(alternative, si)
+    if target.limits_broken(value):
+        unit = units.si_text(target.dimension)
+        raise InputError(f"this gives {target.name} = {_shown_si(value, target.dimension)}, "
+                         f"outside {target.expectation(unit)} ({alternative.reading}), got "
+                         f"{shown(text)}", key=key)
+    values[target.name], quantities[target.name] = value, quantity
+    derived[target.name] = (alternative.key, si)
+
+
+def _shown_si(value: float, dimension: str) -> str:
+    """An SI value as a refusal prints it (an angle in degrees)."""
+    if dimension == "angle":
+        return f"{math.degrees(value):.6g} deg"
+    return f"{value:.6g} {units.si_text(dimension)}".rstrip()
 
 
 def _hemisphere_once(params: dict[str, Param], raw: dict, values: dict) -> None:

@@ -7,7 +7,9 @@ import re
 from ..core.record import record
 
 from ..core import units
+from ..core.alternatives import alternatives_of, step_tree
 from ..core.body import build_body
+from ..core.prose import names, q, rel
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
 from .problem import Problem, load, params_by_name
@@ -57,14 +59,24 @@ def _solve(problem: Problem) -> Result:
     work = Work()
     work.given.extend(_given_lines(problem))
     kind = problem.kind
+    _data_as_stated(problem, work)
     if kind.uses_body:
-        problem.given.body = build_body(problem.given.values, problem.us_customary, work)
+        problem.given.body = build_body(problem.given.values, problem.us_customary, work,
+                                        sizeless_ok=bool(kind.extra.get("size_free")),
+                                        gravity=kind.extra.get("gravity", True))
+        _scaled_data_refused(problem)
         if not kind.extra.get("gravity", True) and "weight" not in problem.given.values:
             pass  # gravity plays no part in this kind (and no weight to turn into a mass)
         elif problem.us_customary and "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
                                         "m/s^2", "US customary data: textbook g",
                                         shown=("32.2", "ft/s^2")))
+            if not {"mass", "weight"} & set(problem.given.values):  # US by its lengths alone
+                g = names("g")[0]
+                textbook = rel(g, "=", q(32.2, "ft/s^2", exact=True))
+                work.warn("no g given: the lengths are in US customary units and no mass is "
+                          "given, so the US textbook ", textbook, " is used; give g to use "
+                          "another")
         elif "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
                                         "m/s^2", shown=("9.81", "m/s^2")))
@@ -80,8 +92,8 @@ def _solve(problem: Problem) -> Result:
     work.sections[:] = [section for section in work.sections if section.steps]
     solution = work.solution()
     body = problem.given.body
-    if body is not None and body.per_kg:  # worked per kilogram: no answer that scales with m
-        _drop_mass_answers(solution, problem.find)
+    if body is not None and (body.per_kg or body.per_size):  # worked per kilogram or per
+        _drop_mass_answers(solution, problem.find, body.per_size)  # unit r^2: rates only
     _all_finite(solution, trees=Sym.unfinite != unfinite)
     answers = {}
     for name, unit in problem.find.items():
@@ -123,14 +135,40 @@ MASS_DIMENSIONS = {"mass", "force", "moment", "inertia", "angular_momentum", "en
                    "mass_length"}
 
 
-def _drop_mass_answers(solution, find) -> None:
-    """Refuse (if asked) and drop answers that scale with a mass no key gave."""
+def _drop_mass_answers(solution, find, per_size: bool = False) -> None:
+    """Refuse (if asked) and drop answers that scale with a mass (or, ``per_size``, a
+    size) no key gave."""
     for name, answer in list(solution.answers.items()):
         if answer.dimension in MASS_DIMENSIONS:
             if name in find:
-                raise InputError(f"{name} depends on the mass, which the rates do not need: "
-                                 "give mass or weight", key="given.mass")
+                raise _scale_missing(name, per_size)
             del solution.answers[name]
+
+
+def _scale_missing(name: str, per_size: bool) -> InputError:
+    """The refusal of a quantity that needs the mass or size the rates did without."""
+    if per_size:
+        return InputError(f"{name} depends on the body's size, which the rates do not need: "
+                          "give radius or diameter", key="given.radius")
+    return InputError(f"{name} depends on the mass, which the rates do not need: give mass "
+                      "or weight", key="given.mass")
+
+
+def _scaled_data_refused(problem: Problem) -> None:
+    """A given quantity that scales with the mass or size (an angular momentum, a moment)
+    cannot go with a body worked per kilogram or per unit r^2: the rates from it would be
+    per kilogram too. Refused, naming the key missing."""
+    body = problem.given.body
+    if body is None or not (body.per_kg or body.per_size):
+        return
+    for param in problem.kind.params:
+        if param.dimension in MASS_DIMENSIONS and problem.given.given_explicitly(param.name):
+            what = "size: give radius or diameter" if body.per_size else \
+                "mass: give mass or weight"
+            raise InputError(f"a given {param.name} goes with the body's own {what} (without "
+                             "it the body is worked per kilogram or per unit radius, and "
+                             f"rates from {param.name} would be wrong)",
+                             key="given.radius" if body.per_size else "given.mass")
 _NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
 
 
@@ -224,12 +262,32 @@ _BINARY = {Add, Sub, Mul, Div, Pow}
 _TREE_NODES = _BINARY | {Sym, Let, Neg, Num, Const, Call}  # exactly these classes
 
 
+def _data_as_stated(problem: Problem, work: Work) -> None:
+    """Each key the file stated another way (a diameter, an angle from the horizontal),
+    turned into the key the kind reads: a step of the worked answer."""
+    derived = problem.given.derived
+    if not derived:
+        return
+    params = params_by_name(problem.kind)
+    alternatives = alternatives_of(params)
+    work.section("Data as given")
+    for target, (key, si) in derived.items():
+        alternative = alternatives[key]
+        work.step(params[target].symbol, step_tree(alternative, si), unit=alternative.unit,
+                  note=alternative.note)
+
+
 def _given_lines(problem: Problem) -> list[GivenLine]:
     params = params_by_name(problem.kind)
     lines = []
+    derived = problem.given.derived
     for key, value in problem.given.values.items():
         param = params[key]
         quantity = problem.quantities[key]
+        if key in derived:  # stated another way: the given line is the key as written
+            written, value = derived[key]
+            param = alternatives_of(params)[written].param_for(param)
+            key = written
         if isinstance(value, str):
             lines.append(GivenLine(key, param.symbol, str(quantity) if isinstance(quantity, str)
                                    else value, value, ""))
