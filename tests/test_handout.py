@@ -193,8 +193,6 @@ def test_standalone_is_a_whole_document(run):
 RAW = re.compile(r"phidot|psidot|thetadot|theta0|theta_|sqrt|\^|_|\u02c6")  # U+02C6: a text ^
 
 
-@pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
-                    reason="pdflatex/pdftotext not installed (see `make handout`)")
 def without_authors_words(paths, folder: Path) -> list[Path]:
     """Copies of the problem files without their notes and source: the author's words,
     which gyro prints as written."""
@@ -207,6 +205,8 @@ def without_authors_words(paths, folder: Path) -> list[Path]:
     return out
 
 
+@pytest.mark.skipif(shutil.which("pdflatex") is None or shutil.which("pdftotext") is None,
+                    reason="pdflatex/pdftotext not installed (see `make handout`)")
 def test_every_bundled_problem_compiles_clean(run, tmp_path):
     """The whole handout compiles with no overfull line and no raw identifier in what gyro
     writes. A problem's own notes and source are the author's words, printed as written
