@@ -193,22 +193,16 @@ def test_problem_page_in_chromium(browser, axe, pages, shots):
     assert _inspect(browser, axe, page, shots) == []
 
 
-def test_folder_page_and_check_report_in_chromium(browser, axe, pages, shots, tmp_path):
-    """A page of several problems (pictures among them), and a check report with a failing
-    answer first, linked to its worked answer."""
+def test_check_report_in_chromium(browser, axe, pages, shots, tmp_path):
+    """A check report with a failing answer first, linked to its worked answer (folder
+    pages of several problems, pictures among them, are test_bundled_problems_in_chromium's)."""
     import gyro_cli
-    from gyro_cli.render import html
-    from gyro_cli.solving.solve import solve_file
 
-    names = ["11_3.yaml", "11_2_released_top.yaml", "bicycle_no_spin.yaml", "ship_rolling_6000kg.yaml"]
-    folder = _write(pages, "folder.html",
-                    html.page([solve_file(str(ROOT / "problems" / n)) for n in names]))
     wrong = (ROOT / "problems" / "11_3.yaml").read_text().replace("533.5 rpm", "600 rpm")
     (tmp_path / "wrong.yaml").write_text(wrong)
     report = gyro_cli.check(str(tmp_path / "wrong.yaml"), str(ROOT / "problems" / "11_4.yaml"))
     assert report.exit_code == 1
     check = _write(pages, "check.html", report.html(page=True))
-    assert _inspect(browser, axe, folder, shots) == []
     assert _inspect(browser, axe, check, shots) == []
     page = browser.new_page(viewport={"width": 1024, "height": 800})
     try:
