@@ -1,6 +1,8 @@
 # gyro: the two set-up commands of the README.
 #   make demo   create .venv if needed, install gyro, solve every bundled problem
-#   make test   the same set-up, then the test suite
+#   make test   the same set-up, then the test suite, on every core (pytest-xdist)
+#   make props  the property tests with long hypothesis budgets (EXAMPLES times the
+#               default, default 10), on every core
 #   make handout  a solution sheet of every bundled problem, handout.pdf (needs pdflatex:
 #               apt-get install texlive-latex-base texlive-latex-recommended
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
@@ -13,9 +15,10 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test check bench handout fuzz examples environment clean
+.PHONY: demo test props check bench handout fuzz examples environment clean
 
 MINUTES ?= 5
+EXAMPLES ?= 10
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -31,7 +34,10 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/lint-imports --no-cache
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n auto --dist worksteal
+
+props: $(STAMP)
+	GYRO_EXAMPLES=$(EXAMPLES) $(BIN)/python -m pytest -q -n auto -m property
 
 check: $(STAMP)
 	$(BIN)/lint-imports --no-cache

@@ -19,6 +19,12 @@ ROOT = Path(__file__).resolve().parent.parent
 PROBLEMS = ROOT / "problems"
 
 
+def examples(n: int) -> int:
+    """A property test's hypothesis budget: ``n`` examples, sized to what the test finds
+    in a `make test`; GYRO_EXAMPLES times as many in a long run (`make props`)."""
+    return n * max(1, int(os.environ.get("GYRO_EXAMPLES") or 1))
+
+
 @pytest.fixture
 def run():
     """run(*args) -> click Result with .exit_code, .stdout, .stderr."""

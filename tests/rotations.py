@@ -13,6 +13,14 @@ import numpy as np
 K = np.array([0.0, 0.0, 1.0])
 
 
+def cross(a, b) -> np.ndarray:
+    """a x b of two 3-vectors: np.cross's own products in its order (the same bits),
+    without its cost for arrays of any shape, a tenth of the time; the integrations of
+    the equations of motion call it a hundred thousand times."""
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]])
+
+
 def rz(a: float) -> np.ndarray:
     c, s = math.cos(a), math.sin(a)
     return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1.0]])

@@ -23,6 +23,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
+from conftest import examples
+
 from gyro_cli.physics import euler_kinematics as ek
 from rotations import rx, rz
 
@@ -531,7 +533,8 @@ def test_symmetric_eigenvalues_by_hand():
         [-1.0, 0.0, 3.0]
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.property
+@settings(max_examples=examples(300), deadline=None)
 @given(st.lists(st.floats(-1e3, 1e3), min_size=6, max_size=6), st.integers(-60, 60))
 def test_symmetric_eigenvalues_keep_trace_and_determinant(entries, power):
     """The sum of the eigenvalues is the trace and their product the determinant (computed

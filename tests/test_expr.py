@@ -8,6 +8,8 @@ import re
 import pytest
 from hypothesis import given, settings, strategies as st
 
+from conftest import examples
+
 from gyro_cli.core import expr as E
 from gyro_cli.core.expr import PI, Let, Sym, cos, ellipe, ellipk, sin, sqrt
 
@@ -127,7 +129,8 @@ def _extend(children):
         st.builds(lambda a: sqrt(E.absolute(a)), children))
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.property
+@settings(max_examples=examples(300), deadline=None)
 @given(st.recursive(_leaf, _extend, max_leaves=8))
 def test_any_tree_expr_evaluates_to_its_value_and_brackets_negatives(tree):
     try:

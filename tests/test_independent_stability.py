@@ -33,6 +33,8 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
+from rotations import cross
+
 # ---------------------------------------------------------------- units ----
 INCH = 0.0254
 FT = 0.3048
@@ -398,12 +400,12 @@ def disk_wdot(k, w, m, r, J, IG, g):
     c = k[2]
     s = math.sqrt(1.0 - c * c)
     u = (KV - c * k) / s
-    kd = np.cross(w, k)
+    kd = cross(w, k)
     cd = kd[2]
     ud = (-cd * k - c * kd) / s + u * c * cd / s ** 2
     A = IG * np.eye(3) + (J - IG) * np.outer(k, k) + m * r * r * (np.eye(3) - np.outer(u, u))
     b = (-(J - IG) * (np.dot(w, kd) * k + np.dot(w, k) * kd)
-         - m * r * r * np.cross(u, np.cross(w, ud)) - m * g * r * np.cross(u, KV))
+         - m * r * r * cross(u, cross(w, ud)) - m * g * r * cross(u, KV))
     return np.linalg.solve(A, b)
 
 
@@ -412,10 +414,10 @@ def disk_normal_force(k, w, wd, m, r, g):
     c = k[2]
     s = math.sqrt(1.0 - c * c)
     u = (KV - c * k) / s
-    kd = np.cross(w, k)
+    kd = cross(w, k)
     cd = kd[2]
     ud = (-cd * k - c * kd) / s + u * c * cd / s ** 2
-    aG = np.cross(wd, r * u) + np.cross(w, r * ud)
+    aG = cross(wd, r * u) + cross(w, r * ud)
     return m * (aG[2] + g)
 
 
@@ -433,7 +435,7 @@ def disk_steady_state(beta, rho, Om, r):
 def disk_residual(beta, rho, Om, m, r, J, IG, g):
     """Steady rolling needs wdot = Omega K x w (w turns with the precession)."""
     k0, w0 = disk_steady_state(beta, rho, Om, r)
-    return disk_wdot(k0, w0, m, r, J, IG, g) - Om * np.cross(KV, w0)
+    return disk_wdot(k0, w0, m, r, J, IG, g) - Om * cross(KV, w0)
 
 
 def disk_tilts(v, R, m, r, J, IG, g):
@@ -471,7 +473,7 @@ def disk_rotating_field(y, Om, m, r, J, IG, g):
     """(k, w) seen in a frame turning at Omega about K: steady rolling is a fixed point."""
     k, w = y[:3], y[3:]
     wd = disk_wdot(k, w, m, r, J, IG, g)
-    return np.concatenate([np.cross(w, k) - Om * np.cross(KV, k), wd - Om * np.cross(KV, w)])
+    return np.concatenate([cross(w, k) - Om * cross(KV, k), wd - Om * cross(KV, w)])
 
 
 def disk_linearisation(beta, rho, Om, m, r, J, IG, g):
@@ -501,18 +503,18 @@ def disk_integrate(beta, rho, Om, m, r, J, IG, g, kval, kick_rel=1e-9):
 
     Returns the measured growth rate (unstable) or angular frequency (stable)."""
     k0, w0 = disk_steady_state(beta, rho, Om, r)
-    e_t = np.cross(KV, k0)
+    e_t = cross(KV, k0)
     e_t /= np.linalg.norm(e_t)
     w1 = w0 + kick_rel * max(np.linalg.norm(w0), 1.0) * e_t
 
     def rhs(t, y):
         k, w = y[:3], y[3:]
-        return np.concatenate([np.cross(w, k), disk_wdot(k, w, m, r, J, IG, g)])
+        return np.concatenate([cross(w, k), disk_wdot(k, w, m, r, J, IG, g)])
 
     def betadot(y):
         k, w = y[:3], y[3:]
         kn = np.linalg.norm(k)
-        return np.cross(w, k)[2] / kn / math.sqrt(1 - (k[2] / kn) ** 2)
+        return cross(w, k)[2] / kn / math.sqrt(1 - (k[2] / kn) ** 2)
 
     y0 = np.concatenate([k0, w1])
     if kval < 0:
@@ -530,7 +532,7 @@ def disk_integrate(beta, rho, Om, m, r, J, IG, g, kval, kick_rel=1e-9):
     wf = math.sqrt(kval)
     T = 2 * math.pi / wf
     sol = solve_ivp(rhs, (0, 20 * T), y0, method="DOP853", rtol=1e-12, atol=1e-15,
-                    events=lambda t, y: np.cross(y[3:], y[:3])[2], dense_output=True)
+                    events=lambda t, y: cross(y[3:], y[:3])[2], dense_output=True)
     assert sol.success
     tz = sol.t_events[0]
     tz = tz[tz > 0.1 * T]

@@ -79,13 +79,17 @@ def test_special_characters_are_escaped(tmp_path):
 
 # ---- the direct writer against ElementTree ------------------------------------------
 
+import pytest  # noqa: E402
 from hypothesis import given, settings, strategies as st  # noqa: E402
+
+from conftest import examples  # noqa: E402
 
 
 _texts = st.text(alphabet=st.characters(blacklist_categories=("Cs",)), max_size=30)
 
 
-@settings(max_examples=300, deadline=None)
+@pytest.mark.property
+@settings(max_examples=examples(300), deadline=None)
 @given(file=_texts, pid=_texts, status=st.sampled_from(["pass", "fail", "error",
                                                          "no expected answers"]),
        error=_texts, messages=st.lists(st.tuples(_texts, st.booleans(), _texts), max_size=3))

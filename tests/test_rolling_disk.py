@@ -24,7 +24,7 @@ from scipy.integrate import solve_ivp
 from gyro_cli.kinds.rolling_disk import (axle_pivot_normal_force, axle_pivot_spin,
                                          free_from_speed_and_path, free_from_speed_and_tilt,
                                          free_from_tilt_and_path)
-from rotations import K, omega_of, rx, rz
+from rotations import K, cross, omega_of, rx, rz
 
 RPM = 2 * math.pi / 60
 
@@ -77,7 +77,7 @@ def rolling_disk_rhs(m, g, r, J, I):
         un = np.linalg.norm(u)
         uh = u / un
         rho = -r * uh  # from G to the contact point
-        kdot = np.cross(w, k)
+        kdot = cross(w, k)
         udot = -(K @ kdot) * k - (K @ k) * kdot
         rhodot = -r * (udot - (uh @ udot) * uh) / un
         Iw = I * (np.eye(3) - np.outer(k, k)) + J * np.outer(k, k)
@@ -87,8 +87,8 @@ def rolling_disk_rhs(m, g, r, J, I):
         A = np.zeros((9, 9))
         b = np.zeros(9)
         A[0:3, 0:3], A[0:3, 6:9], b[0:3] = m * np.eye(3), -np.eye(3), -m * g * K
-        A[3:6, 3:6], A[3:6, 6:9], b[3:6] = Iw, -skew(rho), -np.cross(w, Iw @ w)
-        A[6:9, 0:3], A[6:9, 3:6], b[6:9] = np.eye(3), -skew(rho), -np.cross(w, rhodot)
+        A[3:6, 3:6], A[3:6, 6:9], b[3:6] = Iw, -skew(rho), -cross(w, Iw @ w)
+        A[6:9, 0:3], A[6:9, 3:6], b[6:9] = np.eye(3), -skew(rho), -cross(w, rhodot)
         x = np.linalg.solve(A, b)
         return np.concatenate([v, x[0:3], kdot, x[3:6]])
     return rhs

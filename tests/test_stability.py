@@ -25,6 +25,7 @@ from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
 from gyro_cli.kinds.steady_precession import precession_from_spin
 from gyro_cli.physics.stability import (NEUTRAL, STABLE, UNSTABLE, disk_critical_axial_rate,
                                         disk_rolling, top_steady_precession, verdict)
+from rotations import cross
 from test_rolling_disk import rolling_disk_rhs
 
 K = np.array([0.0, 0.0, 1.0])
@@ -43,7 +44,7 @@ def top_rhs(I, J, mgl):
         k, H = y[:3], y[3:]
         k = k / np.linalg.norm(k)
         omega = H / I + (1 / J - 1 / I) * (H @ k) * k
-        return np.concatenate([np.cross(omega, k), mgl * np.cross(k, -K)])
+        return np.concatenate([cross(omega, k), mgl * cross(k, -K)])
     return rhs
 
 
