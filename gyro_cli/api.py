@@ -17,7 +17,6 @@ result is shown or a unit is first met, as for the command.
 
 from __future__ import annotations
 
-import copy
 import itertools
 import math
 import os
@@ -88,6 +87,8 @@ def _read(source: Source, path: bool = False) -> tuple[str, Any, dict[str, int]]
     from .solving import problem as loader
 
     if isinstance(source, Mapping):
+        import copy
+
         data = copy.deepcopy(dict(source))
         if "id" not in data and isinstance(data.get("kind"), str):
             data["id"] = data["kind"]  # a dict in a notebook needs no name of its own

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import fnmatch
-import glob
 import os
 
 YAML_SUFFIXES = (".yaml", ".yml")
@@ -33,7 +32,7 @@ def problem_files(paths: list[str] | tuple[str, ...],
             if not found:
                 errors.append((path, f"{path}: no .yaml or .yml files in this directory"))
             files += sorted(found)
-        elif os.path.exists(path) or not glob.has_magic(path):
+        elif os.path.exists(path) or not _has_magic(path):
             files.append(path)  # a missing plain path is reported when it is loaded
         else:
             found = sorted(p for p in _glob(path) if os.path.isfile(p))
@@ -57,6 +56,11 @@ def problem_files(paths: list[str] | tuple[str, ...],
     return unique, errors
 
 
+def _has_magic(path: str) -> bool:
+    """``glob.has_magic``: a ``*``, ``?`` or ``[`` makes a pattern."""
+    return any(c in path for c in "*?[")
+
+
 def _glob(pattern: str) -> list[str]:
     """``glob.glob(pattern, recursive=True)``, but a ``**`` visits each real directory once.
 
@@ -65,6 +69,8 @@ def _glob(pattern: str) -> list[str]:
     such links make it never end. Here the walk below ``**`` follows links but
     enters each directory (by device and inode) once.
     """
+    import glob  # only for a pattern: a plain path never loads it
+
     parts = pattern.split(os.sep)
     if "**" not in parts:
         return glob.glob(pattern)
@@ -73,7 +79,7 @@ def _glob(pattern: str) -> list[str]:
     if first and not prefix:
         prefix = os.sep  # the pattern starts at the root
     rest = parts[first:]
-    bases = glob.glob(prefix) if glob.has_magic(prefix) else [prefix]
+    bases = glob.glob(prefix) if _has_magic(prefix) else [prefix]
     out: list[str] = []
     for base in bases:
         top = base or os.curdir
