@@ -31,7 +31,7 @@ def info(bank: ProblemBank) -> dict:
     """The question's info.json."""
     return {"uuid": str(stable_uuid(bank.id)), "type": "v3", "title": bank.name,
             "topic": TOPIC, "tags": ["gyro", bank.kind],
-            "singleVariant": len(bank.variants) == 1}
+            "singleVariant": bank.size == 1}
 
 
 def _blanks(bank: ProblemBank) -> list[Blank]:

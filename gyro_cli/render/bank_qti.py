@@ -66,7 +66,7 @@ def _field(label: str, entry: str, indent: str = "      ") -> str:
 
 
 def item_title(bank: ProblemBank, variant: Variant, blank: Blank | Choice) -> str:
-    name = f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
+    name = f"{bank.id} variant {variant.number}" if bank.size > 1 else bank.id
     return f"{name}: {blank.label}" if variant.asks > 1 else name
 
 
