@@ -206,9 +206,11 @@ class StagedSet:
     written to its hidden temporary file as it is made (`add`), and `place` renames them
     all when the set is whole. Leaving the ``with`` block without `place` (an error, a
     signal) removes every temporary file, and the folders made for the set when
-    ``folder`` is given (as `write_set_in`): nothing of the set is left."""
+    ``folder`` is given (as `write_set_in`): nothing of the set is left. ``sync_each``:
+    flush each file to disk as it is written (else all at once before they are placed)."""
 
-    def __init__(self, force: bool, folder: str | None, paths: Iterable[str]) -> None:
+    def __init__(self, force: bool, folder: str | None, paths: Iterable[str],
+                 sync_each: bool = True) -> None:
         paths = list(paths)
         for path in paths:
             target = Path(path)
@@ -217,6 +219,7 @@ class StagedSet:
                 raise InputError("exists; not overwritten (use --force to replace it)",
                                  file=str(target))
         self.force = force
+        self.sync_each = sync_each
         self.made = _make_folders(folder, paths) if folder is not None else []
         self.staged: list[tuple[Path, str]] = []  # (target, its temporary file)
         self.placed: list[Path] = []
@@ -257,13 +260,18 @@ class StagedSet:
                 for piece in pieces:
                     handle.write(_utf8(piece) if isinstance(piece, str) else piece)
                 handle.flush()
-                os.fsync(handle.fileno())
+                if self.sync_each:
+                    os.fsync(handle.fileno())
         except OSError as err:
             raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
                              "written", file=str(target)) from None
 
     def place(self) -> list[Path]:
-        """Rename every file into place: all of them, or (on a failure) none."""
+        """Rename every file into place: all of them, or (on a failure) none. Without
+        ``sync_each`` the files are flushed to disk here, all at once (one sync instead of
+        one per file: 20,000 of them cost more than drawing the set)."""
+        if not self.sync_each:
+            os.sync()
         mode = 0o666 & ~_umask()
         for target, tmp in self.staged:
             try:
