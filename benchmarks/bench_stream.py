@@ -37,7 +37,9 @@ def run(cmd: list[str], code: Path) -> tuple[float, float]:
     """(seconds, peak RSS in MB) of ``cmd`` run with ``code`` first on the path."""
     env = dict(os.environ, PYTHONPATH=str(code))
     start = time.perf_counter()
-    child = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    # Run from the checkout: ``python -m`` puts the working directory first on the path.
+    child = subprocess.Popen(cmd, env=env, cwd=code, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE)
     assert child.stderr is not None
     err = child.stderr.read()
     _, status, usage = os.wait4(child.pid, 0)
@@ -77,27 +79,33 @@ def main() -> None:
     parser.add_argument("--variants", type=int, action="append",
                         help="variants of the export (repeatable; default 2000)")
     parser.add_argument("--format", default="moodle", choices=sorted(SUFFIX))
-    parser.add_argument("--old", type=Path, help="an older checkout to measure beside")
+    parser.add_argument("--old", type=Path, action="append", default=[],
+                        help="an older checkout to measure beside (repeatable)")
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--only", help="run only the rows whose name contains this")
+    parser.add_argument("--alone", type=int, action="append", default=[],
+                        help="export variants measured with this code only (the old may "
+                             "need gigabytes)")
     args = parser.parse_args()
-    codes = [("now", ROOT)] + ([("old", args.old.resolve())] if args.old else [])
+    codes = [("now", ROOT)] + [(f"old {path.name}", path.resolve()) for path in args.old]
     print(f"load average before: {load()} ({os.cpu_count()} cores)")
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
-        rows = commands(work, args.students, args.variants or [2000], args.format)
+        rows = commands(work, args.students, (args.variants or [2000]) + args.alone,
+                        args.format)
         for name, cmd, target in rows:
             if args.only and args.only not in name:
                 continue
             measured: dict[str, list[tuple[float, float]]] = {label: [] for label, _ in codes}
+            alone = any(name.endswith(f" {n}") and "export" in name for n in args.alone)
             for _ in range(args.repeat):
-                for label, code in codes:
+                for label, code in codes[:1] if alone else codes:
                     measured[label].append(run(cmd, code))
                     if target.is_dir():
                         shutil.rmtree(target)
                     else:
                         target.unlink()
-            for label, _ in codes:
+            for label, _ in codes[:1] if alone else codes:
                 seconds = statistics.median(t for t, _ in measured[label])
                 peak = statistics.median(m for _, m in measured[label])
                 print(f"{name:<48} {label}: {seconds:7.1f} s  {peak:7.1f} MB peak "

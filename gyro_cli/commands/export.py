@@ -404,12 +404,12 @@ def _some(paths: list[str]) -> str:
 # ---- writing -----------------------------------------------------------------------
 
 def sink_for(fmt: str) -> "Sink":
-    """Where `stream` puts the variants of a ``fmt`` export: a file on disk as they come
-    (moodle, blackboard), else memory."""
+    """Where `stream` puts the variants of a ``fmt`` export: files on disk as they come."""
     from ..render import bank_stream
 
-    return {"moodle": bank_stream.MoodleSink,
-            "blackboard": bank_stream.BlackboardSink}.get(fmt, bank_stream.Sink)()
+    return {"moodle": bank_stream.MoodleSink, "qti": bank_stream.QtiSink,
+            "blackboard": bank_stream.BlackboardSink,
+            "prairielearn": bank_stream.PrairieLearnSink}.get(fmt, bank_stream.Sink)()
 
 
 def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
@@ -419,12 +419,12 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
     exists without ``force``, and the question directories all or nothing. The paths
     written. ``sink``: the streamed export (`sink_for`) when the banks hold no variants."""
     from ..core.files import refuse_input_as_output, write_atomic, write_set
-    from ..render.bank_stream import _Body
+    from ..render.bank_stream import PrairieLearnSink, QtiSink, _Body
 
     if fmt in FILE_FORMATS:
         _refuse_directory(out)
         refuse_input_as_output(out, inputs, option="--output")
-        if isinstance(sink, _Body):
+        if isinstance(sink, (_Body, QtiSink)):
             return [str(write_atomic(out, sink.chunks(), force=force))]
         if fmt == "moodle":
             from ..render import bank_moodle
@@ -443,6 +443,8 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
         raise InputError("exists and is not a directory (PrairieLearn questions are "
                          "directories: give the course's questions/ folder or a new one)",
                          file=out)
+    if isinstance(sink, PrairieLearnSink):
+        return _write_questions(sink, out, force, inputs)
     items = [(os.path.join(out, rel), text)
              for rel, text in bank_prairielearn.files(banks_).items()]
     for target, _ in items:
@@ -455,6 +457,28 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
     for target, _ in items:
         os.makedirs(os.path.dirname(target), exist_ok=True)
     return [str(path) for path in write_set(items, force=force)]
+
+
+def _write_questions(sink: "PrairieLearnSink", out: str, force: bool,
+                     inputs: list[str] | tuple[str, ...]) -> list[str]:
+    """`write` of PrairieLearn questions streamed (`sink`): the same checks, then each file
+    staged from disk, and all placed or none."""
+    from ..core.files import StagedSet, refuse_input_as_output
+
+    targets = [os.path.join(out, rel) for rel in sink.names()]
+    for target in targets:
+        refuse_input_as_output(target, inputs, option="--output", yaml_output=True)
+    if not force:
+        clash = [target for target in targets if os.path.lexists(target)]
+        if clash:
+            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
+                             "file(s) of this export already there)", file=clash[0])
+    for target in targets:
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+    with StagedSet(force, None, targets) as staged:
+        for target, (_, chunks) in zip(targets, sink.files()):
+            staged.add(target, chunks)
+        return [str(path) for path in staged.place()]
 
 
 def _refuse_directory(out: str) -> None:

@@ -221,7 +221,7 @@ class StagedSet:
         self.force = force
         self.sync_each = sync_each
         self.made = _make_folders(folder, paths) if folder is not None else []
-        self.staged: list[tuple[Path, str]] = []  # (target, its temporary file)
+        self.staged: list[tuple[str, str]] = []  # (target, its temporary file)
         self.placed: list[Path] = []
         self.done = False
 
@@ -253,7 +253,7 @@ class StagedSet:
                                        dir=target.parent if str(target.parent) else ".")
         except OSError as err:
             raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
-        self.staged.append((target, tmp))
+        self.staged.append((os.fspath(path), tmp))
         pieces = [text] if isinstance(text, (str, bytes)) else text
         try:
             with os.fdopen(fd, "wb") as handle:
@@ -273,7 +273,8 @@ class StagedSet:
         if not self.sync_each:
             os.sync()
         mode = 0o666 & ~_umask()
-        for target, tmp in self.staged:
+        for name, tmp in self.staged:
+            target = Path(name)
             try:
                 if self.force:
                     existed = target.exists()
@@ -301,7 +302,7 @@ class StagedSet:
             except OSError:
                 pass
         self.done = True
-        return [target for target, _ in self.staged]
+        return [Path(name) for name, _ in self.staged]
 
 
 def refuse_special(path: str | os.PathLike) -> None:

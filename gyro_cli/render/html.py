@@ -40,7 +40,7 @@ def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
     """``function`` of a tree, remembered for the last trees met: the variants of a bank
     share the symbolic side of each step (its tree), only the numbers differ. A tree
     that cannot be hashed is computed afresh."""
-    remembered = functools.lru_cache(maxsize=4096)(function)
+    remembered = functools.lru_cache(maxsize=256)(function)
 
     def call(node: Node) -> _T:
         try:
@@ -161,7 +161,7 @@ def formula_mathml(node: Node, display: bool = True) -> str:
         return mathml.tree_mathml(node, display)
 
 
-@functools.lru_cache(maxsize=4096)
+@functools.lru_cache(maxsize=256)
 def _formula(node: Node, display: bool) -> str:
     return mathml.tree_mathml(node, display)
 
