@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import os
 import sys
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 import click
 
@@ -33,6 +33,7 @@ from ..core.errors import InputError
 if TYPE_CHECKING:
     from ..checking.tolerance import Tolerance
     from ..render.bank import Blank, Choice, ProblemBank, Variant
+    from ..render.bank_stream import Sink
     from ..solving.problem import Problem
 
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
@@ -46,23 +47,27 @@ STUDENT_TOLERANCE = "1%"
 # ---- building the banks ----------------------------------------------------------
 
 def _variants_of(path: str, count: int, seed: int,
-                 unvaried: list[str]) -> tuple["Problem", list["Problem"]]:
-    """The problem of ``path`` and the problems to export: itself, or its variants
-    (a file without `vary` is added to ``unvaried`` and exported as written)."""
-    from ..solving.problem import build, load, parse_yaml
-    from .authoring import variants
+                 unvaried: list[str]) -> tuple["Problem", Iterator["Problem"]]:
+    """The problem of ``path`` and the problems to export, one at a time: itself, or its
+    variants (a file without `vary` is added to ``unvaried`` and exported as written)."""
+    from ..solving.problem import load
 
     problem = load(path)
     if count == 1:
-        return problem, [problem]
+        return problem, iter([problem])
     if problem.vary is None:
         unvaried.append(path)
-        return problem, [problem]
-    out = []
-    for name, text in variants(path, count, seed):
+        return problem, iter([problem])
+    return problem, _drawn(path, count, seed)
+
+
+def _drawn(path: str, count: int, seed: int) -> Iterator["Problem"]:
+    from ..solving.problem import build, parse_yaml
+    from .authoring import each_variant
+
+    for name, text in each_variant(path, count, seed):
         data, lines = parse_yaml(text, name)
-        out.append(build(f"{path} ({name})", data, lines))
-    return problem, out
+        yield build(f"{path} ({name})", data, lines)
 
 
 def _scale(value: float, si: float, unit: str, dimension: str) -> float:
@@ -281,6 +286,18 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     line per file that could not be exported (bad input). ``ask``: the answers to ask
     (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`);
     ``pictures``: the worked answers' pictures as PNG files (`variant_of`)."""
+    from ..render.bank_stream import Sink
+
+    return stream(paths, Sink(), count, seed, warn, ask, tolerance, pictures)
+
+
+def stream(paths: list[str] | tuple[str, ...], sink: "Sink", count: int = 1, seed: int = 0,
+           warn: Callable[[str], None] = lambda line: None,
+           ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
+           pictures: bool = False) -> tuple[list["ProblemBank"], list[str]]:
+    """`banks`, each variant handed to ``sink`` as it is solved (render/bank_stream.py)
+    instead of held: the banks as the sink commits them (without their variants, for a
+    sink that writes them out) and the lines of the files that could not be exported."""
     from ..render.bank import ProblemBank, slug
     from ..solving.paths import problem_files
 
@@ -305,30 +322,39 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
                                  f"{ids[str(problem.id)]}; ids must differ within a bank",
                                  key="id", line=problem.line("id"))
             answered.update(problem.find, problem.expected)
+            name = slug(os.path.splitext(os.path.basename(path))[0])
+            unique, n = name, 2
+            while unique in slugs:
+                unique, n = f"{name}-{n}", n + 1
+            sink.begin(ProblemBank(str(problem.id), problem.title, problem.kind.name,
+                                   problem.source, unique, problem.kind.name.replace("_", " ")))
             tight: list[str] = []
-            variants = [variant_of(p, n, problem.title, ask, student, tight, pictures)
-                        for n, p in enumerate(problems, 1)]
+            asking = 0  # the variants that ask
+            said: dict[str, None] = {}  # the word answers not asked
+            for n, p in enumerate(problems, 1):
+                variant = variant_of(p, n, problem.title, ask, student, tight, pictures)
+                said.update(dict.fromkeys(variant.unasked))
+                if variant.asks:
+                    asking += 1
+                    sink.add(variant)
         except InputError as err:
+            sink.abort()
             errors.append(str(err.located(file=path)))
             continue
-        if not any(v.asks for v in variants):
+        if not asking:
+            sink.abort()
             warn(f"{path}: no answer to ask; skipped")
             continue
         ids[str(problem.id)] = path
         if tight:
             tightened.append(path)
-        if any(v.unasked for v in variants):
+        if said:
             worded.append(path)
-            for variant in variants:
-                words.update(dict.fromkeys(variant.unasked))
-        name = slug(os.path.splitext(os.path.basename(path))[0])
-        unique, n = name, 2
-        while unique in slugs:
-            unique, n = f"{name}-{n}", n + 1
+            words.update(said)
         slugs.add(unique)
-        out.append(ProblemBank(str(problem.id), problem.title, problem.kind.name,
-                               problem.source, unique, problem.kind.name.replace("_", " "),
-                               [v for v in variants if v.asks]))
+        out.append(sink.commit(ProblemBank(str(problem.id), problem.title, problem.kind.name,
+                                           problem.source, unique,
+                                           problem.kind.name.replace("_", " "))))
     unknown = [name for name in ask or () if name not in answered]
     if unknown and answered:
         errors.append(f"--ask: {', '.join(map(repr, unknown))} is an answer of none of the "
@@ -377,17 +403,29 @@ def _some(paths: list[str]) -> str:
 
 # ---- writing -----------------------------------------------------------------------
 
+def sink_for(fmt: str) -> "Sink":
+    """Where `stream` puts the variants of a ``fmt`` export: files on disk as they come."""
+    from ..render import bank_stream
+
+    return {"moodle": bank_stream.MoodleSink, "qti": bank_stream.QtiSink,
+            "blackboard": bank_stream.BlackboardSink,
+            "prairielearn": bank_stream.PrairieLearnSink}.get(fmt, bank_stream.Sink)()
+
+
 def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
-          inputs: list[str] | tuple[str, ...] = ()) -> list[str]:
+          inputs: list[str] | tuple[str, ...] = (), sink: "Sink | None" = None) -> list[str]:
     """Write the export to ``out`` (a file for moodle, qti and blackboard, a directory
     for prairielearn): never one of the ``inputs`` (the problem files), never a file that
     exists without ``force``, and the question directories all or nothing. The paths
-    written."""
+    written. ``sink``: the streamed export (`sink_for`) when the banks hold no variants."""
     from ..core.files import refuse_input_as_output, write_atomic, write_set
+    from ..render.bank_stream import PrairieLearnSink, QtiSink, _Body
 
     if fmt in FILE_FORMATS:
         _refuse_directory(out)
         refuse_input_as_output(out, inputs, option="--output")
+        if isinstance(sink, (_Body, QtiSink)):
+            return [str(write_atomic(out, sink.chunks(), force=force))]
         if fmt == "moodle":
             from ..render import bank_moodle
 
@@ -405,6 +443,8 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
         raise InputError("exists and is not a directory (PrairieLearn questions are "
                          "directories: give the course's questions/ folder or a new one)",
                          file=out)
+    if isinstance(sink, PrairieLearnSink):
+        return _write_questions(sink, out, force, inputs)
     items = [(os.path.join(out, rel), text)
              for rel, text in bank_prairielearn.files(banks_).items()]
     for target, _ in items:
@@ -419,24 +459,46 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
     return [str(path) for path in write_set(items, force=force)]
 
 
+def _write_questions(sink: "PrairieLearnSink", out: str, force: bool,
+                     inputs: list[str] | tuple[str, ...]) -> list[str]:
+    """`write` of PrairieLearn questions streamed (`sink`): the same checks, then each file
+    staged from disk, and all placed or none."""
+    from ..core.files import StagedSet, refuse_input_as_output
+
+    targets = [os.path.join(out, rel) for rel in sink.names()]
+    for target in targets:
+        refuse_input_as_output(target, inputs, option="--output", yaml_output=True)
+    if not force:
+        clash = [target for target in targets if os.path.lexists(target)]
+        if clash:
+            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
+                             "file(s) of this export already there)", file=clash[0])
+    for target in targets:
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+    with StagedSet(force, None, targets) as staged:
+        for target, (_, chunks) in zip(targets, sink.files()):
+            staged.add(target, chunks)
+        return [str(path) for path in staged.place()]
+
+
 def _refuse_directory(out: str) -> None:
     if os.path.isdir(out):
         raise InputError("is a directory; give the file to write (a .xml for moodle, a .zip "
                          "for qti, a .txt for blackboard)", file=out)
 
 
-def _blackboard_notes(made: list["ProblemBank"], warn: Callable[[str], None]) -> None:
+def _blackboard_notes(records: int, choices: bool, warn: Callable[[str], None]) -> None:
     """What a Blackboard upload file lacks: more lines than Blackboard recommends per
-    upload, and the worked answers (no feedback field in a NUM line)."""
+    upload (``records`` lines written), and the worked answers (no feedback field in a NUM
+    line), and the word answers (``choices``: some were asked)."""
     from ..render.bank_blackboard import RECOMMENDED_RECORDS
 
-    records = sum(len(v.blanks) for b in made for v in b.variants)
     if records > RECOMMENDED_RECORDS:
         warn(f"{records} questions: Blackboard recommends at most {RECOMMENDED_RECORDS} per "
              "uploaded file (browser time-outs); export fewer problems per file "
              "(docs/course.md, Blackboard Learn)")
     warn("a Blackboard upload file has no feedback field: the worked answers are not in it")
-    if any(v.choices for b in made for v in b.variants):
+    if choices:
         warn("word answers (multiple choice in the other formats) are not in a Blackboard "
              "file: it holds NUM questions")
 
@@ -481,6 +543,7 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     def warn(line: str) -> None:
         click.echo(f"gyro: {line}", err=True)
 
+    from ..render.bank_stream import BlackboardSink
     from ..solving.paths import problem_files
 
     try:
@@ -489,23 +552,24 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     except InputError as err:
         warn(str(err))
         sys.exit(2)
-    made, errors = banks(files, count, seed, warn, ask, tolerance,
-                         pictures and fmt != "blackboard")
+    sink = sink_for(fmt)
+    made, errors = stream(files, sink, count, seed, warn, ask, tolerance,
+                          pictures and fmt != "blackboard")
     for line in errors:
         warn(line)
     if not made:
         warn("nothing to export")
         sys.exit(2)
     try:
-        written = write(made, fmt, out, force, problem_files(files)[0])
+        written = write(made, fmt, out, force, problem_files(files)[0], sink)
     except InputError as err:
         warn(str(err))
         sys.exit(2)
-    questions = sum(len(b.variants) for b in made)
+    questions = sum(b.size for b in made)
     shown = out if fmt != "prairielearn" else f"{out} ({len(written)} files)"
-    if fmt == "blackboard":
-        _blackboard_notes(made, warn)
-        shown += f" ({sum(len(v.blanks) for b in made for v in b.variants)} NUM questions)"
+    if isinstance(sink, BlackboardSink):
+        _blackboard_notes(sink.records, sink.choices, warn)
+        shown += f" ({sink.records} NUM questions)"
     click.echo(f"wrote {shown}: {len(made)} problem(s), {questions} variant(s)", err=True)
     if errors:
         sys.exit(2)

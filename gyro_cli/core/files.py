@@ -152,8 +152,16 @@ def write_set_in(folder: str, items: list[tuple[str, str | bytes]],
                  force: bool = False) -> list[Path]:
     """`write_set` into ``folder`` and the folders below it, made as needed: on failure the
     folders this call made are removed again (only if empty), so a rerun starts clean."""
+    with StagedSet(force, folder, [path for path, _ in items]) as staged:
+        for path, text in items:
+            staged.add(path, text)
+        return staged.place()
+
+
+def _make_folders(folder: str, paths: Iterable[str]) -> list[str]:
+    """Make ``folder`` and the folders of ``paths`` that are missing; the ones made."""
     made: list[str] = []
-    wanted = {os.path.normpath(os.path.dirname(path) or ".") for path, _ in items}
+    wanted = {os.path.normpath(os.path.dirname(path) or ".") for path in paths}
     for parent in sorted(wanted | {os.path.normpath(folder)}, key=lambda d: d.count(os.sep)):
         chain = []
         while parent and parent not in (".", os.sep) and not os.path.isdir(parent):
@@ -167,11 +175,7 @@ def write_set_in(folder: str, items: list[tuple[str, str | bytes]],
         _remove_empty(made)
         raise InputError(f"cannot create the directory: {getattr(err, 'strerror', None) or err}",
                          file=folder) from None
-    try:
-        return write_set(items, force=force)
-    except BaseException:
-        _remove_empty(made)
-        raise
+    return made
 
 
 def _remove_empty(folders: list[str]) -> None:
@@ -191,37 +195,88 @@ def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list
     failure while renaming removes the files this call created. Without
     ``force`` an existing target is refused before anything is written.
     """
-    targets = [Path(path) for path, _ in items]
-    for target in targets:
-        refuse_special(target)
-        if not force and (target.exists() or target.is_symlink()):
-            raise InputError("exists; not overwritten (use --force to replace it)",
-                             file=str(target))
-    import tempfile  # here: a solve to the terminal writes no file
+    with StagedSet(force, None, [path for path, _ in items]) as staged:
+        for path, text in items:
+            staged.add(path, text)
+        return staged.place()
 
-    temps: list[str] = []
-    placed: list[Path] = []
-    try:
-        for target, (_, text) in zip(targets, items):
-            data = _utf8(text) if isinstance(text, str) else text
+
+class StagedSet:
+    """`write_set` for a set too large to hold (a file per student of 10,000): each file is
+    written to its hidden temporary file as it is made (`add`), and `place` renames them
+    all when the set is whole. Leaving the ``with`` block without `place` (an error, a
+    signal) removes every temporary file, and the folders made for the set when
+    ``folder`` is given (as `write_set_in`): nothing of the set is left. ``sync_each``:
+    flush each file to disk as it is written (else all at once before they are placed)."""
+
+    def __init__(self, force: bool, folder: str | None, paths: Iterable[str],
+                 sync_each: bool = True) -> None:
+        paths = list(paths)
+        for path in paths:
+            target = Path(path)
+            refuse_special(target)
+            if not force and (target.exists() or target.is_symlink()):
+                raise InputError("exists; not overwritten (use --force to replace it)",
+                                 file=str(target))
+        self.force = force
+        self.sync_each = sync_each
+        self.made = _make_folders(folder, paths) if folder is not None else []
+        self.staged: list[tuple[str, str]] = []  # (target, its temporary file)
+        self.placed: list[Path] = []
+        self.done = False
+
+    def __enter__(self) -> "StagedSet":
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for _, tmp in self.staged:
             try:
-                fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
-                                           dir=target.parent if str(target.parent) else ".")
-            except OSError as err:
-                raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
-            temps.append(tmp)
-            try:
-                with os.fdopen(fd, "wb") as handle:
-                    handle.write(data)
-                    handle.flush()
+                os.unlink(tmp)
+            except OSError:
+                pass
+        if not self.done:
+            for target in self.placed:
+                try:
+                    os.unlink(target)
+                except OSError:
+                    pass
+            _remove_empty(self.made)
+
+    def add(self, path: str | os.PathLike, text: str | bytes | Iterable[str | bytes]) -> None:
+        """Write one file of the set to its temporary file (``text``: its content, or the
+        pieces of it)."""
+        import tempfile  # here: a solve to the terminal writes no file
+
+        target = Path(path)
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp",
+                                       dir=target.parent if str(target.parent) else ".")
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
+        self.staged.append((os.fspath(path), tmp))
+        pieces = [text] if isinstance(text, (str, bytes)) else text
+        try:
+            with os.fdopen(fd, "wb") as handle:
+                for piece in pieces:
+                    handle.write(_utf8(piece) if isinstance(piece, str) else piece)
+                handle.flush()
+                if self.sync_each:
                     os.fsync(handle.fileno())
-            except OSError as err:
-                raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
-                                 "written", file=str(target)) from None
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                             "written", file=str(target)) from None
+
+    def place(self) -> list[Path]:
+        """Rename every file into place: all of them, or (on a failure) none. Without
+        ``sync_each`` the files are flushed to disk here, all at once (one sync instead of
+        one per file: 20,000 of them cost more than drawing the set)."""
+        if not self.sync_each:
+            os.sync()
         mode = 0o666 & ~_umask()
-        for target, tmp in zip(targets, temps):
+        for name, tmp in self.staged:
+            target = Path(name)
             try:
-                if force:
+                if self.force:
                     existed = target.exists()
                     os.replace(tmp, target)
                 else:
@@ -241,24 +296,13 @@ def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list
                 raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
                                  "written", file=str(target)) from None
             if not existed:
-                placed.append(target)
+                self.placed.append(target)
             try:
                 os.chmod(target, mode)
             except OSError:
                 pass
-        placed = []  # all in place: nothing to undo
-    finally:
-        for tmp in temps:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
-        for target in placed:
-            try:
-                os.unlink(target)
-            except OSError:
-                pass
-    return targets
+        self.done = True
+        return [Path(name) for name, _ in self.staged]
 
 
 def refuse_special(path: str | os.PathLike) -> None:

@@ -101,6 +101,13 @@ class ProblemBank:
     slug: str      # a file and directory name: letters, digits, - and _
     topic: str     # the kind in words ("steady precession")
     variants: list[Variant] = field(default_factory=list)
+    #: how many variants it asks when they are streamed rather than held (-1: len(variants))
+    count: int = -1
+
+    @property
+    def size(self) -> int:
+        """How many variants the problem has (those held, else ``count``)."""
+        return self.count if self.count >= 0 else len(self.variants)
 
     @property
     def name(self) -> str:

@@ -32,15 +32,22 @@ def category_path(bank: ProblemBank) -> str:
     return f"{TOP}/{name}"
 
 
+#: what the file starts and ends with, around the problems' categories and questions
+HEAD = '<?xml version="1.0" encoding="UTF-8"?>\n<quiz>\n'
+TAIL = "</quiz>\n"
+
+
 def xml(banks: list[ProblemBank]) -> str:
     """The Moodle XML file of ``banks``."""
-    out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
-    for bank in banks:
-        out.append(_category(bank))
-        for variant in bank.variants:
-            out.append(_question(bank, variant))
-    out.append("</quiz>")
-    return "\n".join(out) + "\n"
+    return HEAD + "".join(piece for bank in banks for variant in bank.variants
+                          for piece in pieces(bank, variant, variant is bank.variants[0])) + TAIL
+
+
+def pieces(bank: ProblemBank, variant: Variant, first: bool) -> list[str]:
+    """What one variant adds to the file (``first``: the problem's category before it);
+    ``bank.size`` must be known, the variants need not be held (commands/export.py
+    streams them)."""
+    return ([_category(bank) + "\n"] if first else []) + [_question(bank, variant) + "\n"]
 
 
 def _category(bank: ProblemBank) -> str:
@@ -53,7 +60,7 @@ def _category(bank: ProblemBank) -> str:
 
 
 def _name(bank: ProblemBank, variant: Variant) -> str:
-    return f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
+    return f"{bank.id} variant {variant.number}" if bank.size > 1 else bank.id
 
 
 def _common(bank: ProblemBank, variant: Variant, text: str) -> list[str]:

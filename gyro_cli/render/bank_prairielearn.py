@@ -21,8 +21,10 @@ included.
 from __future__ import annotations
 
 import json
+from typing import Iterable, Iterator
 
-from .bank import Blank, Choice, ProblemBank, html_text, number_text, stable_uuid, xml_attr
+from .bank import (Blank, Choice, ProblemBank, Variant, html_text, number_text, stable_uuid,
+                   xml_attr)
 
 TOPIC = "Gyroscopic motion"
 
@@ -31,7 +33,7 @@ def info(bank: ProblemBank) -> dict:
     """The question's info.json."""
     return {"uuid": str(stable_uuid(bank.id)), "type": "v3", "title": bank.name,
             "topic": TOPIC, "tags": ["gyro", bank.kind],
-            "singleVariant": len(bank.variants) == 1}
+            "singleVariant": bank.size == 1}
 
 
 def _blanks(bank: ProblemBank) -> list[Blank]:
@@ -128,18 +130,35 @@ def _correct(choice: Choice, words: tuple[str, ...]) -> dict[str, str]:
 def server_py(bank: ProblemBank) -> str:
     """The question's server.py, with every variant's statement, feedback and answers."""
     words = {key: choices for key, (_, choices) in _choices(bank).items()}
-    variants = [{"variant": v.number, "id": v.ident, "given": v.given,
-                 "statement": v.statement_html, "feedback": v.feedback_html,
-                 "answers": {b.key: b.value for b in v.blanks},
-                 "atol": {b.key: number_text(b.half_width) for b in v.blanks},
-                 "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
-                 "figure": v.figure_name if v.figure else "", "figure_alt": v.figure_alt}
-                for v in bank.variants]
+    return "".join(server_pieces(bank, (variant_entry(v, words) for v in bank.variants)))
+
+
+def variant_entry(v: Variant, words: dict[str, tuple[str, ...]],
+                  figure: bool | None = None) -> dict:
+    """One variant as server.py holds it (``words``: each choice's words over all the
+    variants; ``figure``: whether it has a picture, when its PNG is not held)."""
+    pictured = bool(v.figure) if figure is None else figure
+    return {"variant": v.number, "id": v.ident, "given": v.given,
+            "statement": v.statement_html, "feedback": v.feedback_html,
+            "answers": {b.key: b.value for b in v.blanks},
+            "atol": {b.key: number_text(b.half_width) for b in v.blanks},
+            "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
+            "figure": v.figure_name if pictured else "", "figure_alt": v.figure_alt}
+
+
+def server_pieces(bank: ProblemBank, entries: Iterable[dict]) -> Iterator[str]:
+    """server.py in pieces, a variant at a time: the text of `server_py`, whose
+    ``VARIANTS`` is the repr of the JSON of ``entries``."""
     doc = "".join(c for c in " ".join(bank.name.split()) if c.isprintable())
     doc = doc.replace("\\", "/").replace('"', "'")
-    return SERVER.format(doc=f"{doc} ({bank.kind})",
-                         variants=repr(json.dumps(variants, ensure_ascii=True,
-                                                  allow_nan=False)))
+    head, tail = SERVER.split("{variants}")
+    yield head.format(doc=f"{doc} ({bank.kind})") + "'["
+    for n, entry in enumerate(entries):
+        text = json.dumps(entry, ensure_ascii=True, allow_nan=False)
+        # JSON always holds a double quote, so repr quotes it in single quotes: the
+        # repr of the whole list is the reprs of its parts between one pair of them.
+        yield (", " if n else "") + repr(text + '"')[1:-2]
+    yield "]'" + tail.format()
 
 
 def files(banks: list[ProblemBank]) -> dict[str, str | bytes]:

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import io
 import zipfile
+from typing import Callable
 
 from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, choice_prompt,
                    html_text, number_text, stable_uuid, xml_attr, xml_text)
@@ -43,21 +44,34 @@ def file_name(bank: ProblemBank) -> str:
 
 def assessment(bank: ProblemBank) -> str:
     """The QTI file of one problem."""
-    out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f'<questestinterop xmlns="{QTI_NS}" xmlns:xsi="{XSI}" '
-           f'xsi:schemaLocation="{QTI_NS} {QTI_XSD}">',
-           f'  <assessment ident="{ident(bank.id)}" title="{xml_attr(bank.name)}">',
-           "    <qtimetadata>",
-           _field("cc_maxattempts", "1"),
-           "    </qtimetadata>",
-           f'    <section ident="{ident(bank.id, "section")}" title="{xml_attr(bank.name)}">']
-    for variant in bank.variants:
-        for blank in variant.blanks:
-            out.append(_item(bank, variant, blank))
-        for choice in variant.choices:
-            out.append(_choice_item(bank, variant, choice))
-    out += ["    </section>", "  </assessment>", "</questestinterop>"]
-    return "\n".join(out) + "\n"
+    return (assessment_head(bank) + "".join(item + "\n" for variant in bank.variants
+                                            for item in items(bank, variant))
+            + ASSESSMENT_TAIL)
+
+
+def assessment_head(bank: ProblemBank) -> str:
+    """The QTI file of one problem up to its items."""
+    return "\n".join([
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<questestinterop xmlns="{QTI_NS}" xmlns:xsi="{XSI}" '
+        f'xsi:schemaLocation="{QTI_NS} {QTI_XSD}">',
+        f'  <assessment ident="{ident(bank.id)}" title="{xml_attr(bank.name)}">',
+        "    <qtimetadata>",
+        _field("cc_maxattempts", "1"),
+        "    </qtimetadata>",
+        f'    <section ident="{ident(bank.id, "section")}" title="{xml_attr(bank.name)}">',
+        ""])
+
+
+#: the QTI file of one problem after its items
+ASSESSMENT_TAIL = "    </section>\n  </assessment>\n</questestinterop>\n"
+
+
+def items(bank: ProblemBank, variant: Variant) -> list[str]:
+    """A variant's items: one per number asked, then one per word asked (``bank.size``
+    must be known; its variants need not be held)."""
+    return ([_item(bank, variant, blank) for blank in variant.blanks]
+            + [_choice_item(bank, variant, choice) for choice in variant.choices])
 
 
 def _field(label: str, entry: str, indent: str = "      ") -> str:
@@ -66,7 +80,7 @@ def _field(label: str, entry: str, indent: str = "      ") -> str:
 
 
 def item_title(bank: ProblemBank, variant: Variant, blank: Blank | Choice) -> str:
-    name = f"{bank.id} variant {variant.number}" if len(bank.variants) > 1 else bank.id
+    name = f"{bank.id} variant {variant.number}" if bank.size > 1 else bank.id
     return f"{name}: {blank.label}" if variant.asks > 1 else name
 
 
@@ -180,8 +194,11 @@ def figures(bank: ProblemBank) -> list[tuple[str, bytes]]:
     return [(f"{bank.slug}/{v.figure_name}", v.figure) for v in bank.variants if v.figure]
 
 
-def manifest(banks: list[ProblemBank]) -> str:
-    """``imsmanifest.xml``: one resource (of type imsqti_xmlv1p2) per problem's file."""
+def manifest(banks: list[ProblemBank],
+             pictures: Callable[[ProblemBank], list[str]] | None = None) -> str:
+    """``imsmanifest.xml``: one resource (of type imsqti_xmlv1p2) per problem's file.
+    ``pictures``: the paths of a problem's pictures (default: those of its variants)."""
+    pictures = pictures or (lambda bank: [path for path, _ in figures(bank)])
     out = ['<?xml version="1.0" encoding="UTF-8"?>',
            f'<manifest identifier="{ident("manifest", *(b.id for b in banks))}" '
            f'xmlns="{CP_NS}" xmlns:xsi="{XSI}" xsi:schemaLocation="{CP_NS} {CP_XSD}">',
@@ -196,7 +213,7 @@ def manifest(banks: list[ProblemBank]) -> str:
         out += [f'    <resource identifier="{ident(bank.id, "resource")}" '
                 f'type="imsqti_xmlv1p2" href="{xml_attr(href)}">',
                 f'      <file href="{xml_attr(href)}"/>',
-                *(f'      <file href="{xml_attr(path)}"/>' for path, _ in figures(bank)),
+                *(f'      <file href="{xml_attr(path)}"/>' for path in pictures(bank)),
                 "    </resource>"]
     out += ["  </resources>", "</manifest>"]
     return "\n".join(out) + "\n"
@@ -210,8 +227,13 @@ def package(banks: list[ProblemBank]) -> bytes:
         for bank in banks:
             entries += [(file_name(bank), assessment(bank)), *figures(bank)]
         for name, data in entries:
-            info = zipfile.ZipInfo(name, date_time=ZIP_TIME)
-            info.compress_type = zipfile.ZIP_DEFLATED
-            info.external_attr = 0o644 << 16
-            archive.writestr(info, data.encode("utf-8") if isinstance(data, str) else data)
+            archive.writestr(entry(name), data.encode("utf-8") if isinstance(data, str) else data)
     return buffer.getvalue()
+
+
+def entry(name: str) -> zipfile.ZipInfo:
+    """A zip entry as the package writes each: a fixed time, deflated, mode 644."""
+    info = zipfile.ZipInfo(name, date_time=ZIP_TIME)
+    info.compress_type = zipfile.ZIP_DEFLATED
+    info.external_attr = 0o644 << 16
+    return info

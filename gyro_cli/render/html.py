@@ -19,8 +19,10 @@ Every string from a problem file is HTML-escaped.
 
 from __future__ import annotations
 
+import functools
 import re
 from html import escape as _escape
+from typing import Callable, TypeVar
 
 from ..core.work import num
 from ..solving.solve import Result
@@ -30,6 +32,23 @@ from .mathml import MathMLPrinter, math_element
 from .mathtree import BinOp, Node, Num, Quantity, Rel
 from .exprnodes import prose_nodes, symbol_node
 from .writeup import _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, keys_of, width
+
+_T = TypeVar("_T")
+
+
+def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
+    """``function`` of a tree, remembered for the last trees met: the variants of a bank
+    share the symbolic side of each step (its tree), only the numbers differ. A tree
+    that cannot be hashed is computed afresh."""
+    remembered = functools.lru_cache(maxsize=256)(function)
+
+    def call(node: Node) -> _T:
+        try:
+            return remembered(node)
+        except TypeError:
+            return function(node)
+    return call
+
 
 def escape(text: str, quote: bool = True) -> str:
     """A string from a file in HTML (the one place they meet it): markup escaped, and a
@@ -134,7 +153,16 @@ CSP = "default-src 'none'; style-src 'unsafe-inline'; img-src data:"
 # ---- the switch: formulas -----------------------------------------------------
 
 def formula_mathml(node: Node, display: bool = True) -> str:
-    """The one place a formula becomes MathML (content of a <math> element)."""
+    """The one place a formula becomes MathML (content of a <math> element); the last
+    trees met are remembered (`_memo`)."""
+    try:
+        return _formula(node, display)
+    except TypeError:  # a tree that cannot be hashed
+        return mathml.tree_mathml(node, display)
+
+
+@functools.lru_cache(maxsize=256)
+def _formula(node: Node, display: bool) -> str:
     return mathml.tree_mathml(node, display)
 
 
@@ -148,6 +176,7 @@ def prose_html(text: str) -> str:
     return "".join(escape(piece) for _, piece in _split_keys(text))
 
 
+@_memo
 def _inline(node: Node) -> str:
     """Inline maths; a long chain ``a = b = c`` as one <math> per link, so that the line
     may wrap between them on a narrow screen."""
@@ -212,19 +241,34 @@ def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
     return rows
 
 
+@_memo
+def _printed(node: Node) -> str:
+    return MathMLPrinter(True).doprint(node)
+
+
+@_memo
+def _node_width(node: Node) -> float:
+    return width(node)
+
+
+@_memo
+def _rows(piece: Node) -> tuple[tuple[str, float], ...]:
+    return tuple(_piece_rows(piece, ROW_WIDTH))
+
+
 def _equation(lhs: Node | None, pieces: list[Node], relation: str = "=") -> tuple[str, bool]:
     """``lhs = p1 = p2 ...`` as one <math> element (rows in an <mtable> when wide);
     also whether it may still be wider than a phone (then its box scrolls)."""
-    printer = MathMLPrinter(True)
-    left = printer.doprint(lhs) if lhs is not None else ""
+    left = _printed(lhs) if lhs is not None else ""
     rel = f"<mo>{mathml.RELATIONS[relation]}</mo>"
-    total = width(lhs) + sum(width(p) + 3 for p in pieces)
+    total = (_node_width(lhs) if lhs is not None else 0) + sum(_node_width(p) + 3
+                                                                for p in pieces)
     if total <= ROW_WIDTH:
-        body = left + "".join(rel + printer.doprint(p) for p in pieces)
+        body = left + "".join(rel + _printed(p) for p in pieces)
         return math_element(f"<mrow>{body}</mrow>", display=True), False
     rows, wide = [], False
     for k, piece in enumerate(pieces):
-        for j, (row, w) in enumerate(_piece_rows(piece, ROW_WIDTH)):
+        for j, (row, w) in enumerate(_rows(piece)):
             head = left if k == 0 and j == 0 else ""
             op = rel if j == 0 else "<mspace width=\"1em\"/>"
             wide = wide or w > ROW_WIDTH - 2

@@ -1,0 +1,119 @@
+"""Variants and banks streamed: time and peak memory of `gyro vary --roster` and
+`gyro export --to FORMAT --variants N`, this code against another checkout, interleaved.
+
+Each command runs in its own process; its peak resident memory is that process's
+``ru_maxrss`` (os.wait4, the rusage of that one child). With ``--old DIR`` each run of
+this checkout is followed by the same command run with ``PYTHONPATH=DIR`` (an older
+checkout, e.g. one made by ``git worktree add /tmp/old 1438cdf``), so a loaded machine
+slows both alike; the load average is printed before and after. Medians of ``--repeat``
+runs.
+
+    .venv/bin/python benchmarks/bench_stream.py --students 10000 --variants 2000 \\
+        --variants 10000 --old /tmp/old [--repeat 3] [--format moodle]
+
+The issue's rows: `gyro vary problems/11_3.yaml problems/11_5.yaml --roster` of 10,000
+students (goal <= 15 s, <= 80 MB) and `gyro export --to moodle problems/11_3.yaml
+--variants 2000` (and 10,000; goal: memory flat, <= 100 MB at any count).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = ROOT / "problems"
+SUFFIX = {"moodle": ".xml", "qti": ".zip", "blackboard": ".txt", "prairielearn": ""}
+
+
+def run(cmd: list[str], code: Path) -> tuple[float, float]:
+    """(seconds, peak RSS in MB) of ``cmd`` run with ``code`` first on the path."""
+    env = dict(os.environ, PYTHONPATH=str(code))
+    start = time.perf_counter()
+    # Run from the checkout: ``python -m`` puts the working directory first on the path.
+    child = subprocess.Popen(cmd, env=env, cwd=code, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.PIPE)
+    assert child.stderr is not None
+    err = child.stderr.read()
+    _, status, usage = os.wait4(child.pid, 0)
+    took = time.perf_counter() - start
+    child.returncode = os.waitstatus_to_exitcode(status)
+    if child.returncode != 0:  # an old checkout may not read today's problem files
+        lines = err.decode().strip().splitlines() or [""]
+        print(f"  {code}: exited {child.returncode}: {lines[-1][:300]}", flush=True)
+        return float("nan"), float("nan")
+    return took, usage.ru_maxrss / 1024  # kB on Linux
+
+
+def commands(work: Path, students: int, counts: list[int], fmt: str
+             ) -> list[tuple[str, list[str], Path]]:
+    """(row name, command, what it writes) of each benchmark."""
+    gyro = [sys.executable, "-m", "gyro_cli"]
+    roster = work / "roster.csv"
+    roster.write_text("student,section\n" + "".join(f"s{k:05d},{k % 12}\n"
+                                                    for k in range(students)))
+    out = [(f"vary --roster, {students} students x 2 problems",
+            gyro + ["vary", str(PROBLEMS / "11_3.yaml"), str(PROBLEMS / "11_5.yaml"),
+                    "--roster", str(roster), "-o", str(work / "hw")], work / "hw")]
+    for count in counts:
+        target = work / f"bank{SUFFIX[fmt]}"
+        out.append((f"export --to {fmt} 11_3.yaml --variants {count}",
+                    gyro + ["export", "--to", fmt, str(PROBLEMS / "11_3.yaml"), "--variants",
+                            str(count), "-o", str(target)], target))
+    return out
+
+
+def load() -> str:
+    return " ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--students", type=int, default=10_000)
+    parser.add_argument("--variants", type=int, action="append",
+                        help="variants of the export (repeatable; default 2000)")
+    parser.add_argument("--format", default="moodle", choices=sorted(SUFFIX))
+    parser.add_argument("--old", type=Path, action="append", default=[],
+                        help="an older checkout to measure beside (repeatable)")
+    parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--only", help="run only the rows whose name contains this")
+    parser.add_argument("--alone", type=int, action="append", default=[],
+                        help="export variants measured with this code only (the old may "
+                             "need gigabytes)")
+    args = parser.parse_args()
+    codes = [("now", ROOT)] + [(f"old {path.name}", path.resolve()) for path in args.old]
+    print(f"load average before: {load()} ({os.cpu_count()} cores)")
+    with tempfile.TemporaryDirectory() as tmp:
+        work = Path(tmp)
+        rows = commands(work, args.students, (args.variants or [2000]) + args.alone,
+                        args.format)
+        for name, cmd, target in rows:
+            if args.only and args.only not in name:
+                continue
+            measured: dict[str, list[tuple[float, float]]] = {label: [] for label, _ in codes}
+            alone = any(name.endswith(f" {n}") and "export" in name for n in args.alone)
+            for _ in range(args.repeat):
+                for label, code in codes[:1] if alone else codes:
+                    measured[label].append(run(cmd, code))
+                    if target.is_dir():
+                        shutil.rmtree(target)
+                    elif target.exists():
+                        target.unlink()
+            for label, _ in codes[:1] if alone else codes:
+                seconds = statistics.median(t for t, _ in measured[label])
+                peak = statistics.median(m for _, m in measured[label])
+                print(f"{name:<48} {label}: {seconds:7.1f} s  {peak:7.1f} MB peak "
+                      f"(runs: {', '.join(f'{t:.1f} s/{m:.0f} MB' for t, m in measured[label])})",
+                      flush=True)
+    print(f"load average after: {load()}")
+
+
+if __name__ == "__main__":
+    main()
