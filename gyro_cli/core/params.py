@@ -112,8 +112,16 @@ _HEMISPHERE_WORDS = {"n": "N", "north": "N", "s": "S", "south": "S", "e": "E", "
                      "w": "W", "west": "W"}
 _WORD = r"(?<![A-Za-z])(north|south|east|west|[NSEWnsew])"
 _NUMBER = r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?"
-_AFTER = re.compile(rf"^\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*{_WORD}\.?\s*$", re.I)
-_BEFORE = re.compile(rf"^\s*{_WORD}\.?\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*$", re.I)
+_PATTERNS: list[re.Pattern[str]] = []  # compiled when a hemisphere is first read (ms at start-up)
+
+
+def _hemisphere_patterns() -> list[re.Pattern[str]]:
+    """The number before the hemisphere (``30 deg S``), then after it (``S 30``)."""
+    if not _PATTERNS:
+        _PATTERNS.extend([
+            re.compile(rf"^\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*{_WORD}\.?\s*$", re.I),
+            re.compile(rf"^\s*{_WORD}\.?\s*(?P<number>{_NUMBER})\s*(?P<unit>.*?)\s*$", re.I)])
+    return _PATTERNS
 
 
 def split_hemisphere(text: str, letters: str) -> tuple[str, int] | None:
@@ -123,7 +131,8 @@ def split_hemisphere(text: str, letters: str) -> tuple[str, int] | None:
     Raises ValueError, in words, for a letter of the other pair (``30 E`` as a latitude)
     or a sign written with a hemisphere (``-30 S``).
     """
-    match = _AFTER.match(text) or _BEFORE.match(text)
+    after, before = _hemisphere_patterns()
+    match = after.match(text) or before.match(text)
     if match is None:
         return None
     word = next(g for g in match.groups() if g and g.lower() in _HEMISPHERE_WORDS)
