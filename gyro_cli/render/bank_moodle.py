@@ -89,13 +89,16 @@ def _question(bank: ProblemBank, variant: Variant) -> str:
     return _cloze(bank, variant)
 
 
+#: one mark, a third of it lost for each wrong try where the quiz allows tries, not hidden
+_GRADED = ("    <defaultgrade>1</defaultgrade>", "    <penalty>0.3333333</penalty>",
+           "    <hidden>0</hidden>")
+
+
 def _multichoice(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
     """A word answer alone: a multiple-choice question (one right answer, shuffled)."""
     text = variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
     lines = ['  <question type="multichoice">', *_common(bank, variant, text),
-             "    <defaultgrade>1</defaultgrade>",
-             "    <penalty>0.3333333</penalty>",
-             "    <hidden>0</hidden>",
+             *_GRADED,
              "    <single>true</single>",
              "    <shuffleanswers>true</shuffleanswers>",
              "    <answernumbering>abc</answernumbering>"]
@@ -133,9 +136,7 @@ def _numerical(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
                                     if blank.unit else "")
     text = variant.statement_html + f"<p>{html_text(prompt)}:</p>"
     lines = ['  <question type="numerical">', *_common(bank, variant, text),
-             "    <defaultgrade>1</defaultgrade>",
-             "    <penalty>0.3333333</penalty>",
-             "    <hidden>0</hidden>",
+             *_GRADED,
              '    <answer fraction="100" format="plain_text">',
              f"      <text>{number_text(blank.value)}</text>",
              f"      <tolerance>{number_text(blank.half_width)}</tolerance>",

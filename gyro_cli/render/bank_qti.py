@@ -87,92 +87,76 @@ def item_title(bank: ProblemBank, variant: Variant, blank: Blank | Choice) -> st
 def _choice_item(bank: ProblemBank, variant: Variant, choice: Choice) -> str:
     """A word answer as a multiple-choice item (Canvas's multiple_choice_question): a
     response_lid rendered as choices, 100 for the solver's word."""
-    text = variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
     idents = {word: f"c{n}" for n, word in enumerate(choice.choices, 1)}
-    i = "      "
+    i = _INDENT
     labels = [f'{i}        <response_label ident="{idents[word]}"><material><mattext '
               f'texttype="text/plain">{xml_text(word)}</mattext></material></response_label>'
               for word in choice.choices]
-    return "\n".join([
-        f'{i}<item ident="{ident(bank.id, variant.number, choice.key)}" '
-        f'title="{xml_attr(item_title(bank, variant, choice))}">',
-        f"{i}  <itemmetadata>",
-        f"{i}    <qtimetadata>",
-        _field("question_type", "multiple_choice_question", i + "      "),
-        _field("points_possible", "1.0", i + "      "),
-        _field("gyro_answer", choice.key, i + "      "),
-        f"{i}    </qtimetadata>",
-        f"{i}  </itemmetadata>",
-        f"{i}  <presentation>",
-        f'{i}    <material><mattext texttype="text/html">{xml_text(text)}</mattext></material>',
-        f'{i}    <response_lid ident="response1" rcardinality="Single">',
-        f"{i}      <render_choice>",
-        *labels,
-        f"{i}      </render_choice>",
-        f"{i}    </response_lid>",
-        f"{i}  </presentation>",
-        f"{i}  <resprocessing>",
-        f"{i}    <outcomes>",
-        f'{i}      <decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>',
-        f"{i}    </outcomes>",
-        f'{i}    <respcondition continue="Yes">',
-        f"{i}      <conditionvar><other/></conditionvar>",
-        f'{i}      <displayfeedback feedbacktype="Response" linkrefid="general_fb"/>',
-        f"{i}    </respcondition>",
-        f'{i}    <respcondition continue="No">',
-        f"{i}      <conditionvar>",
-        f'{i}        <varequal respident="response1">{idents[choice.answer]}</varequal>',
-        f"{i}      </conditionvar>",
-        f'{i}      <setvar action="Set" varname="SCORE">100</setvar>',
-        f"{i}    </respcondition>",
-        f"{i}  </resprocessing>",
-        f'{i}  <itemfeedback ident="general_fb">',
-        f'{i}    <flow_mat><material><mattext texttype="text/html">'
-        f"{xml_text(_feedback(variant))}</mattext></material></flow_mat>",
-        f"{i}  </itemfeedback>",
-        f"{i}</item>"])
+    response = [f'{i}    <response_lid ident="response1" rcardinality="Single">',
+                f"{i}      <render_choice>", *labels, f"{i}      </render_choice>",
+                f"{i}    </response_lid>"]
+    condition = [f'{i}        <varequal respident="response1">{idents[choice.answer]}</varequal>']
+    return _item_frame(bank, variant, choice, "multiple_choice_question", [],
+                       choice_prompt(choice), response, condition)
 
 
 def _item(bank: ProblemBank, variant: Variant, blank: Blank) -> str:
+    """A number asked as a numerical item: the answer, or anything within its width."""
     low = blank.value - blank.half_width
     high = blank.value + blank.half_width
-    text = variant.statement_html + f"<p>{html_text(blank_prompt(blank))}:</p>"
-    i = "      "
-    return "\n".join([
-        f'{i}<item ident="{ident(bank.id, variant.number, blank.key)}" '
-        f'title="{xml_attr(item_title(bank, variant, blank))}">',
-        f"{i}  <itemmetadata>",
-        f"{i}    <qtimetadata>",
-        _field("question_type", "numerical_question", i + "      "),
-        _field("points_possible", "1.0", i + "      "),
-        _field("gyro_answer", blank.key, i + "      "),
-        _field("gyro_unit", blank.unit, i + "      "),
-        _field("gyro_tolerance", blank.tolerance, i + "      "),
-        f"{i}    </qtimetadata>",
-        f"{i}  </itemmetadata>",
-        f"{i}  <presentation>",
-        f'{i}    <material><mattext texttype="text/html">{xml_text(text)}</mattext></material>',
-        f'{i}    <response_str ident="response1" rcardinality="Single">',
-        f'{i}      <render_fib fibtype="Decimal"><response_label ident="answer1"/></render_fib>',
-        f"{i}    </response_str>",
-        f"{i}  </presentation>",
-        f"{i}  <resprocessing>",
-        f"{i}    <outcomes>",
-        f'{i}      <decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>',
-        f"{i}    </outcomes>",
-        f'{i}    <respcondition continue="Yes">',
-        f"{i}      <conditionvar><other/></conditionvar>",
-        f'{i}      <displayfeedback feedbacktype="Response" linkrefid="general_fb"/>',
-        f"{i}    </respcondition>",
-        f'{i}    <respcondition continue="No">',
-        f"{i}      <conditionvar>",
+    i = _INDENT
+    response = [f'{i}    <response_str ident="response1" rcardinality="Single">',
+                f'{i}      <render_fib fibtype="Decimal"><response_label ident="answer1"/>'
+                "</render_fib>",
+                f"{i}    </response_str>"]
+    condition = [
         f"{i}        <or>",
         f'{i}          <varequal respident="response1">{number_text(blank.value)}</varequal>',
         f"{i}          <and>",
         f'{i}            <vargte respident="response1">{number_text(low)}</vargte>',
         f'{i}            <varlte respident="response1">{number_text(high)}</varlte>',
         f"{i}          </and>",
-        f"{i}        </or>",
+        f"{i}        </or>"]
+    fields = [("gyro_unit", blank.unit), ("gyro_tolerance", blank.tolerance)]
+    return _item_frame(bank, variant, blank, "numerical_question", fields,
+                       blank_prompt(blank), response, condition)
+
+
+_INDENT = "      "
+
+
+def _item_frame(bank: ProblemBank, variant: Variant, asked: Blank | Choice,
+                question_type: str, fields: list[tuple[str, str]], prompt: str,
+                response: list[str], condition: list[str]) -> str:
+    """What every item has around its response and the condition that scores it: the
+    metadata, the statement and prompt, the worked answer as general feedback."""
+    i = _INDENT
+    text = variant.statement_html + f"<p>{html_text(prompt)}:</p>"
+    metadata = [("question_type", question_type), ("points_possible", "1.0"),
+                ("gyro_answer", asked.key), *fields]
+    return "\n".join([
+        f'{i}<item ident="{ident(bank.id, variant.number, asked.key)}" '
+        f'title="{xml_attr(item_title(bank, variant, asked))}">',
+        f"{i}  <itemmetadata>",
+        f"{i}    <qtimetadata>",
+        *[_field(label, entry, i + "      ") for label, entry in metadata],
+        f"{i}    </qtimetadata>",
+        f"{i}  </itemmetadata>",
+        f"{i}  <presentation>",
+        f'{i}    <material><mattext texttype="text/html">{xml_text(text)}</mattext></material>',
+        *response,
+        f"{i}  </presentation>",
+        f"{i}  <resprocessing>",
+        f"{i}    <outcomes>",
+        f'{i}      <decvar maxvalue="100" minvalue="0" varname="SCORE" vartype="Decimal"/>',
+        f"{i}    </outcomes>",
+        f'{i}    <respcondition continue="Yes">',
+        f"{i}      <conditionvar><other/></conditionvar>",
+        f'{i}      <displayfeedback feedbacktype="Response" linkrefid="general_fb"/>',
+        f"{i}    </respcondition>",
+        f'{i}    <respcondition continue="No">',
+        f"{i}      <conditionvar>",
+        *condition,
         f"{i}      </conditionvar>",
         f'{i}      <setvar action="Set" varname="SCORE">100</setvar>',
         f"{i}    </respcondition>",
