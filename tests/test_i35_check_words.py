@@ -29,7 +29,7 @@ RAIL = COUPLE / 0.200  # about 13.90 N: one rail pressed by it, the other reliev
 def rails_file(tmp_path: Path, expected: str, tolerance: str = "") -> Path:
     """A gyroscopic_torque problem asking for the couple's share on the two rails."""
     path = tmp_path / "rails.yaml"
-    path.write_text(textwrap.dedent(f"""\
+    path.write_text(textwrap.dedent("""\
         id: rails
         title: Rotor on two rails
         kind: gyroscopic_torque
@@ -39,7 +39,7 @@ def rails_file(tmp_path: Path, expected: str, tolerance: str = "") -> Path:
           spin: 1725 rpm
           precession: 48 rpm
           bearing_spacing: 200 mm
-        find: {{couple_forces: N}}
+        find: {couple_forces: N}
         """) + (f"tolerance: {tolerance}\n" if tolerance else "") +
         f"expected:\n  couple_forces: {expected}\n")
     return path

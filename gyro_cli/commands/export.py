@@ -33,7 +33,7 @@ from ..core.errors import InputError
 if TYPE_CHECKING:
     from ..checking.tolerance import Tolerance
     from ..render.bank import Blank, Choice, ProblemBank, Variant
-    from ..render.bank_stream import Sink
+    from ..render.bank_stream import PrairieLearnSink, Sink
     from ..solving.problem import Problem
 
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
