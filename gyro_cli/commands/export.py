@@ -447,32 +447,34 @@ def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
         return _write_questions(sink, out, force, inputs)
     items = [(os.path.join(out, rel), text)
              for rel, text in bank_prairielearn.files(banks_).items()]
-    for target, _ in items:
-        refuse_input_as_output(target, inputs, option="--output", yaml_output=True)
-    if not force:
-        clash = [target for target, _ in items if os.path.lexists(target)]
-        if clash:
-            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "file(s) of this export already there)", file=clash[0])
+    _refuse_targets([target for target, _ in items], inputs, force)
     for target, _ in items:
         os.makedirs(os.path.dirname(target), exist_ok=True)
     return [str(path) for path in write_set(items, force=force)]
+
+
+def _refuse_targets(targets: list[str], inputs: list[str] | tuple[str, ...],
+                    force: bool) -> None:
+    """Before a question directory is written: none of its files over an input (the inputs
+    looked up once), and none over an existing file without ``force``."""
+    from ..core.files import refuse_outputs_over_inputs
+
+    refuse_outputs_over_inputs(targets, inputs, option="--output", yaml_output=True)
+    if not force:
+        clash = [target for target in targets if os.path.lexists(target)]
+        if clash:
+            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
+                             "file(s) of this export already there)", file=clash[0])
 
 
 def _write_questions(sink: "PrairieLearnSink", out: str, force: bool,
                      inputs: list[str] | tuple[str, ...]) -> list[str]:
     """`write` of PrairieLearn questions streamed (`sink`): the same checks, then each file
     staged from disk, and all placed or none."""
-    from ..core.files import StagedSet, refuse_input_as_output
+    from ..core.files import StagedSet
 
     targets = [os.path.join(out, rel) for rel in sink.names()]
-    for target in targets:
-        refuse_input_as_output(target, inputs, option="--output", yaml_output=True)
-    if not force:
-        clash = [target for target in targets if os.path.lexists(target)]
-        if clash:
-            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "file(s) of this export already there)", file=clash[0])
+    _refuse_targets(targets, inputs, force)
     for target in targets:
         os.makedirs(os.path.dirname(target), exist_ok=True)
     with StagedSet(force, None, targets) as staged:
