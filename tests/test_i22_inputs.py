@@ -139,7 +139,7 @@ def test_i22_08_unquoted_id_keeps_the_text_written(run, write, written):
 
 def test_i22_08_unquoted_notes_and_source_keep_the_text_written(run, write):
     path = write(TOP_11_3.replace("source: Chapter 11, problem 11/3", "source: 11.10")
-                 .replace("  - Spin is the rate relative to the precessing frame (psidot).",
+                 .replace("  - Spin is the rate relative to the precessing frame (ψ̇).",
                           "  - 12:30\n  - no"))
     out = run("solve", path)
     assert out.exit_code == 0, out.output
@@ -358,7 +358,7 @@ def _hostile(write, name: str = "p.yaml"):
     body = TOP_11_3.split("kind:", 1)[1]
     return write(HOSTILE + "kind:" + body.replace("source: Chapter 11, problem 11/3\n", "")
                  .replace("notes:\n  - Spin is the rate relative to the precessing frame "
-                          "(psidot).\n", ""), name)
+                          "(ψ̇).\n", ""), name)
 
 
 def test_i22_10_latex_id_newline_cannot_run_input(run, write):

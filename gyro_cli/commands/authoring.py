@@ -70,8 +70,9 @@ def template(kind_name: str) -> str:
            _line("statement: >-", "optional: the problem as students read it; {key} is "
                  "the given value as written"),
            "  " + _statement_example(kind, given_ex, find_ex),
-           _line("notes:", "optional: lines printed with the worked answer"),
-           "  - Spin is the rate relative to the precessing frame (psidot)."
+           _line("notes:", "optional: lines printed with the worked answer; maths in "
+                 "Unicode (ψ̇, θ₀, √, ω_z, m²)"),
+           "  - Spin is the rate relative to the precessing frame (ψ̇)."
            if kind.param("spin") and "precessing frame" in kind.param("spin").doc
            else "  - State here what the problem assumes.",
            "",

@@ -78,41 +78,13 @@ class Printer:
 
 # ---- text inside LaTeX ------------------------------------------------------
 
-_TEXT_ESCAPES = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
-                 "#": r"\#", "%": r"\%", "_": r"\_", "^": r"\textasciicircum{}",
-                 "~": r"\textasciitilde{}", "|": r"\textbar{}", "<": r"\textless{}",
-                 ">": r"\textgreater{}"}
-# Unicode a problem file may hold, as LaTeX maths (pdflatex has no glyph for them in text).
-UNICODE_MATH = {"θ": r"\theta", "φ": r"\phi", "ψ": r"\psi", "ω": r"\omega", "α": r"\alpha",
-                "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "μ": r"\mu", "µ": r"\mu",
-                "π": r"\pi", "ρ": r"\rho", "σ": r"\sigma", "τ": r"\tau", "Ω": r"\Omega",
-                "Δ": r"\Delta", "°": r"^{\circ}", "≥": r"\ge", "≤": r"\le", "±": r"\pm",
-                "×": r"\times", "·": r"\cdot", "≈": r"\approx", "→": r"\to"}
-UNICODE_TEXT = {"−": "-", "–": "--", "—": "---", "‘": "`", "’": "'", "“": "``", "”": "''"}
-
-
 def text_escape(text: str) -> str:
-    """Plain text safe in LaTeX text mode (Greek and maths signs as inline maths; other
-    characters outside ASCII dropped to '?', which pdflatex can always set). A line break
-    or tab is a space and any other control character a '?': text from a file never ends
-    a comment or a line that LaTeX reads (the one place user strings meet LaTeX)."""
-    out = []
-    for c in text:
-        if c in "\n\r\t\f\v":
-            out.append(" ")
-        elif ord(c) < 32 or ord(c) == 127:
-            out.append("?")
-        elif c in _TEXT_ESCAPES:
-            out.append(_TEXT_ESCAPES[c])
-        elif c in UNICODE_MATH:
-            out.append(f"${UNICODE_MATH[c]}$")
-        elif c in UNICODE_TEXT:
-            out.append(UNICODE_TEXT[c])
-        elif ord(c) > 127:
-            out.append("?")
-        else:
-            out.append(c)
-    return "".join(out)
+    """Plain text safe in LaTeX text mode: its Unicode maths (``ψ̇``, ``θ₀``, ``√``, ``²``)
+    as inline maths, other characters pdflatex cannot set as '?', a line break or tab a
+    space and any other control character a '?' (`unicode_tex`)."""
+    from .unicode_tex import text_tex
+
+    return text_tex(text)
 
 
 # ---- symbols ----------------------------------------------------------------
