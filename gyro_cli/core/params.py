@@ -171,7 +171,8 @@ _PHRASES = (
     ("anti_clockwise", "counterclockwise"), ("anticlockwise", "counterclockwise"),
     ("counter_clockwise", "counterclockwise"), ("ccw", "counterclockwise"),
     ("_when_seen_from_", "_from_"), ("_when_viewed_from_", "_from_"),
-    ("_as_seen_from_", "_from_"), ("_seen_from_", "_from_"), ("_viewed_from_", "_from_"),
+    ("_as_seen_from_", "_from_"), ("_as_viewed_from_", "_from_"), ("_seen_from_", "_from_"),
+    ("_viewed_from_", "_from_"),
     ("_looking_from_", "_from_"), ("_from_the_", "_from_"),
 )
 
