@@ -142,8 +142,6 @@ NOSE_WORDS = (("nose_rising", "rising"), ("pulling_up", "rising"), ("pull_up", "
               ("nose_up", "rising"), ("nose_falling", "falling"), ("nose_down", "falling"),
               ("pushing_over", "falling"), ("push_over", "falling"),
               ("outside_loop", "falling"))
-MOTION_WORDS = (("turning", "turn"), ("looping", "loop"), ("pull_out", "loop"),
-                ("pulling_out", "loop"))
 
 
 KIND = Kind(
@@ -162,8 +160,7 @@ KIND = Kind(
         Param("turn_radius", "length", "R", "radius of the turn", positive=True),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
         Param("motion", "word", "motion", "turn (default: a horizontal turn) or loop (a loop "
-              "or a pull-out from a dive, on a vertical circle)", choices=("turn", "loop"),
-              words=MOTION_WORDS),
+              "or a pull-out from a dive, on a vertical circle)", choices=("turn", "loop")),
         Param("loop_radius", "length", "R", "loop: radius of the vertical circle",
               positive=True),
         Param("nose", "word", "nose", "loop: the nose rising (default: an inside loop, pulling "
