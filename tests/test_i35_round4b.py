@@ -333,7 +333,124 @@ def test_item10_turbine_rotor_pitching_8t_by_hand(problems_dir):
     path = problems_dir / "ship_pitching_8t_total_12deg.yaml"
     assert si(path, "couple")[0] == pytest.approx(C, rel=1e-12)
     # bow rising, clockwise from the stern (H forward): H(t) = R(-y, q t) H0
-    H = lambda t: rot(-Y, 0.03 * t) @ X  # noqa: E731
+    def H(t: float) -> np.ndarray:
+        return rot(-Y, 0.03 * t) @ X
+
     reactive = -ddt(H)
     assert reactive @ Z < 0  # about -z: turns the ship to starboard
     assert answers(path)["effect"].si_values[0] == "turns the ship to starboard"
+
+
+# ---- item 7: signed pairs as books print them, sizes with words -------------------------
+
+# Irodov 1.299's turbine: J = 240 kg m^2 at 1500 rpm, a 250 m curve at 50 km/h, rails 1.5 m
+# apart: M = J omega v / R, shared by the rails as +M / L and -M / L
+IRODOV_RAIL = 240 * 1500 * RPM * (50 / 3.6) / 250 / 1.5     # about 1396 N
+
+
+def rails(tmp_path: Path, expected: str) -> Path:
+    path = tmp_path / "rails.yaml"
+    path.write_text(textwrap.dedent("""\
+        id: rails
+        kind: gyroscopic_torque
+        given: {J: 240 kg*m^2, spin: 1500 rpm, speed: 50 km/h, turn_radius: 250 m,
+                bearing_spacing: 1.5 m}
+        find: {couple_forces: kN}
+        tolerance: 1%
+        """) + f"expected:\n  couple_forces: {expected}\n")
+    return path
+
+
+def test_item07_sizes_with_words_pass_in_any_order(tmp_path):
+    assert IRODOV_RAIL == pytest.approx(1396.3, abs=0.1)
+    size = f"{IRODOV_RAIL / 1000:.4g} kN"
+    for expected in (f"[{size} up at A, {size} down at B]",
+                     f"[{size} down at B, {size} up at A]",       # the book's order
+                     f"[{size} pressed at A, {size} relieved at B]",
+                     f"['{size}, A, upwards', 'B: {size} downwards']"):
+        result = check.check_file(str(rails(tmp_path, expected)))
+        assert result.status == "pass", (expected, [a.message for a in result.answers])
+
+
+def test_item07_words_against_gyro_name_the_convention_not_the_order(tmp_path):
+    size = f"{IRODOV_RAIL / 1000:.4g} kN"
+    result = check.check_file(str(rails(tmp_path, f"[{size} down at A, {size} up at B]")))
+    assert result.status == "fail"
+    for answer in result.answers:
+        assert answer.slip is not None and "the order" not in answer.slip
+        assert "sign convention for couple_forces" in answer.slip
+        assert "upward on the rotor positive" in answer.slip
+    assert "gyro finds it up" in result.answers[0].slip
+
+
+def test_item07_a_plain_size_pair_offers_the_words(tmp_path):
+    size = f"{IRODOV_RAIL / 1000:.4g} kN"
+    result = check.check_file(str(rails(tmp_path, f"[{size}, {size}]")))
+    first, second = result.answers
+    assert first.passed and not second.passed
+    assert "the order" not in second.slip
+    assert "sign convention for couple_forces" in second.slip
+    assert f"`{size} down at B`" in second.slip
+
+
+def test_item07_khurmi_reactions_upwards_and_downwards(problems_dir):
+    # Khurmi Example 14.2, by hand: I = m r^2 / 2, C = I omega omega_p, shares C / x and m g / 2
+    I = 5 * 0.075 ** 2 / 2
+    C = I * 1000 * RPM * 60 * RPM
+    up_A, down_B = C / 0.1 + 5 * 9.81 / 2, C / 0.1 - 5 * 9.81 / 2
+    assert (up_A, down_B) == pytest.approx((117.05, 68.00), abs=0.01)
+    path = problems_dir / "khurmi_disc_bearings_in_words.yaml"
+    assert si(path, "bearing_forces") == pytest.approx([up_A, -down_B], rel=1e-9)
+    result = check.check_file(str(path))
+    assert result.status == "pass"
+    assert [a.expected_si for a in result.answers[:2]] == pytest.approx([116.5, -67.5])
+
+
+def test_item07_wheels_named_by_words_in_any_order(tmp_path, problems_dir):
+    import yaml
+
+    source = problems_dir / "four_wheeler_trolley_2700kg.yaml"
+    data = yaml.safe_load(source.read_text())
+    outer, inner = data["expected"]["wheel_reactions"]
+    data["expected"]["wheel_reactions"] = [f"{inner} inner", f"{outer} outer"]
+    path = tmp_path / "w.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    assert check.check_file(str(path)).status == "pass"
+    data["expected"]["wheel_reactions"] = [f"{inner} outer", f"{outer} inner"]
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    result = check.check_file(str(path))
+    assert result.status == "fail"
+    assert result.answers[0].slip.startswith("the place: ")
+
+
+@pytest.mark.parametrize("expected, words", [
+    ("[1.4 kN up down at A, 1.4 kN at B]", "both signs"),
+    ("[-1.4 kN down at A, 1.4 kN up at B]", "not both"),
+    ("[1.4 kN up at A, 1.4 kN down at A]", "both at A"),
+    ("[1.4 kN up at A, 1.4 kN down]", "of every value"),
+    ("[1.4 kN, outer rail pressed]", "words this answer reads"),
+    ("[1.4 kN sideways at A, 1.4 kN at B]", "words this answer reads"),
+])
+def test_item07_bad_words_are_one_line_exit_2(tmp_path, expected, words):
+    out = CliRunner().invoke(main, ["check", str(rails(tmp_path, expected))])
+    assert out.exit_code == 2, out.output
+    lines = [line for line in out.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and words in lines[0] and "expected.couple_forces" in lines[0], \
+        out.stderr
+
+
+def test_item07_a_place_named_in_part_is_refused(tmp_path, problems_dir):
+    import yaml
+
+    data = yaml.safe_load((problems_dir / "four_wheeler_racing_car_flywheel.yaml").read_text())
+    data["expected"] = {"wheel_loads": ["6310.7 N outer", "3340.2 N inner",
+                                        "6659.8 N outer", "3689.3 N inner"]}
+    path = tmp_path / "car.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    out = CliRunner().invoke(main, ["check", str(path)])
+    assert out.exit_code == 2
+    assert "front outer or rear outer" in out.stderr
+    data["expected"] = {"wheel_loads": ["6310.7 N front outer", "3340.2 N front inner",
+                                        "3689.3 N rear inner", "6659.8 N rear outer"]}
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    assert check.check_file(str(path)).status == "pass"

@@ -162,6 +162,10 @@ class AnswerSpec:
     symbol: str
     doc: str
     words: tuple[str, ...] = ()  # a word answer's possible values (a bank's choices)
+    # a signed pair as books print it, a size with words: its places in order (A, B) and
+    # the words that sign a size (("up", 1), ("down", -1)); `gyro check` reads both
+    sides: tuple[str, ...] = ()
+    signs: tuple[tuple[str, int], ...] = ()
 
 
 # ---- words as books write them ------------------------------------------------

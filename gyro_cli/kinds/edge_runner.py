@@ -31,13 +31,14 @@ _SETUP = ("Each roller turns freely on a horizontal axle hinged to the vertical 
           "the pan at the path radius ", R0, " from the shaft's axis (its own radius is ", r0,
           "). The hinge pin carries the roller's centripetal force; the pan pushes only "
           "upward, with ", N0, ".")
-_SPIN = ("rolling without slipping: the contact point is at rest, so the roller's rim "
-         "speed equals the speed of its centre, ", rel(names("omega")[0] * r0, "=", Om0 * R0))
+_SPIN = ("rolling without slipping: the contact point is at rest, so the roller's spin ",
+         names("omega")[0], " makes its rim speed equal to the speed of its centre, ",
+         rel(names("omega")[0] * r0, "=", Om0 * R0))
 _TURNS = (H0, ", the roller's spin angular momentum, lies along the axle and turns with the "
           "shaft at ", Om0, " about the vertical: it changes at the rate of the couple below, "
           "about the horizontal axis across the axle")
 _MOMENTS = ("moments about the hinge ", O0, " (the pin gives none about the axis across the "
-            "axle): ", rel((N0 - W0) * R0, "=", C0), ". The couple presses the roller down on "
+            "axle), with ", W0, " the roller's weight: ", rel((N0 - W0) * R0, "=", C0), ". The couple presses the roller down on "
             "the pan whichever way the shaft turns.")
 
 
@@ -51,7 +52,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              "path_radius (shaft axis to the roller's line of contact)",
                              key=f"given.{key}")
     Omega, R = given["shaft_speed"], given["path_radius"]
-    n = given["rollers"]
+    n = given["rollers"] if "rollers" in given else 1
     mill = P.edge_runner(J, r, R, Omega)
     if not (math.isfinite(mill.couple) and math.isfinite(mill.extra_pressure)):
         raise InputError("these data are outside what gyro can compute reliably in double "
@@ -110,8 +111,9 @@ KIND = Kind(
               "rollers round (the precession)", positive=True),
         Param("path_radius", "length", "R", "radius of the roller's path: the vertical shaft's "
               "axis to the roller's line of contact on the pan (its mid-plane)", positive=True),
-        Param("rollers", "dimensionless", "n", "number of rollers, for total_pan_force",
-              default="1", positive=True, whole=True),
+        Param("rollers", "dimensionless", "n", "number of rollers, for total_pan_force (one if "
+              "absent)", range=(1.0, math.inf), bounds="[)", whole=True,
+              reason="rollers is a count (1, 2, ...)"),
     ),
     answers=(
         AnswerSpec("roller_spin", "rate", "omega", "the roller's spin about its axle, "
