@@ -86,8 +86,9 @@ def parse_expected(raw: Any, dimension: str | None, key: str, sides: tuple[str, 
 
 
 # words that only join the others: "1.4 kN, outer rail pressed", "116.5 N upwards at A"
-_FILLERS = frozenset("a an at on of the is and bearing bearings rail rails wheel wheels each "
-                     "side end force reaction load axle pair".split())
+_FILLERS = frozenset(("a", "an", "at", "on", "of", "the", "is", "and", "bearing", "bearings",
+                      "rail", "rails", "wheel", "wheels", "each", "side", "end", "force",
+                      "reaction", "load", "axle", "pair"))
 _TOKENS = re.compile(r"[^\s,;:()]+")
 
 

@@ -16,10 +16,10 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Sym
+from ..core.given import Given
 from ..core.prose import names, q, rel
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work
 from ..physics import edge_runner as P
 
@@ -44,8 +44,10 @@ _MOMENTS = ("moments about the hinge ", O0, " (the pin gives none about the axis
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
+    assert body is not None  # the kind has body keys: the loader builds it
     body.require("J", "radius")
     J, r = body.J, body.radius
+    assert J is not None and r is not None  # required above
     for key in ("shaft_speed", "path_radius"):
         if key not in given:
             raise InputError("the mill needs shaft_speed (the vertical shaft's speed) and "
@@ -67,33 +69,37 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "precession")
     work.text(*_SPIN)
     Om_, R_, r_ = Sym("Omega", Omega, "rad/s"), Sym("R", R, "m"), Sym("r", r, "m")
-    omega = work.step("omega", Om_ * R_ / r_, unit="rad/s", note="the roller's spin")
+    omega = mill.roller_spin
+    work.step("omega", Om_ * R_ / r_, unit="rad/s", note="the roller's spin")
     work.answer("roller_spin", "omega", [omega], "rate")
 
     work.section("Gyroscopic couple")
     work.text(*_TURNS)
-    C = work.step("C", Sym("J", J, "kg m^2") * Sym("omega", omega, "rad/s") * Om_, unit="N*m",
-                  ref="Eq. 11.29")
+    C = mill.couple
+    work.step("C", Sym("J", J, "kg m^2") * Sym("omega", omega, "rad/s") * Om_, unit="N*m",
+              ref="Eq. 11.29")
     work.answer("couple", "C", [C], "moment")
 
     work.section("Pressure on the pan")
     work.text(*_MOMENTS)
-    extra = work.step("P", Sym("C", C, "N m") / R_, unit="N",
-                      note="the couple's share of the pressure on the pan")
+    extra = mill.extra_pressure
+    work.step("P", Sym("C", C, "N m") / R_, unit="N",
+              note="the couple's share of the pressure on the pan")
     work.answer("extra_pressure", "P", [extra], "force")
     work.check(rel(P0, "=", q(extra, "N"), "=", J0 * Om0 ** 2 / r0, "=",
                    q(J * Omega * Omega / r, "N")))
     if {"pan_force", "total_pan_force"} & find:
-        W = work.step("W", Sym("m", body.m, "kg") * Sym("g", body.g, "m/s^2"), unit="N",
-                      note="the roller's weight")
-        N = work.step("N", Sym("W", W, "N") + Sym("P", extra, "N"), unit="N",
-                      note="the pan's force on each roller, and the roller's on the pan")
-        work.answer("pan_force", "N", [P.pan_force(W, extra)], "force")
+        W = body.weight
+        N = P.pan_force(W, extra)
+        work.step("W", Sym("m", body.m, "kg") * Sym("g", body.g, "m/s^2"), unit="N",
+                  note="the roller's weight")
+        work.step("N", Sym("W", W, "N") + Sym("P", extra, "N"), unit="N",
+                  note="the pan's force on each roller, and the roller's on the pan")
+        work.answer("pan_force", "N", [N], "force")
+        total = n * N
         if n != 1:
-            total = work.step("N_total", Sym("n", n) * Sym("N", N, "N"), unit="N",
-                              note=f"the {num_word(n)} rollers together")
-        else:
-            total = N
+            work.step("N_total", Sym("n", n) * Sym("N", N, "N"), unit="N",
+                      note=f"the {num_word(n)} rollers together")
         work.answer("total_pan_force", "N_total", [total], "force")
 
 

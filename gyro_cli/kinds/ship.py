@@ -289,7 +289,7 @@ _STABILISER_AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to por
                     "forward (about ", _PLUS_Y, ") or aft (about ", _MINUS_Y, ").")
 _STABILISER_REACTIVE = (*reactive_couple("ship"), ", here about the fore-and-aft axis: about ",
                         _PLUS_X, " it lifts the port side, about ", _MINUS_X, " the starboard "
-                        "side. (omega_p: the precession of the stabiliser's frame.)")
+                        "side. (", wp0, ": the precession of the stabiliser's frame.)")
 
 
 def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin: float) -> None:
@@ -320,20 +320,7 @@ def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
                   f"{'up, ' if up > 0 else 'down, '}", _PLUS_Z if up > 0 else _MINUS_Z, "; ",
                   rel(H0, "=", qvec(H, "kg m^2/s")))
-    work.section("Precession of the stabiliser's frame")
-    if "precession" in given:
-        if "rolling_couple" in given:
-            raise InputError("give precession, or rolling_couple (the couple to resist, "
-                             "omega_p = M / (J omega)), not both", key="given.rolling_couple")
-        rate = given["precession"]
-        work.step("omega_p", value=rate, unit="rad/s", note="the frame's rate of precession")
-    elif "rolling_couple" in given:
-        rate = work.step("omega_p", Sym("M", given["rolling_couple"], "N m") / (J_ * omega),
-                         unit="rad/s", note="the precession that gives the couple to resist")
-    else:
-        raise InputError("the stabiliser needs its precession (the frame's rate about the "
-                         "athwartship axis), or the rolling_couple it must resist",
-                         key="given.precession")
+    rate = _stabiliser_rate(given, work, J_, omega)
     if top is None and roll is not None and sense is not None:
         top = V.axle_top_against(roll, up)
         work.text(f"to counteract a roll to {roll} the ship needs a couple lifting its {roll} "
@@ -356,16 +343,41 @@ def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin:
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
     if sense and top:
-        active, reactive = V.couple_on_rotor(wp, H), V.reactive_couple(wp, H)
-        work.text("couple on the rotor ", rel(COUPLE, "=", qvec(active, "N m")))
-        work.text("reactive couple on the ship ", rel(_REACTION, "=", qvec(reactive, "N m")))
-        words = V.effect_of(wp, H, "ship")
-        work.text(f"effect on the ship: {words}")
-        work.answer("effect", "effect", [words], None)
-        if roll is not None and (reactive[0] > 0) != (roll == "port"):
-            work.warn(f"with the top of the axle moving {top} the couple adds to the roll to "
-                      f"{roll} instead of counteracting it")
-        work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
+        _stabiliser_effect(wp, H, C, roll, top, work)
+
+
+def _stabiliser_rate(given: Given, work: Work, J_: Sym, omega: Sym) -> float:
+    """The precession of the stabiliser's frame: given, or the one that gives a rolling
+    couple to resist, omega_p = M / (J omega)."""
+    work.section("Precession of the stabiliser's frame")
+    if "precession" in given:
+        if "rolling_couple" in given:
+            raise InputError("give precession, or rolling_couple (the couple to resist, "
+                             "omega_p = M / (J omega)), not both", key="given.rolling_couple")
+        rate: float = given["precession"]
+        work.step("omega_p", value=rate, unit="rad/s", note="the frame's rate of precession")
+        return rate
+    if "rolling_couple" in given:
+        return work.step("omega_p", Sym("M", given["rolling_couple"], "N m") / (J_ * omega),
+                         unit="rad/s", note="the precession that gives the couple to resist")
+    raise InputError("the stabiliser needs its precession (the frame's rate about the "
+                     "athwartship axis), or the rolling_couple it must resist",
+                     key="given.precession")
+
+
+def _stabiliser_effect(wp: V.Vector, H: V.Vector, C: float, roll: str | None, top: str,
+                       work: Work) -> None:
+    """The reactive couple on the hull in words, with a warning where it adds to the roll."""
+    active, reactive = V.couple_on_rotor(wp, H), V.reactive_couple(wp, H)
+    work.text("couple on the rotor ", rel(COUPLE, "=", qvec(active, "N m")))
+    work.text("reactive couple on the ship ", rel(_REACTION, "=", qvec(reactive, "N m")))
+    words = V.effect_of(wp, H, "ship")
+    work.text(f"effect on the ship: {words}")
+    work.answer("effect", "effect", [words], None)
+    if roll is not None and (reactive[0] > 0) != (roll == "port"):
+        work.warn(f"with the top of the axle moving {top} the couple adds to the roll to "
+                  f"{roll} instead of counteracting it")
+    work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
 
 
 # The books' own words (Khurmi, Rattan): other spellings of each choice.
