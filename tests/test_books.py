@@ -294,7 +294,7 @@ def test_the_docs_list_every_spelling_a_kind_accepts():
     assert rows
     listed = set()
     params = {p.name: p for p in BODY_PARAMS}
-    for name in ("directional_gyro", "four_wheeler", "ship", "torque_free"):
+    for name in ("aeroplane", "directional_gyro", "four_wheeler", "ship", "torque_free"):
         params.update({p.name: p for p in get(name).params})
     for key, written, reading in rows:
         for word in re.findall(r"`([^`]+)`", written):

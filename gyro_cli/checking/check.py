@@ -65,8 +65,9 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         if name == "steps" and kind.answer("steps") is None:
             step_values = raw
             continue
-        dimension = kind.answer(name).dimension
-        values = parse_expected(raw, dimension, f"expected.{name}")
+        spec = kind.answer(name)
+        dimension = spec.dimension
+        values = parse_expected(raw, dimension, f"expected.{name}", spec.sides, spec.signs)
         wanted[name] = (values, tolerance_for(problem.tolerance, name, dimension, answer_names))
     if any(name not in problem.find for name in wanted):  # asked for too, in its SI unit
         problem = dataclasses.replace(problem, find=problem.find | {
@@ -79,7 +80,8 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         return result
     for name, (values, tolerance) in wanted.items():
         result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict,
-                                  convention=kind.answer(name).doc)
+                                  convention=kind.answer(name).doc,
+                                  signs=kind.answer(name).signs)
     for symbol, raw in step_values.items():
         result.answers += _compare_step(str(symbol), raw, problem, solved.solution, answer_names)
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"

@@ -121,7 +121,8 @@ def match_in_order(n_expected: int, n_computed: int) -> list[tuple[int | None, i
 
 
 def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
-            strict: bool = True, convention: str = "") -> list[AnswerCheck]:
+            strict: bool = True, convention: str = "",
+            signs: tuple[tuple[str, int], ...] = ()) -> list[AnswerCheck]:
     """Compare the expected values of one answer with its computed values: roots as sets
     (each expected value with its nearest root), an ordered answer (labelled A, B, outer,
     inner, components) position by position.
@@ -129,7 +130,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     With ``strict`` False a computed root that no expected value claims, where
     every expected value found its root, is "not keyed": listed, not failed
     (a book quotes the slow precession and not the fast one). ``convention``: how
-    the kind signs this answer, quoted when an expected value is a computed one's size.
+    the kind signs this answer, quoted when an expected value is a computed one's size;
+    ``signs``, the words that sign its sizes (``up``, ``down``), offered in that case. A
+    value whose words name its place (``1.4 kN down at B``) is compared with that place.
     """
     computed = list(reported.si_values)
     if tolerance.magnitude and reported.si_unit is not None:
@@ -159,7 +162,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         return abs(computed[j] - float(values[i].si)) <= widths_si[i] * (1 + 1e-12) + 1e-300
 
     in_order = ordered(labels)
-    if len(values) == 1 and len(computed) == 1:  # most answers: one value, one root
+    if any(v.side is not None for v in values):  # placed by their words
+        pairs = placed_pairs([v.side for v in values], len(computed))
+    elif len(values) == 1 and len(computed) == 1:  # most answers: one value, one root
         pairs = [(0, 0)]
     elif in_order:
         pairs = match_in_order(len(values), len(computed))
@@ -230,7 +235,8 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                                  f"express in {unit}")
             others = [c for k, c in enumerate(computed) if k != j]
             if _size_only(float(value.si), got_si, width_si):
-                check.slip = _sign_convention(name, value, got, unit, label, tolerance, convention)
+                check.slip = _sign_convention(name, value, got, unit, label, tolerance, convention,
+                                              signs)
                 out.append(check)
                 continue
             check.slip = diagnose(float(value.si), got_si, width_si, others)
@@ -240,6 +246,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                 where = labels[k] if k < len(labels) and labels[k] else f"value {k + 1}"
                 check.slip = (f"the order: {value.text} is the computed {where}; this answer "
                               f"lists {', '.join(labels)} in that order")
+                if value.side is not None:
+                    check.slip = (f"the place: {value.text} is the computed {where}, not the "
+                                  f"{labels[j]} its words name")
             elif check.slip and check.slip.startswith("the other root"):
                 check.slip = _other_root(value, others, width_si, unit)
         out.append(check)
@@ -260,11 +269,33 @@ def _size_only(expected: float, got: float, width: float) -> bool:
         abs(abs(got) - abs(expected)) <= width * (1 + 1e-12)
 
 
+def placed_pairs(sides: list[int | None], n_computed: int) -> list[tuple[int | None, int | None]]:
+    """Pairs for values whose words name their places: each with the computed value at its
+    place, then the places no value names."""
+    out: list[tuple[int | None, int | None]] = [
+        (i, side if side is not None and side < n_computed else None)
+        for i, side in enumerate(sides)]
+    return out + [(None, j) for j in range(n_computed) if j not in sides]
+
+
 def _sign_convention(name: str, value: Expected, got: float, unit: str, label: str,
-                     tolerance: Tolerance, convention: str) -> str:
+                     tolerance: Tolerance, convention: str,
+                     signs: tuple[tuple[str, int], ...] = ()) -> str:
     """The sign slip of a value quoted as a size, naming how gyro signs the answer."""
-    where = f"the computed {label.strip(' ()')}" if label else "the computed value"
-    signs = f"gyro's sign convention for {name}: {convention}; " if convention else ""
+    place = label.strip(" ()")
+    where = f"the computed {place}" if label else "the computed value"
+    rule = f"gyro's sign convention for {name}: {convention}" if convention else ""
+    if value.sign:  # the book's words give the sign: they and gyro disagree
+        word = next((w for w, s in signs if s == (1 if got > 0 else -1)), "")
+        return (f"the sign: {value.text} is the size of {where}, but gyro finds it "
+                f"{word + ' ' if word else ''}({num(got)} {unit}".rstrip() + ")" +
+                (f"; {rule}" if rule else "") + "; is the book's place or sense the other one?")
+    in_words = ""
+    word = next((w for w, s in signs if s == (1 if got > 0 else -1)), "")
+    if word:
+        at = f" at {place}" if place else ""
+        in_words = f", or write it with its word, `{num(abs(got))} {unit} {word}{at}`"
     return (f"the sign: got is minus the expected value: {value.text} is the size of {where}, "
-            f"{num(got)} {unit}".rstrip() + f"; {signs}write the signed value, or compare "
-            f"sizes with `tolerance: {tolerance.text} magnitude`")
+            f"{num(got)} {unit}".rstrip() + (f"; {rule}; " if rule else "; ") +
+            f"write the signed value{in_words}, or compare sizes with "
+            f"`tolerance: {tolerance.text} magnitude`")

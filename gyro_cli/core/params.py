@@ -162,6 +162,10 @@ class AnswerSpec:
     symbol: str
     doc: str
     words: tuple[str, ...] = ()  # a word answer's possible values (a bank's choices)
+    # a signed pair as books print it, a size with words: its places in order (A, B) and
+    # the words that sign a size (("up", 1), ("down", -1)); `gyro check` reads both
+    sides: tuple[str, ...] = ()
+    signs: tuple[tuple[str, int], ...] = ()
 
 
 # ---- words as books write them ------------------------------------------------
@@ -171,7 +175,8 @@ _PHRASES = (
     ("anti_clockwise", "counterclockwise"), ("anticlockwise", "counterclockwise"),
     ("counter_clockwise", "counterclockwise"), ("ccw", "counterclockwise"),
     ("_when_seen_from_", "_from_"), ("_when_viewed_from_", "_from_"),
-    ("_as_seen_from_", "_from_"), ("_seen_from_", "_from_"), ("_viewed_from_", "_from_"),
+    ("_as_seen_from_", "_from_"), ("_as_viewed_from_", "_from_"), ("_seen_from_", "_from_"),
+    ("_viewed_from_", "_from_"),
     ("_looking_from_", "_from_"), ("_from_the_", "_from_"),
 )
 

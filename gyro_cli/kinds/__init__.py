@@ -31,6 +31,7 @@ REGISTRY: dict[str, str] = {
     "gyrocompass": "gyro_cli.kinds.gyrocompass",
     "rate_gyro": "gyro_cli.kinds.rate_gyro",
     "directional_gyro": "gyro_cli.kinds.directional_gyro",
+    "edge_runner": "gyro_cli.kinds.edge_runner",
 }
 
 # In the format but not built yet: named plainly rather than "unknown".

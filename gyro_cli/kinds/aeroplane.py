@@ -35,7 +35,7 @@ _AXES = ("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left
          "clockwise to an observer has its vector pointing away from the observer "
          "(right-hand rule).")
 _REACTIVE = (*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
-             plus(y), " it dips it.")
+             plus(y), " it dips it; about ", plus(z), " it turns the nose to the left.")
 _FORWARD, _AFT = plus(x), -x
 _COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", COUPLE))
 _REACTION, _SIZE = -paren(COUPLE), absolute(COUPLE)
@@ -45,16 +45,19 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J")
     J = body.J
-    for key in ("spin", "speed", "turn_radius"):
+    motion = given.word("motion", "turn")
+    _refuse_foreign(given, motion)
+    radius_key = "loop_radius" if motion == "loop" else "turn_radius"
+    for key in ("spin", "speed", radius_key):
         if key not in given:
-            raise InputError("the aeroplane needs spin (engine speed), speed and turn_radius",
-                             key=f"given.{key}")
-    spin, v, R = given["spin"], given["speed"], given["turn_radius"]
+            raise InputError(f"the aeroplane needs spin (engine speed), speed and {radius_key}"
+                             + (" (the loop's radius: motion is loop)" if motion == "loop"
+                                else ""), key=f"given.{key}")
+    spin, v, R = given["spin"], given["speed"], given[radius_key]
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:
         raise InputError("the effect needs the engine's sense: rotor_sense, one of "
                          f"{', '.join(V.AEROPLANE_SENSES)}", key="given.rotor_sense")
-    turn = given.word("turn", "left")
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_AXES)
@@ -72,11 +75,15 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                   f"{'forward (toward the nose), ' if direction > 0 else 'aft (toward the tail), '}",
                   _FORWARD if direction > 0 else _AFT, "; ", rel(H0, "=", qvec(H, "kg m^2/s")))
 
-    work.section("Turn: precession about the vertical")
-    rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
-    wp = V.steering_precession(v, R, turn)
-    work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} seen "
-              "from above): ", rel(wp0, "=", qvec(wp, "rad/s")))
+    if motion == "loop":
+        wp, rate = _loop(given, v, R, work)
+    else:
+        turn = given.word("turn", "left")
+        work.section("Turn: precession about the vertical")
+        rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
+        wp = V.steering_precession(v, R, turn)
+        work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
+                  "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")))
 
     work.section(*_COUPLE_TITLE)
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
@@ -97,6 +104,46 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
 
 
+def _loop(given: Given, v: float, R: float, work: Work) -> tuple[V.Vector, float]:
+    """A loop (or a pull-out from a dive) on a vertical circle: the aeroplane pitches at v / R
+    about its own lateral axis, nose rising (an inside loop) unless ``nose`` says falling."""
+    nose = given.word("nose")
+    work.section("Loop: precession about the lateral axis")
+    rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s",
+                     note="the rate of pitch on the vertical circle")
+    if nose is None:
+        nose = "rising"
+        work.text("nose not given: an inside loop (pulling up, or out of a dive), the nose rising "
+                  "about the aeroplane's own lateral axis all the way round")
+    work.text("in a loop the precession is this pitching, about the aeroplane's lateral axis ",
+              y, ", not about the vertical")
+    wp = V.pitching_precession(rate, nose)
+    rising = nose == "rising"
+    work.text(f"nose {nose}: the rotation carries ", x, " toward ", plus(z) if rising else -z,
+              ", a rotation about ", -y if rising else plus(y), ": ",
+              rel(wp0, "=", qvec(wp, "rad/s")))
+    return wp, rate
+
+
+#: the motion each motion's own key belongs to (_refuse_foreign)
+_MOTION_OF_KEY = {"turn_radius": "turn", "turn": "turn", "loop_radius": "loop", "nose": "loop"}
+
+
+def _refuse_foreign(given: Given, motion: str) -> None:
+    """Keys of the other motion are refused rather than silently ignored."""
+    for key, owner in _MOTION_OF_KEY.items():
+        if key in given and owner != motion:
+            raise InputError(f"{key} belongs to `motion: {owner}`, but motion is {motion}",
+                             key=f"given.{key}")
+
+
+NOSE_WORDS = (("nose_rising", "rising"), ("pulling_up", "rising"), ("pull_up", "rising"),
+              ("pulling_out_of_a_dive", "rising"), ("inside_loop", "rising"),
+              ("nose_up", "rising"), ("nose_falling", "falling"), ("nose_down", "falling"),
+              ("pushing_over", "falling"), ("push_over", "falling"),
+              ("outside_loop", "falling"))
+
+
 KIND = Kind(
     name="aeroplane",
     summary="an aeroplane's engine and propeller on a turn: gyroscopic couple and whether it "
@@ -112,12 +159,20 @@ KIND = Kind(
               reason="the aeroplane flies forward"),
         Param("turn_radius", "length", "R", "radius of the turn", positive=True),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
+        Param("motion", "word", "motion", "turn (default: a horizontal turn) or loop (a loop "
+              "or a pull-out from a dive, on a vertical circle)", choices=("turn", "loop")),
+        Param("loop_radius", "length", "R", "loop: radius of the vertical circle",
+              positive=True),
+        Param("nose", "word", "nose", "loop: the nose rising (default: an inside loop, pulling "
+              "up) or falling (an outside loop, pushing over)", choices=("rising", "falling"),
+              words=NOSE_WORDS),
     ),
     answers=(
         AnswerSpec("couple", "moment", "C", "gyroscopic couple J omega v / R"),
-        AnswerSpec("precession", "rate", "omega_p", "rate of turn v / R"),
+        AnswerSpec("precession", "rate", "omega_p", "rate of turn (or of pitch in a loop) v / R"),
         AnswerSpec("effect", None, "effect", "what the reactive couple does: 'raises the nose "
-                   "and dips the tail' or 'dips the nose and raises the tail'",
+                   "and dips the tail' or 'dips the nose and raises the tail' on a turn; "
+                   "'turns the nose to the right' or 'to the left' in a loop",
                    words=V.EFFECT_WORDS["aeroplane"]),
     ),
     solve=solve,

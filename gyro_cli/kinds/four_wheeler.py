@@ -545,15 +545,17 @@ KIND = Kind(
     ) + vehicle_params('wheel', 'axle', 'engine'),
     answers=(
         AnswerSpec("wheel_reactions", "force", "R", "[outer, inner]: vertical reaction on each "
-                   "outer and each inner wheel"),
+                   "outer and each inner wheel", sides=("outer", "inner")),
         AnswerSpec("gyroscopic_couple", "moment", "C_g", "(sum I_w +- G sum I_E) v^2 / (R r_w), "
                    "positive overturning outward"),
         AnswerSpec("centrifugal_couple", "moment", "C_c", "m v^2 h / R"),
         AnswerSpec("limiting_speed", "speed", "v_lim", "speed at which the inner wheels leave "
                    "the road"),
         AnswerSpec("wheel_loads", "force", "P", "[front outer, front inner, rear outer, rear "
-                   "inner]: the track's force on each wheel, normal to the track"),
-        AnswerSpec("axle_loads", "force", "F", "[front, rear]: the load on each axle"),
+                   "inner]: the track's force on each wheel, normal to the track",
+                   sides=("front outer", "front inner", "rear outer", "rear inner")),
+        AnswerSpec("axle_loads", "force", "F", "[front, rear]: the load on each axle",
+                   sides=("front", "rear")),
         AnswerSpec("pitch_couple", "moment", "C_p", "the engine along the car: its couple "
                    "about the axis across, positive loading the front wheels"),
     ),

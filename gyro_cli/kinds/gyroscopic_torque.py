@@ -658,6 +658,10 @@ def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
                    q(abs(M), "N m")))
 
 
+#: the words that sign a bearing's force as books print it: "116.5 N upwards at A"
+UP_DOWN = (("up", 1), ("upward", 1), ("upwards", 1), ("down", -1), ("downward", -1),
+           ("downwards", -1))
+
 KIND = Kind(
     name="gyroscopic_torque",
     summary="moment and bearing forces of a rotor carried by a turning frame (gyroscope, turbine "
@@ -712,15 +716,19 @@ KIND = Kind(
         AnswerSpec("precession", "rate", "Omega", "precession rate (given, v / R, or sustained by "
                    "a given moment)"),
         AnswerSpec("bearing_forces", "force", "F", "[A, B]: forces of the bearings on the rotor "
-                   "perpendicular to k in the plane of K and k, upward positive"),
+                   "perpendicular to k in the plane of K and k, upward positive",
+                   sides=("A", "B"), signs=UP_DOWN),
         AnswerSpec("bearing_side_forces", "force", "F_side", "[A, B]: along the line of nodes, "
-                   "toward the precession axis positive"),
+                   "toward the precession axis positive", sides=("A", "B"),
+                   signs=(("inward", 1), ("inwards", 1), ("outward", -1), ("outwards", -1))),
         AnswerSpec("bearing_loads", "force", "|F|", "[A, B]: magnitudes of the radial bearing "
-                   "forces"),
+                   "forces", sides=("A", "B")),
         AnswerSpec("axial_thrust", "force", "T", "force along the spin axis (A to B) on the "
                    "rotor"),
         AnswerSpec("couple_forces", "force", "F_couple", "[A, B]: the gyroscopic couple's "
-                   "share of the bearing (rail) forces, +M / L and -M / L; needs no mass"),
+                   "share of the bearing (rail) forces, +M / L and -M / L (upward on the rotor "
+                   "positive: that bearing or rail is pressed); needs no mass",
+                   sides=("A", "B"), signs=UP_DOWN + (("pressed", 1), ("relieved", -1))),
         AnswerSpec("counterweight_position", "length", "b", "block positions for the "
                    "precession, ascending (one per spin sense)"),
     ),

@@ -58,6 +58,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     motion = given.word("motion", "steering")
     sense = given.word("rotor_sense")
     _refuse_foreign(given, motion)
+    if motion == "stabilising":
+        _stabilising(given, find, work, J, spin)
+        return
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_AXES)
@@ -241,6 +244,7 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
 
 
 AMPLITUDE_KEYS = ("amplitude", "pitch_amplitude", "pitch_total", "between_extremes")
+STABILISER_KEYS = ("gyro_sense", "precession", "rolling_couple", "axle_top", "roll")
 # the amplitude's limits (the total swing is twice it): the loader refuses a value outside
 _AMPLITUDE = dict(range=(0.0, math.pi / 2), bounds="()",
                   reason="a ship cannot pitch through 90 deg")
@@ -251,7 +255,8 @@ PERIOD_KEYS = ("period", "frequency")
 _MOTION_OF_KEY = {"speed": "steering", "turn_radius": "steering", "turn": "steering",
                   "turn_rate": "steering",
                   "bow": "pitching", "pitch_rate": "pitching", "roll_rate": "rolling",
-                  **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS}}
+                  **{key: "pitching" for key in AMPLITUDE_KEYS + PERIOD_KEYS},
+                  **{key: "stabilising" for key in STABILISER_KEYS}}
 
 
 def _one_of(given: Given, keys: tuple[str, ...], missing: str) -> str:
@@ -278,6 +283,103 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     return wp
 
 
+_STABILISER_AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to port, ", z,
+                    " up. The stabiliser's rotor spins about the vertical; its frame is turned "
+                    "(precessed) about the athwartship axis ", y, ", the top of the axle moving "
+                    "forward (about ", _PLUS_Y, ") or aft (about ", _MINUS_Y, ").")
+_STABILISER_REACTIVE = (*reactive_couple("ship"), ", here about the fore-and-aft axis: about ",
+                        _PLUS_X, " it lifts the port side, about ", _MINUS_X, " the starboard "
+                        "side. (", wp0, ": the precession of the stabiliser's frame.)")
+
+
+def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin: float) -> None:
+    """A ship's stabiliser gyro (Schlick, Sperry): a rotor spinning about the vertical whose
+    frame is precessed about the athwartship axis; the reactive couple rolls the ship."""
+    if "rotor_sense" in given:
+        raise InputError("a stabiliser's rotor spins about the vertical: give its sense as "
+                         f"gyro_sense ({', '.join(V.GYRO_SENSES)}), not rotor_sense",
+                         key="given.rotor_sense")
+    sense, roll, top = given.word("gyro_sense"), given.word("roll"), given.word("axle_top")
+    if sense is None and ({"effect", "axle_top"} & find):
+        raise InputError("the effect and the way to precess need the rotor's sense: "
+                         f"gyro_sense, one of {', '.join(V.GYRO_SENSES)}", key="given.gyro_sense")
+    if "axle_top" in find and roll is None:
+        raise InputError("axle_top as an answer needs `roll`: the roll (to port or to "
+                         "starboard) the stabiliser is to counteract", key="given.roll")
+    work.section("Conventions (Khurmi, Theory of Machines, ch. 14; Meriam, Dynamics, ch. 7)")
+    work.text(*_STABILISER_AXES)
+    work.text(*_STABILISER_REACTIVE)
+    up = V.vertical_spin_direction(sense) if sense else 1.0
+    work.section("Rotor")
+    work.step("J", value=J, unit="kg*m^2", note="the rotor's moment of inertia about its axle")
+    work.step("omega", value=spin, unit="rad/s", note="rotor speed")
+    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
+    Hmag = work.step("H", J_ * omega, unit="kg m^2/s")
+    H = (0.0, 0.0, up * Hmag)
+    if sense:
+        work.text(f"{sense.replace('_', ' ')}: the spin vector points "
+                  f"{'up, ' if up > 0 else 'down, '}", _PLUS_Z if up > 0 else _MINUS_Z, "; ",
+                  rel(H0, "=", qvec(H, "kg m^2/s")))
+    rate = _stabiliser_rate(given, work, J_, omega)
+    if top is None and roll is not None and sense is not None:
+        top = V.axle_top_against(roll, up)
+        work.text(f"to counteract a roll to {roll} the ship needs a couple lifting its {roll} "
+                  "side, about ", _PLUS_X if roll == "port" else _MINUS_X, ": the top of the "
+                  f"axle must move {top}")
+        work.answer("axle_top", "axle_top", [top], None)
+    wp = V.stabiliser_precession(rate, top or "forward")
+    if top:
+        work.text(f"top of the axle moving {top}: ", rel(wp0, "=", qvec(wp, "rad/s")))
+    elif "effect" in find:
+        raise InputError("the effect needs axle_top (forward or aft: which way the top of the "
+                         "rotor's axle moves) or the roll to counteract", key="given.axle_top")
+    work.section(*_COUPLE_TITLE)
+    C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29",
+                  note="with the axle vertical")
+    if not (math.isfinite(C) and math.isfinite(Hmag)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
+    work.answer("couple", "C", [C], "moment")
+    work.answer("precession", "omega_p", [rate], "rate")
+    if sense and top:
+        _stabiliser_effect(wp, H, C, roll, top, work)
+
+
+def _stabiliser_rate(given: Given, work: Work, J_: Sym, omega: Sym) -> float:
+    """The precession of the stabiliser's frame: given, or the one that gives a rolling
+    couple to resist, omega_p = M / (J omega)."""
+    work.section("Precession of the stabiliser's frame")
+    if "precession" in given:
+        if "rolling_couple" in given:
+            raise InputError("give precession, or rolling_couple (the couple to resist, "
+                             "omega_p = M / (J omega)), not both", key="given.rolling_couple")
+        rate: float = given["precession"]
+        work.step("omega_p", value=rate, unit="rad/s", note="the frame's rate of precession")
+        return rate
+    if "rolling_couple" in given:
+        return work.step("omega_p", Sym("M", given["rolling_couple"], "N m") / (J_ * omega),
+                         unit="rad/s", note="the precession that gives the couple to resist")
+    raise InputError("the stabiliser needs its precession (the frame's rate about the "
+                     "athwartship axis), or the rolling_couple it must resist",
+                     key="given.precession")
+
+
+def _stabiliser_effect(wp: V.Vector, H: V.Vector, C: float, roll: str | None, top: str,
+                       work: Work) -> None:
+    """The reactive couple on the hull in words, with a warning where it adds to the roll."""
+    active, reactive = V.couple_on_rotor(wp, H), V.reactive_couple(wp, H)
+    work.text("couple on the rotor ", rel(COUPLE, "=", qvec(active, "N m")))
+    work.text("reactive couple on the ship ", rel(_REACTION, "=", qvec(reactive, "N m")))
+    words = V.effect_of(wp, H, "ship")
+    work.text(f"effect on the ship: {words}")
+    work.answer("effect", "effect", [words], None)
+    if roll is not None and (reactive[0] > 0) != (roll == "port"):
+        work.warn(f"with the top of the axle moving {top} the couple adds to the roll to "
+                  f"{roll} instead of counteracting it")
+    work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
+
+
 # The books' own words (Khurmi, Rattan): other spellings of each choice.
 _ENDS = {"stern": "stern", "aft": "stern", "rear": "stern", "back": "stern", "behind": "stern",
          "astern": "stern", "bow": "bow", "front": "bow", "fore": "bow", "ahead": "bow"}
@@ -291,6 +393,21 @@ BOW_WORDS = (("descending", "falling"), ("going_down", "falling"), ("dipping", "
              ("bow_descending", "falling"), ("bow_falling", "falling"),
              ("bow_ascending", "rising"), ("bow_rising", "rising"))
 
+MOTION_WORDS = (("stabiliser", "stabilising"), ("stabilizer", "stabilising"),
+                ("stabilizing", "stabilising"), ("anti_rolling", "stabilising"))
+GYRO_SENSE_WORDS = tuple((f"{turn}_from_{end}", f"{turn}_from_{choice}")
+                         for turn in ("clockwise", "counterclockwise")
+                         for end, choice in (("top", "above"), ("bottom", "below"),
+                                             ("underneath", "below")))
+AXLE_TOP_WORDS = (("toward_the_bow", "forward"), ("towards_the_bow", "forward"),
+                  ("to_the_bow", "forward"), ("bow", "forward"), ("fore", "forward"),
+                  ("toward_the_stern", "aft"), ("towards_the_stern", "aft"),
+                  ("to_the_stern", "aft"), ("stern", "aft"), ("astern", "aft"),
+                  ("backward", "aft"))
+ROLL_WORDS = (("to_port", "port"), ("to_the_left", "port"), ("left", "port"),
+              ("to_starboard", "starboard"), ("to_the_right", "starboard"),
+              ("right", "starboard"))
+
 KIND = Kind(
     name="ship",
     summary="a ship's fore-and-aft turbine rotor: gyroscopic couple and its effect in steering, "
@@ -302,8 +419,9 @@ KIND = Kind(
               "in rotor_sense (e.g. clockwise_from_stern)"),
         Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
               choices=V.SHIP_SENSES, words=SENSE_WORDS),
-        Param("motion", "word", "motion", "steering (default), pitching or rolling",
-              choices=("steering", "pitching", "rolling")),
+        Param("motion", "word", "motion", "steering (default), pitching, rolling, or "
+              "stabilising (a stabiliser gyro spinning about the vertical)",
+              choices=("steering", "pitching", "rolling", "stabilising"), words=MOTION_WORDS),
         Param("speed", "speed", "v", "ship's speed (steering)", nonnegative=True,
               reason="the ship goes ahead"),
         Param("turn_radius", "length", "R", "radius of the turn (steering)", positive=True),
@@ -330,6 +448,17 @@ KIND = Kind(
               choices=("rising", "falling"), words=BOW_WORDS),
         Param("roll_rate", "rate", "omega_r", "rolling: the rolling rate (the couple is zero "
               "whatever it is)"),
+        Param("gyro_sense", "word", "sense", "stabilising: the rotor's sense seen from above "
+              "or below", choices=V.GYRO_SENSES, words=GYRO_SENSE_WORDS),
+        Param("precession", "rate", "omega_p", "stabilising: the rate at which the rotor's "
+              "frame is precessed about the athwartship axis", positive=True),
+        Param("rolling_couple", "moment", "M", "stabilising: instead of precession, the "
+              "rolling couple to resist (omega_p = M / (J omega))", positive=True),
+        Param("axle_top", "word", "axle_top", "stabilising: which way the top of the rotor's "
+              "axle moves, forward (toward the bow) or aft", choices=("forward", "aft"),
+              words=AXLE_TOP_WORDS),
+        Param("roll", "word", "roll", "stabilising: the roll to counteract, to port or to "
+              "starboard (finds axle_top)", choices=("port", "starboard"), words=ROLL_WORDS),
     ),
     answers=(
         AnswerSpec("couple", "moment", "C", "gyroscopic couple J omega omega_p (the maximum in "
@@ -342,7 +471,11 @@ KIND = Kind(
                    "pitching: largest angular acceleration phi (2 pi / T)^2"),
         AnswerSpec("effect", None, "effect", "what the reactive couple does to the ship: "
                    "'raises the bow and lowers the stern', 'turns the ship to starboard', "
-                   "'none' for rolling, ...", words=V.EFFECT_WORDS["ship"]),
+                   "'none' for rolling, 'lifts the port side and dips the starboard' for a "
+                   "stabiliser, ...", words=V.EFFECT_WORDS["ship"]),
+        AnswerSpec("axle_top", None, "axle_top", "stabilising: which way the top of the "
+                   "rotor's axle must move to counteract the roll: forward or aft",
+                   words=("forward", "aft")),
     ),
     solve=solve,
     extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),

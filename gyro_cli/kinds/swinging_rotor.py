@@ -226,11 +226,12 @@ KIND = Kind(
               range=(0.0, math.pi), bounds="[)"),
     ),
     answers=(
-        AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces"),
+        AnswerSpec("bearing_forces", "force", "|F|", "[A, B]: magnitudes of the bearing forces",
+                   sides=("A", "B")),
         AnswerSpec("bearing_forces_arm", "force", "F_arm", "[A, B]: along the arm, shaft to "
-                   "rotor positive"),
+                   "rotor positive", sides=("A", "B")),
         AnswerSpec("bearing_forces_normal", "force", "F_normal", "[A, B]: perpendicular to the arm "
-                   "and shaft, upper side positive"),
+                   "and shaft, upper side positive", sides=("A", "B")),
         AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
     ),
     solve=solve,

@@ -107,6 +107,37 @@ def rolling_precession(rate: float) -> Vector:
     return scale(rate, FORWARD)
 
 
+# ---- a ship's stabiliser gyro: a rotor spinning about the vertical -----------------
+
+GYRO_SENSES = ("clockwise_from_above", "counterclockwise_from_above",
+               "clockwise_from_below", "counterclockwise_from_below")
+
+
+def vertical_spin_direction(sense: str) -> float:
+    """+1 if a vertical rotor's spin vector points up (+z), -1 if down: clockwise seen
+    from above points away from the observer, down."""
+    turn, _, end = sense.partition("_from_")
+    if turn not in ("clockwise", "counterclockwise") or end not in ("above", "below"):
+        raise ValueError(f"not a vertical rotor's sense: {sense!r}")
+    away = 1.0 if turn == "clockwise" else -1.0
+    return -away if end == "above" else away
+
+
+def stabiliser_precession(rate: float, axle_top: str) -> Vector:
+    """The stabiliser's axle precessed about the athwartship axis y at |rate|: its top moving
+    forward is a rotation about +y (y x z = x), aft about -y."""
+    return scale(abs(rate) if axle_top == "forward" else -abs(rate), LEFT)
+
+
+def axle_top_against(roll: str, spin_up: float) -> str:
+    """Which way the top of the stabiliser's axle must move so that the reactive couple
+    -(omega_p x H) lifts the side the ship rolls toward: about +x for a roll to port.
+
+    omega_p = s q y, H = h z: -(omega_p x H) = -s q h x, so s = -sign(h) to lift port."""
+    s = -spin_up if roll == "port" else spin_up
+    return "forward" if s > 0 else "aft"
+
+
 def couple_on_rotor(precession: Vector, H: Vector) -> Vector:
     """The active gyroscopic couple C = omega_p x H (Eq. 11.29 in vector form)."""
     return cross(precession, H)
@@ -125,7 +156,9 @@ ENDS = {"ship": ("bow", "stern"), "aeroplane": ("nose", "tail")}
 #: every single effect `effect` names, per vehicle (a question bank's choices)
 EFFECT_WORDS = {
     "ship": ("raises the bow and lowers the stern", "lowers the bow and raises the stern",
-             "turns the ship to port", "turns the ship to starboard", "none"),
+             "turns the ship to port", "turns the ship to starboard", "none",
+             "lifts the port side and dips the starboard",
+             "lifts the starboard side and dips the port"),
     "aeroplane": ("raises the nose and dips the tail", "dips the nose and raises the tail",
                   "turns the nose to the left", "turns the nose to the right")}
 
