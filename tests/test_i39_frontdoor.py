@@ -75,7 +75,7 @@ def _dependencies_dir(target: Path) -> Path:
 
 
 def _run(args: list[Any], **kwargs: Any) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([str(a) for a in args], capture_output=True, text=True, timeout=600,
+    return subprocess.run([str(a) for a in args], check=False, capture_output=True, text=True, timeout=600,
                           **kwargs)
 
 
@@ -115,7 +115,7 @@ def test_item2_docs_site_builds_strict_offline_with_api_reference(tmp_path: Path
     assert "InputError" in reference and "YAML text" in reference
     # offline: no script, stylesheet, font or import fetched from another site
     remote = re.compile(r"""<(?:script|img|iframe)[^>]*\ssrc=["']?(?:https?:)?//|<link[^>]*\shref=["']?(?:https?:)?//"""
-                        r"""|url\(\s*["']?(?:https?:)?//|@import\s+(?:url\()?["']?(?:https?:)?//""", re.I)
+                        r"""|url\(\s*["']?(?:https?:)?//|@import\s+(?:url\()?["']?(?:https?:)?//""", re.IGNORECASE)
     for path in site.rglob("*"):
         if path.suffix in (".html", ".css", ".js") and "examples" not in path.parts:
             found = remote.search(path.read_text(errors="replace"))
@@ -140,7 +140,7 @@ def test_item2_broken_link_or_anchor_fails_the_build(tmp_path: Path) -> None:
 
 def test_item2_make_docs_target() -> None:
     makefile = (ROOT / "Makefile").read_text()
-    assert re.search(r"^docs: \$\(STAMP\)\n\t\$\(BIN\)/mkdocs build --strict", makefile, re.M)
+    assert re.search(r"^docs: \$\(STAMP\)\n\t\$\(BIN\)/mkdocs build --strict", makefile, re.MULTILINE)
     assert "make docs" in makefile.split("PYTHON ?=")[0]  # the header says what it does
     extras = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["optional-dependencies"]
     for extra in ("docs", "dev"):
@@ -213,12 +213,12 @@ def test_item3_version_from_one_place_and_changelog() -> None:
 
     changelog = (ROOT / "CHANGELOG.md").read_text()
     assert changelog.startswith("# Changelog\n") and "keepachangelog.com" in changelog
-    headings = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - (\d{4}-\d\d-\d\d|Unreleased)$", changelog, re.M)
+    headings = re.findall(r"^## \[(\d+\.\d+\.\d+)\] - (\d{4}-\d\d-\d\d|Unreleased)$", changelog, re.MULTILINE)
     assert headings and headings[0][0] == version, headings
     versions = [tuple(int(p) for p in v.split(".")) for v, _ in headings]
     assert versions == sorted(versions, reverse=True) and len(set(versions)) == len(versions)
-    for section in re.split(r"^## ", changelog, flags=re.M)[1:]:
-        assert re.search(r"^### (Added|Changed|Fixed|Removed|Deprecated|Security)$", section, re.M), section[:80]
+    for section in re.split(r"^## ", changelog, flags=re.MULTILINE)[1:]:
+        assert re.search(r"^### (Added|Changed|Fixed|Removed|Deprecated|Security)$", section, re.MULTILINE), section[:80]
 
 
 def test_item3_version_costs_no_metadata_import(tmp_path: Path) -> None:
