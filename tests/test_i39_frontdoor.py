@@ -154,6 +154,7 @@ def test_item2_make_docs_target() -> None:
 
 # ---- item 3: a package that installs alone --------------------------------------------
 
+@pytest.mark.slow
 def test_item3_sdist_and_wheel_build_pass_twine_and_install_alone(tmp_path: Path) -> None:
     _need_module("build")
     _need_module("twine")
@@ -266,6 +267,7 @@ def _course_repo(path: Path) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_item4_pre_commit_hook_passes_right_key_and_fails_wrong(tmp_path: Path) -> None:
     _need_module("pre_commit")
     hooks = yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())
