@@ -208,6 +208,13 @@ def test_item3_sdist_and_wheel_build_pass_twine_and_install_alone(tmp_path: Path
     assert "steady_precession" in run("kinds")
     assert '"$schema"' in run("schema")
     assert "kind: steady_precession" in run("new", "steady_precession")
+    # the course layer: variants, a question bank, a report page
+    run("vary", "11_3.yaml", "--count", "2", "--seed", "1", "-o", "variants")
+    assert sorted(p.name for p in (work / "variants").iterdir()) == ["11_3-v01.yaml", "11_3-v02.yaml"]
+    run("export", "--to", "qti", "11_3.yaml", "-o", "bank.zip")
+    assert zipfile.ZipFile(work / "bank.zip").namelist()
+    run("check", "11_3.yaml", "--html", "report.html")
+    assert (work / "report.html").read_text().startswith("<!DOCTYPE html>")
     assert (Path(where).parent / "py.typed").is_file()
 
 
