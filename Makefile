@@ -8,6 +8,9 @@
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
 #   make fuzz   mutate the bundled problems for MINUTES (default 5), in-process
 #   make examples  the example pages docs/examples/*.html (gyro solve --format html)
+#   make docs   the documentation site: docs/ built into site/ by MkDocs in strict mode,
+#               offline (any warning, a broken link or anchor, fails); open site/index.html
+#   make dist   the sdist and wheel in dist/ (python -m build), checked by twine
 #   make environment  pipes, signals, read-only HOME, FIFOs (docs/exit_codes.md): no root,
 #               run in a temporary folder that is removed afterwards
 PYTHON ?= python3
@@ -15,7 +18,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test props check bench handout fuzz examples environment clean
+.PHONY: demo test props check bench handout fuzz examples docs dist environment clean
 
 MINUTES ?= 5
 EXAMPLES ?= 10
@@ -62,6 +65,14 @@ examples: $(STAMP)
 	$(BIN)/gyro solve --format html problems/11_3.yaml > docs/examples/11_3.html
 	$(BIN)/gyro solve --format html problems/11_2_released_top.yaml > docs/examples/11_2_released_top.html
 
+docs: $(STAMP)
+	$(BIN)/mkdocs build --strict --site-dir site
+
+dist: $(STAMP)
+	rm -rf dist
+	$(BIN)/python -m build --outdir dist .
+	$(BIN)/twine check --strict dist/*
+
 fuzz: $(STAMP)
 	nice $(BIN)/python fuzz/fuzz.py --minutes $(MINUTES)
 
@@ -72,4 +83,4 @@ environment: $(STAMP)
 	rm -rf $$tmp; exit $$status
 
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache handout.tex handout.aux handout.log handout.pdf
+	rm -rf $(VENV) build dist site *.egg-info .pytest_cache handout.tex handout.aux handout.log handout.pdf

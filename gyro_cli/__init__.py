@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from importlib import import_module
 
-__version__ = "0.1.0"
+__version__ = "0.5.0"
 
 __all__ = ["solve", "solve_file", "check", "check_files", "kinds", "sweep", "load", "registry", "Result",
            "Answer", "CheckReport", "Sweep", "InputError", "__version__"]
