@@ -34,6 +34,7 @@ from typing import Any
 from . import check
 from .expected import parse_value
 from .copies import Match, VariantIndex, whose
+from .ecf import check_steps
 from .matching import compare, diagnose
 from .tolerance import tolerance_for
 from ..core.errors import InputError
@@ -311,20 +312,24 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             raise InputError(f"problem {s.problem!r} (student {s.student!r}) is not among the "
                              f"problem files given (ids: {', '.join(sorted(problems)) or 'none'})",
                              file=sheet, line=s.line)
-        if problem.kind.answer(s.answer) is None:
+        if problem.kind.answer(s.answer) is None and s.answer not in problem.steps:
             names = ", ".join(a.name for a in problem.kind.answers)
+            steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
-                             f"{names})", file=sheet, line=s.line)
-        asked.setdefault(s.problem, {})[s.answer] = None
+                             f"{names}{steps})", file=sheet, line=s.line)
+        questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
+        questions[s.answer] = None
     graded = Graded([])
     solved = {}
     for pid, names in asked.items():
         problem = problems[pid]
         find = dict(problem.find)
         for name in names:
-            find.setdefault(name, None)
+            if problem.kind.answer(name) is not None:
+                find.setdefault(name, None)
         try:
             solved[pid] = solve(dataclasses.replace(problem, find=find))
+            check_steps(problem, solved[pid])
         except InputError:
             raise
         except Exception as err:  # a bug: this problem's rows are errors, the rest is graded
@@ -337,6 +342,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
     by_key = {(s.student, s.problem, s.answer): s for s in submissions}
     for student in students:
         total = 0.0
+        carrying = Carrying(credit)
         for pid, name in items:
             submission = by_key.get((student, pid, name))
             values = submission.values if submission else None
@@ -346,8 +352,9 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                                feedback=ERROR_FEEDBACK)
             else:
                 try:
-                    row = grade_item(student, problems[pid], name, solved[pid].answers[name],
+                    row = grade_item(student, problems[pid], name, reported(solved[pid], name),
                                      values, credit)
+                    carrying.add(pid, problems[pid], solved[pid], name, row, values)
                 except Exception as err:  # a bug: this row is an error, the rest is graded
                     from ..core.errors import internal_message
 
@@ -357,9 +364,84 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                     row = GradeRow(student, pid, name, _submitted(values), "", None, "error",
                                    0.0, note=line, feedback=ERROR_FEEDBACK)
             graded.rows.append(row)
-            total += row.points
+        carrying.carry(graded.errors)
+        total = sum(row.points for row in graded.rows if row.student == student)
         graded.scores[student] = (total, float(len(items)))
     return graded
+
+
+def reported(result: Any, name: str) -> Any:
+    """An answer's values as solved, or a step's (a question of `steps:`)."""
+    answer = result.answers.get(name)
+    if answer is not None:
+        return answer
+    from .ecf import step_reported
+
+    return step_reported(result, name)
+
+
+class Carrying:
+    """A student's graded items, problem by problem, for errors carried forward."""
+
+    def __init__(self, credit: dict[str, float] | None) -> None:
+        from .ecf import policy_share
+
+        self.share = policy_share(credit)
+        self.by_problem: dict[str, tuple[Any, Any, list[Any]]] = {}
+
+    def add(self, key: str, problem: Any, result: Any, name: str, row: GradeRow,
+            values: list[Any] | None) -> None:
+        if self.share is None or not values or not hasattr(result, "solution"):
+            return
+        from .ecf import Item, step_tolerance
+
+        spec = problem.kind.answer(name)
+        if spec is None:
+            dimension = reported(result, name).dimension
+            tolerance = step_tolerance(problem, name, dimension)
+        else:
+            dimension = spec.dimension
+            tolerance = tolerance_for(problem.tolerance, name, dimension,
+                                      [a.name for a in problem.kind.answers])
+        entry = self.by_problem.setdefault(key, (problem, result, []))
+        entry[2].append(Item(name, row, list(values), dimension, tolerance, spec is None))
+
+    def carry(self, errors: list[str]) -> None:
+        """Give each problem's carried credit (a failure here is an internal error of that
+        problem, its rows graded as they were)."""
+        from .ecf import carry
+
+        if self.share is None:
+            return
+        for problem, result, items in self.by_problem.values():
+            if not any(it.row.result in ("wrong", "partial") for it in items):
+                continue
+            slipped = {it.name for it in items if "[credit " in it.row.note}
+            try:
+                carry(items, problem, result, _graph(result), self.share, slipped)
+            except InputError:
+                continue
+            except Exception as err:  # a bug: said, and the rows keep their grades
+                from ..core.errors import internal_message
+
+                line = internal_message(problem.file, err)
+                if line not in errors:
+                    errors.append(line)
+
+
+_GRAPHS: dict[int, tuple[Any, Any]] = {}
+
+
+def _graph(result: Any) -> Any:
+    """The dependency graph of a solved problem, made once per solve."""
+    from ..solving.deps import graph
+
+    cached = _GRAPHS.get(id(result))
+    if cached is None or cached[0] is not result:
+        if len(_GRAPHS) > 256:
+            _GRAPHS.clear()
+        cached = _GRAPHS[id(result)] = (result, graph(result.problem, result))
+    return cached[1]
 
 
 def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
@@ -637,20 +719,27 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     named slips (SLIP_NAMES), e.g. {"2pi": 0.5}; a slip with the sign as well needs both.
     """
     spec = problem.kind.answer(name)
-    names = [a.name for a in problem.kind.answers]
-    tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
+    if spec is None:  # a step of the worked answer asked as a question (`steps:`)
+        from .ecf import step_tolerance
+
+        dimension = reported.dimension
+        tolerance = step_tolerance(problem, name, dimension)
+    else:
+        dimension = spec.dimension
+        names = [a.name for a in problem.kind.answers]
+        tolerance = tolerance_for(problem.tolerance, name, dimension, names)
     correct = _correct_text(reported)
     row = GradeRow(student, problem.id, name, "", correct, None, "missing", 0.0)
     if not values:
         row.note = "no answer submitted"
         return row
     row.submitted = _submitted(values)
-    if spec.dimension is None:
+    if dimension is None:
         return _grade_words(row, values, reported)
     parsed = []
     for value in values:
         try:
-            parsed.append(parse_value(value, spec.dimension, name))
+            parsed.append(parse_value(value, dimension, name))
         except InputError as err:
             row.result, row.note = "invalid", err.message
             row.feedback = err.message
@@ -741,9 +830,10 @@ def parse_credit(text: str) -> dict[str, float]:
             continue
         name, eq, value = part.partition("=")
         name = name.strip().lower()
-        if not eq or name not in SLIP_NAMES:
+        if not eq or (name not in SLIP_NAMES and name != "ecf"):
             raise InputError(f"--credit: expected slip=fraction with a slip among "
-                             f"{', '.join(SLIP_NAMES)}, got {part!r}")
+                             f"{', '.join(SLIP_NAMES)}, or ecf=fraction (errors carried "
+                             f"forward), got {part!r}")
         try:
             share = float(value)
         except ValueError:

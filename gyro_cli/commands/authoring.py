@@ -254,6 +254,9 @@ def schema() -> dict[str, Any]:
             "ask": {"type": "array", "minItems": 1, "items": {"type": "string"},
                     "description": "the answers (of find and expected) the statement asks; "
                                    "a question bank asks only these"},
+            "steps": {"type": "array", "minItems": 1, "items": {"type": ["string", "number"]},
+                      "description": "symbols of worked-answer steps graded as questions "
+                                     "(`gyro solve --format json` lists them)"},
             "units": {"enum": ["si", "us", "SI", "US"],
                       "description": "the worked answer in SI (default) or slug, ft, lbf"},
             "vary": {"type": "object", "description": "for `gyro vary`: given key -> [low, high]"
@@ -556,7 +559,7 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     if solved is not None:
         solved.append(result)
     order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
-             "expected", "tolerance", "ask"]
+             "expected", "tolerance", "ask", "steps"]
     return {k: data[k] for k in order if k in data}
 
 

@@ -21,7 +21,7 @@ from ..core.given import Given
 from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
-            "tolerance", "vary", "units", "ask")
+            "tolerance", "vary", "units", "ask", "steps")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
 _TOP_KEY_SET = frozenset(TOP_KEYS)
@@ -50,6 +50,8 @@ class Problem:
     units: str = "si"  # the worked answer's units: "si", or "us" (slug, ft, lbf)
     statement: str = ""  # as written, with {key} placeholders (core/statement.py)
     ask: list[str] = field(default_factory=list)  # the answers the statement asks ([]: all)
+    #: worked-answer steps graded as questions, by symbol (checked against a solve)
+    steps: list[str] = field(default_factory=list)
 
     def statement_text(self) -> str:
         """The statement with each {key} filled from `given` as written ("" if none)."""
@@ -232,7 +234,21 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         units=_unit_system(data.get("units", "si")),
         statement=_statement(data.get("statement"), data["given"]))
     problem.ask = _ask(data.get("ask"), problem.find, problem.expected)
+    problem.steps = _steps(data.get("steps"))
     return problem
+
+
+def _steps(value: Any) -> list[str]:
+    """``steps``: symbols of worked-answer steps asked as questions (``[m, I, M]``); that
+    each is a step of the worked answer is checked once the problem is solved."""
+    if value is None:
+        return []
+    names = value if isinstance(value, list) else [value]
+    if not names or not all(isinstance(n, (str, int, float)) and not isinstance(n, bool)
+                            and str(n).strip() for n in names):
+        raise InputError(f"expected a list of step symbols of the worked answer, e.g. [m, I, M], "
+                         f"got {shown(value)}", key="steps")
+    return list(dict.fromkeys(str(n).strip() for n in names))
 
 
 def _ask(value: Any, find: dict[str, Any], expected: dict[str, Any]) -> list[str]:

@@ -1,0 +1,241 @@
+"""Steps as questions, and errors carried forward (``--credit ecf=S``).
+
+A problem's ``steps: [m, I]`` are graded like answers, by symbol, against the first step
+of that symbol in the worked answer (`solving.deps.graded_steps`).
+
+Errors carried forward, as an examiner marks: a wrong answer or step earns the share S
+when it is right for the student's own wrong earlier values (the steps and closed
+answers it depends on, `solving.deps`), the problem solved again with those values in
+place of the solver's (`solve(problem, overrides)`), so roots, eigenvalues and
+integrations follow as closed formulas do. The earlier wrong value itself earns nothing.
+
+- the student's value is used as written, and the tolerance widened by what half a unit
+  of its last written digit moves the later answer;
+- no follow-through from a stock value (0, 1), nor from one that barely moves the later
+  answer (the carried answer within the tolerance of the solver's) or leaves it 0;
+- a blank earlier part is not carried (the solver's value is used);
+- a carried value already credited as a named slip earns the later answer its full point
+  (the slip is not penalised twice);
+- a later answer of several roots is compared as a set with the carried roots, so a
+  student who carried one branch is graded on it.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from types import SimpleNamespace
+from typing import Any
+
+from ..core.errors import InputError
+from ..core.work import num
+from .expected import Expected, parse_value
+from .matching import compare
+from .tolerance import Tolerance, tolerance_for
+
+ECF = "ecf"
+
+
+def step_names(result: Any) -> dict[str, tuple[float, str, str]]:
+    from ..solving.deps import graded_steps
+
+    return graded_steps(result.solution)
+
+
+def check_steps(problem: Any, result: Any) -> None:
+    """Every symbol of the problem's ``steps`` is a step of its worked answer (InputError
+    naming the key and the symbols there are)."""
+    if not problem.steps:
+        return
+    known = step_names(result)
+    for symbol in problem.steps:
+        if symbol not in known:
+            from ..solving.problem import suggest
+
+            raise InputError(f"no step of the worked answer is {symbol!r}"
+                             f"{suggest(symbol, list(known))} (steps: {', '.join(known)})",
+                             file=problem.file, line=problem.line("steps"), key="steps")
+
+
+def step_reported(result: Any, symbol: str) -> Any:
+    """A step's value as an answer is reported (SI unit), for grading it as a question."""
+    value, unit, dimension = step_names(result)[symbol]
+    return SimpleNamespace(name=symbol, symbol=symbol, values=[value], unit=unit,
+                           si_values=[value], si_unit=unit, labels=[], dimension=dimension)
+
+
+def step_tolerance(problem: Any, symbol: str, dimension: str) -> Tolerance:
+    """A step's tolerance: the file's (its ``default:`` for a mapping); a file-wide
+    absolute tolerance of another dimension gives way to the default 1%."""
+    spec = problem.tolerance
+    if isinstance(spec, dict):
+        spec = spec.get("default")
+    try:
+        return tolerance_for(spec, symbol, dimension, [])
+    except InputError:
+        return tolerance_for(None, symbol, dimension, [])
+
+
+# ---- errors carried forward --------------------------------------------------
+
+@dataclass
+class Item:
+    """One graded question of a student's problem, as ECF needs it."""
+
+    name: str         # the answer name or step symbol
+    row: Any          # its GradeRow
+    values: list[Any]  # as submitted
+    dimension: str | None
+    tolerance: Tolerance
+    is_step: bool
+
+
+def _written_place(text: str) -> float | None:
+    """Half a unit of the last digit of the number written first in ``text`` (in the
+    number's own unit); None when there is no number."""
+    match = re.match(r"\s*[-+]?(\d*)(?:\.(\d*))?(?:[eE]([-+]?\d+))?", text)
+    if not match or not (match.group(1) or match.group(2)):
+        return None
+    decimals = len(match.group(2) or "")
+    exponent = int(match.group(3) or 0)
+    return 0.5 * 10.0 ** (exponent - decimals)
+
+
+def _stock(value: Expected) -> bool:
+    """A stock answer: 0 or 1 (either sign) as written."""
+    return value.number in (0.0, 1.0, -1.0)
+
+
+def carry(items: list[Item], problem: Any, result: Any, graph: Any, share: float,
+          slipped: set[str]) -> None:
+    """Give each wrong item that follows from the student's own wrong earlier values the
+    ``share`` (notes naming the values carried); ``slipped``: the items whose wrong value
+    was credited as a named slip."""
+    symbol_of = {it.name: (it.name if it.is_step else graph.answer_step.get(it.name))
+                 for it in items}
+    wrong = [it for it in items if it.row.result in ("wrong", "partial") and
+             symbol_of[it.name] is not None and len(it.values) == 1]
+    for item in items:
+        if item.row.result not in ("wrong", "partial") or item.dimension is None:
+            continue
+        key = item.name if item.is_step else f"answer:{item.name}"
+        depends = set(graph.depends.get(key, []))
+        sources = [it for it in wrong if it is not item and symbol_of[it.name] in depends]
+        if sources:
+            _carry_one(item, sources, symbol_of, problem, result, share, slipped)
+
+
+def _parsed(item: Item) -> list[Expected] | None:
+    try:
+        return [parse_value(v, item.dimension, item.name) for v in item.values]
+    except Exception:  # an invalid value: nothing to carry or compare
+        return None
+
+
+def _carried_values(item: Item, solved: Any) -> list[float] | None:
+    if item.is_step:
+        step = step_names(solved).get(item.name)
+        return None if step is None else [step[0]]
+    answer = solved.answers.get(item.name)
+    return None if answer is None else [float(v) for v in answer.si_values]
+
+
+def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None],
+               problem: Any, result: Any, share: float, slipped: set[str]) -> None:
+    from ..solving.solve import solve
+
+    carried: dict[str, float] = {}
+    written: list[tuple[str, Expected]] = []
+    used: list[Item] = []
+    for source in sources:
+        parsed = _parsed(source)
+        if not parsed:
+            continue
+        symbol = symbol_of[source.name]
+        assert symbol is not None
+        if _stock(parsed[0]):
+            _note(item, f"no follow-through from your {symbol} = {parsed[0].text} (a stock "
+                  "value makes the rest another problem)")
+            return
+        carried[symbol] = float(parsed[0].si)
+        written.append((symbol, parsed[0]))
+        used.append(source)
+    submitted = _parsed(item)
+    if not carried or not submitted:
+        return
+    try:
+        again = _carried_values(item, solve(result.problem, carried))
+    except (InputError, ArithmeticError, ValueError):
+        return  # the student's values give no solution: nothing to follow
+    truth = _carried_values(item, result)
+    if not again or not truth or not all(math.isfinite(v) and v != 0 for v in again):
+        return
+    base = max(item.tolerance.half_width(float(v.si), v.number) for v in submitted)
+    if len(again) == len(truth) and all(abs(a - t) <= base for a, t in zip(again, truth)):
+        _note(item, "the values carried barely change this answer: no follow-through")
+        return
+    extra = _propagated(item, written, carried, result, again)
+    tolerance = Tolerance("absolute", base + extra, f"+-{num(base + extra)}")
+    reported = _reported(item, result, again)
+    lines = compare(item.name, submitted, tolerance, reported)
+    passed = sum(line.passed for line in lines)
+    if not passed:
+        return
+    full = all(source.name in slipped for source in used)
+    earned = (1.0 if full else share) * passed / len(lines)
+    values = ", ".join(f"{symbol} = {value.text}" for symbol, value in written)
+    why = f"consistent with your {values} (ECF" + (
+        "; the slip there was already marked down)" if full else ")")
+    if earned > item.row.points:
+        item.row.points = round(earned, 4)
+        item.row.result = "carried" if passed == len(lines) else "partial"
+        why += f" [credit {earned:g}]"
+    _note(item, why)
+
+
+def _reported(item: Item, result: Any, again: list[float]) -> Any:
+    """The carried values as `compare` reads a solver's answer."""
+    if item.is_step:
+        unit = step_names(result)[item.name][1]
+        return SimpleNamespace(si_values=again, si_unit=unit, unit=unit, labels=[])
+    answer = result.answers[item.name]
+    return SimpleNamespace(si_values=again, si_unit=answer.si_unit, unit=answer.si_unit,
+                           labels=list(answer.labels))
+
+
+def _note(item: Item, text: str) -> None:
+    """The same words for the teacher and the student: they name only the student's own
+    values, never the solver's."""
+    row = item.row
+    row.note = "; ".join(p for p in (row.note, text) if p)
+    row.feedback = "; ".join(p for p in (row.feedback, text) if p)
+
+
+def _propagated(item: Item, written: list[tuple[str, Expected]], carried: dict[str, float],
+                result: Any, again: list[float]) -> float:
+    """How far half a unit of each carried value's last written digit moves the later
+    answer (summed over the values carried)."""
+    from ..solving.solve import solve
+
+    total = 0.0
+    for symbol, value in written:
+        place = _written_place(value.text)
+        if place is None:
+            continue
+        moved = dict(carried)
+        moved[symbol] = carried[symbol] + place * value.factor
+        try:
+            shifted = _carried_values(item, solve(result.problem, moved))
+        except (InputError, ArithmeticError, ValueError):
+            continue
+        if shifted and len(shifted) == len(again):
+            total += max(abs(a - b) for a, b in zip(shifted, again))
+    return total
+
+
+def policy_share(credit: dict[str, float] | None) -> float | None:
+    """The ECF share of a --credit policy, or None when it carries nothing."""
+    if not credit or ECF not in credit:
+        return None
+    return credit[ECF]
