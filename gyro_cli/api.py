@@ -391,7 +391,9 @@ class Result:
     def to_json(self) -> str:
         import json
 
-        return json.dumps(self.to_dict(), allow_nan=False)
+        from .render.report import graph_data
+
+        return json.dumps(self.to_dict() | {"graph": graph_data(self._si)}, allow_nan=False)
 
     def text(self) -> str:
         """The worked answer as ``gyro solve`` prints it."""

@@ -133,6 +133,26 @@ def _parsed(item: Item) -> list[Expected] | None:
         return None
 
 
+def _follow(item: Item, carried: dict[str, float], result: Any, symbol: str | None
+            ) -> list[float] | None:
+    """The item's values with the carried values in place: the problem solved again, or,
+    where the kind refuses those values, a closed formula's tree worked out again."""
+    from ..solving.deps import through_trees
+    from ..solving.solve import solve
+
+    try:
+        return _carried_values(item, solve(result.problem, carried))
+    except (InputError, ArithmeticError, ValueError):
+        pass
+    if symbol is None:
+        return None  # a root, an eigenvalue: only the solver gives it
+    try:
+        env = through_trees(result.solution, carried)
+    except (ArithmeticError, ValueError):
+        return None
+    return [env[symbol]] if symbol in env and symbol not in carried else None
+
+
 def _carried_values(item: Item, solved: Any) -> list[float] | None:
     if item.is_step:
         step = step_names(solved).get(item.name)
@@ -143,8 +163,6 @@ def _carried_values(item: Item, solved: Any) -> list[float] | None:
 
 def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None],
                problem: Any, result: Any, share: float, slipped: set[str]) -> None:
-    from ..solving.solve import solve
-
     carried: dict[str, float] = {}
     written: list[tuple[str, Expected]] = []
     used: list[Item] = []
@@ -164,10 +182,10 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     submitted = _parsed(item)
     if not carried or not submitted:
         return
-    try:
-        again = _carried_values(item, solve(result.problem, carried))
-    except (InputError, ArithmeticError, ValueError):
-        return  # the student's values give no solution: nothing to follow
+    again = _follow(item, carried, result, symbol_of[item.name])
+    if again is None:
+        _note(item, "your values give this problem no solution: nothing to follow through")
+        return
     truth = _carried_values(item, result)
     if not again or not truth or not all(math.isfinite(v) and v != 0 for v in again):
         return
@@ -175,7 +193,7 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     if len(again) == len(truth) and all(abs(a - t) <= base for a, t in zip(again, truth)):
         _note(item, "the values carried barely change this answer: no follow-through")
         return
-    extra = _propagated(item, written, carried, result, again)
+    extra = _propagated(item, written, carried, result, again, symbol_of[item.name])
     tolerance = Tolerance("absolute", base + extra, f"+-{num(base + extra)}")
     reported = _reported(item, result, again)
     lines = compare(item.name, submitted, tolerance, reported)
@@ -213,11 +231,9 @@ def _note(item: Item, text: str) -> None:
 
 
 def _propagated(item: Item, written: list[tuple[str, Expected]], carried: dict[str, float],
-                result: Any, again: list[float]) -> float:
+                result: Any, again: list[float], target: str | None) -> float:
     """How far half a unit of each carried value's last written digit moves the later
     answer (summed over the values carried)."""
-    from ..solving.solve import solve
-
     total = 0.0
     for symbol, value in written:
         place = _written_place(value.text)
@@ -225,10 +241,7 @@ def _propagated(item: Item, written: list[tuple[str, Expected]], carried: dict[s
             continue
         moved = dict(carried)
         moved[symbol] = carried[symbol] + place * value.factor
-        try:
-            shifted = _carried_values(item, solve(result.problem, moved))
-        except (InputError, ArithmeticError, ValueError):
-            continue
+        shifted = _follow(item, moved, result, target)
         if shifted and len(shifted) == len(again):
             total += max(abs(a - b) for a, b in zip(shifted, again))
     return total

@@ -19,7 +19,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..core.expr import Chain, Expr, Let, Sym
+import math
+
+from ..core.expr import FUNCTIONS, BinOp, Call, Chain, Expr, Let, Neg, Sym, SumOf
 
 #: relative change of a value taken as "changed" when an earlier step is nudged
 _CHANGED = 1e-9
@@ -126,13 +128,15 @@ def _values(result: Any) -> dict[str, list[Any]]:
     return out
 
 
-def graph(problem: Any, result: Any) -> Graph:
-    """The graph of a solved problem: ``uses`` from the trees, ``depends`` by solving again
-    with each step nudged (``result`` must hold every answer wanted)."""
+def graph(problem: Any, result: Any = None) -> Graph:
+    """The graph of a problem: ``uses`` from the trees, ``depends`` by solving again with
+    each step nudged. ``result``: its solve in SI, if the caller has it."""
     from .solve import solve
 
     from ..core.errors import InputError
 
+    if result is None:
+        result = solve(problem)
     steps = graded_steps(result.solution)
     out = Graph(steps, tree_uses(result.solution), answer_steps(result, steps))
     base = _values(result)
@@ -167,3 +171,51 @@ def as_data(g: Graph, answers: list[str]) -> dict[str, Any]:
                     for name in answers},
         "untried": g.untried,
     }
+
+
+_OPS = {"+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b,
+        "/": lambda a, b: a / b, "^": lambda a, b: a * a if b == 2 else a ** b}
+
+
+def evaluate(node: Expr, env: dict[str, float]) -> float:
+    """A tree's value with the symbols named in ``env`` taking its values; a `Let` whose
+    definition names one of them is worked out again from its definition."""
+    if isinstance(node, Sym):
+        return env.get(node.name, node.si)
+    if isinstance(node, Let):
+        if node.sym.name in env:
+            return env[node.sym.name]
+        return evaluate(node.body, env) if named(node.body) & set(env) else node.sym.si
+    if isinstance(node, Neg):
+        return -evaluate(node.arg, env)
+    if isinstance(node, BinOp):
+        return _OPS[node.op](evaluate(node.left, env), evaluate(node.right, env))
+    if isinstance(node, Call):
+        return FUNCTIONS[node.name](*(evaluate(a, env) for a in node.args))
+    if isinstance(node, Chain):
+        return evaluate(node.forms[-1], env)
+    if isinstance(node, SumOf):
+        return math.fsum(evaluate(t, env) for t in node.terms)
+    return node.value
+
+
+def through_trees(solution: Any, overrides: dict[str, float]) -> dict[str, float]:
+    """Each tree step's SI value worked out again from its tree, in order, with the
+    ``overrides`` in place of those steps and every later step taking the new values:
+    the closed formulas of the worked answer, where solving again is refused (a student's
+    value for which the kind finds no motion)."""
+    env = dict(overrides)
+    steps = graded_steps(solution)
+    done: set[str] = set()
+    for section in solution.sections:
+        for step in section.steps:
+            symbol = step.symbol
+            if symbol not in steps or symbol in done:
+                continue
+            done.add(symbol)
+            if symbol in overrides or step.expr is None:
+                continue
+            if named(step.expr) & set(env):
+                value = evaluate(step.expr, env)
+                env[symbol] = value
+    return env

@@ -229,7 +229,8 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         file=path, id=_id(data["id"]), kind=kind, given=given, quantities=quantities,
         find=parse_find(kind, data["find"]), title=_text(data.get("title", ""), "title"),
         source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
-        expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
+        expected=_expected(kind, data.get("expected"), _steps(data.get("steps"))),
+        tolerance=data.get("tolerance"),
         vary=data.get("vary"), data=data, lines=lines, us_customary=us,
         units=_unit_system(data.get("units", "si")),
         statement=_statement(data.get("statement"), data["given"]))
@@ -611,7 +612,7 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     return find
 
 
-def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
+def _expected(kind: Kind, raw: Any, steps: list[str] | None = None) -> dict[str, Any]:
     if raw is None:
         return {}
     if not isinstance(raw, dict):
@@ -623,8 +624,8 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
                 raise InputError("expected a mapping of the worked answer's step symbols to "
                                  "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
             continue
-        if kind.answer(str(name)) is None:
-            names = [a.name for a in kind.answers]
+        if kind.answer(str(name)) is None and str(name) not in (steps or []):
+            names = [a.name for a in kind.answers] + (steps or [])
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
     return dict(raw)
