@@ -252,3 +252,90 @@ def policy_share(credit: dict[str, float] | None) -> float | None:
     if not credit or ECF not in credit:
         return None
     return credit[ECF]
+
+
+# ---- banks: errors carried forward without gyro (PrairieLearn's server.py) -------------
+
+#: the grid of a carried value, as factors of the solver's: 0.25x to 4x, evenly in log
+GRID = tuple(math.exp(math.log(0.25) + k * math.log(16) / 96) for k in range(97))
+
+
+@dataclass(frozen=True)
+class Part:
+    """One blank of a bank's question: an answer's value (by index) or a step's."""
+
+    key: str
+    name: str        # the answer name or step symbol
+    index: int       # which of the answer's values
+    is_step: bool
+    unit: str        # the blank's unit ("" for SI or a pure number)
+    dimension: str | None = None
+
+
+def followers(graph: Any, parts: list[Part]) -> dict[str, list[str]]:
+    """Each step blank's key -> the keys of the blanks that depend on it (ECF targets)."""
+    out: dict[str, list[str]] = {}
+    for source in parts:
+        if not source.is_step:
+            continue
+        for target in parts:
+            key = target.name if target.is_step else f"answer:{target.name}"
+            if target is not source and source.name in graph.depends.get(key, []):
+                out.setdefault(source.key, []).append(target.key)
+    return {k: v for k, v in out.items() if v}
+
+
+def table(problem: Any, result: Any, parts: list[Part]) -> dict[str, dict[str, Any]]:
+    """For each step blank some later blank depends on: its values on `GRID` (``at``), and
+    each dependent blank's value, in its unit, with the step carried at each (``to``; None
+    where the problem has no solution). A bank's grader interpolates in it."""
+    from ..core import units
+    from ..solving.deps import graph as make_graph, through_trees
+    from ..solving.solve import solve
+
+    g = make_graph(result.problem, result)
+    by_key = {p.key: p for p in parts}
+    out: dict[str, dict[str, Any]] = {}
+    for source_key, targets in followers(g, parts).items():
+        symbol = by_key[source_key].name
+        value = step_names(result)[symbol][0]
+        column: dict[str, list[float | None]] = {t: [] for t in targets}
+        for factor in GRID:
+            carried = {symbol: value * factor}
+            try:
+                again: Any = solve(result.problem, carried)
+                env = None
+            except (InputError, ArithmeticError, ValueError):
+                again = None
+                try:
+                    env = through_trees(result.solution, carried)
+                except (ArithmeticError, ValueError):
+                    env = {}
+            for t in targets:
+                part = by_key[t]
+                column[t].append(_part_value(part, again, env, g, units))
+        out[source_key] = {"at": [value * f for f in GRID], "to": column}
+    return out
+
+
+def _part_value(part: Part, again: Any, env: dict[str, float] | None, g: Any,
+                units: Any) -> float | None:
+    """A blank's value in one carried solve (``again``), or through the trees (``env``)."""
+    si: float | None = None
+    if again is not None:
+        if part.is_step:
+            step = step_names(again).get(part.name)
+            si = None if step is None else step[0]
+        else:
+            answer = again.answers.get(part.name)
+            if answer is not None and part.index < len(answer.si_values):
+                si = float(answer.si_values[part.index])
+    elif env is not None:
+        symbol = part.name if part.is_step else g.answer_step.get(part.name)
+        if symbol is not None and symbol in env and part.index == 0:
+            si = env[symbol]
+    if si is None or not math.isfinite(si):
+        return None
+    if part.is_step or not part.unit or part.dimension is None:
+        return si
+    return float(units.convert(si, part.dimension, part.unit))
