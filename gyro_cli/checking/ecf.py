@@ -112,6 +112,7 @@ def carry(items: list[Item], problem: Any, result: Any, graph: Any, share: float
     """Give each wrong item that follows from the student's own wrong earlier values the
     ``share`` (notes naming the values carried); ``slipped``: the items whose wrong value
     was credited as a named slip."""
+    follow_branch(items, result)
     symbol_of = {it.name: (it.name if it.is_step else graph.answer_step.get(it.name))
                  for it in items}
     wrong = [it for it in items if it.row.result in ("wrong", "partial") and
@@ -120,10 +121,57 @@ def carry(items: list[Item], problem: Any, result: Any, graph: Any, share: float
         if item.row.result not in ("wrong", "partial") or item.dimension is None:
             continue
         key = item.name if item.is_step else f"answer:{item.name}"
-        depends = set(graph.depends.get(key, []))
+        depends = set(graph.depends.get(key, [])) - {symbol_of[item.name]}
         sources = [it for it in wrong if it is not item and symbol_of[it.name] in depends]
         if sources:
             _carry_one(item, sources, symbol_of, problem, result, share, slipped)
+        elif not depends and not item.is_step and item.name not in graph.answer_step and \
+                any(it.is_step for it in wrong):
+            _note(item, f"errors are not carried into {item.name}: gyro works it from the "
+                  "data given, not from the steps of the working")
+
+
+def follow_branch(items: list[Item], result: Any) -> None:
+    """A root followed: once a student gives one branch of a labelled answer (the fast
+    precession alone), a later answer with the same labels for which they give fewer
+    values than roots is graded on that branch only."""
+    branch: set[str] | None = None
+    for item in items:
+        answer = None if item.is_step else result.answers.get(item.name)
+        if answer is None or len(set(answer.labels)) < 2 or item.dimension is None:
+            continue
+        parsed = _parsed(item)
+        if not parsed or len(parsed) >= len(answer.si_values):
+            continue
+        if branch is None:
+            branch = _branch(item, parsed, answer)
+            continue
+        if not branch <= set(answer.labels):
+            continue
+        keep = [i for i, label in enumerate(answer.labels) if label in branch]
+        sub = SimpleNamespace(si_values=[answer.si_values[i] for i in keep],
+                              si_unit=answer.si_unit, unit=answer.si_unit,
+                              labels=[answer.labels[i] for i in keep])
+        lines = compare(item.name, parsed, item.tolerance, sub)
+        if len(lines) == len(keep) and all(line.passed for line in lines):
+            item.row.points, item.row.result = 1.0, "correct"
+            item.row.note = item.row.feedback = ""  # the other root is not missing
+            _note(item, f"graded on the {' and '.join(sorted(branch))} branch you followed")
+
+
+def _branch(item: Item, parsed: list[Expected], answer: Any) -> set[str] | None:
+    """The labels of the roots a student's values matched (all of them must match)."""
+    lines = compare(item.name, parsed, item.tolerance, answer)
+    labels = set()
+    for line in lines:
+        if line.expected is None:
+            continue
+        if not line.passed:
+            return None
+        for value, label in zip(answer.si_values, answer.labels):
+            if line.got_si is not None and float(line.got_si) == float(value):
+                labels.add(label)
+    return labels or None
 
 
 def _parsed(item: Item) -> list[Expected] | None:
@@ -339,3 +387,51 @@ def _part_value(part: Part, again: Any, env: dict[str, float] | None, g: Any,
     if part.is_step or not part.unit or part.dimension is None:
         return si
     return float(units.convert(si, part.dimension, part.unit))
+
+
+# ---- test cases made for every problem ------------------------------------------------
+
+@dataclass(frozen=True)
+class Case:
+    """A student's values for one problem (name -> value as written) and what ECF should
+    give the later one: ``carried`` True for a consistent follow-through, False for a stock
+    earlier value."""
+
+    step: str
+    answer: str
+    values: dict[str, list[str]]
+    carried: bool
+
+
+def cases(problem: Any, result: Any, graph: Any, factor: float = 1.1) -> list[Case]:
+    """For each numeric answer and each step it depends on: the step ``factor`` times the
+    solver's and the answer worked from it (to 6 figures), and the step a stock 1 with the
+    answer worked from that. Pairs whose carried solve fails are left out."""
+    from ..solving.solve import solve
+
+    steps = step_names(result)
+    out = []
+    stocked: set[str] = set()  # the stock case once per step
+    for name, answer in result.answers.items():
+        if answer.si_unit is None:
+            continue
+        own = graph.answer_step.get(name)
+        for symbol in graph.depends.get(f"answer:{name}", []):
+            if symbol == own or symbol not in steps:
+                continue
+            value, unit, _ = steps[symbol]
+            trials = [(True, value * factor)]
+            if symbol not in stocked and abs(value - 1) > 0.1 and value > 0:
+                stocked.add(symbol)  # (a step near 1 has no stock case)
+                trials.append((False, 1.0))
+            for carried, written in trials:
+                try:
+                    again = solve(result.problem, {symbol: written}).answers[name]
+                except (InputError, ArithmeticError, ValueError, KeyError):
+                    continue
+                if len(again.si_values) != len(answer.si_values):
+                    continue
+                later = [f"{v:.6g} {answer.si_unit}" for v in again.si_values]
+                step_text = f"{written:.6g} {unit}" if carried else f"1 {unit}"
+                out.append(Case(symbol, name, {symbol: [step_text], name: later}, carried))
+    return out

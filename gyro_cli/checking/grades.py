@@ -370,6 +370,23 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
     return graded
 
 
+def grade_work(problem: Any, result: Any, values: dict[str, list[Any]],
+               credit: dict[str, float] | None = None, student: str = "student"
+               ) -> dict[str, GradeRow]:
+    """One student's values for one solved problem (answers and steps by name, in the order
+    given) graded as a sheet grades them, errors carried forward under ``credit``."""
+    carrying = Carrying(credit)
+    rows = {}
+    for name, given in values.items():
+        rows[name] = grade_item(student, problem, name, reported(result, name), given, credit)
+        carrying.add(problem.id, problem, result, name, rows[name], given)
+    errors: list[str] = []
+    carrying.carry(errors)
+    if errors:
+        raise RuntimeError(errors[0])
+    return rows
+
+
 def reported(result: Any, name: str) -> Any:
     """An answer's values as solved, or a step's (a question of `steps:`)."""
     answer = result.answers.get(name)
