@@ -91,15 +91,17 @@ class Item:
     is_step: bool
 
 
-def _written_place(text: str) -> float | None:
+def _written_place(text: str, number: float) -> float | None:
     """Half a unit of the last digit of the number written first in ``text`` (in the
-    number's own unit); None when there is no number."""
+    number's own unit), at most that of its third significant figure (``0.02`` is taken
+    as 0.0200: a round number is no claim of one figure); None when there is no number."""
     match = re.match(r"\s*[-+]?(\d*)(?:\.(\d*))?(?:[eE]([-+]?\d+))?", text)
-    if not match or not (match.group(1) or match.group(2)):
+    if not match or not (match.group(1) or match.group(2)) or not number:
         return None
     decimals = len(match.group(2) or "")
     exponent = int(match.group(3) or 0)
-    return 0.5 * 10.0 ** (exponent - decimals)
+    third = 0.5 * 10.0 ** (math.floor(math.log10(abs(number))) - 2)
+    return min(0.5 * 10.0 ** (exponent - decimals), third)
 
 
 def _stock(value: Expected) -> bool:
@@ -125,7 +127,7 @@ def carry(items: list[Item], problem: Any, result: Any, graph: Any, share: float
         sources = [it for it in wrong if it is not item and symbol_of[it.name] in depends]
         if sources:
             _carry_one(item, sources, symbol_of, problem, result, share, slipped)
-        elif not depends and not item.is_step and item.name not in graph.answer_step and \
+        elif not depends and not item.is_step and item.name not in graph.closed and \
                 any(it.is_step for it in wrong):
             _note(item, f"errors are not carried into {item.name}: gyro works it from the "
                   "data given, not from the steps of the working")
@@ -237,27 +239,46 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     truth = _carried_values(item, result)
     if not again or not truth or not all(math.isfinite(v) and v != 0 for v in again):
         return
-    base = max(item.tolerance.half_width(float(v.si), v.number) for v in submitted)
-    if len(again) == len(truth) and all(abs(a - t) <= base for a, t in zip(again, truth)):
+    widths = [item.tolerance.half_width(float(v.si), v.number) for v in submitted]
+    if len(again) == len(truth) and all(
+            abs(a - t) <= item.tolerance.half_width(t, t) for a, t in zip(again, truth)):
         _note(item, "the values carried barely change this answer: no follow-through")
         return
     extra = _propagated(item, written, carried, result, again, symbol_of[item.name])
-    tolerance = Tolerance("absolute", base + extra, f"+-{num(base + extra)}")
-    reported = _reported(item, result, again)
-    lines = compare(item.name, submitted, tolerance, reported)
-    passed = sum(line.passed for line in lines)
+    labels = _reported(item, result, again).labels
+    passed, total = _matched([float(v.si) for v in submitted], widths, again, extra, labels)
     if not passed:
         return
     full = all(source.name in slipped for source in used)
-    earned = (1.0 if full else share) * passed / len(lines)
+    earned = (1.0 if full else share) * passed / total
     values = ", ".join(f"{symbol} = {value.text}" for symbol, value in written)
     why = f"consistent with your {values} (ECF" + (
         "; the slip there was already marked down)" if full else ")")
     if earned > item.row.points:
         item.row.points = round(earned, 4)
-        item.row.result = "carried" if passed == len(lines) else "partial"
+        item.row.result = "carried" if passed == total else "partial"
         why += f" [credit {earned:g}]"
     _note(item, why)
+
+
+def _matched(submitted: list[float], widths: list[float], carried: list[float],
+             extra: list[float], labels: list[str]) -> tuple[int, int]:
+    """How many of the submitted values match a carried value (each within its own width
+    and what the last digit carried moves that value), and how many values are graded:
+    roots as sets, places (labelled A, B, outer, ...) in order."""
+    from .matching import match_roots, ordered
+
+    def passes(i: int, j: int) -> bool:
+        return abs(submitted[i] - carried[j]) <= widths[i] + extra[j] + 1e-300
+
+    if ordered(labels):
+        pairs: list[tuple[int | None, int | None]] = [
+            (i if i < len(submitted) else None, i if i < len(carried) else None)
+            for i in range(max(len(submitted), len(carried)))]
+    else:
+        pairs = match_roots(submitted, carried, passes)
+    hits = sum(1 for i, j in pairs if i is not None and j is not None and passes(i, j))
+    return hits, len(pairs)
 
 
 def _reported(item: Item, result: Any, again: list[float]) -> Any:
@@ -279,19 +300,19 @@ def _note(item: Item, text: str) -> None:
 
 
 def _propagated(item: Item, written: list[tuple[str, Expected]], carried: dict[str, float],
-                result: Any, again: list[float], target: str | None) -> float:
-    """How far half a unit of each carried value's last written digit moves the later
-    answer (summed over the values carried)."""
-    total = 0.0
+                result: Any, again: list[float], target: str | None) -> list[float]:
+    """How far half a unit of each carried value's last written digit moves each value of
+    the later answer (summed over the values carried)."""
+    total = [0.0] * len(again)
     for symbol, value in written:
-        place = _written_place(value.text)
+        place = _written_place(value.text, value.number)
         if place is None:
             continue
         moved = dict(carried)
         moved[symbol] = carried[symbol] + place * value.factor
         shifted = _follow(item, moved, result, target)
         if shifted and len(shifted) == len(again):
-            total += max(abs(a - b) for a, b in zip(shifted, again))
+            total = [t + abs(a - b) for t, a, b in zip(total, shifted, again)]
     return total
 
 

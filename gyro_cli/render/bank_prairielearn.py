@@ -127,14 +127,17 @@ def generate(data):
 # interpolates at the student's own value. One wrong step is carried at a time.
 GRADE = '''
 
-def _place(raw):
-    """Half a unit of the last digit written in the raw input ("1.95e-4": 5e-7)."""
+def _place(raw, number):
+    """Half a unit of the last digit written in the raw input ("1.95e-4": 5e-7), at most
+    that of its third significant figure (a round 0.02 is no claim of one figure)."""
+    import math
     import re
 
     match = re.match(r"\\s*[-+]?(\\d*)(?:\\.(\\d*))?(?:[eE]([-+]?\\d+))?", str(raw or ""))
-    if not match or not (match.group(1) or match.group(2)):
+    if not match or not (match.group(1) or match.group(2)) or not number:
         return 0.0
-    return 0.5 * 10.0 ** (int(match.group(3) or 0) - len(match.group(2) or ""))
+    third = 0.5 * 10.0 ** (math.floor(math.log10(abs(number))) - 2)
+    return min(0.5 * 10.0 ** (int(match.group(3) or 0) - len(match.group(2) or "")), third)
 
 
 def _at(xs, ys, x):
@@ -186,7 +189,7 @@ def _carry(data, variant, carry, source, table, scores):
         atol = float(variant["atol"][target])
         if abs(carried - variant["answers"][target]) <= atol:
             continue  # the step barely moves this answer
-        moved = _at(table["at"], ys, own + _place(raw))
+        moved = _at(table["at"], ys, own + _place(raw, own))
         widen = abs(moved - carried) if moved is not None else 0.0
         if abs(got - carried) <= atol + widen:
             later["score"] = max(later.get("score") or 0.0, carry["share"])

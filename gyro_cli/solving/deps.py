@@ -97,6 +97,8 @@ class Graph:
     depends: dict[str, list[str]] = field(default_factory=dict)
     #: step symbols that could not be nudged (the solve refused a nudged value)
     untried: list[str] = field(default_factory=list)
+    #: the answers that are a step written as a formula (a tree), not a value found
+    closed: set[str] = field(default_factory=set)
 
     def answer_depends(self, name: str) -> list[str]:
         return self.depends.get(f"answer:{name}", [])
@@ -139,6 +141,9 @@ def graph(problem: Any, result: Any = None) -> Graph:
         result = solve(problem)
     steps = graded_steps(result.solution)
     out = Graph(steps, tree_uses(result.solution), answer_steps(result, steps))
+    trees = {step.symbol for section in result.solution.sections for step in section.steps
+             if step.expr is not None}
+    out.closed = {name for name, symbol in out.answer_step.items() if symbol in trees}
     base = _values(result)
     for symbol, (value, _, _) in steps.items():
         nudged = value * (1 + _NUDGE) if value else _NUDGE
@@ -164,7 +169,7 @@ def as_data(g: Graph, answers: list[str]) -> dict[str, Any]:
     return {
         "steps": {s: {"uses": g.uses.get(s, []), "depends": g.depends.get(s, [])}
                   for s in g.steps},
-        "answers": {name: {"step": g.answer_step.get(name),
+        "answers": {name: {"step": g.answer_step.get(name) if name in g.closed else None,
                            "uses": g.uses.get(g.answer_step[name], []) if name in
                            g.answer_step else [],
                            "depends": g.depends.get(f"answer:{name}", [])}
