@@ -87,7 +87,7 @@ def test_item01_a_step_not_answered_is_missing(tmp_path):
 
 def test_item01_gyro_check_checks_expected_steps(tmp_path, run):
     right = hand_11_3()
-    good = problem_with(tmp_path, f"steps: [I]\n").read_text().replace(
+    good = problem_with(tmp_path, "steps: [I]\n").read_text().replace(
         "  min_spin: 965.4 rpm\n", f"  min_spin: 965.4 rpm\n  I: {right['I']:.4g} kg m^2\n")
     (tmp_path / "good.yaml").write_text(good)
     result = run("check", tmp_path / "good.yaml")
@@ -349,7 +349,7 @@ def test_acceptance_prairielearn_grade_carries_an_error(pl_question):
 
 
 def test_item06_prairielearn_no_carried_credit_for_a_stock_or_unexplained_value(pl_question):
-    right, stock = hand_11_3(), hand_11_3(I=1.0)
+    stock = hand_11_3(I=1.0)
     data = pl_grade(pl_question, {"step_I": 1.0, "min_spin": float(f"{stock['min_spin']:.4g}")})
     assert data["partial_scores"]["min_spin"]["score"] == 0  # a stock I
     own = hand_11_3(1.1)
@@ -376,7 +376,7 @@ def _bundled() -> dict[str, list[Path]]:
 
     out: dict[str, list[Path]] = {}
     for path in sorted((ROOT / "problems").glob("*.yaml")):
-        kind = re.search(r"^kind:\s*(\S+)", path.read_text(), re.M)
+        kind = re.search(r"^kind:\s*(\S+)", path.read_text(), re.MULTILINE)
         if kind:
             out.setdefault(kind.group(1), []).append(path)
     return out
@@ -414,8 +414,6 @@ def _pairs(path: Path):
     """(problem, result, graph, answer, step) with the answer no closed formula and
     depending on the step, for one bundled problem."""
     from gyro_cli.solving.deps import graph as make_graph
-    from gyro_cli.solving.problem import load
-    from gyro_cli.solving.solve import solve
 
     problem, result = _solved_whole(path)
     g = make_graph(result.problem, result)
@@ -438,7 +436,6 @@ ALL_CLOSED = {"aeroplane", "euler_angles", "gyrocompass", "two_wheeler"}
 def test_item02_every_kind_carries_an_error_through_a_non_closed_answer(kind):
     import dataclasses
 
-    from gyro_cli.solving.solve import solve
 
     found = next((pair for path in BUNDLED[kind] for pair in _pairs(path)
                   if _moved(pair) is not None), None)
@@ -465,7 +462,7 @@ def _moved(pair):
     """The answer with its step 10% high, if every value of it moves by over 2%."""
     from gyro_cli.solving.solve import solve
 
-    problem, result, g, name, symbol = pair
+    _, result, g, name, symbol = pair
     try:
         again = solve(result.problem, {symbol: g.steps[symbol][0] * FACTOR}).answers[name]
     except InputError:
@@ -488,8 +485,6 @@ def _no_carrying(kind: str) -> None:
     import dataclasses
 
     from gyro_cli.solving.deps import graph as make_graph
-    from gyro_cli.solving.problem import load
-    from gyro_cli.solving.solve import solve
 
     for path in BUNDLED[kind]:
         problem, result = _solved_whole(path)
@@ -532,3 +527,29 @@ def test_item07_ecf_cases_of_every_problem(path):
         else:  # a stock 1: nothing carried
             plain = grades.grade_work(asked, result, case.values)[case.answer]
             assert later.points == plain.points and "(ECF" not in later.note, (case, later)
+
+
+def test_item02_assigned_variants_carry_errors_and_ask_the_steps(tmp_path, run):
+    problem = problem_with(tmp_path)
+    (tmp_path / "roster.csv").write_text("student\nann\n")
+    made = run("vary", problem, "--roster", tmp_path / "roster.csv", "-o", tmp_path / "cls")
+    assert made.exit_code == 0, made.output
+    variant = next((tmp_path / "cls").rglob("ann.yaml"))
+    import yaml
+
+    data = yaml.safe_load(variant.read_text())
+    assert data["steps"] == ["I"]  # the variant asks the step too
+    given = data["given"]
+    theta = math.radians(float(given["theta"].split()[0]))
+    own = hand_11_3(1.1)  # the body is not varied: I and J as in 11/3
+    W, g = 3 * OZF, 32.2 * 0.3048
+    m = W / g
+    J = m * (0.84 * INCH) ** 2
+    least = 2 * math.sqrt((own["I"] - J) * m * g * 1.5 * INCH * math.cos(theta)) / J
+    answers = sheet(tmp_path, [("ann", "I", f"{own['I']:.4g} kg m^2"),
+                               ("ann", "min_spin", f"{least / RPM:.4g} rpm")])
+    graded = grades.grade(str(answers), [], assignment=str(tmp_path / "cls" / "assignment.csv"),
+                          credit={"ecf": 1.0})
+    rows = by_answer(graded, "ann")
+    assert rows["I"].points == 0 and rows["min_spin"].result == "carried"
+    assert graded.scores["ann"] == (1.0, 3.0)

@@ -29,7 +29,6 @@ from types import SimpleNamespace
 from typing import Any
 
 from ..core.errors import InputError
-from ..core.work import num
 from .expected import Expected, parse_value
 from .matching import compare
 from .tolerance import Tolerance, tolerance_for
@@ -359,7 +358,8 @@ def table(problem: Any, result: Any, parts: list[Part]) -> dict[str, dict[str, A
     each dependent blank's value, in its unit, with the step carried at each (``to``; None
     where the problem has no solution). A bank's grader interpolates in it."""
     from ..core import units
-    from ..solving.deps import graph as make_graph, through_trees
+    from ..solving.deps import graph as make_graph
+    from ..solving.deps import through_trees
     from ..solving.solve import solve
 
     g = make_graph(result.problem, result)

@@ -28,6 +28,7 @@ import csv
 import dataclasses
 import io
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -495,7 +496,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     seen_files: dict[str, str] = {}
     for row in plan.rows:
         seen_files[os.path.realpath(row.file)] = row.variant
-        keyed = _from_key(stored_key, row) if stored_key else None
+        # errors carried forward solve again: the stored answers are not enough
+        keyed = _from_key(stored_key, row) if stored_key and "ecf" not in (credit or {}) \
+            else None
         if keyed is not None:
             variants[row.variant], stored[row.variant] = keyed
             continue
@@ -515,8 +518,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     for row in plan.rows:
         if row.problem not in questions:
             problem = variants[row.variant]
-            questions[row.problem] = list(dict.fromkeys(list(problem.find) +
-                                                        list(problem.expected)))
+            steps = list(getattr(problem, "steps", []))
+            questions[row.problem] = list(dict.fromkeys(steps + list(problem.find) + [
+                n for n in problem.expected if problem.kind.answer(n) is not None]))
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
@@ -549,7 +553,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 note = (f"answered variant {other.variant} (student {other.student}'s numbers); "
                         f"graded on their own variant {own.variant}")
         problem = variants[own.variant]
-        if problem.kind.answer(s.answer) is None:
+        if problem.kind.answer(s.answer) is None and \
+                s.answer not in getattr(problem, "steps", []):
             names = ", ".join(a.name for a in problem.kind.answers)
             raise InputError(f"problem {own.problem!r} has no answer {s.answer!r} (answers: "
                              f"{names})", **where)
@@ -571,9 +576,11 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             continue
         find = dict(problem.find)
         for name in questions[plan.by_variant[variant].problem]:
-            find.setdefault(name, None)
+            if problem.kind.answer(name) is not None:  # not a step (`steps:`)
+                find.setdefault(name, None)
         try:
             solved[variant] = solve(dataclasses.replace(problem, find=find))
+            check_steps(problem, solved[variant])
         except InputError as err:
             raise err.located(file=problem.file) from None
         except Exception as err:  # a bug: this variant's rows are errors, the rest is graded
@@ -589,6 +596,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         total = maximum = 0.0
         rows: list[GradeRow] = []
         wrong: dict[str, tuple[Any, dict[str, list[Any]]]] = {}
+        carrying = Carrying(credit)
         for own in (plan.by_item[(student, pid)] for pid in assigned_problems
                     if (student, pid) in plan.by_item):
             problem = variants[own.variant]
@@ -605,7 +613,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 else:
                     try:
                         row = grade_item(student, problem, name,
-                                         solved[own.variant].answers[name], values, credit)
+                                         reported(solved[own.variant], name), values, credit)
+                        carrying.add(own.variant, problem, solved[own.variant], name, row,
+                                     values)
                     except Exception as err:  # a bug: this row is an error
                         from ..core.errors import internal_message
 
@@ -624,8 +634,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                     row.feedback = "; ".join([f"graded on your own variant {own.variant}"]
                                              + ([row.feedback] if row.feedback else []))
                 rows.append(row)
-                total += row.points
                 maximum += row.max_points
+        carrying.carry(graded.errors)
+        total = sum(row.points for row in rows)
         if submitter is None:  # --student: the submitter's output must not confirm whose
             _name_match(rows, whose(lookup, student, wrong, len(plan.students)))
         graded.rows += rows
@@ -714,7 +725,10 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
         return None
     about = key["problems"].get(row.problem)
     try:
-        if file_digest(read_bytes(row.file, MAX_FILE_BYTES)) != entry.get("sha256"):
+        data = read_bytes(row.file, MAX_FILE_BYTES)
+        if file_digest(data) != entry.get("sha256"):
+            return None
+        if re.search(rb"^steps\s*:", data, re.M):  # steps asked: graded from the worked answer
             return None
         kind = kinds.get(about["kind"])
         answers = {name: Reported(**value) for name, value in entry["answers"].items()}

@@ -462,7 +462,8 @@ def each_variant(path: str, count: int, seed: int) -> Iterator[tuple[str, str]]:
         raise err.located(file=path, line=problem.line(err.key)) from None
     base = copy.deepcopy(problem.data)
     base.pop("vary", None)
-    keyed = list(problem.expected) or list(problem.find)
+    keyed = [name for name in problem.expected if problem.kind.answer(name) is not None] \
+        or list(problem.find)  # not `steps` nor a step asked (`steps:`)
     rng = random.Random(seed)
     stem = os.path.splitext(os.path.basename(path))[0]
     width = max(2, len(str(count)))

@@ -16,12 +16,11 @@ SI unit (as `gyro check` grades ``expected: {steps: ...}``).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
-import math
-
-from ..core.expr import FUNCTIONS, BinOp, Call, Chain, Expr, Let, Neg, Sym, SumOf
+from ..core.expr import FUNCTIONS, BinOp, Call, Chain, Expr, Let, Neg, SumOf, Sym
 
 #: relative change of a value taken as "changed" when an earlier step is nudged
 _CHANGED = 1e-9
@@ -133,9 +132,8 @@ def _values(result: Any) -> dict[str, list[Any]]:
 def graph(problem: Any, result: Any = None) -> Graph:
     """The graph of a problem: ``uses`` from the trees, ``depends`` by solving again with
     each step nudged. ``result``: its solve in SI, if the caller has it."""
-    from .solve import solve
-
     from ..core.errors import InputError
+    from .solve import solve
 
     if result is None:
         result = solve(problem)
