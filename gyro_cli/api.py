@@ -386,14 +386,12 @@ class Result:
             from .render.us_units import to_us
 
             solved = to_us(self._si, given=False)  # JSON's si_value stays SI
-        return report.as_dict(solved)
+        return report.as_dict(solved) | {"graph": report.graph_data(self._si)}
 
     def to_json(self) -> str:
         import json
 
-        from .render.report import graph_data
-
-        return json.dumps(self.to_dict() | {"graph": graph_data(self._si)}, allow_nan=False)
+        return json.dumps(self.to_dict(), allow_nan=False)
 
     def text(self) -> str:
         """The worked answer as ``gyro solve`` prints it."""
