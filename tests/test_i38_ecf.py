@@ -426,8 +426,9 @@ def _pairs(path: Path):
 
 
 # Kinds whose non-closed answers gyro works from the data, not from the steps (the
-# bicycle's eigenvalues and speeds: its solver reads the given values directly), or that
-# have no such answer at all (every answer a closed formula): said, and tested, below.
+# bicycle's eigenvalues and speeds: its solver reads the given values directly), or whose
+# answers are closed formulas or follow from the data alone (the Euler-angle kind's body
+# rates and principal moments): said in docs/check.md, and tested, below.
 NOT_CARRIED = {"bicycle"}
 ALL_CLOSED = {"aeroplane", "euler_angles", "gyrocompass", "two_wheeler"}
 
