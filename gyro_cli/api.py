@@ -386,7 +386,7 @@ class Result:
             from .render.us_units import to_us
 
             solved = to_us(self._si, given=False)  # JSON's si_value stays SI
-        return report.as_dict(solved)
+        return report.as_dict(solved) | {"graph": report.graph_data(self._si)}
 
     def to_json(self) -> str:
         import json

@@ -299,7 +299,9 @@ def _cpus() -> int:
                    "one student, else a directory of STUDENT.json).")
 @click.option("--credit", metavar="SLIP=SHARE,...",
               help="With --answers: partial credit for a value off by a named slip, e.g. "
-                   "2pi=0.5,sign=0.5 (slips: 2pi, rpm, 60, g, deg, 10, sign).")
+                   "2pi=0.5,sign=0.5 (slips: 2pi, rpm, 60, g, deg, 10, sign); ecf=S: the "
+                   "share for a value right for the student's own wrong earlier values "
+                   "(errors carried forward).")
 @click.option("--feedback", "feedback_dir", metavar="DIR",
               help="With --answers: write each student a short page (DIR/STUDENT.md): what "
                    "was right, what was off and the likely slip.")

@@ -63,7 +63,10 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     step_values = {}
     for name, raw in problem.expected.items():
         if name == "steps" and kind.answer("steps") is None:
-            step_values = raw
+            step_values = step_values | raw
+            continue
+        if kind.answer(name) is None and name in problem.steps:  # a step asked (`steps:`)
+            step_values = step_values | {name: raw}
             continue
         spec = kind.answer(name)
         dimension = spec.dimension
@@ -74,6 +77,10 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
             name: None for name in wanted if name not in problem.find})
     # Solved even without expected answers: a file that cannot be solved is a bad file.
     solved = solve(problem)
+    if problem.steps:  # steps asked (`steps:`): each a step of the worked answer
+        from .ecf import check_steps
+
+        check_steps(problem, solved)
     result.warnings = list(solved.solution.warnings)
     if not wanted and not step_values:
         result.status = "no expected answers"

@@ -28,12 +28,14 @@ import csv
 import dataclasses
 import io
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from . import check
 from .expected import parse_value
 from .copies import Match, VariantIndex, whose
+from .ecf import check_steps
 from .matching import compare, diagnose
 from .tolerance import tolerance_for
 from ..core.errors import InputError
@@ -311,20 +313,24 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             raise InputError(f"problem {s.problem!r} (student {s.student!r}) is not among the "
                              f"problem files given (ids: {', '.join(sorted(problems)) or 'none'})",
                              file=sheet, line=s.line)
-        if problem.kind.answer(s.answer) is None:
+        if problem.kind.answer(s.answer) is None and s.answer not in problem.steps:
             names = ", ".join(a.name for a in problem.kind.answers)
+            steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
-                             f"{names})", file=sheet, line=s.line)
-        asked.setdefault(s.problem, {})[s.answer] = None
+                             f"{names}{steps})", file=sheet, line=s.line)
+        questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
+        questions[s.answer] = None
     graded = Graded([])
     solved = {}
     for pid, names in asked.items():
         problem = problems[pid]
         find = dict(problem.find)
         for name in names:
-            find.setdefault(name, None)
+            if problem.kind.answer(name) is not None:
+                find.setdefault(name, None)
         try:
             solved[pid] = solve(dataclasses.replace(problem, find=find))
+            check_steps(problem, solved[pid])
         except InputError:
             raise
         except Exception as err:  # a bug: this problem's rows are errors, the rest is graded
@@ -337,6 +343,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
     by_key = {(s.student, s.problem, s.answer): s for s in submissions}
     for student in students:
         total = 0.0
+        carrying = Carrying(credit)
         for pid, name in items:
             submission = by_key.get((student, pid, name))
             values = submission.values if submission else None
@@ -346,8 +353,9 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                                feedback=ERROR_FEEDBACK)
             else:
                 try:
-                    row = grade_item(student, problems[pid], name, solved[pid].answers[name],
+                    row = grade_item(student, problems[pid], name, reported(solved[pid], name),
                                      values, credit)
+                    carrying.add(pid, problems[pid], solved[pid], name, row, values)
                 except Exception as err:  # a bug: this row is an error, the rest is graded
                     from ..core.errors import internal_message
 
@@ -357,9 +365,101 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                     row = GradeRow(student, pid, name, _submitted(values), "", None, "error",
                                    0.0, note=line, feedback=ERROR_FEEDBACK)
             graded.rows.append(row)
-            total += row.points
+        carrying.carry(graded.errors)
+        total = sum(row.points for row in graded.rows if row.student == student)
         graded.scores[student] = (total, float(len(items)))
     return graded
+
+
+def grade_work(problem: Any, result: Any, values: dict[str, list[Any]],
+               credit: dict[str, float] | None = None, student: str = "student"
+               ) -> dict[str, GradeRow]:
+    """One student's values for one solved problem (answers and steps by name, in the order
+    given) graded as a sheet grades them, errors carried forward under ``credit``."""
+    carrying = Carrying(credit)
+    rows = {}
+    for name, given in values.items():
+        rows[name] = grade_item(student, problem, name, reported(result, name), given, credit)
+        carrying.add(problem.id, problem, result, name, rows[name], given)
+    errors: list[str] = []
+    carrying.carry(errors)
+    if errors:
+        raise RuntimeError(errors[0])
+    return rows
+
+
+def reported(result: Any, name: str) -> Any:
+    """An answer's values as solved, or a step's (a question of `steps:`)."""
+    answer = result.answers.get(name)
+    if answer is not None:
+        return answer
+    from .ecf import step_reported
+
+    return step_reported(result, name)
+
+
+class Carrying:
+    """A student's graded items, problem by problem, for errors carried forward."""
+
+    def __init__(self, credit: dict[str, float] | None) -> None:
+        from .ecf import policy_share
+
+        self.share = policy_share(credit)
+        self.by_problem: dict[str, tuple[Any, Any, list[Any]]] = {}
+
+    def add(self, key: str, problem: Any, result: Any, name: str, row: GradeRow,
+            values: list[Any] | None) -> None:
+        if self.share is None or not values or not hasattr(result, "solution"):
+            return
+        from .ecf import Item, step_tolerance
+
+        spec = problem.kind.answer(name)
+        if spec is None:
+            dimension = reported(result, name).dimension
+            tolerance = step_tolerance(problem, name, dimension)
+        else:
+            dimension = spec.dimension
+            tolerance = tolerance_for(problem.tolerance, name, dimension,
+                                      [a.name for a in problem.kind.answers])
+        entry = self.by_problem.setdefault(key, (problem, result, []))
+        entry[2].append(Item(name, row, list(values), dimension, tolerance, spec is None))
+
+    def carry(self, errors: list[str]) -> None:
+        """Give each problem's carried credit (a failure here is an internal error of that
+        problem, its rows graded as they were)."""
+        from .ecf import carry
+
+        if self.share is None:
+            return
+        for problem, result, items in self.by_problem.values():
+            if not any(it.row.result in ("wrong", "partial") for it in items):
+                continue
+            slipped = {it.name for it in items if "[credit " in it.row.note}
+            try:
+                carry(items, problem, result, _graph(result), self.share, slipped)
+            except InputError:
+                continue
+            except Exception as err:  # a bug: said, and the rows keep their grades
+                from ..core.errors import internal_message
+
+                line = internal_message(problem.file, err)
+                if line not in errors:
+                    errors.append(line)
+
+
+_GRAPHS: dict[int, tuple[Any, Any]] = {}
+
+
+def _graph(result: Any) -> Any:
+    """The dependency graph of a solved problem, made once per solve."""
+    from ..solving.deps import graph
+
+    cached = _GRAPHS.get(id(result))
+    if cached is None or cached[0] is not result:
+        if len(_GRAPHS) > 256:
+            _GRAPHS.clear()
+        cached = _GRAPHS[id(result)] = (result, graph(result.problem, result))
+    return cached[1]
 
 
 def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
@@ -396,7 +496,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     seen_files: dict[str, str] = {}
     for row in plan.rows:
         seen_files[os.path.realpath(row.file)] = row.variant
-        keyed = _from_key(stored_key, row) if stored_key else None
+        # errors carried forward solve again: the stored answers are not enough
+        keyed = _from_key(stored_key, row) if stored_key and "ecf" not in (credit or {}) \
+            else None
         if keyed is not None:
             variants[row.variant], stored[row.variant] = keyed
             continue
@@ -416,8 +518,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     for row in plan.rows:
         if row.problem not in questions:
             problem = variants[row.variant]
-            questions[row.problem] = list(dict.fromkeys(list(problem.find) +
-                                                        list(problem.expected)))
+            steps = list(getattr(problem, "steps", []))
+            questions[row.problem] = list(dict.fromkeys(steps + list(problem.find) + [
+                n for n in problem.expected if problem.kind.answer(n) is not None]))
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
@@ -450,7 +553,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 note = (f"answered variant {other.variant} (student {other.student}'s numbers); "
                         f"graded on their own variant {own.variant}")
         problem = variants[own.variant]
-        if problem.kind.answer(s.answer) is None:
+        if problem.kind.answer(s.answer) is None and \
+                s.answer not in getattr(problem, "steps", []):
             names = ", ".join(a.name for a in problem.kind.answers)
             raise InputError(f"problem {own.problem!r} has no answer {s.answer!r} (answers: "
                              f"{names})", **where)
@@ -472,9 +576,11 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             continue
         find = dict(problem.find)
         for name in questions[plan.by_variant[variant].problem]:
-            find.setdefault(name, None)
+            if problem.kind.answer(name) is not None:  # not a step (`steps:`)
+                find.setdefault(name, None)
         try:
             solved[variant] = solve(dataclasses.replace(problem, find=find))
+            check_steps(problem, solved[variant])
         except InputError as err:
             raise err.located(file=problem.file) from None
         except Exception as err:  # a bug: this variant's rows are errors, the rest is graded
@@ -490,6 +596,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         total = maximum = 0.0
         rows: list[GradeRow] = []
         wrong: dict[str, tuple[Any, dict[str, list[Any]]]] = {}
+        carrying = Carrying(credit)
         for own in (plan.by_item[(student, pid)] for pid in assigned_problems
                     if (student, pid) in plan.by_item):
             problem = variants[own.variant]
@@ -506,7 +613,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 else:
                     try:
                         row = grade_item(student, problem, name,
-                                         solved[own.variant].answers[name], values, credit)
+                                         reported(solved[own.variant], name), values, credit)
+                        carrying.add(own.variant, problem, solved[own.variant], name, row,
+                                     values)
                     except Exception as err:  # a bug: this row is an error
                         from ..core.errors import internal_message
 
@@ -525,8 +634,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                     row.feedback = "; ".join([f"graded on your own variant {own.variant}"]
                                              + ([row.feedback] if row.feedback else []))
                 rows.append(row)
-                total += row.points
                 maximum += row.max_points
+        carrying.carry(graded.errors)
+        total = sum(row.points for row in rows)
         if submitter is None:  # --student: the submitter's output must not confirm whose
             _name_match(rows, whose(lookup, student, wrong, len(plan.students)))
         graded.rows += rows
@@ -615,7 +725,10 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
         return None
     about = key["problems"].get(row.problem)
     try:
-        if file_digest(read_bytes(row.file, MAX_FILE_BYTES)) != entry.get("sha256"):
+        data = read_bytes(row.file, MAX_FILE_BYTES)
+        if file_digest(data) != entry.get("sha256"):
+            return None
+        if re.search(rb"^steps\s*:", data, re.M):  # steps asked: graded from the worked answer
             return None
         kind = kinds.get(about["kind"])
         answers = {name: Reported(**value) for name, value in entry["answers"].items()}
@@ -637,20 +750,27 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     named slips (SLIP_NAMES), e.g. {"2pi": 0.5}; a slip with the sign as well needs both.
     """
     spec = problem.kind.answer(name)
-    names = [a.name for a in problem.kind.answers]
-    tolerance = tolerance_for(problem.tolerance, name, spec.dimension, names)
+    if spec is None:  # a step of the worked answer asked as a question (`steps:`)
+        from .ecf import step_tolerance
+
+        dimension = reported.dimension
+        tolerance = step_tolerance(problem, name, dimension)
+    else:
+        dimension = spec.dimension
+        names = [a.name for a in problem.kind.answers]
+        tolerance = tolerance_for(problem.tolerance, name, dimension, names)
     correct = _correct_text(reported)
     row = GradeRow(student, problem.id, name, "", correct, None, "missing", 0.0)
     if not values:
         row.note = "no answer submitted"
         return row
     row.submitted = _submitted(values)
-    if spec.dimension is None:
+    if dimension is None:
         return _grade_words(row, values, reported)
     parsed = []
     for value in values:
         try:
-            parsed.append(parse_value(value, spec.dimension, name))
+            parsed.append(parse_value(value, dimension, name))
         except InputError as err:
             row.result, row.note = "invalid", err.message
             row.feedback = err.message
@@ -741,9 +861,10 @@ def parse_credit(text: str) -> dict[str, float]:
             continue
         name, eq, value = part.partition("=")
         name = name.strip().lower()
-        if not eq or name not in SLIP_NAMES:
+        if not eq or (name not in SLIP_NAMES and name != "ecf"):
             raise InputError(f"--credit: expected slip=fraction with a slip among "
-                             f"{', '.join(SLIP_NAMES)}, got {part!r}")
+                             f"{', '.join(SLIP_NAMES)}, or ecf=fraction (errors carried "
+                             f"forward), got {part!r}")
         try:
             share = float(value)
         except ValueError:

@@ -255,6 +255,9 @@ def schema() -> dict[str, Any]:
             "ask": {"type": "array", "minItems": 1, "items": {"type": "string"},
                     "description": "the answers (of find and expected) the statement asks; "
                                    "a question bank asks only these"},
+            "steps": {"type": "array", "minItems": 1, "items": {"type": ["string", "number"]},
+                      "description": "symbols of worked-answer steps graded as questions "
+                                     "(`gyro solve --format json` lists them)"},
             "units": {"enum": ["si", "us", "SI", "US"],
                       "description": "the worked answer in SI (default) or slug, ft, lbf"},
             "vary": {"type": "object", "description": "for `gyro vary`: given key -> [low, high]"
@@ -460,7 +463,8 @@ def each_variant(path: str, count: int, seed: int) -> Iterator[tuple[str, str]]:
         raise err.located(file=path, line=problem.line(err.key)) from None
     base = copy.deepcopy(problem.data)
     base.pop("vary", None)
-    keyed = list(problem.expected) or list(problem.find)
+    keyed = [name for name in problem.expected if problem.kind.answer(name) is not None] \
+        or list(problem.find)  # not `steps` nor a step asked (`steps:`)
     rng = random.Random(seed)
     stem = os.path.splitext(os.path.basename(path))[0]
     width = max(2, len(str(count)))
@@ -557,7 +561,7 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     if solved is not None:
         solved.append(result)
     order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
-             "expected", "tolerance", "ask"]
+             "expected", "tolerance", "ask", "steps"]
     return {k: data[k] for k in order if k in data}
 
 

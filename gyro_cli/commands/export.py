@@ -37,6 +37,8 @@ if TYPE_CHECKING:
     from ..solving.problem import Problem
 
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
+#: the share of a point for a carried error in a PrairieLearn question (--ecf)
+DEFAULT_ECF = 0.5
 #: the formats written as one file
 FILE_FORMATS = ("moodle", "qti", "blackboard")
 #: what a blank accepts where the problem's tolerance is tighter than the significant
@@ -85,7 +87,8 @@ def _scale(value: float, si: float, unit: str, dimension: str) -> float:
 def _asked(problem: "Problem", ask: tuple[str, ...] | None) -> list[str]:
     """The answers a bank asks: ``--ask`` (those this problem finds), else the file's
     `ask`, else every answer of `find` and `expected`."""
-    names = list(dict.fromkeys([*problem.find, *problem.expected]))
+    names = list(dict.fromkeys([*problem.find, *(n for n in problem.expected
+                                                 if problem.kind.answer(n) is not None)]))
     if ask is not None:
         return [name for name in names if name in ask]
     return problem.ask or names
@@ -121,7 +124,7 @@ def rounding(value: float, digits: int) -> float:
 
 
 def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Tolerance",
-            tight: list[str], used: set[str]) -> list["Blank"]:
+            tight: list[str], used: set[str], parts: list | None = None) -> list["Blank"]:
     """One blank per numeric value of the answers asked. Each accepts the value as the
     worked answer prints it (core.expr.SIG significant figures): where the problem's tolerance
     is tighter than that, the student tolerance (``student``) is used and the answer's name
@@ -157,6 +160,32 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
             out.append(Blank(key, text, float(value), unit, half, tol.text, used_tol.form,
                              fraction, accepts=accepts(used_tol, half, unit),
                              digits=digits))
+            if parts is not None:  # what each blank is, for errors carried forward
+                from ..checking.ecf import Part
+
+                parts.append(Part(key, name, i, False, unit, spec.dimension))
+    return out
+
+
+def _step_blanks(problem: "Problem", solved: Any, student: "Tolerance", used: set[str],
+                 parts: list) -> list["Blank"]:
+    """One blank per step the problem asks (`steps:`), in SI, before the answers."""
+    from ..checking.ecf import Part, step_names, step_tolerance
+    from ..core.expr import SIG as digits
+    from ..render.bank import Blank, slug
+
+    out: list[Blank] = []
+    steps = step_names(solved)
+    for symbol in problem.steps:
+        value, unit, dimension = steps[symbol]
+        tol = step_tolerance(problem, symbol, dimension)
+        key = _key("step_" + slug(symbol).replace("-", "_"), "", 0, False, set(), used)
+        half, used_tol = _width(tol, student, value, tol.half_width(value, value), digits)
+        fraction = used_tol.value if used_tol.form != "absolute" else half
+        out.append(Blank(key, f"{symbol} (a step of the working)", float(value), unit, half,
+                         tol.text, used_tol.form, fraction,
+                         accepts=accepts(used_tol, half, unit), digits=digits))
+        parts.append(Part(key, symbol, 0, True, unit, dimension))
     return out
 
 
@@ -214,7 +243,8 @@ def _with_expected(problem: "Problem") -> "Problem":
 
     find = dict(problem.find)
     for name in problem.expected:
-        find.setdefault(name, None)
+        if problem.kind.answer(name) is not None:  # not a step's (`steps:`)
+            find.setdefault(name, None)
     return dataclasses.replace(problem, find=find)
 
 
@@ -225,7 +255,8 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
 
 def variant_of(problem: "Problem", number: int, title: str,
                ask: tuple[str, ...] | None = None, student: "Tolerance | None" = None,
-               tight: list[str] | None = None, pictures: bool = False) -> "Variant":
+               tight: list[str] | None = None, pictures: bool = False,
+               ecf_share: float = DEFAULT_ECF) -> "Variant":
     """One problem solved and laid out as a bank's variant; its question text is its
     `statement` filled from its own given values (core/statement.py), else a sentence
     built from ``title``, its data and what is asked, then the precision asked and the
@@ -243,13 +274,20 @@ def variant_of(problem: "Problem", number: int, title: str,
     student = student or parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
     asked = _asked(problem, ask)
     problem = _with_expected(problem)
-    solved = solve(problem)
+    solved = si_solved = solve(problem)
+    if problem.steps:
+        from ..checking.ecf import check_steps
+
+        check_steps(problem, solved)
     if problem.units == "us":
         from ..render.us_units import to_us
 
         solved = to_us(solved)
     used: set[str] = set()  # the keys given so far (numbers and choices share them)
-    blanks = _blanks(problem, solved, asked, student, tight if tight is not None else [], used)
+    parts: list = []
+    blanks = _step_blanks(problem, si_solved, student, used, parts) if problem.steps else []
+    blanks += _blanks(problem, solved, asked, student, tight if tight is not None else [],
+                      used, parts)
     choices = _choices(problem, solved, asked, used)
     given = {str(k): v if isinstance(v, str) else str(v)
              for k, v in (problem.data.get("given") or {}).items()}
@@ -265,8 +303,23 @@ def variant_of(problem: "Problem", number: int, title: str,
                  getattr(problem.kind.answer(name), "dimension", None) is None
                  or any(isinstance(v, str) for v in answer.values))]
     figure, alt = _picture(shown) if pictures else (b"", "")
-    return Variant(number, str(problem.id), given, text, feedback, blanks, words, choices,
-                   figure, alt)
+    variant = Variant(number, str(problem.id), given, text, feedback, blanks, words, choices,
+                      figure, alt)
+    if problem.steps:  # errors carried forward across the blanks (PrairieLearn's grade())
+        from ..checking.ecf import table
+
+        variant.carry = {"share": ecf_share, "from": table(problem, si_solved, parts),
+                         "labels": {p.key: p.name for p in parts if p.is_step}}
+    return variant
+
+
+def _lost_line(path: str, variant: "Variant") -> str:
+    """Which blanks of a problem follow from which steps (what a format without a
+    question-wide grader loses)."""
+    labels = {b.key: b.label for b in variant.blanks}
+    parts = [f"{', '.join(labels[t] for t in table['to'])} from {labels[source]}"
+             for source, table in variant.carry["from"].items()]
+    return f"{path}: errors carried forward: {'; '.join(parts)}"
 
 
 def _picture(solved: Any) -> tuple[bytes, str]:
@@ -294,7 +347,8 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
 def stream(paths: list[str] | tuple[str, ...], sink: "Sink", count: int = 1, seed: int = 0,
            warn: Callable[[str], None] = lambda line: None,
            ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
-           pictures: bool = False) -> tuple[list["ProblemBank"], list[str]]:
+           pictures: bool = False, ecf_share: float = 0.5, lost: list[str] | None = None
+           ) -> tuple[list["ProblemBank"], list[str]]:
     """`banks`, each variant handed to ``sink`` as it is solved (render/bank_stream.py)
     instead of held: the banks as the sink commits them (without their variants, for a
     sink that writes them out) and the lines of the files that could not be exported."""
@@ -332,8 +386,11 @@ def stream(paths: list[str] | tuple[str, ...], sink: "Sink", count: int = 1, see
             asking = 0  # the variants that ask
             said: dict[str, None] = {}  # the word answers not asked
             for n, p in enumerate(problems, 1):
-                variant = variant_of(p, n, problem.title, ask, student, tight, pictures)
+                variant = variant_of(p, n, problem.title, ask, student, tight, pictures,
+                                     ecf_share)
                 said.update(dict.fromkeys(variant.unasked))
+                if n == 1 and variant.carry.get("from") and lost is not None:
+                    lost.append(_lost_line(path, variant))
                 if variant.asks:
                     asking += 1
                     sink.add(variant)
@@ -533,9 +590,15 @@ def _blackboard_notes(records: int, choices: bool, warn: Callable[[str], None]) 
 @click.option("--pictures/--no-pictures", default=True, show_default=True,
               help="Package the worked answer's picture (a released top's axis path, a "
                    "bicycle's eigenvalues) as a PNG with the feedback (not in blackboard).")
+@click.option("--ecf", "ecf_share", type=click.FloatRange(0, 1), default=DEFAULT_ECF,
+              show_default=True,
+              help="prairielearn: the share of a point for an answer right for the "
+                   "student's own wrong earlier step (a file's `steps:`), errors carried "
+                   "forward by the question's grade(); the teacher's choice.")
 @click.option("--force", is_flag=True, help="Replace files of OUT that exist.")
 def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
-           ask_text: str | None, tolerance: str, pictures: bool, force: bool) -> None:
+           ask_text: str | None, tolerance: str, pictures: bool, ecf_share: float,
+           force: bool) -> None:
     """Export problem FILES as a question bank whose every answer is gyro's.
 
     FILES may be directories (every *.yaml and *.yml in them) or quoted globs.
@@ -555,8 +618,14 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
         warn(str(err))
         sys.exit(2)
     sink = sink_for(fmt)
+    lost: list[str] = []
     made, errors = stream(files, sink, count, seed, warn, ask, tolerance,
-                          pictures and fmt != "blackboard")
+                          pictures and fmt != "blackboard", ecf_share, lost)
+    if fmt != "prairielearn":
+        for line in lost:
+            warn(f"{line}; a {fmt} question grades each blank alone, so these lose errors "
+                 "carried forward: regrade the responses with gyro check --answers ... "
+                 "--credit ecf=S")
     for line in errors:
         warn(line)
     if not made:

@@ -146,7 +146,8 @@ class RosterSet:
 
 def _keyed(problem: Any) -> list[str]:
     """The answers a variant's `expected` gives: the file's expected ones, else its find."""
-    return list(problem.expected) or list(problem.find)
+    return [name for name in problem.expected if problem.kind.answer(name) is not None] \
+        or list(problem.find)  # not `steps` nor a step asked (`steps:`)
 
 
 def roster_set(paths: list[str], roster: str, seed: int) -> RosterSet:

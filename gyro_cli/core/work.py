@@ -179,8 +179,12 @@ def prose_step(pieces: tuple) -> Step:
 class Work:
     """Builder the kinds write into."""
 
-    def __init__(self) -> None:
+    def __init__(self, overrides: dict[str, float] | None = None) -> None:
         self.given: list[GivenLine] = []
+        #: step symbol -> SI value that replaces the first step of that symbol's value
+        #: (a student's own value carried forward, checking/ecf.py); None: the solver's
+        self.overrides = overrides
+        self.overridden: set[str] = set()
         self.sections: list[Section] = []
         self.answers: dict[str, Answer] = {}
         self.warnings: list[str] = []
@@ -238,6 +242,8 @@ class Work:
                                  f"for these data ({err}): a degenerate case, or magnitudes "
                                  "beyond double precision; check the data and units",
                                  key="given") from None
+            if self.overrides is not None:
+                value = self._override(symbol, value)
             si = None
             if unit in SHOWN:
                 si = (value, SHOWN[unit][1])
@@ -246,9 +252,22 @@ class Work:
                 symbol, _PRINT if state else "", _PRINT if substitute else "", value, unit,
                 ref, note, expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
+        if self.overrides is not None and value is not None:
+            factor = SHOWN[unit][0] if unit in SHOWN else 1.0
+            value = self._override(symbol, value * factor) / factor
         self._current().steps.append(Step(symbol, "", "", value, unit, ref, note,
                                           prose=prose, symbol_expr=symbol_expr))
         return value
+
+    def _override(self, symbol: str, si: float) -> float:
+        """The SI value of the step ``symbol``: the override for its first step, if any
+        (the kind then works on from it, as a student who carried it would)."""
+        assert self.overrides is not None
+        if symbol in self.overrides and symbol not in self.overridden:
+            self.overridden.add(symbol)
+            return self.overrides[symbol]
+        self.overridden.add(symbol)
+        return si
 
     def text(self, *pieces: str | Expr) -> None:
         """Add a line of prose to the current section: words (strings) and maths (trees,

@@ -70,6 +70,9 @@ class Variant:
     choices: list[Choice] = field(default_factory=list)  # word answers asked (multiple choice)
     figure: bytes = b""       # the worked answer's picture as PNG (b"": none)
     figure_alt: str = ""      # what it shows, in words
+    #: errors carried forward: a step blank's key -> its values on a grid ("at") and each
+    #: later blank's value with it carried ("to"); checking/ecf.py `table`
+    carry: dict = field(default_factory=dict)
 
     @property
     def figure_name(self) -> str:

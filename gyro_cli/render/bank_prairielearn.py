@@ -121,6 +121,84 @@ def generate(data):
 '''
 
 
+# Errors carried forward across the inputs (a problem with `steps:`), standing alone: each
+# variant holds, for each step input, the later inputs' values with that step carried at
+# points of a grid (gyro's solver at export; checking/ecf.py `table`), and grade()
+# interpolates at the student's own value. One wrong step is carried at a time.
+GRADE = '''
+
+def _place(raw, number):
+    """Half a unit of the last digit written in the raw input ("1.95e-4": 5e-7), at most
+    that of its third significant figure (a round 0.02 is no claim of one figure)."""
+    import math
+    import re
+
+    match = re.match(r"\\s*[-+]?(\\d*)(?:\\.(\\d*))?(?:[eE]([-+]?\\d+))?", str(raw or ""))
+    if not match or not (match.group(1) or match.group(2)) or not number:
+        return 0.0
+    third = 0.5 * 10.0 ** (math.floor(math.log10(abs(number))) - 2)
+    return min(0.5 * 10.0 ** (int(match.group(3) or 0) - len(match.group(2) or "")), third)
+
+
+def _at(xs, ys, x):
+    """ys at x, linear in log x between the grid's points; None outside it or where the
+    problem has no solution."""
+    import math
+
+    if not x > 0 or not xs[0] <= x <= xs[-1]:
+        return None
+    for k in range(1, len(xs)):
+        if x <= xs[k]:
+            if ys[k - 1] is None or ys[k] is None:
+                return None
+            t = (math.log(x) - math.log(xs[k - 1])) / (math.log(xs[k]) - math.log(xs[k - 1]))
+            return ys[k - 1] + t * (ys[k] - ys[k - 1])
+    return None
+
+
+def grade(data):
+    """Errors carried forward: a wrong input that is right for the student's own wrong
+    earlier step earns the share (not from a stock 0 or 1, nor from a step that barely
+    moves it); the score is then the weighted mean of the parts."""
+    variant = VARIANTS[int(data["variant_seed"]) % len(VARIANTS)]
+    carry = variant.get("ecf")
+    scores = data.get("partial_scores", {})
+    if carry:
+        for source, table in carry["from"].items():
+            _carry(data, variant, carry, source, table, scores)
+    weights = [(p.get("score") or 0.0, p.get("weight", 1)) for p in scores.values()]
+    if weights and sum(w for _, w in weights):
+        data["score"] = sum(s * w for s, w in weights) / sum(w for _, w in weights)
+
+
+def _carry(data, variant, carry, source, table, scores):
+    own = data.get("submitted_answers", {}).get(source)
+    part = scores.get(source)
+    if part is None or (part.get("score") or 0) >= 1 or not isinstance(own, (int, float)):
+        return
+    raw = data.get("raw_submitted_answers", {}).get(source, own)
+    if own in (0, 1, -1):
+        return  # a stock value: no follow-through
+    for target, ys in table["to"].items():
+        later, got = scores.get(target), data.get("submitted_answers", {}).get(target)
+        if later is None or (later.get("score") or 0) >= 1 or not isinstance(got, (int, float)):
+            continue
+        carried = _at(table["at"], ys, own)
+        if carried is None:
+            continue
+        atol = float(variant["atol"][target])
+        if abs(carried - variant["answers"][target]) <= atol:
+            continue  # the step barely moves this answer
+        moved = _at(table["at"], ys, own + _place(raw, own))
+        widen = abs(moved - carried) if moved is not None else 0.0
+        if abs(got - carried) <= atol + widen:
+            later["score"] = max(later.get("score") or 0.0, carry["share"])
+            note = "consistent with your %s = %s (ECF)" % (carry["labels"][source], raw)
+            later["feedback"] = note
+            data.setdefault("feedback", {})[target] = note
+'''
+
+
 def _correct(choice: Choice, words: tuple[str, ...]) -> dict[str, str]:
     """Each word of the question's choice (c1, c2, ...): "true" for this variant's."""
     return {f"c{n}": "true" if word == choice.answer else "false"
@@ -143,7 +221,8 @@ def variant_entry(v: Variant, words: dict[str, tuple[str, ...]],
             "answers": {b.key: b.value for b in v.blanks},
             "atol": {b.key: number_text(b.half_width) for b in v.blanks},
             "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
-            "figure": v.figure_name if pictured else "", "figure_alt": v.figure_alt}
+            "figure": v.figure_name if pictured else "", "figure_alt": v.figure_alt} | (
+                {"ecf": v.carry} if v.carry else {})
 
 
 def server_pieces(bank: ProblemBank, entries: Iterable[dict]) -> Iterator[str]:
@@ -153,12 +232,14 @@ def server_pieces(bank: ProblemBank, entries: Iterable[dict]) -> Iterator[str]:
     doc = doc.replace("\\", "/").replace('"', "'")
     head, tail = SERVER.split("{variants}")
     yield head.format(doc=f"{doc} ({bank.kind})") + "'["
+    carries = False
     for n, entry in enumerate(entries):
+        carries = carries or "ecf" in entry
         text = json.dumps(entry, ensure_ascii=True, allow_nan=False)
         # JSON always holds a double quote, so repr quotes it in single quotes: the
         # repr of the whole list is the reprs of its parts between one pair of them.
         yield (", " if n else "") + repr(text + '"')[1:-2]
-    yield "]'" + tail.format()
+    yield "]'" + tail.format() + (GRADE if carries else "")
 
 
 def files(banks: list[ProblemBank]) -> dict[str, str | bytes]:

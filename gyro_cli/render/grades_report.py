@@ -237,6 +237,7 @@ def write_out(graded: Graded, out: str, fmt: str, force: bool,
 # ---- feedback: a short page per student -------------------------------------------------
 
 RESULT_WORDS = {"correct": "right", "partial": "partly right", "wrong": "off",
+                "carried": "right for your own earlier values (error carried forward)",
                 "invalid": "not readable", "missing": "not answered", "extra": "not asked",
                 "error": "not graded (gyro failed on the problem)"}
 

@@ -109,3 +109,11 @@ def as_json(result: Result) -> str:
     import json  # only for --format json
 
     return json.dumps(as_dict(result), allow_nan=False)
+
+
+def graph_data(result: Result) -> dict[str, Any]:
+    """What each step and answer of a solve uses and depends on (`solving.deps`): the
+    ``graph`` of ``gyro solve --format json``, which errors carried forward follow."""
+    from ..solving.deps import as_data, graph
+
+    return as_data(graph(result.problem), list(result.answers))

@@ -21,7 +21,7 @@ from ..core.given import Given
 from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
-            "tolerance", "vary", "units", "ask")
+            "tolerance", "vary", "units", "ask", "steps")
 UNIT_SYSTEMS = ("si", "us")
 REQUIRED = ("id", "kind", "given", "find")
 _TOP_KEY_SET = frozenset(TOP_KEYS)
@@ -50,6 +50,8 @@ class Problem:
     units: str = "si"  # the worked answer's units: "si", or "us" (slug, ft, lbf)
     statement: str = ""  # as written, with {key} placeholders (core/statement.py)
     ask: list[str] = field(default_factory=list)  # the answers the statement asks ([]: all)
+    #: worked-answer steps graded as questions, by symbol (checked against a solve)
+    steps: list[str] = field(default_factory=list)
 
     def statement_text(self) -> str:
         """The statement with each {key} filled from `given` as written ("" if none)."""
@@ -227,12 +229,27 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
         file=path, id=_id(data["id"]), kind=kind, given=given, quantities=quantities,
         find=parse_find(kind, data["find"]), title=_text(data.get("title", ""), "title"),
         source=_text(data.get("source", ""), "source"), notes=_notes(data.get("notes")),
-        expected=_expected(kind, data.get("expected")), tolerance=data.get("tolerance"),
+        expected=_expected(kind, data.get("expected"), _steps(data.get("steps"))),
+        tolerance=data.get("tolerance"),
         vary=data.get("vary"), data=data, lines=lines, us_customary=us,
         units=_unit_system(data.get("units", "si")),
         statement=_statement(data.get("statement"), data["given"]))
     problem.ask = _ask(data.get("ask"), problem.find, problem.expected)
+    problem.steps = _steps(data.get("steps"))
     return problem
+
+
+def _steps(value: Any) -> list[str]:
+    """``steps``: symbols of worked-answer steps asked as questions (``[m, I, M]``); that
+    each is a step of the worked answer is checked once the problem is solved."""
+    if value is None:
+        return []
+    names = value if isinstance(value, list) else [value]
+    if not names or not all(isinstance(n, (str, int, float)) and not isinstance(n, bool)
+                            and str(n).strip() for n in names):
+        raise InputError(f"expected a list of step symbols of the worked answer, e.g. [m, I, M], "
+                         f"got {shown(value)}", key="steps")
+    return list(dict.fromkeys(str(n).strip() for n in names))
 
 
 def _ask(value: Any, find: dict[str, Any], expected: dict[str, Any]) -> list[str]:
@@ -595,7 +612,7 @@ def parse_find(kind: Kind, raw: Any) -> dict[str, str | None]:
     return find
 
 
-def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
+def _expected(kind: Kind, raw: Any, steps: list[str] | None = None) -> dict[str, Any]:
     if raw is None:
         return {}
     if not isinstance(raw, dict):
@@ -607,8 +624,8 @@ def _expected(kind: Kind, raw: Any) -> dict[str, Any]:
                 raise InputError("expected a mapping of the worked answer's step symbols to "
                                  "values, e.g. {omega_z: 1850 rpm}", key="expected.steps")
             continue
-        if kind.answer(str(name)) is None:
-            names = [a.name for a in kind.answers]
+        if kind.answer(str(name)) is None and str(name) not in (steps or []):
+            names = [a.name for a in kind.answers] + (steps or [])
             raise InputError(f"unknown answer{suggest(str(name), names)} (answers: "
                              f"{', '.join(names)})", key=f"expected.{name}")
     return dict(raw)

@@ -41,10 +41,13 @@ def solve_file(path: str) -> Result:
     return solve(load(path))
 
 
-def solve(problem: Problem) -> Result:
-    """Solve a loaded problem; InputError (located in the file) if it cannot be."""
+def solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result:
+    """Solve a loaded problem; InputError (located in the file) if it cannot be.
+
+    ``overrides``: step symbol -> SI value taking the place of the first step of that
+    symbol, the kind working on from it (errors carried forward, solving/deps.py)."""
     try:
-        return _solve(problem)
+        return _solve(problem, overrides)
     except InputError as err:
         if _NOT_FINITE.search(re.sub(r"'[^'\n]*'", "''", err.message)):
             # A kind's check whose message would print inf or nan (m l^2 = inf kg m^2):
@@ -54,9 +57,9 @@ def solve(problem: Problem) -> Result:
         raise err.located(file=problem.file, line=problem.line(err.key)) from None
 
 
-def _solve(problem: Problem) -> Result:
+def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result:
     unfinite = Sym.unfinite  # symbols made so far with a value that is not finite
-    work = Work()
+    work = Work(overrides)
     work.given.extend(_given_lines(problem))
     kind = problem.kind
     _data_as_stated(problem, work)
