@@ -360,7 +360,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("--out-format goes with --out FILE")
     if reveal and not (feedback_dir or out_format in ("gradescope", "prairielearn")):
         fail("--reveal goes with --feedback DIR or --out-format gradescope|prairielearn")
-    from .checking import grades
+    from .api import grade
     from .render import grades_report
 
     read = [sheet]  # and, graded by assignment, what grades_report.graded_inputs adds
@@ -372,9 +372,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         _outputs_apart(read, out=out)
 
     try:
-        policy = grades.parse_credit(credit) if credit is not None else None
-        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy,
-                              student=student, reveal=reveal)
+        graded = grade(sheet, paths, assignment=assignment, credit=credit, student=student,
+                       reveal=reveal)
         if out:
             grades_report.write_out(graded, out, out_format, force, read, reveal)
         if feedback_dir:
@@ -397,50 +396,29 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                found: tuple[list[str], list[tuple[str, str]]] | None = None) -> None:
     """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
     as it comes, in the files' order, then the summary; exits with the run's code."""
-    from itertools import chain
-
-    from .checking import check as checking
-    from .checking.results import Tally
+    from .api import check_stream
     from .render import check_report, junit
 
     def printed(problem):  # type: ignore[no-untyped-def]
         return check_report.printed(problem, fmt, junit_file is not None)
 
-    checked = None
     try:
-        if merge:
-            results, shards = map(printed, checking.merged(paths, strict)), None
-        else:
-            files, missing = checking.collect(paths, found)
-            if shard:
-                k, n = shards = checking.parse_shard(shard)
-                files = [f for f in files if checking.shard_of(f, n) == k]
-                missing = [m for m in missing if checking.shard_of(m.file, n) == k]
-            else:
-                shards = None
-            if html_file:  # the page needs every worked answer: checked here, kept
-                from .api import check_files
-
-                report = check_files([m.file for m in missing] + files, strict=strict)
-                results = map(printed, report.run.problems)
-            else:
-                # each file's report text is made where it is checked: in the workers
-                checked = checking.checks(files, strict, jobs, timeout, then=printed,
-                                          idle=sys.stdout.flush)
-                results = chain(map(printed, missing), checked)
+        run = check_stream(paths, strict=strict, jobs=jobs, timeout=timeout, shard=shard,
+                           merge=merge, worked=bool(html_file), then=printed,
+                           idle=sys.stdout.flush, found=found)
         if junit_file:
             from .core.files import refuse_special
 
             refuse_special(junit_file)  # before the run, not after it
     except InputError as err:
         fail(err)
-    tally = Tally(strict)
+    tally = run.tally
     spool = junit.Spool() if junit_file else None
     stream = check_report.JsonStream() if fmt == "json" else None
     click.echo(stream.head() if stream else check_report.table_head(), nl=False)
     write = sys.stdout.write  # flushed when the next result is not ready (idle), not per file
     try:
-        for problem in results:
+        for problem in run.results:
             if problem.error:
                 sys.stdout.flush()  # the report so far, then its error on stderr
                 click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
@@ -449,9 +427,8 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                 spool.add_text(*problem.junit)
             write(stream.line(problem.report) if stream else problem.report)
     finally:
-        if checked is not None:
-            checked.close()  # a reader that left, or Ctrl-C: the workers end now
-    click.echo(stream.tail(tally, shards) if stream else check_report.summary_line(tally))
+        run.close()  # a reader that left, or Ctrl-C: the workers end now
+    click.echo(stream.tail(tally, run.shards) if stream else check_report.summary_line(tally))
     if spool:
         from .core.files import write_atomic
 
@@ -463,7 +440,7 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         from .core.files import write_atomic
 
         try:
-            write_atomic(html_file, report.html(page=True), force=force)
+            write_atomic(html_file, run.report.html(page=True), force=force)
         except InputError as err:
             fail(err)
     sys.exit(tally.exit_code)

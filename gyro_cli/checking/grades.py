@@ -25,7 +25,6 @@ The sheet is read like a problem file: only a regular file, at most
 from __future__ import annotations
 
 import csv
-import dataclasses
 import io
 import math
 from dataclasses import dataclass, field
@@ -295,10 +294,25 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     return conceal(graded, student, reveal) if student is not None else graded
 
 
+def _solved_for(problem: Any, names: Any, key: str, solved: dict[str, Any],
+                graded: Graded) -> None:
+    """``solved[key]``: the problem solved asking also for the answers ``names``. Bad input
+    stops the grading; a bug makes this problem's rows errors and the rest is graded."""
+    from ..solving.solve import solve_asking
+
+    try:
+        solved[key] = solve_asking(problem, names)
+    except InputError:
+        raise
+    except Exception as err:
+        from ..core.errors import internal_message
+
+        graded.errors.append(internal_message(problem.file, err))
+
+
 def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                  credit: dict[str, float] | None, submitter: str | None) -> Graded:
     """Every submission of ``sheet`` against the problem of its id under ``paths``."""
-    from ..solving.solve import solve
 
     submissions = read_sheet(sheet)
     if submitter is not None:
@@ -319,18 +333,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
     graded = Graded([])
     solved = {}
     for pid, names in asked.items():
-        problem = problems[pid]
-        find = dict(problem.find)
-        for name in names:
-            find.setdefault(name, None)
-        try:
-            solved[pid] = solve(dataclasses.replace(problem, find=find))
-        except InputError:
-            raise
-        except Exception as err:  # a bug: this problem's rows are errors, the rest is graded
-            from ..core.errors import internal_message
-
-            graded.errors.append(internal_message(problem.file, err))
+        _solved_for(problems[pid], names, pid, solved, graded)
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
     graded.sheet_students = students
@@ -379,7 +382,6 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
 
     from .assignment import load_variant, read_assignment, read_key
     from ..solving.problem import load
-    from ..solving.solve import solve
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
@@ -470,17 +472,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         if variant in stored:
             solved[variant] = stored[variant]
             continue
-        find = dict(problem.find)
-        for name in questions[plan.by_variant[variant].problem]:
-            find.setdefault(name, None)
-        try:
-            solved[variant] = solve(dataclasses.replace(problem, find=find))
-        except InputError as err:
-            raise err.located(file=problem.file) from None
-        except Exception as err:  # a bug: this variant's rows are errors, the rest is graded
-            from ..core.errors import internal_message
-
-            graded.errors.append(internal_message(problem.file, err))
+        _solved_for(problem, questions[plan.by_variant[variant].problem], variant, solved,
+                    graded)
     lookup = VariantIndex(plan, variants, solved)
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:

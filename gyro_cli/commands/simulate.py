@@ -21,7 +21,8 @@ from ..core.errors import InputError, terminal_text
 from ..core.work import num
 
 RPM = 2 * math.pi / 60
-KINDS = ("released_top", "steady_precession")
+#: what a kind may declare `gyro simulate` integrates (Kind.simulation), in message order
+SIMULATIONS = ("released", "steady")
 SAMPLES_PER_PERIOD = 200
 MAX_SAMPLES = 2_000_001
 CSV_HEADER = "t_s,theta_rad,phi_rad,psi_rad,thetadot_rad_s,phidot_rad_s,psidot_rad_s"
@@ -45,14 +46,17 @@ def prepare(path: str) -> Setup:
     from ..solving.solve import solve
 
     problem = load(path)
-    if problem.kind.name not in KINDS:
-        raise InputError(f"simulate integrates the heavy top: kinds {', '.join(KINDS)}; this "
+    if problem.kind.simulation not in SIMULATIONS:
+        from .. import kinds
+
+        raise InputError(f"simulate integrates the heavy top: kinds "
+                         f"{', '.join(kinds.offering('simulation', SIMULATIONS))}; this "
                          f"file is kind {problem.kind.name!r}", file=path, key="kind")
     result = solve(problem)        # every check the kind makes on its input
     given = problem.given
     body = given.body
     try:
-        if problem.kind.name == "released_top":
+        if problem.kind.simulation == "released":
             return _released(problem, given, body)
         return _steady(problem, given, body, result)
     except InputError as err:

@@ -6,6 +6,7 @@ from .record import field, record
 from typing import TYPE_CHECKING
 
 from .errors import InputError
+from .params import MISSING_KEY
 
 if TYPE_CHECKING:
     from .body import Body
@@ -31,7 +32,7 @@ class Given:
 
     def __getitem__(self, key: str) -> float:
         if key not in self.values:
-            raise InputError("this problem needs this key in `given`", key=f"given.{key}")
+            raise InputError(MISSING_KEY, key=f"given.{key}")
         value = self.values[key]
         if isinstance(value, str):
             raise InputError(f"expected a quantity, got the word {value!r}", key=f"given.{key}")

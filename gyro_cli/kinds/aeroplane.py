@@ -14,9 +14,8 @@ the gyroscopic couple on an aeroplane); S.S. Rattan, "Theory of Machines", ch. 1
 
 from __future__ import annotations
 
-import math
 
-from ..core.errors import InputError
+from ..core.errors import InputError, refuse_overflow
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
@@ -45,10 +44,6 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.body
     body.require("J")
     J = body.J
-    for key in ("spin", "speed", "turn_radius"):
-        if key not in given:
-            raise InputError("the aeroplane needs spin (engine speed), speed and turn_radius",
-                             key=f"given.{key}")
     spin, v, R = given["spin"], given["speed"], given["turn_radius"]
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:
@@ -80,10 +75,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section(*_COUPLE_TITLE)
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
-    if not math.isfinite(C):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(C)
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
     if sense:
@@ -97,6 +89,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         work.check(rel(_SIZE, "=", q(V.norm(active), "N m"), "=", C0, "=", q(C, "N m")))
 
 
+_NEEDS = "the aeroplane needs spin (engine speed), speed and turn_radius"
+
 KIND = Kind(
     name="aeroplane",
     summary="an aeroplane's engine and propeller on a turn: gyroscopic couple and whether it "
@@ -105,12 +99,13 @@ KIND = Kind(
     params=(
         Param("spin", "rate", "omega", "engine (propeller) speed, a positive rate; its sense in "
               "rotor_sense", nonnegative=True, reason="give the engine speed as a positive "
-              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)"),
+              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)", required=_NEEDS),
         Param("rotor_sense", "word", "sense", "sense of the engine seen from the front (nose) or "
               "the rear (tail, the pilot's view)", choices=V.AEROPLANE_SENSES),
         Param("speed", "speed", "v", "flying speed", nonnegative=True,
-              reason="the aeroplane flies forward"),
-        Param("turn_radius", "length", "R", "radius of the turn", positive=True),
+              reason="the aeroplane flies forward", required=_NEEDS),
+        Param("turn_radius", "length", "R", "radius of the turn", positive=True,
+              required=_NEEDS),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
     ),
     answers=(
@@ -121,8 +116,7 @@ KIND = Kind(
                    words=V.EFFECT_WORDS["aeroplane"]),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("An aeroplane makes a {turn} turn of radius {turn_radius} at {speed}. Its "
                       "engine and propeller have a mass of {mass} and a radius of gyration of "
                       "{k_axial}, and they turn at {spin}, {rotor_sense}. Find the gyroscopic "
@@ -131,5 +125,5 @@ KIND = Kind(
                   "rotor_sense": "clockwise seen from the rear", "speed": "200 km/h",
                   "turn_radius": "50 m", "turn": "left"},
         "find": {"couple": "N*m", "effect": None},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

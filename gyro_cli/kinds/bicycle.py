@@ -507,8 +507,9 @@ KIND = Kind(
         AnswerSpec("K2", "mass", "K2", "speed stiffness matrix (times v^2), same order"),
     ),
     solve=solve,
+    picture="eigenvalues", animation="lean_and_steer", physics=("gyro_cli.physics.bicycle",),
     uses_body=False,
-    extra={"example": {
+    example={
         "statement": ("The benchmark bicycle of Meijaard, Papadopoulos, Ruina and Schwab (2007) "
                       "rides straight ahead at "
                       "{speed}. Find the speeds at which the weave and the capsize modes change "
@@ -517,5 +518,5 @@ KIND = Kind(
         "given": {"preset": "benchmark", "speed": "5 m/s"},
         "find": {"weave_speed": "m/s", "capsize_speed": "m/s", "eigenvalues_real": "s^-1",
                  "eigenvalues_imag": "s^-1", "motion": None},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

@@ -352,7 +352,7 @@ KIND = Kind(
                    "360 deg"),
     ),
     solve=solve,
-    extra={"example": {
+    example={
         "statement": ("A directional gyro has its latitude nut set for {latitude_nut}. The "
                       "aircraft flies {direction} at a ground speed of {ground_speed} along "
                       "the parallel of {latitude} for {duration}; the gyro read "
@@ -362,5 +362,5 @@ KIND = Kind(
                   "direction": "east", "duration": "2 h", "initial_heading": "90 deg"},
         "find": {"drift_rate": "deg/h", "drift_sense": None, "transport_wander": "deg/h",
                  "indicated_heading": "deg"},
-        "vary": {"ground_speed": "[0.8, 1.2]"}}},
+        "vary": {"ground_speed": "[0.8, 1.2]"}},
 )

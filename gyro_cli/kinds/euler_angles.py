@@ -928,7 +928,7 @@ KIND = Kind(
         AnswerSpec("roll_rate", "rate", "rolldot", "zyx: roll rate"),
     ),
     solve=solve,
-    extra={"gravity": False, "example": {
+    gravity=False, example={
         "statement": ("A symmetric body with one point fixed has a moment of inertia of {I} about "
                       "each transverse axis and {J} about its symmetry axis, both through the "
                       "fixed point. At an instant when its Euler angles are phi = {phi}, theta = "
@@ -944,5 +944,5 @@ KIND = Kind(
         "find": {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s",
                  "kinetic_energy": "J", "angular_momentum": "kg*m^2/s",
                  "angular_acceleration": "rad/s^2", "moment": "N*m"},
-        "vary": {"theta": "[20 deg, 80 deg]"}}},
+        "vary": {"theta": "[20 deg, 80 deg]"}},
 )

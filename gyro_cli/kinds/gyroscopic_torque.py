@@ -39,13 +39,6 @@ RPM = 2 * math.pi / 60
 
 # ---- physics on floats ------------------------------------------------------
 
-def gyroscopic_moment(J: float, I: float, spin: float, precession: float, theta: float) -> float:
-    """Moment on the rotor along n = K x k / sin(theta): Omega sin th (J omega_z - I Omega cos th)."""
-    cos = cos_theta(theta)
-    axial = spin + precession * cos
-    return precession * math.sin(theta) * (J * axial - I * precession * cos)
-
-
 def precession_for_moment(J: float, I: float, spin: float, theta: float,
                           moment: float) -> list[float]:
     """Precession rates at which the moment along n is ``moment`` (roots, ascending).
@@ -115,11 +108,6 @@ def bearing_forces(mass: float, g: float, moment: float, spacing: float, cg_posi
         couple=(moment / L, -moment / L),
         side=(mass * toward * b / L, mass * toward * a / L),
         thrust=mass * (g * cos_theta(theta) + along_k))
-
-
-def counterweight_offset(moment: float, counterweight: float, g: float) -> float:
-    """How far the block moves from the balance point so its weight gives the moment: M / (m_c g)."""
-    return abs(moment) / (counterweight * g)
 
 
 # ---- the worked answer ------------------------------------------------------
@@ -306,18 +294,6 @@ def _spin(given: Given, work: Work) -> float:
         raise InputError("give the rotor's spin relative to the frame (or the vehicle's speed "
                          "and wheel_radius)", key="given.spin")
     return given["spin"]
-
-
-def tilt_rate_uniform(drop: float, speed: float, drop_length: float, spacing: float) -> float:
-    """Tilt rate of an axle when one wheel drops ``drop`` evenly over ``drop_length`` of track
-    at ``speed``: the drop takes t = s / v, the axle turns through drop / L in it."""
-    return drop * speed / (drop_length * spacing)
-
-
-def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
-    """Greatest tilt rate when one wheel falls ``drop`` and rises again in ``drop_time`` with
-    simple harmonic motion: y = (drop / 2)(1 - cos(2 pi t / T)), so y' peaks at pi drop / T."""
-    return math.pi * drop / (drop_time * spacing)
 
 
 _AXLE_TURNS = ("the axle turns through ", h0 / L0, " (small angle) while the wheel drops")
@@ -725,7 +701,8 @@ KIND = Kind(
                    "precession, ascending (one per spin sense)"),
     ),
     solve=solve,
-    extra={"example": {
+    animation="turning_rotor",
+    example={
         "statement": ("A rotor of mass {mass} with a radius of gyration of {k_axial} spins at "
                       "{spin} in two bearings {bearing_spacing} apart, which carry a total mass "
                       "of {supported_mass}. Its frame turns about the vertical at {precession}. "
@@ -733,5 +710,5 @@ KIND = Kind(
         "given": {"mass": "2.5 kg", "k_axial": "35 mm", "supported_mass": "10 kg",
                   "spin": "-1725 rpm", "precession": "48 rpm", "bearing_spacing": "200 mm"},
         "find": {"bearing_forces": "N", "moment": "N*m"},
-        "vary": {"precession": "[0.8, 1.2]"}}},
+        "vary": {"precession": "[0.8, 1.2]"}},
 )

@@ -489,12 +489,12 @@ KIND = Kind(
     params=(
         Param("theta0", "angle", "theta0", "angle of the axis from the upward vertical at t = 0 "
               "(the chapter's theta_2)", range=(0.0, math.pi * (1 + 1e-15)),
-              limits=("0 deg", "180 deg")),  # 180 deg read from grad or arcmin may be 1 ulp over
+              limits=("0 deg", "180 deg"), required=True),  # 180 deg read from grad or arcmin may be 1 ulp over
         Param("spin", "rate", "psidot", "spin relative to the precessing frame (> 0)",
               positive=True, reason="the chapter takes psidot > 0 about the axis from the fixed "
               "point to the centre of mass: for a negative spin reverse the sense of the axis "
               "instead (give the spin as positive and change the sign of precession0); at 0 a "
-              "top released without spin is a pendulum, not a top"),
+              "top released without spin is a pendulum, not a top", required=True),
         Param("precession0", "rate", "phidot0", "precession rate at t = 0", default="0 rad/s"),
         Param("theta_rate0", "rate", "thetadot0", "rate of change of theta at t = 0",
               default="0 rad/s"),
@@ -520,7 +520,9 @@ KIND = Kind(
                    "ascending"),
     ),
     solve=solve,
-    extra={"example": {
+    picture="axis_path", animation="nutating_top", simulation="released",
+    physics=("gyro_cli.physics.nutation", "gyro_cli.physics.elliptic"),
+    example={
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It is released with its axis at {theta0} "
@@ -531,5 +533,5 @@ KIND = Kind(
                   "cg_distance": "1.5 in", "theta0": "30 deg", "spin": "1800 rpm"},
         "find": {"theta_max": "deg", "nutation_period": "s", "mean_precession": "rpm",
                  "motion": None},
-        "vary": {"spin": "[0.8, 1.2]", "theta0": "[20 deg, 40 deg]"}}},
+        "vary": {"spin": "[0.8, 1.2]", "theta0": "[20 deg, 40 deg]"}},
 )

@@ -535,7 +535,8 @@ KIND = Kind(
                    "rolling in a straight line is stable"),
     ),
     solve=solve,
-    extra={"example": {
+    animation="rolling", physics=("gyro_cli.physics.stability",),
+    example={
         "statement": ("A {shape} weighing {weight}, of radius {radius}, is mounted on an axle "
                       "pinned to a vertical shaft and rolls on a horizontal plane in a circle of "
                       "radius {path_radius} while the shaft turns at {precession}. Find the "
@@ -543,5 +544,5 @@ KIND = Kind(
         "given": {"arrangement": "axle_pivot", "weight": "96.6 lb", "shape": "disk",
                   "radius": "1 ft", "path_radius": "2 ft", "precession": "48 rpm"},
         "find": {"normal_force": "lbf", "spin": "rpm"},
-        "vary": {"precession": "[0.8, 1.2]"}}},
+        "vary": {"precession": "[0.8, 1.2]"}},
 )

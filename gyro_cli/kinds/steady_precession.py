@@ -840,7 +840,8 @@ KIND = Kind(
                    "(up), horizontal (toward the axis), magnitude] per root"),
     ),
     solve=solve,
-    extra={"size_free": True, "example": {
+    animation="steady_top", simulation="steady", physics=("gyro_cli.physics.stability",),
+    size_free=True, example={
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It spins at {spin} with its axis at {theta} "
@@ -849,5 +850,5 @@ KIND = Kind(
         "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
                   "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
         "find": {"precession": "rpm", "min_spin": "rpm"},
-        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"}}},
+        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"}},
 )

@@ -469,7 +469,8 @@ KIND = Kind(
                    "retrograde"),
     ),
     solve=solve,
-    extra={"size_free": True, "gravity": False, "example": {
+    animation="free_body",
+    size_free=True, gravity=False, example={
         "statement": ("A free symmetric body has moments of inertia of {J} about its symmetry "
                       "axis and {I_cg} about a transverse axis through its centre of mass. Its "
                       "axis makes an angle of {nutation_angle} with its angular momentum, and it "
@@ -480,5 +481,5 @@ KIND = Kind(
                   "spin": "1 rpm"},
         "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",
                  "motion": None, "kinetic_energy": "J", "spin_stability": None},
-        "vary": {"nutation_angle": "[10 deg, 40 deg]"}}},
+        "vary": {"nutation_angle": "[10 deg, 40 deg]"}},
 )

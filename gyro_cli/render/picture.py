@@ -16,9 +16,6 @@ import re
 from dataclasses import dataclass
 from html import escape
 
-#: kinds that have a picture
-KINDS = ("released_top", "bicycle")
-
 
 @dataclass(frozen=True)
 class Picture:
@@ -52,15 +49,15 @@ def png(result) -> tuple[bytes, str] | None:
 
 def _figure(result):
     """The matplotlib figure of a solved problem and its alt text, or None."""
-    kind = result.problem.kind.name
-    if kind == "released_top":
+    kind = result.problem.kind.picture
+    if kind == "axis_path":
         from .plot import figure, released_top_data
 
         data = released_top_data(result)
         if max(data.theta_max, float(data.theta.max())) < 1e-9:
             return None
         fig, alt = figure(data), _top_alt(data)
-    elif kind == "bicycle":
+    elif kind == "eigenvalues":
         from .plot_bicycle import result_figure
 
         fig, alt = result_figure(result), _bicycle_alt(result)
