@@ -191,12 +191,12 @@ def _plain(data: dict, only: set[str] | None = None) -> dict:
     """The mapping as a file would hold it: Quantities and SI numbers become quantity
     strings (what the loader checks), everything else stays as it is. ``only``: convert
     just these given keys (the overrides of a file)."""
-    from . import kinds as registry
+    from .kinds import get as kind_named
     from .solving.problem import params_of
 
     given = data.get("given")
     try:
-        params = {p.name: p for p in params_of(registry.get(data.get("kind")))}
+        params = {p.name: p for p in params_of(kind_named(data.get("kind")))}
     except InputError:
         params = {}
     if isinstance(given, dict):
@@ -834,6 +834,6 @@ def _keep(solved: dict, key: str, problem_of) -> None:
 def kinds() -> dict[str, "Kind"]:
     """Every problem kind by name (what ``gyro kinds`` lists): its ``summary``, ``params``
     (the given keys; ``uses_body`` adds the body's keys), ``answers`` and ``chapter``."""
-    from . import kinds as registry
+    from .kinds import get as kind_named, names as kind_names
 
-    return {name: registry.get(name) for name in registry.names()}
+    return {name: kind_named(name) for name in kind_names()}

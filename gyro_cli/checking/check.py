@@ -23,7 +23,7 @@ Rules (see docs/check.md):
 from __future__ import annotations
 
 import os
-from typing import Any, Callable, Iterator
+from typing import Any, Callable, Generator, Iterator
 
 from ..core.errors import InputError
 from .expected import Expected, parse_expected
@@ -242,7 +242,7 @@ def crashed(path: str, exitcode: int | None) -> ProblemCheck:
 def checks(files: list[str], strict: bool = False, jobs: int = 1,
            timeout: float | None = TIMEOUT,
            then: Callable[[ProblemCheck], Any] | None = None,
-           idle: Callable[[], Any] | None = None) -> Iterator[Any]:
+           idle: Callable[[], Any] | None = None) -> Generator[Any, None, None]:
     """Each file's ProblemCheck, in the order of ``files``, as soon as it is known; or,
     given ``then``, ``then`` of it, applied where the file was checked (so a worker
     hands back what the caller makes of a result, e.g. its report text). ``idle()`` is
@@ -286,11 +286,11 @@ def warm() -> None:
     pages it shares."""
     import gc
 
-    from .. import kinds
+    from ..kinds import preload
     from ..core import safeyaml, unit_cache
     from ..solving import solve  # noqa: F401 -- imported for the workers
 
-    kinds.preload()
+    preload()
     safeyaml.loader_class()
     unit_cache.get("parse", "")
     gc.freeze()

@@ -474,10 +474,10 @@ def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
 
     problem = load(path)
     if problem.kind.animation not in BUILDERS:
-        from .. import kinds
+        from ..kinds import offering
 
         raise InputError(f"--animate draws the kinds that move: "
-                         f"{', '.join(kinds.offering('animation', BUILDERS))}; this file "
+                         f"{', '.join(offering('animation', BUILDERS))}; this file "
                          f"is kind {problem.kind.name!r}", file=path, key="kind")
     if periods is not None and not (math.isfinite(periods) and periods > 0):
         raise InputError("--periods must be a positive number")

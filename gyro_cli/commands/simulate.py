@@ -47,10 +47,10 @@ def prepare(path: str) -> Setup:
 
     problem = load(path)
     if problem.kind.simulation not in SIMULATIONS:
-        from .. import kinds
+        from ..kinds import offering
 
         raise InputError(f"simulate integrates the heavy top: kinds "
-                         f"{', '.join(kinds.offering('simulation', SIMULATIONS))}; this "
+                         f"{', '.join(offering('simulation', SIMULATIONS))}; this "
                          f"file is kind {problem.kind.name!r}", file=path, key="kind")
     result = solve(problem)        # every check the kind makes on its input
     given = problem.given

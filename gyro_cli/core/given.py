@@ -45,5 +45,11 @@ class Given:
         value = self.values.get(key, default)
         return value if value is None else str(value)
 
+    @property
+    def solid_body(self) -> "Body":
+        """The body of a kind that has one (``Kind.uses_body``: solve.py has built it)."""
+        assert self.body is not None, "this kind declares no body"
+        return self.body
+
     def given_explicitly(self, key: str) -> bool:
         return key in self.values and key not in self.defaulted

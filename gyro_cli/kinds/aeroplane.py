@@ -41,7 +41,7 @@ _REACTION, _SIZE = -paren(COUPLE), absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     body.require("J")
     J = body.J
     spin, v, R = given["spin"], given["speed"], given["turn_radius"]

@@ -618,7 +618,7 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
         moments = _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
         _report_matrix(matrix, products, work, moments=moments)
         return matrix
-    body = given.body
+    body = given.solid_body
     J = body.J
     if way == "I":
         I = given["I"]

@@ -110,7 +110,7 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
 
 
 def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | None:
-    body = given.body
+    body = given.solid_body
     if "I" in given and ("I_x" in given or "I_y" in given):
         raise InputError("give I (equal inertias) or I_x and I_y, not both",
                          key="given.I_x" if "I_x" in given else "given.I_y")

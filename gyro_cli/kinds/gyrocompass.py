@@ -139,7 +139,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _vertical_inertia(given: Given, work: Work) -> float | None:
-    body = given.body
+    body = given.solid_body
     if "I_vertical" in given:
         I_v = given["I_vertical"]
         if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):

@@ -188,7 +188,7 @@ _TURNING_H = absolute(W0) * absolute(cross(K0, H0))
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     theta = given["theta"]
     if 0 <= theta <= math.pi and abs(math.sin(theta)) < 1e-12:
         _along_the_axis(given, find, theta, work)
@@ -462,7 +462,7 @@ _FREE_BODY = {ms: _free_body(ms) for ms in ("m", "m_s")}
 
 
 def _bearings(given: Given, find: frozenset[str], M: float, precession: float, theta: float, work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "bearing_spacing" not in given:
         raise InputError("bearing forces need bearing_spacing (the distance AB)",
                          key="given.bearing_spacing")
@@ -607,7 +607,7 @@ _UNBALANCE, _SIZE_OF_M = m_c0 * g0 * (b0 - b_balance0), absolute(M0)
 
 
 def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "counterweight" not in given or "balance_position" not in given:
         missing = "counterweight" if "counterweight" not in given else "balance_position"
         raise InputError("counterweight_position needs the block's mass (counterweight) and its "

@@ -39,7 +39,7 @@ def _rel(approx: float, exact: float) -> tuple:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     from ..physics.nutation import Start, Top, analyse, constants
 
-    body = given.body
+    body = given.solid_body
     body.require("J", "I_pivot")
     if not body.l or body.l <= 0:
         raise InputError("a released top needs its centre of mass off the fixed point: give "

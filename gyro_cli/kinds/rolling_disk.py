@@ -254,7 +254,7 @@ def _sign_changes(grid: tuple[float, ...], f: Callable[[float], float],
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     arrangement = given.word("arrangement", "axle_pivot")
-    body = given.body
+    body = given.solid_body
     body.require("J", "radius")
     if arrangement == "axle_pivot":
         asked = sorted(find & {"stability", "growth_rate", "upright_speed"})
@@ -297,7 +297,7 @@ _DH_O = deriv(HO0)
 
 
 def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     for key in ("tilt", "speed"):
         if key in given:
             raise InputError(f"{key} belongs to `arrangement: free`; the pinned axle is "
@@ -363,7 +363,7 @@ _SOLVED_FOR = ("solved for ", b0, " (every root in ",
 
 
 def _free(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "precession" in given:
         raise InputError("for `arrangement: free` give two of path_radius, speed and tilt",
                          key="given.precession")

@@ -19,6 +19,7 @@ ship: steering, pitching, rolling); S.S. Rattan, "Theory of Machines", ch. 14.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from ..core.errors import InputError, refuse_overflow
 from ..core.given import Given
@@ -49,7 +50,7 @@ _REACTION, _SIZE = -COUPLE, absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     body.require("J")
     J = body.J
     spin = given["spin"]
@@ -237,9 +238,9 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
 
 AMPLITUDE_KEYS = ("amplitude", "pitch_amplitude", "pitch_total", "between_extremes")
 # the amplitude's limits (the total swing is twice it): the loader refuses a value outside
-_AMPLITUDE = dict(range=(0.0, math.pi / 2), bounds="()",
+_AMPLITUDE: dict[str, Any] = dict(range=(0.0, math.pi / 2), bounds="()",
                   reason="a ship cannot pitch through 90 deg")
-_TOTAL = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
+_TOTAL: dict[str, Any] = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
               "cannot pitch through 90 deg")
 PERIOD_KEYS = ("period", "frequency")
 #: the motion each motion's own key belongs to (_refuse_foreign)

@@ -154,7 +154,7 @@ NEEDS_EXACT = {"precession_slow", "precession_fast", "spin_slow", "spin_fast", "
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     body.require("J")
     J = body.J
     if "theta" not in given:
@@ -247,7 +247,7 @@ _APPROXIMATION_ONLY = ("no ", th, " given: the answers use the gyroscopic approx
 def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     """No theta: the gyroscopic approximation and its period, and how far the exact roots
     would move with theta (introductory books: Omega = m g l / (J omega), no angle)."""
-    body = given.body
+    body = given.solid_body
     needs = sorted(find - WITHOUT_THETA)
     if needs:
         raise InputError(f"{needs[0]} needs the angle theta of the axis from the upward vertical; "
@@ -354,7 +354,7 @@ _TORQUE_FREE = (rel(l0, "=", 0), " and no applied moment: a torque-free body, ",
 
 def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
     """D = M / sin(theta): from an applied moment, or gravity's m g l."""
-    body = given.body
+    body = given.solid_body
     work.section("Moment about the line of nodes")
     if "moment" in given:
         if body.l:

@@ -132,7 +132,7 @@ _J_P_THETADOT = J0 * p0 * td
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     body.require("J", "I_cg")
     m, g, J, I_G = body.m, body.g, body.J, body.I_cg
     p, L, d = given["spin"], given["arm_length"], given["bearing_spacing"]

@@ -12,6 +12,7 @@ spin (psidot) and angular_momentum (H). The relations, their derivation and the 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from ..core.errors import InputError
 from ..core.given import Given
@@ -74,7 +75,7 @@ _FRAME, _INERTIA, _RELATIONS, _APEX = _conventions()
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     for key in ("I_pivot", "k_pivot", "cg_distance"):
         if key in given:
             raise InputError(f"{key} does not apply: a torque-free body turns about its centre "
@@ -398,7 +399,7 @@ def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
 # keeps the same checks for its own callers
 _SIDE = "H is taken along +Z and k on the side of H"
-_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
+_WOBBLE: dict[str, Any] = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
                "a transverse axis and does not wobble; above 90 deg take the axis k the other "
                "way (180 deg minus the angle); 0 is a steady spin about the axis, which has "
                "rates, H and energy but no precession")

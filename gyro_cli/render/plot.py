@@ -333,9 +333,9 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
 
         return plot_bicycle(result, path, force=force)
     if problem.kind.picture != "axis_path":
-        from .. import kinds
+        from ..kinds import offering
 
-        raise InputError(f"plots exist for kinds {' and '.join(kinds.offering('picture', PICTURES))}"
+        raise InputError(f"plots exist for kinds {' and '.join(offering('picture', PICTURES))}"
                          f" only; this file is kind {problem.kind.name!r}", file=problem.file,
                          key="kind")
     suffix = Path(path).suffix
