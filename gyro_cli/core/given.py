@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from .record import field, record
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, overload
 
 from .errors import InputError
 from .params import MISSING_KEY
@@ -38,8 +38,20 @@ class Given:
             raise InputError(f"expected a quantity, got the word {value!r}", key=f"given.{key}")
         return value
 
+    @overload
+    def get(self, key: str, default: float) -> float: ...
+
+    @overload
+    def get(self, key: str, default: float | None = None) -> float | None: ...
+
     def get(self, key: str, default: float | None = None) -> float | None:
         return self[key] if key in self.values else default
+
+    @overload
+    def word(self, key: str, default: str) -> str: ...
+
+    @overload
+    def word(self, key: str, default: str | None = None) -> str | None: ...
 
     def word(self, key: str, default: str | None = None) -> str | None:
         value = self.values.get(key, default)

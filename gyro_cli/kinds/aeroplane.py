@@ -42,8 +42,7 @@ _REACTION, _SIZE = -paren(COUPLE), absolute(COUPLE)
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.solid_body
-    body.require("J")
-    J = body.J
+    J = body.needed("J")
     spin, v, R = given["spin"], given["speed"], given["turn_radius"]
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:

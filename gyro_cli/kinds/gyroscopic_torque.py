@@ -193,11 +193,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if 0 <= theta <= math.pi and abs(math.sin(theta)) < 1e-12:
         _along_the_axis(given, find, theta, work)
         return
-    body.require("J")
+    J = body.needed("J")
     cos = cos_theta(theta)
     if cos != 0:
         body.require("I_cg")
-    J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
+    I = body.I_cg if body.I_cg is not None else 0.0
     work.section("Conventions")
     drop = "drop" in given
     axes, nodes = _CONVENTIONS[drop]

@@ -113,6 +113,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     if given_key == "input_angle":
+        assert c is not None  # refused above unless rate-integrating
         _integrated_angle(given, H, c, I_g, work)
         _refuse_missing(find, work)
         return
@@ -124,6 +125,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
 
     if mode == "spring":
+        assert k is not None
         work.section("Spring-restrained: deflection and sensitivity")
         linear = steady_deflection(H, rate, k)
         if abs(linear) >= math.pi / 2:
@@ -163,6 +165,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         elif c is not None:
             work.text(*_NO_INERTIA)
     elif mode == "integrating":
+        assert c is not None
         work.section("Rate-integrating: gimbal rate and gain")
         c_ = _sym("c", c)
         td = work.step("thetadot", gimbal_rate(H_, Omega, c_), unit="rad/s")
@@ -236,6 +239,7 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
         return given["rate"]
     work.section("Input rate from the measurement")
     if key == "deflection":
+        assert k is not None  # a deflection without a spring is refused in solve
         theta = given["deflection"]
         if abs(theta) > SMALL_ANGLE:
             work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
@@ -246,7 +250,8 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
     if key == "moment":
         M = given["moment"]
         return work.step("Omega", rate_from_moment(_sym("H", H), _sym("M", M)), unit="rad/s",
-                         ref="Eq. 11.29")  # rate_from_moment
+                         ref="Eq. 11.29")
+    assert c is not None  # a gimbal rate without a damper is refused in solve
     td = given["gimbal_rate"]
     return work.step("Omega", _sym("c", c) * _sym("thetadot", td) / _sym("H", H),
                      unit="rad/s")

@@ -50,7 +50,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     theta_rate0 = given.get("theta_rate0", 0.0) or 0.0
     theta0 = min(theta0, math.pi)
     vertical = abs(math.sin(theta0)) < 1e-15
-    top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
+    top = Top(I=body.needed("I_pivot"), J=body.needed("J"), mgl=body.mgl)
     start = Start(theta0=theta0, spin=spin, precession0=precession0, theta_rate0=theta_rate0)
     omega_z = constants(top, start)["omega_z"]
     if vertical and omega_z == 0 and theta_rate0 == 0:

@@ -51,8 +51,7 @@ _REACTION, _SIZE = -COUPLE, absolute(COUPLE)
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.solid_body
-    body.require("J")
-    J = body.J
+    J = body.needed("J")
     spin = given["spin"]
     motion = given.word("motion", "steering")
     sense = given.word("rotor_sense")

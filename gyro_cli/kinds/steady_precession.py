@@ -155,8 +155,7 @@ NEEDS_EXACT = {"precession_slow", "precession_fast", "spin_slow", "spin_fast", "
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.solid_body
-    body.require("J")
-    J = body.J
+    J = body.needed("J")
     if "theta" not in given:
         _without_theta(given, find, work)
         return

@@ -133,8 +133,8 @@ _J_P_THETADOT = J0 * p0 * td
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.solid_body
-    body.require("J", "I_cg")
-    m, g, J, I_G = body.m, body.g, body.J, body.I_cg
+    J, I_G = body.needed("J"), body.needed("I_cg")
+    m, g = body.m, body.g
     p, L, d = given["spin"], given["arm_length"], given["bearing_spacing"]
     theta, theta0 = given["theta"], given["theta0"]
     a = given["arm_position"] if "arm_position" in given else d / 2

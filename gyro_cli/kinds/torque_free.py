@@ -81,8 +81,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
             raise InputError(f"{key} does not apply: a torque-free body turns about its centre "
                              "of mass, so give the transverse inertia about it (I_cg, k_cg or a "
                              "shape)", key=f"given.{key}")
-    body.require("J", "I_cg")
-    J, I = body.J, body.I_cg
+    J, I = body.needed("J"), body.needed("I_cg")
     if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
         work.text(*_APEX)
     known = {k: given[k] for k in MOTION_KEYS if k in given}
