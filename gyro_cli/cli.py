@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import sys
+from typing import NoReturn
 
 import click
 
@@ -20,7 +21,7 @@ FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
-def fail(error: InputError | str) -> None:
+def fail(error: InputError | str) -> NoReturn:
     """Print one line on stderr and exit 2."""
     click.echo(f"gyro: {error}", err=True)
     sys.exit(2)
@@ -393,7 +394,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
                html_file: str | None, force: bool, jobs: int, timeout: float,
                shard: str | None, merge: bool,
-               found: tuple[list[str], list[tuple[str, str]]] | None = None) -> None:
+               found: tuple[list[str], list[tuple[str, str]]] | None = None) -> NoReturn:
     """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
     as it comes, in the files' order, then the summary; exits with the run's code."""
     from .api import check_stream
@@ -429,7 +430,7 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
     finally:
         run.close()  # a reader that left, or Ctrl-C: the workers end now
     click.echo(stream.tail(tally, run.shards) if stream else check_report.summary_line(tally))
-    if spool:
+    if spool and junit_file:
         from .core.files import write_atomic
 
         try:
@@ -440,6 +441,7 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         from .core.files import write_atomic
 
         try:
+            assert run.report is not None  # worked=True keeps the report
             write_atomic(html_file, run.report.html(page=True), force=force)
         except InputError as err:
             fail(err)
@@ -457,11 +459,11 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
     from .commands.authoring import template
 
     if kind is None:
-        from . import kinds as registry
+        from .kinds import get as kind_named, names as kind_names
 
         click.echo("gyro new KIND writes a template; KIND is one of:")
-        for name in registry.names():
-            click.echo(f"  {name:<19} {registry.get(name).summary}")
+        for name in kind_names():
+            click.echo(f"  {name:<19} {kind_named(name).summary}")
         return
     try:
         if output is not None:

@@ -24,7 +24,7 @@ import os
 import random
 from typing import Any, Iterator
 
-from .. import kinds
+from ..kinds import get as kind_named, names as kind_names_of
 from ..core import units
 from ..core.alternatives import alternatives_of
 from ..core.body import BODY_PARAMS
@@ -53,7 +53,7 @@ def _line(text: str, comment: str, width: int = 30) -> str:
 
 def template(kind_name: str) -> str:
     """A commented problem file with every key of ``kind_name``."""
-    kind = kinds.get(kind_name)
+    kind = kind_named(kind_name)
     example = kind.example  # a complete, solvable example of the kind
     given_ex: dict[str, str] = dict(example.get("given", {}))
     find_ex: dict[str, Any] = dict(example.get("find", {}))
@@ -218,10 +218,10 @@ def schema() -> dict[str, Any]:
     tolerance_one = {"type": "string", "maxLength": units.MAX_TEXT,
                      "description": "\"1%\" relative, \"3 sig\" significant figures, or a "
                                     "quantity (\"0.01 rad/s\") absolute"}
-    kind_names = kinds.names()
+    kind_names = kind_names_of()
     rules = []
     for name in kind_names:
-        kind = kinds.get(name)
+        kind = kind_named(name)
         rules.append({"if": {"properties": {"kind": {"const": name}}, "required": ["kind"]},
                       "then": {"properties": _kind_properties(kind, quantity, tolerance_one)}})
     return {
