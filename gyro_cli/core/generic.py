@@ -34,7 +34,7 @@ class _Both:
         self._math = getattr(math, name)
 
     @overload
-    def __call__(self, *args: float) -> float: ...
+    def __call__(self, *args: float) -> float: ...  # type: ignore[overload-overlap]
 
     @overload
     def __call__(self, *args: "Expr | float") -> "Expr": ...
@@ -56,7 +56,7 @@ exp, log = _Both("exp"), _Both("log")
 
 
 @overload
-def pi_like(*args: float) -> float: ...
+def pi_like(*args: float) -> float: ...  # type: ignore[overload-overlap]
 
 
 @overload

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from ..core.expr import Let, Sym, cos, sin, tan
+from ..core.expr import Expr, Let, Sym, cos, sin, tan
 from ..core.given import Given
 from ..core.prose import names, q, rel
 from ..core.spec import AnswerSpec, Kind, Param
@@ -233,7 +233,7 @@ def _momentum(given: Given, work: Work) -> float | None:
 def _total(given: Given, find: frozenset[str], parts: list[tuple[str, float]],
            work: Work) -> None:
     work.section("Drift of the spin axis")
-    total_tree = Sym(parts[0][0], parts[0][1], "deg/h")
+    total_tree: Expr = Sym(parts[0][0], parts[0][1], "deg/h")
     for name, value in parts[1:]:
         total_tree = total_tree + Sym(name, value, "deg/h")
     D = work.step("D", total_tree, unit="deg/h", substitute=len(parts) > 1) * DEG_H

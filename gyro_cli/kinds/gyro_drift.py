@@ -122,7 +122,7 @@ def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | Non
             raise InputError("give both I_x and I_y (or one I for both)", key=f"given.{missing}")
         Ix, Iy = given["I_x"], given["I_y"]
     elif body.I_pivot is not None or body.I_cg is not None:  # I, I_x, I_y declare > 0
-        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.I_cg
+        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.needed("I_cg")
         if Ix <= 0:
             raise InputError(f"a moment of inertia must be positive, got the rotor's "
                              f"{qty(Ix, 'kg*m^2')}", key="given.I_pivot")

@@ -87,7 +87,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     else:
         wp = _rolling(given, work)
 
-    rate = V.norm(wp)
+    rate: float | None = V.norm(wp)
     if motion == "rolling":
         rate = abs(given["roll_rate"]) if "roll_rate" in given else None
     work.section(*_COUPLE_TITLE)

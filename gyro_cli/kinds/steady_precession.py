@@ -270,7 +270,7 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(*_WHATEVER_THETA)
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
                   * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=_PER_UNIT_SIN)
-    J_v = Sym("J", body.J, "kg m^2")
+    J_v = Sym("J", body.needed("J"), "kg m^2")
     rate = rates[0]
     if rate == "precession":
         precession = given["precession"]

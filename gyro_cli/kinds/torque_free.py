@@ -145,6 +145,7 @@ def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tup
 
 def _representable(s: FreeMotion, known: dict[str, float], steady: bool = False) -> None:
     """Refuse data whose rates or periods overflow or underflow double precision."""
+    values: tuple[float, ...]
     try:
         values = ((s.omega, s.angular_momentum, s.kinetic_energy) if steady else
                   (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
