@@ -111,7 +111,7 @@ def _conventions_zyx() -> tuple:
 
 
 _CONVENTIONS = {"zxz": _conventions_zxz(), "zyx": _conventions_zyx()}
-_OMEGA = (*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
+_OMEGA: tuple[str | Expr, ...] = (*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
           "origin is the fixed point, about which the moments of inertia are taken.")
 _W_ABS = absolute(names("omega")[0])
 
@@ -302,7 +302,7 @@ _DOTS = {sequence: names(" ".join(f"{SYMBOLS[k]}dot" for k in keys))
          for sequence, keys in ANGLES.items()}
 _GIVES_BACK = "the inverse of Eq. 11.8 gives back the rates: "
 _p, _q, _r = names("p q r")
-_RATES_TITLE = {"zxz": ("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)"),
+_RATES_TITLE: dict[str, tuple[str | Expr, ...]] = {"zxz": ("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)"),
                 "zyx": ("Euler rates from ", _p, ", ", _q, ", ", _r, " (yaw, pitch, roll)")}
 _PUT_BACK = ("the rates put back into Eq. 11.8 give ",)
 _OMEGA0 = names("omega")[0]

@@ -93,7 +93,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 # each time: building a sentence's trees cost as much as a third of the kind's time.
 _CONSTANTS_TITLE = ("Constants of the motion at ", rel(t_, "=", 0),
                     " (Eqs. 11.8, 11.14, 11.17, 11.18)")
-_CONVENTIONS = ("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
+_CONVENTIONS: tuple[str | Expr, ...] = ("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
                 theta, " from the upward vertical to the axis through the centre of mass, ",
                 rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
                 " is relative to the precessing frame, which turns about the vertical at the "
@@ -193,7 +193,7 @@ _EQ_11_23 = (rel(_P1, "=", _P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2
                                                       * (u2 - u))), " (Eq. 11.23)")
 _ERRATA = ("Eq. 11.24 as corrected in the errata: ", gamma_ ** 2 / a_ * u2, " under the root, "
            "not ", gamma_ ** 2 / 2)
-_FALLS = ("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
+_FALLS: tuple[str | Expr, ...] = ("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
           *names("theta_1"), " and back")
 
 

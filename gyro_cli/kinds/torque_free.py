@@ -206,7 +206,7 @@ def _steady(J: float, known: dict[str, float], s: FreeMotion, find: frozenset[st
 
 
 _GIVEN_SYMS = {key: names(word)[0] for key, word in WORDS.items()}
-_FIX_THE_MOTION = (*names("beta"), " and ", *names("omega_z"), " are given: together with ",
+_FIX_THE_MOTION: tuple[str | Expr, ...] = (*names("beta"), " and ", *names("omega_z"), " are given: together with ",
                    *names("J"), " and ", *names("I"), " they fix the motion")
 
 
@@ -289,7 +289,7 @@ _ACROSS = rel(_we0, "=", _ph * sin(_th))
 _ALONG = (_H, " along ", _k, ": ")
 _J_OMEGA_Z, _H_COS = (_J0 * _wz0, "="), (_H * cos(_th), "=")
 _SPACE_CONE_ANGLE = absolute(_th - _be)
-_MERIAM = ("the ratio of the spin to the precession (Meriam's ", *names("n"))
+_MERIAM: tuple[str | Expr, ...] = ("the ratio of the spin to the precession (Meriam's ", *names("n"))
 _RATIO, _SPIN_OVER_PRECESSION = ((_I0 - _J0) * cos(_th) / _J0, "="), (_ps / _ph, "=")
 
 
