@@ -130,7 +130,7 @@ KIND = Kind(
         Param("mass", "mass", "m", "total mass of the machine with its rider", positive=True),
         Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
         Param("cg_height", "length", "h", "height of the centre of mass above the road, upright",
-              positive=True),
+              positive=True, required=True),
         Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each road wheel about "
               "its axle", nonnegative=True),
         Param("wheel_radius", "length", "r_w", "radius of the road wheels", positive=True),
@@ -140,8 +140,8 @@ KIND = Kind(
               nonnegative=True),
         Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
               "engine's sense of rotation relative to the wheels", choices=("same", "opposite")),
-        Param("speed", "speed", "v", "speed of the machine", nonnegative=True),
-        Param("turn_radius", "length", "R", "radius of the curve", positive=True),
+        Param("speed", "speed", "v", "speed of the machine", nonnegative=True, required=True),
+        Param("turn_radius", "length", "R", "radius of the curve", positive=True, required=True),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
     ) + vehicle_params('wheel', 'engine'),
