@@ -301,7 +301,7 @@ KIND = Kind(
     params=(
         Param("latitude", "angle", "lambda", "latitude of the craft (the mean latitude of a "
               "flight): '30 S', '45 deg N' or signed, north positive",
-              range=(-math.pi / 2, math.pi / 2), hemisphere="NS"),
+              range=(-math.pi / 2, math.pi / 2), hemisphere="NS", required=True),
         Param("hemisphere", "word", "hemisphere", "north or south, with a latitude written "
               "without one", choices=("north", "south"), words=_HEMISPHERES),
         Param("latitude_nut", "angle", "lambda_n", "latitude the nut is set for: '50 N'; no "
