@@ -124,6 +124,9 @@ def test_item04_no_layer_above_kinds_names_a_kind_by_a_string():
              PKG / "cli.py", PKG / "api.py"]
     named = {f.relative_to(PKG).as_posix(): _kind_strings(f) for f in files}
     assert {f: n for f, n in named.items() if n} == {}
+    pattern = rf"kinds\.({'|'.join(kinds.names())})\b|kinds import ({'|'.join(kinds.names())})\b"
+    imported = {f.relative_to(PKG).as_posix() for f in files if re.search(pattern, f.read_text())}
+    assert imported == set()  # what a layer needs of a kind, the kind declares (Kind.model)
     assert not hasattr(kinds, "SOLVERS")
 
 

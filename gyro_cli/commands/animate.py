@@ -357,11 +357,10 @@ def bicycle_response(m, v: float, g: float, t: np.ndarray, lean_rate0: float = P
 
 def _bicycle(problem, result, periods, speed, fps):
     from ..core.work import Work
-    from ..kinds import bicycle as kind
     from ..physics import bicycle as bike
 
     given = problem.given
-    p = kind.parameters(given, Work())
+    p = problem.kind.model(given, Work())
     gyroscopic = given.word("gyroscopic", "true") == "true"
     m = bike.matrices(p, gyroscopic)
     stab = bike.stability(m, p["g"])

@@ -55,6 +55,9 @@ class Kind:
     simulation: str = ""
     #: the physics modules the solver imports on first use (preloaded before forking)
     physics: tuple[str, ...] = ()
+    #: the model the pictures and scenes draw, from the given data: ``model(given, work)``
+    #: (the bicycle's parameters in SI)
+    model: "Callable[[Given, Work], Any] | None" = None
 
     def __repr__(self) -> str:  # short: gyro_cli.kinds() lists sixteen of them
         return f"<Kind {self.name}: {self.summary}>"

@@ -508,6 +508,7 @@ KIND = Kind(
     ),
     solve=solve,
     picture="eigenvalues", animation="lean_and_steer", physics=("gyro_cli.physics.bicycle",),
+    model=parameters,
     uses_body=False,
     example={
         "statement": ("The benchmark bicycle of Meijaard, Papadopoulos, Ruina and Schwab (2007) "

@@ -119,12 +119,11 @@ def _top_alt(data) -> str:
 
 def _bicycle_alt(result) -> str:
     from ..core.work import Work
-    from ..kinds.bicycle import parameters
     from ..physics import bicycle as bike
 
     given = result.problem.given
     gyroscopic = given.word("gyroscopic", "true") == "true"
-    p = parameters(given, Work())
+    p = result.problem.kind.model(given, Work())
     stab = bike.stability(bike.matrices(p, gyroscopic), p["g"])
     ranges = "; ".join(f"self-stable from {lo:.3g} to {hi:.3g} m/s" if math.isfinite(hi)
                        else f"self-stable above {lo:.3g} m/s" for lo, hi in stab.stable)
