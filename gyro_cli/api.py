@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
 from .core.errors import InputError
 
 if TYPE_CHECKING:
+    from .checking.grades import Graded
     from .checking.results import CheckRun, ProblemCheck
     from .core.spec import Kind
     from .core.work import GivenLine, Section, Step
@@ -190,12 +191,12 @@ def _plain(data: dict, only: set[str] | None = None) -> dict:
     """The mapping as a file would hold it: Quantities and SI numbers become quantity
     strings (what the loader checks), everything else stays as it is. ``only``: convert
     just these given keys (the overrides of a file)."""
-    from . import kinds as registry
+    from .kinds import get as kind_named
     from .solving.problem import params_of
 
     given = data.get("given")
     try:
-        params = {p.name: p for p in params_of(registry.get(data.get("kind")))}
+        params = {p.name: p for p in params_of(kind_named(data.get("kind")))}
     except InputError:
         params = {}
     if isinstance(given, dict):
@@ -430,7 +431,7 @@ class Result:
         from .commands import animate
         from .render.animate import html_fragment
 
-        if self.solved.problem.kind.name not in animate.KINDS:
+        if self.solved.problem.kind.animation not in animate.BUILDERS:
             return ""
         scene, _ = animate.scene_of(self.solved.problem, self.solved, periods, speed, fps)
         return html_fragment(scene, self.animation_id)
@@ -470,21 +471,27 @@ def solve(source: Source, /, *, units: str | None = None, **given: Any) -> Resul
     ``units="us"`` works it in slug, ft and lbf. Raises `InputError` (with ``key``,
     ``line`` and ``file``) for bad input, as the command exits 2.
     """
-    from .solving.solve import solve as solve_problem
-
-    if units is not None and str(units).lower() not in ("si", "us"):
-        raise InputError(f"expected si or us, got {units!r}", key="units")
-    return Result(solve_problem(load(source, **given)), units)
+    _units_known(units)
+    return _solved(load(source, **given), units)
 
 
 def solve_file(path: str, /, *, units: str | None = None, **given: Any) -> Result:
     """`solve` for a file's path (a string here is never read as YAML text): what
     ``gyro solve FILE`` runs."""
-    from .solving.solve import solve as solve_problem
+    _units_known(units)
+    return _solved(load(path, path=True, **given), units)
 
+
+def _units_known(units: str | None) -> None:
     if units is not None and str(units).lower() not in ("si", "us"):
         raise InputError(f"expected si or us, got {units!r}", key="units")
-    return Result(solve_problem(load(path, path=True, **given)), units)
+
+
+def _solved(problem: "Problem", units: str | None) -> Result:
+    """The Result of a loaded problem worked in ``units``."""
+    from .solving.solve import solve as solve_problem
+
+    return Result(solve_problem(problem), units)
 
 
 def registry() -> Any:
@@ -732,33 +739,92 @@ def check(*sources: Source, strict: bool = False, worked: bool = True) -> CheckR
 
 def check_files(paths: Iterable[str], /, *, strict: bool = False,
                 worked: bool = True) -> CheckReport:
-    """`check` for paths only (files, directories, globs; a string is never YAML text):
-    what ``gyro check PATHS`` runs."""
+    """`check` for paths only (files, directories, globs; a string is never YAML text),
+    all in this process, without a time limit."""
     from .checking import check as checking
     from .checking.results import CheckRun
 
     solved: dict[str, "_Solved"] = {}
     files, problems = checking.collect(list(paths))  # what names nothing first, as gyro check
-    for path in files:
-        result = checking.check_file(path, strict)
+    for path, result in zip(files, checking.checks(files, strict, timeout=None)):
         problems.append(result)
         if worked and result.status != "error":
             _keep(solved, path, lambda path=path: load(path, path=True))
     return CheckReport(CheckRun(problems, strict=strict), solved)
 
 
+class CheckStream:
+    """A check run as it goes (what ``gyro check PATHS`` prints): ``results``, each file's
+    result (``then`` of its ProblemCheck) in the files' order as soon as it is known;
+    ``tally``, the counts and exit code of what the caller has counted; ``shards``, (K, N)
+    of a shard; ``report``, the CheckReport with the worked answers (``worked=True``).
+    ``close()`` ends the worker processes of a run left early."""
+
+    def __init__(self, results: Iterator[Any], strict: bool, shards: tuple[int, int] | None,
+                 report: CheckReport | None = None, close: Any = None) -> None:
+        from .checking.results import Tally
+
+        self.results, self.shards, self.report = results, shards, report
+        self.tally = Tally(strict)
+        self._close = close
+
+    def close(self) -> None:
+        if self._close is not None:
+            self._close()
+
+
+def check_stream(paths: Iterable[str], /, *, strict: bool = False, jobs: int = 1,
+                 timeout: float | None = 60.0, shard: str | None = None, merge: bool = False,
+                 worked: bool = False, then: Any = None, idle: Any = None,
+                 found: tuple[list[str], list[tuple[str, str]]] | None = None) -> CheckStream:
+    """Check problem files (files, directories, globs) over ``jobs`` worker processes,
+    each file under ``timeout`` seconds; ``shard`` "K/N" checks the K-th of N parts;
+    ``merge`` joins the JSON reports ``paths`` of a sharded run instead. ``then(problem)``
+    is applied where each file was checked (a worker hands back the caller's report text);
+    ``idle()`` is called while the next result is not ready. ``worked``: checked in this
+    process, keeping the worked answers (``report``). ``found``: ``problem_files(paths)``
+    when the caller has it. InputError for a bad path, shard or report."""
+    from itertools import chain
+
+    from .checking import check as checking
+
+    then = then or (lambda problem: problem)
+    if merge:
+        return CheckStream(map(then, checking.merged(list(paths), strict)), strict, None)
+    files, missing = checking.collect(list(paths), found)
+    shards = None
+    if shard:
+        k, n = shards = checking.parse_shard(shard)
+        files = [f for f in files if checking.shard_of(f, n) == k]
+        missing = [m for m in missing if checking.shard_of(m.file, n) == k]
+    if worked:  # the page needs every worked answer: checked here, kept
+        report = check_files([m.file for m in missing] + files, strict=strict)
+        return CheckStream(map(then, report.run.problems), strict, shards, report)
+    # each file's report text is made where it is checked: in the workers
+    checked = checking.checks(files, strict, jobs, timeout, then=then, idle=idle)
+    return CheckStream(chain(map(then, missing), checked), strict, shards, close=checked.close)
+
+
+def grade(sheet: str, paths: Iterable[str], /, *, assignment: str | None = None,
+          credit: str | None = None, student: str | None = None,
+          reveal: bool = False) -> "Graded":
+    """Grade the answer sheet ``sheet`` (a CSV of students' answers) against the problems
+    under ``paths``, or each student's own variant by ``assignment``, as ``gyro check
+    --answers`` does; ``credit`` "SLIP=SHARE,..." gives part credit for a known slip."""
+    from .checking import grades
+
+    policy = grades.parse_credit(credit) if credit is not None else None
+    return grades.grade(sheet, list(paths), assignment=assignment, credit=policy,
+                        student=student, reveal=reveal)
+
+
 def _keep(solved: dict, key: str, problem_of) -> None:
     """The worked answer of a checked problem, its expected answers among its answers."""
-    import dataclasses
-
-    from .solving.solve import solve as solve_problem
+    from .solving.solve import solve_asking
 
     try:
         problem = problem_of()
-        find = dict(problem.find)
-        for name in problem.expected:
-            find.setdefault(name, None)
-        solved[key] = solve_problem(dataclasses.replace(problem, find=find))
+        solved[key] = solve_asking(problem, problem.expected)
     except InputError:
         pass
 
@@ -768,6 +834,6 @@ def _keep(solved: dict, key: str, problem_of) -> None:
 def kinds() -> dict[str, "Kind"]:
     """Every problem kind by name (what ``gyro kinds`` lists): its ``summary``, ``params``
     (the given keys; ``uses_body`` adds the body's keys), ``answers`` and ``chapter``."""
-    from . import kinds as registry
+    from .kinds import get as kind_named, names as kind_names
 
-    return {name: registry.get(name) for name in registry.names()}
+    return {name: kind_named(name) for name in kind_names()}

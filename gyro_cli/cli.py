@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import sys
+from typing import NoReturn
 
 import click
 
@@ -20,7 +21,7 @@ FORMATS = ("text", "json", "markdown", "latex", "html")
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
-def fail(error: InputError | str) -> None:
+def fail(error: InputError | str) -> NoReturn:
     """Print one line on stderr and exit 2."""
     click.echo(f"gyro: {error}", err=True)
     sys.exit(2)
@@ -362,7 +363,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("--out-format goes with --out FILE")
     if reveal and not (feedback_dir or out_format in ("gradescope", "prairielearn")):
         fail("--reveal goes with --feedback DIR or --out-format gradescope|prairielearn")
-    from .checking import grades
+    from .api import grade
     from .render import grades_report
 
     read = [sheet]  # and, graded by assignment, what grades_report.graded_inputs adds
@@ -374,9 +375,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         _outputs_apart(read, out=out)
 
     try:
-        policy = grades.parse_credit(credit) if credit is not None else None
-        graded = grades.grade(sheet, paths, assignment=assignment, credit=policy,
-                              student=student, reveal=reveal)
+        graded = grade(sheet, paths, assignment=assignment, credit=credit, student=student,
+                       reveal=reveal)
         if out:
             grades_report.write_out(graded, out, out_format, force, read, reveal)
         if feedback_dir:
@@ -396,53 +396,32 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
                html_file: str | None, force: bool, jobs: int, timeout: float,
                shard: str | None, merge: bool,
-               found: tuple[list[str], list[tuple[str, str]]] | None = None) -> None:
+               found: tuple[list[str], list[tuple[str, str]]] | None = None) -> NoReturn:
     """`gyro check` of the answer key: each file's result printed (and spooled for JUnit)
     as it comes, in the files' order, then the summary; exits with the run's code."""
-    from itertools import chain
-
-    from .checking import check as checking
-    from .checking.results import Tally
+    from .api import check_stream
     from .render import check_report, junit
 
     def printed(problem):  # type: ignore[no-untyped-def]
         return check_report.printed(problem, fmt, junit_file is not None)
 
-    checked = None
     try:
-        if merge:
-            results, shards = map(printed, checking.merged(paths, strict)), None
-        else:
-            files, missing = checking.collect(paths, found)
-            if shard:
-                k, n = shards = checking.parse_shard(shard)
-                files = [f for f in files if checking.shard_of(f, n) == k]
-                missing = [m for m in missing if checking.shard_of(m.file, n) == k]
-            else:
-                shards = None
-            if html_file:  # the page needs every worked answer: checked here, kept
-                from .api import check_files
-
-                report = check_files([m.file for m in missing] + files, strict=strict)
-                results = map(printed, report.run.problems)
-            else:
-                # each file's report text is made where it is checked: in the workers
-                checked = checking.checks(files, strict, jobs, timeout, then=printed,
-                                          idle=sys.stdout.flush)
-                results = chain(map(printed, missing), checked)
+        run = check_stream(paths, strict=strict, jobs=jobs, timeout=timeout, shard=shard,
+                           merge=merge, worked=bool(html_file), then=printed,
+                           idle=sys.stdout.flush, found=found)
         if junit_file:
             from .core.files import refuse_special
 
             refuse_special(junit_file)  # before the run, not after it
     except InputError as err:
         fail(err)
-    tally = Tally(strict)
+    tally = run.tally
     spool = junit.Spool() if junit_file else None
     stream = check_report.JsonStream() if fmt == "json" else None
     click.echo(stream.head() if stream else check_report.table_head(), nl=False)
     write = sys.stdout.write  # flushed when the next result is not ready (idle), not per file
     try:
-        for problem in results:
+        for problem in run.results:
             if problem.error:
                 sys.stdout.flush()  # the report so far, then its error on stderr
                 click.echo(f"gyro: {terminal_text(problem.error)}", err=True)
@@ -451,10 +430,9 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
                 spool.add_text(*problem.junit)
             write(stream.line(problem.report) if stream else problem.report)
     finally:
-        if checked is not None:
-            checked.close()  # a reader that left, or Ctrl-C: the workers end now
-    click.echo(stream.tail(tally, shards) if stream else check_report.summary_line(tally))
-    if spool:
+        run.close()  # a reader that left, or Ctrl-C: the workers end now
+    click.echo(stream.tail(tally, run.shards) if stream else check_report.summary_line(tally))
+    if spool and junit_file:
         from .core.files import write_atomic
 
         try:
@@ -465,7 +443,8 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         from .core.files import write_atomic
 
         try:
-            write_atomic(html_file, report.html(page=True), force=force)
+            assert run.report is not None  # worked=True keeps the report
+            write_atomic(html_file, run.report.html(page=True), force=force)
         except InputError as err:
             fail(err)
     sys.exit(tally.exit_code)
@@ -482,11 +461,11 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
     from .commands.authoring import template
 
     if kind is None:
-        from . import kinds as registry
+        from .kinds import get as kind_named, names as kind_names
 
         click.echo("gyro new KIND writes a template; KIND is one of:")
-        for name in registry.names():
-            click.echo(f"  {name:<19} {registry.get(name).summary}")
+        for name in kind_names():
+            click.echo(f"  {name:<19} {kind_named(name).summary}")
         return
     try:
         if output is not None:

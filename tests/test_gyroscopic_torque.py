@@ -18,7 +18,8 @@ import math
 import numpy as np
 import pytest
 
-from gyro_cli.kinds.gyroscopic_torque import bearing_forces, gyroscopic_moment
+from gyro_cli.kinds.gyroscopic_torque import bearing_forces
+from oracles import gyroscopic_moment
 from rotations import K, omega_of, rx, rz
 
 RPM = 2 * math.pi / 60

@@ -102,9 +102,9 @@ def test_item09_every_gyro_new_statement_reads_as_a_sentence(run, tmp_path, name
 def test_item09_a_kind_without_its_own_statement_still_gets_sentences(monkeypatch, name):
     """A new kind whose example carries no statement: the template's sentence is made
     from the keys' descriptions and still reads as one."""
-    example = dict(kinds.get(name).extra.get("example") or {})
+    example = dict(kinds.get(name).example or {})
     example.pop("statement", None)
-    monkeypatch.setitem(kinds.get(name).extra, "example", example)
+    monkeypatch.setattr(kinds.get(name), "example", example)
     text = authoring.template(name)
     data = yaml.safe_load(text)
     filled = _fill(" ".join(data["statement"].split()), data["given"])

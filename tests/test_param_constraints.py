@@ -52,7 +52,7 @@ def _written(p: Param, value: float):
 
 
 def _file(write, kind_name: str, key: str, text) -> str:
-    example = kinds.get(kind_name).extra["example"]
+    example = kinds.get(kind_name).example
     data = {"id": "limit", "kind": kind_name, "given": dict(example["given"], **{key: text}),
             "find": example["find"]}
     return str(write(yaml.safe_dump(data, sort_keys=False)))

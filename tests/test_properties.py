@@ -121,7 +121,7 @@ def _bases() -> list[dict]:
 
     out = []
     for name in KIND_NAMES:
-        example = kinds.get(name).extra.get("example")
+        example = kinds.get(name).example
         if example:
             out.append({"id": f"{name}-example", "kind": name,
                         "given": dict(example.get("given", {})),

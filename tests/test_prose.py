@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import PI, Sym, cos, sin
 from gyro_cli.core.expr import SumOf, formula, python, substitution
@@ -22,11 +23,8 @@ from formula_oracle import spans
 from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
-#: kinds whose every line of prose that holds maths is written as words and trees
-PROSE_KINDS = {"aeroplane", "bicycle", "earth_precession", "euler_angles", "four_wheeler",
-               "gyro_drift", "gyrocompass", "gyroscopic_torque", "rate_gyro", "released_top",
-               "rolling_disk", "ship", "steady_precession", "swinging_rotor", "torque_free",
-               "two_wheeler"}
+#: kinds whose every line of prose that holds maths is written as words and trees: every kind
+PROSE_KINDS = set(kinds.names())
 
 #: kinds whose section titles are words and trees where they hold maths (steady_precession
 #: joins when its titles are written so)

@@ -12,8 +12,9 @@ import re
 
 import pytest
 
-KINDS = ("steady_precession", "ship", "gyroscopic_torque", "four_wheeler", "aeroplane",
-         "two_wheeler", "rate_gyro", "gyro_drift", "gyrocompass")
+from gyro_cli import kinds
+
+KINDS = kinds.names()
 FORMATS = ("text", "latex", "markdown", "json")
 
 

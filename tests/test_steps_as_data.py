@@ -139,22 +139,31 @@ def test_render_reads_no_formula_text():
         work.step("M", "m g l sin(theta)")
 
 
-def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
-    """The kind's steps are evaluated from their trees; physics/gyrocompass.py computes
-    the same quantities independently (the swing period by its own AGM)."""
-    from gyro_cli.physics import gyrocompass as P
+def _agm(a: float, b: float) -> float:
+    while abs(a - b) > 1e-15 * a:
+        a, b = (a + b) / 2, math.sqrt(a * b)
+    return a
 
+
+def test_gyrocompass_trees_agree_with_the_physics_functions(tmp_path):
+    """The kind's steps are evaluated from their trees; the formulas of
+    physics/gyrocompass.py (Kibble & Berkshire 9.15), written out here on floats, give
+    the same, and the swing period the pendulum's exact period by the AGM:
+    T0 (2/pi) K(sin(alpha/2)), K(k) = pi / (2 AGM(1, sqrt(1 - k^2)))."""
     result = solve_file(str(ROOT / "problems" / "gyrocompass_ship.yaml"))
     steps = {s.symbol: s for sec in result.solution.sections for s in sec.steps if s.expr}
     syms = {name: s.si for st in steps.values()
             for name, s in __import__("gyro_cli.core.expr", fromlist=["symbols"]).symbols(
                 st.expr).items()}
     H, W, lat, alpha, I_v = (syms[k] for k in ("H", "Omega_E", "lambda", "alpha", "I_v"))
-    assert steps["D"].value == pytest.approx(P.directive_stiffness(H, W, lat), rel=1e-12)
-    assert steps["M"].value == pytest.approx(P.north_seeking_moment(H, W, lat, alpha), rel=1e-12)
-    assert steps["T"].value == pytest.approx(P.period(I_v, H, W, lat), rel=1e-12)
+    D = H * W * math.cos(lat)
+    T0 = 2 * math.pi * math.sqrt(I_v / D)
+    k = math.sin(abs(alpha) / 2)
+    assert steps["D"].value == pytest.approx(D, rel=1e-12)
+    assert steps["M"].value == pytest.approx(D * math.sin(alpha), rel=1e-12)
+    assert steps["T"].value == pytest.approx(T0, rel=1e-12)
     assert steps["T(alpha)"].value == pytest.approx(
-        P.swing_period(I_v, H, W, lat, alpha), rel=1e-12)
+        T0 * 2 / math.pi * math.pi / (2 * _agm(1.0, math.sqrt(1 - k * k))), rel=1e-12)
 
 
 def _tree_steps(path: Path) -> tuple[dict, dict]:
@@ -332,10 +341,9 @@ def test_torque_free_trees_agree_with_the_physics(name):
                                   "rate_integrating_gyro.yaml", "11_3_bearing_moment.yaml",
                                   "template"])
 def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
-    """Each step from its tree against physics/rate_gyro.py; f_n (Hz) is omega_n (rad/s)
-    over 2 pi."""
-    from gyro_cli.physics import rate_gyro as P
-
+    """Each step from its tree against the rate gyro's formulas written out here on floats
+    (Thomson ch. 5; the kind builds its trees from physics/rate_gyro.py); f_n (Hz) is
+    omega_n (rad/s) over 2 pi."""
     path = ROOT / "problems" / name
     if name == "template":
         path = tmp_path / "rate_gyro.yaml"
@@ -345,16 +353,15 @@ def test_rate_gyro_trees_agree_with_the_physics(name, tmp_path):
     if "Omega" in steps:  # from the measurement
         O = steps["Omega"].value
         if "M" in v and "k" not in v:
-            assert O == pytest.approx(P.rate_from_moment(H, v["M"]), rel=1e-12)
+            assert O == pytest.approx(v["M"] / H, rel=1e-12)
     O = v["Omega"] if "Omega" in v else None
     checks = {"M": lambda: H * O,
-              "theta": lambda: (P.steady_deflection(H, O, v["k"]) if "k" in v
-                                else H / v["c"] * v["phi"]),
+              "theta": lambda: (H * O / v["k"] if "k" in v else H / v["c"] * v["phi"]),
               "S": lambda: H / v["k"],
-              "omega_n": lambda: P.natural_frequency(v["k"], v["I_g"]),
-              "f_n": lambda: P.natural_frequency(v["k"], v["I_g"]) / (2 * math.pi),
-              "zeta": lambda: P.damping_ratio(v["c"], v["k"], v["I_g"]),
-              "thetadot": lambda: P.gimbal_rate(H, O, v["c"]),
+              "omega_n": lambda: math.sqrt(v["k"] / v["I_g"]),
+              "f_n": lambda: math.sqrt(v["k"] / v["I_g"]) / (2 * math.pi),
+              "zeta": lambda: v["c"] / (2 * math.sqrt(v["k"] * v["I_g"])),
+              "thetadot": lambda: H * O / v["c"],
               "H / c": lambda: H / v["c"], "tau": lambda: v["I_g"] / v["c"]}
     for symbol, step in steps.items():
         if symbol in checks:
@@ -823,6 +830,7 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
     """Each step from its tree against gyroscopic_torque's physics functions (Eq. 11.29
     generalised, the slow root, the free body of the rotor, the wheel's drop), with
     negative rates and angles past 90 deg among them."""
+    import oracles
     from gyro_cli.kinds import gyroscopic_torque as K
 
     path = tmp_path / "t.yaml"
@@ -836,10 +844,10 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
     if "psidot" in by and "v" in v and "r_w" in v:
         assert by["psidot"] == pytest.approx(v["v"] / v["r_w"], rel=1e-12)
     if "t" in by:
-        assert by["Omega"] == pytest.approx(K.tilt_rate_uniform(v["h"], v["v"], v["s"], v["L"]),
+        assert by["Omega"] == pytest.approx(oracles.tilt_rate_uniform(v["h"], v["v"], v["s"], v["L"]),
                                             rel=1e-12)
     if "ydot_max" in by:
-        assert by["Omega"] == pytest.approx(K.tilt_rate_harmonic(v["h"], v["T_d"], v["L"]),
+        assert by["Omega"] == pytest.approx(oracles.tilt_rate_harmonic(v["h"], v["T_d"], v["L"]),
                                             rel=1e-12)
     if "R" in v and "Omega" in by:
         sign = -1 if "right" in given else 1
@@ -848,7 +856,7 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
         roots = K.precession_for_moment(J, I, v["psidot"], th, v["M"])
         assert by["Omega"] == pytest.approx(min(roots, key=abs), rel=1e-12)
     Omega = by.get("Omega", v.get("Omega"))
-    M = K.gyroscopic_moment(J, I, v["psidot"], Omega, th)
+    M = oracles.gyroscopic_moment(J, I, v["psidot"], Omega, th)
     assert by["M"] == pytest.approx(M, rel=1e-12)
     if "F_A,weight" in by:
         m = v.get("m_s", v.get("m"))
@@ -865,7 +873,7 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
         assert (by["F_A,couple"], by["F_B,couple"]) == pytest.approx(
             K.couple_forces(M, v["L"]), rel=1e-12)
     if "db" in by:
-        assert by["db"] == pytest.approx(K.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
+        assert by["db"] == pytest.approx(oracles.counterweight_offset(M, v["m_c"], v["g"]), rel=1e-12)
     assert steps
 
 

@@ -22,9 +22,8 @@ Rules (see docs/check.md):
 
 from __future__ import annotations
 
-import dataclasses
 import os
-from typing import Any, Callable, Iterator
+from typing import Any, Callable, Generator, Iterator
 
 from ..core.errors import InputError
 from .expected import Expected, parse_expected
@@ -52,7 +51,7 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     ``strict``: every computed root must be keyed (else a root the key does not
     quote is reported as not keyed and does not fail).
     """
-    from ..solving.solve import solve
+    from ..solving.solve import solve_asking
 
     kind = problem.kind
     result = ProblemCheck(problem.file, problem.id, problem.title, kind.name)
@@ -72,11 +71,8 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         dimension = spec.dimension
         values = parse_expected(raw, dimension, f"expected.{name}", spec.sides, spec.signs)
         wanted[name] = (values, tolerance_for(problem.tolerance, name, dimension, answer_names))
-    if any(name not in problem.find for name in wanted):  # asked for too, in its SI unit
-        problem = dataclasses.replace(problem, find=problem.find | {
-            name: None for name in wanted if name not in problem.find})
     # Solved even without expected answers: a file that cannot be solved is a bad file.
-    solved = solve(problem)
+    solved = solve_asking(problem, wanted)  # each expected answer asked for too, in SI
     if problem.steps:  # steps asked (`steps:`): each a step of the worked answer
         from .ecf import check_steps
 
@@ -171,7 +167,7 @@ def check_file(path: str, strict: bool = False) -> ProblemCheck:
 def run(paths: list[str] | tuple[str, ...], strict: bool = False) -> CheckRun:
     """Check every problem file under ``paths``, all in this process."""
     files, errors = collect(paths)
-    return CheckRun(errors + [check_file(f, strict) for f in files], strict=strict)
+    return CheckRun(errors + list(checks(files, strict, timeout=None)), strict=strict)
 
 
 # ---- sharding: a stable part of the files for one job of a CI matrix --------
@@ -255,7 +251,7 @@ def crashed(path: str, exitcode: int | None) -> ProblemCheck:
 def checks(files: list[str], strict: bool = False, jobs: int = 1,
            timeout: float | None = TIMEOUT,
            then: Callable[[ProblemCheck], Any] | None = None,
-           idle: Callable[[], Any] | None = None) -> Iterator[Any]:
+           idle: Callable[[], Any] | None = None) -> Generator[Any, None, None]:
     """Each file's ProblemCheck, in the order of ``files``, as soon as it is known; or,
     given ``then``, ``then`` of it, applied where the file was checked (so a worker
     hands back what the caller makes of a result, e.g. its report text). ``idle()`` is
@@ -299,11 +295,11 @@ def warm() -> None:
     pages it shares."""
     import gc
 
-    from .. import kinds
+    from ..kinds import preload
     from ..core import safeyaml, unit_cache
     from ..solving import solve  # noqa: F401 -- imported for the workers
 
-    kinds.preload()
+    preload()
     safeyaml.loader_class()
     unit_cache.get("parse", "")
     gc.freeze()

@@ -25,7 +25,6 @@ The sheet is read like a problem file: only a regular file, at most
 from __future__ import annotations
 
 import csv
-import dataclasses
 import io
 import math
 import re
@@ -297,10 +296,31 @@ def grade(sheet: str, paths: list[str] | tuple[str, ...],
     return conceal(graded, student, reveal) if student is not None else graded
 
 
+def _solved_for(problem: Any, names: Any, key: str, solved: dict[str, Any],
+                graded: Graded, locate: bool = False) -> None:
+    """``solved[key]``: the problem solved asking also for the answers ``names`` (a step
+    asked, `steps:`, is no answer: it is checked to be a step of the working). Bad input
+    stops the grading (``locate``: named with the problem's file); a bug makes this
+    problem's rows errors and the rest is graded."""
+    from ..solving.solve import solve_asking
+
+    try:
+        solved[key] = solve_asking(problem, [n for n in names
+                                             if problem.kind.answer(n) is not None])
+        check_steps(problem, solved[key])
+    except InputError as err:
+        if locate:
+            raise err.located(file=problem.file) from None
+        raise
+    except Exception as err:
+        from ..core.errors import internal_message
+
+        graded.errors.append(internal_message(problem.file, err))
+
+
 def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                  credit: dict[str, float] | None, submitter: str | None) -> Graded:
     """Every submission of ``sheet`` against the problem of its id under ``paths``."""
-    from ..solving.solve import solve
 
     submissions = read_sheet(sheet)
     if submitter is not None:
@@ -323,20 +343,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
     graded = Graded([])
     solved = {}
     for pid, names in asked.items():
-        problem = problems[pid]
-        find = dict(problem.find)
-        for name in names:
-            if problem.kind.answer(name) is not None:
-                find.setdefault(name, None)
-        try:
-            solved[pid] = solve(dataclasses.replace(problem, find=find))
-            check_steps(problem, solved[pid])
-        except InputError:
-            raise
-        except Exception as err:  # a bug: this problem's rows are errors, the rest is graded
-            from ..core.errors import internal_message
-
-            graded.errors.append(internal_message(problem.file, err))
+        _solved_for(problems[pid], names, pid, solved, graded)
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
     graded.sheet_students = students
@@ -479,7 +486,6 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
 
     from .assignment import load_variant, read_assignment, read_key
     from ..solving.problem import load
-    from ..solving.solve import solve
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
@@ -574,19 +580,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         if variant in stored:
             solved[variant] = stored[variant]
             continue
-        find = dict(problem.find)
-        for name in questions[plan.by_variant[variant].problem]:
-            if problem.kind.answer(name) is not None:  # not a step (`steps:`)
-                find.setdefault(name, None)
-        try:
-            solved[variant] = solve(dataclasses.replace(problem, find=find))
-            check_steps(problem, solved[variant])
-        except InputError as err:
-            raise err.located(file=problem.file) from None
-        except Exception as err:  # a bug: this variant's rows are errors, the rest is graded
-            from ..core.errors import internal_message
-
-            graded.errors.append(internal_message(problem.file, err))
+        _solved_for(problem, questions[plan.by_variant[variant].problem], variant, solved,
+                    graded, locate=True)
     lookup = VariantIndex(plan, variants, solved)
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:

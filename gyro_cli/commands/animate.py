@@ -28,8 +28,6 @@ DEFAULT_PERIODS = 3.0
 MAX_FRAMES = 3600          # two minutes at 30 frames/s
 MS_PER_PANEL_FRAME = 10.0  # measured render cost of one panel frame (benchmarks/bench_animate.py)
 RPM = 2 * math.pi / 60
-KINDS = ("released_top", "steady_precession", "torque_free", "gyroscopic_torque",
-         "rolling_disk", "bicycle")
 
 
 @dataclass
@@ -359,11 +357,10 @@ def bicycle_response(m, v: float, g: float, t: np.ndarray, lean_rate0: float = P
 
 def _bicycle(problem, result, periods, speed, fps):
     from ..core.work import Work
-    from ..kinds import bicycle as kind
     from ..physics import bicycle as bike
 
     given = problem.given
-    p = kind.parameters(given, Work())
+    p = problem.kind.model(given, Work())
     gyroscopic = given.word("gyroscopic", "true") == "true"
     m = bike.matrices(p, gyroscopic)
     stab = bike.stability(m, p["g"])
@@ -463,9 +460,9 @@ def _align_z(direction: np.ndarray) -> np.ndarray:
     return np.eye(3) + math.sin(angle) * K + (1 - math.cos(angle)) * K @ K
 
 
-BUILDERS = {"released_top": _released, "steady_precession": _steady,
-            "torque_free": _torque_free, "gyroscopic_torque": _turning_rotor,
-            "rolling_disk": _rolling, "bicycle": _bicycle}
+#: the scene of each motion a kind may declare (Kind.animation), in the order messages list them
+BUILDERS = {"nutating_top": _released, "steady_top": _steady, "free_body": _torque_free,
+            "turning_rotor": _turning_rotor, "rolling": _rolling, "lean_and_steer": _bicycle}
 
 
 def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
@@ -475,8 +472,11 @@ def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
     from ..solving.solve import solve
 
     problem = load(path)
-    if problem.kind.name not in BUILDERS:
-        raise InputError(f"--animate draws the kinds that move: {', '.join(KINDS)}; this file "
+    if problem.kind.animation not in BUILDERS:
+        from ..kinds import offering
+
+        raise InputError(f"--animate draws the kinds that move: "
+                         f"{', '.join(offering('animation', BUILDERS))}; this file "
                          f"is kind {problem.kind.name!r}", file=path, key="kind")
     if periods is not None and not (math.isfinite(periods) and periods > 0):
         raise InputError("--periods must be a positive number")
@@ -485,11 +485,11 @@ def build_scene(path: str, periods: float | None = None, speed: float = 1.0,
 
 def scene_of(problem, result, periods: float | None = None, speed: float = 1.0,
              fps: float = 30.0, path: str | None = None):
-    """(Scene, simulations) for a problem already solved (its kind one of KINDS)."""
+    """(Scene, simulations) for a problem already solved (its kind one that moves)."""
     from ..render.animate import Scene
 
     try:
-        panels, clock, notes, sims = BUILDERS[problem.kind.name](
+        panels, clock, notes, sims = BUILDERS[problem.kind.animation](
             problem, result, periods or DEFAULT_PERIODS, speed, fps)
     except InputError as err:
         raise err.located(file=path or problem.file) from None

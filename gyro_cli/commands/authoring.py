@@ -24,7 +24,7 @@ import os
 import random
 from typing import Any, Iterator
 
-from .. import kinds
+from ..kinds import get as kind_named, names as kind_names_of
 from ..core import units
 from ..core.alternatives import alternatives_of
 from ..core.body import BODY_PARAMS
@@ -53,8 +53,8 @@ def _line(text: str, comment: str, width: int = 30) -> str:
 
 def template(kind_name: str) -> str:
     """A commented problem file with every key of ``kind_name``."""
-    kind = kinds.get(kind_name)
-    example = kind.extra.get("example") or {}  # a complete, solvable example of the kind
+    kind = kind_named(kind_name)
+    example = kind.example  # a complete, solvable example of the kind
     given_ex: dict[str, str] = dict(example.get("given", {}))
     find_ex: dict[str, Any] = dict(example.get("find", {}))
     out = [f"# A gyro problem file of kind {kind.name}: {kind.summary}.",
@@ -79,15 +79,15 @@ def template(kind_name: str) -> str:
            _line("given:", "required: the data, each with its unit")]
     if not given_ex:
         out.append("  # (fill in: uncomment and edit the keys this problem gives)")
-    body = [p for p in BODY_PARAMS if p.name in kind.extra.get(
-        "body_keys", [b.name for b in BODY_PARAMS]) and (p.name != "g" or kind.extra.get(
-            "gravity", True))] if kind.uses_body else []
+    body_keys = kind.body_keys or [b.name for b in BODY_PARAMS]
+    body = [p for p in BODY_PARAMS if p.name in body_keys and (p.name != "g" or kind.gravity)
+            ] if kind.uses_body else []
     params = list(kind.params) + body
     for i, p in enumerate(params):
         if kind.uses_body and i == len(kind.params):
             out.append("  # the body: " + ("mass or weight; J or k_axial; I_pivot, k_pivot, "
                                            "I_cg, k_cg or shape; cg_distance"
-                                           if "body_keys" not in kind.extra else
+                                           if kind.body_keys is None else
                                            "the rotor's J, or k_axial with mass, or a shape"))
         what = p.dimension
         comment = f"{what}: {p.doc}" + (f" (default {p.default})" if p.default else "")
@@ -137,7 +137,7 @@ def _statement_example(kind: Kind, given: dict[str, str], find: dict[str, Any]) 
     without one the sentence is made from the keys' plain descriptions (never from the
     formulas in the answers' docs, which read badly cut out of a sentence).
     """
-    example = kind.extra.get("example") or {}
+    example = kind.example
     if example.get("statement"):
         return " ".join(str(example["statement"]).split())
     params = {p.name: p for p in list(kind.params) +
@@ -219,10 +219,10 @@ def schema() -> dict[str, Any]:
     tolerance_one = {"type": "string", "maxLength": units.MAX_TEXT,
                      "description": "\"1%\" relative, \"3 sig\" significant figures, or a "
                                     "quantity (\"0.01 rad/s\") absolute"}
-    kind_names = kinds.names()
+    kind_names = kind_names_of()
     rules = []
     for name in kind_names:
-        kind = kinds.get(name)
+        kind = kind_named(name)
         rules.append({"if": {"properties": {"kind": {"const": name}}, "required": ["kind"]},
                       "then": {"properties": _kind_properties(kind, quantity, tolerance_one)}})
     return {

@@ -237,17 +237,6 @@ def accepts(tol: "Tolerance", half: float, unit: str) -> str:
     return f"within {float(number_text(half)):.3g} {unit}".strip()
 
 
-def _with_expected(problem: "Problem") -> "Problem":
-    """The problem asking also for every answer it has an expected value of."""
-    import dataclasses
-
-    find = dict(problem.find)
-    for name in problem.expected:
-        if problem.kind.answer(name) is not None:  # not a step's (`steps:`)
-            find.setdefault(name, None)
-    return dataclasses.replace(problem, find=find)
-
-
 def _data_lines(solved: Any) -> list[tuple[str, str]]:
     return [(g.key.replace("_", " "), g.text.replace("_", " ")
              + (f" ({g.note})" if g.note else "")) for g in solved.solution.given]
@@ -269,11 +258,12 @@ def variant_of(problem: "Problem", number: int, title: str,
     from ..checking.tolerance import parse_tolerance
     from ..render import html
     from ..render.bank import Variant, blank_prompt, precision_html, statement_html
-    from ..solving.solve import solve
+    from ..solving.solve import asking, solve
 
     student = student or parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
     asked = _asked(problem, ask)
-    problem = _with_expected(problem)
+    problem = asking(problem, [name for name in problem.expected  # every answer it has an
+                               if problem.kind.answer(name) is not None])  # expected value of
     solved = si_solved = solve(problem)
     if problem.steps:
         from ..checking.ecf import check_steps
@@ -324,9 +314,9 @@ def _lost_line(path: str, variant: "Variant") -> str:
 
 def _picture(solved: Any) -> tuple[bytes, str]:
     """The worked answer's picture as PNG and its alt text (b"" for a kind without one)."""
-    from ..render.picture import KINDS, png
+    from ..render.picture import png
 
-    if solved.problem.kind.name not in KINDS:
+    if not solved.problem.kind.picture:
         return b"", ""
     return png(solved) or (b"", "")
 

@@ -15,13 +15,14 @@ import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
+from typing import Any, Callable
 
 from ..core.errors import InputError, terminal_text
 from ..core.work import num
 
 RPM = 2 * math.pi / 60
-KINDS = ("released_top", "steady_precession")
+#: what a kind may declare `gyro simulate` integrates (Kind.simulation), in message order
+SIMULATIONS = ("released", "steady")
 SAMPLES_PER_PERIOD = 200
 MAX_SAMPLES = 2_000_001
 CSV_HEADER = "t_s,theta_rad,phi_rad,psi_rad,thetadot_rad_s,phidot_rad_s,psidot_rad_s"
@@ -31,8 +32,8 @@ CSV_HEADER = "t_s,theta_rad,phi_rad,psi_rad,thetadot_rad_s,phidot_rad_s,psidot_r
 class Setup:
     """What to integrate, what theory says, and over how long."""
 
-    problem: object
-    params: object                     # simulate.Params
+    problem: Any                       # solving.problem.Problem
+    params: Any                        # simulate.Params
     analytic: dict                     # theta_min, theta_max, nutation_period, mean_precession, motion
     period: float                      # the time unit of --periods
     period_meaning: str
@@ -45,14 +46,17 @@ def prepare(path: str) -> Setup:
     from ..solving.solve import solve
 
     problem = load(path)
-    if problem.kind.name not in KINDS:
-        raise InputError(f"simulate integrates the heavy top: kinds {', '.join(KINDS)}; this "
+    if problem.kind.simulation not in SIMULATIONS:
+        from ..kinds import offering
+
+        raise InputError(f"simulate integrates the heavy top: kinds "
+                         f"{', '.join(offering('simulation', SIMULATIONS))}; this "
                          f"file is kind {problem.kind.name!r}", file=path, key="kind")
     result = solve(problem)        # every check the kind makes on its input
     given = problem.given
     body = given.body
     try:
-        if problem.kind.name == "released_top":
+        if problem.kind.simulation == "released":
             return _released(problem, given, body)
         return _steady(problem, given, body, result)
     except InputError as err:
@@ -200,7 +204,7 @@ def comparison(setup: Setup, sim) -> dict:
                                  f"(theta reached {math.degrees(simulated[key]):.6g} deg at an "
                                  "end of the run)")
                 simulated[key] = None
-    difference = {}
+    difference: dict[str, Any] = {}
     for key in ("theta_min", "theta_max", "nutation_period", "mean_precession"):
         a, s = setup.analytic.get(key), simulated.get(key)
         if a is None or s is None:
@@ -279,7 +283,7 @@ def text(report: dict, periods: float) -> str:
                      f"{diff:>13}{rel:>11}")
     drift = report["drift"]
     inv = report["invariants"]
-    rows = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
+    integrals = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
              drift["energy"], "T0 + m g l"),
             ("  the same, its varying part", "", drift["energy_varying"],
              "max I (w_x^2 + w_y^2)/2 + m g l"),
@@ -289,7 +293,7 @@ def text(report: dict, periods: float) -> str:
              "|H| (J omega_z' = 0 exactly)"),
             ("quaternion norm |q|", "1", drift["quaternion_norm"], "not renormalised"))
     lines += ["", f"  {'integral of the motion':<34}{'at t = 0':>24}{'max drift':>11}  relative to"]
-    for label, value, d, scale in rows:
+    for label, value, d, scale in integrals:
         lines.append(f"  {label:<34}{value:>24}{d:>11.1e}  {scale}")
     lines.append(f"  theta range over the run: {math.degrees(report['theta_range']):.6g} deg")
     for note in report["notes"]:

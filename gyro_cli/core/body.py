@@ -244,6 +244,12 @@ class Body:
         """m g l: the gravity moment per unit sin(theta) (Eq. 11.11); 0 when l = 0."""
         return self.mass_for_rates * self.g * self.l if self.l else 0.0
 
+    def needed(self, name: str) -> float:
+        """The body's ``name`` (J, I_cg, I_pivot, radius), refused as `require` refuses it."""
+        self.require(name)
+        value: float = getattr(self, name)
+        return value
+
     def require(self, *names: str) -> None:
         """Raise InputError naming the body data a kind needs but lacks."""
         how = {"J": "J, k_axial or a shape", "I_pivot": "I_pivot, k_pivot, I_cg or k_cg "

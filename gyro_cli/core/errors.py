@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 
 class InputError(Exception):
     """Bad or physically impossible input.
@@ -37,6 +39,14 @@ class InputError(Exception):
             where.append(f"line {self.line}")
         text = _one_line(" ".join(self.message.split()))  # always one line, no escapes
         return ": ".join(where + [text])
+
+
+def refuse_overflow(*values: float) -> None:
+    """Refuse data whose products overflow double precision (any of ``values`` not finite)."""
+    if not all(map(math.isfinite, values)):
+        raise InputError("these data are outside what gyro can compute reliably in double "
+                         "precision (a product overflows); check the magnitudes and units",
+                         key="given")
 
 
 def shown(value: object) -> str:

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 from .record import field, record
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, overload
 
 from .errors import InputError
+from .params import MISSING_KEY
 
 if TYPE_CHECKING:
     from .body import Body
@@ -31,18 +32,36 @@ class Given:
 
     def __getitem__(self, key: str) -> float:
         if key not in self.values:
-            raise InputError("this problem needs this key in `given`", key=f"given.{key}")
+            raise InputError(MISSING_KEY, key=f"given.{key}")
         value = self.values[key]
         if isinstance(value, str):
             raise InputError(f"expected a quantity, got the word {value!r}", key=f"given.{key}")
         return value
 
+    @overload
+    def get(self, key: str, default: float) -> float: ...
+
+    @overload
+    def get(self, key: str, default: float | None = None) -> float | None: ...
+
     def get(self, key: str, default: float | None = None) -> float | None:
         return self[key] if key in self.values else default
+
+    @overload
+    def word(self, key: str, default: str) -> str: ...
+
+    @overload
+    def word(self, key: str, default: str | None = None) -> str | None: ...
 
     def word(self, key: str, default: str | None = None) -> str | None:
         value = self.values.get(key, default)
         return value if value is None else str(value)
+
+    @property
+    def solid_body(self) -> "Body":
+        """The body of a kind that has one (``Kind.uses_body``: solve.py has built it)."""
+        assert self.body is not None, "this kind declares no body"
+        return self.body
 
     def given_explicitly(self, key: str) -> bool:
         return key in self.values and key not in self.defaulted

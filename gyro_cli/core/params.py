@@ -43,8 +43,13 @@ class Param:
     reason: str = ""
     symbol_tree: object = None  # a symbol that is not one name, as a tree (core.expr)
     hemisphere: str = ""  # "NS" (a latitude) or "EW" (a longitude): "30 S" is -30 deg
+    #: the kind cannot solve without this key: True refuses its absence with the message
+    #: every missing key gets; a string is the refusal's own words
+    required: bool | str = False
 
     def __post_init__(self) -> None:
+        if self.required and self.default is not None:
+            raise ValueError(f"{self.name}: a required key has no default")
         if self.bounds not in BOUNDS:
             raise ValueError(f"{self.name}: bounds is one of {BOUNDS}, not {self.bounds!r}")
         if self.range is not None and not self.range[0] < self.range[1]:
@@ -151,6 +156,32 @@ _OPS = {">": operator.gt, ">=": operator.ge, "<": operator.lt, "<=": operator.le
         "!=": operator.ne, "whole": lambda v, x: math.isfinite(v) and (v / x).is_integer()}
 _FLIP = {"(": "<", "[": "<="}  # a range's lower end, read left to right
 _OPS_OF = {")": "<", "]": "<="}
+
+
+MISSING_KEY = "this problem needs this key in `given`"
+
+
+@record(frozen=True)
+class OneOf:
+    """Keys of which a problem gives exactly one (``optional``: at most one).
+
+    ``missing`` refuses none (at the first key); ``many`` two or more (at the second
+    given), with ``{keys}`` the keys and ``{present}`` those given, joined by "and".
+    """
+
+    keys: tuple[str, ...]
+    missing: str = ""
+    many: str = "give one of {keys}, not {present}: they say the same thing"
+    optional: bool = False
+
+    def refusal(self, present: list[str]) -> tuple[str, str] | None:
+        """(message, key) refusing the keys ``present``, or None if they are one of."""
+        if not present and not self.optional:
+            return self.missing, self.keys[0]
+        if len(present) > 1:
+            return (self.many.format(keys=", ".join(self.keys), present=" and ".join(present)),
+                    present[1])
+        return None
 
 
 @record(frozen=True)

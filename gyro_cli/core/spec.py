@@ -7,15 +7,15 @@ line in the registry ``gyro_cli/kinds/__init__.py``.
 from __future__ import annotations
 
 from .record import field, record
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
-from .params import AnswerSpec, Param
+from .params import AnswerSpec, OneOf, Param
 
 if TYPE_CHECKING:
     from .given import Given
     from .work import Work
 
-__all__ = ["AnswerSpec", "Kind", "Param"]
+__all__ = ["AnswerSpec", "Kind", "OneOf", "Param"]
 
 
 @record(frozen=True)
@@ -34,7 +34,30 @@ class Kind:
     solve: Callable[["Given", frozenset[str], "Work"], None]
     uses_body: bool = True
     chapter: str = ""
-    extra: dict = field(default_factory=dict)
+    #: a complete, solvable example for ``gyro new``: its ``given``, ``find``, ``vary`` and
+    #: a ``statement`` with ``{key}`` placeholders
+    example: dict[str, Any] = field(default_factory=dict)
+    gravity: bool = True  # gravity acts on the body (False: no g key, no default g line)
+    #: the body keys the kind reads (None: every key of the body, BODY_PARAMS)
+    body_keys: tuple[str, ...] | None = None
+    size_free: bool = False  # the body may be given by its moments alone, without a size
+    #: groups of keys of which a problem gives one (checked before ``solve``, as are the
+    #: params that are ``required``)
+    one_of: tuple[OneOf, ...] = ()
+    # What the layers above offer a kind, by what the kind says it is (never by its name):
+    #: the picture of a solved problem (render/picture.py, `gyro solve --plot`):
+    #: "axis_path" (the axis seen from above, theta(t), phidot(t)) or "eigenvalues"
+    picture: str = ""
+    #: the scene `--animate` draws (commands/animate.py): "nutating_top", "steady_top",
+    #: "free_body", "turning_rotor", "rolling" or "lean_and_steer"
+    animation: str = ""
+    #: what `gyro simulate` integrates beside the answer: "released" or "steady" (a top)
+    simulation: str = ""
+    #: the physics modules the solver imports on first use (preloaded before forking)
+    physics: tuple[str, ...] = ()
+    #: the model the pictures and scenes draw, from the given data: ``model(given, work)``
+    #: (the bicycle's parameters in SI)
+    model: "Callable[[Given, Work], Any] | None" = None
 
     def __repr__(self) -> str:  # short: gyro_cli.kinds() lists sixteen of them
         return f"<Kind {self.name}: {self.summary}>"

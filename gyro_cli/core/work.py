@@ -6,6 +6,8 @@ Values are SI floats; text is formatted to 4 significant figures here, once.
 
 from __future__ import annotations
 
+from typing import overload
+
 from .record import field, record
 
 from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
@@ -204,6 +206,22 @@ class Work:
         if not self.sections:
             self.section("Solution")
         return self.sections[-1]
+
+    @overload
+    def step(self, symbol: str | Expr, formula: Expr, *, unit: str = "", ref: str = "",
+             note: "str | tuple[str | Expr, ...]" = "", substitute: bool = True,
+             state: bool = True) -> float: ...
+
+    @overload
+    def step(self, symbol: str | Expr, formula: None = None, *, value: float, unit: str = "",
+             ref: str = "", note: "str | tuple[str | Expr, ...]" = "",
+             substitute: bool = True, state: bool = True) -> float: ...
+
+    @overload
+    def step(self, symbol: str | Expr, formula: Expr | None = None, *,
+             value: float | None = None, unit: str = "", ref: str = "",
+             note: "str | tuple[str | Expr, ...]" = "",
+             substitute: bool = True, state: bool = True) -> float | None: ...
 
     def step(self, symbol: str | Expr, formula: Expr | None = None, *,
              value: float | None = None, unit: str = "", ref: str = "",

@@ -9,6 +9,7 @@ from __future__ import annotations
 import sys
 import types
 from importlib import import_module
+from typing import Iterable
 
 from ..core.errors import InputError
 from ..core.spec import Kind
@@ -34,10 +35,6 @@ REGISTRY: dict[str, str] = {
     "edge_runner": "gyro_cli.kinds.edge_runner",
 }
 
-# In the format but not built yet: named plainly rather than "unknown".
-PLANNED: dict[str, str] = {
-}
-
 
 def names() -> list[str]:
     return sorted(REGISTRY)
@@ -46,9 +43,6 @@ def names() -> list[str]:
 def get(name: object) -> Kind:
     """The Kind called ``name``; InputError naming the known kinds otherwise."""
     if not isinstance(name, str) or name not in REGISTRY:
-        if isinstance(name, str) and name in PLANNED:
-            raise InputError(f"kind {name!r} ({PLANNED[name]}) is not built in this version of "
-                             f"gyro; built kinds: {', '.join(names())}", key="kind")
         from ..core.errors import shown
 
         raise InputError(f"unknown kind {shown(name)}; known kinds: {', '.join(names())}",
@@ -56,17 +50,22 @@ def get(name: object) -> Kind:
     return import_module(REGISTRY[name]).KIND
 
 
-#: the physics the kinds import when they first solve (so that `gyro solve` of one file
-#: loads only its own)
-SOLVERS = ("gyro_cli.physics.bicycle", "gyro_cli.physics.elliptic",
-           "gyro_cli.physics.nutation", "gyro_cli.physics.stability")
+def offering(capability: str, styles: Iterable[str]) -> list[str]:
+    """The kinds whose ``capability`` (a Kind field: picture, animation, simulation) is one
+    of ``styles``, in the order of ``styles`` (the layer's own table), then by name."""
+    order = {style: i for i, style in enumerate(styles)}
+    found = [(order[style], name) for name in names()
+             if (style := getattr(get(name), capability)) in order]
+    return [name for _, name in sorted(found)]
 
 
 def preload() -> None:
-    """Import every kind and its physics now: for worker processes forked afterwards,
-    which then start with them in memory instead of each importing them again."""
-    for module in (*REGISTRY.values(), *SOLVERS):
-        import_module(module)
+    """Import every kind and the physics its solver imports when it first solves (so that
+    `gyro solve` of one file loads only its own) now: for worker processes forked
+    afterwards, which then start with them in memory instead of each importing them again."""
+    for module in REGISTRY.values():
+        for physics in import_module(module).KIND.physics:
+            import_module(physics)
 
 
 class _Registry(types.ModuleType):

@@ -14,9 +14,8 @@ the gyroscopic couple on an aeroplane); S.S. Rattan, "Theory of Machines", ch. 1
 
 from __future__ import annotations
 
-import math
 
-from ..core.errors import InputError
+from ..core.errors import InputError, refuse_overflow
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
@@ -42,9 +41,8 @@ _REACTION, _SIZE = -paren(COUPLE), absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
-    body.require("J")
-    J = body.J
+    body = given.solid_body
+    J = body.needed("J")
     motion = given.word("motion", "turn")
     _refuse_foreign(given, motion)
     radius_key = "loop_radius" if motion == "loop" else "turn_radius"
@@ -87,10 +85,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.section(*_COUPLE_TITLE)
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
-    if not math.isfinite(C):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(C)
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
     if sense:
@@ -176,8 +171,7 @@ KIND = Kind(
                    words=V.EFFECT_WORDS["aeroplane"]),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("An aeroplane makes a {turn} turn of radius {turn_radius} at {speed}. Its "
                       "engine and propeller have a mass of {mass} and a radius of gyration of "
                       "{k_axial}, and they turn at {spin}, {rotor_sense}. Find the gyroscopic "
@@ -186,5 +180,5 @@ KIND = Kind(
                   "rotor_sense": "clockwise seen from the rear", "speed": "200 km/h",
                   "turn_radius": "50 m", "turn": "left"},
         "find": {"couple": "N*m", "effect": None},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

@@ -203,7 +203,7 @@ def _matrix_entries() -> tuple[tuple, ...]:
 
 _NO_SPIN = _no_spin()
 _MATRIX_ENTRIES = _matrix_entries()
-_T_TITLE = ("The whole bicycle ", *names("T"), " about the rear contact point (Eqs. A 1-A 5)")
+_T_TITLE: tuple[str | Expr, ...] = ("The whole bicycle ", *names("T"), " about the rear contact point (Eqs. A 1-A 5)")
 _WHEELS_ZZ = ("for the wheels ", rel(*names("I_Rzz"), "=", *names("I_Rxx")),
               " and ", rel(*names("I_Fzz"), "=", *names("I_Fxx")))
 _A_, _H_, _F_ = names("A H F")
@@ -235,7 +235,7 @@ _I = names("I")[0]
 _STATE_MATRIX = (": the eigenvalues of the state matrix ",
                  bracket(bracket(0, _I), bracket(-_M ** -1 * (_g * _K0 + V ** 2 * _K2),
                                                  -_M ** -1 * V * _C1)))
-_IDENTITY = (*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
+_IDENTITY: tuple[str | Expr, ...] = (*names("I"), ": the identity matrix; ", S_, ": an eigenvalue")
 _MOTION = {
     "stable": (" -- every eigenvalue has ", rel(_RE_S, "<", 0), ": a small disturbance "
                "dies out, the bicycle balances itself"),
@@ -507,8 +507,10 @@ KIND = Kind(
         AnswerSpec("K2", "mass", "K2", "speed stiffness matrix (times v^2), same order"),
     ),
     solve=solve,
+    picture="eigenvalues", animation="lean_and_steer", physics=("gyro_cli.physics.bicycle",),
+    model=parameters,
     uses_body=False,
-    extra={"example": {
+    example={
         "statement": ("The benchmark bicycle of Meijaard, Papadopoulos, Ruina and Schwab (2007) "
                       "rides straight ahead at "
                       "{speed}. Find the speeds at which the weave and the capsize modes change "
@@ -517,5 +519,5 @@ KIND = Kind(
         "given": {"preset": "benchmark", "speed": "5 m/s"},
         "find": {"weave_speed": "m/s", "capsize_speed": "m/s", "eigenvalues_real": "s^-1",
                  "eigenvalues_imag": "s^-1", "motion": None},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

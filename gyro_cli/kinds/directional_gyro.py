@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from ..core.expr import Let, Sym, cos, sin, tan
+from ..core.expr import Expr, Let, Sym, cos, sin, tan
 from ..core.given import Given
 from ..core.prose import names, q, rel
 from ..core.spec import AnswerSpec, Kind, Param
@@ -233,7 +233,7 @@ def _momentum(given: Given, work: Work) -> float | None:
 def _total(given: Given, find: frozenset[str], parts: list[tuple[str, float]],
            work: Work) -> None:
     work.section("Drift of the spin axis")
-    total_tree = Sym(parts[0][0], parts[0][1], "deg/h")
+    total_tree: Expr = Sym(parts[0][0], parts[0][1], "deg/h")
     for name, value in parts[1:]:
         total_tree = total_tree + Sym(name, value, "deg/h")
     D = work.step("D", total_tree, unit="deg/h", substitute=len(parts) > 1) * DEG_H
@@ -301,7 +301,7 @@ KIND = Kind(
     params=(
         Param("latitude", "angle", "lambda", "latitude of the craft (the mean latitude of a "
               "flight): '30 S', '45 deg N' or signed, north positive",
-              range=(-math.pi / 2, math.pi / 2), hemisphere="NS"),
+              range=(-math.pi / 2, math.pi / 2), hemisphere="NS", required=True),
         Param("hemisphere", "word", "hemisphere", "north or south, with a latitude written "
               "without one", choices=("north", "south"), words=_HEMISPHERES),
         Param("latitude_nut", "angle", "lambda_n", "latitude the nut is set for: '50 N'; no "
@@ -352,7 +352,7 @@ KIND = Kind(
                    "360 deg"),
     ),
     solve=solve,
-    extra={"example": {
+    example={
         "statement": ("A directional gyro has its latitude nut set for {latitude_nut}. The "
                       "aircraft flies {direction} at a ground speed of {ground_speed} along "
                       "the parallel of {latitude} for {duration}; the gyro read "
@@ -362,5 +362,5 @@ KIND = Kind(
                   "direction": "east", "duration": "2 h", "initial_heading": "90 deg"},
         "find": {"drift_rate": "deg/h", "drift_sense": None, "transport_wander": "deg/h",
                  "indicated_heading": "deg"},
-        "vary": {"ground_speed": "[0.8, 1.2]"}}},
+        "vary": {"ground_speed": "[0.8, 1.2]"}},
 )

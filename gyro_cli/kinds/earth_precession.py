@@ -408,12 +408,12 @@ KIND = Kind(
     ),
     solve=solve,
     uses_body=False,
-    extra={"example": {
+    example={
         "statement": ("Take the Earth, the Sun and the Moon with the constants of the IERS "
                       "Conventions. Find the rate at which the Earth's axis precesses, the time "
                       "for one turn of the axis, and the years it takes to turn one degree."),
         "given": {"preset": "earth"},
         "find": {"precession_rate": "arcsec/yr", "precession_period": "yr",
                  "years_per_degree": "yr/deg"},
-        "vary": {"obliquity": "[10 deg, 40 deg]"}}},
+        "vary": {"obliquity": "[10 deg, 40 deg]"}},
 )

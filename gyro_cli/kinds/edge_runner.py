@@ -133,9 +133,9 @@ KIND = Kind(
                    "pan, n (m g + C / R)"),
     ),
     solve=solve,
-    extra={"gravity": True, "body_keys": ("mass", "weight", "g", "J", "k_axial", "shape",
-                                          "radius", "diameter", "length"),
-           "example": {
+    gravity=True, body_keys=("mass", "weight", "g", "J", "k_axial", "shape", "radius",
+                             "diameter", "length"),
+    example={
         "statement": ("Each of the {rollers} rollers of an edge-runner mill has a mass of "
                       "{mass}, a diameter of {diameter} and a radius of gyration of {k_axial} "
                       "about its axle. The rollers run on a path of mean radius {path_radius} "
@@ -144,5 +144,5 @@ KIND = Kind(
         "given": {"mass": "600 kg", "diameter": "1.2 m", "k_axial": "0.45 m",
                   "path_radius": "0.6 m", "shaft_speed": "30 rpm", "rollers": 2},
         "find": {"couple": "N*m", "extra_pressure": "N", "total_pan_force": "kN"},
-        "vary": {"shaft_speed": "[0.8, 1.2]"}}},
+        "vary": {"shaft_speed": "[0.8, 1.2]"}},
 )

@@ -111,7 +111,7 @@ def _conventions_zyx() -> tuple:
 
 
 _CONVENTIONS = {"zxz": _conventions_zxz(), "zyx": _conventions_zyx()}
-_OMEGA = (*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
+_OMEGA: tuple[str | Expr, ...] = (*names("omega"), ": the body's angular velocity relative to the fixed frame; the "
           "origin is the fixed point, about which the moments of inertia are taken.")
 _W_ABS = absolute(names("omega")[0])
 
@@ -302,7 +302,7 @@ _DOTS = {sequence: names(" ".join(f"{SYMBOLS[k]}dot" for k in keys))
          for sequence, keys in ANGLES.items()}
 _GIVES_BACK = "the inverse of Eq. 11.8 gives back the rates: "
 _p, _q, _r = names("p q r")
-_RATES_TITLE = {"zxz": ("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)"),
+_RATES_TITLE: dict[str, tuple[str | Expr, ...]] = {"zxz": ("Euler rates from ", *names("omega"), " (Eq. 11.8 solved for the rates)"),
                 "zyx": ("Euler rates from ", _p, ", ", _q, ", ", _r, " (yaw, pitch, roll)")}
 _PUT_BACK = ("the rates put back into Eq. 11.8 give ",)
 _OMEGA0 = names("omega")[0]
@@ -618,7 +618,7 @@ def _inertia(given: Given, find: frozenset[str], work: Work):
         moments = _check_rigid(matrix, "given.I_z" if not any(products) else "given.I_xy")
         _report_matrix(matrix, products, work, moments=moments)
         return matrix
-    body = given.body
+    body = given.solid_body
     J = body.J
     if way == "I":
         I = given["I"]
@@ -928,7 +928,7 @@ KIND = Kind(
         AnswerSpec("roll_rate", "rate", "rolldot", "zyx: roll rate"),
     ),
     solve=solve,
-    extra={"gravity": False, "example": {
+    gravity=False, example={
         "statement": ("A symmetric body with one point fixed has a moment of inertia of {I} about "
                       "each transverse axis and {J} about its symmetry axis, both through the "
                       "fixed point. At an instant when its Euler angles are phi = {phi}, theta = "
@@ -944,5 +944,5 @@ KIND = Kind(
         "find": {"omega_x": "rad/s", "omega_y": "rad/s", "omega_z": "rad/s",
                  "kinetic_energy": "J", "angular_momentum": "kg*m^2/s",
                  "angular_acceleration": "rad/s^2", "moment": "N*m"},
-        "vary": {"theta": "[20 deg, 80 deg]"}}},
+        "vary": {"theta": "[20 deg, 80 deg]"}},
 )

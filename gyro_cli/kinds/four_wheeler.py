@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 
 from ..core.body import vehicle_data, vehicle_params
-from ..core.errors import InputError
+from ..core.errors import InputError, refuse_overflow
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
@@ -124,11 +124,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     turn = given.word("turn", "left")
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
     outer, inner = s.outer, s.inner  # each wheel's reaction: its three shares, added once
-    if not all(math.isfinite(q) for q in (outer, inner, s.gyroscopic_couple,
-                                           s.centrifugal_couple, s.wheel_rate)):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(outer, inner, s.gyroscopic_couple, s.centrifugal_couple, s.wheel_rate)
     v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
     m_, x_ = Sym("m", m, "kg"), Sym("x", x, "m")
     work.section("Rates")
@@ -560,7 +556,7 @@ KIND = Kind(
                    "about the axis across, positive loading the front wheels"),
     ),
     solve=solve,
-    extra={"example": {
+    example={
         "statement": ("A rail car of total mass {mass} has its centre of mass {cg_height} above "
                       "the rails, which are {track} apart. Its wheels have a radius of "
                       "{wheel_radius}, and each of its two axles, with its wheels and gears, has "
@@ -576,5 +572,5 @@ KIND = Kind(
                   "engine_sense": "opposite", "speed": "24 km/h", "turn_radius": "30 m"},
         "find": {"wheel_reactions": "N", "gyroscopic_couple": "N*m",
                  "centrifugal_couple": "N*m"},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

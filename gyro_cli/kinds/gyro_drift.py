@@ -25,10 +25,6 @@ DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
 LINEAR_LIMIT = 0.1  # rad: beyond this the small-angle gimbal equations are doubtful
 
 
-def _h(x: float) -> str:
-    return qty(x, "kg m^2/s")
-
-
 #: the symbols the sentences name (values are in the steps' trees)
 k0, H0, x0, y0, M0, a0, b0, I_x0, I_y0, I0 = names("k H x y M alpha beta I_x I_y I")
 t0, w_n0, T_n0, W_d0 = names("t w_n T_n Omega_d")
@@ -114,7 +110,7 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
 
 
 def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | None:
-    body = given.body
+    body = given.solid_body
     if "I" in given and ("I_x" in given or "I_y" in given):
         raise InputError("give I (equal inertias) or I_x and I_y, not both",
                          key="given.I_x" if "I_x" in given else "given.I_y")
@@ -126,7 +122,7 @@ def _transverse(given: Given, find: frozenset[str]) -> tuple[float, float] | Non
             raise InputError("give both I_x and I_y (or one I for both)", key=f"given.{missing}")
         Ix, Iy = given["I_x"], given["I_y"]
     elif body.I_pivot is not None or body.I_cg is not None:  # I, I_x, I_y declare > 0
-        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.I_cg
+        Ix = Iy = body.I_pivot if body.I_pivot is not None else body.needed("I_cg")
         if Ix <= 0:
             raise InputError(f"a moment of inertia must be positive, got the rotor's "
                              f"{qty(Ix, 'kg*m^2')}", key="given.I_pivot")
@@ -197,12 +193,12 @@ def _equals(value: float, unit: str) -> tuple:
 
 def _a_dd(M: float, H: float, Iy: float, wn: float, t: float) -> float:
     """alpha''(t) of the motion from rest, (M I_y / H^2) w_n^2 cos(w_n t), at the nutation
-    frequency ``wn`` the caller has found (physics/gyro_drift.py)."""
+    frequency ``wn`` the caller has found."""
     return M * Iy / (H * H) * wn * wn * math.cos(wn * t)
 
 
 def _b_d(M: float, H: float, wn: float, t: float) -> float:
-    """beta'(t) of the motion from rest, (M / H) (1 - cos(w_n t)) (physics/gyro_drift.py)."""
+    """beta'(t) of the motion from rest, (M / H) (1 - cos(w_n t))."""
     return M / H * (1 - math.cos(wn * t))
 
 
@@ -246,8 +242,7 @@ KIND = Kind(
                    "about the moment's axis"),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "I_pivot", "k_pivot", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("A gyro rotor with a moment of inertia of {J} spins at {spin} in gimbals; "
                       "rotor and gimbals have a moment of inertia of {I} about each gimbal axis. "
                       "A disturbing moment of {moment} acts about one gimbal axis for {duration}. "
@@ -257,5 +252,5 @@ KIND = Kind(
                   "I": "2e-4 kg m^2", "duration": "1 h"},
         "find": {"drift_rate": "deg/h", "drift_angle": "deg", "nutation_frequency": "Hz",
                  "nutation_amplitude": "arcsec"},
-        "vary": {"moment": "[0.5, 2]"}}},
+        "vary": {"moment": "[0.5, 2]"}},
 )

@@ -21,10 +21,11 @@ from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Let, Sym, cos, ellipk, sin, sqrt
+from ..core.expr import PI, Let, Sym, cos, ellipk, sin
 from ..core.prose import cross, dot, fn, names, q, rel
 from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
+from ..physics.gyrocompass import directive_stiffness, north_seeking_moment, period
 
 POLAR_WARNING_LATITUDE = math.radians(70)
 
@@ -95,11 +96,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(*_PENDULUM)
     H_, Omega_E = Sym("H", H_abs, "kg m^2/s"), Sym("Omega_E", Omega, "rad/s")
     lam, alpha_ = Sym("lambda", lat, "deg"), Sym("alpha", alpha, "deg")
-    stiffness = H_ * Omega_E * cos(lam)  # directive_stiffness, Eq. in physics/gyrocompass.py
+    stiffness = directive_stiffness(H_, Omega_E, lam)
     D = work.step("D", stiffness, unit="N m/rad",
                   note="north-seeking moment per radian of deviation")
     D_ = Sym("D", D, "N m/rad")
-    M = work.step("M", Let(D_, stiffness) * sin(alpha_), unit="N*m")
+    M = work.step("M", north_seeking_moment(Let(D_, stiffness), alpha_), unit="N*m")
     if alpha:
         work.text(f"the moment turns the axis {'west' if alpha > 0 else 'east'}, back toward "
                   "north")
@@ -112,7 +113,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if I_v is not None:
         work.section("Swing about north")
         I_v_ = Sym("I_v", I_v, "kg m^2")
-        T = work.step("T", 2 * PI * sqrt(I_v_ / Let(D_, stiffness)), unit="s",
+        T = work.step("T", period(I_v_, Let(D_, stiffness)), unit="s",
                       note="small swings")
         work.step("T", value=T / 60, unit="min")
         work.answer("period", "T", [T], "time")
@@ -138,7 +139,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
 
 def _vertical_inertia(given: Given, work: Work) -> float | None:
-    body = given.body
+    body = given.solid_body
     if "I_vertical" in given:
         I_v = given["I_vertical"]
         if body.I_cg is not None and I_v < body.I_cg * (1 - 0.01):
@@ -159,7 +160,7 @@ KIND = Kind(
     chapter="section 11.3, the gyrocompass; dH/dt on the rotating Earth",
     params=(
         Param("latitude", "angle", "lambda", "latitude of the site (north or south: '50 N', "
-              "'35 S')", range=(-math.pi / 2, math.pi / 2), hemisphere="NS"),
+              "'35 S')", range=(-math.pi / 2, math.pi / 2), hemisphere="NS", required=True),
         Param("spin", "rate", "psidot", "spin of the rotor about its axis (with J, k_axial or a "
               "shape)"),
         Param("angular_momentum", "angular_momentum", "H", "the rotor's angular momentum J spin "
@@ -186,8 +187,7 @@ KIND = Kind(
                    "vector's end); a pole is refused with the reason"),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "I_cg", "k_cg", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("The rotor of a gyrocompass, a {shape} of mass {mass} and radius {radius}, "
                       "spins at {spin} at a latitude of {latitude}. Its sensitive element has a "
                       "moment of inertia of {I_vertical} about the vertical. Find the period of "
@@ -196,5 +196,5 @@ KIND = Kind(
         "given": {"mass": "2 kg", "shape": "disk", "radius": "60 mm", "spin": "12000 rpm",
                   "I_vertical": "0.004 kg m^2", "latitude": "50 deg", "deviation": "10 deg"},
         "find": {"period": "s", "moment": "N*m", "settles": None},
-        "vary": {"latitude": "[0 deg, 70 deg]"}}},
+        "vary": {"latitude": "[0 deg, 70 deg]"}},
 )

@@ -39,13 +39,6 @@ RPM = 2 * math.pi / 60
 
 # ---- physics on floats ------------------------------------------------------
 
-def gyroscopic_moment(J: float, I: float, spin: float, precession: float, theta: float) -> float:
-    """Moment on the rotor along n = K x k / sin(theta): Omega sin th (J omega_z - I Omega cos th)."""
-    cos = cos_theta(theta)
-    axial = spin + precession * cos
-    return precession * math.sin(theta) * (J * axial - I * precession * cos)
-
-
 def precession_for_moment(J: float, I: float, spin: float, theta: float,
                           moment: float) -> list[float]:
     """Precession rates at which the moment along n is ``moment`` (roots, ascending).
@@ -115,11 +108,6 @@ def bearing_forces(mass: float, g: float, moment: float, spacing: float, cg_posi
         couple=(moment / L, -moment / L),
         side=(mass * toward * b / L, mass * toward * a / L),
         thrust=mass * (g * cos_theta(theta) + along_k))
-
-
-def counterweight_offset(moment: float, counterweight: float, g: float) -> float:
-    """How far the block moves from the balance point so its weight gives the moment: M / (m_c g)."""
-    return abs(moment) / (counterweight * g)
 
 
 # ---- the worked answer ------------------------------------------------------
@@ -200,16 +188,16 @@ _TURNING_H = absolute(W0) * absolute(cross(K0, H0))
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     theta = given["theta"]
     if 0 <= theta <= math.pi and abs(math.sin(theta)) < 1e-12:
         _along_the_axis(given, find, theta, work)
         return
-    body.require("J")
+    J = body.needed("J")
     cos = cos_theta(theta)
     if cos != 0:
         body.require("I_cg")
-    J, I = body.J, body.I_cg if body.I_cg is not None else 0.0
+    I = body.I_cg if body.I_cg is not None else 0.0
     work.section("Conventions")
     drop = "drop" in given
     axes, nodes = _CONVENTIONS[drop]
@@ -306,18 +294,6 @@ def _spin(given: Given, work: Work) -> float:
         raise InputError("give the rotor's spin relative to the frame (or the vehicle's speed "
                          "and wheel_radius)", key="given.spin")
     return given["spin"]
-
-
-def tilt_rate_uniform(drop: float, speed: float, drop_length: float, spacing: float) -> float:
-    """Tilt rate of an axle when one wheel drops ``drop`` evenly over ``drop_length`` of track
-    at ``speed``: the drop takes t = s / v, the axle turns through drop / L in it."""
-    return drop * speed / (drop_length * spacing)
-
-
-def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
-    """Greatest tilt rate when one wheel falls ``drop`` and rises again in ``drop_time`` with
-    simple harmonic motion: y = (drop / 2)(1 - cos(2 pi t / T)), so y' peaks at pi drop / T."""
-    return math.pi * drop / (drop_time * spacing)
 
 
 _AXLE_TURNS = ("the axle turns through ", h0 / L0, " (small angle) while the wheel drops")
@@ -486,7 +462,7 @@ _FREE_BODY = {ms: _free_body(ms) for ms in ("m", "m_s")}
 
 
 def _bearings(given: Given, find: frozenset[str], M: float, precession: float, theta: float, work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "bearing_spacing" not in given:
         raise InputError("bearing forces need bearing_spacing (the distance AB)",
                          key="given.bearing_spacing")
@@ -631,7 +607,7 @@ _UNBALANCE, _SIZE_OF_M = m_c0 * g0 * (b0 - b_balance0), absolute(M0)
 
 
 def _counterweight(given: Given, M: float, theta: float, work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "counterweight" not in given or "balance_position" not in given:
         missing = "counterweight" if "counterweight" not in given else "balance_position"
         raise InputError("counterweight_position needs the block's mass (counterweight) and its "
@@ -733,7 +709,8 @@ KIND = Kind(
                    "precession, ascending (one per spin sense)"),
     ),
     solve=solve,
-    extra={"example": {
+    animation="turning_rotor",
+    example={
         "statement": ("A rotor of mass {mass} with a radius of gyration of {k_axial} spins at "
                       "{spin} in two bearings {bearing_spacing} apart, which carry a total mass "
                       "of {supported_mass}. Its frame turns about the vertical at {precession}. "
@@ -741,5 +718,5 @@ KIND = Kind(
         "given": {"mass": "2.5 kg", "k_axial": "35 mm", "supported_mass": "10 kg",
                   "spin": "-1725 rpm", "precession": "48 rpm", "bearing_spacing": "200 mm"},
         "find": {"bearing_forces": "N", "moment": "N*m"},
-        "vary": {"precession": "[0.8, 1.2]"}}},
+        "vary": {"precession": "[0.8, 1.2]"}},
 )

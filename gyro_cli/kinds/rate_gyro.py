@@ -21,11 +21,12 @@ import math
 from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
 from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
-from ..core.expr import PI, Let, Sym, cos, sqrt
+from ..core.spec import AnswerSpec, Kind, OneOf, Param
+from ..core.expr import PI, Let, Sym, cos
 from ..core.prose import names, q, rel
 from ..core.work import Work, num
-from ..physics.rate_gyro import large_angle_deflection, steady_deflection
+from ..physics.rate_gyro import (damping_ratio, gimbal_rate, large_angle_deflection,
+                                 natural_frequency, rate_from_moment, steady_deflection)
 
 SMALL_ANGLE = math.radians(5)
 DEG = math.pi / 180
@@ -88,14 +89,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     c = given.get("damping")
     I_g = given.get("gimbal_inertia")
     mode = "spring" if k is not None else "integrating" if c is not None else "rigid"
-    inputs = [key for key in ("rate", "deflection", "moment", "gimbal_rate", "input_angle")
-              if key in given]
-    if len(inputs) != 1:
-        raise InputError("give one input: the case's rate, or a measured deflection, "
-                         "gimbal_rate or moment (or input_angle for a rate-integrating gyro)"
-                         + (f"; got {' and '.join(inputs)}" if inputs else ""),
-                         key=f"given.{inputs[1] if len(inputs) > 1 else 'rate'}")
-    given_key = inputs[0]
+    given_key = next(key for key in _INPUTS.keys if key in given)  # the kind's one_of
     if given_key == "deflection" and mode == "rigid":
         raise InputError("a deflection needs a restraining spring (stiffness) or a damper "
                          "(damping, with input_angle)", key="given.stiffness")
@@ -119,6 +113,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     work.answer("angular_momentum", "H", [H], "angular_momentum")
     if given_key == "input_angle":
+        assert c is not None  # refused above unless rate-integrating
         _integrated_angle(given, H, c, I_g, work)
         _refuse_missing(find, work)
         return
@@ -130,6 +125,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     work.answer("moment", "M", [M], "moment")
 
     if mode == "spring":
+        assert k is not None
         work.section("Spring-restrained: deflection and sensitivity")
         linear = steady_deflection(H, rate, k)
         if abs(linear) >= math.pi / 2:
@@ -139,7 +135,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              f"steady state, k theta = H Omega cos(theta), is {num(exact / DEG)} "
                              "deg: use a stiffer spring", key="given.rate")
         k_ = _sym("k", k)
-        theta = work.step("theta", H_ * Omega / k_, unit="rad")  # steady_deflection
+        theta = work.step("theta", steady_deflection(H_, Omega, k_), unit="rad")
         work.step("theta", value=theta / DEG, unit="deg")
         S = work.step("S", H_ / k_, unit="s", note="deflection per unit rate (rad per rad/s)")
         work.answer("deflection", "theta", [theta], "angle")
@@ -153,13 +149,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         if I_g is not None:
             work.section("Dynamics of the gimbal")
             I_g_ = _sym("I_g", I_g)
-            wn = work.step("omega_n", sqrt(k_ / I_g_), unit="rad/s")  # natural_frequency
+            wn = work.step("omega_n", natural_frequency(k_, I_g_), unit="rad/s")
             # f_n in Hz from the angular frequency omega_n in rad/s
             work.step("f_n", _sym("omega_n", wn) / (2 * PI), unit="Hz", substitute=False)
             work.answer("natural_frequency", "omega_n", [wn], "rate")
             if c is not None:
-                zeta = work.step("zeta", _sym("c", c) / (2 * sqrt(k_ * I_g_)),
-                                 unit="")  # damping_ratio
+                zeta = work.step("zeta", damping_ratio(_sym("c", c), k_, I_g_), unit="")
                 work.answer("damping_ratio", "zeta", [zeta], "dimensionless")
                 if 0.5 <= zeta <= 1:
                     work.text(*_SETTLES_FASTEST)
@@ -170,9 +165,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         elif c is not None:
             work.text(*_NO_INERTIA)
     elif mode == "integrating":
+        assert c is not None
         work.section("Rate-integrating: gimbal rate and gain")
         c_ = _sym("c", c)
-        td = work.step("thetadot", H_ * Omega / c_, unit="rad/s")  # gimbal_rate
+        td = work.step("thetadot", gimbal_rate(H_, Omega, c_), unit="rad/s")
         gain = work.step(_GAIN, H_ / c_, unit="", state=False,
                          note="gimbal angle per unit angle turned by the case")
         work.answer("gimbal_rate", "thetadot", [td], "rate")
@@ -243,6 +239,7 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
         return given["rate"]
     work.section("Input rate from the measurement")
     if key == "deflection":
+        assert k is not None  # a deflection without a spring is refused in solve
         theta = given["deflection"]
         if abs(theta) > SMALL_ANGLE:
             work.warn("the deflection ", q(theta, "deg"), " is not small: with the spin axis "
@@ -252,8 +249,9 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
                          unit="rad/s")
     if key == "moment":
         M = given["moment"]
-        return work.step("Omega", _sym("M", M) / _sym("H", H), unit="rad/s",
-                         ref="Eq. 11.29")  # rate_from_moment
+        return work.step("Omega", rate_from_moment(_sym("H", H), _sym("M", M)), unit="rad/s",
+                         ref="Eq. 11.29")
+    assert c is not None  # a gimbal rate without a damper is refused in solve
     td = given["gimbal_rate"]
     return work.step("Omega", _sym("c", c) * _sym("thetadot", td) / _sym("H", H),
                      unit="rad/s")
@@ -263,6 +261,11 @@ def _input_rate(given: Given, key: str, H: float, k: float | None, c: float | No
 _SENSES = "the rotor's angular momentum must be positive (spin > 0): a rotor that does not spin " \
     "senses nothing"
 _NONE = "leave it out if there is none"
+
+_ONE_INPUT = ("give one input: the case's rate, or a measured deflection, gimbal_rate or moment "
+              "(or input_angle for a rate-integrating gyro)")
+_INPUTS = OneOf(("rate", "deflection", "moment", "gimbal_rate", "input_angle"), _ONE_INPUT,
+                _ONE_INPUT + "; got {present}")
 
 KIND = Kind(
     name="rate_gyro",
@@ -308,8 +311,8 @@ KIND = Kind(
         AnswerSpec("angular_momentum", "angular_momentum", "H", "the rotor's J spin"),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    one_of=(_INPUTS,),
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("The rotor of a rate gyro has a moment of inertia of {J} and spins at "
                       "{spin}. Its gimbal, with a moment of inertia of {gimbal_inertia} about the "
                       "gimbal axis, is held by a torsion spring of stiffness {stiffness} and a "
@@ -321,5 +324,5 @@ KIND = Kind(
                   "rate": "5 deg/s"},
         "find": {"deflection": "deg", "sensitivity": "s", "natural_frequency": "Hz",
                  "damping_ratio": None},
-        "vary": {"rate": "[0.5, 2]"}}},
+        "vary": {"rate": "[0.5, 2]"}},
 )

@@ -39,7 +39,7 @@ def _rel(approx: float, exact: float) -> tuple:
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     from ..physics.nutation import Start, Top, analyse, constants
 
-    body = given.body
+    body = given.solid_body
     body.require("J", "I_pivot")
     if not body.l or body.l <= 0:
         raise InputError("a released top needs its centre of mass off the fixed point: give "
@@ -50,7 +50,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     theta_rate0 = given.get("theta_rate0", 0.0) or 0.0
     theta0 = min(theta0, math.pi)
     vertical = abs(math.sin(theta0)) < 1e-15
-    top = Top(I=body.I_pivot, J=body.J, mgl=body.mgl)
+    top = Top(I=body.needed("I_pivot"), J=body.needed("J"), mgl=body.mgl)
     start = Start(theta0=theta0, spin=spin, precession0=precession0, theta_rate0=theta_rate0)
     omega_z = constants(top, start)["omega_z"]
     if vertical and omega_z == 0 and theta_rate0 == 0:
@@ -93,7 +93,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 # each time: building a sentence's trees cost as much as a third of the kind's time.
 _CONSTANTS_TITLE = ("Constants of the motion at ", rel(t_, "=", 0),
                     " (Eqs. 11.8, 11.14, 11.17, 11.18)")
-_CONVENTIONS = ("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
+_CONVENTIONS: tuple[str | Expr, ...] = ("Euler angles z-x-z; ", phi, ": the azimuth of the axis about the vertical; ",
                 theta, " from the upward vertical to the axis through the centre of mass, ",
                 rel(*names("V"), "=", m * g * l * cos(theta)), " (Eq. 11.11); spin ", psidot,
                 " is relative to the precessing frame, which turns about the vertical at the "
@@ -193,7 +193,7 @@ _EQ_11_23 = (rel(_P1, "=", _P2 * u2), " (Eq. 11.22), ", rel(alpha_, "=", a_ * u2
                                                       * (u2 - u))), " (Eq. 11.23)")
 _ERRATA = ("Eq. 11.24 as corrected in the errata: ", gamma_ ** 2 / a_ * u2, " under the root, "
            "not ", gamma_ ** 2 / 2)
-_FALLS = ("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
+_FALLS: tuple[str | Expr, ...] = ("the axis falls from ", rel(*names("theta_2"), "=", theta0), " to ",
           *names("theta_1"), " and back")
 
 
@@ -489,12 +489,12 @@ KIND = Kind(
     params=(
         Param("theta0", "angle", "theta0", "angle of the axis from the upward vertical at t = 0 "
               "(the chapter's theta_2)", range=(0.0, math.pi * (1 + 1e-15)),
-              limits=("0 deg", "180 deg")),  # 180 deg read from grad or arcmin may be 1 ulp over
+              limits=("0 deg", "180 deg"), required=True),  # 180 deg read from grad or arcmin may be 1 ulp over
         Param("spin", "rate", "psidot", "spin relative to the precessing frame (> 0)",
               positive=True, reason="the chapter takes psidot > 0 about the axis from the fixed "
               "point to the centre of mass: for a negative spin reverse the sense of the axis "
               "instead (give the spin as positive and change the sign of precession0); at 0 a "
-              "top released without spin is a pendulum, not a top"),
+              "top released without spin is a pendulum, not a top", required=True),
         Param("precession0", "rate", "phidot0", "precession rate at t = 0", default="0 rad/s"),
         Param("theta_rate0", "rate", "thetadot0", "rate of change of theta at t = 0",
               default="0 rad/s"),
@@ -520,7 +520,9 @@ KIND = Kind(
                    "ascending"),
     ),
     solve=solve,
-    extra={"example": {
+    picture="axis_path", animation="nutating_top", simulation="released",
+    physics=("gyro_cli.physics.nutation", "gyro_cli.physics.elliptic"),
+    example={
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It is released with its axis at {theta0} "
@@ -531,5 +533,5 @@ KIND = Kind(
                   "cg_distance": "1.5 in", "theta0": "30 deg", "spin": "1800 rpm"},
         "find": {"theta_max": "deg", "nutation_period": "s", "mean_precession": "rpm",
                  "motion": None},
-        "vary": {"spin": "[0.8, 1.2]", "theta0": "[20 deg, 40 deg]"}}},
+        "vary": {"spin": "[0.8, 1.2]", "theta0": "[20 deg, 40 deg]"}},
 )

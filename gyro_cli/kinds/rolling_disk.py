@@ -254,7 +254,7 @@ def _sign_changes(grid: tuple[float, ...], f: Callable[[float], float],
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     arrangement = given.word("arrangement", "axle_pivot")
-    body = given.body
+    body = given.solid_body
     body.require("J", "radius")
     if arrangement == "axle_pivot":
         asked = sorted(find & {"stability", "growth_rate", "upright_speed"})
@@ -297,12 +297,12 @@ _DH_O = deriv(HO0)
 
 
 def _axle_pivot(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     for key in ("tilt", "speed"):
         if key in given:
             raise InputError(f"{key} belongs to `arrangement: free`; the pinned axle is "
                              "horizontal and turns at `precession`", key=f"given.{key}")
-    m, g, J, r = body.m, body.g, body.J, body.radius
+    m, g, J, r = body.m, body.g, body.needed("J"), body.needed("radius")
     Omega, R = given["precession"], given["path_radius"]
     work.section("Conventions (axle pinned to the shaft at the height of the disk's centre)")
     work.text(*_AXLE_CONVENTIONS)
@@ -363,12 +363,13 @@ _SOLVED_FOR = ("solved for ", b0, " (every root in ",
 
 
 def _free(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     if "precession" in given:
         raise InputError("for `arrangement: free` give two of path_radius, speed and tilt",
                          key="given.precession")
     # J, I_G and m are all proportional to the mass where it is not given: the rates cancel it
-    m, g, J, I, r = body.mass_for_rates, body.g, body.J, body.I_cg, body.radius
+    m, g = body.mass_for_rates, body.g
+    J, I, r = body.needed("J"), body.needed("I_cg"), body.needed("radius")
     m_, g_, J_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("J", J, "kg m^2"), Sym("r", r, "m")
     I_ = Sym("I_G", I, "kg m^2")
     known = [k for k in ("path_radius", "speed", "tilt") if k in given]
@@ -381,20 +382,20 @@ def _free(given: Given, find: frozenset[str], work: Work) -> None:
     work.section(*_STEADY_TITLE)
     work.text(*_MOMENT_EQUATION)
     if known == ["path_radius", "tilt"] or known == ["tilt", "path_radius"]:
-        states = [free_from_tilt_and_path(m, g, r, J, I, given["tilt"], given["path_radius"])]
-        if states[0] is None:
+        state = free_from_tilt_and_path(m, g, r, J, I, given["tilt"], given["path_radius"])
+        if state is None:
             raise InputError(f"with tilt {num(math.degrees(given['tilt']))} deg the centre "
                              f"would be at rho = R - r sin(beta) = "
                              f"{num(given['path_radius'] - r * math.sin(given['tilt']))} m, not "
                              "outside the axis: no steady rolling on this circle (take a larger "
                              "path_radius or a smaller tilt)", key="given.path_radius")
-        s = states[0]
+        states = [s := state]
         beta, R_ = Sym("beta", s.tilt, "deg"), Sym("R", given["path_radius"], "m")
-        rho = Sym("rho", work.step("rho", R_ - r_ * sin(beta), unit="m"), "m")
+        rho_ = Sym("rho", work.step("rho", R_ - r_ * sin(beta), unit="m"), "m")
         # the moment equation solved for Omega (free_from_tilt_and_path)
         Omega = work.step("Omega", sqrt(m_ * g_ * r_ * sin(beta) / (cos(beta) * (
-            rho * (m_ * r_ + J_ / r_) + I_ * sin(beta)))), unit="rad/s", substitute=False)
-        work.step("v", Sym("Omega", Omega, "rad/s") * rho, unit="m/s", substitute=False)
+            rho_ * (m_ * r_ + J_ / r_) + I_ * sin(beta)))), unit="rad/s", substitute=False)
+        work.step("v", Sym("Omega", Omega, "rad/s") * rho_, unit="m/s", substitute=False)
     elif "tilt" in given:
         s = free_from_speed_and_tilt(m, g, r, J, I, given["tilt"], given["speed"])
         states = [s]
@@ -535,7 +536,8 @@ KIND = Kind(
                    "rolling in a straight line is stable"),
     ),
     solve=solve,
-    extra={"example": {
+    animation="rolling", physics=("gyro_cli.physics.stability",),
+    example={
         "statement": ("A {shape} weighing {weight}, of radius {radius}, is mounted on an axle "
                       "pinned to a vertical shaft and rolls on a horizontal plane in a circle of "
                       "radius {path_radius} while the shaft turns at {precession}. Find the "
@@ -543,5 +545,5 @@ KIND = Kind(
         "given": {"arrangement": "axle_pivot", "weight": "96.6 lb", "shape": "disk",
                   "radius": "1 ft", "path_radius": "2 ft", "precession": "48 rpm"},
         "find": {"normal_force": "lbf", "spin": "rpm"},
-        "vary": {"precession": "[0.8, 1.2]"}}},
+        "vary": {"precession": "[0.8, 1.2]"}},
 )

@@ -19,11 +19,12 @@ ship: steering, pitching, rolling); S.S. Rattan, "Theory of Machines", ch. 14.
 from __future__ import annotations
 
 import math
+from typing import Any
 
-from ..core.errors import InputError
+from ..core.errors import InputError, refuse_overflow
 from ..core.given import Given
 from ..physics import vehicles as V
-from ..core.spec import AnswerSpec, Kind, Param
+from ..core.spec import AnswerSpec, Kind, OneOf, Param
 from ..core.expr import PI, Num, Sym, absolute, cos, sin
 from ..core.prose import deriv, names, plus, qvec, q, rel
 from ..core.vehicle_words import COUPLE, reactive_couple
@@ -49,11 +50,8 @@ _REACTION, _SIZE = -COUPLE, absolute(COUPLE)
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
-    body.require("J")
-    J = body.J
-    if "spin" not in given:
-        raise InputError("give the rotor's speed `spin` (e.g. 1800 rpm)", key="given.spin")
+    body = given.solid_body
+    J = body.needed("J")
     spin = given["spin"]
     motion = given.word("motion", "steering")
     sense = given.word("rotor_sense")
@@ -92,7 +90,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     else:
         wp = _rolling(given, work)
 
-    rate = V.norm(wp)
+    rate: float | None = V.norm(wp)
     if motion == "rolling":
         rate = abs(given["roll_rate"]) if "roll_rate" in given else None
     work.section(*_COUPLE_TITLE)
@@ -105,10 +103,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")
-    if not (math.isfinite(C) and math.isfinite(Hmag)):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(C, Hmag)
     work.answer("couple", "C", [C], "moment")
     if rate is not None:
         work.answer("precession", "omega_p", [rate], "rate")
@@ -246,9 +241,9 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
 AMPLITUDE_KEYS = ("amplitude", "pitch_amplitude", "pitch_total", "between_extremes")
 STABILISER_KEYS = ("gyro_sense", "precession", "rolling_couple", "axle_top", "roll")
 # the amplitude's limits (the total swing is twice it): the loader refuses a value outside
-_AMPLITUDE = dict(range=(0.0, math.pi / 2), bounds="()",
+_AMPLITUDE: dict[str, Any] = dict(range=(0.0, math.pi / 2), bounds="()",
                   reason="a ship cannot pitch through 90 deg")
-_TOTAL = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
+_TOTAL: dict[str, Any] = dict(range=(0.0, math.pi), bounds="()", reason="twice the amplitude, and a ship "
               "cannot pitch through 90 deg")
 PERIOD_KEYS = ("period", "frequency")
 #: the motion each motion's own key belongs to (_refuse_foreign)
@@ -260,13 +255,12 @@ _MOTION_OF_KEY = {"speed": "steering", "turn_radius": "steering", "turn": "steer
 
 
 def _one_of(given: Given, keys: tuple[str, ...], missing: str) -> str:
-    """The one key of ``keys`` the file gives (refusing none or two)."""
+    """The one key of ``keys`` the file gives (refusing none or two): for pitching only, so
+    checked here rather than declared by the kind."""
     present = [k for k in keys if k in given]
-    if not present:
-        raise InputError(missing, key=f"given.{keys[0]}")
-    if len(present) > 1:
-        raise InputError(f"give one of {', '.join(keys)}, not {' and '.join(present)}: "
-                         "they say the same thing", key=f"given.{present[1]}")
+    refused = OneOf(keys, missing).refusal(present)
+    if refused is not None:
+        raise InputError(refused[0], key=f"given.{refused[1]}")
     return present[0]
 
 
@@ -416,7 +410,8 @@ KIND = Kind(
     params=(
         Param("spin", "rate", "omega", "rotor speed (a positive rate; its sense in rotor_sense)",
               nonnegative=True, reason="give the rotor's speed as a positive rate and its sense "
-              "in rotor_sense (e.g. clockwise_from_stern)"),
+              "in rotor_sense (e.g. clockwise_from_stern)",
+              required="give the rotor's speed `spin` (e.g. 1800 rpm)"),
         Param("rotor_sense", "word", "sense", "sense of the rotor seen from the stern or the bow",
               choices=V.SHIP_SENSES, words=SENSE_WORDS),
         Param("motion", "word", "motion", "steering (default), pitching, rolling, or "
@@ -478,8 +473,7 @@ KIND = Kind(
                    words=("forward", "aft")),
     ),
     solve=solve,
-    extra={"gravity": False, "body_keys": ("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"),
-           "example": {
+    gravity=False, body_keys=("mass", "weight", "J", "k_axial", "shape", "radius", "diameter", "inner_radius", "width", "length"), example={
         "statement": ("The turbine rotor of a ship has a mass of {mass} and a radius of gyration "
                       "of {k_axial}, and it turns at {spin}, {rotor_sense}. The ship steers to "
                       "the {turn} at {speed} on a curve of radius {turn_radius}. Find the "
@@ -488,5 +482,5 @@ KIND = Kind(
                   "rotor_sense": "clockwise seen from the stern", "motion": "steering",
                   "speed": "100 km/h", "turn_radius": "75 m", "turn": "left"},
         "find": {"couple": "kN*m", "effect": None},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

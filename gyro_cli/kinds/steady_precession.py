@@ -154,9 +154,8 @@ NEEDS_EXACT = {"precession_slow", "precession_fast", "spin_slow", "spin_fast", "
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
-    body.require("J")
-    J = body.J
+    body = given.solid_body
+    J = body.needed("J")
     if "theta" not in given:
         _without_theta(given, find, work)
         return
@@ -247,7 +246,7 @@ _APPROXIMATION_ONLY = ("no ", th, " given: the answers use the gyroscopic approx
 def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     """No theta: the gyroscopic approximation and its period, and how far the exact roots
     would move with theta (introductory books: Omega = m g l / (J omega), no angle)."""
-    body = given.body
+    body = given.solid_body
     needs = sorted(find - WITHOUT_THETA)
     if needs:
         raise InputError(f"{needs[0]} needs the angle theta of the axis from the upward vertical; "
@@ -271,7 +270,7 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     work.text(*_WHATEVER_THETA)
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
                   * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=_PER_UNIT_SIN)
-    J_v = Sym("J", body.J, "kg m^2")
+    J_v = Sym("J", body.needed("J"), "kg m^2")
     rate = rates[0]
     if rate == "precession":
         precession = given["precession"]
@@ -354,7 +353,7 @@ _TORQUE_FREE = (rel(l0, "=", 0), " and no applied moment: a torque-free body, ",
 
 def _driver(given: Given, theta: float, work: Work) -> tuple[float, str]:
     """D = M / sin(theta): from an applied moment, or gravity's m g l."""
-    body = given.body
+    body = given.solid_body
     work.section("Moment about the line of nodes")
     if "moment" in given:
         if body.l:
@@ -840,7 +839,8 @@ KIND = Kind(
                    "(up), horizontal (toward the axis), magnitude] per root"),
     ),
     solve=solve,
-    extra={"size_free": True, "example": {
+    animation="steady_top", simulation="steady", physics=("gyro_cli.physics.stability",),
+    size_free=True, example={
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It spins at {spin} with its axis at {theta} "
@@ -849,5 +849,5 @@ KIND = Kind(
         "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
                   "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
         "find": {"precession": "rpm", "min_spin": "rpm"},
-        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"}}},
+        "vary": {"spin": "[0.8, 1.2]", "theta": "[20 deg, 40 deg]"}},
 )

@@ -132,9 +132,9 @@ _J_P_THETADOT = J0 * p0 * td
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
-    body.require("J", "I_cg")
-    m, g, J, I_G = body.m, body.g, body.J, body.I_cg
+    body = given.solid_body
+    J, I_G = body.needed("J"), body.needed("I_cg")
+    m, g = body.m, body.g
     p, L, d = given["spin"], given["arm_length"], given["bearing_spacing"]
     theta, theta0 = given["theta"], given["theta0"]
     a = given["arm_position"] if "arm_position" in given else d / 2
@@ -213,15 +213,15 @@ KIND = Kind(
     chapter="Eq. 11.29 (couple J p thetadot), energy, moments about the shaft",
     params=(
         Param("spin", "rate", "p", "steady spin of the rotor about the arm, positive from the "
-              "shaft outward"),
+              "shaft outward", required=True),
         Param("arm_length", "length", "L", "distance from the shaft AB to the rotor's centre, "
-              "along the arm", positive=True, reason="shaft to the rotor's centre"),
+              "along the arm", positive=True, reason="shaft to the rotor's centre", required=True),
         Param("bearing_spacing", "length", "d", "distance between bearings A and B",
-              positive=True, reason="bearings at one point cannot take the gyroscopic couple"),
+              positive=True, reason="bearings at one point cannot take the gyroscopic couple", required=True),
         Param("arm_position", "length", "a", "distance from A to the arm along the shaft "
               "(default midway)"),
         Param("theta", "angle", "theta", "angle of the arm from the upward vertical at which "
-              "the forces are wanted"),
+              "the forces are wanted", required=True),
         Param("theta0", "angle", "theta0", "release angle (from rest)", default="0 deg",
               range=(0.0, math.pi), bounds="[)"),
     ),
@@ -235,7 +235,7 @@ KIND = Kind(
         AnswerSpec("angular_rate", "rate", "thetadot", "rate of swing at theta"),
     ),
     solve=solve,
-    extra={"example": {
+    example={
         "statement": ("A {shape} of mass {mass} and radius {radius} spins at {spin} on an arm; "
                       "its centre is {arm_length} from a horizontal shaft held in two bearings "
                       "{bearing_spacing} apart, about which the arm swings. Find the forces on "
@@ -244,5 +244,5 @@ KIND = Kind(
         "given": {"mass": "2 kg", "shape": "disk", "radius": "100 mm", "spin": "300 rad/s",
                   "arm_length": "250 mm", "bearing_spacing": "200 mm", "theta": "90 deg"},
         "find": {"bearing_forces": "N", "angular_rate": "rad/s"},
-        "vary": {"spin": "[0.8, 1.2]"}}},
+        "vary": {"spin": "[0.8, 1.2]"}},
 )

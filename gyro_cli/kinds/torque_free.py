@@ -12,6 +12,7 @@ spin (psidot) and angular_momentum (H). The relations, their derivation and the 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from ..core.errors import InputError
 from ..core.given import Given
@@ -74,14 +75,13 @@ _FRAME, _INERTIA, _RELATIONS, _APEX = _conventions()
 
 
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
-    body = given.body
+    body = given.solid_body
     for key in ("I_pivot", "k_pivot", "cg_distance"):
         if key in given:
             raise InputError(f"{key} does not apply: a torque-free body turns about its centre "
                              "of mass, so give the transverse inertia about it (I_cg, k_cg or a "
                              "shape)", key=f"given.{key}")
-    body.require("J", "I_cg")
-    J, I = body.J, body.I_cg
+    J, I = body.needed("J"), body.needed("I_cg")
     if body.I_pivot is not None:  # a cone's I about its apex, worked out with the body
         work.text(*_APEX)
     known = {k: given[k] for k in MOTION_KEYS if k in given}
@@ -145,6 +145,7 @@ def _books_sense(J: float, I: float, sense: str, known: dict[str, float]) -> tup
 
 def _representable(s: FreeMotion, known: dict[str, float], steady: bool = False) -> None:
     """Refuse data whose rates or periods overflow or underflow double precision."""
+    values: tuple[float, ...]
     try:
         values = ((s.omega, s.angular_momentum, s.kinetic_energy) if steady else
                   (s.omega, s.transverse_rate, s.angular_momentum, s.precession, s.spin,
@@ -205,7 +206,7 @@ def _steady(J: float, known: dict[str, float], s: FreeMotion, find: frozenset[st
 
 
 _GIVEN_SYMS = {key: names(word)[0] for key, word in WORDS.items()}
-_FIX_THE_MOTION = (*names("beta"), " and ", *names("omega_z"), " are given: together with ",
+_FIX_THE_MOTION: tuple[str | Expr, ...] = (*names("beta"), " and ", *names("omega_z"), " are given: together with ",
                    *names("J"), " and ", *names("I"), " they fix the motion")
 
 
@@ -288,7 +289,7 @@ _ACROSS = rel(_we0, "=", _ph * sin(_th))
 _ALONG = (_H, " along ", _k, ": ")
 _J_OMEGA_Z, _H_COS = (_J0 * _wz0, "="), (_H * cos(_th), "=")
 _SPACE_CONE_ANGLE = absolute(_th - _be)
-_MERIAM = ("the ratio of the spin to the precession (Meriam's ", *names("n"))
+_MERIAM: tuple[str | Expr, ...] = ("the ratio of the spin to the precession (Meriam's ", *names("n"))
 _RATIO, _SPIN_OVER_PRECESSION = ((_I0 - _J0) * cos(_th) / _J0, "="), (_ps / _ph, "=")
 
 
@@ -398,7 +399,7 @@ def _energy(J: float, I: float, s: FreeMotion, work: Work) -> None:
 # why a key's limit is what it is (the loader adds it to the refusal); physics.torque_free
 # keeps the same checks for its own callers
 _SIDE = "H is taken along +Z and k on the side of H"
-_WOBBLE = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
+_WOBBLE: dict[str, Any] = dict(range=(0.0, math.pi / 2), bounds="[)", reason="at 90 deg the body turns about "
                "a transverse axis and does not wobble; above 90 deg take the axis k the other "
                "way (180 deg minus the angle); 0 is a steady spin about the axis, which has "
                "rates, H and energy but no precession")
@@ -469,7 +470,8 @@ KIND = Kind(
                    "retrograde"),
     ),
     solve=solve,
-    extra={"size_free": True, "gravity": False, "example": {
+    animation="free_body",
+    size_free=True, gravity=False, example={
         "statement": ("A free symmetric body has moments of inertia of {J} about its symmetry "
                       "axis and {I_cg} about a transverse axis through its centre of mass. Its "
                       "axis makes an angle of {nutation_angle} with its angular momentum, and it "
@@ -480,5 +482,5 @@ KIND = Kind(
                   "spin": "1 rpm"},
         "find": {"precession": "rpm", "precession_period": "s", "omega": "rad/s",
                  "motion": None, "kinetic_energy": "J", "spin_stability": None},
-        "vary": {"nutation_angle": "[10 deg, 40 deg]"}}},
+        "vary": {"nutation_angle": "[10 deg, 40 deg]"}},
 )

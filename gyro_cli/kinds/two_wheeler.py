@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 
 from ..core.body import vehicle_data, vehicle_params
-from ..core.errors import InputError
+from ..core.errors import refuse_overflow
 from ..core.given import Given
 from ..physics import vehicles as V
 from ..core.spec import AnswerSpec, Kind, Param
@@ -69,11 +69,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     v, R = given["speed"], given["turn_radius"]
     turn = given.word("turn", "left")
     s = V.two_wheeler(m, g, h, Iw, rw, IE, G, sense, v, R)
-    if not all(math.isfinite(q) for q in (s.gyroscopic_couple, s.centrifugal_couple, m * g * h,
-                                           s.wheel_rate)):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                               "precision (a product overflows); check the magnitudes and units",
-                               key="given")
+    refuse_overflow(s.gyroscopic_couple, s.centrifugal_couple, m * g * h, s.wheel_rate)
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_AXES)
@@ -134,7 +130,7 @@ KIND = Kind(
         Param("mass", "mass", "m", "total mass of the machine with its rider", positive=True),
         Param("g", "acceleration", "g", "gravity", default="9.81 m/s^2", positive=True),
         Param("cg_height", "length", "h", "height of the centre of mass above the road, upright",
-              positive=True),
+              positive=True, required=True),
         Param("wheel_inertia", "inertia", "I_w", "moment of inertia of each road wheel about "
               "its axle", nonnegative=True),
         Param("wheel_radius", "length", "r_w", "radius of the road wheels", positive=True),
@@ -144,8 +140,8 @@ KIND = Kind(
               nonnegative=True),
         Param("engine_sense", "word", "engine_sense", "same (default) or opposite: the "
               "engine's sense of rotation relative to the wheels", choices=("same", "opposite")),
-        Param("speed", "speed", "v", "speed of the machine", nonnegative=True),
-        Param("turn_radius", "length", "R", "radius of the curve", positive=True),
+        Param("speed", "speed", "v", "speed of the machine", nonnegative=True, required=True),
+        Param("turn_radius", "length", "R", "radius of the curve", positive=True, required=True),
         Param("turn", "word", "turn", "left (default) or right: only the vectors shown change",
               choices=("left", "right")),
     ) + vehicle_params('wheel', 'engine'),
@@ -158,7 +154,7 @@ KIND = Kind(
                    "upright, m v^2 h / R"),
     ),
     solve=solve,
-    extra={"example": {
+    example={
         "statement": ("A motor cycle with its rider has a mass of {mass}, with the centre of mass "
                       "{cg_height} above the road when upright. Each road wheel has a moment of "
                       "inertia of {wheel_inertia} and a radius of {wheel_radius}; the engine's "
@@ -170,5 +166,5 @@ KIND = Kind(
                   "wheel_radius": "300 mm", "engine_inertia": "0.3 kg*m^2", "gear_ratio": "5",
                   "engine_sense": "same", "speed": "90 km/h", "turn_radius": "50 m"},
         "find": {"heel_angle": "deg", "gyroscopic_couple": "N*m", "centrifugal_couple": "N*m"},
-        "vary": {"speed": "[0.8, 1.2]"}}},
+        "vary": {"speed": "[0.8, 1.2]"}},
 )

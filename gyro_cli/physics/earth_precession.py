@@ -45,11 +45,6 @@ def tidal_from_period(period: float, mass_ratio: float) -> float:
     return n * n * mass_ratio / (1 + mass_ratio)
 
 
-def tidal_from_distance(gm_body: float, distance: float) -> float:
-    """G M_b / a^3 from the body's G M and its semi-major axis."""
-    return gm_body / distance ** 3
-
-
 def node_factor(inclination: float) -> float:
     """(1 - (3/2) sin^2 i): the torque of an orbit at i, averaged over its turning node."""
     return 1 - 1.5 * math.sin(inclination) ** 2

@@ -43,27 +43,8 @@ def drift_rate(moment: float, H: float) -> float:
     return moment / H
 
 
-def moment_for_drift(rate: float, H: float) -> float:
-    """The moment that drives a drift ``rate``: M = H rate (the budget's largest moment)."""
-    return rate * H
-
-
 def nutation_frequency(H: float, Ix: float, Iy: float) -> float:
     """w_n = H / sqrt(I_x I_y), rad/s."""
     return H / math.sqrt(Ix * Iy)
 
 
-def nutation_amplitudes(moment: float, H: float, Ix: float, Iy: float) -> tuple[float, float]:
-    """(about the moment's axis x, about the drift axis y) for M applied at rest.
-
-    M I_y / H^2 and M sqrt(I_x I_y) / H^2; both M I / H^2 for equal inertias.
-    """
-    return moment * Iy / (H * H), moment * math.sqrt(Ix * Iy) / (H * H)
-
-
-def gimbal_angles(t: float, moment: float, H: float, Ix: float, Iy: float) -> tuple[float, float]:
-    """(a, b) at time t from rest: the closed-form solution above."""
-    wn = nutation_frequency(H, Ix, Iy)
-    a = moment * Iy / (H * H) * (1 - math.cos(wn * t))
-    b = moment / H * t - moment / (H * wn) * math.sin(wn * t)
-    return a, b

@@ -23,43 +23,28 @@ and small swings about north have the period
 *Dynamics of Physical Systems*, the Foucault gyrocompass.) At the poles
 cos(lat) = 0: the Earth's rate has no horizontal component and there is no
 north-seeking moment at all.
+
+The functions are written once for floats and formula trees (core/generic.py):
+the kind calls them with its symbols to write its steps.
 """
 
 from __future__ import annotations
 
-import math
+from ..core.generic import V, cos, pi_like, sin, sqrt
 
 EARTH_RATE = 7.292115e-5  # rad/s, IERS Conventions (2010), nominal mean angular velocity
 
 
-def directive_stiffness(H: float, earth_rate: float, latitude: float) -> float:
-    """H Omega cos(lat): north-seeking moment per radian of small deviation, N m/rad."""
-    return H * earth_rate * math.cos(latitude)
+def directive_stiffness(H: V, earth_rate: V, latitude: V) -> V:
+    """D = H Omega cos(lat): north-seeking moment per radian of small deviation, N m/rad."""
+    return H * earth_rate * cos(latitude)
 
 
-def north_seeking_moment(H: float, earth_rate: float, latitude: float, deviation: float) -> float:
-    """H Omega cos(lat) sin(alpha): moment about the vertical turning the axis back to north."""
-    return directive_stiffness(H, earth_rate, latitude) * math.sin(deviation)
+def north_seeking_moment(stiffness: V, deviation: V) -> V:
+    """D sin(alpha): moment about the vertical turning the axis back to north."""
+    return stiffness * sin(deviation)
 
 
-def period(I_v: float, H: float, earth_rate: float, latitude: float) -> float:
-    """2 pi sqrt(I_v / (H Omega cos(lat))): period of small swings about north."""
-    return 2 * math.pi * math.sqrt(I_v / directive_stiffness(H, earth_rate, latitude))
-
-
-def _agm(a: float, b: float) -> float:
-    while abs(a - b) > 1e-15 * a:
-        a, b = (a + b) / 2, math.sqrt(a * b)
-    return a
-
-
-def swing_period(I_v: float, H: float, earth_rate: float, latitude: float,
-                 amplitude: float) -> float:
-    """Period of the swing released at rest at deviation ``amplitude`` (|amplitude| < pi).
-
-    The pendulum's exact period, T0 (2/pi) K(sin(amplitude/2)), with the complete
-    elliptic integral K(k) = pi / (2 AGM(1, sqrt(1 - k^2))).
-    """
-    k = math.sin(abs(amplitude) / 2)
-    K = math.pi / (2 * _agm(1.0, math.sqrt(1 - k * k)))
-    return period(I_v, H, earth_rate, latitude) * 2 * K / math.pi
+def period(I_v: V, stiffness: V) -> V:
+    """2 pi sqrt(I_v / D): period of small swings about north."""
+    return 2 * pi_like(I_v, stiffness) * sqrt(I_v / stiffness)

@@ -149,8 +149,3 @@ def angles_of_t(top: Top, start: Start, t,
 def _B(start: Start) -> float:
     """beta - gamma u0 = phidot0 sin^2(theta0) (Eq. 11.14)."""
     return start.precession0 * _cos_sin(start.theta0)[1] ** 2
-
-
-def phi_of_t(top: Top, start: Start, t) -> np.ndarray:
-    """phi(t), phi(0) = 0, exact (see angles_of_t)."""
-    return angles_of_t(top, start, t)[1]

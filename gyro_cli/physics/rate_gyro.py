@@ -22,36 +22,41 @@ only the component of the input rate across it). Hence
 
 (Thomson, *Introduction to Space Dynamics*, ch. 5; Cannon, *Dynamics of
 Physical Systems*, the rate gyro.)
+
+The formulas are written once for floats and formula trees (core/generic.py):
+the kind calls them with its symbols to write its steps.
 """
 
 from __future__ import annotations
 
 import math
 
+from ..core.generic import V, sqrt
 
-def steady_deflection(H: float, rate: float, k: float) -> float:
+
+def steady_deflection(H: V, rate: V, k: V) -> V:
     """theta = H Omega / k (small angles)."""
     return H * rate / k
 
 
-def gimbal_rate(H: float, rate: float, c: float) -> float:
+def gimbal_rate(H: V, rate: V, c: V) -> V:
     """thetadot = H Omega / c (rate-integrating, steady)."""
     return H * rate / c
 
 
-def rate_from_moment(H: float, moment: float) -> float:
+def rate_from_moment(H: V, moment: V) -> V:
     """Omega = M / H (Eq. 11.29 solved for the input rate)."""
     return moment / H
 
 
-def natural_frequency(k: float, I_g: float) -> float:
+def natural_frequency(k: V, I_g: V) -> V:
     """omega_n = sqrt(k / I_g)."""
-    return math.sqrt(k / I_g)
+    return sqrt(k / I_g)
 
 
-def damping_ratio(c: float, k: float, I_g: float) -> float:
+def damping_ratio(c: V, k: V, I_g: V) -> V:
     """zeta = c / (2 sqrt(k I_g))."""
-    return c / (2 * math.sqrt(k * I_g))
+    return c / (2 * sqrt(k * I_g))
 
 
 def large_angle_deflection(H: float, rate: float, k: float) -> float:

@@ -541,11 +541,3 @@ def motion_of(sim: Simulation, zero: float = 1e-6, shortest: float = 0.0) -> str
     if min(abs(lo), abs(hi)) < zero:
         return "cusps"
     return "loops" if lo < 0 < hi else "waves"
-
-
-def simulate_periods(top: TopLike, start: StartLike, periods: float, period: float,
-                     samples_per_period: int = 200, **kw) -> Simulation:
-    """simulate() over ``periods`` times ``period`` (a duration only; nothing is assumed)."""
-    t_end = periods * period
-    samples = int(max(2, min(2_000_001, round(periods * samples_per_period) + 1)))
-    return simulate(top, start, t_end, samples=samples, **kw)

@@ -469,9 +469,9 @@ def _worked_answer(result: Result, level: int, picture: bool, ident: str,
 
 
 def _figure(result: Result, ident: str) -> str:
-    from .picture import KINDS, picture
+    from .picture import picture
 
-    if result.problem.kind.name not in KINDS:
+    if not result.problem.kind.picture:
         return ""
     pic = picture(result, prefix=f"{ident}-fig")
     if pic is None:

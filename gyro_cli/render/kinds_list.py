@@ -30,7 +30,5 @@ def kind_text(kind, body_params) -> str:
 
 
 def kinds_text(registry, body_params) -> str:
-    """Every built kind, then the planned ones."""
-    parts = [kind_text(registry.get(name), body_params) for name in registry.names()]
-    planned = [f"{name}: {what}  (not built yet)\n" for name, what in registry.PLANNED.items()]
-    return "\n".join(parts) + ("\n" + "".join(planned) if planned else "")
+    """Every kind."""
+    return "\n".join(kind_text(registry.get(name), body_params) for name in registry.names())

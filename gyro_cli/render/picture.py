@@ -16,9 +16,6 @@ import re
 from dataclasses import dataclass
 from html import escape
 
-#: kinds that have a picture
-KINDS = ("released_top", "bicycle")
-
 
 @dataclass(frozen=True)
 class Picture:
@@ -52,15 +49,15 @@ def png(result) -> tuple[bytes, str] | None:
 
 def _figure(result):
     """The matplotlib figure of a solved problem and its alt text, or None."""
-    kind = result.problem.kind.name
-    if kind == "released_top":
+    kind = result.problem.kind.picture
+    if kind == "axis_path":
         from .plot import figure, released_top_data
 
         data = released_top_data(result)
         if max(data.theta_max, float(data.theta.max())) < 1e-9:
             return None
         fig, alt = figure(data), _top_alt(data)
-    elif kind == "bicycle":
+    elif kind == "eigenvalues":
         from .plot_bicycle import result_figure
 
         fig, alt = result_figure(result), _bicycle_alt(result)
@@ -122,12 +119,11 @@ def _top_alt(data) -> str:
 
 def _bicycle_alt(result) -> str:
     from ..core.work import Work
-    from ..kinds.bicycle import parameters
     from ..physics import bicycle as bike
 
     given = result.problem.given
     gyroscopic = given.word("gyroscopic", "true") == "true"
-    p = parameters(given, Work())
+    p = result.problem.kind.model(given, Work())
     stab = bike.stability(bike.matrices(p, gyroscopic), p["g"])
     ranges = "; ".join(f"self-stable from {lo:.3g} to {hi:.3g} m/s" if math.isfinite(hi)
                        else f"self-stable above {lo:.3g} m/s" for lo, hi in stab.stable)

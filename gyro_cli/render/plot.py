@@ -315,6 +315,10 @@ def with_rate_unit(data: PathData, problem) -> PathData:
     return data
 
 
+#: the pictures a kind may declare (Kind.picture), in the order messages list them
+PICTURES = ("axis_path", "eigenvalues")
+
+
 def plot_result(result, path: str, force: bool = False, periods: float | None = None) -> Path:
     """``gyro solve --plot``: draw a solved released_top problem; InputError otherwise.
 
@@ -324,13 +328,16 @@ def plot_result(result, path: str, force: bool = False, periods: float | None = 
     from ..core.errors import InputError
 
     problem = result.problem
-    if problem.kind.name == "bicycle":  # its own picture: eigenvalues against speed
+    if problem.kind.picture == "eigenvalues":  # the bicycle's: eigenvalues against speed
         from .plot_bicycle import plot_result as plot_bicycle
 
         return plot_bicycle(result, path, force=force)
-    if problem.kind.name != "released_top":
-        raise InputError(f"plots exist for kinds released_top and bicycle only; this file is kind "
-                         f"{problem.kind.name!r}", file=problem.file, key="kind")
+    if problem.kind.picture != "axis_path":
+        from ..kinds import offering
+
+        raise InputError(f"plots exist for kinds {' and '.join(offering('picture', PICTURES))}"
+                         f" only; this file is kind {problem.kind.name!r}", file=problem.file,
+                         key="kind")
     suffix = Path(path).suffix
     if suffix.lower() not in FORMATS:
         raise InputError(f"plot format {suffix or '(none)'!r} not supported; name the file "

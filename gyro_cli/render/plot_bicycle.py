@@ -93,10 +93,9 @@ def plot_result(result, path: str, force: bool = False) -> Path:
 def result_figure(result):
     """The Figure of a solved bicycle problem (its parameters, wheel spin and speed)."""
     from ..core.work import Work
-    from ..kinds.bicycle import parameters
 
     problem = result.problem
     given = problem.given
-    p = parameters(given, Work())
+    p = problem.kind.model(given, Work())
     title = f"{problem.id}  {problem.title}".strip()
     return figure(p, given.word("gyroscopic", "true") == "true", given.get("speed"), title)

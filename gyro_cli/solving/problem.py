@@ -11,7 +11,7 @@ import re
 from ..core.record import field, record
 from typing import Any
 
-from .. import kinds
+from ..kinds import get as kind_named
 from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
 from ..core.alternatives import Alternative, alternatives_of, converted
 from ..core.body import BODY_PARAMS
@@ -220,7 +220,7 @@ def _build(path: str, data: Any, lines: dict[str, int]) -> Problem:
     for key in REQUIRED:
         if key not in data:
             raise InputError(f"missing required key `{key}`", key=key)
-    kind = kinds.get(data["kind"])
+    kind = kind_named(data["kind"])
     if not isinstance(data["given"], dict):
         raise InputError(f"expected a mapping of quantities, got a {_type_name(data['given'])}",
                          key="given")

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
+from typing import TYPE_CHECKING
+
 from ..core.record import record
 
 from ..core import units
@@ -12,7 +15,13 @@ from ..core.body import build_body
 from ..core.prose import names, q, rel
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
+from ..core.given import Given
+from ..core.params import MISSING_KEY
+from ..core.spec import Kind
 from .problem import Problem, load, params_by_name
+
+if TYPE_CHECKING:
+    from collections.abc import Iterable
 from ..core.work import GivenLine, Solution, Work, num
 
 
@@ -41,6 +50,20 @@ def solve_file(path: str) -> Result:
     return solve(load(path))
 
 
+def asking(problem: Problem, names: Iterable[str]) -> Problem:
+    """The problem asking also for the answers ``names`` (in SI, after its own ``find``);
+    the problem itself when it asks for them all already."""
+    more = [name for name in names if name not in problem.find]
+    if not more:
+        return problem
+    return dataclasses.replace(problem, find=problem.find | dict.fromkeys(more))
+
+
+def solve_asking(problem: Problem, names: Iterable[str]) -> Result:
+    """`solve` of the problem asking also for ``names`` (an answer key's, a sheet's)."""
+    return solve(asking(problem, names))
+
+
 def solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result:
     """Solve a loaded problem; InputError (located in the file) if it cannot be.
 
@@ -57,6 +80,18 @@ def solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result
         raise err.located(file=problem.file, line=problem.line(err.key)) from None
 
 
+def _declared_keys(kind: Kind, given: Given) -> None:
+    """Refuse a problem without a key its kind requires, or not one of a group it declares."""
+    for param in kind.params:
+        if param.required and param.name not in given:
+            message = param.required if isinstance(param.required, str) else MISSING_KEY
+            raise InputError(message, key=f"given.{param.name}")
+    for group in kind.one_of:
+        refused = group.refusal([k for k in group.keys if k in given])
+        if refused is not None:
+            raise InputError(refused[0], key=f"given.{refused[1]}")
+
+
 def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result:
     unfinite = Sym.unfinite  # symbols made so far with a value that is not finite
     work = Work(overrides)
@@ -65,10 +100,10 @@ def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Resul
     _data_as_stated(problem, work)
     if kind.uses_body:
         problem.given.body = build_body(problem.given.values, problem.us_customary, work,
-                                        sizeless_ok=bool(kind.extra.get("size_free")),
-                                        gravity=kind.extra.get("gravity", True))
+                                        sizeless_ok=kind.size_free,
+                                        gravity=kind.gravity)
         _scaled_data_refused(problem)
-        if not kind.extra.get("gravity", True) and "weight" not in problem.given.values:
+        if not kind.gravity and "weight" not in problem.given.values:
             pass  # gravity plays no part in this kind (and no weight to turn into a mass)
         elif problem.us_customary and "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "32.2 ft/s^2 (default)", problem.given.body.g,
@@ -83,6 +118,7 @@ def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Resul
         elif "g" not in problem.given.values:
             work.given.append(GivenLine("g", "g", "9.81 m/s^2 (default)", problem.given.body.g,
                                         "m/s^2", shown=("9.81", "m/s^2")))
+    _declared_keys(kind, problem.given)
     try:
         kind.solve(problem.given, frozenset(problem.find), work)
     except (ArithmeticError, ValueError) as err:

@@ -1,0 +1,30 @@
+"""Float formulas the kinds write as trees, written here independently as oracles for the
+tests (the kinds' steps are evaluated from their trees; these compute the same on floats)."""
+
+from __future__ import annotations
+
+import math
+
+
+def gyroscopic_moment(J: float, I: float, spin: float, precession: float, theta: float) -> float:
+    """Moment on the rotor along n = K x k / sin(theta): Omega sin th (J omega_z - I Omega cos th)
+    (Meriam Eq. 11.13 with thetaddot = 0)."""
+    cos = math.cos(theta)
+    return precession * math.sin(theta) * (J * (spin + precession * cos) - I * precession * cos)
+
+
+def tilt_rate_uniform(drop: float, speed: float, drop_length: float, spacing: float) -> float:
+    """Tilt rate of an axle when one wheel drops ``drop`` evenly over ``drop_length`` of track
+    at ``speed``: the drop takes t = s / v, the axle turns through drop / L in it."""
+    return drop * speed / (drop_length * spacing)
+
+
+def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
+    """Greatest tilt rate when one wheel falls ``drop`` and rises again in ``drop_time`` with
+    simple harmonic motion: y = (drop / 2)(1 - cos(2 pi t / T)), so y' peaks at pi drop / T."""
+    return math.pi * drop / (drop_time * spacing)
+
+
+def counterweight_offset(moment: float, counterweight: float, g: float) -> float:
+    """How far the block moves from the balance point so its weight gives the moment: M / (m_c g)."""
+    return abs(moment) / (counterweight * g)
