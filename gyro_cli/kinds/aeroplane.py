@@ -46,11 +46,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     motion = given.word("motion", "turn")
     _refuse_foreign(given, motion)
     radius_key = "loop_radius" if motion == "loop" else "turn_radius"
-    for key in ("spin", "speed", radius_key):
-        if key not in given:
-            raise InputError(f"the aeroplane needs spin (engine speed), speed and {radius_key}"
-                             + (" (the loop's radius: motion is loop)" if motion == "loop"
-                                else ""), key=f"given.{key}")
+    if radius_key not in given:  # spin and speed are declared required; the radius is the
+        raise InputError(f"the aeroplane needs spin (engine speed), speed and {radius_key}"
+                         + (" (the loop's radius: motion is loop)" if motion == "loop" else ""),
+                         key=f"given.{radius_key}")  # motion's
     spin, v, R = given["spin"], given["speed"], given[radius_key]
     sense = given.word("rotor_sense")
     if sense is None and "effect" in find:
@@ -139,6 +138,9 @@ NOSE_WORDS = (("nose_rising", "rising"), ("pulling_up", "rising"), ("pull_up", "
               ("outside_loop", "falling"))
 
 
+_NEEDS = ("the aeroplane needs spin (engine speed), speed and turn_radius (loop_radius in "
+          "a loop)")
+
 KIND = Kind(
     name="aeroplane",
     summary="an aeroplane's engine and propeller on a turn: gyroscopic couple and whether it "
@@ -147,11 +149,11 @@ KIND = Kind(
     params=(
         Param("spin", "rate", "omega", "engine (propeller) speed, a positive rate; its sense in "
               "rotor_sense", nonnegative=True, reason="give the engine speed as a positive "
-              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)"),
+              "rate and its sense in rotor_sense (e.g. clockwise_from_rear)", required=_NEEDS),
         Param("rotor_sense", "word", "sense", "sense of the engine seen from the front (nose) or "
               "the rear (tail, the pilot's view)", choices=V.AEROPLANE_SENSES),
         Param("speed", "speed", "v", "flying speed", nonnegative=True,
-              reason="the aeroplane flies forward"),
+              reason="the aeroplane flies forward", required=_NEEDS),
         Param("turn_radius", "length", "R", "radius of the turn", positive=True),
         Param("turn", "word", "turn", "left (default) or right", choices=("left", "right")),
         Param("motion", "word", "motion", "turn (default: a horizontal turn) or loop (a loop "

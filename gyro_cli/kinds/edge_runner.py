@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from ..core.errors import InputError
+from ..core.errors import InputError, refuse_overflow
 from ..core.expr import Sym
 from ..core.given import Given
 from ..core.prose import names, q, rel
@@ -56,10 +56,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     Omega, R = given["shaft_speed"], given["path_radius"]
     n = given["rollers"] if "rollers" in given else 1
     mill = P.edge_runner(J, r, R, Omega)
-    if not (math.isfinite(mill.couple) and math.isfinite(mill.extra_pressure)):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(mill.couple, mill.extra_pressure)
 
     work.section("The mill")
     work.text(*_SETUP)

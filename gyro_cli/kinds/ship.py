@@ -330,10 +330,7 @@ def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin:
     work.section(*_COUPLE_TITLE)
     C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29",
                   note="with the axle vertical")
-    if not (math.isfinite(C) and math.isfinite(Hmag)):
-        raise InputError("these data are outside what gyro can compute reliably in double "
-                         "precision (a product overflows); check the magnitudes and units",
-                         key="given")
+    refuse_overflow(C, Hmag)
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
     if sense and top:
