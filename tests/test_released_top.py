@@ -81,7 +81,7 @@ def test_worked_answer_shows_the_chapter(run, problems_dir):
     assert result.exit_code == 0, result.output
     out = result.stdout
     for fragment in ("Eq. 11.14", "Eq. 11.17", "Eq. 11.18", "Eq. 11.19", "Eq. 11.25",
-                     "gamma^2/a", "4 K(m) / sqrt(a (u3 - u1))", "Pi(n1|m)",
+                     "γ²/a", "4 K(m) / sqrt(a (u3 - u1))", "Pi(n1|m)",
                      "Fast-top approximation", "2 pi I / (J omega_z)", "m g l / (J omega_z)",
                      "2 I m g l sin(theta0) / (J omega_z)^2", "error", "motion: cusps",
                      "u1 = 0.7843", "theta_max = 38.34 deg", "T = 0.1887 s"):
