@@ -139,8 +139,8 @@ def test_fault_finder_finds_faults():
 
 
 def test_text_escapes_specials():
-    assert writeup.text_escape("a_long & 50% #1 $x {y} ~ ^") == \
-        r"a\_long\_key \a\_long \& 50\% \#1 \$x \{y\} \textasciitilde{} \textasciicircum{}"
+    assert writeup.text_escape("a_long_key & 50% #1 $x {y} ~ ^") == \
+        r"a\_long\_key \& 50\% \#1 \$x \{y\} \textasciitilde{} \textasciicircum{}"
     # a short subscript is typeset in a file's words (ω_z, I_G); a key name is escaped
     assert writeup.text_escape("a_b") == r"a$_{b}$"
     tex = writeup.words("the rod's mass is 50% of m_total")
