@@ -144,7 +144,7 @@ def test_text_escapes_specials():
     # a short subscript is typeset in a file's words (ω_z, I_G); a key name is escaped
     assert writeup.text_escape("a_b") == r"a$_{b}$"
     tex = writeup.words("the rod's mass is 50% of m_total")
-    assert tex == r"the rod's mass is 50\% of m\_total"
+    assert tex == r"the rod's mass is 50\% of m$_{\mathrm{total}}$"
     assert latex_problems(tex) == []
 
 
