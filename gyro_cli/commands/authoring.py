@@ -675,6 +675,9 @@ def _simple_scalar(text: str) -> str | None:
 
 def _resolves_to_text(text: str) -> bool:
     """Whether YAML reads ``text`` written plain as a string (PyYAML's own resolver)."""
+    first, space, _ = text.partition(" ")
+    if space and "-" not in first[1:]:
+        return True  # a number and its unit: only a timestamp (2001-12-14 21:59) has a space
     if not _RESOLVER:
         import yaml
 
