@@ -577,10 +577,22 @@ def variant_yaml(data: dict[str, Any], shared: dict[str, tuple[Any, str]] | None
     for key, value in data.items():
         known = memo.get(key)
         if known is None or known[0] != value:
-            known = (copy.deepcopy(value), _key_yaml(key, value))
+            known = (_copied(value), _key_yaml(key, value))
             memo[key] = known
         out.append(known[1])
     return "".join(out)
+
+
+def _copied(value: Any) -> Any:
+    """``copy.deepcopy(value)``, its strings shared (a variant's given and expected:
+    made for each variant, so copied quickly)."""
+    if isinstance(value, str):
+        return value
+    if value.__class__ is list and all(isinstance(v, str) for v in value):
+        return list(value)
+    if value.__class__ is dict:
+        return {k: _copied(v) for k, v in value.items()}
+    return copy.deepcopy(value)
 
 
 def _key_yaml_all(data: dict[str, Any]) -> str:
