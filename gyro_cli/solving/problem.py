@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from ..core.record import field, record
-from typing import Any, Callable
+from typing import Any
 
 from ..kinds import get as kind_named
 from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
