@@ -33,8 +33,12 @@ PROBLEMS = ROOT / "problems"
 SUFFIX = {"moodle": ".xml", "qti": ".zip", "blackboard": ".txt", "prairielearn": ""}
 
 
+CPU: dict[str, list[float]] = {}  # CPU seconds (user + system) of each run, by command and code
+
+
 def run(cmd: list[str], code: Path) -> tuple[float, float]:
-    """(seconds, peak RSS in MB) of ``cmd`` run with ``code`` first on the path."""
+    """(seconds, peak RSS in MB) of ``cmd`` run with ``code`` first on the path; its CPU
+    seconds (user + system, steadier than the wall on a shared machine) go to CPU."""
     env = dict(os.environ, PYTHONPATH=str(code))
     start = time.perf_counter()
     # Run from the checkout: ``python -m`` puts the working directory first on the path.
@@ -44,6 +48,7 @@ def run(cmd: list[str], code: Path) -> tuple[float, float]:
     err = child.stderr.read()
     _, status, usage = os.wait4(child.pid, 0)
     took = time.perf_counter() - start
+    CPU.setdefault(f"{cmd[3]} {code}", []).append(usage.ru_utime + usage.ru_stime)
     child.returncode = os.waitstatus_to_exitcode(status)
     if child.returncode != 0:  # an old checkout may not read today's problem files
         lines = err.decode().strip().splitlines() or [""]
@@ -89,6 +94,7 @@ def main() -> None:
                              "need gigabytes)")
     args = parser.parse_args()
     codes = [("now", ROOT)] + [(f"old {path.name}", path.resolve()) for path in args.old]
+    code_of = dict(codes)
     print(f"load average before: {load()} ({os.cpu_count()} cores)")
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
@@ -109,7 +115,9 @@ def main() -> None:
             for label, _ in codes[:1] if alone else codes:
                 seconds = statistics.median(t for t, _ in measured[label])
                 peak = statistics.median(m for _, m in measured[label])
-                print(f"{name:<48} {label}: {seconds:7.1f} s  {peak:7.1f} MB peak "
+                runs = CPU[f"{cmd[3]} {code_of[label]}"][-len(measured[label]):]
+                cpu = statistics.median(runs)
+                print(f"{name:<48} {label}: {seconds:7.1f} s  {cpu:7.1f} CPU-s  {peak:7.1f} MB peak "
                       f"(runs: {', '.join(f'{t:.1f} s/{m:.0f} MB' for t, m in measured[label])})",
                       flush=True)
     print(f"load average after: {load()}")

@@ -15,25 +15,11 @@ from typing import NoReturn
 import click
 
 from . import __version__
-from .core.errors import InputError, internal_message, terminal_text
+from .commands.exits import INTERNAL, fail, internal
+from .commands.exits import outputs_apart as _outputs_apart
+from .core.errors import InputError, terminal_text
 
 FORMATS = ("text", "json", "markdown", "latex", "html")
-INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
-
-
-def fail(error: InputError | str) -> NoReturn:
-    """Print one line on stderr and exit 2."""
-    click.echo(f"gyro: {error}", err=True)
-    sys.exit(2)
-
-
-def internal(file: str | None, error: BaseException) -> None:
-    """Report an unexpected exception on one line (traceback with GYRO_DEBUG=1)."""
-    click.echo(f"gyro: {internal_message(file, error)}", err=True)
-    if os.environ.get("GYRO_DEBUG"):
-        import traceback
-
-        traceback.print_exception(error)
 
 
 class _Guarded(click.Group):
@@ -87,18 +73,53 @@ class _Guarded(click.Group):
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
 
-    # Commands whose module is imported only when they run or are listed: `gyro solve`
-    # does not pay for their options.
-    LAZY = {"export": ("gyro_cli.commands.export", "export")}
+    # Commands whose module is imported only when they run: `gyro solve` does not pay for
+    # their options. Each with the first paragraph of its help, which `gyro --help` lists
+    # (tests/test_i37_speed.py holds these to the commands' own).
+    LAZY = {
+        "export": ("gyro_cli.commands.export", "export", "Export problem FILES as a "
+                   "question bank whose every answer is gyro's."),
+        "new": ("gyro_cli.commands.others", "new", "Print (or write) a commented problem "
+                "template with every key of KIND."),
+        "schema": ("gyro_cli.commands.others", "schema", "Print a JSON Schema of the "
+                   "problem format (for editors' YAML support)."),
+        "vary": ("gyro_cli.commands.others", "vary", "Write COUNT variants of FILE with "
+                 "values drawn from its `vary:` block, or with --roster one variant per "
+                 "student of each FILE."),
+        "simulate": ("gyro_cli.commands.others", "simulate", "Integrate the top of FILE "
+                     "(released_top or steady_precession) from Euler's equations and "
+                     "compare with the analytic answer; --animate draws the motion."),
+        "handout": ("gyro_cli.commands.others", "handout", "Write the students' question "
+                    "sheets: a cover and each problem's statement with the student's "
+                    "numbers; --solutions adds the worked answers."),
+        "kinds": ("gyro_cli.commands.others", "kinds", "List the problem kinds with their "
+                  "given keys and answers."),
+    }
 
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(set(super().list_commands(ctx)) | set(self.LAZY))
+
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        """`gyro --help`'s list of commands, a command not loaded yet by its help above."""
+        listed = []
+        for name in self.list_commands(ctx):
+            if name in self.LAZY and name not in self.commands:
+                listed.append((name, click.Command(name, help=self.LAZY[name][2])))
+            else:
+                command = self.get_command(ctx, name)
+                if command is not None and not command.hidden:
+                    listed.append((name, command))
+        if listed:
+            limit = formatter.width - 6 - max(len(name) for name, _ in listed)
+            with formatter.section("Commands"):
+                formatter.write_dl([(name, command.get_short_help_str(limit))
+                                    for name, command in listed])
 
     def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
         if name in self.LAZY and name not in self.commands:
             from importlib import import_module
 
-            module, attribute = self.LAZY[name]
+            module, attribute, _ = self.LAZY[name]
             self.add_command(getattr(import_module(module), attribute), name)
         return super().get_command(ctx, name)
 
@@ -130,23 +151,6 @@ def main() -> None:
 
     Write a problem as a YAML file with units, then `gyro solve FILE`.
     """
-
-
-def _outputs_apart(inputs: list[str] | tuple[str, ...],
-                   identities: dict[str, tuple[int, int]] | None = None,
-                   **outputs: str | None) -> None:
-    """Exit 2 with one line if an output file (by option name) is empty or would replace
-    one of the command's inputs (core/files.py: refuse_input_as_output; ``identities``
-    as it takes them)."""
-    from .core.files import refuse_input_as_output
-
-    for option, name in outputs.items():
-        if name is not None:
-            try:
-                refuse_input_as_output(name, inputs, option="--" + option.replace("_", "-"),
-                                       identities=identities)
-            except InputError as err:
-                fail(err)
 
 
 def _rendered(result, fmt: str, level: int = 2) -> str:
@@ -448,192 +452,6 @@ def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict:
         except InputError as err:
             fail(err)
     sys.exit(tally.exit_code)
-
-
-@main.command("new")
-@click.argument("kind", required=False)
-@click.option("-o", "--output", metavar="FILE", help="Write the template to FILE (not stdout).")
-@click.option("--force", is_flag=True, help="Replace FILE if it exists.")
-def new(kind: str | None, output: str | None, force: bool) -> None:
-    """Print (or write) a commented problem template with every key of KIND.
-
-    Without KIND, list the kinds to choose from."""
-    from .commands.authoring import template
-
-    if kind is None:
-        from .kinds import get as kind_named, names as kind_names
-
-        click.echo("gyro new KIND writes a template; KIND is one of:")
-        for name in kind_names():
-            click.echo(f"  {name:<19} {kind_named(name).summary}")
-        return
-    try:
-        if output is not None:
-            from .core.files import refuse_input_as_output
-
-            refuse_input_as_output(output, (), option="--output", yaml_output=True)
-        text = template(kind)
-        if output:
-            from .core.files import write_atomic
-
-            write_atomic(output, text, force=force)
-            click.echo(f"wrote {terminal_text(output)}", err=True)
-        else:
-            click.echo(text, nl=False)
-    except InputError as err:
-        fail(err)
-
-
-@main.command()
-def schema() -> None:
-    """Print a JSON Schema of the problem format (for editors' YAML support)."""
-    import json
-
-    from .commands.authoring import schema as make_schema
-
-    click.echo(json.dumps(make_schema(), indent=2, ensure_ascii=False))
-
-
-@main.command()
-@click.argument("files", nargs=-1, required=True, metavar="FILE...")
-@click.option("--count", "-n", type=int, default=None, help="How many variants (one FILE).")
-@click.option("--roster", metavar="ROSTER.csv",
-              help="Instead of --count: one variant per student of ROSTER (a CSV with a "
-                   "student column) and problem FILE, and DIR/assignment.csv.")
-@click.option("--seed", "-s", type=int, default=0, show_default=True,
-              help="Random seed: the same seed gives the same files (with --roster, the "
-                   "course seed: each student's numbers depend only on it and their id).")
-@click.option("-o", "--out-dir", "out_dir", metavar="DIR", required=True,
-              help="Directory to write the variants into (created if needed).")
-@click.option("--force", is_flag=True, help="Replace variant files that exist.")
-def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: int,
-         out_dir: str, force: bool) -> None:
-    """Write COUNT variants of FILE with values drawn from its `vary:` block, or with
-    --roster one variant per student of each FILE.
-
-    Each variant has its computed `expected` answers; draws with no real
-    solution are rejected and drawn again.
-    """
-    from .commands.authoring import write_variants
-
-    if (count is None) == (roster is None):
-        fail("give --count N (variants of one FILE) or --roster ROSTER.csv (one per student)")
-    try:
-        if roster is not None:
-            from .commands.roster import write_roster_variants
-
-            written = write_roster_variants(list(files), roster, seed, out_dir, force)
-            click.echo(f"wrote {len(written) - 1} variant file(s) and the assignment:",
-                       err=True)
-            click.echo(written[-1])
-            return
-        if len(files) != 1:
-            fail("--count varies one FILE; give --roster for several")
-        written = write_variants(files[0], count, seed, out_dir, force)
-    except InputError as err:
-        fail(err)
-    for path in written:
-        click.echo(path)
-
-
-@main.command()
-@click.argument("file")
-@click.option("--periods", type=click.FloatRange(min=0, min_open=True, max=1e5), default=None,
-              help="How long: nutation periods (precession revolutions for a steady top). "
-                   "Default 5, or 3 for --animate.")
-@click.option("--format", "fmt", type=click.Choice(("text", "json")), default="text",
-              show_default=True, help="text: side-by-side table; json: one JSON object.")
-@click.option("--csv", "csv_file", metavar="FILE",
-              help="Write the time series t, theta, phi, psi and their rates (SI) to FILE.")
-@click.option("--plot", "plot_file", metavar="FILE",
-              help="Draw the axis's path, theta(t) and phidot(t) to FILE (.png, .svg, .pdf).")
-@click.option("--animate", "animate_file", metavar="FILE",
-              help="Animate the motion to FILE (.gif, .mp4 with ffmpeg, or .html): released "
-                   "top, steady precession, torque-free body, rotor on a turning base, rolling "
-                   "disk, bicycle.")
-@click.option("--speed", type=float, default=1.0, show_default=True,
-              help="Playback speed of --animate: 1 shows one period of the motion in 2 s.")
-@click.option("--fps", type=float, default=30.0, show_default=True,
-              help="Frames per second of --animate.")
-@click.option("--force", is_flag=True, help="Replace output files that exist.")
-def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
-             plot_file: str | None, animate_file: str | None, speed: float, fps: float,
-             force: bool) -> None:
-    """Integrate the top of FILE (released_top or steady_precession) from Euler's
-    equations and compare with the analytic answer; --animate draws the motion."""
-    from .commands.simulate import simulate_file, terminal_progress
-
-    _outputs_apart([file], csv=csv_file, plot=plot_file, animate=animate_file)
-    try:
-        out = ""
-        if animate_file:
-            from .commands.animate import animate_file as animate, check_output
-
-            check_output(animate_file, force)
-            text = animate(file, animate_file, periods=periods, speed=speed, fps=fps,
-                           force=force)
-            if csv_file or plot_file or fmt != "text":   # the comparison too, when asked
-                out = simulate_file(file, periods=periods or 5.0, fmt=fmt, csv=csv_file,
-                                    plot=plot_file, force=force)
-            if fmt == "text":
-                out += text
-        else:
-            out = simulate_file(file, periods=periods or 5.0, fmt=fmt, csv=csv_file,
-                                plot=plot_file, force=force, progress=terminal_progress())
-    except InputError as err:
-        fail(err)
-    except Exception as err:
-        internal(file, err)
-        sys.exit(INTERNAL)
-    click.echo(out, nl=False)
-
-
-@main.command()
-@click.argument("files", nargs=-1, metavar="FILES|DIR")
-@click.option("-o", "--output", "out", metavar="OUT", default="handout.html", show_default=True,
-              help="OUT.html, OUT.tex or OUT.pdf (pdflatex); per student OUT-STUDENT.ext and "
-                   "OUT-key.csv.")
-@click.option("--roster", metavar="ROSTER.csv",
-              help="One sheet per student, each with their own numbers (as gyro vary --roster "
-                   "with the same --seed).")
-@click.option("--assignment", metavar="ASSIGNMENT.csv",
-              help="One sheet per student from gyro vary --roster's assignment (FILES not "
-                   "needed).")
-@click.option("--seed", "-s", type=int, default=0, show_default=True,
-              help="With --roster: the course seed.")
-@click.option("--solutions", is_flag=True, help="Add the worked answers.")
-@click.option("--course", default="", help="The course's name, on the cover.")
-@click.option("--title", default="Homework", show_default=True, help="The sheet's title.")
-@click.option("--force", is_flag=True, help="Replace files that exist.")
-def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: str | None,
-            seed: int, solutions: bool, course: str, title: str, force: bool) -> None:
-    """Write the students' question sheets: a cover and each problem's statement with
-    the student's numbers; --solutions adds the worked answers."""
-    from .commands.handout import write_handouts
-
-    if not files and not assignment:
-        fail("give the problem FILES (or a DIR), or --assignment")
-    try:
-        written = write_handouts(list(files), out, roster, assignment, seed, solutions,
-                                 course, title, force)
-    except InputError as err:
-        fail(err)
-    for path in written:
-        click.echo(path)
-
-
-@main.command()
-def kinds() -> None:
-    """List the problem kinds with their given keys and answers."""
-    from . import kinds as registry
-    from .core.body import BODY_PARAMS
-    from .render.kinds_list import kinds_text
-
-    click.echo(kinds_text(registry, BODY_PARAMS))
-    click.echo("Units as textbooks write them: rpm RPM rev/min r/min rps rev/s rev Hz; "
-               "km/h km/hr kmph kph knot kn mph; t tonne kgf; lb and oz as lbf/ozf where a "
-               "force or moment is meant (lb ft, lb-ft, ft lb, lb in, oz in); N m, N-m, N.m, "
-               "Nm, kN m (docs/real_problems.md)")
 
 
 if __name__ == "__main__":

@@ -402,6 +402,7 @@ def _root_counts_change(m, r, J, I, path, slow, fast):
     return slow, fast
 
 
+@pytest.mark.property  # `make props`: ten times the cases
 def test_the_scan_finds_the_same_tilts_where_two_tilts_meet_and_where_it_halves_most():
     """Where the scan gains most (it skips stretches of the grid on which the residual
     cannot reach 0), it is tried hardest: at speeds where two tilts meet (the residual
@@ -413,9 +414,11 @@ def test_the_scan_finds_the_same_tilts_where_two_tilts_meet_and_where_it_halves_
 
     from gyro_cli.kinds import rolling_disk as rd
 
+    from conftest import examples
+
     rng = random.Random(2611)
     cases = 0
-    while cases < 40:
+    while cases < examples(20):  # 40 before the suite's budget was cut (issue 37)
         m, r = 10 ** rng.uniform(-2, 2), 10 ** rng.uniform(-2, 0.5)
         J = m * r * r * rng.uniform(0.2, 1.0)
         I = J * rng.uniform(0.3, 1.0)

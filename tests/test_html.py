@@ -170,30 +170,3 @@ def test_cli_check_html_failing_first_and_linked(tmp_path):
     assert subprocess.run(args + ["--force"], capture_output=True, cwd=ROOT).returncode == 1
 
 
-@pytest.mark.property
-def test_generated_problems_render_as_well_formed_html(tmp_path):
-    """The property tests' problem files (kinds' examples and bundled problems, mutated):
-    whatever solves renders as well-formed, escaped HTML, without an exception."""
-    from hypothesis import given, settings
-
-    from conftest import examples
-    from test_properties import SETTINGS, problem_files
-
-    from gyro_cli.core.errors import InputError
-
-    path = tmp_path / "p.yaml"
-
-    @settings(max_examples=examples(60), **SETTINGS)
-    @given(source=problem_files())
-    def render(source):
-        path.write_text(source, encoding="utf-8", errors="surrogatepass")
-        try:
-            result = solve_file(str(path))
-        except InputError:
-            return
-        text = html.worked_answer(result, picture=False)
-        tags = _parsed(text)
-        assert not tags.errors and not tags.stack, (tags.errors, source)
-        assert "<script" not in text
-
-    render()

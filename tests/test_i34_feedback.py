@@ -130,9 +130,15 @@ def course(tmp_path_factory: pytest.TempPathFactory) -> dict:
     assignment = hw / "assignment.csv"
     gyro("check", "--answers", sheet, "--assignment", assignment, "--out", base / "grades.csv",
          "--feedback", base / "feedback")
+    # Gradescope's and PrairieLearn's results of the same grading, written as `gyro check
+    # --out-format FMT` writes them, without grading the class twice more (the command
+    # line's --out-format: tests/test_i34_grading.py, tests/test_course.py)
+    from gyro_cli.checking import grades
+    from gyro_cli.render import grades_report
+
+    graded = grades.grade(str(sheet), (), assignment=str(assignment))
     for fmt in ("gradescope", "prairielearn"):
-        gyro("check", "--answers", sheet, "--assignment", assignment, "--out", base / fmt,
-             "--out-format", fmt)
+        grades_report.write_out(graded, str(base / fmt), fmt, False, [str(sheet)])
     with open(base / "grades.csv", newline="") as handle:
         grades = list(csv.DictReader(handle))
     key = json.loads((hw / "key.json").read_text())

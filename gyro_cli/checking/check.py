@@ -59,7 +59,7 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     # Validate everything in the file before solving: a bad key is exit 2 either way.
     validate_tolerance(problem.tolerance, kind)
     wanted: dict[str, tuple[list[Expected], Tolerance]] = {}
-    step_values = {}
+    step_values: dict[str, Any] = {}
     for name, raw in problem.expected.items():
         if name == "steps" and kind.answer("steps") is None:
             step_values = step_values | raw

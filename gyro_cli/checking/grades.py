@@ -29,7 +29,7 @@ import io
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TypedDict
 
 from . import check
 from .expected import parse_value
@@ -57,6 +57,13 @@ WORD_SYNONYMS = {
     "steady": ("steady", "steady precession", "uniform precession", "no nutation"),
     "sleeping": ("sleeping", "asleep", "sleeping top", "sleeps"),
 }
+
+
+class _Where(TypedDict):
+    """Where in the answer sheet an InputError points."""
+
+    file: str
+    line: int | None
 
 
 @dataclass
@@ -117,7 +124,7 @@ def _read_csv(path: str) -> list[Submission]:
         raise InputError(f"not a CSV file: {err}", file=path) from None
     order = list(COLUMNS)
     start = 0
-    if rows and [HEADER_WORDS.get(c.strip().lower()) for c in rows[0][:4]] \
+    if rows and rows[0] \
             and all(c.strip().lower() in HEADER_WORDS for c in rows[0] if c.strip()):
         order = [HEADER_WORDS[c.strip().lower()] for c in rows[0] if c.strip()]
         for k, name in enumerate(order):
@@ -169,7 +176,7 @@ def _read_yaml(path: str) -> list[Submission]:
     out = []
     for student, problems, node, line in _as_written(data, root, path, "student id"):
         student = student_id(student)
-        where = dict(file=path, line=line)
+        where = _Where(file=path, line=line)
         if not isinstance(problems, dict):
             raise InputError(f"student {student!r}: expected a mapping of problem ids", **where)
         for problem, answers, inner, _ in _as_written(problems, node, path, "problem id"):
@@ -334,14 +341,14 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                              f"problem files given (ids: {', '.join(sorted(problems)) or 'none'})",
                              file=sheet, line=s.line)
         if problem.kind.answer(s.answer) is None and s.answer not in problem.steps:
-            names = ", ".join(a.name for a in problem.kind.answers)
+            answers = ", ".join(a.name for a in problem.kind.answers)
             steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
-                             f"{names}{steps})", file=sheet, line=s.line)
+                             f"{answers}{steps})", file=sheet, line=s.line)
         questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
         questions[s.answer] = None
     graded = Graded([])
-    solved = {}
+    solved: dict[str, Any] = {}
     for pid, names in asked.items():
         _solved_for(problems[pid], names, pid, solved, graded)
     items = [(pid, name) for pid, names in asked.items() for name in names]
@@ -500,15 +507,15 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     variants: dict[str, Any] = {}
     stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
     seen_files: dict[str, str] = {}
-    for row in plan.rows:
-        seen_files[os.path.realpath(row.file)] = row.variant
+    for planned in plan.rows:
+        seen_files[os.path.realpath(planned.file)] = planned.variant
         # errors carried forward solve again: the stored answers are not enough
-        keyed = _from_key(stored_key, row) if stored_key and "ecf" not in (credit or {}) \
+        keyed = _from_key(stored_key, planned) if stored_key and "ecf" not in (credit or {}) \
             else None
         if keyed is not None:
-            variants[row.variant], stored[row.variant] = keyed
+            variants[planned.variant], stored[planned.variant] = keyed
             continue
-        variants[row.variant] = load_variant(row, assignment_path)
+        variants[planned.variant] = load_variant(planned, assignment_path)
     if paths:  # the originals (or the variants' folder): every assigned problem among them
         files, errors = check.collect(paths)
         if errors:
@@ -521,11 +528,11 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                                      f"files given (ids: {', '.join(sorted(originals))})",
                                      file=assignment_path)
     questions: dict[str, list[str]] = {}
-    for row in plan.rows:
-        if row.problem not in questions:
-            problem = variants[row.variant]
+    for planned in plan.rows:
+        if planned.problem not in questions:
+            problem = variants[planned.variant]
             steps = list(getattr(problem, "steps", []))
-            questions[row.problem] = list(dict.fromkeys(steps + list(problem.find) + [
+            questions[planned.problem] = list(dict.fromkeys(steps + list(problem.find) + [
                 n for n in problem.expected if problem.kind.answer(n) is not None]))
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
@@ -533,15 +540,15 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     extra: list[tuple[Submission, Any]] = []
     assigned = set(plan.problems())
     for s in submissions:
-        where = dict(file=sheet, line=s.line)
+        where = _Where(file=sheet, line=s.line)
         if s.student not in plan.students:
             raise InputError(f"student {s.student!r} is not in the assignment "
                              f"{assignment_path}", **where)
         if s.problem in assigned and s.problem in plan.by_variant:
-            other = plan.by_variant[s.problem]
+            holder = plan.by_variant[s.problem]
             raise InputError(f"the id {s.problem!r} is both problem {s.problem} of the "
-                             f"assignment and student {other.student}'s variant of problem "
-                             f"{other.problem} (assignment line {other.line}); write the "
+                             f"assignment and student {holder.student}'s variant of problem "
+                             f"{holder.problem} (assignment line {holder.line}); write the "
                              "student's own variant id instead", **where)
         own = plan.by_item.get((s.student, s.problem))
         note = ""
@@ -710,7 +717,7 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
     from types import SimpleNamespace
 
     from .assignment import file_digest
-    from .. import kinds
+    from ..kinds import get as kind_named
     from ..core.safeyaml import read_bytes
     from ..solving.problem import MAX_FILE_BYTES
     from ..solving.solve import Reported
@@ -725,7 +732,7 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
             return None
         if re.search(rb"^steps\s*:", data, re.M):  # steps asked: graded from the worked answer
             return None
-        kind = kinds.get(about["kind"])
+        kind = kind_named(about["kind"])
         answers = {name: Reported(**value) for name, value in entry["answers"].items()}
         questions = list(about["questions"])
     except InputError:
@@ -780,7 +787,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     row.points = round(passed / len(lines), 4) if lines else 0.0
     row.result = "correct" if passed == len(lines) else ("partial" if passed else "wrong")
     # Here the solver's value is the truth and the student's the one that is off.
-    errors = [(float(line.expected_si) - float(line.got_si)) / abs(float(line.got_si))
+    errors = [(_si(line.expected_si) - _si(line.got_si)) / abs(_si(line.got_si))
               for line in lines if line.expected is not None and line.got_si is not None
               and float(line.got_si) != 0]
     errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
@@ -797,7 +804,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             notes.append(f"{line.expected}: no such root")
             feedback.append(f"{line.expected}: no such root (one value too many)")
         else:
-            truth, submitted = float(line.got_si), float(line.expected_si)
+            truth, submitted = _si(line.got_si), _si(line.expected_si)
             off = (submitted - truth) / abs(truth) * 100 if truth else math.inf
             note = (f"{line.expected}: off by {off:+.3g}%" if math.isfinite(off)
                     else f"{line.expected}: wrong")
@@ -888,6 +895,13 @@ def slip_credit(slip: str, credit: dict[str, float] | None) -> tuple[float, list
     return share, named
 
 
+def _si(value: float | str | None) -> float:
+    """A compared number in SI (a numeric answer's check holds one wherever it is read)."""
+    if value is None:
+        raise TypeError("a compared value in SI is missing")
+    return float(value)
+
+
 def _submitted(values: list[Any] | None) -> str:
     return "; ".join(" ".join(str(v).split()) for v in values or [])
 
@@ -908,7 +922,7 @@ def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
             return row
         submitted.append(normal_word(value))
     # A word written twice (`cusps; cusps`, or `cusp; cusps`) counts once (docs/check.md).
-    canonical = {}
+    canonical: dict[str, str] = {}
     for s in submitted:
         canonical.setdefault(next((w.lower() for w in truth if s in
                                    set(WORD_SYNONYMS.get(w.lower(), ())) | {w.lower()}), s), s)

@@ -144,9 +144,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     if reported.unit is None and reported.si_unit is None:  # a word answer
         got = [str(v) for v in computed]
         several = len(values) > 1
-        for i, value in enumerate(values):
+        for n, value in enumerate(values):
             ok = str(value.si).lower() in (g.lower() for g in got)
-            out.append(AnswerCheck(name, i + 1 if several else None, value.text, ", ".join(got),
+            out.append(AnswerCheck(name, n + 1 if several else None, value.text, ", ".join(got),
                                    ok, expected_value=value.text, got_value=", ".join(got),
                                    expected_si=value.si, got_si=", ".join(got),
                                    tolerance="exact", message="" if ok else
@@ -173,13 +173,15 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         # A root equal to one an expected value already matched (the moment, the
         # same for both precession rates) is covered by it, not a missing value.
         pairs = [(i, j) for i, j in pairs
-                 if i is not None or not any(within(k, j) for k in range(len(values)))]
+                 if i is not None or (j is not None and not any(within(k, j)
+                                                                for k in range(len(values))))]
     all_found = all(j is not None and within(i, j) for i, j in pairs if i is not None)
     several = len(values) > 1 or len(pairs) > 1
     for position, (i, j) in enumerate(pairs):
         index = position + 1 if several else None
         label = f" ({labels[j]})" if j is not None and j < len(labels) and labels[j] else ""
         if i is None:  # a computed root that no expected value claims
+            assert j is not None, "no pairing pairs nothing with nothing"
             unit, factor = values[0].unit or reported.unit or "", values[0].factor
             got_value = computed[j] / factor
             if not strict and all_found:
@@ -220,7 +222,7 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         if not math.isfinite(got):  # finite in SI, too large for the expected value's unit
             check.got_value = None
             check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
-        relative = (got_si - value.si) / abs(value.si) if value.si else None
+        relative = (got_si - value.si) / abs(float(value.si)) if value.si else None
         check.relative_error = relative if relative is not None and abs(relative) < 1e300 \
             else None  # in percent it would overflow
         check.passed = within(i, j)

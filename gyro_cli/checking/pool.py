@@ -240,7 +240,7 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
             for worker in workers:  # two batches each (one under way, one waiting), in the window
                 while len(worker.batches) < 2 and queue and queue[0] < next_out + AHEAD:
                     size = max(1, min(BATCH, (len(files) - next_out) // (2 * jobs)))
-                    take = []
+                    take: list[int] = []
                     while queue and len(take) < size and queue[0] < next_out + AHEAD:
                         take.append(queue.popleft())
                     worker.send(take, files)
@@ -268,7 +268,7 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
             for i, worker in enumerate(workers):
                 if not worker.batches:
                     continue
-                failed = None
+                failed: Callable[[str, Any], Result] | None = None  # who reports the file
                 if worker.fd in ready:
                     try:  # every reply already waiting, not one per wake-up
                         while True:
@@ -290,8 +290,11 @@ def pooled(files: list[str], work: Callable[[str], Result], jobs: int, timeout: 
                     k = min(max(worker.current(), 0), len(left) - 1)
                     # one that died is waited for, not killed: its exit status names the crash
                     code = worker.stop(kill=failed is timed_out)
-                    done[left[k]] = crashed(files[left[k]], code) if failed is crashed \
-                        else timed_out(files[left[k]], timeout)
+                    if failed is crashed:
+                        done[left[k]] = crashed(files[left[k]], code)
+                    else:
+                        assert timeout is not None, "only a time limit times a file out"
+                        done[left[k]] = timed_out(files[left[k]], timeout)
                     queue.extendleft(reversed(left[:k] + left[k + 1:]))
                     workers[i] = _Worker(work)
             while next_out in done:

@@ -101,7 +101,7 @@ def _parse_tolerance(raw: Any, dimension: str | None, key: str) -> Tolerance:
         return Tolerance("sig", digits, text)
     if dimension is None:
         # A word answer: compared exactly, but the text must still be a tolerance.
-        _guarded(lambda t, d, k: units._split(t, k), text, dimension, key)
+        _guarded(lambda t, d, k: units._split(t, k), text, "", key)  # no dimension to give
         return Tolerance("absolute", 0.0, text)
     value, _ = _guarded(units.parse, text, dimension, key)
     if value < 0:

@@ -22,6 +22,7 @@ import copy
 import math
 import os
 import random
+import re
 from typing import Any, Iterator
 
 from ..kinds import get as kind_named, names as kind_names_of
@@ -528,7 +529,8 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     from ..solving.solve import solve
 
     answer_names = [a.name for a in problem.kind.answers]
-    data = copy.deepcopy(base)
+    data = dict(base)  # what is drawn is set anew below; the rest is base's, unchanged
+    data["given"] = dict(base["given"])
     for key, form, low, high, unit, _ in ranges:
         value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
         data["given"][key] = f"{number_text(value)} {unit}".strip()
@@ -580,10 +582,22 @@ def variant_yaml(data: dict[str, Any], shared: dict[str, tuple[Any, str]] | None
     for key, value in data.items():
         known = memo.get(key)
         if known is None or known[0] != value:
-            known = (copy.deepcopy(value), _key_yaml(key, value))
+            known = (_copied(value), _key_yaml(key, value))
             memo[key] = known
         out.append(known[1])
     return "".join(out)
+
+
+def _copied(value: Any) -> Any:
+    """``copy.deepcopy(value)``, its strings shared (a variant's given and expected:
+    made for each variant, so copied quickly)."""
+    if isinstance(value, str):
+        return value
+    if value.__class__ is list and all(isinstance(v, str) for v in value):
+        return list(value)
+    if value.__class__ is dict:
+        return {k: _copied(v) for k, v in value.items()}
+    return copy.deepcopy(value)
 
 
 def _key_yaml_all(data: dict[str, Any]) -> str:
@@ -595,11 +609,104 @@ def _key_yaml_all(data: dict[str, Any]) -> str:
 def _key_yaml(key: str, value: Any) -> str:
     import yaml
 
+    fast = _simple_yaml(key, value)
+    if fast is not None:
+        return fast
     dumper = getattr(yaml, "CSafeDumper", None)
     if dumper is None or not (_plain_ascii(key) and _plain_ascii(value)):
         dumper = yaml.SafeDumper
     return yaml.dump({key: value}, Dumper=dumper, sort_keys=False, allow_unicode=True,
                      width=100)
+
+
+# A string both YAML emitters write on its line as it is, or in single quotes, and never
+# fold: ASCII letters, digits and these marks, words one space apart, no indicator first.
+_SIMPLE_TEXT = re.compile(r"(?:[A-Za-z0-9(]|-(?=[0-9]))(?:[A-Za-z0-9()._/+*,:%-]| (?! ))*")
+_SIMPLE_KEY = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_FOLD_AT = 100  # the width given to the emitters: a line no longer is never folded
+_RESOLVER: list[Any] = []
+
+
+def _simple_yaml(key: str, value: Any) -> str | None:
+    """`_key_yaml`'s text written here, where PyYAML's is known without running it (a
+    variant's id, title, given values and expected answers: a fifth of drawing a set of
+    variants): a key whose value is a simple string, a list of them, or a mapping of
+    those. None for anything else. tests/test_i37_speed.py holds it to PyYAML's text."""
+    if not isinstance(key, str) or not _simple_word(key):
+        return None
+    if isinstance(value, dict):
+        if not value:
+            return None
+        out = [f"{key}:\n"]
+        for name, item in value.items():
+            if not isinstance(name, str) or not _simple_word(name):
+                return None
+            text = _simple_entry("  ", name, item)
+            if text is None:
+                return None
+            out.append(text)
+        return "".join(out)
+    return _simple_entry("", key, value)
+
+
+def _simple_entry(indent: str, key: str, value: Any) -> str | None:
+    """``key: value`` at ``indent``: a simple string, or a block list of them."""
+    if isinstance(value, str):
+        scalar = _simple_scalar(value)
+        if scalar is None or len(indent) + len(key) + 2 + len(scalar) > _FOLD_AT:
+            return None
+        return f"{indent}{key}: {scalar}\n"
+    if isinstance(value, list) and value:
+        out = [f"{indent}{key}:\n"]
+        for item in value:
+            scalar = _simple_scalar(item) if isinstance(item, str) else None
+            if scalar is None or len(indent) + 2 + len(scalar) > _FOLD_AT:
+                return None
+            out.append(f"{indent}- {scalar}\n")
+        return "".join(out)
+    return None
+
+
+def _simple_word(text: str) -> bool:
+    """A mapping key written plain (``spin``, not ``yes`` or ``null``)."""
+    known = _SIMPLE_WORDS.get(text)
+    if known is None:
+        known = _SIMPLE_WORDS[text] = _SIMPLE_KEY.fullmatch(text) is not None and \
+            _resolves_to_text(text)
+    return known
+
+
+_SIMPLE_WORDS: dict[str, bool] = {}
+
+
+def _simple_scalar(text: str) -> str | None:
+    """A simple string as a block mapping's value or a list item: plain, or in single
+    quotes where plain would read otherwise (``: `` in it, a trailing colon, a number,
+    a boolean); None for a string not simple."""
+    if _SIMPLE_TEXT.fullmatch(text) is None or text.endswith(" "):
+        return None
+    if ": " in text or text.endswith(":") or not _resolves_to_text(text):
+        return f"'{text}'"
+    return text
+
+
+def _resolves_to_text(text: str) -> bool:
+    """Whether YAML reads ``text`` written plain as a string (PyYAML's own resolver)."""
+    first, space, _ = text.partition(" ")
+    if space and "-" not in first[1:]:
+        return True  # a number and its unit: only a timestamp (2001-12-14 21:59) has a space
+    if not _RESOLVER:
+        import yaml
+
+        _RESOLVER.append(yaml.resolver.Resolver())
+    return bool(_RESOLVER[0].resolve(_scalar_node(), text, (True, False))
+                == "tag:yaml.org,2002:str")
+
+
+def _scalar_node() -> Any:
+    import yaml
+
+    return yaml.ScalarNode
 
 
 def _plain_ascii(value: Any) -> bool:

@@ -93,8 +93,6 @@ class RosterSet:
     def draw(self) -> Iterator[tuple[str, str, str, dict[str, Any]]]:
         """Each variant in turn, problem by problem: its file name, YAML text, variant id
         and key entry (its problem, the file's SHA-256 and the solver's answers)."""
-        import dataclasses
-
         for problem, ranges, stem in self.problems:
             base = copy.deepcopy(problem.data)
             base.pop("vary", None)
@@ -122,7 +120,7 @@ class RosterSet:
                         f"the variant of student {' '.join(student.id.split())!r}.\n"
                         + variant_yaml(data, shared))
                 entry = {"problem": problem.id, "sha256": file_digest(text),
-                         "answers": {n: dataclasses.asdict(a)
+                         "answers": {n: _answer_entry(a)
                                      for n, a in solved[-1].answers.items()}}
                 yield f"{stem}/{self.names[student.id]}.yaml", text, variant_id, entry
 
@@ -142,6 +140,25 @@ class RosterSet:
             yield out.getvalue()
             out.seek(0)
             out.truncate()
+
+
+_PLAIN = (str, int, float, bool, type(None))
+
+
+def _answer_entry(answer: Any) -> dict[str, Any]:
+    """``dataclasses.asdict(answer)`` of a solver's answer, made directly where every field
+    is a plain value or a list of them (as it is: a tenth of drawing a variant otherwise)."""
+    import dataclasses
+
+    entry = {}
+    for name in answer.__dataclass_fields__:
+        value = getattr(answer, name)
+        if value.__class__ is list and all(v.__class__ in _PLAIN for v in value):
+            value = list(value)
+        elif value.__class__ not in _PLAIN:
+            return dataclasses.asdict(answer)
+        entry[name] = value
+    return entry
 
 
 def _keyed(problem: Any) -> list[str]:

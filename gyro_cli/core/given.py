@@ -11,6 +11,9 @@ from .params import MISSING_KEY
 if TYPE_CHECKING:
     from .body import Body
 
+#: particles as given (``particles:``): (m, x, y, z) in SI each
+Particles = tuple[tuple[float, float, float, float], ...]
+
 
 @record
 class Given:
@@ -20,7 +23,7 @@ class Given:
     Keys absent from the file but with a default in the kind's spec are present.
     """
 
-    values: dict[str, float | str]
+    values: dict[str, float | str | Particles]
     body: "Body | None" = None
     defaulted: set[str] = field(default_factory=set)
     #: a key stated another way (a diameter, an angle from the horizontal): the key
@@ -36,6 +39,7 @@ class Given:
         value = self.values[key]
         if isinstance(value, str):
             raise InputError(f"expected a quantity, got the word {value!r}", key=f"given.{key}")
+        assert not isinstance(value, tuple), f"{key} holds particles: read given.values"
         return value
 
     @overload

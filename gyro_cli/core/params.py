@@ -6,8 +6,12 @@ from __future__ import annotations
 import math
 import operator
 import re
+from typing import TYPE_CHECKING
 
 from .record import record
+
+if TYPE_CHECKING:
+    from .expr import Expr
 
 BOUNDS = ("[]", "[)", "(]", "()")
 
@@ -41,7 +45,7 @@ class Param:
     bounds: str = "[]"
     limits: tuple[str, str] | None = None
     reason: str = ""
-    symbol_tree: object = None  # a symbol that is not one name, as a tree (core.expr)
+    symbol_tree: Expr | None = None  # a symbol that is not one name, as a tree
     hemisphere: str = ""  # "NS" (a latitude) or "EW" (a longitude): "30 S" is -30 deg
     #: the kind cannot solve without this key: True refuses its absence with the message
     #: every missing key gets; a string is the refusal's own words

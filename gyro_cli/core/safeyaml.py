@@ -416,7 +416,7 @@ def load(text: str) -> tuple[Any, Any]:
             written = _mapping_values(node)
             data = _construct(loader, node)
         else:
-            written = ()
+            written = []
         # Building a mapping with a merge key (<<: *base) rewrites the node's pairs, the
         # merged ones first; give the node back the pairs as written, so that a key that
         # overrides a merged one is not taken for a key written twice.

@@ -130,7 +130,8 @@ def registry() -> Any:
         import pint
 
         def make(folder: str | None) -> Any:
-            ureg = pint.UnitRegistry(cache_folder=folder, on_redefinition="ignore")
+            ureg: pint.UnitRegistry = pint.UnitRegistry(cache_folder=folder,
+                                                        on_redefinition="ignore")
             # A textbook's "Hz" on a rotor is revolutions per second, not 1/s.
             ureg.define("hertz = revolution / second = Hz")
             return ureg
@@ -267,7 +268,8 @@ def tokenize(unit: str, text: Any = None, key: str = "") -> list[tuple[str, Any]
 
 def _names(unit: str) -> list[str]:
     """The words of a unit text, in order, in one pass (no checking)."""
-    words, word = [], []
+    words: list[str] = []
+    word: list[str] = []
     for ch in unit:
         if ch in _NAME_CHARS and (word or ch in _NAME_START):
             word.append(ch)
@@ -358,6 +360,7 @@ def _lookup(name: str, weight: bool | None) -> tuple[Any, str] | None:
         base = _lookup(power.group(1), weight) if power and not candidates else None
         if base is not None:
             # kg.m2, kg m2: a power written without its ^ (books print m2 for m^2)
+            assert power is not None, "a base is looked up for a power suffix only"
             found = base if base[0] == "refused" else \
                 (base[0] ** int(power.group(2)), f"{base[1]}^{power.group(2)}")
         elif not candidates and name not in ("°",):

@@ -81,6 +81,11 @@ class _PRINT:
     pickled step still knows it)."""
 
 
+#: _PRINT where a field typed str is given it: the properties below print it when read,
+#: which the checker cannot follow
+_LATER: str = _PRINT  # type: ignore[assignment]
+
+
 def _printed(name: str, printer) -> property:  # type: ignore[no-untyped-def]
     """The field ``name``, printed by ``printer(obj)`` when first read if it was set to
     _PRINT (a tree step's formula, a sentence's text, a title)."""
@@ -175,7 +180,7 @@ def prose_step(pieces: tuple) -> Step:
     """A line of words only, or of words and trees (`core.prose.Prose`)."""
     if len(pieces) == 1 and isinstance(pieces[0], str):
         return Step(text=pieces[0])
-    return Step(text=_PRINT, prose=Prose(tuple(pieces)))  # type: ignore[arg-type]
+    return Step(text=_LATER, prose=Prose(tuple(pieces)))
 
 
 class Work:
@@ -199,7 +204,7 @@ class Work:
         if len(pieces) == 1 and isinstance(pieces[0], str):
             self.sections.append(Section(pieces[0]))
         else:  # its title printed when read (gyro check never reads it)
-            self.sections.append(Section(_PRINT, prose=Prose(tuple(pieces))))  # type: ignore[arg-type]
+            self.sections.append(Section(_LATER, prose=Prose(tuple(pieces))))
         return self.sections[-1]
 
     def _current(self) -> Section:
@@ -243,7 +248,7 @@ class Work:
         prose = None
         if isinstance(note, tuple):  # a note of words and trees, as `text` takes them
             prose = Prose(note)
-            note = _PRINT  # type: ignore[assignment]  # printed when read
+            note = _LATER  # printed when read
         if formula is not None:
             if not isinstance(formula, Expr):
                 raise TypeError(f"the step {symbol}: a formula is a tree (core.expr), not "
@@ -267,7 +272,7 @@ class Work:
                 si = (value, SHOWN[unit][1])
                 value = value / SHOWN[unit][0]
             self._current().steps.append(Step(
-                symbol, _PRINT if state else "", _PRINT if substitute else "", value, unit,
+                symbol, _LATER if state else "", _LATER if substitute else "", value, unit,
                 ref, note, expr=tree, si=si, prose=prose, symbol_expr=symbol_expr))
             return value
         if self.overrides is not None and value is not None:
@@ -300,8 +305,11 @@ class Work:
     def answer(self, name: str, symbol: str | Expr, si_values: list, dimension: str | None,
                labels: list[str] | None = None) -> None:
         """An answer; its symbol is one name (``phidot``) or a tree (``abs(F)``)."""
-        tree = symbol if isinstance(symbol, Expr) else None
-        text = prose_text(symbol) if tree is not None else symbol
+        tree: Expr | None = None
+        if isinstance(symbol, Expr):
+            tree, text = symbol, prose_text(symbol)
+        else:
+            text = symbol
         self.answers[name] = Answer(name, text, list(si_values), dimension, list(labels or []),
                                     symbol_expr=tree)
 

@@ -181,7 +181,7 @@ def _matrix_entries() -> tuple[tuple, ...]:
     sep = ";  "
     entries = {name: names(" ".join(f"{name}_{e}" for e in ("pp", "pd", "dp", "dd")))
                for name in ("M", "C1", "K0", "K2")}
-    lines = []
+    lines: list[tuple] = []
     pp, pd, dp, dd = entries["M"]
     lines.append((rel(pp, "=", I_Txx), sep, rel(pd, "=", dp, "=", I_Alx + mu_ * I_Txz), sep,
                   rel(dd, "=", I_All + 2 * mu_ * I_Alz + mu_ ** 2 * I_Tzz)))
@@ -396,9 +396,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         for e in ev:
             work.text(rel(S_, "=", q(_eigen(e), "1/s", sig=12)))
         work.text(f"motion: {state}", *_MOTION[state])
-        a = [bike.polyval(speed, c) for c in coeffs]     # a_k at this speed
+        a_k = [bike.polyval(speed, c) for c in coeffs]     # a_k at this speed
         for e in ev:
-            residual = _char_value(a, e)
+            residual = _char_value(a_k, e)
             work.check(rel(S_, "=", q(_eigen(e), sig=6)), ": ",
                        rel(_RESIDUAL, "=", q(abs(residual), sig=2)))
         work.answer("eigenvalues_real", _RE_S, [float(e.real) for e in ev], "inverse_time")
@@ -417,9 +417,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     labels = [lab for lo, hi in stab.stable
               for lab in (("low", "high") if math.isfinite(hi) else ("low, no upper end",))]
     work.answer("stable_speeds", "v", ends, "speed", labels)
-    for name, a, dim in (("M", m.M, "inertia"), ("C1", m.C1, "mass_length"),
-                         ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
-        work.answer(name, name, [float(x) + 0.0 for x in a.ravel()], dim,
+    for key, values, dim in (("M", m.M, "inertia"), ("C1", m.C1, "mass_length"),
+                             ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
+        work.answer(key, key, [float(x) + 0.0 for x in values.ravel()], dim,
                     ["phi,phi", "phi,delta", "delta,phi", "delta,delta"])
 
 

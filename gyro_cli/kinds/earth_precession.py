@@ -90,7 +90,7 @@ def arcsec_per_year(rate: float) -> float:
 
 def _values(given: Given, work: Work) -> dict[str, float]:
     """The file's values, with the preset's filling every group the file leaves out."""
-    values = {k: v for k, v in given.values.items() if not isinstance(v, str)}
+    values = {k: v for k, v in given.values.items() if not isinstance(v, (str, tuple))}
     preset = given.word("preset")
     if preset is None:
         return values

@@ -356,7 +356,8 @@ def _angular_velocity(given: Given, find: frozenset[str], sequence: str, a2: flo
         return omega, (r1, r2, r3)
 
     missing = [k for k in omega_keys if k not in given]
-    omega = tuple(given.get(k, 0.0) for k in omega_keys)
+    given_x, given_y, given_z = (given.get(k, 0.0) for k in omega_keys)
+    omega = (given_x, given_y, given_z)
     rates = _inverse(sequence, a2, a3, omega, raise_singular=True)
     work.section(*_RATES_TITLE[sequence])
     if missing:

@@ -100,6 +100,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         omega_p = Sym("omega_p", 1.0 if rate is None else rate, "rad/s")
         C = work.step("C", J_ * omega * omega_p * sin(Num(0)), unit="N*m", substitute=False)
     else:
+        assert rate is not None, "only a roll leaves the rate unknown"
         C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")

@@ -319,7 +319,7 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
         work.text(*_NEITHER_GIVEN)
         return _AND_I
     I, J = body.I_pivot, body.J
-    slow = {}
+    slow: dict[float, float | None] = {}
     for degrees in SPREAD_ANGLES:
         theta = math.radians(degrees)
         if rate == "precession":
@@ -336,13 +336,14 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
         work.step(_AT_ANGLE[exact_root, degrees], value=root, unit="rad/s",
                   note="exact, Eq. 11.13" if root is not None else
                   "no steady precession: below the least spin (Eq. 11.21)")
-    exact = slow[90.0]
-    if slow[30.0] is None:
+    exact, at_30 = slow[90.0], slow[30.0]
+    assert exact is not None, "at 90 deg Eq. 11.13 is linear: one root for a non-zero rate"
+    if at_30 is None:
         return ("; for these data the exact " + name + " is ", q(exact, "rad/s"), " at ",
                 _ANGLE[90.0], " and there is none at ", _ANGLE[30.0], " (the spin is below the "
                 "least, Eq. 11.21)")
-    apart = abs(slow[30.0] - exact) / abs(exact)
-    return ("; for these data the exact " + name + " is ", q(slow[30.0], "rad/s"), " at ",
+    apart = abs(at_30 - exact) / abs(exact)
+    return ("; for these data the exact " + name + " is ", q(at_30, "rad/s"), " at ",
             _ANGLE[30.0], " and ", q(exact, "rad/s"), " at ", _ANGLE[90.0], ", ",
             _percent(apart, 2), "% apart")
 

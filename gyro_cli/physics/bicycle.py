@@ -41,7 +41,9 @@ from __future__ import annotations
 import cmath
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import SupportsIndex, overload
 
 # Table 1 of the paper, SI (lambda = pi/10 rad). g is the paper's 9.81 m/s^2.
 BENCHMARK: dict[str, float] = {
@@ -152,7 +154,7 @@ class Matrix2(tuple):
         return [x for row in self for x in row]
 
 
-class Spectrum(tuple):
+class Spectrum(tuple[complex, ...]):
     """Eigenvalues (complex), with .real and .imag: tuples of their real and imaginary parts."""
 
     __slots__ = ()
@@ -165,7 +167,9 @@ class Spectrum(tuple):
     def imag(self) -> tuple[float, ...]:
         return tuple(e.imag for e in self)
 
-    def __mul__(self, factor: float) -> "Spectrum":     # scaled: every eigenvalue times factor
+    # scaled: every eigenvalue times factor (SupportsIndex, the tuple's repeat count, is
+    # accepted for the signature of tuple.__mul__ and gets NotImplemented unless a number)
+    def __mul__(self, factor: complex | SupportsIndex) -> "Spectrum":
         if isinstance(factor, (int, float, complex)) and not isinstance(factor, bool):
             return Spectrum(e * factor for e in self)
         return NotImplemented
@@ -258,7 +262,7 @@ def polymul(a: list[float], b: list[float]) -> list[float]:
     return _trim(out)
 
 
-def polyval(x, c: list[float]):
+def polyval(x, c: Sequence[float]):
     """c[0] + c[1] x + ... by Horner's rule (x real or complex)."""
     value = c[-1] + x * 0
     for coefficient in reversed(c[:-1]):
@@ -387,6 +391,10 @@ def _start(n: int) -> tuple[tuple[complex, ...], tuple[tuple[int, tuple[int, ...
             tuple((i, tuple(j for j in range(n) if j != i)) for i in range(n)))
 
 
+@overload
+def _newton(x: float, c: list[float], d: list[float], steps: int = 4) -> float: ...
+@overload
+def _newton(x: complex, c: list[float], d: list[float], steps: int = 4) -> complex: ...
 def _newton(x: complex | float, c: list[float], d: list[float],
             steps: int = 4) -> complex | float:
     """Newton steps on c from x (complex or real; d = polyder(c)), kept while the residual
@@ -568,7 +576,7 @@ def _hurwitz_written_out(coeffs: tuple[tuple[float, ...], ...]) -> tuple[float, 
     return tuple(_trim([0.0, 0.0, h2, 0.0, h4, 0.0, h6]))
 
 
-def _positive_roots(poly: list[float]) -> list[float]:
+def _positive_roots(poly: Sequence[float]) -> list[float]:
     """Real roots v > 0 of a polynomial in v that is even in v: solved in w = v^2.
 
     Roots of the polynomial in w, kept where real and positive, then polished by

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TypedDict
 
 STEADY_AMPLITUDE = 1e-9    # rad: a theta range below this is no nutation ("steady")
 CUSP_TOLERANCE = 1e-10     # |phidot| at a limit, relative to the larger one: a cusp
@@ -183,7 +184,8 @@ def _quadratic_roots(a: float, b: float, c: float) -> tuple[float, float]:
     q = -0.5 * (b + math.copysign(math.sqrt(disc), b))
     if q == 0:
         return 0.0, 0.0
-    return tuple(sorted((q / a, c / q)))
+    low, high = sorted((q / a, c / q))
+    return low, high
 
 
 def d_roots(top: Top, start: Start) -> tuple[float, float, float]:
@@ -196,7 +198,8 @@ def _d_roots(c: tuple[float, float, float, float], one_minus: float,
              one_plus: float) -> tuple[float, float, float]:
     """d_roots of the shifted cubic ``c``, with 1 -+ u0 of the start."""
     if c[0] == 0:                     # u0 is a root: divide it out, Eq. 11.23
-        return tuple(sorted((0.0,) + _quadratic_roots(c[3], c[2], c[1])))
+        r1, r2, r3 = sorted((0.0,) + _quadratic_roots(c[3], c[2], c[1]))
+        return r1, r2, r3
     # f(-1) <= 0 < f(u0) and f(1) <= 0: one root on each side of u0, the third above 1
     d1 = _bracketed_root(c, -one_plus, 0.0)
     d2 = _bracketed_root(c, 0.0, one_minus)
@@ -205,6 +208,21 @@ def _d_roots(c: tuple[float, float, float, float], one_minus: float,
 
 
 # ---- the motion ------------------------------------------------------------------
+
+class _Common(TypedDict):
+    """The fields of a Nutation that every motion fills alike."""
+
+    a: float
+    alpha: float
+    beta: float
+    gamma: float
+    P1: float
+    P2: float
+    energy: float
+    one_minus_u0: float
+    one_plus_u0: float
+    rising: bool
+
 
 def analyse(top: Top, start: Start) -> Nutation:
     """Everything about the motion from the initial state (Eqs. 11.14-11.26), exact."""
@@ -220,10 +238,10 @@ def analyse(top: Top, start: Start) -> Nutation:
     theta_of = _theta_of
     theta_max = theta_of(one_minus0 - d1, one_plus0 + d1)
     theta_min = theta_of(one_minus0 - d2, one_plus0 + d2)
-    common = dict(a=k["a"], alpha=k["alpha"], beta=k["beta"], gamma=k["gamma"], P1=k["P1"],
-                  P2=k["P2"], energy=k["energy"], one_minus_u0=one_minus0,
-                  one_plus_u0=one_plus0, rising=-s0 * start.theta_rate0 > 0 or
-                  (start.theta_rate0 == 0 and d1 == 0.0 and d2 > 0))
+    common = _Common(a=k["a"], alpha=k["alpha"], beta=k["beta"], gamma=k["gamma"], P1=k["P1"],
+                     P2=k["P2"], energy=k["energy"], one_minus_u0=one_minus0,
+                     one_plus_u0=one_plus0, rising=-s0 * start.theta_rate0 > 0 or
+                     (start.theta_rate0 == 0 and d1 == 0.0 and d2 > 0))
 
     if vertical and start.theta_rate0 == 0.0:
         return _sleeping(top, start, k, roots, common)
@@ -242,14 +260,14 @@ def analyse(top: Top, start: Start) -> Nutation:
                         nutation_period=period, mean_precession=mean,
                         max_precession=max(rates, key=abs), min_precession=min(rates, key=abs),
                         motion="steady", d_roots=(d1, d2, d3),
-                        limit_precession=tuple(rates), K=K, **common)
+                        limit_precession=(rates[0], rates[1]), K=K, **common)
     mean = _mean_precession(k, B, d1, d2, d3, one_minus0, one_plus0, K)
     big = max(range(2), key=lambda i: abs(rates[i]))
     return Nutation(u_roots=roots, theta_min=theta_min, theta_max=theta_max,
                     nutation_period=period, mean_precession=mean,
                     max_precession=rates[big], min_precession=rates[1 - big],
                     motion=classify(*rates), d_roots=(d1, d2, d3),
-                    limit_precession=tuple(rates), K=K, **common)
+                    limit_precession=(rates[0], rates[1]), K=K, **common)
 
 
 def classify(phidot_at_u1: float, phidot_at_u2: float) -> str:
@@ -318,7 +336,7 @@ def complete_K(d1: float, d2: float, d3: float) -> float:
     return K_of((d3 - d2) / (d3 - d1))
 
 
-def _sleeping(top: Top, start: Start, k: dict, roots, common: dict) -> Nutation:
+def _sleeping(top: Top, start: Start, k: dict, roots, common: _Common) -> Nutation:
     """Axis on the vertical (theta0 = 0 or 180 deg, thetadot0 = 0): the sleeping top.
 
     Upright it is stable when J^2 omega_z^2 > 4 I m g l (Eq. 11.21 with theta0 = 0), i.e.

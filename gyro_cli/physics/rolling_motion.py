@@ -116,7 +116,8 @@ def integrate(d: Disk, y0: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, float
     def lifts(_t, y):
         return normal_force(d, y)
 
-    fallen.terminal = lifts.terminal = True
+    # solve_ivp reads an event's terminal from a function attribute, which mypy does not model
+    fallen.terminal = lifts.terminal = True  # type: ignore[attr-defined]
     sol = solve_ivp(rhs(d), (float(t[0]), float(t[-1])), y0, method="DOP853", t_eval=t,
                     rtol=1e-10, atol=1e-12, events=[fallen, lifts])
     if sol.status == -1:

@@ -30,8 +30,9 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Callable, Protocol
+from typing import Any, Callable, Protocol
 
 import numpy as np
 
@@ -270,13 +271,13 @@ def as_params(top: TopLike, start: StartLike) -> Params:
                   float(getattr(start, "theta_rate0", 0.0)))
 
 
-def _slope(y: list[float]) -> float:
+def _slope(y: Sequence[float] | np.ndarray) -> float:
     """sin(theta) thetadot = K_y omega_x - K_x omega_y (its sign is thetadot's)."""
     w, x, yy, z, ox, oy = y[:6]
     return 2.0 * ((yy * z + w * x) * ox - (x * z - w * yy) * oy)
 
 
-def _phi(y: list[float]) -> float:
+def _phi(y: Sequence[float] | np.ndarray) -> float:
     """phi from the axis in fixed axes (sin th sin phi, -sin th cos phi, cos th)."""
     w, x, yy, z = y[:4]
     return math.atan2(x * z + w * yy, w * x - yy * z)
@@ -337,7 +338,9 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     atol = rtol * 1e-2 * np.array([1.0] * 4 + [rate_scale] * 3)
     solver = DOP853(make_rhs(p), 0.0, np.array(y0), t_end, rtol=rtol, atol=atol)
     t_out = np.linspace(0.0, t_end, samples)
-    node_t, node_y, pieces, brackets = [0.0], [y0], [], []
+    node_t, node_y = [0.0], [y0]
+    pieces: list[Any] = []                   # scipy's step dense outputs, kept
+    brackets: list[tuple[int, bool]] = []    # (piece, theta was decreasing: a minimum)
     j, next_report = 0, 0.01
     slope_old, phi_old = _slope(y0), _phi(y0)
     while solver.status == "running":
@@ -384,19 +387,20 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     theta_nodes = np.arctan2(np.hypot(kx, ky), kz)
     amplitude = float(theta_nodes.max() - theta_nodes.min())
     notes: list[str] = []
-    t_min, t_max = [], []
+    mins: list[float] = []
+    maxs: list[float] = []
     if amplitude > STEADY_AMPLITUDE:
         for k, decreasing in brackets:
             piece = pieces[k]
             root = brentq(lambda t: _slope(_piece_at(piece, t)), piece.t_old, piece.t,
                           xtol=1e-15 * max(1.0, abs(piece.t)), rtol=4 * np.finfo(float).eps)
-            (t_min if decreasing else t_max).append(root)
+            (mins if decreasing else maxs).append(root)
     if p.theta_rate0 == 0.0 and amplitude > STEADY_AMPLITUDE:
         # released with thetadot = 0: t = 0 is itself an extremum (no sign change brackets
         # it), a minimum if theta first grows; theta is monotonic up to the first extremum
         moved = theta_nodes[np.abs(theta_nodes - theta_nodes[0]) > 0.5 * STEADY_AMPLITUDE]
-        (t_min if moved[0] > theta_nodes[0] else t_max).insert(0, 0.0)
-    t_min, t_max = np.array(t_min), np.array(t_max)
+        (mins if moved[0] > theta_nodes[0] else maxs).insert(0, 0.0)
+    t_min, t_max = np.array(mins), np.array(maxs)
 
     at_ext = {name: (euler_angles(p, dense(ts)) if len(ts) else
                      {"theta": np.array([]), "phidot": np.array([])})

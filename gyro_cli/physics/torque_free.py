@@ -298,6 +298,7 @@ def solve_motion(J: float, I: float, known: dict[str, float]) -> FreeMotion:
         beta = math.asin(math.sqrt(s2))
         return FreeMotion(J, I, omega * math.cos(beta), beta)
     # axial rate (given or from spin) with H: cos(theta) = J omega_z / H
+    assert axial is not None, "two rates without omega or an axial rate were refused above"
     cos_theta = J * axial / H
     if not cos_theta < 1:
         if by == "precession":

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from ..core.record import field, record
 from typing import Any
 
@@ -17,7 +18,7 @@ from ..core.alternatives import Alternative, alternatives_of, converted
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
 from ..core.params import _OPS, normal_word, read_word, safe_choices, split_hemisphere
-from ..core.given import Given
+from ..core.given import Given, Particles
 from ..core.spec import Kind, Param
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
@@ -318,6 +319,10 @@ def params_by_name(kind: Kind) -> dict[str, Param]:
     return _facts(kind).params
 
 
+#: how a quantity is read: its param, its key in messages, whether lb means lbf, and its
+#: declared limits as (test, bound) pairs (None: the param's own limits_broken decides)
+_Reading = tuple[Param, str, bool, "tuple[tuple[Callable[[Any, Any], Any], float], ...] | None"]
+
 class _KindFacts:
     """What reading a file of one kind looks up, made once per kind: its params by name,
     how each quantity is read (its key in messages, whether lb means lbf, its declared
@@ -328,7 +333,7 @@ class _KindFacts:
     def __init__(self, kind: Kind) -> None:
         self.kind = kind
         self.params = {p.name: p for p in params_of(kind)}
-        self.reading = {name: (p, f"given.{name}", name == "weight",
+        self.reading: dict[str, _Reading] = {name: (p, f"given.{name}", name == "weight",
                                tuple((_OPS[op], x) for op, x in p.limits_declared()))
                         for name, p in self.params.items()}
         self.defaults = tuple(p for p in kind.params if p.default is not None)
@@ -349,7 +354,7 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
     """Parse every given quantity into SI; apply the kind's defaults."""
     facts = _facts(kind)
     params = facts.params
-    values: dict[str, float | str] = {}
+    values: dict[str, float | str | Particles] = {}
     quantities: dict[str, Any] = {}
     derived: dict[str, tuple[str, float]] = {}
     for key, text in raw.items():
@@ -400,7 +405,7 @@ def _parse_alternative(facts: _KindFacts, alternative: Alternative, raw: dict,
         raise InputError(f"give {target.name} one way: {alternative.key} and {others[0]} "
                          f"both state it ({alternative.reading})", key=key)
     text = raw[alternative.key]
-    si, quantity = _parse_param(alternative.param_for(target), text)
+    si, quantity = _parse_quantity(alternative.param_for(target), text)
     value = converted(alternative, si)
     if target.limits_broken(value):
         unit = units.si_text(target.dimension)
@@ -432,7 +437,7 @@ def _hemisphere_once(params: dict[str, Param], raw: dict, values: dict) -> None:
 
 
 def _parse_param(param: Param, text: Any,
-                 facts: _KindFacts | None = None) -> tuple[float | str, Any]:
+                 facts: _KindFacts | None = None) -> tuple[float | str | Particles, Any]:
     dimension = param.dimension
     if dimension == "word":
         key = f"given.{param.name}"
@@ -447,7 +452,14 @@ def _parse_param(param: Param, text: Any,
         return word, text
     if dimension == "particles":
         return parse_particles(text, f"given.{param.name}"), text
-    reading = facts.reading.get(param.name) if facts is not None else None
+    return _parse_quantity(param, text, facts)
+
+
+def _parse_quantity(param: Param, text: Any,
+                    facts: _KindFacts | None = None) -> tuple[float, Any]:
+    """A quantity given for ``param`` (not a word or particles): its SI value and reading."""
+    dimension = param.dimension
+    reading: _Reading | None = facts.reading.get(param.name) if facts is not None else None
     if reading is None or reading[0] is not param:
         reading = (param, f"given.{param.name}", param.name == "weight", None)
     _, key, weight, limits = reading
@@ -549,14 +561,14 @@ PARTICLE_KEYS = ("mass", "x", "y", "z")
 MAX_PARTICLES = 10_000
 
 
-def parse_particles(raw: Any, key: str) -> tuple[tuple[float, float, float, float], ...]:
+def parse_particles(raw: Any, key: str) -> Particles:
     """A list of {mass, x, y, z} mappings -> ((m, x, y, z) in SI, ...); positive masses."""
     if not isinstance(raw, list) or not raw:
         raise InputError("expected a list of particles, each {mass: .., x: .., y: .., z: ..}, "
                          f"got a {_type_name(raw)}", key=key)
     if len(raw) > MAX_PARTICLES:
         raise InputError(f"{len(raw)} particles; at most {MAX_PARTICLES} are accepted", key=key)
-    out = []
+    out: list[tuple[float, float, float, float]] = []
     for i, item in enumerate(raw):
         where = f"{key}[{i}]"
         if not isinstance(item, dict):
@@ -575,9 +587,9 @@ def parse_particles(raw: Any, key: str) -> tuple[tuple[float, float, float, floa
         if m <= 0:
             raise InputError(f"a particle's mass must be positive, got {item['mass']!r}",
                              key=f"{where}.mass")
-        xyz = [representable(units.parse(item[n], "length", f"{where}.{n}")[0], item[n],
-                             "length", f"{where}.{n}") for n in ("x", "y", "z")]
-        out.append((m, *xyz))
+        x, y, z = [representable(units.parse(item[n], "length", f"{where}.{n}")[0], item[n],
+                                 "length", f"{where}.{n}") for n in ("x", "y", "z")]
+        out.append((m, x, y, z))
     return tuple(out)
 
 

@@ -148,6 +148,7 @@ def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Resul
             values, unit = list(answer.si_values), None
         else:
             unit = unit or answer.si_unit
+            assert unit is not None, f"{name} has a dimension but no SI unit"
             values = [units.convert(v, answer.dimension, unit) for v in answer.si_values]
             if not all(math.isfinite(v) for v in values):
                 big = max(answer.si_values, key=abs)
@@ -331,7 +332,7 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
             lines.append(GivenLine(key, param.symbol, str(quantity) if isinstance(quantity, str)
                                    else value, value, ""))
             continue
-        if param.dimension == "particles":
+        if isinstance(value, tuple):  # particles, the one given that is not a number
             lines.append(GivenLine(key, param.symbol, f"{len(value)} particles",
                                    "listed under Inertia", ""))
             continue
