@@ -74,7 +74,7 @@ def template(kind_name: str) -> str:
            _line("notes:", "optional: lines printed with the worked answer; maths in "
                  "Unicode (ψ̇, θ₀, √, ω_z, m²)"),
            "  - Spin is the rate relative to the precessing frame (ψ̇)."
-           if kind.param("spin") and "precessing frame" in kind.param("spin").doc
+           if "precessing frame" in getattr(kind.param("spin"), "doc", "")
            else "  - State here what the problem assumes.",
            "",
            _line("given:", "required: the data, each with its unit")]
@@ -297,7 +297,7 @@ def _described(p: Param, dimension: str = "") -> str:
 
 def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[str, Any]:
     params = list(kind.params) + (list(BODY_PARAMS) if kind.uses_body else [])
-    given = {}
+    given: dict[str, Any] = {}
     for p in params:
         if p.dimension == "word":
             words: list = list(p.choices)
@@ -341,9 +341,9 @@ def _kind_properties(kind: Kind, quantity: dict, tolerance_one: dict) -> dict[st
     find = {a.name: ({"type": "null"} if a.dimension is None else
                      {"type": ["string", "null"], "description": f"unit for {a.doc}"})
             for a in kind.answers}
-    expected = {}
+    expected: dict[str, Any] = {}
     for a in kind.answers:
-        one = ({"type": "string"} if a.dimension is None else
+        one: dict[str, Any] = ({"type": "string"} if a.dimension is None else
                {"oneOf": [{"type": "number"}, quantity]} if a.dimension == "dimensionless" else
                quantity)
         expected[a.name] = {"oneOf": [one, {"type": "array", "minItems": 1, "items": one}],
@@ -514,7 +514,7 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
                              "variant file(s) already there)", file=clash[0])
-    write_set_in(out_dir, targets, force=force)
+    write_set_in(out_dir, list[tuple[str, str | bytes]](targets), force=force)
     return [target for target, _ in targets]
 
 

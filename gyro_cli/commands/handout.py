@@ -87,14 +87,14 @@ def sheets(paths: list[str], roster: str | None = None, assignment: str | None =
         made, table, _ = roster_variants(files, roster, seed)
         texts = dict(made)
         out = {}
-        for row in csv.DictReader(io.StringIO(table)):
+        for line in csv.DictReader(io.StringIO(table)):
             from ..core.csvsafe import plain_cell
 
-            sid = plain_cell(row["student"])
+            sid = plain_cell(line["student"])
             sheet = out.setdefault(sid, Sheet(sid, _name(students[sid].extra, sid)))
-            data, lines = parse_yaml(texts[row["file"]], row["file"])
-            sheet.problems.append(build(row["file"], data, lines))
-            sheet.variants.append(plain_cell(row["problem"]))
+            data, lines = parse_yaml(texts[line["file"]], line["file"])
+            sheet.problems.append(build(line["file"], data, lines))
+            sheet.variants.append(plain_cell(line["problem"]))
         return list(out.values())
     problems = _load_all(paths)
     return [Sheet(None, "", problems, [p.id for p in problems])]
@@ -227,10 +227,11 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
                          file=out)
     todo = sheets(paths, roster, assignment, seed)
     per_student = todo[0].student is not None
-    names = file_names([s.student for s in todo]) if per_student else {}
+    names = file_names([s.student for s in todo if s.student is not None]) \
+        if per_student else {}
     targets: list[tuple[str, Any]] = []
     for sheet in todo:
-        target = f"{stem}-{names[sheet.student]}{ext}" if per_student else out
+        target = f"{stem}-{names[sheet.student]}{ext}" if sheet.student is not None else out
         targets.append((target, sheet))
     if per_student:
         targets.append((f"{stem}-key.csv", None))

@@ -89,7 +89,7 @@ def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: in
                        err=True)
             click.echo(written[-1])
             return
-        if len(files) != 1:
+        if len(files) != 1 or count is None:
             fail("--count varies one FILE; give --roster for several")
         written = write_variants(files[0], count, seed, out_dir, force)
     except InputError as err:

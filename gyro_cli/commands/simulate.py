@@ -283,7 +283,7 @@ def text(report: dict, periods: float) -> str:
                      f"{diff:>13}{rel:>11}")
     drift = report["drift"]
     inv = report["invariants"]
-    integrals = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
+    integrals: tuple[tuple[str, str, float, str], ...] = (("energy T + V, Eqs. 11.10-11.11", f"{num(inv['energy'], 10)} J",
              drift["energy"], "T0 + m g l"),
             ("  the same, its varying part", "", drift["energy_varying"],
              "max I (w_x^2 + w_y^2)/2 + m g l"),
@@ -293,8 +293,8 @@ def text(report: dict, periods: float) -> str:
              "|H| (J omega_z' = 0 exactly)"),
             ("quaternion norm |q|", "1", drift["quaternion_norm"], "not renormalised"))
     lines += ["", f"  {'integral of the motion':<34}{'at t = 0':>24}{'max drift':>11}  relative to"]
-    for label, value, d, scale in integrals:
-        lines.append(f"  {label:<34}{value:>24}{d:>11.1e}  {scale}")
+    for label, value, d, against in integrals:
+        lines.append(f"  {label:<34}{value:>24}{d:>11.1e}  {against}")
     lines.append(f"  theta range over the run: {math.degrees(report['theta_range']):.6g} deg")
     for note in report["notes"]:
         lines.append(f"Note: {note}")
