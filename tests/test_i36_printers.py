@@ -1,0 +1,98 @@
+"""Issue 36, items 1 and 2: one printer base, shared typesetting decisions, one way to
+map a tree, one document walker and a registry of output formats."""
+
+from __future__ import annotations
+
+import inspect
+import re
+
+from gyro_cli.core import expr as E
+from gyro_cli.core import prose as P
+
+
+def test_item01_every_printer_subclasses_the_one_printer_base():
+    from gyro_cli.render import exprnodes, mathml, mathprint
+
+    printers = [E.TextPrinter, E.PythonPrinter, P.ProseText, exprnodes.NodePrinter,
+                mathprint.LatexPrinter, mathprint.TextPrinter, mathml.MathMLPrinter]
+    for printer in printers:
+        assert issubclass(printer, E.Printer), printer
+
+
+def test_item01_latex_and_mathml_share_every_decision():
+    """The two typesetting printers only spell: brackets, signs, fractions, products,
+    functions, groups and relations are decided once, in their common base."""
+    from gyro_cli.render.mathml import MathMLPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, TypesetPrinter
+
+    shared = ("_print_Neg", "_print_BinOp", "_print_Call", "_print_Group", "_print_Rel",
+              "_print_Num", "_print_Sym", "_print_Quantity", "_print_Prime", "_print_Text")
+    for name in shared:
+        assert name in vars(TypesetPrinter), name
+        for printer in (LatexPrinter, MathMLPrinter):
+            assert name not in vars(printer), (printer.__name__, name)
+
+
+def test_item01_one_table_per_convention_for_both_formats():
+    from gyro_cli.render import conventions, mathml, mathprint
+
+    assert set(mathprint.RELATIONS_TEX) == set(mathml.RELATIONS) == set(conventions.RELATIONS)
+    assert set(mathprint.SUM_TEX) == set(mathml.SUMS) == set(conventions.SIGNS)
+    assert set(mathprint.FUNCTION_TEX) == set(conventions.FUNCTIONS)
+    for name in ("split_symbol", "dotted", "tokens", "GREEK"):
+        assert not hasattr(mathprint, name) or getattr(mathprint, name) is \
+            getattr(conventions, name), name
+        assert not hasattr(mathml, name) or getattr(mathml, name) is \
+            getattr(conventions, name), name
+
+
+def _every_node(x: E.Sym) -> list[E.Expr]:
+    """One tree of each class that holds maths, each with ``x`` inside."""
+    y = E.Sym("y", 2.0, "m")
+    return [x, E.Let(E.Sym("D", 1.0), x * y), -x, x + y, x - y, x * y, x / y, x ** 2,
+            E.sin(x), E.Chain(x * 1, x), E.SumOf(x * y, (x, y)),
+            P.rel(x, "=", y), P.cross(x, y), P.dot(x, y), P.fn("f", x), P.total(x),
+            P.signed("+-", x), P.mat((x, y)), P.integral(0, x, y), P.bracket(x, y),
+            P.pm(y, x), P.words("(slow)", x, x), P.prime(x, 2)]
+
+
+def test_item01_mapping_a_tree_is_one_generic_walk():
+    """Every node exposes its children and is rebuilt from them: mapping the symbols
+    reaches a symbol inside any node (a `Let`'s own symbol too)."""
+    x = E.Sym("zz", 1.0, "m")
+    for tree in _every_node(x):
+        seen: list[str] = []
+
+        def change(node: E.Expr) -> E.Expr | None:
+            if isinstance(node, E.Sym):
+                seen.append(node.name)
+                return E.Sym(node.name + "_new", node.si, node.unit)
+            return None
+
+        mapped = E.map_tree(tree, change)
+        assert "zz" in seen, type(tree).__name__
+        assert type(mapped) is type(tree)
+        if isinstance(mapped, E.SumOf):  # its formula names the symbols: the terms change
+            mapped = mapped.expanded()
+        text = P.text(mapped)
+        assert "zz_new" in text and not re.search(r"\bzz\b", text), text
+
+
+def test_item01_map_values_converts_quantities_inside_any_node():
+    q = P.q(1.0, "m")
+    for tree in _every_node(E.Sym("x", 1.0, "m")):
+        if isinstance(tree, E.Chain):  # a step's whole tree, never inside a sentence
+            continue
+        mapped = P.map_values(P.rel(tree, "=", q), lambda s: s,
+                              lambda v: P.Quantity(v.si * 2, "ft"))
+        assert P.text(mapped).endswith("= 2.000 ft"), P.text(mapped)
+
+
+def test_item01_no_typesetting_node_for_text_already_set():
+    from gyro_cli.render import mathtree
+
+    assert not hasattr(mathtree, "Tex")
+    for module in ("mathprint", "mathml", "mathtree"):
+        source = inspect.getsource(__import__(f"gyro_cli.render.{module}",
+                                              fromlist=["x"]))
+        assert "parse" not in source.replace("sparse", ""), module
