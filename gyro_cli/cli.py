@@ -16,7 +16,7 @@ import click
 from . import __version__
 from .core.errors import InputError, internal_message, terminal_text
 
-FORMATS = ("text", "json", "markdown", "latex", "html")
+from .render.formats import NAMES as FORMATS
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
 
@@ -148,20 +148,6 @@ def _outputs_apart(inputs: list[str] | tuple[str, ...],
                 fail(err)
 
 
-def _rendered(result, fmt: str, level: int = 2) -> str:
-    """One solved problem (an api.Result) as the text, JSON, Markdown or LaTeX that solve
-    prints (for html: its article, put on one page at the end)."""
-    if fmt == "html":
-        return result.html(level=level)
-    if fmt == "json":
-        return result.to_json() + "\n"
-    if fmt == "markdown":
-        return result.markdown()
-    if fmt == "latex":
-        return result.latex()
-    return result.text()
-
-
 @main.command()
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
@@ -191,8 +177,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     FILES may also be directories (every *.yaml and *.yml in them, as for
     `gyro check`) or quoted globs.
     """
+    from .api import document as compose
     from .api import solve_file as solve_problem
-    from .render import report
+    from .render import formats
     from .solving.paths import problem_files
 
     files, missing = problem_files(files)
@@ -207,7 +194,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         fail("--animate goes with --format html (an animation file alone: gyro simulate "
              "FILE --animate OUT)")
     bad, crashed = len(missing), 0
-    document, scripts = [], []
+    output = formats.get(fmt)
+    composed = output.composes(standalone)  # one document of every file, at the end
+    done, pieces, scripts = [], [], []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
@@ -219,7 +208,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                 text = result.html(level=level, animation=motion)
                 scripts += [player_script(result.animation_id)] if motion else []
             else:
-                text = None if standalone else _rendered(result, fmt, level)
+                text = None if standalone else result.render(fmt, level)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -228,16 +217,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             internal(path, err)
             crashed += 1
             continue
-        if standalone:
-            document.append(result.solved)
-        elif fmt == "html":
-            document.append((result.solved, text))
+        if composed:
+            done.append(result)
+            pieces.append(text)
         else:
-            if i and fmt in ("markdown", "latex"):
-                text = "\n" + text
-            elif i and fmt == "text":
-                text = "\n" + "=" * report.WIDTH + "\n\n" + text
-            click.echo(text, nl=False)
+            click.echo((output.separator if i else "") + (text or ""), nl=False)
         if plot_file:  # after the worked answer, so a refused plot does not hide it
             from .render.plot import plot_result
 
@@ -246,15 +230,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
-    if document and fmt == "html":
-        from .render import html
-
-        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document],
-                             scripts=scripts), nl=False)
-    elif document:
-        from .render import writeup
-
-        click.echo(writeup.standalone(document), nl=False)
+    if done:
+        click.echo(compose(done, fmt, standalone=standalone, pieces=pieces, scripts=scripts),
+                   nl=False)
     if crashed:
         sys.exit(INTERNAL)
     if bad:

@@ -96,3 +96,30 @@ def test_item01_no_typesetting_node_for_text_already_set():
         source = inspect.getsource(__import__(f"gyro_cli.render.{module}",
                                               fromlist=["x"]))
         assert "parse" not in source.replace("sparse", ""), module
+
+
+ROOT = __import__("pathlib").Path(__file__).resolve().parents[1]
+TWO = [str(ROOT / "problems" / "11_3.yaml"), str(ROOT / "problems" / "11_1.yaml")]
+
+
+def test_item02_cli_and_api_read_one_registry_of_formats():
+    """`gyro solve --format` offers exactly the registry's formats, and prints what the API
+    composes from the same registry (a page, a standalone document, files one after
+    another)."""
+    from click.testing import CliRunner
+
+    from gyro_cli import api
+    from gyro_cli.cli import main, solve
+    from gyro_cli.render import formats
+
+    option = next(p for p in solve.params if p.name == "fmt")
+    assert tuple(option.type.choices) == formats.NAMES == api.FORMATS
+    results = [api.solve_file(path) for path in TWO]
+    for fmt in formats.NAMES:
+        out = CliRunner().invoke(main, ["solve", *TWO, "--format", fmt])
+        assert out.exit_code == 0, out.output
+        assert out.stdout == api.document(results, fmt), fmt
+        assert results[0].render(fmt) == formats.get(fmt).one(results[0], 2)
+    out = CliRunner().invoke(main, ["solve", *TWO, "--format", "latex", "--standalone"])
+    assert out.stdout == api.document(results, "latex", standalone=True)
+    assert api.document(results[:1], "html") == results[0].html(page=True)

@@ -22,7 +22,7 @@ from __future__ import annotations
 import functools
 import re
 from html import escape as _escape
-from typing import Callable, TypeVar
+from typing import Any, Callable, Sequence, TypeVar
 
 from ..core.work import num
 from ..solving.solve import Result
@@ -31,6 +31,7 @@ from .mathprint import text as plain_text
 from .mathml import MathMLPrinter, math_element
 from .mathtree import BinOp, Node, Num, Quantity, Rel
 from .exprnodes import prose_nodes, symbol_node
+from .formats import Format
 from .writeup import _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, keys_of, width
 
 _T = TypeVar("_T")
@@ -586,3 +587,23 @@ def check_body(run, results: dict[str, Result] | None = None, level: int = 2) ->
         body.append(_heading(level, "Worked answers"))
         body += [worked_answer(r, level=level + 1) for r in results.values()]
     return "\n".join(body)
+
+
+class _Html(Format):
+    """Every file's worked answer on one self-contained page."""
+
+    name = "html"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return worked_answer(result.solved, level=level)
+
+    def composes(self, standalone: bool) -> bool:
+        return True
+
+    def document(self, results: Sequence[Any], pieces: Sequence[str | None],
+                 standalone: bool = False, scripts: Sequence[str] = ()) -> str:
+        articles = None if any(p is None for p in pieces) else [str(p) for p in pieces]
+        return page([r.solved for r in results], articles=articles, scripts=list(scripts))
+
+
+HTML = _Html()

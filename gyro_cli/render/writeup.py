@@ -20,11 +20,12 @@ from __future__ import annotations
 import re
 from contextlib import contextmanager
 from contextvars import ContextVar
-from typing import Iterator
+from typing import Any, Iterator, Sequence
 
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
+from .formats import Format
 from .exprnodes import formula_node, prose_nodes, substitution_node, symbol_node
 from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text, Tuple
@@ -571,3 +572,36 @@ def standalone(results: list[Result], title: str = "Worked solutions") -> str:
         body.append(latex(result, level="section"))
     body.append("\\end{document}")
     return "\n".join(body) + "\n"
+
+
+standalone_document = standalone  # a name the format's ``standalone`` flag does not hide
+
+
+class _Markdown(Format):
+    name = "markdown"
+    separator = "\n"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return markdown(result.solved)
+
+
+class _Latex(Format):
+    """A fragment per file, or with ``standalone`` one document of every file."""
+
+    name = "latex"
+    separator = "\n"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return latex(result.solved)
+
+    def composes(self, standalone: bool) -> bool:
+        return standalone
+
+    def document(self, results: Sequence[Any], pieces: Sequence[str | None],
+                 standalone: bool = False, scripts: Sequence[str] = ()) -> str:
+        if standalone:
+            return standalone_document([r.solved for r in results])
+        return super().document(results, pieces)
+
+
+MARKDOWN, LATEX = _Markdown(), _Latex()
