@@ -16,6 +16,7 @@ import click
 from . import __version__
 from .core.errors import InputError, internal_message, terminal_text
 
+from .render.formats import HELP as FORMAT_HELP
 from .render.formats import NAMES as FORMATS
 INTERNAL = 3  # exit code: gyro failed on a file (a bug), not the input
 
@@ -151,9 +152,7 @@ def _outputs_apart(inputs: list[str] | tuple[str, ...],
 @main.command()
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
-              help="text: the worked answer; json: one JSON object per file, one per line; "
-                   "markdown, latex: a write-up for a solution sheet; html: one self-contained "
-                   "page of all FILES (MathML formulas, inline pictures).")
+              help=FORMAT_HELP)
 @click.option("--plot", "plot_file", metavar="FILE",
               help="released_top: also draw the axis's path, theta(t) and phidot(t) to FILE "
                    "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
@@ -196,7 +195,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     bad, crashed = len(missing), 0
     output = formats.get(fmt)
     composed = output.composes(standalone)  # one document of every file, at the end
-    done, pieces, scripts = [], [], []
+    done: list = []
+    pieces: list[str | None] = []
+    scripts: list[str] = []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
@@ -205,7 +206,7 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                 from .render.animate import player_script
 
                 motion = result.animation_html()
-                text = result.html(level=level, animation=motion)
+                text: str | None = result.html(level=level, animation=motion)
                 scripts += [player_script(result.animation_id)] if motion else []
             else:
                 text = None if standalone else result.render(fmt, level)

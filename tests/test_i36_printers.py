@@ -123,3 +123,61 @@ def test_item02_cli_and_api_read_one_registry_of_formats():
     out = CliRunner().invoke(main, ["solve", *TWO, "--format", "latex", "--standalone"])
     assert out.stdout == api.document(results, "latex", standalone=True)
     assert api.document(results[:1], "html") == results[0].html(page=True)
+
+
+def test_item02_rendering_is_reentrant_8_threads_equal_serial():
+    """Every format rendered by 8 threads at once, problems of different kinds (their
+    file's keys written as words differ) and unit systems: each output as rendered alone."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from gyro_cli import api
+    from gyro_cli.render import formats
+
+    paths = sorted((ROOT / "problems").glob("*.yaml"))[::6]
+    results = [api.solve_file(str(p), units=u) for p in paths for u in (None, "us")]
+    for r in results:
+        r.solved  # the US conversion made once, before the threads
+    jobs = [(r, fmt) for r in results for fmt in formats.NAMES]
+    serial = [r.render(fmt) for r, fmt in jobs]
+    with ThreadPoolExecutor(8) as pool:
+        for _ in range(2):
+            assert list(pool.map(lambda job: job[0].render(job[1]), jobs)) == serial
+
+
+def test_item02_one_walker_and_no_state_between_renders():
+    """The write-ups walk a solution with `document.walk` and carry the file's keys in
+    their writer: no module state is swapped around a render, and the HTML page uses no
+    private helper of the LaTeX write-up."""
+    from gyro_cli.render import document, html, writeup
+
+    assert not hasattr(writeup, "_KEYS") and not hasattr(writeup, "keys_of")
+    for writer in (writeup.MarkdownWriter, writeup.LatexWriter, html.HtmlWriter):
+        assert issubclass(writer, document.Writer)
+    source = inspect.getsource(html)
+    assert "from .writeup import" not in source and "writeup." not in source
+    calls = []
+    original = document.walk
+
+    def counted(result, writer):
+        calls.append(type(writer).__name__)
+        return original(result, writer)
+
+    from gyro_cli import api
+
+    r = api.solve_file(TWO[0])
+    try:
+        document.walk = counted
+        writeup.walk = html.walk = counted  # the name each module calls
+        r.render("markdown"), r.render("latex"), r.render("html")
+    finally:
+        document.walk = writeup.walk = html.walk = original
+    assert calls == ["MarkdownWriter", "LatexWriter", "HtmlWriter"]
+
+
+def test_item02_one_line_breaking_routine():
+    from gyro_cli.render.document import pack
+
+    items = [("a", 3.0), ("b", 3.0), ("c", 3.0), ("d", 9.0)]
+    assert pack(items, 7) == [(["a", "b"], 6.0), (["c"], 3.0), (["d"], 9.0)]
+    assert pack(items, 7, used=5) == [(["a"], 8.0), (["b", "c"], 6.0), (["d"], 9.0)]
+    assert pack([("wide", 20.0)], 7) == [(["wide"], 20.0)]

@@ -17,7 +17,7 @@ from gyro_cli.core.errors import InputError
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.expr import python_names
 from gyro_cli.kinds import names as kind_names
-from gyro_cli.render import report, writeup
+from gyro_cli.render import document, report, writeup
 from gyro_cli.solving.solve import solve_file
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -93,7 +93,7 @@ def _substitutions(result) -> tuple[list[str], list[str]]:
             if step.substitution:
                 texts.append(step.substitution)
                 if step.expr is not None:
-                    lhs, pieces = writeup._step_pieces(step)
+                    lhs, pieces = document.step_pieces(step)
                     latexes.append(writeup.LatexPrinter(True).doprint(pieces[1]))
     return texts, latexes
 

@@ -187,5 +187,6 @@ def test_file_keys_in_prose_stay_words():
     """`bearing_forces` in a note is a key of the file: words, "bearing forces"."""
     from gyro_cli.kinds import get
 
-    with writeup.keys_of(get("gyroscopic_torque")):
-        assert writeup.words("bearing_forces lists A and B").startswith("bearing forces lists")
+    keys = writeup.Keys.of(get("gyroscopic_torque"))
+    assert writeup.words("bearing_forces lists A and B", keys=keys).startswith(
+        "bearing forces lists")

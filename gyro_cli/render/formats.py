@@ -15,15 +15,19 @@ if TYPE_CHECKING:
     from collections.abc import Sequence
     from typing import Any
 
-#: format name -> "module:object" of its `Format` (under gyro_cli.render)
+#: format name -> ("module:object" of its `Format` under gyro_cli.render, what it writes)
 REGISTRY = {
-    "text": "report:TEXT",
-    "json": "report:JSON",
-    "markdown": "writeup:MARKDOWN",
-    "latex": "writeup:LATEX",
-    "html": "html:HTML",
+    "text": ("report:TEXT", "the worked answer"),
+    "json": ("report:JSON", "one JSON object per file, one per line"),
+    "markdown": ("writeup:MARKDOWN", "a write-up for a solution sheet"),
+    "latex": ("writeup:LATEX", "a write-up for a solution sheet (--standalone: a whole "
+                               "document)"),
+    "html": ("html:HTML", "one self-contained page of all FILES (MathML formulas, inline "
+                          "pictures)"),
 }
 NAMES = tuple(REGISTRY)
+#: the help of ``gyro solve --format``
+HELP = "; ".join(f"{name}: {what}" for name, (_, what) in REGISTRY.items()) + "."
 
 
 class Format:
@@ -51,6 +55,6 @@ class Format:
 
 def get(name: str) -> Format:
     """The format called ``name`` (a `KeyError` for an unknown one)."""
-    module, _, attribute = REGISTRY[name].partition(":")
+    module, _, attribute = REGISTRY[name][0].partition(":")
     found: Format = getattr(import_module(f"gyro_cli.render.{module}"), attribute)
     return found
