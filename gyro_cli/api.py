@@ -402,19 +402,13 @@ class Result:
 
     def text(self) -> str:
         """The worked answer as ``gyro solve`` prints it."""
-        from .render import report
-
-        return report.text(self.solved)
+        return self.render("text")
 
     def markdown(self) -> str:
-        from .render import writeup
-
-        return writeup.markdown(self.solved)
+        return self.render("markdown")
 
     def latex(self) -> str:
-        from .render import writeup
-
-        return writeup.latex(self.solved)
+        return self.render("latex")
 
     def html(self, page: bool = False, picture: bool = True, level: int = 2,
              animation: str = "") -> str:

@@ -131,6 +131,45 @@ def split_symbol(name: str) -> tuple[str, list[str]]:
     return base, subs
 
 
+#: a piece of a symbol's name as set: ("greek", "theta"), ("accent", "dot", piece),
+#: ("letter", "m"), ("differential", piece), ("word", "min"), ("digits", "0"), ("char", "'")
+NamePart = tuple
+
+
+def base_part(base: str) -> NamePart:
+    """How a symbol's base is set: a Greek letter, an accented base, one letter (italic), a
+    differential (upright d), else a word (upright)."""
+    if base in GREEK:
+        return ("greek", base)
+    d = dotted(base)
+    if d:
+        return ("accent", d[1], base_part(d[0]))
+    if len(base) == 1:
+        return ("letter", base)
+    if base[0] == "d" and symbolic(base[1:]):
+        return ("differential", base_part(base[1:]))
+    return ("word", base)
+
+
+def sub_part(part: str) -> NamePart:
+    """How one subscript is set: digits, one character, a Greek or accented name, or an
+    upright word (``min``)."""
+    if part.isdigit():
+        return ("digits", part)
+    if len(part) == 1:
+        return ("char", part)
+    if part in GREEK or dotted(part):
+        return base_part(part)
+    return ("word", part)
+
+
+def symbol_parts(name: str) -> tuple[NamePart, list[NamePart]]:
+    """A symbol's name as its base and subscripts, each as set (`base_part`, `sub_part`):
+    ``psidot_min`` -> (("accent", "dot", ("greek", "psi")), [("word", "min")])."""
+    base, subs = split_symbol(name)
+    return base_part(base), [sub_part(p) for p in subs]
+
+
 def number_parts(text: str) -> tuple[str, str, int | None]:
     """A number as written, as (sign, mantissa, power of ten or None): ``-3.869e-05`` ->
     ("-", "3.869", -5)."""

@@ -18,8 +18,8 @@ import re
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar
 
-from ..core.expr import UNIT_TEXT
 from ..core.work import num
+from .conventions import unit_spelling
 from .exprnodes import formula_node, substitution_node, symbol_node
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text, Tuple
 
@@ -95,7 +95,7 @@ def step_pieces(step: Any) -> tuple[Node, list[Node]]:
     elif step.formula or step.substitution:  # Work.step takes a formula as a tree only
         raise TypeError(f"the step {step.symbol} has a formula but no tree")
     if step.value is not None:
-        unit = UNIT_TEXT.get(step.unit, step.unit)
+        unit = unit_spelling(step.unit)
         pieces.append(Quantity(Num(num(step.value)), unit) if unit else Num(num(step.value)))
     return lhs, pieces
 

@@ -27,13 +27,23 @@ from typing import Any, Callable, Sequence, TypeVar
 from ..core.work import num
 from ..solving.solve import Result
 from . import mathml
-from .mathprint import text as plain_text
-from .mathml import MathMLPrinter, math_element
-from .mathtree import BinOp, Node, Num, Quantity, Rel
+from .conventions import unit_spelling
+from .document import (
+    NO_KEYS,
+    Keys,
+    Writer,
+    answer_lhs,
+    equation_tag,
+    pack,
+    step_pieces,
+    walk,
+    width,
+)
 from .exprnodes import prose_nodes, symbol_node
 from .formats import Format
-from .document import (NO_KEYS, Keys, Writer, answer_lhs, equation_tag, pack, step_pieces,
-                       walk, width)
+from .mathml import MathMLPrinter, math_element
+from .mathprint import text as plain_text
+from .mathtree import BinOp, Node, Num, Quantity, Rel
 
 _T = TypeVar("_T")
 
@@ -351,7 +361,7 @@ def _heading(level: int, text: str, ident: str | None = None) -> str:
 def _quantity(value: float | str, unit: str | None) -> str:
     if isinstance(value, str):
         return escape(value.replace("_", " "))
-    unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(unit or "", unit or "")
+    unit = unit_spelling(unit or "")
     node: Node = Quantity(Num(num(value)), unit) if unit else Num(num(value))
     return _math(node)
 

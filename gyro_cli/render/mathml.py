@@ -18,13 +18,11 @@ from typing import Any, ClassVar
 from .conventions import (
     DEGREES,
     FUNCTIONS,
-    GREEK,
     MATHML,
     SIGNS,
-    dotted,
+    NamePart,
     number_parts,
-    split_symbol,
-    symbolic,
+    symbol_parts,
     unit_parts,
 )
 from .conventions import RELATIONS as _RELATIONS
@@ -89,33 +87,27 @@ def _one_element(markup: str) -> bool:
 
 # ---- symbols, numbers, units ----------------------------------------------------
 
-def _base(base: str) -> str:
-    if base in GREEK:
-        return _mi(GREEK_LETTERS[base], upright=base[0].isupper())
-    d = dotted(base)
-    if d:
-        return f'<mover accent="true">{_base(d[0])}<mo>{ACCENTS[d[1]]}</mo></mover>'
-    if len(base) == 1:
-        return _mi(base)
-    if base[0] == "d" and symbolic(base[1:]):
-        return _row(_mi("d", upright=True), _base(base[1:]))
-    return _mi(base)  # a multi-letter name is upright
-
-
-def _sub(part: str) -> str:
-    if part.isdigit():
-        return f"<mn>{escape(part)}</mn>"
-    if part in GREEK or dotted(part):
-        return _base(part)
-    return _mi(part, upright=len(part) == 1 and not part.isalpha())
+def _spell(part: NamePart, sub: bool = False) -> str:
+    kind = part[0]
+    if kind == "greek":
+        return _mi(GREEK_LETTERS[part[1]], upright=part[1][0].isupper())
+    if kind == "accent":
+        return f'<mover accent="true">{_spell(part[2])}<mo>{ACCENTS[part[1]]}</mo></mover>'
+    if kind == "differential":
+        return _row(_mi("d", upright=True), _spell(part[1]))
+    if kind == "digits":
+        return f"<mn>{escape(part[1])}</mn>"
+    if kind == "char":  # one character of a subscript: a letter italic, a sign upright
+        return _mi(part[1], upright=not part[1].isalpha())
+    return _mi(part[1])  # a letter; a multi-letter name is upright
 
 
 def symbol_mathml(name: str) -> str:
     """One symbol name: ``psidot_min`` -> psi with a dot, sub min."""
-    base, subs = split_symbol(name)
-    out = _base(base)
+    base, subs = symbol_parts(name)
+    out = _spell(base)
     if subs:
-        sub = _mo(",").join(_sub(p) for p in subs)
+        sub = _mo(",").join(_spell(p) for p in subs)
         out = f"<msub>{out}{_row(sub) if len(subs) > 1 else sub}</msub>"
     return out
 

@@ -19,14 +19,13 @@ from ..core.expr import Printer as BasePrinter
 from .conventions import (
     DEGREES,
     FUNCTIONS,
-    GREEK,
     LATEX,
     RELATIONS,
     SIGNS,
-    dotted,
+    NamePart,
     number_parts,
     split_symbol,
-    symbolic,
+    symbol_parts,
     unit_parts,
 )
 from .mathtree import (
@@ -138,33 +137,25 @@ def text_escape(text: str) -> str:
 
 # ---- symbols ----------------------------------------------------------------
 
-def _base_tex(base: str) -> str:
-    if base in GREEK:
-        return "\\" + base
-    d = dotted(base)
-    if d:
-        return f"\\{d[1]}{{{_base_tex(d[0])}}}"
-    if len(base) == 1:
-        return base
-    if base[0] == "d" and symbolic(base[1:]):
-        return r"\mathrm{d}" + _base_tex(base[1:])
-    return f"\\mathrm{{{base}}}"
-
-
-def _sub_tex(part: str) -> str:
-    if part.isdigit() or len(part) == 1:
-        return part
-    if part in GREEK or dotted(part):
-        return _base_tex(part)
-    return f"\\mathrm{{{part}}}"
+def _spell_tex(part: NamePart) -> str:
+    kind = part[0]
+    if kind == "greek":
+        return "\\" + part[1]
+    if kind == "accent":
+        return f"\\{part[1]}{{{_spell_tex(part[2])}}}"
+    if kind == "differential":
+        return r"\mathrm{d}" + _spell_tex(part[1])
+    if kind == "word":
+        return f"\\mathrm{{{part[1]}}}"
+    return str(part[1])  # a letter, digits, one character
 
 
 def symbol_tex(name: str) -> str:
     """One symbol name in LaTeX: ``psidot_min`` -> ``\\dot{\\psi}_{\\mathrm{min}}``."""
-    base, subs = split_symbol(name)
-    out = _base_tex(base)
+    base, subs = symbol_parts(name)
+    out = _spell_tex(base)
     if subs:
-        out += "_{" + ",".join(_sub_tex(p) for p in subs) + "}"
+        out += "_{" + ",".join(_spell_tex(p) for p in subs) + "}"
     return out
 
 

@@ -25,11 +25,28 @@ from typing import Any
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
-from .document import (NO_KEYS, Keys, Writer, answer_lhs, equation_tag, file_keys, pack,
-                       step_pieces, walk, width)
+from .document import (
+    NO_KEYS,
+    Keys,
+    Writer,
+    answer_lhs,
+    equation_tag,
+    file_keys,
+    pack,
+    step_pieces,
+    walk,
+    width,
+)
 from .exprnodes import prose_nodes, symbol_node
 from .formats import Format
-from .mathprint import RELATIONS_TEX, LatexPrinter, number_tex, symbol_tex, text_escape, unit_tex
+from .mathprint import (
+    RELATIONS_TEX,
+    LatexPrinter,
+    number_tex,
+    symbol_tex,
+    text_escape,
+    unit_tex,
+)
 from .mathtree import BinOp, Group, Node, Num, Rel
 
 __all__ = ["markdown", "latex", "standalone", "symbol_latex", "words", "text_escape",
