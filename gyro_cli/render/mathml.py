@@ -273,26 +273,29 @@ def _joined(items: list[str], sep: str) -> list[str]:
     return out
 
 
-def _starts_number(node: Node) -> bool:
-    """Juxtaposition before a number (``2 (3)``) is written with a dot."""
+def _first(node: Node) -> Node:
+    """The node a product, quotient, sum or power is written starting with."""
     while isinstance(node, (BinOp, Pow)):
         node = node.left if isinstance(node, BinOp) else node.base
-    return isinstance(node, (Num, Quantity)) or isinstance(node, Neg)
+    return node
+
+
+def _starts_number(node: Node) -> bool:
+    """Juxtaposition before a number (``2 (3)``) is written with a dot."""
+    return isinstance(_first(node), (Num, Quantity, Neg))
 
 
 def _starts_function(node: Node) -> bool:
     """``m g l sin(theta)``: a thin space before the function's name, as LaTeX sets it."""
-    while isinstance(node, (BinOp, Pow)):
-        node = node.left if isinstance(node, BinOp) else node.base
-    return isinstance(node, Call) and node.name in FUNCTIONS
+    first = _first(node)
+    return isinstance(first, Call) and first.name in FUNCTIONS
 
 
 def _starts_negative(node: Node) -> bool:
-    while isinstance(node, (BinOp, Pow)):
-        node = node.left if isinstance(node, BinOp) else node.base
-    if isinstance(node, Quantity):
-        node = node.value
-    return isinstance(node, Num) and node.text.startswith("-")
+    first = _first(node)
+    if isinstance(first, Quantity):
+        first = first.value
+    return isinstance(first, Num) and first.text.startswith("-")
 
 
 # ---- elements -----------------------------------------------------------------
