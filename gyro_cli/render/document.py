@@ -24,7 +24,7 @@ from .exprnodes import formula_node, substitution_node, symbol_node
 from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text, Tuple
 
 __all__ = ["Keys", "Writer", "walk", "step_pieces", "equation_tag", "answer_symbol",
-           "answer_lhs", "width", "pack"]
+           "answer_lhs", "width", "pack", "unbracketed"]
 
 #: a line ending in the chapter's equation number: "udot^2 = f(u) = ...    (Eq. 11.19)"
 _EQ = re.compile(r"^Eq\. (\d+\.\d+)(?:, (.+))?$")
@@ -126,7 +126,8 @@ def answer_lhs(answer: Any) -> Node | None:
 
 # ---- width and breaking -----------------------------------------------------
 
-def _strip(node: Node) -> Node:
+def unbracketed(node: Node) -> Node:
+    """The node inside round brackets that a stacked fraction makes redundant."""
     while isinstance(node, Group) and node.open == "(":
         node = node.body
     return node
@@ -139,7 +140,7 @@ def width(node: Node | None) -> float:
         return 0
     if isinstance(node, BinOp):
         if node.op == "/":
-            return max(width(_strip(node.left)), width(_strip(node.right))) + 1
+            return max(width(unbracketed(node.left)), width(unbracketed(node.right))) + 1
         return width(node.left) + width(node.right) + (3 if node.op in "+-" else 1)
     if isinstance(node, Pow):
         return width(node.base) + 0.7 * width(node.exp)

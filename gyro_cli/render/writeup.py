@@ -34,6 +34,7 @@ from .document import (
     file_keys,
     pack,
     step_pieces,
+    unbracketed,
     walk,
     width,
 )
@@ -106,12 +107,6 @@ def prose_latex(prose: Any, markdown: bool = False, keys: Keys = NO_KEYS) -> str
 
 # ---- breaking a wide display --------------------------------------------------
 
-def _strip(node: Node) -> Node:
-    while isinstance(node, Group) and node.open == "(":
-        node = node.body
-    return node
-
-
 def _terms(node: Node) -> list[tuple[str, Node]]:
     """A sum as its terms with their signs: a - b + c -> [("", a), ("-", b), ("+", c)]."""
     if isinstance(node, BinOp) and node.op in ("+", "-"):
@@ -123,9 +118,9 @@ def _opened(piece: Node, printer: LatexPrinter) -> tuple[str, Node, str]:
     """A piece whose width is in one bracketed sum: the text before the sum, the sum and the
     text after (``a (b + c + d)`` -> ``a \\Bigl(``, b + c + d, ``\\Bigr)``)."""
     node = piece
-    if isinstance(node, BinOp) and node.op == "/" and len(_terms(_strip(node.left))) > 1:
-        den = printer.doprint(_strip(node.right))
-        return f"\\frac{{1}}{{{den}}} \\Bigl(", _strip(node.left), " \\Bigr)"
+    if isinstance(node, BinOp) and node.op == "/" and len(_terms(unbracketed(node.left))) > 1:
+        den = printer.doprint(unbracketed(node.right))
+        return f"\\frac{{1}}{{{den}}} \\Bigl(", unbracketed(node.left), " \\Bigr)"
     if isinstance(node, BinOp) and node.op in (" ", "*"):
         right = node.right
         if isinstance(right, Group) and len(_terms(right.body)) > 1 \
