@@ -181,3 +181,29 @@ def test_item02_one_line_breaking_routine():
     assert pack(items, 7) == [(["a", "b"], 6.0), (["c"], 3.0), (["d"], 9.0)]
     assert pack(items, 7, used=5) == [(["a"], 8.0), (["b", "c"], 6.0), (["d"], 9.0)]
     assert pack([("wide", 20.0)], 7) == [(["wide"], 20.0)]
+
+
+def test_item01_one_sign_rule_reads_the_node_as_latex_writes_it():
+    """Whether a term after a sign starts with a minus is decided from the node, once for
+    LaTeX and MathML: for random formulas it agrees with the LaTeX as written."""
+    import random
+
+    from formula_oracle import ParseError, parse
+
+    from gyro_cli.render.mathprint import LatexPrinter
+
+    vocab = ["-2.5", "3", "-1.5e-05", " kg", " deg", "x", "theta_0", "phidot", "^2", "(", ")",
+             " / ", " ", " + ", " - ", "sin(", "'", ", "]
+    rng = random.Random(36)
+    checked = 0
+    for _ in range(4000):
+        text = "".join(rng.choice(vocab) for _ in range(rng.randint(1, 8)))
+        try:
+            node = parse(text)
+        except (ParseError, RecursionError, ValueError):
+            continue
+        for display in (True, False):
+            printer = LatexPrinter(display)
+            assert printer.starts_minus(node) == printer.doprint(node).startswith("-"), text
+        checked += 1
+    assert checked > 300

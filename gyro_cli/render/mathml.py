@@ -190,9 +190,6 @@ class MathMLPrinter(TypesetPrinter):
     def sum(self, left: str, op: str, right: str) -> str:
         return _row(left, _mo(SUMS[op]), right)
 
-    def starts_minus(self, node: Node, text: str) -> bool:
-        return _starts_negative(node)
-
     def frac(self, num: str, den: str) -> str:
         return f"<mfrac>{_row(num)}{_row(den)}</mfrac>"
 
@@ -290,12 +287,6 @@ def _starts_function(node: Node) -> bool:
     first = _first(node)
     return isinstance(first, Call) and first.name in FUNCTIONS
 
-
-def _starts_negative(node: Node) -> bool:
-    first = _first(node)
-    if isinstance(first, Quantity):
-        first = first.value
-    return isinstance(first, Num) and first.text.startswith("-")
 
 
 # ---- elements -----------------------------------------------------------------

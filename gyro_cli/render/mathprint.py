@@ -37,6 +37,7 @@ from .mathtree import (
     Node,
     Num,
     Pow,
+    Prime,
     Quantity,
     Rel,
     Sym,
@@ -224,9 +225,40 @@ class TypesetPrinter(Printer):
     def sum(self, left: str, op: str, right: str) -> str:
         raise NotImplementedError
 
-    def starts_minus(self, node: Node, text: str) -> bool:
-        """Whether a term after a sign is printed starting with a minus (then bracketed)."""
-        raise NotImplementedError
+    def starts_minus(self, node: Node) -> bool:
+        """Whether a term after a sign is written starting with a minus (then it is
+        bracketed): the one sign rule of both formats, read from the node as printed (a
+        stacked fraction, a bracket or a subscripted power's base starts otherwise)."""
+        while True:
+            if isinstance(node, Neg):
+                return node.sign == "-"
+            if isinstance(node, Num):
+                return node.text.startswith("-")
+            if isinstance(node, Quantity):
+                if node.unit in DEGREES and isinstance(node.value, Num) \
+                        and "e" in node.value.text.lower():
+                    return False  # {-1.5\times 10^{-5}}^{\circ}: braced
+                node = node.value
+            elif isinstance(node, BinOp):
+                if node.op == "/" and self.display:
+                    return False  # a stacked fraction
+                level = PRECEDENCE["+"] if node.op in SIGNS else PRECEDENCE["*"]
+                if precedence(node.left) < level:
+                    return False  # bracketed
+                node = node.left
+            elif isinstance(node, Pow):
+                base = node.base
+                if isinstance(base, Group) or base_needs_brackets(base) or isinstance(base, Sym):
+                    return False  # bracketed, braced, or a name
+                node = base
+            elif isinstance(node, Tuple) and node.items:
+                node = node.items[0]
+            elif isinstance(node, Prime):
+                if precedence(node.body) < PRECEDENCE["Atom"]:
+                    return False  # bracketed
+                node = node.body
+            else:
+                return False
 
     def frac(self, num: str, den: str) -> str:
         raise NotImplementedError
@@ -288,9 +320,11 @@ class TypesetPrinter(Printer):
         if op in SIGNS:
             left = self.parenthesize(node.left, PRECEDENCE["+"])
             right, op = _fold(node.right, op)
-            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=True) \
-                if op in ("-", "+-", "-+") else self.parenthesize(right, PRECEDENCE["+"])
-            if self.starts_minus(right, rtext) and not isinstance(right, Neg):
+            strict = op in ("-", "+-", "-+")
+            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=strict)
+            bracketed = precedence(right) < PRECEDENCE["+"] or \
+                (strict and precedence(right) == PRECEDENCE["+"])
+            if not bracketed and self.starts_minus(right) and not isinstance(right, Neg):
                 rtext = self.brackets(rtext)
             return self.sum(left, op, rtext)
         if op == "/" and self.display:
@@ -379,9 +413,6 @@ class LatexPrinter(TypesetPrinter):
 
     def sum(self, left: str, op: str, right: str) -> str:
         return f"{left} {SUM_TEX[op]} {right}"
-
-    def starts_minus(self, node: Node, text: str) -> bool:
-        return text.startswith("-")
 
     def frac(self, num: str, den: str) -> str:
         return f"\\frac{{{num}}}{{{den}}}"
