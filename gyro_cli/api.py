@@ -24,6 +24,7 @@ import sys
 from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
 
 from .core.errors import InputError
+from .render.formats import NAMES as FORMATS
 
 if TYPE_CHECKING:
     from .checking.grades import Graded
@@ -35,7 +36,7 @@ if TYPE_CHECKING:
     from .solving.solve import Result as _Solved
 
 __all__ = ["solve", "solve_file", "check", "check_files", "kinds", "sweep", "load", "Result", "Answer", "CheckReport",
-           "Sweep", "InputError", "registry"]
+           "Sweep", "InputError", "registry", "document", "FORMATS"]
 
 #: what `solve` and `check` accept as a problem
 Source = Union[str, "os.PathLike[str]", Mapping[str, Any]]
@@ -394,21 +395,21 @@ class Result:
 
         return json.dumps(self.to_dict(), allow_nan=False)
 
+    def render(self, fmt: str = "text", level: int = 2) -> str:
+        """The worked answer in the output format ``fmt`` (one of `FORMATS`), as ``gyro
+        solve --format FMT`` writes this one file (html: its <article>, a title of
+        ``level``); `document` composes several."""
+        return _format(fmt).one(self, level)
+
     def text(self) -> str:
         """The worked answer as ``gyro solve`` prints it."""
-        from .render import report
-
-        return report.text(self.solved)
+        return self.render("text")
 
     def markdown(self) -> str:
-        from .render import writeup
-
-        return writeup.markdown(self.solved)
+        return self.render("markdown")
 
     def latex(self) -> str:
-        from .render import writeup
-
-        return writeup.latex(self.solved)
+        return self.render("latex")
 
     def html(self, page: bool = False, picture: bool = True, level: int = 2,
              animation: str = "") -> str:
@@ -461,6 +462,27 @@ class Result:
     def __repr__(self) -> str:
         parts = "; ".join(f"{name} = {answer}" for name, answer in self.answers.items())
         return f"<Result {self.id} [{self.kind}]: {parts}>"
+
+
+def _format(fmt: str) -> Any:
+    from .render import formats
+
+    if fmt not in formats.REGISTRY:
+        raise ValueError(f"unknown format {fmt!r}: one of {', '.join(formats.NAMES)}")
+    return formats.get(fmt)
+
+
+def document(results: list[Result], fmt: str = "text", *, standalone: bool = False,
+             pieces: list[str | None] | None = None, scripts: Iterable[str] = ()) -> str:
+    """Several solved problems as one output of ``fmt``, as ``gyro solve --format FMT``
+    prints them: one after another, or one document (html: a page with a contents list;
+    latex with ``standalone``: a document pdflatex compiles). ``pieces``: each result's
+    `Result.render`, when already made; ``scripts``: inline scripts the page may run."""
+    output = _format(fmt)
+    if pieces is None:
+        level = 1 if len(results) == 1 else 2
+        pieces = [None if standalone else r.render(fmt, level) for r in results]
+    return output.document(results, pieces, standalone, tuple(scripts))
 
 
 def solve(source: Source, /, *, units: str | None = None, **given: Any) -> Result:

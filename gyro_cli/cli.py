@@ -19,7 +19,8 @@ from .commands.exits import INTERNAL, fail, internal
 from .commands.exits import outputs_apart as _outputs_apart
 from .core.errors import InputError, terminal_text
 
-FORMATS = ("text", "json", "markdown", "latex", "html")
+from .render.formats import HELP as FORMAT_HELP
+from .render.formats import NAMES as FORMATS
 
 
 class _Guarded(click.Group):
@@ -153,26 +154,12 @@ def main() -> None:
     """
 
 
-def _rendered(result, fmt: str, level: int = 2) -> str:
-    """One solved problem (an api.Result) as the text, JSON, Markdown or LaTeX that solve
-    prints (for html: its article, put on one page at the end)."""
-    if fmt == "html":
-        return result.html(level=level)
-    if fmt == "json":
-        return result.to_json() + "\n"
-    if fmt == "markdown":
-        return result.markdown()
-    if fmt == "latex":
-        return result.latex()
-    return result.text()
 
 
 @main.command()
 @click.argument("files", nargs=-1, required=True, metavar="FILES|DIRS")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="text", show_default=True,
-              help="text: the worked answer; json: one JSON object per file, one per line; "
-                   "markdown, latex: a write-up for a solution sheet; html: one self-contained "
-                   "page of all FILES (MathML formulas, inline pictures).")
+              help=FORMAT_HELP)
 @click.option("--plot", "plot_file", metavar="FILE",
               help="released_top: also draw the axis's path, theta(t) and phidot(t) to FILE "
                    "(.png, .svg or .pdf); bicycle: the eigenvalues against speed; one problem "
@@ -196,8 +183,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     FILES may also be directories (every *.yaml and *.yml in them, as for
     `gyro check`) or quoted globs.
     """
+    from .api import document as compose
     from .api import solve_file as solve_problem
-    from .render import report
+    from .render import formats
     from .solving.paths import problem_files
 
     files, missing = problem_files(files)
@@ -212,7 +200,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         fail("--animate goes with --format html (an animation file alone: gyro simulate "
              "FILE --animate OUT)")
     bad, crashed = len(missing), 0
-    document, scripts = [], []
+    output = formats.get(fmt)
+    composed = output.composes(standalone)  # one document of every file, at the end
+    done: list = []
+    pieces: list[str | None] = []
+    scripts: list[str] = []
     for i, path in enumerate(files):
         try:
             result = solve_problem(path, units=system)
@@ -221,10 +213,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                 from .render.animate import player_script
 
                 motion = result.animation_html()
-                text = result.html(level=level, animation=motion)
+                text: str | None = result.html(level=level, animation=motion)
                 scripts += [player_script(result.animation_id)] if motion else []
             else:
-                text = None if standalone else _rendered(result, fmt, level)
+                text = None if standalone else result.render(fmt, level)
         except InputError as err:
             click.echo(f"gyro: {err}", err=True)
             bad += 1
@@ -233,16 +225,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             internal(path, err)
             crashed += 1
             continue
-        if standalone:
-            document.append(result.solved)
-        elif fmt == "html":
-            document.append((result.solved, text))
+        if composed:
+            done.append(result)
+            pieces.append(text)
         else:
-            if i and fmt in ("markdown", "latex"):
-                text = "\n" + text
-            elif i and fmt == "text":
-                text = "\n" + "=" * report.WIDTH + "\n\n" + text
-            click.echo(text, nl=False)
+            click.echo((output.separator if i else "") + (text or ""), nl=False)
         if plot_file:  # after the worked answer, so a refused plot does not hide it
             from .render.plot import plot_result
 
@@ -251,15 +238,9 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
             except InputError as err:
                 click.echo(f"gyro: {err}", err=True)
                 bad += 1
-    if document and fmt == "html":
-        from .render import html
-
-        click.echo(html.page([r for r, _ in document], articles=[a for _, a in document],
-                             scripts=scripts), nl=False)
-    elif document:
-        from .render import writeup
-
-        click.echo(writeup.standalone(document), nl=False)
+    if done:
+        click.echo(compose(done, fmt, standalone=standalone, pieces=pieces, scripts=scripts),
+                   nl=False)
     if crashed:
         sys.exit(INTERNAL)
     if bad:

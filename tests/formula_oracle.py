@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import re
 
-from gyro_cli.render.mathtree import GREEK, Token, _symbolic, dotted, tokens  # noqa: F401 (re-exported)
+from gyro_cli.render.conventions import GREEK, Token, dotted, tokens  # noqa: F401 (re-exported)
+from gyro_cli.render.conventions import symbolic as _symbolic  # noqa: F401
 from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
                        Quantity, Rel, Sum, Sym, Tuple)
 

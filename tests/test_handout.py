@@ -237,13 +237,14 @@ def test_problem_file_page_sample_is_the_real_output(run):
 
 def test_solve_text_and_json_do_not_load_the_typesetting():
     """Text loads no typesetting; JSON loads the LaTeX printer for its equations' LaTeX
-    (from the trees) but never the formula parser or the write-up."""
+    (from the trees) but never the write-ups (LaTeX, Markdown, HTML)."""
     code = ("import sys; from click.testing import CliRunner; from gyro_cli.cli import main; "
             "r2 = CliRunner().invoke(main, ['solve', sys.argv[1]]); "
-            "print(sorted(m for m in sys.modules if 'mathparse' in m or 'mathprint' in m "
-            "or 'writeup' in m)); "
+            "print(sorted(m for m in sys.modules if 'render.math' in m "
+            "or 'writeup' in m or 'render.html' in m)); "
             "r = CliRunner().invoke(main, ['solve', '--format', 'json', sys.argv[1]]); "
-            "print(sorted(m for m in sys.modules if 'mathparse' in m or 'writeup' in m))")
+            "print(sorted(m for m in sys.modules if 'writeup' in m or 'render.html' in m "
+            "or 'render.mathml' in m))")
     out = subprocess.run([sys.executable, "-c", code, str(ROOT / "problems" / "11_3.yaml")],
                          capture_output=True, text=True, timeout=120)
     assert out.stdout.split() == ["[]", "[]"], out.stderr

@@ -87,7 +87,7 @@ def test_words_stand_as_a_symbol_and_are_set_as_text():
     work.step(words("body cone"), Sym("beta", 0.5, "deg"), unit="deg", substitute=False)
     step = work.sections[0].steps[0]
     assert step.as_text() == "body cone = beta = 28.65 deg"
-    assert r"\text{body cone} = \beta" in "\n".join(writeup._steps([step], markdown=False))
+    assert r"\text{body cone} = \beta" in "\n".join(writeup.steps_lines([step]))
     assert "<mtext>body cone</mtext>" in html._step_html(step)
 
 
@@ -96,7 +96,7 @@ def test_a_short_note_of_words_and_trees_sits_beside_its_display():
     work.section("Test")
     work.step("phidot", Sym("H", 2.0, "kg m^2/s") / Sym("I", 1.0, "kg m^2"), unit="rad/s",
               note=("precession of ", *names("k"), " about ", H))
-    latex = "\n".join(writeup._steps(work.sections[0].steps, markdown=False))
+    latex = "\n".join(writeup.steps_lines(work.sections[0].steps))
     assert r"\qquad \text{precession of $k$ about $H$}" in latex
 
 
@@ -111,8 +111,7 @@ def test_primes_and_matrices_print_as_the_chapter_writes_them():
     assert Prose((rel(prime(i, 2), "=", cos(alpha) * i - sin(alpha) * j),)).text == \
         "i'' = cos(alpha) i - sin(alpha) j"
     assert Prose((mat((q(1.0), 0), (0, q(-1.0))),)).text == "[1.000 0; 0 -1.000]"
-    latex = "\n".join(writeup._steps([_line("so ", rel(prime(i, 2), "=", mat((1, 0), (0, 1))))],
-                                      markdown=False))
+    latex = "\n".join(writeup.steps_lines([_line("so ", rel(prime(i, 2), "=", mat((1, 0), (0, 1))))]))
     assert "i''" in latex and r"\begin{bmatrix} 1 & 0 \\ 0 & 1 \end{bmatrix}" in latex
 
 
@@ -129,7 +128,7 @@ def test_a_sum_over_particles_prints_the_chapter_form_and_evaluates_its_terms():
     work.section("Test")
     work.step("I_x", tree, unit="kg*m^2", substitute=False)
     assert r"I_{x} = \sum m (y^{2} + z^{2})" in "\n".join(
-        writeup._steps(work.sections[0].steps, markdown=False))
+        writeup.steps_lines(work.sections[0].steps))
 
 
 def test_matrices_primes_integrals_brackets_and_eigenvalues():
@@ -212,7 +211,7 @@ def _work_with_prose() -> Work:
 
 def test_latex_sets_words_as_text_and_trees_as_maths():
     steps = _work_with_prose().sections[0].steps
-    latex = "\n".join(writeup._steps(steps, markdown=False))
+    latex = "\n".join(writeup.steps_lines(steps))
     assert r"Earth rate: $\Omega_{E} = \Omega (\cos \lambda N + \sin \lambda U)$ \& \textless{}b\textgreater{}" in latex
     assert r"\tag{11.27}" in latex and r"\frac{2 \pi}{T}" in latex
     assert r"$\alpha = 0^{\circ}$" in latex
@@ -341,7 +340,7 @@ def test_vectors_with_a_unit_explicit_signs_brackets_and_primes():
     work = Work()
     work.section("T")
     work.text(*line.pieces)
-    tex = "\n".join(writeup._steps(work.sections[0].steps, markdown=False))
+    tex = "\n".join(writeup.steps_lines(work.sections[0].steps))
     assert r"$+x$" in tex and r"-(\omega_{p} \times H)" in tex and r"\alpha''" in tex
     assert r"(0, -1.005\times 10^{4}, 0)\,\mathrm{N\,m}" in tex
     us = line.map(lambda t: map_values(t, lambda s: s,

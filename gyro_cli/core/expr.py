@@ -63,9 +63,9 @@ _OPERANDS: set[type] = set()
 def _node(x: "Expr | float") -> "Expr":
     kind = x.__class__
     if kind in _OPERANDS:
-        return x
+        return x  # type: ignore[return-value]
     if kind is float:
-        return Num(x)
+        return Num(x)  # type: ignore[arg-type]
     if isinstance(x, Expr):
         if isinstance(x, Chain):
             raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
@@ -120,7 +120,13 @@ class Expr:
         raise NotImplementedError
 
     def children(self) -> tuple["Expr", ...]:
+        """The nodes the value is computed from."""
         return ()
+
+    def map_children(self, change: Callable[["Expr"], "Expr"]) -> "Expr":
+        """The node rebuilt with ``change`` applied to each node it holds (a `Let`'s symbol
+        too); a leaf is itself. `map_tree` walks a whole tree with it."""
+        return self
 
 
 class Sym(Expr):
@@ -204,6 +210,11 @@ class Let(Expr):
     def children(self) -> tuple[Expr, ...]:
         return (self.body,)
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        sym = change(self.sym)
+        assert isinstance(sym, Sym)
+        return Let(sym, change(self.body))
+
 
 class Neg(Expr):
     __slots__ = ("arg",)
@@ -218,6 +229,9 @@ class Neg(Expr):
     def children(self) -> tuple[Expr, ...]:
         return (self.arg,)
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Neg(change(self.arg))
+
 
 class BinOp(Expr):
     __slots__ = ("left", "right")
@@ -228,6 +242,9 @@ class BinOp(Expr):
 
     def children(self) -> tuple[Expr, ...]:
         return (self.left, self.right)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return type(self)(change(self.left), change(self.right))
 
 
 class Add(BinOp):
@@ -331,6 +348,9 @@ class Call(Expr):
     def children(self) -> tuple[Expr, ...]:
         return self.args
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Call(self.name, tuple(change(a) for a in self.args))
+
 
 class Chain(Expr):
     """One quantity written in equal forms, ``A = B``: ``m g L sin(theta) / I_O = g L
@@ -365,6 +385,9 @@ class Chain(Expr):
     def children(self) -> tuple[Expr, ...]:
         return self.forms
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Chain(*(change(f) for f in self.forms))
+
 
 class SumOf(Expr):
     """``sum m (y^2 + z^2)``: a sum over the particles of a body (Eq. 11.3). The formula
@@ -384,6 +407,9 @@ class SumOf(Expr):
 
     def children(self) -> tuple[Expr, ...]:
         return self.terms
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return SumOf(self.body, tuple(change(t) for t in self.terms))  # the body: names only
 
     def expanded(self) -> Expr:
         """The terms as one sum, left to right."""
@@ -426,23 +452,19 @@ def symbols(expr: Expr) -> dict[str, Sym]:
     return out
 
 
+def map_tree(expr: Expr, change: Callable[[Expr], "Expr | None"]) -> Expr:
+    """The tree with each node for which ``change`` gives a node replaced by it, the others
+    rebuilt from their mapped children (`Expr.map_children`): one walk for every mapping
+    (``--units us`` of formulas and sentences, values)."""
+    out = change(expr)
+    if out is not None:
+        return out
+    return expr.map_children(lambda child: map_tree(child, change))
+
+
 def map_syms(expr: Expr, change: Callable[[Sym], Sym]) -> Expr:
     """The tree with every symbol replaced by ``change(symbol)`` (``--units us``)."""
-    if isinstance(expr, Sym):
-        return change(expr)
-    if isinstance(expr, Let):
-        return Let(change(expr.sym), map_syms(expr.body, change))
-    if isinstance(expr, Neg):
-        return Neg(map_syms(expr.arg, change))
-    if isinstance(expr, BinOp):
-        return type(expr)(map_syms(expr.left, change), map_syms(expr.right, change))
-    if isinstance(expr, Call):
-        return Call(expr.name, tuple(map_syms(a, change) for a in expr.args))
-    if isinstance(expr, Chain):
-        return Chain(*(map_syms(f, change) for f in expr.forms))
-    if isinstance(expr, SumOf):
-        return SumOf(expr.body, tuple(map_syms(t, change) for t in expr.terms))
-    return expr
+    return map_tree(expr, lambda node: change(node) if isinstance(node, Sym) else None)
 
 
 # ---- brackets: one rule for every printer -----------------------------------
@@ -553,20 +575,25 @@ def factors(node: Expr, values: bool) -> list[Expr]:
 
 # ---- printers ---------------------------------------------------------------
 
-_METHODS: dict = {}  # (printer class, node class) -> the printer's method for it
+_METHODS: dict[tuple[type, type], Callable[..., Any]] = {}  # (printer, node class) -> method
 
 
 class Printer:
-    """Dispatch on the node's class: ``_print_Sym`` prints a Sym. ``values``: print the
-    substitution (each symbol's value and unit) rather than the formula."""
+    """The one base of gyro's printers, as sympy's: dispatch on the node's class along its
+    bases (``_print_Sym`` prints a Sym), settings as attributes. ``values``: print the
+    substitution (each symbol's value and unit) rather than the formula. The text and
+    Python printers here, `core.prose`'s, and the LaTeX and MathML printers of
+    ``render/`` subclass it."""
+
+    values = False
 
     def __init__(self, values: bool = False) -> None:
         self.values = values
 
-    def doprint(self, node: Expr) -> str:
+    def doprint(self, node: Any) -> Any:
         return self._print(node)
 
-    def _print(self, node: Expr) -> str:
+    def _print(self, node: Any) -> Any:
         # the method for each (printer class, node class) is looked up once, not at
         # every node: the lookup by name along the node's classes was a third of printing
         key = (self.__class__, node.__class__)
@@ -581,12 +608,12 @@ class Printer:
             _METHODS[key] = method
         return method(self, node)
 
-    def operand(self, parent: Expr, child: Expr, right: bool = False) -> str:
+    def operand(self, parent: Expr, child: Expr, right: bool = False) -> Any:
         text = self._print(child)
         return self.brackets(text) if needs_brackets(parent, child, right, self.values) else text
 
-    def brackets(self, inner: str) -> str:
-        return f"({inner})"
+    def brackets(self, inner: str, open_: str = "(", close: str = ")") -> str:
+        return f"{open_}{inner}{close}"
 
 
 def quantity_text(value: float, unit: str) -> str:

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 
 from .expr import (ADD, ATOM, MUL, NAMED, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div,
-                   Expr, Let, Mul, Neg, Sub, Sym, TextPrinter, _node, map_syms, needs_brackets, num,
+                   Expr, Let, Mul, Neg, Sub, Sym, TextPrinter, _node, map_tree, needs_brackets, num,
                    precedence)
 
 TYPE_CHECKING = False
@@ -71,6 +71,10 @@ class Rel(Typeset):
         head = () if self.first is None else (self.first,)
         return head + tuple(rhs for _, rhs in self.rest)
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Rel(None if self.first is None else change(self.first),
+                   tuple((op, change(rhs)) for op, rhs in self.rest))
+
 
 class Cross(Typeset, BinOp):
     """The cross product ``a x b`` of two vectors."""
@@ -101,6 +105,9 @@ class Fn(Typeset):
     def children(self) -> tuple[Expr, ...]:
         return self.args
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Fn(self.name, tuple(change(x) for x in self.args), self.sep)
+
 
 class Total(Typeset):
     """``sum body``: a sum over the particles of a body (Eq. 11.3)."""
@@ -113,6 +120,9 @@ class Total(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return (self.body,)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Total(change(self.body))
 
 
 class Sign(Typeset):
@@ -128,6 +138,9 @@ class Sign(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return (self.arg,)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Sign(self.sign, change(self.arg))
 
 
 class Deriv(Typeset):
@@ -152,6 +165,9 @@ class Mat(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return tuple(x for row in self.rows for x in row)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Mat(tuple(tuple(change(x) for x in row) for row in self.rows))
 
 
 class Quantity(Typeset):
@@ -220,6 +236,9 @@ class Integral(Typeset):
     def children(self) -> tuple[Expr, ...]:
         return (self.lower, self.upper, self.body)
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Integral(change(self.lower), change(self.upper), change(self.body))
+
 
 class Bracket(Typeset):
     """Brackets the author writes: ``[x]`` around a long factor, ``(x)`` where precedence
@@ -234,6 +253,9 @@ class Bracket(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return self.items
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Bracket(tuple(change(x) for x in self.items), self.open)
 
 
 class Pm(Typeset):
@@ -250,6 +272,9 @@ class Pm(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return (self.left, self.right)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Pm(change(self.left), change(self.right), self.op)
 
 
 class Vector(Typeset):
@@ -286,6 +311,9 @@ class Words(Typeset):
     def children(self) -> tuple[Expr, ...]:
         return tuple(x for x in (self.of, self.then) if x is not None)
 
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Words(self.words, *(None if x is None else change(x) for x in (self.of, self.then)))
+
 
 class Prime(Typeset):
     """``alpha''``: a derivative written with primes (``count`` of them)."""
@@ -298,6 +326,9 @@ class Prime(Typeset):
 
     def children(self) -> tuple[Expr, ...]:
         return (self.arg,)
+
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
+        return Prime(change(self.arg), self.count)
 
 
 # ---- building -----------------------------------------------------------------
@@ -462,58 +493,27 @@ class Prose:
 
 def map_values(expr: Expr, sym: Callable[[Sym], Sym],
                quantity: Callable[[Quantity], Quantity]) -> Expr:
-    """The tree with each symbol and each quantity changed (``--units us``)."""
-    if isinstance(expr, Quantity):
-        return quantity(expr)
-    if isinstance(expr, Vector):  # each component as a quantity of the vector's unit
-        parts = [quantity(Quantity(c, expr.unit)) for c in expr.si]
-        return Vector(tuple(p.si for p in parts), parts[0].unit if parts else expr.unit)
-    if isinstance(expr, Words):
-        return Words(expr.words, *(None if x is None else map_values(x, sym, quantity)
-                                   for x in (expr.of, expr.then)))
-    if isinstance(expr, Prime):
-        return Prime(map_values(expr.arg, sym, quantity), expr.count)
-    if isinstance(expr, Matrix):
-        shown = [[quantity(Quantity(x, expr.unit, sig=expr.sig)) for x in row]
-                 for row in expr.rows]
-        unit = shown[0][0].unit if shown and shown[0] else expr.unit
-        return Matrix(tuple(tuple(x.si for x in row) for row in shown), unit,
-                      shown[0][0].sig if shown and shown[0] else expr.sig)
-    if isinstance(expr, Bracket):
-        return Bracket(tuple(map_values(x, sym, quantity) for x in expr.items), expr.open)
-    if isinstance(expr, Pm):
-        return Pm(map_values(expr.left, sym, quantity), map_values(expr.right, sym, quantity),
-                  expr.op)
-    if isinstance(expr, Integral):
-        return Integral(map_values(expr.lower, sym, quantity),
-                        map_values(expr.upper, sym, quantity),
-                        map_values(expr.body, sym, quantity))
-    if isinstance(expr, Rel):
-        return Rel(None if expr.first is None else map_values(expr.first, sym, quantity),
-                   tuple((op, map_values(rhs, sym, quantity)) for op, rhs in expr.rest))
-    if isinstance(expr, (Cross, Dot)):
-        return type(expr)(map_values(expr.left, sym, quantity),
-                          map_values(expr.right, sym, quantity))
-    if isinstance(expr, Fn):
-        return Fn(expr.name, tuple(map_values(x, sym, quantity) for x in expr.args), expr.sep)
-    if isinstance(expr, Total):
-        return Total(map_values(expr.body, sym, quantity))
-    if isinstance(expr, Sign):
-        return Sign(expr.sign, map_values(expr.arg, sym, quantity))
-    if isinstance(expr, Deriv):
-        return expr
-    if isinstance(expr, Mat):
-        return Mat(tuple(tuple(map_values(x, sym, quantity) for x in row) for row in expr.rows))
-    if isinstance(expr, Neg):
-        return Neg(map_values(expr.arg, sym, quantity))
-    if isinstance(expr, BinOp):
-        return type(expr)(map_values(expr.left, sym, quantity),
-                          map_values(expr.right, sym, quantity))
-    if isinstance(expr, Call):
-        return Call(expr.name, tuple(map_values(a, sym, quantity) for a in expr.args))
-    if isinstance(expr, Let):
-        return Let(sym(expr.sym), map_values(expr.body, sym, quantity))
-    return map_syms(expr, sym)
+    """The tree with each symbol and each quantity changed (``--units us``): a vector's
+    and a matrix's entries each as a quantity of their unit; one walk, `map_tree`."""
+    def change(node: Expr) -> Expr | None:
+        if isinstance(node, Sym):
+            return sym(node)
+        if isinstance(node, Quantity):
+            return quantity(node)
+        if isinstance(node, Vector):
+            parts = [quantity(Quantity(c, node.unit)) for c in node.si]
+            return Vector(tuple(p.si for p in parts),  # type: ignore[misc]
+                          parts[0].unit if parts else node.unit)
+        if isinstance(node, Matrix):
+            shown = [[quantity(Quantity(x, node.unit, sig=node.sig)) for x in row]
+                     for row in node.rows]
+            unit = shown[0][0].unit if shown and shown[0] else node.unit
+            return Matrix(tuple(tuple(x.si for x in row)  # type: ignore[misc]
+                                for row in shown), unit,
+                          shown[0][0].sig if shown and shown[0] else node.sig)
+        return None
+
+    return map_tree(expr, change)
 
 
 def deriv_space(name: str) -> str:

@@ -18,21 +18,8 @@ from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num
                        Quantity, Rel, Sum, Sym, Text, Tuple)
 
 
-class NodePrinter:
+class NodePrinter(E.Printer):
     """``values``: the substitution (each symbol's value and unit), else the formula."""
-
-    def __init__(self, values: bool = False) -> None:
-        self.values = values
-
-    def doprint(self, node: E.Expr) -> Node:
-        return self._print(node)
-
-    def _print(self, node: E.Expr) -> Node:
-        for cls in type(node).__mro__:
-            method = getattr(self, f"_print_{cls.__name__}", None)
-            if method is not None:
-                return method(node)
-        raise TypeError(f"no printer for {type(node).__name__}")
 
     def operand(self, parent: E.Expr, child: E.Expr, right: bool = False) -> Node:
         node = self._print(child)

@@ -22,16 +22,28 @@ from __future__ import annotations
 import functools
 import re
 from html import escape as _escape
-from typing import Callable, TypeVar
+from typing import Any, Callable, Sequence, TypeVar
 
 from ..core.work import num
 from ..solving.solve import Result
 from . import mathml
-from .mathprint import text as plain_text
-from .mathml import MathMLPrinter, math_element
-from .mathtree import BinOp, Node, Num, Quantity, Rel
+from .conventions import unit_spelling
+from .document import (
+    NO_KEYS,
+    Keys,
+    Writer,
+    answer_lhs,
+    equation_tag,
+    pack,
+    step_pieces,
+    walk,
+    width,
+)
 from .exprnodes import prose_nodes, symbol_node
-from .writeup import _answer_lhs, answer_symbol, _split_keys, _step_pieces, _tag, keys_of, width
+from .formats import Format
+from .mathml import MathMLPrinter, math_element
+from .mathprint import text as plain_text
+from .mathtree import BinOp, Node, Num, Quantity, Rel
 
 _T = TypeVar("_T")
 
@@ -170,10 +182,10 @@ def _math(node: Node, display: bool = False) -> str:
     return math_element(formula_mathml(node, display), display=display)
 
 
-def prose_html(text: str) -> str:
-    """Words, escaped; the file's keys (psi_rate) as words. Maths in a sentence is a tree
-    (`core.prose`, `prose_pieces_html`), never read from its words."""
-    return "".join(escape(piece) for _, piece in _split_keys(text))
+def prose_html(text: str, keys: Keys = NO_KEYS) -> str:
+    """Words, escaped; the file's keys (psi_rate, in ``keys``) as words. Maths in a sentence
+    is a tree (`core.prose`, `prose_pieces_html`), never read from its words."""
+    return keys.words(text, escape)
 
 
 @_memo
@@ -214,8 +226,7 @@ def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
     terms = _terms(piece)
     if width(piece) <= budget or len(terms) == 1:
         return [(printer.doprint(piece), width(piece))]
-    rows: list[tuple[str, float]] = []
-    line, used = "", 0.0
+    items = []
     for sign, term in terms:
         if sign in ("+", "-"):
             # printed against a 0 that is then dropped: "<mrow><mn>0</mn><mo>+</mo>..."
@@ -225,20 +236,14 @@ def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
             op = {" ": mathml.INVISIBLE_TIMES, "*": "<mo>⋅</mo>", ".": "<mo>⋅</mo>",
                   "x": "<mo>×</mo>"}[sign]
             factor = printer.parenthesize(term, mathml.PRECEDENCE["*"])
-            if sign == " " and line:
+            if sign == " ":  # never the first: that has no sign
                 op = mathml.THIN + op
             text = f"<mrow>{op}{factor}</mrow>"
         else:
             text = printer.doprint(term) if _is_sum(piece) else \
                 printer.parenthesize(term, mathml.PRECEDENCE["*"])
-        w = width(term) + (3 if sign in ("+", "-") else 1)
-        if line and used + w > budget:
-            rows.append((line, used))
-            line, used = "", 0.0
-        line += text
-        used += w
-    rows.append((line, used))
-    return rows
+        items.append((text, width(term) + (3 if sign in ("+", "-") else 1)))
+    return [("".join(row), used) for row, used in pack(items, budget)]
 
 
 @_memo
@@ -278,7 +283,7 @@ def _equation(lhs: Node | None, pieces: list[Node], relation: str = "=") -> tupl
                         display=True), wide
 
 
-def _eq_div(math: str, wide: bool, tag: str = "", note: str = "") -> str:
+def _eq_div(math: str, wide: bool, tag: str = "", note: str = "", keys: Keys = NO_KEYS) -> str:
     """An equation's box: the maths (focusable when it may scroll), its chapter number."""
     focus = ' tabindex="0" role="group" aria-label="equation (scrolls sideways)"' if wide else ""
     out = f'<div class="eq"><div class="m"{focus}>{math}</div>'
@@ -286,25 +291,25 @@ def _eq_div(math: str, wide: bool, tag: str = "", note: str = "") -> str:
         out += f'<span class="eqno">(Eq. {escape(tag)})</span>'
     out += "</div>"
     if note:
-        out += f'<p class="stepnote">{prose_html(note)}</p>'
+        out += f'<p class="stepnote">{prose_html(note, keys)}</p>'
     return out
 
 
-def _step_html(step) -> str:
+def _step_html(step: Any, keys: Keys = NO_KEYS) -> str:
     if step.symbol:
-        lhs, pieces = _step_pieces(step)  # what does not parse is a Tex node: its plain text
-        tag, rest = _tag(step)
+        lhs, pieces = step_pieces(step)
+        tag, rest = equation_tag(step)
         prose = getattr(step, "prose", None)
         notes = ([f"({rest})"] if rest else []) + ([step.text] if step.text and prose is None
                                                    else [])
         math, wide = _equation(lhs, pieces)
-        out = _eq_div(math, wide, tag, " ".join(notes))
+        out = _eq_div(math, wide, tag, " ".join(notes), keys)
         if prose is not None:  # a note of words and trees
-            out += f'<p class="stepnote">{prose_pieces_html(prose)}</p>'
+            out += f'<p class="stepnote">{prose_pieces_html(prose, keys)}</p>'
         return out
     if getattr(step, "prose", None) is not None:  # words and trees: nothing parsed
-        return _prose_step_html(step.prose)
-    return f"<p>{prose_html(step.text.strip())}</p>"  # words only
+        return _prose_step_html(step.prose, keys)
+    return f"<p>{prose_html(step.text.strip(), keys)}</p>"  # words only
 
 
 def _relation_html(tree: Node, tag: str = "") -> str:
@@ -318,26 +323,28 @@ def _relation_html(tree: Node, tag: str = "") -> str:
     return _eq_div(math, wide, tag)
 
 
-def _prose_step_html(prose) -> str:
+def _prose_step_html(prose: Any, keys: Keys = NO_KEYS) -> str:
     """A line written as words and trees: a relation displayed, else a paragraph."""
     equation = prose.equation()
     if equation is not None:
         rel, tag = equation
-        return _relation_html(prose_nodes(type(prose)((rel,)))[0], tag)
-    return f"<p>{prose_pieces_html(prose)}</p>"
+        tree = prose_nodes(type(prose)((rel,)))[0]
+        assert not isinstance(tree, str)
+        return _relation_html(tree, tag)
+    return f"<p>{prose_pieces_html(prose, keys)}</p>"
 
 
-def _warning_html(text: str, solution) -> str:
+def _warning_html(text: str, solution: Any, keys: Keys = NO_KEYS) -> str:
     prose = solution.warning_prose.get(text)
-    return prose_html(text) if prose is None else prose_pieces_html(prose)
+    return prose_html(text, keys) if prose is None else prose_pieces_html(prose, keys)
 
 
-def prose_pieces_html(prose) -> str:
+def prose_pieces_html(prose: Any, keys: Keys = NO_KEYS) -> str:
     """A sentence's words escaped (a key of the file as words), its trees inline MathML."""
     out = []
     for piece in prose_nodes(prose):
         if isinstance(piece, str):
-            out += [escape(part) for _, part in _split_keys(piece)]
+            out += [escape(part) for _, part in keys.split(piece)]
         else:
             out.append(_inline(piece))
     return "".join(out)
@@ -354,12 +361,12 @@ def _heading(level: int, text: str, ident: str | None = None) -> str:
 def _quantity(value: float | str, unit: str | None) -> str:
     if isinstance(value, str):
         return escape(value.replace("_", " "))
-    unit = {"kg*m^2": "kg m^2", "N*m": "N m", "kg*m^2/s": "kg m^2/s"}.get(unit or "", unit or "")
+    unit = unit_spelling(unit or "")
     node: Node = Quantity(Num(num(value)), unit) if unit else Num(num(value))
     return _math(node)
 
 
-def _given_table(result: Result, level: int) -> str:
+def _given_table(result: Result, level: int, keys: Keys = NO_KEYS) -> str:
     solution = result.solution
     rows = []
     for g in solution.given:
@@ -368,7 +375,7 @@ def _given_table(result: Result, level: int) -> str:
         text = g.text.replace("_", " ") if isinstance(g.si_value, str) else g.text
         note = f" ({escape(g.note)})" if g.note else ""
         if g.note_prose is not None:
-            note = f" ({prose_pieces_html(g.note_prose)})"
+            note = f" ({prose_pieces_html(g.note_prose, keys)})"
         cell = escape(text)
         if g.shown is not None:  # the quantity as read, as maths
             cell = _math(Quantity(Num(g.shown[0]), g.shown[1]) if g.shown[1]
@@ -389,10 +396,8 @@ def _answers_table(result: Result, level: int) -> str:
             label = answer.labels[i] if i < len(answer.labels) else ""
             parts.append(_quantity(value, answer.unit if not isinstance(value, str) else None)
                          + (f" ({escape(label)})" if label else ""))
-        lhs = ""
-        if _answer_lhs(answer):
-            tree = answer_symbol(answer)
-            lhs = _math(tree) if tree is not None else ""
+        tree = answer_lhs(answer)
+        lhs = _math(tree) if tree is not None else ""
         values = ", ".join(parts) if parts else "none"
         rows.append(f'<tr id="{escape(_answer_id(result, name))}"><th scope="row">'
                     f"{escape(name.replace('_', ' '))}</th><td>{lhs}</td><td>{values}</td></tr>")
@@ -430,42 +435,55 @@ def worked_answer(result: Result, level: int = 2, picture: bool = True,
     figure of the motion (render.animate.html_fragment) placed after the picture. Needs no
     stylesheet to read; `STYLE` lays it out (rows, tables, dark mode).
     """
-    with keys_of(result.problem.kind):
-        return _worked_answer(result, level, picture, ident or anchor(result), animation)
+    writer = HtmlWriter(Keys.of(result.problem.kind), level, picture, ident or anchor(result),
+                        animation)
+    return "\n".join(x for x in walk(result, writer) + ["</article>"] if x)
 
 
-def _worked_answer(result: Result, level: int, picture: bool, ident: str,
-                   animation: str = "") -> str:
-    problem, solution = result.problem, result.solution
-    title = f"{problem.id}: {problem.title}" if problem.title else str(problem.id)
-    out = [f'<article class="problem" aria-labelledby="{escape(ident)}">',
-           _heading(level, escape(title), ident)]
-    meta = f"Kind: {escape(problem.kind.name.replace('_', ' '))}."
-    if problem.source:
-        meta += f" Source: {escape(problem.source)}."
-    out.append(f'<p class="meta">{meta}</p>')
-    for note in problem.notes:
-        out.append(f"<blockquote><p>{prose_html(note)}</p></blockquote>")
-    if picture:
-        out.append(_figure(result, ident))
-    out.append(animation)
-    out.append(_given_table(result, level + 1))
-    for section in solution.sections:
-        out.append(_heading(level + 1, prose_html(section.title) if section.prose is None
-                            else prose_pieces_html(section.prose)))
-        out += [_step_html(step) for step in section.steps]
-    if solution.checks:
-        out.append(_heading(level + 1, "Check"))
-        out += [_step_html(step) for step in solution.checks]
-    out.append(_answers_table(result, level + 1))
-    if solution.warnings:
-        out.append(f'<section class="warnings" aria-label="warnings">'
-                   f"{_heading(level + 1, 'Warnings')}<ul>"
-                   + "".join(f"<li>{_warning_html(w, solution)}</li>"
-                             for w in solution.warnings)
-                   + "</ul></section>")
-    out.append("</article>")
-    return "\n".join(x for x in out if x)
+class HtmlWriter(Writer):
+    """The parts of a worked answer as HTML: an <article> (closed by the caller), headings
+    from ``level``, the picture and an animation before the Given table."""
+
+    def __init__(self, keys: Keys = NO_KEYS, level: int = 2, picture: bool = True,
+                 ident: str = "", animation: str = "") -> None:
+        super().__init__(keys)
+        self.level, self.picture, self.ident, self.animation = level, picture, ident, animation
+
+    def head(self, result: Any) -> list[str]:
+        problem, ident = result.problem, self.ident
+        title = f"{problem.id}: {problem.title}" if problem.title else str(problem.id)
+        meta = f"Kind: {escape(problem.kind.name.replace('_', ' '))}."
+        if problem.source:
+            meta += f" Source: {escape(problem.source)}."
+        return [f'<article class="problem" aria-labelledby="{escape(ident)}">',
+                _heading(self.level, escape(title), ident), f'<p class="meta">{meta}</p>']
+
+    def note(self, note: str) -> list[str]:
+        return [f"<blockquote><p>{prose_html(note, self.keys)}</p></blockquote>"]
+
+    def given(self, result: Any) -> list[str]:
+        out = [_figure(result, self.ident)] if self.picture else []
+        return out + [self.animation, _given_table(result, self.level + 1, self.keys)]
+
+    def section(self, section: Any) -> list[str]:
+        return [_heading(self.level + 1, prose_html(section.title, self.keys)
+                         if section.prose is None else prose_pieces_html(section.prose, self.keys))]
+
+    def checks(self) -> list[str]:
+        return [_heading(self.level + 1, "Check")]
+
+    def step(self, step: Any) -> list[str]:
+        return [_step_html(step, self.keys)]
+
+    def answers(self, result: Any) -> list[str]:
+        return [_answers_table(result, self.level + 1)]
+
+    def warnings(self, solution: Any) -> list[str]:
+        return [f'<section class="warnings" aria-label="warnings">'
+                f"{_heading(self.level + 1, 'Warnings')}<ul>"
+                + "".join(f"<li>{_warning_html(w, solution, self.keys)}</li>"
+                          for w in solution.warnings)
+                + "</ul></section>"]
 
 
 def _figure(result: Result, ident: str) -> str:
@@ -481,7 +499,7 @@ def _figure(result: Result, ident: str) -> str:
 
 # ---- pages ------------------------------------------------------------------------
 
-def csp(scripts: list[str] = ()) -> str:
+def csp(scripts: Sequence[str] = ()) -> str:
     """The page's Content-Security-Policy: nothing leaves the page, and the only scripts
     that run are ``scripts`` (the embedded animations' players), allowed by their hash."""
     if not scripts:
@@ -494,7 +512,7 @@ def csp(scripts: list[str] = ()) -> str:
     return f"{CSP}; script-src {hashes}"
 
 
-def document(title: str, body: str, scripts: list[str] = ()) -> str:
+def document(title: str, body: str, scripts: Sequence[str] = ()) -> str:
     """A whole HTML document around ``body`` (inside <main>); ``scripts``: the inline
     scripts of ``body`` the page may run."""
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -508,7 +526,7 @@ def document(title: str, body: str, scripts: list[str] = ()) -> str:
 
 
 def page(results: list[Result], title: str | None = None,
-         articles: list[str] | None = None, scripts: list[str] = ()) -> str:
+         articles: list[str] | None = None, scripts: Sequence[str] = ()) -> str:
     """One self-contained page: a single problem, or several with a contents list.
     ``articles``: their `worked_answer`, already rendered (at level 1 for one problem, 2
     for several: the command renders each file on its own, so that a failure is that
@@ -586,3 +604,23 @@ def check_body(run, results: dict[str, Result] | None = None, level: int = 2) ->
         body.append(_heading(level, "Worked answers"))
         body += [worked_answer(r, level=level + 1) for r in results.values()]
     return "\n".join(body)
+
+
+class _Html(Format):
+    """Every file's worked answer on one self-contained page."""
+
+    name = "html"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return worked_answer(result.solved, level=level)
+
+    def composes(self, standalone: bool) -> bool:
+        return True
+
+    def document(self, results: Sequence[Any], pieces: Sequence[str | None],
+                 standalone: bool = False, scripts: Sequence[str] = ()) -> str:
+        articles = None if any(p is None for p in pieces) else [str(p) for p in pieces]
+        return page([r.solved for r in results], articles=articles, scripts=list(scripts))
+
+
+HTML = _Html()

@@ -1,40 +1,71 @@
 """Printers for `mathtree` expressions, on the design of sympy's printers.
 
-One base `Printer` dispatches ``_print_<Node>`` by class name and holds one
-precedence table and `parenthesize`. `LatexPrinter` typesets (``phidot`` ->
-``\\dot{\\phi}``, a/b -> ``\\frac{a}{b}`` in display, ``K x k`` -> ``K \\times
-k``); `TextPrinter` writes the plain form back (``phidot sin(theta)``), one
-canonical spelling per tree, so ``parse(text(tree)) == tree``.
-
-Symbol names: Greek names become Greek letters; a trailing ``dot``/``ddot``
-an accent; trailing digits or what follows ``_`` a subscript (``theta0`` and
-``theta_0`` -> theta sub 0, ``u1`` -> u sub 1); a multi-letter subscript
-is upright (``psidot_min`` -> psi-dot sub min); ``dH``, ``dtheta`` a
-differential (upright d).
+Every printer subclasses the one `core.expr.Printer` (``_print_<Node>``
+dispatch by class, settings as attributes). `TypesetPrinter` holds what
+LaTeX and MathML decide alike: one precedence table and `parenthesize`, the
+sign folding of a sum, where a fraction is stacked, when a product's factor is
+bracketed, a power's base, a function's argument; its subclasses only spell
+the result. `LatexPrinter` typesets (``phidot`` -> ``\\dot{\\phi}``, a/b ->
+``\\frac{a}{b}`` in display, ``K x k`` -> ``K \\times k``), `mathml.MathMLPrinter`
+writes MathML, `TextPrinter` writes the plain form back (``phidot sin(theta)``).
+How names, numbers and units are set is `conventions`.
 """
 
 from __future__ import annotations
 
-import re
+from typing import Any, ClassVar
 
-from .mathtree import GREEK, _symbolic, dotted, tokens
-from .mathtree import (Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Rel, Sym, Text,
-                       Tuple)
+from ..core.expr import Printer as BasePrinter
+from .conventions import (
+    DEGREES,
+    FUNCTIONS,
+    LATEX,
+    RELATIONS,
+    SIGNS,
+    NamePart,
+    number_parts,
+    split_symbol,
+    symbol_parts,
+    unit_parts,
+)
+from .mathtree import (
+    Abs,
+    BinOp,
+    Call,
+    Group,
+    Neg,
+    Node,
+    Num,
+    Pow,
+    Prime,
+    Quantity,
+    Rel,
+    Sym,
+    Text,
+    Tuple,
+)
+
+__all__ = [
+    "RELATIONS_TEX",
+    "LatexPrinter",
+    "TextPrinter",
+    "TypesetPrinter",
+    "latex",
+    "number_tex",
+    "split_symbol",
+    "symbol_tex",
+    "text",
+    "text_escape",
+    "unit_tex",
+]
 
 #: binding strength, loosest first
 PRECEDENCE = {"Rel": 0, "+": 10, "-": 10, "+-": 10, "-+": 10, "*": 20, "/": 20, "x": 20,
               ".": 20, " ": 20, "Neg": 25, "Pow": 30, "Prime": 40, "Atom": 50}
 
-RELATIONS_TEX = {"=": "=", ">=": r"\ge", "<=": r"\le", "<": "<", ">": ">", ">>": r"\gg",
-                 "<<": r"\ll", "->": r"\to", "~": r"\approx", "!=": r"\ne"}
-SUM_TEX = {"+": "+", "-": "-", "+-": r"\pm", "-+": r"\mp"}
-FUNCTION_TEX = {"sin": r"\sin", "cos": r"\cos", "tan": r"\tan", "cot": r"\cot", "sec": r"\sec",
-                "csc": r"\csc", "exp": r"\exp", "ln": r"\ln", "log": r"\log", "sinh": r"\sinh",
-                "cosh": r"\cosh", "tanh": r"\tanh", "det": r"\det", "arcsin": r"\arcsin",
-                "arccos": r"\arccos", "arctan": r"\arctan", "asin": r"\arcsin",
-                "acos": r"\arccos", "atan": r"\arctan", "max": r"\max", "min": r"\min",
-                "atan2": r"\operatorname{atan2}", "Re": r"\operatorname{Re}",
-                "Im": r"\operatorname{Im}", "sign": r"\operatorname{sign}"}
+RELATIONS_TEX = {op: spelt[LATEX] for op, spelt in RELATIONS.items()}
+SUM_TEX = {op: spelt[LATEX] for op, spelt in SIGNS.items()}
+FUNCTION_TEX = {name: spelt[LATEX] for name, spelt in FUNCTIONS.items()}
 
 
 def precedence(node: Node) -> int:
@@ -55,15 +86,8 @@ def precedence(node: Node) -> int:
     return PRECEDENCE["Atom"]
 
 
-class Printer:
-    """Dispatch on the node's class: ``_print_Sym`` prints a Sym."""
-
-    def doprint(self, node: Node) -> str:
-        return self._print(node)
-
-    def _print(self, node: Node) -> str:
-        method = getattr(self, f"_print_{type(node).__name__}")
-        return method(node)
+class Printer(BasePrinter):
+    """A printer of typesetting nodes: `parenthesize` by the precedence table."""
 
     def parenthesize(self, node: Node, level: int, strict: bool = False) -> str:
         """The node, in brackets when it binds more loosely than ``level``."""
@@ -71,9 +95,6 @@ class Printer:
         if p < level or (strict and p == level):
             return self.brackets(self._print(node))
         return self._print(node)
-
-    def brackets(self, inner: str) -> str:
-        return f"({inner})"
 
 
 # ---- text inside LaTeX ------------------------------------------------------
@@ -89,50 +110,25 @@ def text_escape(text: str) -> str:
 
 # ---- symbols ----------------------------------------------------------------
 
-_DIGITS = re.compile(r"([A-Za-z]+?)(\d+)$")
-
-
-def split_symbol(name: str) -> tuple[str, list[str]]:
-    """``theta_0`` -> ("theta", ["0"]); ``u1`` -> ("u", ["1"]); ``F_A,weight`` ->
-    ("F", ["A", "weight"]); ``K0_pp`` -> ("K", ["0", "pp"])."""
-    base, _, sub = name.partition("_")
-    subs = sub.split(",") if sub else []
-    if len(base) == 2 and base[0].isupper() and base[1] in "xyz":
-        return base[0], [base[1]] + subs  # Rz: the rotation about z
-    m = _DIGITS.match(base)
-    if m and (m.group(1) in GREEK or len(m.group(1)) <= 2 or dotted(m.group(1))
-              or m.group(1) in ("phidot", "thetadot", "psidot")):
-        base, subs = m.group(1), [m.group(2)] + subs
-    return base, subs
-
-
-def _base_tex(base: str) -> str:
-    if base in GREEK:
-        return "\\" + base
-    d = dotted(base)
-    if d:
-        return f"\\{d[1]}{{{_base_tex(d[0])}}}"
-    if len(base) == 1:
-        return base
-    if base[0] == "d" and _symbolic(base[1:]):
-        return r"\mathrm{d}" + _base_tex(base[1:])
-    return f"\\mathrm{{{base}}}"
-
-
-def _sub_tex(part: str) -> str:
-    if part.isdigit() or len(part) == 1:
-        return part
-    if part in GREEK or dotted(part):
-        return _base_tex(part)
-    return f"\\mathrm{{{part}}}"
+def _spell_tex(part: NamePart) -> str:
+    kind = part[0]
+    if kind == "greek":
+        return "\\" + part[1]
+    if kind == "accent":
+        return f"\\{part[1]}{{{_spell_tex(part[2])}}}"
+    if kind == "differential":
+        return r"\mathrm{d}" + _spell_tex(part[1])
+    if kind == "word":
+        return f"\\mathrm{{{part[1]}}}"
+    return str(part[1])  # a letter, digits, one character
 
 
 def symbol_tex(name: str) -> str:
     """One symbol name in LaTeX: ``psidot_min`` -> ``\\dot{\\psi}_{\\mathrm{min}}``."""
-    base, subs = split_symbol(name)
-    out = _base_tex(base)
+    base, subs = symbol_parts(name)
+    out = _spell_tex(base)
     if subs:
-        out += "_{" + ",".join(_sub_tex(p) for p in subs) + "}"
+        out += "_{" + ",".join(_spell_tex(p) for p in subs) + "}"
     return out
 
 
@@ -140,141 +136,203 @@ def number_tex(text: str) -> str:
     """``3.869e-05`` -> ``3.869\\times 10^{-5}``."""
     if text.endswith("i"):
         return number_tex(text[:-1]) + r"\,\mathrm{i}"
-    mantissa, _, exponent = text.lower().partition("e")
-    if not exponent:
+    sign, mantissa, power = number_parts(text)
+    if power is None:
         return text
-    return f"{mantissa}\\times 10^{{{int(exponent)}}}"
+    return f"{sign}{mantissa}\\times 10^{{{power}}}"
 
 
 def unit_tex(unit: str) -> str:
     """A unit upright: ``kg m^2/s`` -> ``\\mathrm{kg\\,m^{2}/s}``."""
-    out = []
-    toks = tokens(unit)
-    k = 0
-    while k < len(toks):
-        t = toks[k]
-        if t.space and out:
-            out.append(r"\,")
-        if t.text == "^":
-            exp = ""
-            k += 1
-            while k < len(toks) and (toks[k].text == "-" or toks[k].kind == "num"):
-                exp += toks[k].text
-                k += 1
-            out.append(f"^{{{exp}}}")
-            continue
-        out.append(t.text if t.kind in ("name", "num") or t.text in "/*" else "")
-        k += 1
+    out: list[str] = []
+    for kind, part in unit_parts(unit):
+        if kind == "space":
+            if out:
+                out.append(r"\,")
+        elif kind == "power":
+            out.append(f"^{{{part}}}")
+        else:
+            out.append(part if kind in ("name", "num") or part in "/*" else "")
     return "\\mathrm{" + "".join(out).replace("*", r"\,") + "}"
 
 
-# ---- LaTeX ------------------------------------------------------------------
+# ---- what LaTeX and MathML decide alike ----------------------------------------
 
-class LatexPrinter(Printer):
-    """LaTeX maths (amsmath). ``display``: fractions stacked; otherwise a/b on the line."""
+def base_needs_brackets(base: Node) -> bool:
+    """A power's base in brackets: anything looser than an atom, a power, a quotient, a
+    quantity, a number with an exponent."""
+    return precedence(base) < PRECEDENCE["Atom"] or isinstance(base, Pow) \
+        or (isinstance(base, BinOp) and base.op == "/") or isinstance(base, Quantity) \
+        or (isinstance(base, Num) and "e" in base.text.lower())
+
+
+class TypesetPrinter(Printer):
+    """The decisions of typesetting, shared by LaTeX and MathML; a subclass spells them
+    (the hooks below). ``display``: fractions stacked (a fraction inside one is written on
+    the line); otherwise a/b on the line, as inline maths in a sentence."""
+
+    #: how a product's operator is spelt: "/", "x", "." and "*" (a written dot)
+    PRODUCTS: ClassVar[dict[str, str]] = {}
 
     def __init__(self, display: bool = True) -> None:
+        super().__init__()
         self.display = display
 
-    def brackets(self, inner: str, open_: str = "(", close: str = ")") -> str:
-        if self.display and any(tall in inner for tall in (r"\frac", r"\sqrt", r"\int",
-                                                           r"\sum")):
-            return f"\\left{open_}{inner}\\right{close}"
-        return f"{open_}{inner}{close}"
+    # ---- hooks: how the format spells what was decided
+    def number(self, text: str) -> str:
+        raise NotImplementedError
 
+    def symbol(self, name: str) -> str:
+        raise NotImplementedError
+
+    def words(self, text: str) -> str:
+        raise NotImplementedError
+
+    def with_unit(self, value: str, unit: str) -> str:
+        raise NotImplementedError
+
+    def signed(self, sign: str, inner: str) -> str:
+        raise NotImplementedError
+
+    def sum(self, left: str, op: str, right: str) -> str:
+        raise NotImplementedError
+
+    def starts_minus(self, node: Node) -> bool:
+        """Whether a term after a sign is written starting with a minus (then it is
+        bracketed): the one sign rule of both formats, read from the node as printed (a
+        stacked fraction, a bracket or a subscripted power's base starts otherwise)."""
+        while True:
+            if isinstance(node, Neg):
+                return node.sign == "-"
+            if isinstance(node, Num):
+                return node.text.startswith("-")
+            if isinstance(node, Quantity):
+                if node.unit in DEGREES and isinstance(node.value, Num) \
+                        and "e" in node.value.text.lower():
+                    return False  # {-1.5\times 10^{-5}}^{\circ}: braced
+                node = node.value
+            elif isinstance(node, BinOp):
+                if node.op == "/" and self.display:
+                    return False  # a stacked fraction
+                level = PRECEDENCE["+"] if node.op in SIGNS else PRECEDENCE["*"]
+                if precedence(node.left) < level:
+                    return False  # bracketed
+                node = node.left
+            elif isinstance(node, Pow):
+                base = node.base
+                if isinstance(base, Group) or base_needs_brackets(base) or isinstance(base, Sym):
+                    return False  # bracketed, braced, or a name
+                node = base
+            elif isinstance(node, Tuple) and node.items:
+                node = node.items[0]
+            elif isinstance(node, Prime):
+                if precedence(node.body) < PRECEDENCE["Atom"]:
+                    return False  # bracketed
+                node = node.body
+            else:
+                return False
+
+    def frac(self, num: str, den: str) -> str:
+        raise NotImplementedError
+
+    def infix(self, left: str, op: str, right: str) -> str:
+        raise NotImplementedError
+
+    def beside(self, node: BinOp, left: str, right: str) -> str:
+        """Words beside maths: ``phidot (slow)``, ``at 30 deg``."""
+        raise NotImplementedError
+
+    def number_follows(self, node: Node, text: str) -> bool:
+        """Whether a juxtaposed factor starts with a number (then a dot is written)."""
+        raise NotImplementedError
+
+    def juxtapose(self, node: BinOp, left: str, right: str) -> str:
+        raise NotImplementedError
+
+    def root(self, inner: str) -> str:
+        raise NotImplementedError
+
+    def function(self, name: str, power: str | None) -> str:
+        raise NotImplementedError
+
+    def apply(self, head: str, arg: str, bracketed: bool) -> str:
+        raise NotImplementedError
+
+    def separator(self, sep: str) -> str:
+        raise NotImplementedError
+
+    def relations(self, first: str | None, rest: list[tuple[str, str]]) -> str:
+        raise NotImplementedError
+
+    def primed(self, inner: str, count: int) -> str:
+        raise NotImplementedError
+
+    # ---- the decisions
     def _print_Num(self, node: Num) -> str:
-        return number_tex(node.text)
+        return self.number(node.text)
 
     def _print_Sym(self, node: Sym) -> str:
-        return symbol_tex(node.name)
+        return self.symbol(node.name)
 
     def _print_Text(self, node: Text) -> str:
-        return f"\\text{{{text_escape(node.text)}}}"
-
-    def _print_Tex(self, node) -> str:
-        return node.latex
+        return self.words(node.text)
 
     def _print_Quantity(self, node: Quantity) -> str:
-        value = self._print(node.value)
-        if node.unit in ("deg", "degree", "degrees"):
-            if "\\times" in value:
-                value = "{" + value + "}"
-            return value + "^{\\circ}"
-        return f"{value}\\,{unit_tex(node.unit)}"
+        return self.with_unit(self._print(node.value), node.unit)
 
     def _print_Neg(self, node: Neg) -> str:
         body = node.body
         inner = self._print(body) if isinstance(body, (Num, Quantity)) else \
             self.parenthesize(body, PRECEDENCE["Neg"]) if not isinstance(body, Neg) \
             else self.brackets(self._print(body))
-        return SUM_TEX[node.sign].replace("\\pm", "\\pm ").replace("\\mp", "\\mp ") + inner
+        return self.signed(node.sign, inner)
 
     def _print_BinOp(self, node: BinOp) -> str:
         op = node.op
-        if op in SUM_TEX:
+        if op in SIGNS:
             left = self.parenthesize(node.left, PRECEDENCE["+"])
             right, op = _fold(node.right, op)
-            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=True) \
-                if op in ("-", "+-", "-+") else self.parenthesize(right, PRECEDENCE["+"])
-            if rtext.startswith("-") and not isinstance(right, Neg):
+            strict = op in ("-", "+-", "-+")
+            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=strict)
+            bracketed = precedence(right) < PRECEDENCE["+"] or \
+                (strict and precedence(right) == PRECEDENCE["+"])
+            if not bracketed and self.starts_minus(right) and not isinstance(right, Neg):
                 rtext = self.brackets(rtext)
-            return f"{left} {SUM_TEX[op]} {rtext}"
+            return self.sum(left, op, rtext)
         if op == "/" and self.display:
-            # a fraction inside a fraction is written on the line: a/b
-            self.display = False
+            self.display = False  # a fraction inside a fraction is written on the line
             try:
                 num, den = self._print(_strip(node.left)), self._print(_strip(node.right))
             finally:
                 self.display = True
-            return f"\\frac{{{num}}}{{{den}}}"
+            return self.frac(num, den)
         left = self.parenthesize(node.left, PRECEDENCE["*"])
-        right = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
+        factor = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
         if isinstance(node.right, Neg):
-            right = self.brackets(right)
-        if op == "/":
-            return f"{left}/{right}"
-        if op == "x":
-            return f"{left} \\times {right}"
-        if op in (".", "*"):
-            return f"{left} \\cdot {right}"
-        # juxtaposition: words beside maths as they are (phidot_slow at 30 deg), a thin
-        # space after a quantity, a dot before a number
+            factor = self.brackets(factor)
+        if op in self.PRODUCTS:
+            return self.infix(left, self.PRODUCTS[op], factor)
+        # juxtaposition: words beside maths as they are (phidot_slow at 30 deg), a dot
+        # before a number
         if beside_text(node):
-            return f"{left} {right}"
-        if right[:1].isdigit() or right.startswith("-"):
-            return f"{left} \\cdot {right}"
-        if isinstance(_rightmost(node.left), Quantity):
-            return f"{left}\\,{right}"
-        return f"{left} {right}"
-
-    def _print_Pow(self, node: Pow) -> str:
-        base = node.base
-        text = self._print(base)
-        needs = precedence(base) < PRECEDENCE["Atom"] or isinstance(base, Pow) \
-            or (isinstance(base, BinOp) and base.op == "/") or isinstance(base, Quantity) \
-            or (isinstance(base, Num) and "e" in base.text.lower())
-        if isinstance(base, Group) and not text.startswith(("(", "[", "\\left")):
-            text = self.brackets(text)
-        elif needs and not isinstance(base, Group):
-            text = self.brackets(text)
-        elif isinstance(base, Sym) and "_" in text:
-            text = "{" + text + "}"
-        return f"{text}^{{{self._print(_strip(node.exp))}}}"
+            return self.beside(node, left, factor)
+        if self.number_follows(node.right, factor):
+            return self.infix(left, self.PRODUCTS["*"], factor)
+        return self.juxtapose(node, left, factor)
 
     def _print_Call(self, node: Call) -> str:
-        args = (r" \mid " if node.sep == "|" else ", ").join(self._print(a) for a in node.args)
+        args = self.separator(node.sep).join(self._print(a) for a in node.args)
         if node.name == "sqrt":
-            return f"\\sqrt{{{self._print(_strip(node.args[0]))}}}"
-        if node.name in FUNCTION_TEX:
-            head = FUNCTION_TEX[node.name]
-            if node.power is not None:
-                head += f"^{{{self._print(node.power)}}}"
+            return self.root(self._print(_strip(node.args[0])))
+        if node.name in FUNCTIONS:
+            head = self.function(node.name, None if node.power is None
+                                 else self._print(node.power))
             arg = node.args[0] if len(node.args) == 1 else None
             if arg is not None and (not node.parens or isinstance(_strip(arg), (Sym, Quantity))):
-                return f"{head} {self._print(_strip(arg))}"
+                return self.apply(head, self._print(_strip(arg)), False)
             inner = self._print(_strip(arg)) if arg is not None else args
-            return head + self.brackets(inner)
-        return symbol_tex(node.name) + self.brackets(args)
+            return self.apply(head, self.brackets(inner), True)
+        return self.apply(self.symbol(node.name), self.brackets(args), True)
 
     def _print_Group(self, node: Group) -> str:
         inner = self._print(node.body)
@@ -283,6 +341,99 @@ class LatexPrinter(Printer):
         if node.open == "[":
             return self.brackets(inner, "[", "]")
         return self.brackets(inner)
+
+    def _print_Rel(self, node: Rel) -> str:
+        first = self._print(node.first) if node.first is not None else None
+        return self.relations(first, [(op, self._print(rhs)) for op, rhs in node.rest])
+
+    def _print_Prime(self, node: Any) -> str:
+        return self.primed(self.parenthesize(node.body, PRECEDENCE["Atom"]), node.count)
+
+
+# ---- LaTeX ------------------------------------------------------------------
+
+class LatexPrinter(TypesetPrinter):
+    """LaTeX maths (amsmath). ``display``: fractions stacked; otherwise a/b on the line."""
+
+    PRODUCTS: ClassVar[dict[str, str]] = {"/": "/", "x": " \\times ", ".": " \\cdot ",
+                                          "*": " \\cdot "}
+
+    def brackets(self, inner: str, open_: str = "(", close: str = ")") -> str:
+        if self.display and any(tall in inner for tall in (r"\frac", r"\sqrt", r"\int",
+                                                           r"\sum")):
+            return f"\\left{open_}{inner}\\right{close}"
+        return f"{open_}{inner}{close}"
+
+    def number(self, text: str) -> str:
+        return number_tex(text)
+
+    def symbol(self, name: str) -> str:
+        return symbol_tex(name)
+
+    def words(self, text: str) -> str:
+        return f"\\text{{{text_escape(text)}}}"
+
+    def with_unit(self, value: str, unit: str) -> str:
+        if unit in DEGREES:
+            if "\\times" in value:
+                value = "{" + value + "}"
+            return value + "^{\\circ}"
+        return f"{value}\\,{unit_tex(unit)}"
+
+    def signed(self, sign: str, inner: str) -> str:
+        return SUM_TEX[sign].replace("\\pm", "\\pm ").replace("\\mp", "\\mp ") + inner
+
+    def sum(self, left: str, op: str, right: str) -> str:
+        return f"{left} {SUM_TEX[op]} {right}"
+
+    def frac(self, num: str, den: str) -> str:
+        return f"\\frac{{{num}}}{{{den}}}"
+
+    def infix(self, left: str, op: str, right: str) -> str:
+        return f"{left}{op}{right}"
+
+    def beside(self, node: BinOp, left: str, right: str) -> str:
+        return f"{left} {right}"
+
+    def number_follows(self, node: Node, text: str) -> bool:
+        return text[:1].isdigit() or text.startswith("-")
+
+    def juxtapose(self, node: BinOp, left: str, right: str) -> str:
+        if isinstance(_rightmost(node.left), Quantity):  # a thin space after a quantity
+            return f"{left}\\,{right}"
+        return f"{left} {right}"
+
+    def _print_Pow(self, node: Pow) -> str:
+        base = node.base
+        text = self._print(base)
+        if isinstance(base, Group) and not text.startswith(("(", "[", "\\left")):
+            text = self.brackets(text)
+        elif base_needs_brackets(base) and not isinstance(base, Group):
+            text = self.brackets(text)
+        elif isinstance(base, Sym) and "_" in text:
+            text = "{" + text + "}"
+        return f"{text}^{{{self._print(_strip(node.exp))}}}"
+
+    def root(self, inner: str) -> str:
+        return f"\\sqrt{{{inner}}}"
+
+    def function(self, name: str, power: str | None) -> str:
+        head = FUNCTION_TEX[name]
+        return head if power is None else head + f"^{{{power}}}"
+
+    def apply(self, head: str, arg: str, bracketed: bool) -> str:
+        return head + arg if bracketed else f"{head} {arg}"
+
+    def separator(self, sep: str) -> str:
+        return r" \mid " if sep == "|" else ", "
+
+    def relations(self, first: str | None, rest: list[tuple[str, str]]) -> str:
+        parts = [first] if first is not None else []
+        parts += [f"{RELATIONS_TEX[op]} {rhs}" for op, rhs in rest]
+        return " ".join(parts)
+
+    def primed(self, inner: str, count: int) -> str:
+        return inner + "'" * count
 
     def _print_Tuple(self, node: Tuple) -> str:
         return ", ".join(self._print(x) for x in node.items)
@@ -293,23 +444,14 @@ class LatexPrinter(Printer):
             return f"\\left|{inner}\\right|"
         return f"\\lvert {inner}\\rvert"
 
-    def _print_Rel(self, node: Rel) -> str:
-        parts = [self._print(node.first)] if node.first is not None else []
-        for op, rhs in node.rest:
-            parts.append(f"{RELATIONS_TEX[op]} {self._print(rhs)}")
-        return " ".join(parts)
-
-    def _print_Sum(self, node) -> str:
+    def _print_Sum(self, node: Any) -> str:
         return r"\sum " + self._print(node.body)
 
-    def _print_Integral(self, node) -> str:
+    def _print_Integral(self, node: Any) -> str:
         return (f"\\int_{{{self._print(node.lower)}}}^{{{self._print(node.upper)}}} "
                 f"{self._print(node.body)}")
 
-    def _print_Prime(self, node) -> str:
-        return self.parenthesize(node.body, PRECEDENCE["Atom"]) + "'" * node.count
-
-    def _print_Matrix(self, node) -> str:
+    def _print_Matrix(self, node: Any) -> str:
         rows = " \\\\ ".join(" & ".join(self._print(x) for x in row) for row in node.rows)
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
 
@@ -327,9 +469,6 @@ class TextPrinter(Printer):
 
     def _print_Text(self, node: Text) -> str:
         return node.text
-
-    def _print_Tex(self, node) -> str:
-        return node.plain
 
     def _print_Quantity(self, node: Quantity) -> str:
         return f"{self._print(node.value)} {node.unit}"
@@ -349,11 +488,11 @@ class TextPrinter(Printer):
             rtext = self.parenthesize(right, PRECEDENCE["+"], strict=op != "+")
             return f"{left} {op} {rtext}"
         left = self.parenthesize(node.left, PRECEDENCE["*"])
-        right = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
+        factor = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
         if isinstance(node.right, Neg):
-            right = self.brackets(right)
+            factor = self.brackets(factor)
         sep = {"/": " / ", "x": " x ", ".": " . ", "*": " * ", " ": " "}[op]
-        return f"{left}{sep}{right}"
+        return f"{left}{sep}{factor}"
 
     def _print_Pow(self, node: Pow) -> str:
         base = self.parenthesize(node.base, PRECEDENCE["Atom"])

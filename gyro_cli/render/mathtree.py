@@ -1,66 +1,13 @@
-"""Expression trees for the formulas of a worked answer.
+"""Typesetting nodes: a formula of a worked answer as the LaTeX and MathML printers set it.
 
 The kinds write their formulas as expression trees (`core.expr`,
 `core.prose`); `exprnodes` turns each into these nodes, and `mathprint` and
-`mathml` typeset them.
-The nodes are small immutable records, compared by value (tests build the
-expected trees by hand).
+`mathml` typeset them. The nodes are small immutable records, compared by value.
 """
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
-
-# ---- names and tokens, shared by the parser and the printers ------------------------
-
-GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-         "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega",
-         "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega"}
-_TOKEN = re.compile(r"""
-    (?P<num>\d+(?:\.\d+)?(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)
-  | (?P<name>[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+(?:,[A-Za-z][A-Za-z0-9]*)?)?)
-  | (?P<op>>=|<=|->|>>|<<|\+-|-\+|!=|[-+*/=<>^(),;:.!?'|\[\]~])
-  | (?P<space>\s+)
-  | (?P<other>.)
-""", re.X | re.S)
-
-
-@dataclass(frozen=True)
-class Token:
-    kind: str   # num, name, op, other, space
-    text: str
-    space: bool  # whitespace before it
-
-
-def tokens(text: str, keep_space: bool = False) -> list[Token]:
-    out: list[Token] = []
-    space = False
-    for m in _TOKEN.finditer(text):
-        if m.lastgroup == "space":
-            space = True
-            if keep_space:
-                out.append(Token("space", m.group(), False))
-            continue
-        out.append(Token(m.lastgroup, m.group(), space))
-        space = False
-    return out
-
-
-def dotted(name: str) -> tuple[str, str] | None:
-    """``phidot`` -> ("phi", "dot"), ``thetaddot`` -> ("theta", "ddot")."""
-    for suffix in ("ddot", "dot"):
-        base = name[: -len(suffix)]
-        if name.endswith(suffix) and base and (base in GREEK or len(base) == 1
-                                               or base in ("roll", "pitch", "yaw")):
-            return base, suffix
-    return None
-
-
-def _symbolic(rest: str) -> bool:
-    return rest in GREEK or (len(rest) == 1 and rest.isalpha())
-
-
 
 
 class Node:
@@ -167,16 +114,8 @@ class Prime(Node):
 
 @dataclass(frozen=True)
 class Text(Node):
-    """Words inside maths (prose that did not parse)."""
+    """Words inside maths: ``phidot (slow)``, ``at 30 deg``."""
     text: str
-
-
-@dataclass(frozen=True)
-class Tex(Node):
-    """Maths already typeset (a line that did not parse whole, set piece by piece);
-    ``plain`` is the text it came from."""
-    latex: str
-    plain: str
 
 
 @dataclass(frozen=True)

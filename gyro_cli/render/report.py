@@ -8,6 +8,7 @@ from ..solving.solve import Result
 from ..core.errors import terminal_text
 from ..core.expr import UNIT_TEXT, python, python_name, symbols
 from ..core.work import Step, num
+from .formats import Format
 
 WIDTH = 78
 
@@ -117,3 +118,25 @@ def graph_data(result: Result) -> dict[str, Any]:
     from ..solving.deps import as_data, graph
 
     return as_data(graph(result.problem), list(result.answers))
+
+
+class _Text(Format):
+    """``gyro solve``'s worked answer; files apart by a rule."""
+
+    name = "text"
+    separator = "\n" + "=" * WIDTH + "\n\n"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return text(result.solved)
+
+
+class _Json(Format):
+    """One JSON object per file, one per line (SI given values under ``--units us``)."""
+
+    name = "json"
+
+    def one(self, result: Any, level: int = 2) -> str:
+        return str(result.to_json()) + "\n"
+
+
+TEXT, JSON = _Text(), _Json()
