@@ -188,11 +188,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     from .render import formats
     from .solving.paths import problem_files
 
-    files, missing = problem_files(files)
-    _outputs_apart(files, plot=plot_file)
+    paths, missing = problem_files(files)
+    _outputs_apart(paths, plot=plot_file)
     for _, message in missing:
         click.echo(f"gyro: {terminal_text(message)}", err=True)
-    if plot_file and len(files) != 1:
+    if plot_file and len(paths) != 1:
         fail("--plot draws one problem: give one FILE")
     if standalone and fmt != "latex":
         fail("--standalone goes with --format latex")
@@ -205,10 +205,10 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
     done: list = []
     pieces: list[str | None] = []
     scripts: list[str] = []
-    for i, path in enumerate(files):
+    for i, path in enumerate(paths):
         try:
             result = solve_problem(path, units=system)
-            level = 1 if len(files) == 1 else 2
+            level = 1 if len(paths) == 1 else 2
             if embed:
                 from .render.animate import player_script
 

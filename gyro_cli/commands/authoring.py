@@ -514,7 +514,7 @@ def write_variants(path: str, count: int, seed: int, out_dir: str, force: bool) 
         if clash:
             raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
                              "variant file(s) already there)", file=clash[0])
-    write_set_in(out_dir, list[tuple[str, str | bytes]](targets), force=force)
+    write_set_in(out_dir, targets, force=force)
     return [target for target, _ in targets]
 
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 import os
 import stat
 from pathlib import Path
-from typing import Iterable
+from typing import Iterable, Sequence
 
 from .errors import InputError
 
@@ -148,7 +148,7 @@ def _refuse_over(output: str | os.PathLike, inputs: dict[tuple[int, int], str],
                          "name left out, so that a shell glob filled it in?)", file=name)
 
 
-def write_set_in(folder: str, items: list[tuple[str, str | bytes]],
+def write_set_in(folder: str, items: Sequence[tuple[str, str | bytes]],
                  force: bool = False) -> list[Path]:
     """`write_set` into ``folder`` and the folders below it, made as needed: on failure the
     folders this call made are removed again (only if empty), so a rerun starts clean."""
@@ -186,7 +186,7 @@ def _remove_empty(folders: list[str]) -> None:
             pass
 
 
-def write_set(items: list[tuple[str, str | bytes]], force: bool = False) -> list[Path]:
+def write_set(items: Sequence[tuple[str, str | bytes]], force: bool = False) -> list[Path]:
     """Write several files as one: every file is written, or none is (and nothing is left).
 
     Each file is first written whole to a hidden temporary file beside it and

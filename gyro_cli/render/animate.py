@@ -192,7 +192,8 @@ RIGHT, UP, TOWARD = _camera()
 
 def _shade(colour: tuple[int, int, int], normal: np.ndarray) -> tuple[int, int, int]:
     k = 0.45 + 0.55 * max(0.0, float(normal @ LIGHT) / float(np.linalg.norm(LIGHT)))
-    return tuple(int(min(255, c * k + 20)) for c in colour)
+    r, g, b = (int(min(255, c * k + 20)) for c in colour)
+    return r, g, b
 
 
 def _great_circles(radius: float, n: int = 72) -> list[np.ndarray]:
@@ -229,7 +230,8 @@ class _Painter:
         ox, oy = offset
         panel = self.panel
         w = max(1, self.size // 240)
-        back, front = [], []
+        back: list[tuple[np.ndarray, np.ndarray]] = []
+        front: list[tuple[np.ndarray, np.ndarray]] = []
         for circle in self.circles:
             depth = circle @ TOWARD
             pts = self.xy(circle) + (ox, oy)
@@ -239,8 +241,8 @@ class _Painter:
         for a, b in back:
             draw.line([tuple(a), tuple(b)], fill=(225, 225, 225), width=w)
         for points, colour in panel.lines:
-            pts = [tuple(p) for p in (self.xy(points) + (ox, oy))]
-            draw.line(pts, fill=COLOURS[colour], width=w)
+            polyline = [tuple(p) for p in (self.xy(points) + (ox, oy))]
+            draw.line(polyline, fill=COLOURS[colour], width=w)
         if panel.vertical:
             top = panel.radius * 1.15
             pts = self.xy(np.array([[0, 0, -top], [0, 0, top]])) + (ox, oy)
@@ -249,8 +251,8 @@ class _Painter:
         if panel.axis is not None:     # over the body: the trace is what the picture is for
             trace = panel.radius * panel.axis[: frame + 1]
             if len(trace) > 1:
-                pts = [tuple(p) for p in (self.xy(trace) + (ox, oy))]
-                draw.line(pts, fill=COLOURS["trace"], width=2 * w)
+                path = [tuple(p) for p in (self.xy(trace) + (ox, oy))]
+                draw.line(path, fill=COLOURS["trace"], width=2 * w)
         for a, b in front:
             draw.line([tuple(a), tuple(b)], fill=COLOURS["sphere"], width=w)
         for arrow in panel.arrows:
@@ -367,6 +369,7 @@ def mp4_bytes(scene: Scene, size: int = SIZE) -> bytes:
                "-s", f"{w}x{h}", "-r", f"{scene.fps:g}", "-i", "-", "-an", "-c:v", "libx264",
                "-pix_fmt", "yuv420p", "-movflags", "+faststart", str(target)]
         proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
+        assert proc.stdin is not None and proc.stderr is not None  # both PIPE
         try:
             for image in [first, *images]:
                 proc.stdin.write(image.crop((0, 0, w, h)).tobytes())

@@ -55,10 +55,15 @@ def _us_symbol(sym: Sym) -> Sym:
 
 
 def _us_quantity(quantity: Quantity_) -> Quantity_:
-    value, unit = convert(quantity.si, quantity.unit)
+    value, unit = convert(float(quantity.si.real), quantity.unit)  # a quantity is real
     if unit == quantity.unit:  # a unit of both systems: as written (label, digits and all)
         return quantity
     return Quantity_(value, unit)  # converted: to 4 figures, as every converted value
+
+
+def _si_of(step: Step) -> tuple[float, str] | None:
+    """The step's SI value and unit, kept beside its US view (None for no value)."""
+    return None if step.value is None else (step.value, step.unit)
 
 
 def _step(step: Step) -> Step:
@@ -74,7 +79,7 @@ def _step(step: Step) -> Step:
         return dataclasses.replace(step, substitution=substitution(view) if step.substitution
                                    else "", value=value, unit=unit,
                                    text=step.text,
-                                   view=view, si=step.si or (step.value, step.unit))
+                                   view=view, si=step.si or _si_of(step))
     return dataclasses.replace(step, value=value, unit=unit)  # a value step: no tree
 
 
