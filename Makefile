@@ -1,6 +1,7 @@
 # gyro: the two set-up commands of the README.
 #   make demo   create .venv if needed, install gyro, solve every bundled problem
-#   make test   the same set-up, then the test suite, on every core (pytest-xdist)
+#   make test   the same set-up, then import layers, ruff, mypy and the test suite on
+#               every core (pytest-xdist)
 #   make props  the property tests with long hypothesis budgets (EXAMPLES times the
 #               default, default 10), on every core
 #   make handout  a solution sheet of every bundled problem, handout.pdf (needs pdflatex:
@@ -37,6 +38,8 @@ demo: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/lint-imports --no-cache
+	$(BIN)/ruff check gyro_cli tests benchmarks fuzz
+	$(BIN)/mypy gyro_cli
 	$(BIN)/python -m pytest -q -n auto --dist worksteal
 
 props: $(STAMP)

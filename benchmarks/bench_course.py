@@ -78,7 +78,7 @@ def main() -> None:
         small = max(1, args.students // 10)
         vary_small, grade_small = course(Path(tmp) / "small", small)
         vary_big, grade_big = course(Path(tmp) / "big", args.students)
-    print(f"students  vary --roster  check --answers --assignment  grade rows")
+    print("students  vary --roster  check --answers --assignment  grade rows")
     print(f"{small:>8}  {vary_small:>11.2f} s  {grade_small:>27.2f} s  {2 * small:>10}")
     print(f"{args.students:>8}  {vary_big:>11.2f} s  {grade_big:>27.2f} s  "
           f"{2 * args.students:>10}")

@@ -104,9 +104,9 @@ def classify(result, path: str, command: str, text: str = "") -> str:
 def run(minutes: float, seed: int, out_dir: Path, timeout: float, keep: int = 5) -> dict:
     import yaml
     from click.testing import CliRunner
+    from mutate import mutant
 
     from gyro_cli.cli import main
-    from mutate import mutant
 
     os.environ["GYRO_DEBUG"] = "1"  # internal errors come with their traceback
     bases = []

@@ -21,7 +21,8 @@ import itertools
 import math
 import os
 import sys
-from typing import TYPE_CHECKING, Any, Iterable, Iterator, Mapping, Union
+from collections.abc import Iterable, Iterator, Mapping
+from typing import TYPE_CHECKING, Any, Union
 
 from .core.errors import InputError
 from .render.formats import NAMES as FORMATS
@@ -44,7 +45,7 @@ Source = Union[str, "os.PathLike[str]", Mapping[str, Any]]
 
 # ---- reading a problem ------------------------------------------------------------
 
-def load(source: Source, /, *, path: bool = False, **given: Any) -> "Problem":
+def load(source: Source, /, *, path: bool = False, **given: Any) -> Problem:
     """The checked problem of ``source`` (path, YAML text or mapping), with ``given``
     keys replaced (``spin="2000 rpm"``; ``None`` removes a key). ``path=True``: a
     string is a file's path, never YAML text.
@@ -310,7 +311,7 @@ class Answer:
         return f"<Answer {self.name} = {self}>"
 
 
-def _answer(reported: "Reported") -> Answer:
+def _answer(reported: Reported) -> Answer:
     return Answer(reported.name, reported.symbol, tuple(reported.values), reported.unit,
                   tuple(reported.si_values), reported.si_unit, tuple(reported.labels))
 
@@ -320,14 +321,14 @@ class Result:
     sections of structured steps), ``checks``, ``given``, ``warnings``; `to_dict` is the
     JSON of ``gyro solve --format json``. In Jupyter it shows the worked answer."""
 
-    def __init__(self, solved: "_Solved", units: str | None = None) -> None:
+    def __init__(self, solved: _Solved, units: str | None = None) -> None:
         self._si = solved
         self.units = (units or solved.problem.units or "si").lower()
-        self._shown: "_Solved | None" = None
+        self._shown: _Solved | None = None
 
     # -- the solved problem, in the unit system asked for
     @property
-    def solved(self) -> "_Solved":
+    def solved(self) -> _Solved:
         """The solver's own result (in US units when asked for)."""
         if self._shown is None:
             if self.units == "us":
@@ -339,7 +340,7 @@ class Result:
         return self._shown
 
     @property
-    def problem(self) -> "Problem":
+    def problem(self) -> Problem:
         return self._si.problem
 
     @property
@@ -363,15 +364,15 @@ class Result:
         return {name: _answer(a) for name, a in self.solved.answers.items()}
 
     @property
-    def steps(self) -> "list[Section]":
+    def steps(self) -> list[Section]:
         return list(self.solved.solution.sections)
 
     @property
-    def checks(self) -> "list[Step]":
+    def checks(self) -> list[Step]:
         return list(self.solved.solution.checks)
 
     @property
-    def given(self) -> "list[GivenLine]":
+    def given(self) -> list[GivenLine]:
         return list(self.solved.solution.given)
 
     @property
@@ -509,7 +510,7 @@ def _units_known(units: str | None) -> None:
         raise InputError(f"expected si or us, got {units!r}", key="units")
 
 
-def _solved(problem: "Problem", units: str | None) -> Result:
+def _solved(problem: Problem, units: str | None) -> Result:
     """The Result of a loaded problem worked in ``units``."""
     from .solving.solve import solve as solve_problem
 
@@ -672,12 +673,12 @@ class CheckReport:
     ``exit_code``, `to_dict` (the JSON of ``--format json``); in Jupyter the table,
     failing answers first, each linking to its worked answer."""
 
-    def __init__(self, run: "CheckRun", worked: dict[str, "_Solved"]) -> None:
+    def __init__(self, run: CheckRun, worked: dict[str, _Solved]) -> None:
         self.run = run
         self.worked = worked
 
     @property
-    def problems(self) -> "list[ProblemCheck]":
+    def problems(self) -> list[ProblemCheck]:
         return list(self.run.problems)
 
     @property
@@ -766,7 +767,7 @@ def check_files(paths: Iterable[str], /, *, strict: bool = False,
     from .checking import check as checking
     from .checking.results import CheckRun
 
-    solved: dict[str, "_Solved"] = {}
+    solved: dict[str, _Solved] = {}
     files, problems = checking.collect(list(paths))  # what names nothing first, as gyro check
     for path, result in zip(files, checking.checks(files, strict, timeout=None)):
         problems.append(result)
@@ -829,7 +830,7 @@ def check_stream(paths: Iterable[str], /, *, strict: bool = False, jobs: int = 1
 
 def grade(sheet: str, paths: Iterable[str], /, *, assignment: str | None = None,
           credit: str | None = None, student: str | None = None,
-          reveal: bool = False) -> "Graded":
+          reveal: bool = False) -> Graded:
     """Grade the answer sheet ``sheet`` (a CSV of students' answers) against the problems
     under ``paths``, or each student's own variant by ``assignment``, as ``gyro check
     --answers`` does; ``credit`` "SLIP=SHARE,..." gives part credit for a known slip."""
@@ -853,9 +854,10 @@ def _keep(solved: dict, key: str, problem_of) -> None:
 
 # ---- kinds ---------------------------------------------------------------------------
 
-def kinds() -> dict[str, "Kind"]:
+def kinds() -> dict[str, Kind]:
     """Every problem kind by name (what ``gyro kinds`` lists): its ``summary``, ``params``
     (the given keys; ``uses_body`` adds the body's keys), ``answers`` and ``chapter``."""
-    from .kinds import get as kind_named, names as kind_names
+    from .kinds import get as kind_named
+    from .kinds import names as kind_names
 
     return {name: kind_named(name) for name in kind_names()}

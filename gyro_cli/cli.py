@@ -18,7 +18,6 @@ from . import __version__
 from .commands.exits import INTERNAL, fail, internal
 from .commands.exits import outputs_apart as _outputs_apart
 from .core.errors import InputError, terminal_text
-
 from .render.formats import HELP as FORMAT_HELP
 from .render.formats import NAMES as FORMATS
 

@@ -28,8 +28,24 @@ import re
 
 from gyro_cli.render.conventions import GREEK, Token, dotted, tokens  # noqa: F401 (re-exported)
 from gyro_cli.render.conventions import symbolic as _symbolic  # noqa: F401
-from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
-                       Quantity, Rel, Sum, Sym, Tuple)
+from gyro_cli.render.mathtree import (
+    Abs,
+    BinOp,
+    Call,
+    Group,
+    Integral,
+    Matrix,
+    Neg,
+    Node,
+    Num,
+    Pow,
+    Prime,
+    Quantity,
+    Rel,
+    Sum,
+    Sym,
+    Tuple,
+)
 
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcsin", "arccos",
              "arctan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "det", "sqrt",
@@ -37,7 +53,7 @@ FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcs
 UNITS = {"kg", "m", "s", "N", "rad", "rpm", "deg", "mm", "cm", "km", "in", "ft", "lb", "lbf",
          "oz", "ozf", "slug", "Hz", "min", "h", "J", "W", "revolution", "rev", "lbm", "degree",
          "radian", "second", "minute", "meter", "metre", "newton", "kip", "mi", "yd", "knot",
-         "knots", "t", "mph", "kN", "rps", "hr", "g", "dyne", "lbm", "gal", "psi"}
+         "knots", "t", "mph", "kN", "rps", "hr", "g", "dyne", "gal", "psi"}
 RELATIONS = {"=", ">=", "<=", "<", ">", ">>", "<<", "->", "~", "!="}
 #: symbols that name vectors: between two of them a spaced ``x`` is a cross product
 VECTORS = {"K", "k", "i", "j", "n", "H", "omega", "omega_p", "H_O", "H_G", "C", "M", "F",

@@ -13,12 +13,12 @@ import shutil
 
 import numpy as np
 import pytest
+from conftest import PROBLEMS
 from PIL import Image
 
-from conftest import PROBLEMS
 from gyro_cli.commands.animate import bicycle_response, build_scene, make_clock
 from gyro_cli.core.errors import InputError
-from gyro_cli.physics.simulate import Params, simulate
+from gyro_cli.physics.simulate import simulate
 from gyro_cli.render.animate import gif_durations, html_page, zxz
 
 
@@ -274,12 +274,11 @@ def test_disturbed_stable_rolling_wobbles_at_the_linearised_frequency():
 
 
 def test_disturbed_unstable_rolling_grows_at_the_linearised_rate():
-    from gyro_cli.physics import rolling_motion as rm
-    from gyro_cli.physics.stability import disk_rolling
-
     # problems/rolling_coin_upright.yaml: a quarter (r = 12.13 mm, thin disk) at 10 cm/s on a
     # 1 m circle leans 0.08761 deg; Routh's upright speed is sqrt(g r / 3) = 0.199 m/s
     from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
+    from gyro_cli.physics import rolling_motion as rm
+    from gyro_cli.physics.stability import disk_rolling
 
     r = 0.01213
     d = rm.Disk(r, r * r / 2, r * r / 4, 9.81)

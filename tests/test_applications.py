@@ -166,15 +166,15 @@ def test_earth_preset_by_hand(run, write):
     torque_per_C = 1.5 * gm_m / a ** 3 / (1 - 0.0549 ** 2) ** 1.5 * 0.003273795 * \
         math.cos(eps) * math.sin(eps) * (1 - 1.5 * math.sin(i) ** 2)
     moon = torque_per_C / (omega * math.sin(eps))
-    path = write("""
+    path = write(f"""
         id: moon
         kind: earth_precession
         given:
           preset: earth
-          moon_mass: {m} kg
+          moon_mass: {gm_m / G} kg
           moon_distance: {a} m
         find: [moon_rate, sun_rate]
-        """.format(m=gm_m / G, a=a))
+        """)
     got = answers(run, path)
     assert got["moon_rate"][0] == pytest.approx(moon, rel=1e-9)
     assert got["moon_rate"][0] / ARCSEC * JULIAN_YEAR == pytest.approx(34.36, abs=0.01)

@@ -18,13 +18,12 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import PROBLEMS
+from test_check import put
 
 from gyro_cli import kinds
 from gyro_cli.core.body import BODY_PARAMS
 from gyro_cli.solving.problem import load
-
-from conftest import PROBLEMS
-from test_check import put
 
 G = 9.81
 

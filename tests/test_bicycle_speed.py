@@ -27,10 +27,9 @@ import math
 import random
 
 import pytest
-
-from gyro_cli.physics import bicycle as bike
 from test_bicycle_hurwitz import G, bicycles, random_bicycle
 
+from gyro_cli.physics import bicycle as bike
 
 # ---- the plain computations -----------------------------------------------------
 
@@ -90,7 +89,7 @@ def roots_plain(c):
     radius = 2 * max(abs(monic[k]) ** (1.0 / (n - k)) for k in range(n))
     z = [radius * cmath.exp(1j * (2 * math.pi * k / n + 0.4)) for k in range(n)]
     dmonic = _polyder(monic)
-    for sweep in range(500):
+    for sweep in range(500):  # noqa: B007 (counted after the loop)
         moved = False
         for i in range(n):
             zi = z[i]

@@ -281,8 +281,8 @@ def test_no_suggestion_of_any_word_key_flips_a_choice():
 def test_the_docs_list_every_spelling_a_kind_accepts():
     """Every other spelling a kind's word key accepts is listed in docs/real_problems.md,
     and each one the page lists is read as the page says."""
-    from pathlib import Path
     import re
+    from pathlib import Path
 
     from gyro_cli.core.body import BODY_PARAMS
     from gyro_cli.core.params import normal_word, read_word
@@ -484,7 +484,7 @@ def test_new_shapes_against_integration(write, shape, dims, keys):
     text = " ".join(s.as_text() for sec in solve_file(str(path)).solution.sections
                     for s in sec.steps)
     from gyro_cli.core.work import num
-    assert f"J = " in text
+    assert "J = " in text
     assert num(J) in text and num(I_G) in text, (J, I_G, text[:400])
 
 

@@ -44,8 +44,8 @@ def _chromium() -> str | None:
 
 CHROMIUM = _chromium()
 try:
-    from playwright.sync_api import sync_playwright
     from axe_playwright_python.sync_playwright import Axe
+    from playwright.sync_api import sync_playwright
 except ImportError as err:  # pragma: no cover - the dev extra installs both
     sync_playwright = Axe = None
     MISSING = f"Playwright or axe-playwright-python is not installed ({err}): pip install -e '.[dev]'"

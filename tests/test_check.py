@@ -20,10 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from gyro_cli.checking import check
-from gyro_cli.checking import expected
-from gyro_cli.checking import matching
-from gyro_cli.checking import tolerance
+from gyro_cli.checking import check, expected, matching, tolerance
 from gyro_cli.core import units
 
 G = 9.81
@@ -51,7 +48,7 @@ SLOW, FAST = _two_roots()  # about 0.8220 and 149.18 rad/s
 
 
 def gyro_file(expected: str = "", tolerance: str = "", extra_find: str = "") -> str:
-    text = f"""\
+    text = """\
         id: gyro-90
         title: Horizontal gyroscope
         kind: steady_precession

@@ -19,14 +19,13 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-
 from conftest import PROBLEMS
-from gyro_cli.checking import check
-from gyro_cli.core.errors import InputError
-from gyro_cli.checking.results import CheckRun
-from gyro_cli.render import check_report, junit
-
 from test_check import GYRO_PRECESSION, gyro_file, put
+
+from gyro_cli.checking import check
+from gyro_cli.checking.results import CheckRun
+from gyro_cli.core.errors import InputError
+from gyro_cli.render import check_report, junit
 
 
 @pytest.fixture(scope="module")
@@ -241,8 +240,9 @@ def test_junit_spool_is_the_document_of_the_whole_run(bank):
 
 def _both_ways(monkeypatch, text: str):
     """(outcome with the event prescan, outcome composing first): data or the message."""
-    from gyro_cli.core import safeyaml
     import yaml
+
+    from gyro_cli.core import safeyaml
 
     outcomes = []
     for compose_first in (False, True):
@@ -412,9 +412,9 @@ def test_the_scan_finds_the_same_tilts_where_two_tilts_meet_and_where_it_halves_
     import math
     import random
 
-    from gyro_cli.kinds import rolling_disk as rd
-
     from conftest import examples
+
+    from gyro_cli.kinds import rolling_disk as rd
 
     rng = random.Random(2611)
     cases = 0

@@ -13,9 +13,7 @@ import csv
 import math
 from pathlib import Path
 
-import pytest
 import yaml
-
 from test_check import put
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -7,7 +7,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-
 from test_browser import MISSING, _inspect, axe, browser, pages, shots  # noqa: F401 (fixtures)
 from test_check import put
 

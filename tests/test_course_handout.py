@@ -15,7 +15,6 @@ from pathlib import Path
 
 import pytest
 import yaml
-
 from test_check import put
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -22,12 +22,11 @@ import subprocess
 import sys
 import textwrap
 import threading
-import time
 from pathlib import Path
 
 import pytest
-
 from conftest import PROBLEMS
+
 from gyro_cli.core import files, unit_cache
 from gyro_cli.core.errors import InputError
 from gyro_cli.solving.paths import problem_files

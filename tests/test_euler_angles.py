@@ -21,12 +21,12 @@ from fractions import Fraction
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
-
 from conftest import examples
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from rotations import rx, rz
 
 from gyro_cli.physics import euler_kinematics as ek
-from rotations import rx, rz
 
 RPM = 2 * math.pi / 60
 

@@ -26,9 +26,9 @@ from pathlib import Path
 import jsonschema
 import pytest
 import yaml
+from conftest import PROBLEMS
 
 import gyro_cli
-from conftest import PROBLEMS
 
 VARIANTS = 2
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"

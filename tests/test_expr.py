@@ -6,9 +6,9 @@ import math
 import re
 
 import pytest
-from hypothesis import given, settings, strategies as st
-
 from conftest import examples
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from gyro_cli.core import expr as E
 from gyro_cli.core.expr import PI, Let, Sym, cos, ellipe, ellipk, sin, sqrt

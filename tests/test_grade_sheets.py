@@ -7,8 +7,8 @@ import csv
 import time
 
 import pytest
-
 from conftest import PROBLEMS
+
 from gyro_cli.checking.grades import WORD_SYNONYMS, normal_word
 
 TOPS = [PROBLEMS / name for name in ("11_2_released_top.yaml", "11_2_released_top_loops.yaml",

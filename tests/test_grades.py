@@ -14,11 +14,10 @@ import os
 from pathlib import Path
 
 import pytest
+from test_check import FAST, GYRO_PRECESSION, RPM, SLOW, gyro_file, put, top_file
 
 from gyro_cli.core.errors import InputError
 from gyro_cli.core.files import write_atomic
-
-from test_check import FAST, GYRO_PRECESSION, RPM, SLOW, gyro_file, put, top_file
 
 SHEET = f"""student,problem,answer,value
 ann,top-60,precession,{SLOW:.4g} rad/s; {FAST / RPM:.4g} rpm

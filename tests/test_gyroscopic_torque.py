@@ -17,10 +17,10 @@ import math
 
 import numpy as np
 import pytest
-
-from gyro_cli.kinds.gyroscopic_torque import bearing_forces
 from oracles import gyroscopic_moment
 from rotations import K, omega_of, rx, rz
+
+from gyro_cli.kinds.gyroscopic_torque import bearing_forces
 
 RPM = 2 * math.pi / 60
 
@@ -71,7 +71,6 @@ def free_body_residuals(m, g, J, I, spin, precession, theta, L, a, R, offset, fo
     """Rebuild the force vectors and test Newton and Euler about G numerically."""
     R_of = lambda s: attitude(s, precession, theta, spin)  # noqa: E731
     k = R_of(t)[:, 2]
-    n = np.cross(K, k) / math.sin(theta)
     up = (K - math.cos(theta) * k) / math.sin(theta)
 
     def centre(s):
@@ -316,7 +315,7 @@ def test_precession_for_a_given_moment_reproduces_it_by_finite_differences(theta
     roots = precession_for_moment(J, I, spin, theta, M)
     assert roots
     for precession in roots:
-        R_of = lambda t: attitude(t, precession, theta, spin)  # noqa: E731
+        R_of = lambda t: attitude(t, precession, theta, spin)  # noqa: E731, B023 (called in this iteration)
         h = 1e-2 / max(abs(precession), abs(spin))  # the fast root turns at ~250 rad/s
         rate = dH_dt(R_of, 0.2, np.diag([I, I, J]), h=h)
         n = np.cross(K, R_of(0.2)[:, 2]) / math.sin(theta)

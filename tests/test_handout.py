@@ -17,12 +17,23 @@ from pathlib import Path
 
 import pytest
 import yaml
+from formula_oracle import latex_math, latex_mixed, parse, spans, try_parse
 
 from gyro_cli.core.work import num
-from formula_oracle import latex_math, latex_mixed, parse, spans, try_parse
 from gyro_cli.render.mathprint import latex, symbol_tex, text
-from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Neg, Num, Pow,
-                                      Quantity, Rel, Sym)
+from gyro_cli.render.mathtree import (
+    Abs,
+    BinOp,
+    Call,
+    Group,
+    Integral,
+    Neg,
+    Num,
+    Pow,
+    Quantity,
+    Rel,
+    Sym,
+)
 
 ROOT = Path(__file__).resolve().parent.parent
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))
@@ -301,9 +312,9 @@ def test_any_text_parses_or_is_refused_and_converts_cleanly():
     exception), the write-up is sound LaTeX and --units us never fails on it."""
     import random
 
-    from gyro_cli.render import writeup
-
     from test_writeup import latex_problems
+
+    from gyro_cli.render import writeup
 
     vocab = ["phidot", "theta", "psidot_min", "omega_z", "sqrt(", "(", ")", "^", "^2", "^-1",
              "*", "/", "+", "-", "=", ">=", "+-", " ", "1.5e-07", "3", "kg", "m", "s^2",

@@ -15,11 +15,10 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from test_handout import RAW, without_authors_words
 
 from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
-
-from test_handout import RAW, without_authors_words
 
 ROOT = Path(__file__).resolve().parent.parent
 PROBLEMS = sorted((ROOT / "problems").glob("*.yaml"))

@@ -11,9 +11,9 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
+from formula_oracle import parse
 
 from gyro_cli.render import html, mathml
-from formula_oracle import parse
 from gyro_cli.solving.solve import solve_file
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -147,7 +147,7 @@ def test_every_bundled_problem_renders(path):
     text = html.worked_answer(result, picture=False)
     tags = _parsed(text)
     assert not tags.errors and not tags.stack, tags.errors
-    for name, answer in result.answers.items():
+    for name, _answer in result.answers.items():
         assert name.replace("_", " ") in text
 
 

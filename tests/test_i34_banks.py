@@ -24,10 +24,10 @@ from pathlib import Path
 import jsonschema
 import pytest
 import yaml
+from conftest import PROBLEMS
 from lxml import etree
 
 import gyro_cli
-from conftest import PROBLEMS
 
 SCHEMAS = Path(__file__).parent / "lms-schemas"
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
@@ -207,7 +207,7 @@ def test_item01_every_asked_value_has_its_own_key_in_every_format(write, tmp_pat
 def test_item18_a_blank_accepts_the_answer_as_its_feedback_prints_it(banks, fmt):
     blanks = READERS[fmt](banks[fmt])
     assert len(blanks) >= 20
-    for text, value, half, label in blanks:
+    for _text, value, half, label in blanks:
         assert abs(_printed(value) - value) <= half * (1 + 1e-12), (fmt, label, value, half)
     # the bicycle asks 12 sig: its blanks take the student tolerance (1%), and stderr says so
     bicycle = [(v, h) for text, v, h, _ in blanks if "benchmark bicycle" in text]

@@ -12,7 +12,6 @@ import json
 from pathlib import Path
 
 import yaml
-
 from test_check import put
 from test_course import TOP, assignment_rows, by_hand, make_set
 

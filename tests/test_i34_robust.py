@@ -9,7 +9,6 @@ import sys
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
 from test_bad_input import one_line_error
 
 # ---- item 23: a tagged YAML value is bad input naming its key, never exit 3 ----------

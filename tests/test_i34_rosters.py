@@ -16,10 +16,8 @@ import pytest
 import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
 from test_check import put
 from test_course import TOP, assignment_rows, by_hand
-
 
 # Each sheet answers min_spin right and leaves the two precession rates out.
 ONE_OF_TWO = {"points": 1.0, "max_points": 2.0}

@@ -12,7 +12,6 @@ import math
 
 import pytest
 
-
 DRIVE = ("id: x\nkind: gyroscopic_torque\n"
          "given: {{J: 180 kg m^2, speed: 95 km/h, {wheel}, precession: 0.1 rad/s}}\n"
          "find: {{moment: N m}}\n")

@@ -22,7 +22,6 @@ from gyro_cli.commands import authoring
 from gyro_cli.solving.problem import build, load
 from gyro_cli.solving.solve import solve, solve_file
 
-
 # ---- item 9: every template's statement reads as a sentence -------------------------
 
 PLACEHOLDER = re.compile(r"\{([A-Za-z_][A-Za-z0-9_]*)\}")

@@ -20,9 +20,8 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
-
 from rotations import rx, rz
+from scipy.integrate import solve_ivp
 from test_bad_input import one_line_error
 from test_torque_free import measure
 

@@ -30,10 +30,9 @@ import re
 
 import numpy as np
 import pytest
+from rotations import cross
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
-
-from rotations import cross
 
 # ---------------------------------------------------------------- units ----
 INCH = 0.0254
@@ -1122,7 +1121,7 @@ def test_bicycle_growth_matches_integration():
 
         def rhs(t, y):
             q, qd = y[:2], y[2:]
-            return np.concatenate([qd, -Minv @ (v * C1 @ qd + (g * K0 + v * v * K2) @ q)])
+            return np.concatenate([qd, -Minv @ (v * C1 @ qd + (g * K0 + v * v * K2) @ q)])  # noqa: B023 (called in this iteration)
         others = [e for e in ev if abs(e - lead) > 1e-9 and abs(e - lead.conjugate()) > 1e-9]
         gap = lead.real - max(e.real for e in others)
         T = 30.0 / gap
@@ -1137,7 +1136,7 @@ def test_bicycle_growth_matches_integration():
             ts = np.linspace(t1, T, 20001)
             ph = sol.sol(ts)[0]
             idx = np.nonzero(np.sign(ph[:-1]) != np.sign(ph[1:]))[0]
-            tz = [brentq(lambda t: sol.sol(t)[0], ts[i], ts[i + 1]) for i in idx]
+            tz = [brentq(lambda t: sol.sol(t)[0], ts[i], ts[i + 1]) for i in idx]  # noqa: B023 (called in this iteration)
             P = 2 * np.polyfit(np.arange(len(tz)), tz, 1)[0]
             assert 2 * math.pi / P == pytest.approx(abs(lead.imag), rel=1e-5)
             n = max(1, int(0.3 * T / P))

@@ -10,7 +10,6 @@ import shutil
 import xml.etree.ElementTree as ET
 
 import pytest
-
 from conftest import PROBLEMS
 
 LINE = "internal error: RuntimeError: injected fault (please report)"

@@ -12,10 +12,10 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+from test_check import FAST, GYRO_PRECESSION, SLOW, gyro_file, put, top_file
+
 from gyro_cli.checking import check
 from gyro_cli.render import junit
-
-from test_check import GYRO_PRECESSION, gyro_file, put, top_file, SLOW, FAST
 
 MESSAGE = re.compile(r"expected (\S+) (\S+) \+- (\S+) (\S+), got (\S+) (\S+)$")
 
@@ -80,10 +80,9 @@ def test_special_characters_are_escaped(tmp_path):
 # ---- the direct writer against ElementTree ------------------------------------------
 
 import pytest  # noqa: E402
-from hypothesis import given, settings, strategies as st  # noqa: E402
-
 from conftest import examples  # noqa: E402
-
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st
 
 _texts = st.text(alphabet=st.characters(blacklist_categories=("Cs",)), max_size=30)
 

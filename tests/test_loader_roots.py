@@ -7,8 +7,8 @@ import re
 import time
 
 import pytest
-
 from conftest import PROBLEMS
+
 from gyro_cli.core import safeyaml
 
 BASE = (PROBLEMS / "11_5.yaml").read_text()  # gyroscopic_torque, expected answers

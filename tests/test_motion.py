@@ -8,11 +8,11 @@ import math
 
 import numpy as np
 import pytest
-
-from gyro_cli.physics import motion, nutation
-from gyro_cli.physics.nutation import Start, analyse
 from lagrange_top import integrate
-from test_nutation import CASES, TOP, RPM
+from test_nutation import CASES, RPM, TOP
+
+from gyro_cli.physics import motion
+from gyro_cli.physics.nutation import Start, analyse
 
 
 def _reference(top, start, periods: float, n: int = 2001):

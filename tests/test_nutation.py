@@ -8,10 +8,17 @@ import math
 
 import numpy as np
 import pytest
-
-from gyro_cli.physics.nutation import (Start, Top, analyse, fast_mean_precession,
-                               fast_nutation_amplitude, fast_nutation_period, phidot)
 from lagrange_top import integrate
+
+from gyro_cli.physics.nutation import (
+    Start,
+    Top,
+    analyse,
+    fast_mean_precession,
+    fast_nutation_amplitude,
+    fast_nutation_period,
+    phidot,
+)
 
 # problem 11/3's top: 3 ozf, k_z = 0.84 in, k_O = 1.80 in, l = 1.5 in, g = 32.2 ft/s^2
 G = 32.2 * 0.3048
@@ -63,7 +70,7 @@ def test_random_tops_against_lagrange_integration(measured):
     """>= 20 tops: theta limits, period and mean precession to 1e-7 relative."""
     assert len(measured) >= 20
     motions = set()
-    for top, start, nut, ref in measured:
+    for _top, start, nut, ref in measured:
         assert len(ref.t_max) >= 3, start
         assert nut.theta_min == pytest.approx(ref.theta_min, rel=1e-7), start
         assert nut.theta_max == pytest.approx(ref.theta_max, rel=1e-7), start
@@ -77,7 +84,7 @@ def test_random_tops_against_lagrange_integration(measured):
 
 def test_motion_word_against_integrated_phidot(measured):
     """loops: the integrated phidot changes sign; waves: it keeps one; cusps: it touches 0."""
-    for top, start, nut, ref in measured:
+    for _top, start, nut, ref in measured:
         t = np.linspace(0, ref.t_max[-1], 4001)
         phd = ref.sol.sol(t)[4]
         scale = np.max(np.abs(phd))
@@ -108,7 +115,7 @@ def test_u_roots_are_the_zeros_of_eq_11_19(measured):
         assert nut.energy == pytest.approx(h, rel=1e-12)
 
         def f(u):
-            return (1 - u * u) * (alpha - a * u) - (beta - gamma * u) ** 2
+            return (1 - u * u) * (alpha - a * u) - (beta - gamma * u) ** 2  # noqa: B023 (called in this iteration)
         scale = a + alpha + beta ** 2 + gamma ** 2
         u1, u2, u3 = nut.u_roots
         assert u1 <= math.cos(start.theta0) <= u2 <= 1 <= u3

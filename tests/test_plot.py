@@ -12,9 +12,9 @@ import math
 import numpy as np
 import pytest
 
-from gyro_cli.render import plot
 from gyro_cli.core.errors import InputError
 from gyro_cli.physics.simulate import Params, simulate
+from gyro_cli.render import plot
 
 BODY = dict(I=1.776e-4, J=3.869e-5, mgl=0.03178)
 

@@ -8,13 +8,12 @@ chapter's steady-precession root of 11/3), not plot.py's own formulas.
 from __future__ import annotations
 
 import math
-import shutil
 
 import numpy as np
 import pytest
 
-from gyro_cli.render import plot
 from gyro_cli.physics.simulate import Params, simulate
+from gyro_cli.render import plot
 
 BODY = dict(I=1.776e-4, J=3.869e-5, mgl=0.03178)   # the 11/3 top, SI
 RPM = 2 * math.pi / 60

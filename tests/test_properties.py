@@ -27,10 +27,9 @@ import sys
 import pytest
 
 hypothesis = pytest.importorskip("hypothesis")
+from conftest import ROOT, examples  # noqa: E402
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
-
-from conftest import ROOT, examples  # noqa: E402
 
 sys.path.insert(0, str(ROOT / "fuzz"))
 from mutate import NEAR_MISSES, UNITS, Raw, emit  # noqa: E402
@@ -301,9 +300,9 @@ def _every_format(path):  # type: ignore[no-untyped-def]
     st.builds(lambda n, u: f"{n} {u}", magnitudes, near_miss)))
 def test_a_quantity_is_a_finite_number_or_one_located_error(dimension, text):
     """The loader's quantity parsing, straight: a finite SI float or InputError at the key."""
+    from gyro_cli.core import units
     from gyro_cli.core.errors import InputError
     from gyro_cli.solving.problem import guarded
-    from gyro_cli.core import units
 
     try:
         value, _ = guarded(units.parse, text, dimension, "given.x")

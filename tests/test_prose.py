@@ -9,17 +9,35 @@ import re
 from pathlib import Path
 
 import pytest
+from formula_oracle import spans
 
 from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
-from gyro_cli.core.expr import PI, Sym, cos, sin
-from gyro_cli.core.expr import SumOf, formula, python, substitution
-from gyro_cli.core.prose import (Prose, bracket, cross, deriv, dot, fn, integral, mat, matrix,
-                                 names, plus, pm, prime, q, qvec, rel, signed, total, tup,
-                                 words)
+from gyro_cli.core.expr import PI, SumOf, Sym, cos, formula, python, sin, substitution
+from gyro_cli.core.prose import (
+    Prose,
+    bracket,
+    cross,
+    deriv,
+    dot,
+    fn,
+    integral,
+    mat,
+    matrix,
+    names,
+    plus,
+    pm,
+    prime,
+    q,
+    qvec,
+    rel,
+    signed,
+    total,
+    tup,
+    words,
+)
 from gyro_cli.core.work import Work
 from gyro_cli.render import html, writeup
-from formula_oracle import spans
 from gyro_cli.render.us_units import to_us
 from gyro_cli.solving.solve import solve_file
 
@@ -182,7 +200,7 @@ def test_us_units_convert_a_matrix_and_keep_the_figures_of_a_unit_both_systems_s
 
 def test_typeset_nodes_have_no_value_and_pieces_are_words_or_trees():
     with pytest.raises(TypeError):
-        rel(H, "=", U).value
+        rel(H, "=", U).value  # noqa: B018 (the access is what raises)
     with pytest.raises(TypeError):
         Prose(("a", 3.0))
     with pytest.raises(ValueError):

@@ -12,8 +12,8 @@ import math
 
 import numpy as np
 import pytest
-
 from lagrange_top import integrate
+
 from gyro_cli.solving.solve import solve_file
 
 RPM = 2 * math.pi / 60
@@ -210,8 +210,8 @@ def test_pivot_force_free_body(write):
         horizontal, size = values[1 + 2 * i], values[2 + 2 * i]
 
         def r_G(t):
-            return l * np.array([math.sin(theta) * math.cos(p * t),
-                                 math.sin(theta) * math.sin(p * t), math.cos(theta)])
+            return l * np.array([math.sin(theta) * math.cos(p * t),  # noqa: B023 (called in this iteration)
+                                 math.sin(theta) * math.sin(p * t), math.cos(theta)])  # noqa: B023 (called in this iteration)
         h = 1e-4 / abs(p)
         a_G = (r_G(h) - 2 * r_G(0) + r_G(-h)) / h ** 2
         F = m * a_G - m * np.array([0, 0, -g])

@@ -8,7 +8,6 @@ import json
 import math
 
 import pytest
-
 from lagrange_top import integrate
 from test_nutation import TOP
 

@@ -19,12 +19,16 @@ import math
 
 import numpy as np
 import pytest
+from rotations import K, cross, omega_of, rx, rz
 from scipy.integrate import solve_ivp
 
-from gyro_cli.kinds.rolling_disk import (axle_pivot_normal_force, axle_pivot_spin,
-                                         free_from_speed_and_path, free_from_speed_and_tilt,
-                                         free_from_tilt_and_path)
-from rotations import K, cross, omega_of, rx, rz
+from gyro_cli.kinds.rolling_disk import (
+    axle_pivot_normal_force,
+    axle_pivot_spin,
+    free_from_speed_and_path,
+    free_from_speed_and_tilt,
+    free_from_tilt_and_path,
+)
 
 RPM = 2 * math.pi / 60
 

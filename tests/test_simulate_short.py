@@ -12,7 +12,6 @@ import json
 import math
 
 import pytest
-
 from lagrange_top import integrate
 
 INCH = 0.0254

@@ -11,8 +11,8 @@ import threading
 import time
 
 import pytest
-
 from conftest import PROBLEMS
+
 from gyro_cli.core import files, safeyaml
 from gyro_cli.core.errors import InputError
 

@@ -19,14 +19,21 @@ import math
 
 import numpy as np
 import pytest
+from rotations import cross
 from scipy.integrate import solve_ivp
+from test_rolling_disk import rolling_disk_rhs
 
 from gyro_cli.kinds.rolling_disk import free_from_speed_and_path
 from gyro_cli.kinds.steady_precession import precession_from_spin
-from gyro_cli.physics.stability import (NEUTRAL, STABLE, UNSTABLE, disk_critical_axial_rate,
-                                        disk_rolling, top_steady_precession, verdict)
-from rotations import cross
-from test_rolling_disk import rolling_disk_rhs
+from gyro_cli.physics.stability import (
+    NEUTRAL,
+    STABLE,
+    UNSTABLE,
+    disk_critical_axial_rate,
+    disk_rolling,
+    top_steady_precession,
+    verdict,
+)
 
 K = np.array([0.0, 0.0, 1.0])
 RPM = 2 * math.pi / 60
@@ -141,8 +148,8 @@ def test_top_k_is_the_curvature_of_the_effective_potential():
         P1 = I * phidot * math.sin(theta) ** 2 + P2 * math.cos(theta)
 
         def U(th):
-            return (P1 - P2 * math.cos(th)) ** 2 / (2 * I * math.sin(th) ** 2) + \
-                mgl * math.cos(th)
+            return ((P1 - P2 * math.cos(th)) ** 2 / (2 * I * math.sin(th) ** 2)  # noqa: B023 (called in this iteration)
+                    + mgl * math.cos(th))
         h = 1e-4
         assert (U(theta + h) - U(theta - h)) / (2 * h) == pytest.approx(0, abs=1e-6 * mgl)
         curvature = (U(theta + h) - 2 * U(theta) + U(theta - h)) / h ** 2

@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from gyro_cli.core.statement import StatementError, fill_statement, placeholders
+from gyro_cli.core.statement import fill_statement, placeholders
 from gyro_cli.solving.problem import load
 
 ROOT = Path(__file__).resolve().parent.parent

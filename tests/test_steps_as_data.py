@@ -12,9 +12,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from gyro_cli.core.errors import InputError
-
 from gyro_cli.commands.authoring import template
+from gyro_cli.core.errors import InputError
 from gyro_cli.core.expr import python_names
 from gyro_cli.kinds import names as kind_names
 from gyro_cli.render import document, report, writeup
@@ -824,6 +823,7 @@ def test_gyroscopic_torque_trees_agree_with_the_physics(given, find, tmp_path):
     generalised, the slow root, the free body of the rotor, the wheel's drop), with
     negative rates and angles past 90 deg among them."""
     import oracles
+
     from gyro_cli.kinds import gyroscopic_torque as K
 
     path = tmp_path / "t.yaml"

@@ -17,12 +17,26 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from formula_oracle import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
 
 from gyro_cli import kinds
 from gyro_cli.commands.authoring import template
-from formula_oracle import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
-from gyro_cli.render.mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Pow,
-                                      Prime, Quantity, Rel, Sum, Sym, Tuple)
+from gyro_cli.render.mathtree import (
+    Abs,
+    BinOp,
+    Call,
+    Group,
+    Integral,
+    Matrix,
+    Neg,
+    Pow,
+    Prime,
+    Quantity,
+    Rel,
+    Sum,
+    Sym,
+    Tuple,
+)
 from gyro_cli.render.writeup import file_keys
 from gyro_cli.solving.solve import solve_file
 

@@ -19,7 +19,6 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
-
 from test_bad_input import one_line_error
 
 RPM = 2 * math.pi / 60

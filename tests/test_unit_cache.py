@@ -81,7 +81,7 @@ def test_every_documented_spelling_is_the_same_from_the_cache_as_from_pint(fresh
     _no_pint(monkeypatch)
     warm = _resolve_all()
     assert warm == cold                      # factors, printed units, US flags: exact
-    for (value, parsed), (text, _, _) in zip(cold[0], SPELLINGS):
+    for (_value, parsed), (text, _, _) in zip(cold[0], SPELLINGS):
         assert parsed.magnitude == float(text.split()[0])
 
 

@@ -20,7 +20,6 @@ import math
 
 import numpy as np
 import pytest
-
 from rotations import rx, rz
 
 RPM = 2 * math.pi / 60

@@ -23,7 +23,8 @@ Rules (see docs/check.md):
 from __future__ import annotations
 
 import os
-from typing import Any, Callable, Generator, Iterator
+from collections.abc import Callable, Generator, Iterator
+from typing import Any
 
 from ..core.errors import InputError
 from .expected import Expected, parse_expected
@@ -295,8 +296,8 @@ def warm() -> None:
     pages it shares."""
     import gc
 
-    from ..kinds import preload
     from ..core import safeyaml, unit_cache
+    from ..kinds import preload
     from ..solving import solve  # noqa: F401 -- imported for the workers
 
     preload()

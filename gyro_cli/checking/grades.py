@@ -31,14 +31,14 @@ import re
 from dataclasses import dataclass, field
 from typing import Any, TypedDict
 
-from . import check
-from .expected import parse_value
-from .copies import Match, VariantIndex, whose
-from .ecf import check_steps
-from .matching import compare, diagnose
-from .tolerance import tolerance_for
 from ..core.errors import InputError
 from ..core.work import num
+from . import check
+from .copies import Match, VariantIndex, whose
+from .ecf import check_steps
+from .expected import parse_value
+from .matching import compare, diagnose
+from .tolerance import tolerance_for
 
 COLUMNS = ("student", "problem", "answer", "value")
 HEADER_WORDS = {"student": "student", "name": "student", "problem": "problem",
@@ -114,8 +114,8 @@ def read_sheet(path: str) -> list[Submission]:
 
 
 def _read_csv(path: str) -> list[Submission]:
-    from .assignment import student_id
     from ..core.safeyaml import read_text
+    from .assignment import student_id
 
     text = read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)", "utf-8-sig")
     try:
@@ -165,8 +165,8 @@ def _read_csv(path: str) -> list[Submission]:
 
 
 def _read_yaml(path: str) -> list[Submission]:
-    from .assignment import student_id
     from ..solving.problem import read_yaml
+    from .assignment import student_id
 
     data, _ = read_yaml(path, MAX_SHEET_BYTES)
     root = _refuse_repeated_keys(path)
@@ -491,8 +491,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     """
     import os
 
-    from .assignment import load_variant, read_assignment, read_key
     from ..solving.problem import load
+    from .assignment import load_variant, read_assignment, read_key
 
     plan = read_assignment(assignment_path)
     submissions = read_sheet(sheet)
@@ -716,11 +716,11 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
     key was made with (same SHA-256); else None, and the file is read and solved."""
     from types import SimpleNamespace
 
-    from .assignment import file_digest
-    from ..kinds import get as kind_named
     from ..core.safeyaml import read_bytes
+    from ..kinds import get as kind_named
     from ..solving.problem import MAX_FILE_BYTES
     from ..solving.solve import Reported
+    from .assignment import file_digest
 
     entry = key["variants"].get(row.variant)
     if not isinstance(entry, dict) or entry.get("problem") != row.problem:

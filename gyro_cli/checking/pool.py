@@ -34,7 +34,8 @@ import signal
 import struct
 import sys
 import time
-from typing import Any, Callable, Iterator, TypeVar
+from collections.abc import Callable, Iterator
+from typing import Any, TypeVar
 
 Result = TypeVar("Result")
 
@@ -44,7 +45,7 @@ DONE, STARTED = 0, 1  # a worker's progress: files finished, when the file under
 IDLE = math.inf  # STARTED between batches: no file under way
 
 
-def _work(conn: "_Channel", work: Callable[[str], Any], progress: Any) -> None:
+def _work(conn: _Channel, work: Callable[[str], Any], progress: Any) -> None:
     """A worker's loop: a batch of paths in, their results out in one reply, until None.
 
     Before each file it writes in shared memory when the file began, and after it how

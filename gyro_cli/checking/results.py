@@ -6,7 +6,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from typing import NamedTuple
 
-
 # ---- results ----------------------------------------------------------------
 
 @dataclass
@@ -54,7 +53,7 @@ class ProblemCheck:
         return passed, sum(1 for a in self.answers if a.keyed) - passed
 
     @classmethod
-    def from_dict(cls, data: dict) -> "ProblemCheck":
+    def from_dict(cls, data: dict) -> ProblemCheck:
         """A problem of a JSON report (``gyro check --format json``), for ``--merge``."""
         answers = [AnswerCheck(**{k: v for k, v in a.items() if k in _ANSWER_FIELDS}
                                | {"message": a.get("message") or ""})

@@ -23,14 +23,16 @@ import math
 import os
 import random
 import re
-from typing import Any, Iterator
+from collections.abc import Iterator
+from typing import Any
 
-from ..kinds import get as kind_named, names as kind_names_of
 from ..core import units
 from ..core.alternatives import alternatives_of
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError
 from ..core.spec import Kind, Param
+from ..kinds import get as kind_named
+from ..kinds import names as kind_names_of
 
 EXAMPLE_QUANTITY = {
     "length": "150 mm", "mass": "2 kg", "force": "10 N", "acceleration": "9.81 m/s^2",
@@ -531,7 +533,7 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     answer_names = [a.name for a in problem.kind.answers]
     data = dict(base)  # what is drawn is set anew below; the rest is base's, unchanged
     data["given"] = dict(base["given"])
-    for key, form, low, high, unit, _ in ranges:
+    for key, _form, low, high, unit, _ in ranges:
         value = round_sig(low + rng.random() * (high - low), VARIANT_DIGITS)
         data["given"][key] = f"{number_text(value)} {unit}".strip()
     data["id"] = variant_id

@@ -24,7 +24,8 @@ from __future__ import annotations
 import math
 import os
 import sys
-from typing import TYPE_CHECKING, Any, Callable, Iterator
+from collections.abc import Callable, Iterator
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -49,7 +50,7 @@ STUDENT_TOLERANCE = "1%"
 # ---- building the banks ----------------------------------------------------------
 
 def _variants_of(path: str, count: int, seed: int,
-                 unvaried: list[str]) -> tuple["Problem", Iterator["Problem"]]:
+                 unvaried: list[str]) -> tuple[Problem, Iterator[Problem]]:
     """The problem of ``path`` and the problems to export, one at a time: itself, or its
     variants (a file without `vary` is added to ``unvaried`` and exported as written)."""
     from ..solving.problem import load
@@ -63,7 +64,7 @@ def _variants_of(path: str, count: int, seed: int,
     return problem, _drawn(path, count, seed)
 
 
-def _drawn(path: str, count: int, seed: int) -> Iterator["Problem"]:
+def _drawn(path: str, count: int, seed: int) -> Iterator[Problem]:
     from ..solving.problem import build, parse_yaml
     from .authoring import each_variant
 
@@ -84,7 +85,7 @@ def _scale(value: float, si: float, unit: str, dimension: str) -> float:
         return 1.0
 
 
-def _asked(problem: "Problem", ask: tuple[str, ...] | None) -> list[str]:
+def _asked(problem: Problem, ask: tuple[str, ...] | None) -> list[str]:
     """The answers a bank asks: ``--ask`` (those this problem finds), else the file's
     `ask`, else every answer of `find` and `expected`."""
     names = list(dict.fromkeys([*problem.find, *(n for n in problem.expected
@@ -123,8 +124,8 @@ def rounding(value: float, digits: int) -> float:
     return 0.5 * 10.0 ** (math.floor(math.log10(abs(value))) - digits + 1)
 
 
-def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Tolerance",
-            tight: list[str], used: set[str], parts: list | None = None) -> list["Blank"]:
+def _blanks(problem: Problem, solved: Any, asked: list[str], student: Tolerance,
+            tight: list[str], used: set[str], parts: list | None = None) -> list[Blank]:
     """One blank per numeric value of the answers asked. Each accepts the value as the
     worked answer prints it (core.expr.SIG significant figures): where the problem's tolerance
     is tighter than that, the student tolerance (``student``) is used and the answer's name
@@ -167,8 +168,8 @@ def _blanks(problem: "Problem", solved: Any, asked: list[str], student: "Toleran
     return out
 
 
-def _step_blanks(problem: "Problem", solved: Any, student: "Tolerance", used: set[str],
-                 parts: list) -> list["Blank"]:
+def _step_blanks(problem: Problem, solved: Any, student: Tolerance, used: set[str],
+                 parts: list) -> list[Blank]:
     """One blank per step the problem asks (`steps:`), in SI, before the answers."""
     from ..checking.ecf import Part, step_names, step_tolerance
     from ..core.expr import SIG as digits
@@ -189,8 +190,8 @@ def _step_blanks(problem: "Problem", solved: Any, student: "Tolerance", used: se
     return out
 
 
-def _width(tol: "Tolerance", student: "Tolerance", value: float, half: float,
-           digits: int) -> tuple[float, "Tolerance"]:
+def _width(tol: Tolerance, student: Tolerance, value: float, half: float,
+           digits: int) -> tuple[float, Tolerance]:
     """What a blank accepts around ``value``: ``half`` (the problem's tolerance ``tol``),
     unless that is tighter than rounding to ``digits`` figures can cost; then the student
     tolerance, never less than that cost. The half-width and the tolerance used."""
@@ -202,8 +203,8 @@ def _width(tol: "Tolerance", student: "Tolerance", value: float, half: float,
     return half, tol
 
 
-def _choices(problem: "Problem", solved: Any, asked: list[str], used: set[str]
-             ) -> list["Choice"]:
+def _choices(problem: Problem, solved: Any, asked: list[str], used: set[str]
+             ) -> list[Choice]:
     """One multiple-choice question per word of the word answers asked whose kind names
     their possible words (AnswerSpec.words): those words, the solver's among them."""
     from ..render.bank import Choice
@@ -225,7 +226,7 @@ def _choices(problem: "Problem", solved: Any, asked: list[str], used: set[str]
     return out
 
 
-def accepts(tol: "Tolerance", half: float, unit: str) -> str:
+def accepts(tol: Tolerance, half: float, unit: str) -> str:
     """What a blank accepts, in words: ``within 1%``, ``to 3 significant figures``,
     ``within 0.01 rad/s``."""
     from ..render.bank import number_text
@@ -242,10 +243,10 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
              + (f" ({g.note})" if g.note else "")) for g in solved.solution.given]
 
 
-def variant_of(problem: "Problem", number: int, title: str,
-               ask: tuple[str, ...] | None = None, student: "Tolerance | None" = None,
+def variant_of(problem: Problem, number: int, title: str,
+               ask: tuple[str, ...] | None = None, student: Tolerance | None = None,
                tight: list[str] | None = None, pictures: bool = False,
-               ecf_share: float = DEFAULT_ECF) -> "Variant":
+               ecf_share: float = DEFAULT_ECF) -> Variant:
     """One problem solved and laid out as a bank's variant; its question text is its
     `statement` filled from its own given values (core/statement.py), else a sentence
     built from ``title``, its data and what is asked, then the precision asked and the
@@ -303,7 +304,7 @@ def variant_of(problem: "Problem", number: int, title: str,
     return variant
 
 
-def _lost_line(path: str, variant: "Variant") -> str:
+def _lost_line(path: str, variant: Variant) -> str:
     """Which blanks of a problem follow from which steps (what a format without a
     question-wide grader loses)."""
     labels = {b.key: b.label for b in variant.blanks}
@@ -324,7 +325,7 @@ def _picture(solved: Any) -> tuple[bytes, str]:
 def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
           warn: Callable[[str], None] = lambda line: None,
           ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
-          pictures: bool = False) -> tuple[list["ProblemBank"], list[str]]:
+          pictures: bool = False) -> tuple[list[ProblemBank], list[str]]:
     """The bank of every problem file in ``paths`` (files, directories, globs), and one
     line per file that could not be exported (bad input). ``ask``: the answers to ask
     (None: each file's `ask`, else all); ``tolerance``: the student tolerance (`_blanks`);
@@ -334,11 +335,11 @@ def banks(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
     return stream(paths, Sink(), count, seed, warn, ask, tolerance, pictures)
 
 
-def stream(paths: list[str] | tuple[str, ...], sink: "Sink", count: int = 1, seed: int = 0,
+def stream(paths: list[str] | tuple[str, ...], sink: Sink, count: int = 1, seed: int = 0,
            warn: Callable[[str], None] = lambda line: None,
            ask: tuple[str, ...] | None = None, tolerance: str = STUDENT_TOLERANCE,
            pictures: bool = False, ecf_share: float = 0.5, lost: list[str] | None = None
-           ) -> tuple[list["ProblemBank"], list[str]]:
+           ) -> tuple[list[ProblemBank], list[str]]:
     """`banks`, each variant handed to ``sink`` as it is solved (render/bank_stream.py)
     instead of held: the banks as the sink commits them (without their variants, for a
     sink that writes them out) and the lines of the files that could not be exported."""
@@ -421,7 +422,7 @@ def stream(paths: list[str] | tuple[str, ...], sink: "Sink", count: int = 1, see
     return out, errors
 
 
-def _student_tolerance(text: str) -> "Tolerance":
+def _student_tolerance(text: str) -> Tolerance:
     """``--tolerance``: a relative tolerance or significant figures (an absolute one would
     need every answer's unit)."""
     from ..checking.tolerance import parse_tolerance
@@ -450,7 +451,7 @@ def _some(paths: list[str]) -> str:
 
 # ---- writing -----------------------------------------------------------------------
 
-def sink_for(fmt: str) -> "Sink":
+def sink_for(fmt: str) -> Sink:
     """Where `stream` puts the variants of a ``fmt`` export: files on disk as they come."""
     from ..render import bank_stream
 
@@ -459,8 +460,8 @@ def sink_for(fmt: str) -> "Sink":
             "prairielearn": bank_stream.PrairieLearnSink}.get(fmt, bank_stream.Sink)()
 
 
-def write(banks_: list["ProblemBank"], fmt: str, out: str, force: bool,
-          inputs: list[str] | tuple[str, ...] = (), sink: "Sink | None" = None) -> list[str]:
+def write(banks_: list[ProblemBank], fmt: str, out: str, force: bool,
+          inputs: list[str] | tuple[str, ...] = (), sink: Sink | None = None) -> list[str]:
     """Write the export to ``out`` (a file for moodle, qti and blackboard, a directory
     for prairielearn): never one of the ``inputs`` (the problem files), never a file that
     exists without ``force``, and the question directories all or nothing. The paths
@@ -514,7 +515,7 @@ def _refuse_targets(targets: list[str], inputs: list[str] | tuple[str, ...],
                              "file(s) of this export already there)", file=clash[0])
 
 
-def _write_questions(sink: "PrairieLearnSink", out: str, force: bool,
+def _write_questions(sink: PrairieLearnSink, out: str, force: bool,
                      inputs: list[str] | tuple[str, ...]) -> list[str]:
     """`write` of PrairieLearn questions streamed (`sink`): the same checks, then each file
     staged from disk, and all placed or none."""

@@ -23,7 +23,8 @@ def new(kind: str | None, output: str | None, force: bool) -> None:
     from .authoring import template
 
     if kind is None:
-        from ..kinds import get as kind_named, names as kind_names
+        from ..kinds import get as kind_named
+        from ..kinds import names as kind_names
 
         click.echo("gyro new KIND writes a template; KIND is one of:")
         for name in kind_names():
@@ -129,7 +130,8 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
     try:
         out = ""
         if animate_file:
-            from .animate import animate_file as animate, check_output
+            from .animate import animate_file as animate
+            from .animate import check_output
 
             check_output(animate_file, force)
             text = animate(file, animate_file, periods=periods, speed=speed, fps=fps,

@@ -27,11 +27,19 @@ import hashlib
 import io
 import os
 import random
+from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import IO, Any, Iterator
+from typing import IO, Any
 
-from ..checking.assignment import (ASSIGNMENT_COLUMNS, KEY_FORMAT, Student, code_fingerprint,
-                                   file_digest, file_names, read_roster)
+from ..checking.assignment import (
+    ASSIGNMENT_COLUMNS,
+    KEY_FORMAT,
+    Student,
+    code_fingerprint,
+    file_digest,
+    file_names,
+    read_roster,
+)
 from ..core.csvsafe import safe_cell
 from ..core.errors import InputError
 from .authoring import draw_variant, parse_vary, variant_yaml

@@ -8,7 +8,7 @@ changes); the worked answer shows the conversion as a step under "Data as given"
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 from .expr import PI, Expr, Sym
 from .params import Param

@@ -9,14 +9,13 @@ formula used is written into the worked answer.
 from __future__ import annotations
 
 import math
-
-from .record import record
-from typing import Callable
+from collections.abc import Callable
 
 from .errors import InputError
-from .params import Param
 from .expr import Expr, Sym, tan
+from .params import Param
 from .prose import names, q, rel
+from .record import record
 from .work import Work
 
 G_SI = 9.81         # m/s^2, the format's default

@@ -21,7 +21,7 @@ class InputError(Exception):
         self.line = line
 
     def located(self, file: str | None = None, key: str | None = None,
-                line: int | None = None) -> "InputError":
+                line: int | None = None) -> InputError:
         """Fill in where the error is, keeping what is already known."""
         self.file = self.file or file
         self.key = self.key or key

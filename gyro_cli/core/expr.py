@@ -60,7 +60,7 @@ def num(x: float, sig: int = SIG) -> str:
 _OPERANDS: set[type] = set()
 
 
-def _node(x: "Expr | float") -> "Expr":
+def _node(x: Expr | float) -> Expr:
     kind = x.__class__
     if kind in _OPERANDS:
         return x  # type: ignore[return-value]
@@ -85,45 +85,45 @@ class Expr:
         if cls.__name__ != "Chain":  # a chain is a step's whole tree, never an operand
             _OPERANDS.add(cls)
 
-    def __add__(self, other: "Expr | float") -> "Expr":
+    def __add__(self, other: Expr | float) -> Expr:
         return Add(self, _node(other))
 
-    def __radd__(self, other: "Expr | float") -> "Expr":
+    def __radd__(self, other: Expr | float) -> Expr:
         return Add(_node(other), self)
 
-    def __sub__(self, other: "Expr | float") -> "Expr":
+    def __sub__(self, other: Expr | float) -> Expr:
         return Sub(self, _node(other))
 
-    def __rsub__(self, other: "Expr | float") -> "Expr":
+    def __rsub__(self, other: Expr | float) -> Expr:
         return Sub(_node(other), self)
 
-    def __mul__(self, other: "Expr | float") -> "Expr":
+    def __mul__(self, other: Expr | float) -> Expr:
         return Mul(self, _node(other))
 
-    def __rmul__(self, other: "Expr | float") -> "Expr":
+    def __rmul__(self, other: Expr | float) -> Expr:
         return Mul(_node(other), self)
 
-    def __truediv__(self, other: "Expr | float") -> "Expr":
+    def __truediv__(self, other: Expr | float) -> Expr:
         return Div(self, _node(other))
 
-    def __rtruediv__(self, other: "Expr | float") -> "Expr":
+    def __rtruediv__(self, other: Expr | float) -> Expr:
         return Div(_node(other), self)
 
-    def __pow__(self, other: "Expr | float") -> "Expr":
+    def __pow__(self, other: Expr | float) -> Expr:
         return Pow(self, _node(other))
 
-    def __neg__(self) -> "Expr":
+    def __neg__(self) -> Expr:
         return Neg(self)
 
     @property
     def value(self) -> float:
         raise NotImplementedError
 
-    def children(self) -> tuple["Expr", ...]:
+    def children(self) -> tuple[Expr, ...]:
         """The nodes the value is computed from."""
         return ()
 
-    def map_children(self, change: Callable[["Expr"], "Expr"]) -> "Expr":
+    def map_children(self, change: Callable[[Expr], Expr]) -> Expr:
         """The node rebuilt with ``change`` applied to each node it holds (a `Let`'s symbol
         too); a leaf is itself. `map_tree` walks a whole tree with it."""
         return self
@@ -361,12 +361,12 @@ class Chain(Expr):
 
     __slots__ = ("forms",)
 
-    def __init__(self, *forms: "Expr | float") -> None:
+    def __init__(self, *forms: Expr | float) -> None:
         if len(forms) < 2:
             raise ValueError("a chain holds two forms or more")
         self.forms = tuple(_node(f) for f in forms)
 
-    def _refuse(self, *other: object) -> "Expr":
+    def _refuse(self, *other: object) -> Expr:
         raise TypeError("a chain of equal forms is a step's whole formula, not an operand")
 
     __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _refuse
@@ -396,7 +396,7 @@ class SumOf(Expr):
 
     __slots__ = ("body", "terms")
 
-    def __init__(self, body: Expr, terms: "tuple[Expr, ...]") -> None:
+    def __init__(self, body: Expr, terms: tuple[Expr, ...]) -> None:
         if not terms:
             raise ValueError("a sum over particles needs one term or more")
         self.body, self.terms = body, tuple(_node(t) for t in terms)
@@ -420,7 +420,7 @@ class SumOf(Expr):
 
 
 def _call(name: str) -> Callable[..., Expr]:
-    def build(*args: "Expr | float") -> Expr:
+    def build(*args: Expr | float) -> Expr:
         return Call(name, tuple(_node(a) for a in args))
     build.__name__ = name
     return build
@@ -452,7 +452,7 @@ def symbols(expr: Expr) -> dict[str, Sym]:
     return out
 
 
-def map_tree(expr: Expr, change: Callable[[Expr], "Expr | None"]) -> Expr:
+def map_tree(expr: Expr, change: Callable[[Expr], Expr | None]) -> Expr:
     """The tree with each node for which ``change`` gives a node replaced by it, the others
     rebuilt from their mapped children (`Expr.map_children`): one walk for every mapping
     (``--units us`` of formulas and sentences, values)."""

@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import os
 import stat
+from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Iterable, Sequence
 
 from .errors import InputError
 
@@ -225,7 +225,7 @@ class StagedSet:
         self.placed: list[Path] = []
         self.done = False
 
-    def __enter__(self) -> "StagedSet":
+    def __enter__(self) -> StagedSet:
         return self
 
     def __exit__(self, *exc: object) -> None:

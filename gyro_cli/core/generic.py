@@ -37,7 +37,7 @@ class _Both:
     def __call__(self, *args: float) -> float: ...  # type: ignore[overload-overlap]
 
     @overload
-    def __call__(self, *args: "Expr | float") -> "Expr": ...
+    def __call__(self, *args: Expr | float) -> Expr: ...
 
     def __call__(self, *args: Any) -> Any:
         if _numbers(args):
@@ -60,7 +60,7 @@ def pi_like(*args: float) -> float: ...  # type: ignore[overload-overlap]
 
 
 @overload
-def pi_like(*args: "Expr | float") -> "Expr": ...
+def pi_like(*args: Expr | float) -> Expr: ...
 
 
 def pi_like(*args: Any) -> Any:

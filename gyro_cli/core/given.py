@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from .record import field, record
 from typing import TYPE_CHECKING, overload
 
 from .errors import InputError
 from .params import MISSING_KEY
+from .record import field, record
 
 if TYPE_CHECKING:
     from .body import Body
@@ -24,7 +24,7 @@ class Given:
     """
 
     values: dict[str, float | str | Particles]
-    body: "Body | None" = None
+    body: Body | None = None
     defaulted: set[str] = field(default_factory=set)
     #: a key stated another way (a diameter, an angle from the horizontal): the key
     #: written and its SI value, by the key the kind reads
@@ -62,7 +62,7 @@ class Given:
         return value if value is None else str(value)
 
     @property
-    def solid_body(self) -> "Body":
+    def solid_body(self) -> Body:
         """The body of a kind that has one (``Kind.uses_body``: solve.py has built it)."""
         assert self.body is not None, "this kind declares no body"
         return self.body

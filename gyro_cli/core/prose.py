@@ -20,9 +20,30 @@ from __future__ import annotations
 
 import math
 
-from .expr import (ADD, ATOM, MUL, NAMED, NEG, SHOWN, SIG, UNIT_TEXT, Add, BinOp, Call, Div,
-                   Expr, Let, Mul, Neg, Sub, Sym, TextPrinter, _node, map_tree, needs_brackets, num,
-                   precedence)
+from .expr import (
+    ADD,
+    ATOM,
+    MUL,
+    NAMED,
+    NEG,
+    SHOWN,
+    SIG,
+    UNIT_TEXT,
+    Add,
+    BinOp,
+    Div,
+    Expr,
+    Mul,
+    Neg,
+    Sub,
+    Sym,
+    TextPrinter,
+    _node,
+    map_tree,
+    needs_brackets,
+    num,
+    precedence,
+)
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -487,7 +508,7 @@ class Prose:
             return pieces[0], tag
         return None
 
-    def map(self, change: Callable[[Expr], Expr]) -> "Prose":
+    def map(self, change: Callable[[Expr], Expr]) -> Prose:
         return Prose(tuple(p if isinstance(p, str) else change(p) for p in self.pieces))
 
 

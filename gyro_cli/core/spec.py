@@ -6,10 +6,11 @@ line in the registry ``gyro_cli/kinds/__init__.py``.
 
 from __future__ import annotations
 
-from .record import field, record
-from typing import TYPE_CHECKING, Any, Callable
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 from .params import AnswerSpec, OneOf, Param
+from .record import field, record
 
 if TYPE_CHECKING:
     from .given import Given
@@ -31,7 +32,7 @@ class Kind:
     summary: str
     params: tuple[Param, ...]
     answers: tuple[AnswerSpec, ...]
-    solve: Callable[["Given", frozenset[str], "Work"], None]
+    solve: Callable[[Given, frozenset[str], Work], None]
     uses_body: bool = True
     chapter: str = ""
     #: a complete, solvable example for ``gyro new``: its ``given``, ``find``, ``vary`` and
@@ -57,7 +58,7 @@ class Kind:
     physics: tuple[str, ...] = ()
     #: the model the pictures and scenes draw, from the given data: ``model(given, work)``
     #: (the bicycle's parameters in SI)
-    model: "Callable[[Given, Work], Any] | None" = None
+    model: Callable[[Given, Work], Any] | None = None
 
     def __repr__(self) -> str:  # short: gyro_cli.kinds() lists sixteen of them
         return f"<Kind {self.name}: {self.summary}>"

@@ -15,7 +15,8 @@ prints a statement call :func:`fill_statement`.
 from __future__ import annotations
 
 import re
-from typing import Any, Mapping
+from collections.abc import Mapping
+from typing import Any
 
 PLACEHOLDER = re.compile(r"\{\{|\}\}|\{([^{}]*)\}|[{}]")
 KEY_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\Z")

@@ -23,7 +23,8 @@ import os
 import re
 import signal
 import sys
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 _SURROGATE = re.compile("[\ud800-\udfff]")
 EXIT_PIPE = 141   # 128 + SIGPIPE
@@ -45,7 +46,7 @@ class Interrupted(BaseException):
 class _Stream:
     """A text (or, as ``.buffer``, binary) stream whose failures are noted, not raised."""
 
-    def __init__(self, stream: Any, guard: "Guard", name: str) -> None:
+    def __init__(self, stream: Any, guard: Guard, name: str) -> None:
         self._stream = stream
         self._guard = guard
         self._name = name
@@ -82,7 +83,7 @@ class _Stream:
             self._guard.note(self._name, err, self._stream)
 
     @property
-    def buffer(self) -> "_Stream":
+    def buffer(self) -> _Stream:
         return _Stream(self._stream.buffer, self._guard, self._name)
 
     def __getattr__(self, name: str) -> Any:
@@ -118,7 +119,7 @@ class Guard:
         except OSError:
             pass
 
-    def install(self) -> "Guard":
+    def install(self) -> Guard:
         self._saved = (sys.stdout, sys.stderr)
         if sys.stdout is not None:
             sys.stdout = _Stream(sys.stdout, self, "stdout")  # type: ignore[assignment]
@@ -158,7 +159,7 @@ class Guard:
         return max(code, EXIT_USAGE)
 
 
-def _escaped(match: "re.Match[str]") -> str:
+def _escaped(match: re.Match[str]) -> str:
     return match.group().encode("unicode_escape").decode("ascii")
 
 

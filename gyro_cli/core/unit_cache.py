@@ -112,8 +112,8 @@ def stamp() -> list | None:
         return _stamp
     import importlib.util
     import zlib  # CRC-32 and Adler-32: enough to tell an edit, and 10x cheaper to load
-                 # than hashlib on the start-up path
 
+    # than hashlib on the start-up path
     from .. import __version__
 
     class Digest:

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import math
 import re
-from .record import record
 from typing import Any
 
 from . import unit_cache
 from .errors import InputError
+from .record import record
 
 # Name -> (pint dimensionality, SI unit used inside gyro, words for messages).
 DIMENSIONS: dict[str, tuple[str, str, str]] = {

@@ -8,10 +8,12 @@ from __future__ import annotations
 
 from typing import overload
 
+from .expr import SHOWN, SIG, Expr, num
+from .expr import formula as tree_formula
+from .expr import substitution as tree_substitution
+from .prose import Prose
+from .prose import text as prose_text
 from .record import field, record
-
-from .expr import SHOWN, SIG, Expr, formula as tree_formula, num, substitution as tree_substitution
-from .prose import Prose, text as prose_text
 from .units import si_text
 
 __all__ = ["SIG", "num", "qty", "vec", "Step", "Section", "Answer", "GivenLine", "Solution",
@@ -214,23 +216,23 @@ class Work:
 
     @overload
     def step(self, symbol: str | Expr, formula: Expr, *, unit: str = "", ref: str = "",
-             note: "str | tuple[str | Expr, ...]" = "", substitute: bool = True,
+             note: str | tuple[str | Expr, ...] = "", substitute: bool = True,
              state: bool = True) -> float: ...
 
     @overload
     def step(self, symbol: str | Expr, formula: None = None, *, value: float, unit: str = "",
-             ref: str = "", note: "str | tuple[str | Expr, ...]" = "",
+             ref: str = "", note: str | tuple[str | Expr, ...] = "",
              substitute: bool = True, state: bool = True) -> float: ...
 
     @overload
     def step(self, symbol: str | Expr, formula: Expr | None = None, *,
              value: float | None = None, unit: str = "", ref: str = "",
-             note: "str | tuple[str | Expr, ...]" = "",
+             note: str | tuple[str | Expr, ...] = "",
              substitute: bool = True, state: bool = True) -> float | None: ...
 
     def step(self, symbol: str | Expr, formula: Expr | None = None, *,
              value: float | None = None, unit: str = "", ref: str = "",
-             note: "str | tuple[str | Expr, ...]" = "",
+             note: str | tuple[str | Expr, ...] = "",
              substitute: bool = True, state: bool = True) -> float | None:
         """Add ``symbol = formula = substitution = value``; returns value.
 

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import sys
 import types
+from collections.abc import Iterable
 from importlib import import_module
-from typing import Iterable
 
 from ..core.errors import InputError
 from ..core.spec import Kind

@@ -14,15 +14,14 @@ the gyroscopic couple on an aeroplane); S.S. Rattan, "Theory of Machines", ch. 1
 
 from __future__ import annotations
 
-
 from ..core.errors import InputError, refuse_overflow
-from ..core.given import Given
-from ..physics import vehicles as V
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Sym, absolute
+from ..core.given import Given
 from ..core.prose import names, paren, plus, q, qvec, rel
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.vehicle_words import COUPLE, reactive_couple
 from ..core.work import Work
+from ..physics import vehicles as V
 
 #: the aeroplane's axes and the symbols its prose names (values are in the steps' trees)
 x, y, z, H0, wp0, C0 = names("x y z H omega_p C")

@@ -22,10 +22,10 @@ import functools
 import math
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Num, Sym, absolute, cos, sin
+from ..core.given import Given
 from ..core.prose import bracket, fn, matrix, names, prime, q, rel, tup
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import GivenLine, Work, num
 
 # key -> (dimension, symbol, meaning); order of Table 1.

@@ -21,12 +21,12 @@ import operator
 from functools import cache, reduce
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import NAMED, PI, Const, Expr, Let, Num, Sym, absolute, cos, sin
+from ..core.given import Given
 from ..core.prose import cross, dot, names, paren, q, rel
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
-from ..physics.earth_precession import ARCSEC, G, JULIAN_YEAR
+from ..physics.earth_precession import ARCSEC, JULIAN_YEAR, G
 
 DAY = 86400.0
 BODIES = ("sun", "moon")

@@ -17,13 +17,13 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..physics import euler_kinematics as ek
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Num, SumOf, Sym, absolute, atan2, cos, sin, sqrt
+from ..core.given import Given
 from ..core.prose import cross, deriv, dot, fn, mat, names, prime, rel, total, tup
 from ..core.prose import q as qv
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
+from ..physics import euler_kinematics as ek
 
 # sequence -> (first, second, third) angle keys; the first only turns about the fixed axis
 ANGLES = {"zxz": ("phi", "theta", "psi"), "zyx": ("yaw", "pitch", "roll")}

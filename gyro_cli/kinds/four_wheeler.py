@@ -32,13 +32,13 @@ import math
 
 from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import InputError, refuse_overflow
-from ..core.given import Given
-from ..physics import vehicles as V
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Let, Sym, asin, cos, sin, sqrt
+from ..core.given import Given
 from ..core.prose import names, plus, q, qvec, rel, total, tup
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
 from ..core.work import Work, qty
+from ..physics import vehicles as V
 
 #: the vehicle's axes and the symbols its prose names (values are in the steps' trees)
 ax, ay, az = names("x y z")

@@ -14,12 +14,12 @@ import math
 
 from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
-from ..core.given import Given
-from ..physics import gyro_drift as gd
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Let, Sym, cos, sin, sqrt
+from ..core.given import Given
 from ..core.prose import fn, names, prime, q, rel, words
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, qty
+from ..physics import gyro_drift as gd
 
 DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
 LINEAR_LIMIT = 0.1  # rad: beyond this the small-angle gimbal equations are doubtful

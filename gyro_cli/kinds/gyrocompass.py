@@ -19,10 +19,10 @@ import math
 
 from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Let, Sym, cos, ellipk, sin
+from ..core.given import Given
 from ..core.prose import cross, dot, fn, names, q, rel
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
 from ..physics.algebra import cos_theta
 from ..physics.gyrocompass import directive_stiffness, north_seeking_moment, period

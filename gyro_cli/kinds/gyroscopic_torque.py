@@ -27,7 +27,9 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 from ..core.errors import InputError
-from ..core.expr import PI, Expr, Let, Sym, absolute, cos as cos_, sin as sin_, sqrt
+from ..core.expr import PI, Expr, Let, Sym, absolute, sqrt
+from ..core.expr import cos as cos_
+from ..core.expr import sin as sin_
 from ..core.given import Given
 from ..core.prose import cross, deriv, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param

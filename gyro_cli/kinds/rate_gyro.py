@@ -20,13 +20,19 @@ import math
 
 from ..core.body import spin_angular_momentum
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, OneOf, Param
 from ..core.expr import PI, Let, Sym, cos
+from ..core.given import Given
 from ..core.prose import names, q, rel
+from ..core.spec import AnswerSpec, Kind, OneOf, Param
 from ..core.work import Work, num
-from ..physics.rate_gyro import (damping_ratio, gimbal_rate, large_angle_deflection,
-                                 natural_frequency, rate_from_moment, steady_deflection)
+from ..physics.rate_gyro import (
+    damping_ratio,
+    gimbal_rate,
+    large_angle_deflection,
+    natural_frequency,
+    rate_from_moment,
+    steady_deflection,
+)
 
 SMALL_ANGLE = math.radians(5)
 DEG = math.pi / 180

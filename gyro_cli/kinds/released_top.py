@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import NAMED, PI, Expr, Let, Num, Sym, absolute, acos, asin, cos, ellipk, sin, sqrt
+from ..core.given import Given
 from ..core.prose import bracket, fn, integral, names, pm, q, rel
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
 
 RPM = 2 * math.pi / 60

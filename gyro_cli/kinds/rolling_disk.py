@@ -26,14 +26,14 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import NAMED, PI, Let, Sym, absolute, cos, exp, sin, sqrt
+from ..core.given import Given
 from ..core.prose import cross, deriv, names, prime, q, rel, tup
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
 
 #: the symbols the prose names (values are in the steps' trees)

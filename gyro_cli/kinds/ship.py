@@ -22,13 +22,13 @@ import math
 from typing import Any
 
 from ..core.errors import InputError, refuse_overflow
-from ..core.given import Given
-from ..physics import vehicles as V
-from ..core.spec import AnswerSpec, Kind, OneOf, Param
 from ..core.expr import PI, Num, Sym, absolute, cos, sin
-from ..core.prose import deriv, names, plus, qvec, q, rel
+from ..core.given import Given
+from ..core.prose import deriv, names, plus, q, qvec, rel
+from ..core.spec import AnswerSpec, Kind, OneOf, Param
 from ..core.vehicle_words import COUPLE, reactive_couple
 from ..core.work import Work
+from ..physics import vehicles as V
 
 #: the ship's axes and the symbols its prose names (values are in the steps' trees)
 x, y, z = names("x y z")

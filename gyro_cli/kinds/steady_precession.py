@@ -19,13 +19,16 @@ from __future__ import annotations
 import math
 
 from ..core.errors import InputError
+from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, exp, sqrt
+from ..core.expr import cos as cos_
+from ..core.expr import sin as sin_
 from ..core.given import Given
+from ..core.prose import deriv, fn, names, paren, prime, q, rel, words
+from ..core.prose import text as prose_text
 from ..core.spec import AnswerSpec, Kind, Param
-from ..physics.algebra import cos_theta, quadratic_roots
-from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, cos as cos_, exp, sin as sin_, sqrt
-from ..core.prose import deriv, fn, names, paren, prime, q, rel, text as prose_text, words
 from ..core.work import Work, num, qty
 from ..physics import steady
+from ..physics.algebra import cos_theta, quadratic_roots
 
 RPM = 2 * math.pi / 60
 
@@ -95,7 +98,7 @@ _I_DROPS_OUT = (_AT_90, ": ", _COS_0, ", so the transverse inertia ", I_, " drop
                 "11.13 and is not needed")
 
 
-def _label(symbol: "str | Expr", label: str) -> "str | Expr":
+def _label(symbol: str | Expr, label: str) -> str | Expr:
     """A step's symbol with its root's label: ``phidot (slow)``; the symbol alone without."""
     if not label:
         return symbol
@@ -468,7 +471,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     spins = [spin] * len(roots) if spin is not None else \
         [given["axial_rate"] - p * cos for p in roots]
     if spin is None:  # the spin at each root, from the given axial rate (Eq. 11.8)
-        for p, s, label in zip(roots, spins, labels or [""] * len(roots)):
+        for p, _s, label in zip(roots, spins, labels or [""] * len(roots)):
             work.step(_label("psidot", label),
                       _rate("omega_z", given["axial_rate"]) - _rate("phidot", p)
                       * cos_(_theta(theta)), unit="rad/s", ref="Eq. 11.8")

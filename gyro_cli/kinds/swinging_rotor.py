@@ -34,7 +34,6 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
 from ..physics.algebra import cos_theta
 
-
 # ---- physics on floats ------------------------------------------------------
 
 def swing_rate_sq(m: float, g: float, L: float, I_O: float, theta0: float,

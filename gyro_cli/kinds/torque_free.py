@@ -15,13 +15,12 @@ import math
 from typing import Any
 
 from ..core.errors import InputError
-from ..core.given import Given
-from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import PI, Expr, Num, Sym, absolute, acos, asin, atan, cos, sin, sqrt, tan
+from ..core.given import Given
 from ..core.prose import Prose, names, q, rel, tup, words
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work
-
+from ..physics.torque_free import MOTION_KEYS, FreeMotion, TorqueFreeError, solve_motion
 
 WORDS = {"omega": "omega", "omega_angle": "beta", "nutation_angle": "theta",
          "axial_rate": "omega_z", "precession": "phidot", "spin": "psidot",

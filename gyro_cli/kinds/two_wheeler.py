@@ -25,13 +25,13 @@ import math
 
 from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import refuse_overflow
-from ..core.given import Given
-from ..physics import vehicles as V
-from ..core.spec import AnswerSpec, Kind, Param
 from ..core.expr import Expr, Sym, atan, cos, sin
+from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel, tup
+from ..core.spec import AnswerSpec, Kind, Param
 from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
 from ..core.work import Work
+from ..physics import vehicles as V
 
 #: the machine's axes and the symbols its prose names (values are in the steps' trees)
 x, y, z = names("x y z")

@@ -140,7 +140,7 @@ class Matrix2(tuple):
 
     __slots__ = ()
 
-    def __new__(cls, rows) -> "Matrix2":
+    def __new__(cls, rows) -> Matrix2:
         return super().__new__(cls, tuple(tuple(float(x) for x in row) for row in rows))
 
     def __getitem__(self, key):
@@ -169,14 +169,14 @@ class Spectrum(tuple[complex, ...]):
 
     # scaled: every eigenvalue times factor (SupportsIndex, the tuple's repeat count, is
     # accepted for the signature of tuple.__mul__ and gets NotImplemented unless a number)
-    def __mul__(self, factor: complex | SupportsIndex) -> "Spectrum":
+    def __mul__(self, factor: complex | SupportsIndex) -> Spectrum:
         if isinstance(factor, (int, float, complex)) and not isinstance(factor, bool):
             return Spectrum(e * factor for e in self)
         return NotImplemented
 
     __rmul__ = __mul__
 
-    def __truediv__(self, divisor: float) -> "Spectrum":
+    def __truediv__(self, divisor: float) -> Spectrum:
         return Spectrum(e / divisor for e in self)
 
 

@@ -43,7 +43,7 @@ Plain floats only: no units, no files, no printing.
 from __future__ import annotations
 
 import math
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 Vector = tuple[float, float, float]
 Matrix = tuple[Vector, Vector, Vector]

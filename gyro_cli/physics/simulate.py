@@ -30,9 +30,9 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Callable, Protocol
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -392,7 +392,7 @@ def simulate(top: TopLike, start: StartLike, t_end: float, samples: int = 2001,
     if amplitude > STEADY_AMPLITUDE:
         for k, decreasing in brackets:
             piece = pieces[k]
-            root = brentq(lambda t: _slope(_piece_at(piece, t)), piece.t_old, piece.t,
+            root = brentq(lambda t: _slope(_piece_at(piece, t)), piece.t_old, piece.t,  # noqa: B023 (called in this iteration)
                           xtol=1e-15 * max(1.0, abs(piece.t)), rtol=4 * np.finfo(float).eps)
             (mins if decreasing else maxs).append(root)
     if p.theta_rate0 == 0.0 and amplitude > STEADY_AMPLITUDE:

@@ -36,8 +36,8 @@ engines running against the wheels dominate.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 Vector = tuple[float, float, float]
 

@@ -18,8 +18,18 @@ from __future__ import annotations
 
 import base64
 
-from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, cdata, choice_prompt,
-                   html_text, number_text, xml_text)
+from .bank import (
+    Blank,
+    Choice,
+    ProblemBank,
+    Variant,
+    blank_prompt,
+    cdata,
+    choice_prompt,
+    html_text,
+    number_text,
+    xml_text,
+)
 
 #: the category every problem's category sits in
 TOP = "$course$/top/gyro"

@@ -21,10 +21,9 @@ included.
 from __future__ import annotations
 
 import json
-from typing import Iterable, Iterator
+from collections.abc import Iterable, Iterator
 
-from .bank import (Blank, Choice, ProblemBank, Variant, html_text, number_text, stable_uuid,
-                   xml_attr)
+from .bank import Blank, Choice, ProblemBank, Variant, html_text, number_text, stable_uuid, xml_attr
 
 TOPIC = "Gyroscopic motion"
 

@@ -19,10 +19,21 @@ from __future__ import annotations
 
 import io
 import zipfile
-from typing import Callable
+from collections.abc import Callable
 
-from .bank import (Blank, Choice, ProblemBank, Variant, blank_prompt, choice_prompt,
-                   html_text, number_text, stable_uuid, xml_attr, xml_text)
+from .bank import (
+    Blank,
+    Choice,
+    ProblemBank,
+    Variant,
+    blank_prompt,
+    choice_prompt,
+    html_text,
+    number_text,
+    stable_uuid,
+    xml_attr,
+    xml_text,
+)
 
 QTI_NS = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2"
 QTI_XSD = "http://www.imsglobal.org/xsd/ims_qtiasiv1p2p1.xsd"

@@ -18,7 +18,8 @@ from __future__ import annotations
 
 import dataclasses
 import tempfile
-from typing import IO, TYPE_CHECKING, Iterator
+from collections.abc import Iterator
+from typing import IO, TYPE_CHECKING
 
 if TYPE_CHECKING:
     import zipfile
@@ -249,7 +250,7 @@ class QtiSink(_Marking):
         packed.close()
 
 
-def _copy(archive: "zipfile.ZipFile", name: str, source: IO[bytes], at: int, size: int) -> None:
+def _copy(archive: zipfile.ZipFile, name: str, source: IO[bytes], at: int, size: int) -> None:
     """Pack ``size`` bytes of ``source`` from ``at`` as the entry ``name``, as
     ``ZipFile.writestr`` packs the same bytes (its size known before it is written)."""
     from .bank_qti import entry

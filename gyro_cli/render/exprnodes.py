@@ -14,8 +14,25 @@ import re
 
 from ..core import expr as E
 from ..core import prose as P
-from .mathtree import (Abs, BinOp, Call, Group, Integral, Matrix, Neg, Node, Num, Pow, Prime,
-                       Quantity, Rel, Sum, Sym, Text, Tuple)
+from .mathtree import (
+    Abs,
+    BinOp,
+    Call,
+    Group,
+    Integral,
+    Matrix,
+    Neg,
+    Node,
+    Num,
+    Pow,
+    Prime,
+    Quantity,
+    Rel,
+    Sum,
+    Sym,
+    Text,
+    Tuple,
+)
 
 
 class NodePrinter(E.Printer):

@@ -6,7 +6,8 @@ import csv
 import dataclasses
 import io
 import json
-from typing import Any, Iterable
+from collections.abc import Iterable
+from typing import Any
 
 from ..checking.grades import OUT_COLUMNS, Graded
 from ..core.csvsafe import safe_cell as _cell
@@ -106,7 +107,7 @@ def canvas_csv(graded: Graded, column: str) -> str:
     writer.writerow(["    Points Possible", "", "", "", "",
                      f"{max(totals):g}" if totals else ""])
     students = graded.assignment.students if graded.assignment is not None else {}
-    for student, (points, total) in graded.scores.items():
+    for student, (points, _total) in graded.scores.items():
         extra = students[student].extra if student in students else {}
         cells = {name: _roster_value(extra, keys) for name, keys in CANVAS_FROM_ROSTER.items()}
         cells["Student"] = cells["Student"] or student

@@ -21,8 +21,9 @@ from __future__ import annotations
 
 import functools
 import re
+from collections.abc import Callable, Sequence
 from html import escape as _escape
-from typing import Any, Callable, Sequence, TypeVar
+from typing import Any, TypeVar
 
 from ..core.work import num
 from ..solving.solve import Result

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..solving.solve import Result
 from ..core.errors import terminal_text
 from ..core.expr import UNIT_TEXT, python, python_name, symbols
 from ..core.work import Step, num
+from ..solving.solve import Result
 from .formats import Format
 
 WIDTH = 78

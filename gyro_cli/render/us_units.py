@@ -14,7 +14,8 @@ from __future__ import annotations
 import dataclasses
 
 from ..core.expr import Sym, map_syms, substitution
-from ..core.prose import Quantity as Quantity_, map_values
+from ..core.prose import Quantity as Quantity_
+from ..core.prose import map_values
 from ..core.work import GivenLine, Section, Solution, Step
 from ..solving.solve import Reported, Result
 

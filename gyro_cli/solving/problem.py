@@ -5,21 +5,20 @@ Errors name the file, the key, its YAML line and what was expected.
 
 from __future__ import annotations
 
-
 import math
 import re
 from collections.abc import Callable
-from ..core.record import field, record
 from typing import Any
 
-from ..kinds import get as kind_named
 from ..core import safeyaml, units  # safeyaml's imports are light (yaml comes later)
 from ..core.alternatives import Alternative, alternatives_of, converted
 from ..core.body import BODY_PARAMS
 from ..core.errors import InputError, shown
-from ..core.params import _OPS, normal_word, read_word, safe_choices, split_hemisphere
 from ..core.given import Given, Particles
+from ..core.params import _OPS, normal_word, read_word, safe_choices, split_hemisphere
+from ..core.record import field, record
 from ..core.spec import Kind, Param
+from ..kinds import get as kind_named
 
 TOP_KEYS = ("id", "kind", "given", "find", "title", "source", "statement", "notes", "expected",
             "tolerance", "vary", "units", "ask", "steps")

@@ -7,16 +7,15 @@ import math
 import re
 from typing import TYPE_CHECKING
 
-from ..core.record import record
-
 from ..core import units
 from ..core.alternatives import alternatives_of, step_tree
 from ..core.body import build_body
-from ..core.prose import names, q, rel
 from ..core.errors import InputError
 from ..core.expr import Add, Call, Const, Div, Expr, Let, Mul, Neg, Num, Pow, Sub, Sym
 from ..core.given import Given
 from ..core.params import MISSING_KEY
+from ..core.prose import names, q, rel
+from ..core.record import record
 from ..core.spec import Kind
 from .problem import Problem, load, params_by_name
 
