@@ -11,6 +11,7 @@ eigenvalues of the 4x4 state matrix) or in closed form (det(g K0 + v^2 K2) = 0).
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -150,3 +151,98 @@ def test_item02_bicycle_without_overrides_unchanged():
                                                                        rel=1e-12)
     same = solve(result.problem, {"I_Txx": 80.81722}).answers["weave_speed"].si_values[0]
     assert same == pytest.approx(4.29238253634111, rel=1e-12)
+
+
+# ---- item 4: a Blackboard download of responses regraded with errors carried forward ----
+
+PROBLEM_11_3 = (ROOT / "problems" / "11_3.yaml").read_text()
+OZF, INCH, RPM = 4.4482216152605 / 16, 0.0254, 2 * math.pi / 60
+#: Blackboard's Download Results, long format (By Question and User): its columns
+DOWNLOAD_HEADER = ["Username", "Last Name", "First Name", "Question ID", "Question", "Answer",
+                   "Possible Points", "Auto Score", "Manual Score"]
+
+
+def hand_11_3(I_factor: float) -> dict[str, float]:
+    """11/3 by hand with I (about O) scaled: I, the precession roots and the least spin in
+    rpm (Eq. 11.13 and 2 sqrt((I - J) m g l cos(theta)) / J)."""
+    W, g = 3 * OZF, 32.2 * 0.3048
+    m = W / g
+    J, I = m * (0.84 * INCH) ** 2, m * (1.80 * INCH) ** 2 * I_factor
+    theta, psidot, mgl = math.radians(30), 1800 * RPM, m * g * 1.5 * INCH
+    a, b, c = (J - I) * math.cos(theta), J * psidot, -mgl
+    roots = sorted(abs((-b + s * math.sqrt(b * b - 4 * a * c)) / (2 * a)) for s in (1, -1))
+    least = 2 * math.sqrt((I - J) * mgl * math.cos(theta)) / J
+    return {"I": I, "slow": roots[0] / RPM, "fast": roots[1] / RPM, "min_spin": least / RPM}
+
+
+def download(tmp_path: Path, upload: Path, answers: dict[str, list[str]]) -> Path:
+    """A long-format download of the test made from ``upload``: per student one row per
+    question (in the upload's order), the question's text as uploaded; the first
+    student's rows show it with the tags stripped, as a plain-text view would."""
+    import csv
+
+    texts = [line.split("\t")[1] for line in upload.read_text().splitlines()]
+    path = tmp_path / "downloadlong.csv"
+    with path.open("w", newline="", encoding="utf-8") as out:
+        writer = csv.writer(out, quoting=csv.QUOTE_ALL)
+        writer.writerow(DOWNLOAD_HEADER)
+        for n, (user, typed) in enumerate(answers.items()):
+            for k, (text, answer) in enumerate(zip(texts, typed)):
+                shown = re.sub(r"<[^>]+>", " ", text) if n == 0 else text
+                writer.writerow([user, user.title(), "A", f"_{1000 + k}_1", shown, answer,
+                                 "1", "0", ""])
+    return path
+
+
+def test_item04_blackboard_responses_regraded_with_errors_carried_forward(tmp_path, run):
+    """11/3 with `steps: [I]` exported to Blackboard; a student whose I is 10% high and whose
+    precession roots and least spin are right for it: Blackboard gives 0 for each; regraded
+    from the download with --credit ecf=1, 2 of 3 points (the notes naming their I)."""
+    import json
+
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3.replace("tolerance: 1%\n", "tolerance: 1%\nsteps: [I]\n"))
+    upload = tmp_path / "upload.txt"
+    made = run("export", "--to", "blackboard", problem, "-o", upload)
+    assert made.exit_code == 0, made.output
+    assert "--responses blackboard" in made.stderr
+    own, right = hand_11_3(1.1), hand_11_3(1.0)
+    download_path = download(tmp_path, upload, {
+        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
+                 f"{own['min_spin']:.4g}"],
+        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]})
+    graded = run("check", "--answers", download_path, "--responses", "blackboard", problem,
+                 "--credit", "ecf=1", "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = {(r["student"], r["answer"]): r for r in json.loads(graded.stdout)["rows"]}
+    assert rows["carl", "I"]["points"] == 0
+    for name in ("precession", "min_spin"):
+        assert rows["carl", name]["result"] == "carried", rows["carl", name]
+        assert "consistent with your I = " in rows["carl", name]["note"]
+    assert rows["dana", "I"]["points"] == 1 and rows["dana", "min_spin"]["points"] == 1
+    assert rows["dana", "precession"]["points"] < 1  # the fast root left blank
+    plain = run("check", "--answers", download_path, "--responses", "blackboard", problem,
+                "--format", "json")
+    carl = [r for r in json.loads(plain.stdout)["rows"] if r["student"] == "carl"]
+    assert sum(r["points"] for r in carl) == 0  # without ECF: as Blackboard marked it
+
+
+def test_item04_a_download_from_another_bank_is_refused(tmp_path, run):
+    """A question text no problem file gives: one line naming the file and row, exit 2."""
+    import csv
+
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3)
+    path = tmp_path / "downloadlong.csv"
+    with path.open("w", newline="") as out:
+        writer = csv.writer(out)
+        writer.writerow(DOWNLOAD_HEADER)
+        writer.writerow(["carl", "C", "A", "_1_1", "What is 2 + 2?", "4", "1", "0", ""])
+    graded = run("check", "--answers", path, "--responses", "blackboard", problem)
+    assert graded.exit_code == 2
+    assert "downloadlong.csv" in graded.output and "line 2" in graded.output
+    assert "Traceback" not in graded.output
+    wrong = tmp_path / "sheet.csv"
+    wrong.write_text("student,problem,answer,value\ncarl,11/3,I,1\n")
+    refused = run("check", "--answers", wrong, "--responses", "blackboard", problem)
+    assert refused.exit_code == 2 and "Username, Question and Answer" in refused.output
