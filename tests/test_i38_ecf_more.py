@@ -225,6 +225,16 @@ def test_item04_blackboard_responses_regraded_with_errors_carried_forward(tmp_pa
                 "--format", "json")
     carl = [r for r in json.loads(plain.stdout)["rows"] if r["student"] == "carl"]
     assert sum(r["points"] for r in carl) == 0  # without ECF: as Blackboard marked it
+    # the same download tab-delimited in UTF-16 (with its byte-order mark)
+    import csv
+
+    tabbed = tmp_path / "downloadlong.xls"
+    rows = list(csv.reader(download_path.open(newline="")))
+    tabbed.write_bytes("".join("\t".join(r) + "\r\n" for r in rows).encode("utf-16"))
+    again = run("check", "--answers", tabbed, "--responses", "blackboard", problem,
+                "--credit", "ecf=1", "--format", "json")
+    assert again.exit_code == 0, again.output
+    assert json.loads(again.stdout)["rows"] == json.loads(graded.stdout)["rows"]
 
 
 def test_item04_a_download_from_another_bank_is_refused(tmp_path, run):

@@ -65,9 +65,16 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
     """A Blackboard long-format download of responses as a gyro answer sheet (CSV text:
     student, problem, answer, value), its rows in the order of each answer's values."""
     from ..checking.grades import MAX_SHEET_BYTES
-    from ..core.safeyaml import read_text
+    from ..core.safeyaml import read_bytes
 
-    text = read_text(path, MAX_SHEET_BYTES, "a Blackboard download of results", "utf-8-sig")
+    data = read_bytes(path, MAX_SHEET_BYTES, "a Blackboard download of results")
+    # a tab-delimited download may come as UTF-16 with a byte-order mark
+    encoding = "utf-16" if data[:2] in (b"\xff\xfe", b"\xfe\xff") else "utf-8-sig"
+    try:
+        text = data.decode(encoding)
+    except UnicodeDecodeError:
+        raise InputError("is not " + ("UTF-16" if encoding == "utf-16" else "UTF-8") + " text",
+                         file=path) from None
     first = text.split("\n", 1)[0]
     rows = list(csv.reader(io.StringIO(text, newline=""),
                            delimiter="\t" if "\t" in first else ","))
