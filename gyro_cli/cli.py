@@ -276,6 +276,10 @@ def _cpus() -> int:
                    "report (and --junit), with the summary and exit code of the whole.")
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
+@click.option("--responses", type=click.Choice(("blackboard",)), default=None,
+              help="With --answers: SHEET is a platform's download of the responses to a "
+                   "bank gyro exported from PATHS (blackboard: its Download Results, By "
+                   "Question and User), regraded by gyro (errors carried forward too).")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
 @click.option("--out-format", "out_format", default="grades", show_default=True,
               type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
@@ -309,7 +313,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           assignment: str | None = None, out_format: str = "grades",
           credit: str | None = None, feedback_dir: str | None = None,
           reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
-          shard: str | None = None, merge: bool = False, student: str | None = None) -> None:
+          shard: str | None = None, merge: bool = False, student: str | None = None,
+          responses: str | None = None) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -320,9 +325,10 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if not paths and not (sheet and assignment):
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
-        if assignment or credit is not None or feedback_dir or student is not None or reveal:
-            fail("--assignment, --credit, --feedback, --student and --reveal go with --answers "
-                 "SHEET")
+        if assignment or credit is not None or feedback_dir or student is not None or reveal \
+                or responses:
+            fail("--assignment, --credit, --feedback, --student, --reveal and --responses go "
+                 "with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
@@ -358,9 +364,12 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if out is not None:
         _outputs_apart(read, out=out)
 
+    if responses and assignment:
+        fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
-        graded = grade(sheet, paths, assignment=assignment, credit=credit, student=student,
-                       reveal=reveal)
+        graded = _grade_responses(sheet, paths, credit, student, reveal) if responses else \
+            grade(sheet, paths, assignment=assignment, credit=credit, student=student,
+                  reveal=reveal)
         if out:
             grades_report.write_out(graded, out, out_format, force, read, reveal)
         if feedback_dir:
@@ -375,6 +384,23 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
                nl=fmt == "json")
     if graded.errors:
         sys.exit(INTERNAL)
+
+
+def _grade_responses(download: str, paths: tuple[str, ...], credit: str | None,
+                     student: str | None, reveal: bool):  # type: ignore[no-untyped-def]
+    """Grade a Blackboard download of responses: read as a gyro answer sheet (written to
+    a scratch file that is removed after)."""
+    import tempfile
+
+    from .api import grade
+    from .commands.responses import blackboard_sheet
+
+    text = blackboard_sheet(download, paths)
+    with tempfile.TemporaryDirectory() as scratch:
+        sheet = os.path.join(scratch, "responses.csv")
+        with open(sheet, "w", encoding="utf-8", newline="") as out:
+            out.write(text)
+        return grade(sheet, paths, credit=credit, student=student, reveal=reveal)
 
 
 def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,

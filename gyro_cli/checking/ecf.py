@@ -236,7 +236,10 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
         _note(item, "your values give this problem no solution: nothing to follow through")
         return
     truth = _carried_values(item, result)
-    if not again or not truth or not all(math.isfinite(v) and v != 0 for v in again):
+    # a value the student's values leave 0 is degenerate; one 0 in the solver's answer too
+    # (the imaginary part of a real eigenvalue) is not
+    if not again or not truth or not all(math.isfinite(v) for v in again) or \
+            again.count(0.0) > truth.count(0.0):
         return
     widths = [item.tolerance.half_width(float(v.si), v.number) for v in submitted]
     if len(again) == len(truth) and all(
@@ -426,8 +429,10 @@ class Case:
 
 def cases(problem: Any, result: Any, graph: Any, factor: float = 1.1) -> list[Case]:
     """For each numeric answer and each step it depends on: the step ``factor`` times the
-    solver's and the answer worked from it (to 6 figures), and the step a stock 1 with the
-    answer worked from that. Pairs whose carried solve fails are left out."""
+    solver's and the answer worked from it (to 15 figures: a tolerance may ask
+    for 12, the bicycle's), and the step a stock 1 with the
+    answer worked from that. Pairs whose carried solve fails, or leaves a value 0, are
+    left out."""
     from ..solving.solve import solve
 
     steps = step_names(result)
@@ -450,9 +455,10 @@ def cases(problem: Any, result: Any, graph: Any, factor: float = 1.1) -> list[Ca
                     again = solve(result.problem, {symbol: written}).answers[name]
                 except (InputError, ArithmeticError, ValueError, KeyError):
                     continue
-                if len(again.si_values) != len(answer.si_values):
-                    continue
-                later = [f"{v:.6g} {answer.si_unit}" for v in again.si_values]
-                step_text = f"{written:.6g} {unit}" if carried else f"1 {unit}"
+                if len(again.si_values) != len(answer.si_values) or \
+                        again.si_values.count(0.0) > answer.si_values.count(0.0):
+                    continue  # (a value the wrong step leaves 0 is not followed)
+                later = [f"{v:.15g} {answer.si_unit}" for v in again.si_values]
+                step_text = f"{written:.15g} {unit}" if carried else f"1 {unit}"
                 out.append(Case(symbol, name, {symbol: [step_text], name: later}, carried))
     return out

@@ -246,14 +246,15 @@ def _data_lines(solved: Any) -> list[tuple[str, str]]:
 def variant_of(problem: Problem, number: int, title: str,
                ask: tuple[str, ...] | None = None, student: Tolerance | None = None,
                tight: list[str] | None = None, pictures: bool = False,
-               ecf_share: float = DEFAULT_ECF) -> Variant:
+               ecf_share: float = DEFAULT_ECF, parts_out: list | None = None) -> Variant:
     """One problem solved and laid out as a bank's variant; its question text is its
     `statement` filled from its own given values (core/statement.py), else a sentence
     built from ``title``, its data and what is asked, then the precision asked and the
     tolerance accepted. ``ask``: the answers to ask (``--ask``; None: the file's `ask`,
     else all); ``student``: the tolerance of a blank whose problem's is tighter than the
     printed answer (`_blanks`), whose answer names go to ``tight``; ``pictures``: draw the
-    worked answer's picture (a released top's axis path, a bicycle's eigenvalues) as PNG."""
+    worked answer's picture (a released top's axis path, a bicycle's eigenvalues) as PNG;
+    ``parts_out``: given a list, what each blank is (`checking.ecf.Part`) is added to it."""
     import dataclasses
 
     from ..checking.tolerance import parse_tolerance
@@ -280,6 +281,8 @@ def variant_of(problem: Problem, number: int, title: str,
     blanks += _blanks(problem, solved, asked, student, tight if tight is not None else [],
                       used, parts)
     choices = _choices(problem, solved, asked, used)
+    if parts_out is not None:
+        parts_out.extend(parts)
     given = {str(k): v if isinstance(v, str) else str(v)
              for k, v in (problem.data.get("given") or {}).items()}
     text = statement_html(problem.statement_text() or None, title, _data_lines(solved),
@@ -613,10 +616,12 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     made, errors = stream(files, sink, count, seed, warn, ask, tolerance,
                           pictures and fmt != "blackboard", ecf_share, lost)
     if fmt != "prairielearn":
+        how = ("gyro check --answers DOWNLOAD --responses blackboard PATHS --credit ecf=S "
+               "(DOWNLOAD: the test's Download Results, By Question and User)"
+               if fmt == "blackboard" else "gyro check --answers ... --credit ecf=S")
         for line in lost:
             warn(f"{line}; a {fmt} question grades each blank alone, so these lose errors "
-                 "carried forward: regrade the responses with gyro check --answers ... "
-                 "--credit ecf=S")
+                 f"carried forward: regrade the responses with {how}")
     for line in errors:
         warn(line)
     if not made:

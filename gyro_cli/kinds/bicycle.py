@@ -18,6 +18,7 @@ worked answer says how the stable range moves without it.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 
@@ -284,9 +285,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     gyroscopic = given.word("gyroscopic", "true") == "true"
     speed = given.get("speed")
     m = bike.matrices(p, gyroscopic)
-    if not (m.M[0, 0] > 0 and m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2 > 0):
-        raise InputError("the mass matrix M is not positive definite for these data; check the "
-                         "inertias and their units", key="given")
+    _positive_definite(m)
 
     work.section("Conventions (Meijaard, Papadopoulos, Ruina & Schwab 2007)")
     for line in _CONVENTIONS:
@@ -309,13 +308,14 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     mT = step("m_T", mR + mB + mH + mF, "kg")
     xT = step("x_T", (xB * mB + xH * mH + w * mF) / mT, "m")
-    step("z_T", (-(rR * mR) + zB * mB + zH * mH - rF * mF) / mT, "m",
-         note="centre of mass of the whole bicycle")
-    step("I_Txx", I["IRxx"] + I["IBxx"] + I["IHxx"] + I["IFxx"] + mR * rR ** 2 + mB * zB ** 2
-         + mH * zH ** 2 + mF * rF ** 2, "kg*m^2")
-    step("I_Txz", I["IBxz"] + I["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF, "kg*m^2")
-    step("I_Tzz", I["IRxx"] + I["IBzz"] + I["IHzz"] + I["IFxx"] + mB * xB ** 2 + mH * xH ** 2
-         + mF * w ** 2, "kg*m^2", note=_WHEELS_ZZ)
+    zT = step("z_T", (-(rR * mR) + zB * mB + zH * mH - rF * mF) / mT, "m",
+              note="centre of mass of the whole bicycle")
+    ITxx = step("I_Txx", I["IRxx"] + I["IBxx"] + I["IHxx"] + I["IFxx"] + mR * rR ** 2 + mB * zB ** 2
+                + mH * zH ** 2 + mF * rF ** 2, "kg*m^2")
+    ITxz = step("I_Txz", I["IBxz"] + I["IHxz"] - mB * xB * zB - mH * xH * zH + mF * w * rF,
+                "kg*m^2")
+    ITzz = step("I_Tzz", I["IRxx"] + I["IBzz"] + I["IHzz"] + I["IFxx"] + mB * xB ** 2 + mH * xH ** 2
+                + mF * w ** 2, "kg*m^2", note=_WHEELS_ZZ)
 
     work.section(*_A_TITLE)
     mA = step("m_A", mH + mF, "kg")
@@ -328,23 +328,31 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     IAzz = step("I_Azz", I["IHzz"] + I["IFxx"] + mH * (xH - xA) ** 2 + mF * (w - xA) ** 2,
                 "kg*m^2")
     uA = step("u_A", (xA - w - c) * cos(lam) - zA * sin(lam), "m", note=_U_A_NOTE)
-    step("I_All", mA * uA ** 2 + IAxx * sin(lam) ** 2 + 2 * IAxz * sin(lam) * cos(lam)
-         + IAzz * cos(lam) ** 2, "kg*m^2", note="about the steer axis")
-    step("I_Alx", -(mA * uA * zA) + IAxx * sin(lam) + IAxz * cos(lam), "kg*m^2")
-    step("I_Alz", mA * uA * xA + IAxz * sin(lam) + IAzz * cos(lam), "kg*m^2")
+    IAll = step("I_All", mA * uA ** 2 + IAxx * sin(lam) ** 2
+                + 2 * IAxz * sin(lam) * cos(lam) + IAzz * cos(lam) ** 2, "kg*m^2",
+                note="about the steer axis")
+    IAlx = step("I_Alx", -(mA * uA * zA) + IAxx * sin(lam) + IAxz * cos(lam), "kg*m^2")
+    IAlz = step("I_Alz", mA * uA * xA + IAxz * sin(lam) + IAzz * cos(lam), "kg*m^2")
     mu = step("mu", c * cos(lam) / w, "", note="trail ratio")
     if gyroscopic:
         SR = step("S_R", I["IRyy"] / rR, "kg m",
                   note="rear wheel spin angular momentum per unit speed")
         SF = step("S_F", I["IFyy"] / rF, "kg m")
-        step("S_T", SR + SF, "kg m")
+        ST = step("S_T", SR + SF, "kg m")
     else:  # the spin terms removed: a datum of the problem (0), not a formula
         t = bike.totals(p, gyroscopic)
-        work.step("S_R", value=t.SR, unit="kg m",
-                  note="gyroscopic: false; rear wheel spin angular momentum per unit speed")
-        work.step("S_F", value=t.SF, unit="kg m", note="gyroscopic: false")
-        step("S_T", Sym("S_R", t.SR, "kg m") + Sym("S_F", t.SF, "kg m"), "kg m")
-    step("S_A", mA * uA + mu * mT * xT, "kg m", note="static moment of the steering assembly")
+        SR = Sym("S_R", work.step("S_R", value=t.SR, unit="kg m", note="gyroscopic: false; "
+                                  "rear wheel spin angular momentum per unit speed"), "kg m")
+        SF = Sym("S_F", work.step("S_F", value=t.SF, unit="kg m", note="gyroscopic: false"),
+                 "kg m")
+        ST = step("S_T", SR + SF, "kg m")
+    SA = step("S_A", mA * uA + mu * mT * xT, "kg m",
+              note="static moment of the steering assembly")
+    if work.overrides:  # a student's values carried: the matrices from the steps shown
+        m, no_spin = _from_steps((mT, xT, zT, ITxx, ITxz, ITzz, mA, xA, zA, IAxx, IAxz, IAzz,
+                                  uA, IAll, IAlx, IAlz, mu, SR, SF, ST, SA), p)
+    else:  # nothing carried: the totals of physics/bicycle.py (the same values)
+        no_spin = bike.matrices(p, gyroscopic=False)
 
     work.section(*_MATRICES_TITLE)
     for entries, (name, a, unit) in zip(_MATRIX_ENTRIES, ((_M, m.M, "kg m^2"),
@@ -381,7 +389,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     if gyroscopic:
         # only the range without the spin is shown: no weave or capsize speed of its own
-        plain = bike.stable_speeds(bike.matrices(p, gyroscopic=False), g)
+        plain = bike.stable_speeds(no_spin, g)
         work.section(*_SHARE_TITLE)
         work.text("with the wheels' spin angular momentum: ", *stable)
         work.text("without it (gyroscopic: false): ", *_speeds(plain))
@@ -421,6 +429,26 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              ("K0", m.K0, "mass_length"), ("K2", m.K2, "mass")):
         work.answer(key, key, [float(x) + 0.0 for x in values.ravel()], dim,
                     ["phi,phi", "phi,delta", "delta,phi", "delta,delta"])
+
+
+def _from_steps(steps: tuple[Sym, ...], p: dict[str, float]):  # type: ignore[no-untyped-def]
+    """The matrices, and those without the wheels' spin, from the values of the worked
+    answer's steps m_T ... S_A (in the order of `physics.bicycle.Totals`): a student's
+    value in a step's place reaches the eigenvalues and the speeds."""
+    from ..physics import bicycle as bike
+
+    shown = bike.Totals(*(step.si for step in steps))
+    m = bike.matrices_of(shown, p["w"], p["lambda"])
+    _positive_definite(m)
+    no_spin = dataclasses.replace(shown, SR=0.0, SF=0.0, ST=0.0)
+    return m, bike.matrices_of(no_spin, p["w"], p["lambda"])
+
+
+def _positive_definite(m) -> None:  # type: ignore[no-untyped-def]
+    """Exit 2 unless the mass matrix M is positive definite."""
+    if not (m.M[0, 0] > 0 and m.M[0, 0] * m.M[1, 1] - m.M[0, 1] ** 2 > 0):
+        raise InputError("the mass matrix M is not positive definite for these data; check the "
+                         "inertias and their units", key="given")
 
 
 def _spectrum(stab, m, v: float, g: float):  # type: ignore[no-untyped-def]

@@ -201,8 +201,12 @@ def matrices(p: dict[str, float], gyroscopic: bool = True) -> Matrices:
       C1_dp = -(mu S_T + S_F cos(lambda)),
       C1_dd = I_Alz cos(lambda) / w + mu (S_A + I_Tzz cos(lambda) / w)
     """
-    t = totals(p, gyroscopic)
-    w, lam = p["w"], p["lambda"]
+    return matrices_of(totals(p, gyroscopic), p["w"], p["lambda"])
+
+
+def matrices_of(t: Totals, w: float, lam: float) -> Matrices:
+    """``matrices`` from the totals of Appendix A (a worked answer's steps, a student's
+    value among them), the wheel base ``w`` and the steer axis tilt ``lam``."""
     s, co = math.sin(lam), math.cos(lam)
     M = Matrix2([[t.ITxx, t.IAlx + t.mu * t.ITxz],
                  [t.IAlx + t.mu * t.ITxz, t.IAll + 2 * t.mu * t.IAlz + t.mu ** 2 * t.ITzz]])
