@@ -238,7 +238,7 @@ def test_solve_and_check_keep_the_promise(run_in_process, workdir, source):
     path = workdir / "p.yaml"
     path.write_text(source, encoding="utf-8", errors="surrogatepass")
     # `gyro solve` once (its exit code, its one-line error); the other formats rendered
-    # from one solve as `gyro solve --format X` renders them (cli._rendered), not four
+    # from one solve as `gyro solve --format X` renders them (Result.render, the registry the CLI reads), not four
     # runs of the command: a format that raises fails here as it would exit 3 there.
     result = run_in_process("solve", path)
     keeps_promise(result, path, "solve", source)
@@ -277,7 +277,6 @@ def _every_format(path):  # type: ignore[no-untyped-def]
     one solve: 2 and nothing where the file or the format's rendering is bad input; and
     the solve's result (None where the file is bad input)."""
     from gyro_cli.api import solve_file
-    from gyro_cli.cli import _rendered
     from gyro_cli.core.errors import InputError
 
     formats = ("text", "json", "markdown", "latex")
@@ -288,7 +287,7 @@ def _every_format(path):  # type: ignore[no-untyped-def]
     out = {}
     for fmt in formats:
         try:
-            out[fmt] = (0, _rendered(result, fmt, level=1))
+            out[fmt] = (0, result.render(fmt, level=1))  # gyro solve's own renderer
         except InputError:
             out[fmt] = (2, "")
     return out, result
