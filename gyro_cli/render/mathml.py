@@ -190,6 +190,9 @@ class MathMLPrinter(TypesetPrinter):
     def sum(self, left: str, op: str, right: str) -> str:
         return _row(left, _mo(SUMS[op]), right)
 
+    def lead(self, op: str, right: str) -> str:
+        return _row(_mo(SUMS[op]), right)
+
     def frac(self, num: str, den: str) -> str:
         return f"<mfrac>{_row(num)}{_row(den)}</mfrac>"
 
