@@ -56,3 +56,23 @@ def test_item01_a_rows_term_printed_by_the_sum_sign_rule():
             mathml.doprint(formula_node(a)).join(("<mrow>", mathml.term(sign, node)[6:]))
     for module in (html, writeup):
         assert 'Num("0")' not in inspect.getsource(module), module
+
+
+def test_item01_a_powers_base_bracketed_by_one_rule():
+    """Whether a power's base is bracketed is decided once, in the shared base; LaTeX and
+    MathML only spell the power (a brace, an <msubsup>)."""
+    from gyro_cli.render.exprnodes import formula_node
+    from gyro_cli.render.mathml import MathMLPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, TypesetPrinter
+
+    for printer in (LatexPrinter, MathMLPrinter):
+        for name in ("_print_Pow", "_after_sign", "term"):
+            assert name in vars(TypesetPrinter) and name not in vars(printer), (printer, name)
+    a, b, theta_0 = P.names("a b theta_0")
+    cases = (((a + b) ** 2, "(a + b)^{2}"), ((a / b) ** 2, r"\left(\frac{a}{b}\right)^{2}"),
+             (theta_0 ** 2, r"{\theta_{0}}^{2}"), (a ** 2, "a^{2}"))
+    for tree, tex in cases:
+        assert LatexPrinter(True).doprint(formula_node(tree)) == tex
+    mathml = MathMLPrinter(True).doprint(formula_node((a + b) ** 2))
+    assert mathml.startswith("<msup><mrow><mo>(</mo>"), mathml
+    assert MathMLPrinter(True).doprint(formula_node(theta_0 ** 2)).startswith("<msubsup>")

@@ -265,6 +265,15 @@ class TypesetPrinter(Printer):
     def primed(self, inner: str, count: int) -> str:
         raise NotImplementedError
 
+    def bracketed(self, text: str) -> bool:
+        """Whether a printed bracket (a `Group`) shows its brackets (a stacked fraction
+        in a display does not)."""
+        raise NotImplementedError
+
+    def power(self, base: Node, text: str, exp: str) -> str:
+        """A power of ``base`` (printed as ``text``, bracketed where it needs) to ``exp``."""
+        raise NotImplementedError
+
     # ---- the decisions
     def _print_Num(self, node: Num) -> str:
         return self.number(node.text)
@@ -357,6 +366,14 @@ class TypesetPrinter(Printer):
         first = self._print(node.first) if node.first is not None else None
         return self.relations(first, [(op, self._print(rhs)) for op, rhs in node.rest])
 
+    def _print_Pow(self, node: Pow) -> str:
+        base = node.base
+        text = self._print(base)
+        if (isinstance(base, Group) and not self.bracketed(text)) or \
+                (base_needs_brackets(base) and not isinstance(base, Group)):
+            text = self.brackets(text)
+        return self.power(base, text, self._print(_strip(node.exp)))
+
     def _print_Prime(self, node: Any) -> str:
         return self.primed(self.parenthesize(node.body, PRECEDENCE["Atom"]), node.count)
 
@@ -417,16 +434,13 @@ class LatexPrinter(TypesetPrinter):
             return f"{left}\\,{right}"
         return f"{left} {right}"
 
-    def _print_Pow(self, node: Pow) -> str:
-        base = node.base
-        text = self._print(base)
-        if isinstance(base, Group) and not text.startswith(("(", "[", "\\left")):
-            text = self.brackets(text)
-        elif base_needs_brackets(base) and not isinstance(base, Group):
-            text = self.brackets(text)
-        elif isinstance(base, Sym) and "_" in text:
+    def bracketed(self, text: str) -> bool:
+        return text.startswith(("(", "[", "\\left"))
+
+    def power(self, base: Node, text: str, exp: str) -> str:
+        if isinstance(base, Sym) and "_" in text:
             text = "{" + text + "}"
-        return f"{text}^{{{self._print(_strip(node.exp))}}}"
+        return f"{text}^{{{exp}}}"
 
     def root(self, inner: str) -> str:
         return f"\\sqrt{{{inner}}}"
