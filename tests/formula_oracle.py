@@ -28,6 +28,7 @@ import re
 
 from gyro_cli.render.conventions import GREEK, Token, dotted, tokens  # noqa: F401 (re-exported)
 from gyro_cli.render.conventions import symbolic as _symbolic  # noqa: F401
+from gyro_cli.render.mathprint import PRECEDENCE, SUM_TEX, Printer, _fold
 from gyro_cli.render.mathtree import (
     Abs,
     BinOp,
@@ -44,6 +45,7 @@ from gyro_cli.render.mathtree import (
     Rel,
     Sum,
     Sym,
+    Text,
     Tuple,
 )
 
@@ -688,3 +690,88 @@ def latex_mixed(text: str) -> str:
 
     return "".join(f"${LatexPrinter(False).doprint(part)}$" if is_math else words(str(part))
                    for is_math, part in spans(text))
+
+
+# ---- plain text of the oracle's trees ------------------------------------------
+
+class TextPrinter(Printer):
+    """The plain form of a parsed tree, one spelling per tree: the parser's round trip
+    (gyro prints its own trees' text with `core.expr.TextPrinter`)."""
+
+    def _print_Num(self, node: Num) -> str:
+        return node.text
+
+    def _print_Sym(self, node: Sym) -> str:
+        return node.name
+
+    def _print_Text(self, node: Text) -> str:
+        return node.text
+
+    def _print_Quantity(self, node: Quantity) -> str:
+        return f"{self._print(node.value)} {node.unit}"
+
+    def _print_Neg(self, node: Neg) -> str:
+        body = node.body
+        inner = self._print(body) if isinstance(body, (Num, Quantity)) else \
+            self.parenthesize(body, PRECEDENCE["Neg"]) if not isinstance(body, Neg) \
+            else self.brackets(self._print(body))
+        return node.sign + inner
+
+    def _print_BinOp(self, node: BinOp) -> str:
+        op = node.op
+        if op in SUM_TEX:
+            right, op = _fold(node.right, op)
+            left = self.parenthesize(node.left, PRECEDENCE["+"])
+            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=op != "+")
+            return f"{left} {op} {rtext}"
+        left = self.parenthesize(node.left, PRECEDENCE["*"])
+        factor = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
+        if isinstance(node.right, Neg):
+            factor = self.brackets(factor)
+        sep = {"/": " / ", "x": " x ", ".": " . ", "*": " * ", " ": " "}[op]
+        return f"{left}{sep}{factor}"
+
+    def _print_Pow(self, node: Pow) -> str:
+        base = self.parenthesize(node.base, PRECEDENCE["Atom"])
+        if isinstance(node.base, Quantity):
+            base = self.brackets(self._print(node.base))
+        return f"{base}^{self.parenthesize(node.exp, PRECEDENCE['Pow'])}"
+
+    def _print_Call(self, node: Call) -> str:
+        args = (" | " if node.sep == "|" else ", ").join(self._print(a) for a in node.args)
+        power = f"^{self._print(node.power)}" if node.power is not None else ""
+        if not node.parens:
+            return f"{node.name}{power} {self._print(node.args[0])}"
+        return f"{node.name}{power}({args})"
+
+    def _print_Group(self, node: Group) -> str:
+        inner = self._print(node.body)
+        return f"[{inner}]" if node.open == "[" else f"({inner})"
+
+    def _print_Tuple(self, node: Tuple) -> str:
+        return ", ".join(self._print(x) for x in node.items)
+
+    def _print_Abs(self, node: Abs) -> str:
+        return f"|{self._print(node.body)}|"
+
+    def _print_Rel(self, node: Rel) -> str:
+        parts = [self._print(node.first)] if node.first is not None else []
+        parts += [f"{op} {self._print(rhs)}" for op, rhs in node.rest]
+        return " ".join(parts)
+
+    def _print_Sum(self, node) -> str:
+        return "sum " + self._print(node.body)
+
+    def _print_Integral(self, node) -> str:
+        return (f"int_{self._print(node.lower)}^{self._print(node.upper)} "
+                f"{self._print(node.body)}")
+
+    def _print_Prime(self, node) -> str:
+        return self.parenthesize(node.body, PRECEDENCE["Atom"]) + "'" * node.count
+
+    def _print_Matrix(self, node) -> str:
+        return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
+
+
+def text(node: Node) -> str:
+    return TextPrinter().doprint(node)

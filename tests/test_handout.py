@@ -17,10 +17,10 @@ from pathlib import Path
 
 import pytest
 import yaml
-from formula_oracle import latex_math, latex_mixed, parse, spans, try_parse
+from formula_oracle import latex_math, latex_mixed, parse, spans, text, try_parse
 
 from gyro_cli.core.work import num
-from gyro_cli.render.mathprint import latex, symbol_tex, text
+from gyro_cli.render.mathprint import latex, symbol_tex
 from gyro_cli.render.mathtree import (
     Abs,
     BinOp,

@@ -14,7 +14,7 @@ def test_item01_every_printer_subclasses_the_one_printer_base():
     from gyro_cli.render import exprnodes, mathml, mathprint
 
     printers = [E.TextPrinter, E.PythonPrinter, P.ProseText, exprnodes.NodePrinter,
-                mathprint.LatexPrinter, mathprint.TextPrinter, mathml.MathMLPrinter]
+                mathprint.LatexPrinter, mathml.MathMLPrinter]
     for printer in printers:
         assert issubclass(printer, E.Printer), printer
 

@@ -25,6 +25,9 @@ from collections.abc import Callable, Sequence
 from html import escape as _escape
 from typing import Any, TypeVar
 
+from ..core import prose as P
+from ..core.expr import Chain, Expr
+from ..core.prose import text as prose_text
 from ..core.work import num
 from ..solving.solve import Result
 from . import mathml
@@ -40,10 +43,9 @@ from .document import (
     walk,
     width,
 )
-from .exprnodes import prose_nodes, symbol_node
+from .exprnodes import formula_node, prose_nodes, symbol_node
 from .formats import Format
 from .mathml import MathMLPrinter, math_element
-from .mathprint import text as plain_text
 from .mathtree import BinOp, Node, Num, Quantity, Rel
 
 _T = TypeVar("_T")
@@ -189,17 +191,30 @@ def prose_html(text: str, keys: Keys = NO_KEYS) -> str:
     return keys.words(text, escape)
 
 
-@_memo
-def _inline(node: Node) -> str:
+def _inline(tree: Expr) -> str:
     """Inline maths; a long chain ``a = b = c`` as one <math> per link, so that the line
-    may wrap between them on a narrow screen."""
-    if isinstance(node, Rel) and node.first is not None and width(node) > 16:
-        return " ".join([_inline(node.first)] + [_inline(Rel(None, ((op, rhs),)))
-                                                  for op, rhs in node.rest])
-    if len(plain_text(node)) > INLINE_WIDTH:  # may be wider than a phone: its own sideways scroll
+    may wrap between them on a narrow screen. Its length in characters is the one text
+    printer's (`core.prose.ProseText`), as the text report writes it."""
+    node = formula_node(tree)
+    links = _links(tree)
+    if links is not None and width(node) > 16:
+        first, rest = links
+        return " ".join([_inline(first)] + [_inline(P.Rel(None, ((op, rhs),)))
+                                            for op, rhs in rest])
+    if len(prose_text(tree)) > INLINE_WIDTH:  # may be wider than a phone: its own sideways scroll
         return (f'<span class="mi" tabindex="0" role="group" aria-label="formula (scrolls '
                 f'sideways)">{_math(node)}</span>')
     return _math(node)
+
+
+def _links(tree: Expr) -> tuple[Expr, tuple[tuple[str, Expr], ...]] | None:
+    """A chain's first side and its (relation, side) links; None for anything else or a
+    chain continuing the line before it (``= x``)."""
+    if isinstance(tree, P.Rel) and tree.first is not None:
+        return tree.first, tree.rest
+    if isinstance(tree, Chain):
+        return tree.forms[0], tuple(("=", form) for form in tree.forms[1:])
+    return None
 
 
 # ---- steps ----------------------------------------------------------------------
@@ -230,9 +245,7 @@ def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
     items = []
     for sign, term in terms:
         if sign in ("+", "-"):
-            # printed against a 0 that is then dropped: "<mrow><mn>0</mn><mo>+</mo>..."
-            text = printer.doprint(BinOp(sign, Num("0"), term)).replace("<mrow><mn>0</mn>",
-                                                                        "<mrow>", 1)
+            text = printer.term(sign, term)
         elif sign:
             op = {" ": mathml.INVISIBLE_TIMES, "*": "<mo>⋅</mo>", ".": "<mo>⋅</mo>",
                   "x": "<mo>×</mo>"}[sign]
@@ -343,7 +356,7 @@ def _warning_html(text: str, solution: Any, keys: Keys = NO_KEYS) -> str:
 def prose_pieces_html(prose: Any, keys: Keys = NO_KEYS) -> str:
     """A sentence's words escaped (a key of the file as words), its trees inline MathML."""
     out = []
-    for piece in prose_nodes(prose):
+    for piece in prose.pieces:
         if isinstance(piece, str):
             out += [escape(part) for _, part in keys.split(piece)]
         else:

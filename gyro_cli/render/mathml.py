@@ -30,11 +30,9 @@ from .mathprint import (
     PRECEDENCE,
     TypesetPrinter,
     _rightmost,
-    _strip,
-    base_needs_brackets,
     beside_text,
 )
-from .mathtree import Abs, BinOp, Call, Group, Neg, Node, Num, Pow, Quantity, Sym, Tuple
+from .mathtree import Abs, BinOp, Call, Neg, Node, Num, Pow, Quantity, Sym, Tuple
 
 __all__ = ["PRECEDENCE", "MathMLPrinter", "math_element", "symbol_mathml", "tree_mathml"]
 
@@ -190,6 +188,9 @@ class MathMLPrinter(TypesetPrinter):
     def sum(self, left: str, op: str, right: str) -> str:
         return _row(left, _mo(SUMS[op]), right)
 
+    def lead(self, op: str, right: str) -> str:
+        return _row(_mo(SUMS[op]), right)
+
     def frac(self, num: str, den: str) -> str:
         return f"<mfrac>{_row(num)}{_row(den)}</mfrac>"
 
@@ -209,12 +210,11 @@ class MathMLPrinter(TypesetPrinter):
             return _row(left, THIN, INVISIBLE_TIMES, right)
         return _row(left, INVISIBLE_TIMES, right)
 
-    def _print_Pow(self, node: Pow) -> str:
-        base = node.base
-        text = self._print(base)
-        if base_needs_brackets(base) and not isinstance(base, Group):
-            text = self.brackets(text)
-        exp = _row(self._print(_strip(node.exp)))
+    def bracketed(self, text: str) -> bool:
+        return True  # a Group's own brackets, or a stacked fraction that needs none
+
+    def power(self, base: Node, text: str, exp: str) -> str:
+        exp = _row(exp)
         if isinstance(base, Sym) and text.startswith("<msub>") and text.endswith("</msub>"):
             return "<msubsup>" + text[len("<msub>"):-len("</msub>")] + exp + "</msubsup>"
         return f"<msup>{text}{exp}</msup>"

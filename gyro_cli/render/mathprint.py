@@ -7,7 +7,7 @@ sign folding of a sum, where a fraction is stacked, when a product's factor is
 bracketed, a power's base, a function's argument; its subclasses only spell
 the result. `LatexPrinter` typesets (``phidot`` -> ``\\dot{\\phi}``, a/b ->
 ``\\frac{a}{b}`` in display, ``K x k`` -> ``K \\times k``), `mathml.MathMLPrinter`
-writes MathML, `TextPrinter` writes the plain form back (``phidot sin(theta)``).
+writes MathML; plain text is `core.expr.TextPrinter`'s and `core.prose.ProseText`'s.
 How names, numbers and units are set is `conventions`.
 """
 
@@ -48,13 +48,11 @@ from .mathtree import (
 __all__ = [
     "RELATIONS_TEX",
     "LatexPrinter",
-    "TextPrinter",
     "TypesetPrinter",
     "latex",
     "number_tex",
     "split_symbol",
     "symbol_tex",
-    "text",
     "text_escape",
     "unit_tex",
 ]
@@ -267,6 +265,15 @@ class TypesetPrinter(Printer):
     def primed(self, inner: str, count: int) -> str:
         raise NotImplementedError
 
+    def bracketed(self, text: str) -> bool:
+        """Whether a printed bracket (a `Group`) shows its brackets (a stacked fraction
+        in a display does not)."""
+        raise NotImplementedError
+
+    def power(self, base: Node, text: str, exp: str) -> str:
+        """A power of ``base`` (printed as ``text``, bracketed where it needs) to ``exp``."""
+        raise NotImplementedError
+
     # ---- the decisions
     def _print_Num(self, node: Num) -> str:
         return self.number(node.text)
@@ -291,14 +298,7 @@ class TypesetPrinter(Printer):
         op = node.op
         if op in SIGNS:
             left = self.parenthesize(node.left, PRECEDENCE["+"])
-            right, op = _fold(node.right, op)
-            strict = op in ("-", "+-", "-+")
-            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=strict)
-            bracketed = precedence(right) < PRECEDENCE["+"] or \
-                (strict and precedence(right) == PRECEDENCE["+"])
-            if not bracketed and self.starts_minus(right) and not isinstance(right, Neg):
-                rtext = self.brackets(rtext)
-            return self.sum(left, op, rtext)
+            return self.sum(left, *self._after_sign(op, node.right))
         if op == "/" and self.display:
             self.display = False  # a fraction inside a fraction is written on the line
             try:
@@ -319,6 +319,26 @@ class TypesetPrinter(Printer):
         if self.number_follows(node.right, factor):
             return self.infix(left, self.PRODUCTS["*"], factor)
         return self.juxtapose(node, left, factor)
+
+    def _after_sign(self, op: str, right: Node) -> tuple[str, str]:
+        """The sign and the term after it, as a sum writes them: the one sign rule (a
+        negative term folded into the sign, a term starting with a minus bracketed)."""
+        right, op = _fold(right, op)
+        strict = op in ("-", "+-", "-+")
+        rtext = self.parenthesize(right, PRECEDENCE["+"], strict=strict)
+        bracketed = precedence(right) < PRECEDENCE["+"] or \
+            (strict and precedence(right) == PRECEDENCE["+"])
+        if not bracketed and self.starts_minus(right) and not isinstance(right, Neg):
+            rtext = self.brackets(rtext)
+        return op, rtext
+
+    def term(self, sign: str, node: Node) -> str:
+        """A term of a sum with its sign, starting a row of a broken display (``- b``)."""
+        return self.lead(*self._after_sign(sign, node))
+
+    def lead(self, op: str, right: str) -> str:
+        """A sign and the term after it, with nothing before the sign."""
+        raise NotImplementedError
 
     def _print_Call(self, node: Call) -> str:
         args = self.separator(node.sep).join(self._print(a) for a in node.args)
@@ -345,6 +365,14 @@ class TypesetPrinter(Printer):
     def _print_Rel(self, node: Rel) -> str:
         first = self._print(node.first) if node.first is not None else None
         return self.relations(first, [(op, self._print(rhs)) for op, rhs in node.rest])
+
+    def _print_Pow(self, node: Pow) -> str:
+        base = node.base
+        text = self._print(base)
+        if (isinstance(base, Group) and not self.bracketed(text)) or \
+                (base_needs_brackets(base) and not isinstance(base, Group)):
+            text = self.brackets(text)
+        return self.power(base, text, self._print(_strip(node.exp)))
 
     def _print_Prime(self, node: Any) -> str:
         return self.primed(self.parenthesize(node.body, PRECEDENCE["Atom"]), node.count)
@@ -384,7 +412,10 @@ class LatexPrinter(TypesetPrinter):
         return SUM_TEX[sign].replace("\\pm", "\\pm ").replace("\\mp", "\\mp ") + inner
 
     def sum(self, left: str, op: str, right: str) -> str:
-        return f"{left} {SUM_TEX[op]} {right}"
+        return f"{left} {self.lead(op, right)}"
+
+    def lead(self, op: str, right: str) -> str:
+        return f"{SUM_TEX[op]} {right}"
 
     def frac(self, num: str, den: str) -> str:
         return f"\\frac{{{num}}}{{{den}}}"
@@ -403,16 +434,13 @@ class LatexPrinter(TypesetPrinter):
             return f"{left}\\,{right}"
         return f"{left} {right}"
 
-    def _print_Pow(self, node: Pow) -> str:
-        base = node.base
-        text = self._print(base)
-        if isinstance(base, Group) and not text.startswith(("(", "[", "\\left")):
-            text = self.brackets(text)
-        elif base_needs_brackets(base) and not isinstance(base, Group):
-            text = self.brackets(text)
-        elif isinstance(base, Sym) and "_" in text:
+    def bracketed(self, text: str) -> bool:
+        return text.startswith(("(", "[", "\\left"))
+
+    def power(self, base: Node, text: str, exp: str) -> str:
+        if isinstance(base, Sym) and "_" in text:
             text = "{" + text + "}"
-        return f"{text}^{{{self._print(_strip(node.exp))}}}"
+        return f"{text}^{{{exp}}}"
 
     def root(self, inner: str) -> str:
         return f"\\sqrt{{{inner}}}"
@@ -454,86 +482,6 @@ class LatexPrinter(TypesetPrinter):
     def _print_Matrix(self, node: Any) -> str:
         rows = " \\\\ ".join(" & ".join(self._print(x) for x in row) for row in node.rows)
         return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
-
-
-# ---- plain text -------------------------------------------------------------
-
-class TextPrinter(Printer):
-    """The plain form the kinds write, one spelling per tree."""
-
-    def _print_Num(self, node: Num) -> str:
-        return node.text
-
-    def _print_Sym(self, node: Sym) -> str:
-        return node.name
-
-    def _print_Text(self, node: Text) -> str:
-        return node.text
-
-    def _print_Quantity(self, node: Quantity) -> str:
-        return f"{self._print(node.value)} {node.unit}"
-
-    def _print_Neg(self, node: Neg) -> str:
-        body = node.body
-        inner = self._print(body) if isinstance(body, (Num, Quantity)) else \
-            self.parenthesize(body, PRECEDENCE["Neg"]) if not isinstance(body, Neg) \
-            else self.brackets(self._print(body))
-        return node.sign + inner
-
-    def _print_BinOp(self, node: BinOp) -> str:
-        op = node.op
-        if op in SUM_TEX:
-            right, op = _fold(node.right, op)
-            left = self.parenthesize(node.left, PRECEDENCE["+"])
-            rtext = self.parenthesize(right, PRECEDENCE["+"], strict=op != "+")
-            return f"{left} {op} {rtext}"
-        left = self.parenthesize(node.left, PRECEDENCE["*"])
-        factor = self.parenthesize(node.right, PRECEDENCE["*"], strict=op == "/")
-        if isinstance(node.right, Neg):
-            factor = self.brackets(factor)
-        sep = {"/": " / ", "x": " x ", ".": " . ", "*": " * ", " ": " "}[op]
-        return f"{left}{sep}{factor}"
-
-    def _print_Pow(self, node: Pow) -> str:
-        base = self.parenthesize(node.base, PRECEDENCE["Atom"])
-        if isinstance(node.base, Quantity):
-            base = self.brackets(self._print(node.base))
-        return f"{base}^{self.parenthesize(node.exp, PRECEDENCE['Pow'])}"
-
-    def _print_Call(self, node: Call) -> str:
-        args = (" | " if node.sep == "|" else ", ").join(self._print(a) for a in node.args)
-        power = f"^{self._print(node.power)}" if node.power is not None else ""
-        if not node.parens:
-            return f"{node.name}{power} {self._print(node.args[0])}"
-        return f"{node.name}{power}({args})"
-
-    def _print_Group(self, node: Group) -> str:
-        inner = self._print(node.body)
-        return f"[{inner}]" if node.open == "[" else f"({inner})"
-
-    def _print_Tuple(self, node: Tuple) -> str:
-        return ", ".join(self._print(x) for x in node.items)
-
-    def _print_Abs(self, node: Abs) -> str:
-        return f"|{self._print(node.body)}|"
-
-    def _print_Rel(self, node: Rel) -> str:
-        parts = [self._print(node.first)] if node.first is not None else []
-        parts += [f"{op} {self._print(rhs)}" for op, rhs in node.rest]
-        return " ".join(parts)
-
-    def _print_Sum(self, node) -> str:
-        return "sum " + self._print(node.body)
-
-    def _print_Integral(self, node) -> str:
-        return (f"int_{self._print(node.lower)}^{self._print(node.upper)} "
-                f"{self._print(node.body)}")
-
-    def _print_Prime(self, node) -> str:
-        return self.parenthesize(node.body, PRECEDENCE["Atom"]) + "'" * node.count
-
-    def _print_Matrix(self, node) -> str:
-        return "[" + "; ".join(" ".join(self._print(x) for x in row) for row in node.rows) + "]"
 
 
 # ---- shared ---------------------------------------------------------------
@@ -589,6 +537,3 @@ def _fold(right: Node, op: str) -> tuple[Node, str]:
 def latex(node: Node, display: bool = True) -> str:
     return LatexPrinter(display).doprint(node)
 
-
-def text(node: Node) -> str:
-    return TextPrinter().doprint(node)

@@ -48,7 +48,7 @@ from .mathprint import (
     text_escape,
     unit_tex,
 )
-from .mathtree import BinOp, Group, Node, Num, Rel
+from .mathtree import BinOp, Group, Node, Rel
 
 __all__ = ["markdown", "latex", "standalone", "symbol_latex", "words", "text_escape",
            "symbol_tex", "file_keys", "prose_latex", "Keys", "MarkdownWriter", "LatexWriter",
@@ -148,8 +148,8 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
         if len(terms) == 1:
             rows.append((left, "= " + printer.doprint(piece)))
             continue
-        texts = ((printer.doprint(BinOp(sign, Num("0"), term))[2:] if sign else
-                  printer.doprint(term), width(term) + 3) for sign, term in terms)
+        texts = ((printer.term(sign, term) if sign else printer.doprint(term),
+                  width(term) + 3) for sign, term in terms)
         packed = pack(texts, budget, used=width(piece) - width(inner))
         for j, (row, _) in enumerate(packed):
             line = " ".join(([prefix] if j == 0 and prefix else []) + row)
