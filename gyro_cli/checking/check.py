@@ -92,28 +92,6 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
     return result
 
 
-
-def _graded_steps(solution: Any) -> dict[str, tuple[float, str, str]]:
-    """Each step symbol -> (SI value, SI unit, dimension), from the first step of that
-    symbol whose value is in an SI unit (a tree's, or one stated in SI)."""
-    from ..core import units
-    from ..core.expr import UNIT_TEXT
-
-    dimensions: dict[str, str] = {}
-    for dimension, (_, si, _) in units.DIMENSIONS.items():
-        dimensions.setdefault(units.SI_TEXT.get(si, si), dimension)
-    out: dict[str, tuple[float, str, str]] = {}
-    for section in solution.sections:
-        for step in section.steps:
-            if not step.symbol or step.value is None or step.symbol in out:
-                continue
-            value, unit = step.si if step.si is not None else (step.value, step.unit)
-            unit = UNIT_TEXT.get(unit, units.SI_TEXT.get(unit, unit))
-            if unit in dimensions:
-                out[step.symbol] = (value, unit, dimensions[unit])
-    return out
-
-
 def _compare_step(symbol: str, raw: Any, problem: Any, solution: Any,
                   answer_names: list[str]) -> list:
     """`expected.steps.<symbol>`: an intermediate value of the worked answer, graded as an
@@ -121,7 +99,9 @@ def _compare_step(symbol: str, raw: Any, problem: Any, solution: Any,
     from types import SimpleNamespace
 
     key = f"expected.steps.{symbol}"
-    steps = _graded_steps(solution)
+    from ..solving.deps import graded_steps
+
+    steps = graded_steps(solution)
     if symbol not in steps:
         from ..solving.problem import suggest
 
