@@ -1,0 +1,96 @@
+"""Issue 38 item 4 (more platforms): a Moodle quiz Responses report of a bank gyro
+exported, regraded by `gyro check --answers DOWNLOAD --responses moodle PATHS` with errors
+carried forward (Moodle's cloze grader marks each blank alone)."""
+
+from __future__ import annotations
+
+import csv
+import json
+import re
+from pathlib import Path
+
+from test_i38_ecf_more import PROBLEM_11_3, hand_11_3
+
+#: Moodle's Responses report downloaded as CSV (identity fields: the site's email address)
+HEADER = ["Surname", "First name", "Email address", "State", "Started on", "Completed",
+          "Time taken", "Grade/4.00", "Response 1"]
+
+
+def blanks(bank: Path) -> list[str]:
+    """Each cloze question's blanks in the export, in its order: its NUMERICAL answers."""
+    questions = re.findall(r'<question type="cloze">.*?</question>', bank.read_text(), re.S)
+    return [re.findall(r"\{1:NUMERICAL:=([^:]+):", q) for q in questions][0]
+
+
+def report(tmp_path: Path, answers: dict[str, list[str]], count: int) -> Path:
+    """A Responses report: per student one attempt, the cloze response as Moodle sums it
+    up ("part 1: x; part 2: y", an empty part as "part 3: "), then the average row."""
+    path = tmp_path / "quiz-responses.csv"
+    with path.open("w", newline="", encoding="utf-8-sig") as out:
+        writer = csv.writer(out)
+        writer.writerow(HEADER)
+        for user, typed in answers.items():
+            assert len(typed) == count
+            cell = "; ".join(f"part {k}: {v}" for k, v in enumerate(typed, 1))
+            writer.writerow([user.title(), "A", f"{user}@example.edu", "Finished",
+                             "27 November 2026  9:00 AM", "27 November 2026  9:40 AM",
+                             "40 mins", "0.00", cell])
+        writer.writerow(["Overall average", "", "", "", "", "", "", "0.00", ""])
+    return path
+
+
+def test_item04_moodle_responses_regraded_with_errors_carried_forward(tmp_path, run):
+    """11/3 with `steps: [I]` exported to Moodle (one cloze question, 4 blanks); a student
+    whose I is 10% high and whose precession roots and least spin are right for it:
+    Moodle gives 0 for each; regraded from the report with --credit ecf=1, 2 of 3."""
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3.replace("tolerance: 1%\n", "tolerance: 1%\nsteps: [I]\n"))
+    bank = tmp_path / "bank.xml"
+    made = run("export", "--to", "moodle", problem, "-o", bank)
+    assert made.exit_code == 0, made.output
+    assert "--responses moodle" in made.stderr
+    count = len(blanks(bank))
+    assert count == 4
+    own, right = hand_11_3(1.1), hand_11_3(1.0)
+    path = report(tmp_path, {
+        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
+                 f"{own['min_spin']:.4g}"],
+        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]},
+        count)
+    graded = run("check", "--answers", path, "--responses", "moodle", problem,
+                 "--credit", "ecf=1", "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = {(r["student"], r["answer"]): r for r in json.loads(graded.stdout)["rows"]}
+    carl = "carl@example.edu"
+    assert rows[carl, "I"]["points"] == 0
+    for name in ("precession", "min_spin"):
+        assert rows[carl, name]["result"] == "carried", rows[carl, name]
+        assert "consistent with your I = " in rows[carl, name]["note"]
+    assert sum(r["points"] for (who, _), r in rows.items() if who == carl) == 2
+    dana = "dana@example.edu"
+    assert rows[dana, "I"]["points"] == 1 and rows[dana, "min_spin"]["points"] == 1
+    assert rows[dana, "precession"]["points"] < 1  # the fast root left blank
+    plain = run("check", "--answers", path, "--responses", "moodle", problem,
+                "--format", "json")
+    assert plain.exit_code == 0, plain.output
+    marks = [r["points"] for r in json.loads(plain.stdout)["rows"] if r["student"] == carl]
+    assert len(marks) == 3 and sum(marks) == 0  # without ECF: as Moodle marked it
+
+
+def test_item04_a_moodle_report_of_another_quiz_is_refused(tmp_path, run):
+    """Not a Responses report, or one with more questions than the files: one line, exit 2."""
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3)
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text("student,problem,answer,value\ncarl,11/3,I,1\n")
+    two = tmp_path / "two.csv"
+    two.write_text(",".join(HEADER + ["Response 2"]) + "\n"
+                   + "C,A,c@x.edu,Finished,,,,0,part 1: 45,part 1: 4\n")
+    parts = tmp_path / "parts.csv"
+    parts.write_text(",".join(HEADER) + "\nC,A,c@x.edu,Finished,,,,0,part 9: 45\n")
+    for path, words in ((sheet, "line 1"), (two, "expected 1 to 1"), (parts, "line 2")):
+        refused = run("check", "--answers", path, "--responses", "moodle", problem)
+        assert refused.exit_code == 2, refused.output
+        assert path.name in refused.output and words in refused.output, refused.output
+        assert "Traceback" not in refused.output
+        assert len(refused.output.strip().splitlines()) == 1, refused.output
