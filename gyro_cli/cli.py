@@ -276,10 +276,12 @@ def _cpus() -> int:
                    "report (and --junit), with the summary and exit code of the whole.")
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
-@click.option("--responses", type=click.Choice(("blackboard", "moodle")), default=None,
+@click.option("--responses", type=click.Choice(("blackboard", "moodle", "canvas")),
+              default=None,
               help="With --answers: SHEET is a platform's download of the responses to a "
                    "bank gyro exported from PATHS (blackboard: its Download Results, By "
-                   "Question and User; moodle: the quiz's Responses report as CSV), "
+                   "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
+                   "the quiz's Student Analysis of a QTI bank), "
                    "regraded by gyro (errors carried forward too).")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
 @click.option("--out-format", "out_format", default="grades", show_default=True,
@@ -396,9 +398,10 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     import tempfile
 
     from .api import grade
-    from .commands.responses import blackboard_sheet, moodle_sheet
+    from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
-    text = (moodle_sheet if platform == "moodle" else blackboard_sheet)(download, paths)
+    reader = {"moodle": moodle_sheet, "canvas": canvas_sheet}.get(platform, blackboard_sheet)
+    text = reader(download, paths)
     with tempfile.TemporaryDirectory() as scratch:
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:

@@ -94,3 +94,82 @@ def test_item04_a_moodle_report_of_another_quiz_is_refused(tmp_path, run):
         assert path.name in refused.output and words in refused.output, refused.output
         assert "Traceback" not in refused.output
         assert len(refused.output.strip().splitlines()) == 1, refused.output
+
+
+# ---- Canvas: the quiz's Student Analysis of a QTI 1.2 bank ----
+
+CANVAS_HEADER = ["name", "id", "sis_id", "section", "section_id", "section_sis_id",
+                 "submitted", "attempt"]
+
+
+def qti_questions(package: Path) -> list[str]:
+    """Each item's question text in the QTI export, its order kept, as Canvas shows it in
+    a column name: the tags stripped without a space."""
+    import xml.etree.ElementTree as ET
+    import zipfile
+
+    with zipfile.ZipFile(package) as z:
+        names = [n for n in z.namelist() if n.endswith(".xml") and "manifest" not in n]
+        root = ET.fromstring(z.read(names[0]))
+    items = [el for el in root.iter() if el.tag.endswith("}item") or el.tag == "item"]
+    texts = []
+    for item in items:
+        presentation = [el for el in item.iter() if el.tag.endswith("presentation")][0]
+        mattext = [el for el in presentation.iter() if el.tag.endswith("mattext")][0]
+        texts.append(re.sub(r"<[^>]+>", "", mattext.text or ""))
+    return texts
+
+
+def analysis(tmp_path: Path, texts: list[str], answers: dict[str, list[str]]) -> Path:
+    """A Student Analysis: per question "ID: text" and its points column, then the totals;
+    per student one row (the first student's attempt 1 replaced by their attempt 2)."""
+    path = tmp_path / "student_analysis.csv"
+    with path.open("w", newline="", encoding="utf-8") as out:
+        writer = csv.writer(out)
+        header = list(CANVAS_HEADER)
+        for k, text in enumerate(texts):
+            header += [f"{5000 + k}: {text}", "1.0"]
+        writer.writerow(header + ["n correct", "n incorrect", "score"])
+        for n, (user, typed) in enumerate(answers.items()):
+            cells = [c for value in typed for c in (value, "0.0")]
+            info = [user.title(), str(100 + n), f"S{n}", "Dynamics", "7", "", "2026-11-27"]
+            if n == 0:
+                writer.writerow(info + ["1"] + ["1", "0.0"] * len(texts) + ["0", "4", "0"])
+            writer.writerow(info + ["2"] + cells + ["0", "4", "0"])
+    return path
+
+
+def test_item04_canvas_student_analysis_regraded_with_errors_carried_forward(tmp_path, run):
+    """11/3 with `steps: [I]` exported as QTI (one item per number) and taken in Canvas:
+    its Student Analysis regraded with --credit ecf=1 gives carl 2 of 3, without 0."""
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3.replace("tolerance: 1%\n", "tolerance: 1%\nsteps: [I]\n"))
+    package = tmp_path / "bank.zip"
+    made = run("export", "--to", "qti", problem, "-o", package)
+    assert made.exit_code == 0, made.output
+    assert "--responses canvas" in made.stderr
+    texts = qti_questions(package)
+    assert len(texts) == 4
+    own, right = hand_11_3(1.1), hand_11_3(1.0)
+    path = analysis(tmp_path, texts, {
+        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
+                 f"{own['min_spin']:.4g}"],
+        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]})
+    graded = run("check", "--answers", path, "--responses", "canvas", problem,
+                 "--credit", "ecf=1", "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = {(r["student"], r["answer"]): r for r in json.loads(graded.stdout)["rows"]}
+    assert rows["S0", "I"]["points"] == 0
+    for name in ("precession", "min_spin"):
+        assert rows["S0", name]["result"] == "carried", rows["S0", name]
+    assert sum(r["points"] for (who, _), r in rows.items() if who == "S0") == 2
+    assert rows["S1", "I"]["points"] == 1 and rows["S1", "precession"]["points"] < 1
+    plain = run("check", "--answers", path, "--responses", "canvas", problem,
+                "--format", "json")
+    marks = [r["points"] for r in json.loads(plain.stdout)["rows"] if r["student"] == "S0"]
+    assert len(marks) == 3 and sum(marks) == 0
+    other = tmp_path / "other.csv"
+    other.write_text(",".join(CANVAS_HEADER + ["77: What is 2 + 2?", "1.0"]) + "\n")
+    refused = run("check", "--answers", other, "--responses", "canvas", problem)
+    assert refused.exit_code == 2 and "other.csv" in refused.output, refused.output
+    assert len(refused.output.strip().splitlines()) == 1, refused.output

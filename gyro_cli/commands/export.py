@@ -621,8 +621,9 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
                              "Question and User)",
                "moodle": "gyro check --answers DOWNLOAD --responses moodle PATHS --credit "
                          "ecf=S (DOWNLOAD: the quiz's Responses report as CSV, its questions "
-                         "in the bank's order)"}.get(fmt, "gyro check --answers ... --credit "
-                                                         "ecf=S")
+                         "in the bank's order)",
+               "qti": "gyro check --answers DOWNLOAD --responses canvas PATHS --credit "
+                      "ecf=S (DOWNLOAD: a Canvas quiz's Student Analysis)"}[fmt]
         for line in lost:
             warn(f"{line}; a {fmt} question grades each blank alone, so these lose errors "
                  f"carried forward: regrade the responses with {how}")

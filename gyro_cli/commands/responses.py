@@ -20,6 +20,11 @@ identity columns (``Surname``, ``First name`` and the site's identity fields suc
 (unless asked for), so slot N is the N-th problem of the files, as the Moodle export
 wrote them: one cloze question per problem, whose response reads ``part 1: 0.0001954;
 part 2: 45.13; ...``, part K being the problem's K-th blank (render/bank_moodle.py).
+
+Canvas's quiz Student Analysis (CSV) of a QTI 1.2 bank: one row per student (``name``,
+``id``, ``sis_id``, ``section``, ``section_id``, ``section_sis_id``, ``submitted``,
+``attempt``), then per question a column ``<question id>: <question text>`` holding the
+response and a points column; each question is known by its text, as for Blackboard.
 """
 
 from __future__ import annotations
@@ -33,7 +38,7 @@ from typing import Any
 from ..core.errors import InputError
 
 #: the formats ``--responses`` reads
-FORMATS = ("blackboard", "moodle")
+FORMATS = ("blackboard", "moodle", "canvas")
 #: the columns a Blackboard long-format download must have (lower case)
 NEEDED = ("username", "question", "answer")
 _TAG = re.compile(r"<[^>]*>")
@@ -223,3 +228,54 @@ def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,
         if index < len(variant.blanks) and typed not in ("", "-"):
             out.append((part_of[variant.blanks[index].key], typed))
     return out
+
+
+#: a Canvas Student Analysis question column: "<question id>: <question text>"
+_CANVAS_QUESTION = re.compile(r"(\d+):\s(.*)", re.S)
+
+
+def _compact(text: str) -> str:
+    """Question text with no spaces at all: Canvas strips the tags without a space."""
+    return "".join(plain(text).split())
+
+
+def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
+    """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet:
+    each question column matched by its text; a student's later row replaces an earlier."""
+    rows = _rows(path, "a Canvas Student Analysis report")
+    header = [c.strip() for c in rows[0]] if rows else []
+    names = [c.lower() for c in header]
+    if not all(name in names for name in ("name", "id", "sis_id", "attempt")):
+        raise InputError("not a Canvas quiz Student Analysis report: the first row must "
+                         "name the columns name, id, sis_id, ..., attempt, then each question "
+                         f"as 'ID: text'; got {', '.join(header[:8]) or 'nothing'}",
+                         file=path, line=1)
+    known = {_compact(text): found for text, found in questions(paths).items()}
+    asked: dict[int, tuple[str, Any]] = {}
+    for k, name in enumerate(header[names.index("attempt") + 1:], names.index("attempt") + 1):
+        m = _CANVAS_QUESTION.fullmatch(name)
+        if m is None:
+            continue  # a points column, n correct, n incorrect, score
+        found = known.get(_compact(m.group(2)))
+        if found is None:
+            raise InputError(f"no question of the problem files has the text of column "
+                             f"{k + 1} ({plain(m.group(2))[:60]!r}...); regrade with the files "
+                             "the bank was exported from (without --variants)", file=path,
+                             line=1)
+        asked[k] = found
+    who = (names.index("sis_id"), names.index("id"))
+    by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
+    for number, row in enumerate(rows[1:], 2):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) < len(header):
+            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
+                             line=number)
+        student = row[who[0]].strip() or row[who[1]].strip()
+        answers = []
+        for k, (problem, part) in asked.items():
+            if row[k].strip():
+                answers.append((student, problem, part.name, part.index,
+                                f"{row[k].strip()} {part.unit}".strip()))
+        by_student[student] = answers
+    return _sheet([a for answers in by_student.values() for a in answers])
