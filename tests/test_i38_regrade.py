@@ -173,3 +173,65 @@ def test_item04_canvas_student_analysis_regraded_with_errors_carried_forward(tmp
     refused = run("check", "--answers", other, "--responses", "canvas", problem)
     assert refused.exit_code == 2 and "other.csv" in refused.output, refused.output
     assert len(refused.output.strip().splitlines()) == 1, refused.output
+
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_item04_moodle_numerical_typed_with_its_unit_and_a_second_slot(tmp_path, run):
+    """Two problems, two slots: 11/3's cloze in Response 1, 11/1's numerical question
+    (typed with its unit, as Moodle asks) in Response 2; both regraded right."""
+    import xml.etree.ElementTree as ET
+
+    top = tmp_path / "a.yaml"
+    top.write_text(PROBLEM_11_3)
+    spin = tmp_path / "b.yaml"
+    spin.write_text((ROOT / "problems" / "11_1.yaml").read_text())
+    bank = tmp_path / "bank.xml"
+    assert run("export", "--to", "moodle", top, spin, "-o", bank).exit_code == 0
+    asked = [q for q in ET.parse(bank).getroot().findall("question")
+             if q.get("type") != "category"]
+    assert [q.get("type") for q in asked] == ["cloze", "numerical"]
+    cloze = re.findall(r"\{1:NUMERICAL:=([^:]+):", asked[0].findtext("questiontext/text"))
+    number = next(a.findtext("text") for a in asked[1].findall("answer")
+                  if a.get("fraction") == "100")
+    path = tmp_path / "responses.csv"
+    with path.open("w", newline="") as out:
+        writer = csv.writer(out)
+        writer.writerow(HEADER + ["Response 2"])
+        writer.writerow(["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "0", "; ".join(
+            f"part {k}: {float(v):.5g}" for k, v in enumerate(cloze, 1)),
+            f"{float(number):.5g} rpm"])
+    graded = run("check", "--answers", path, "--responses", "moodle", top, spin,
+                 "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = json.loads(graded.stdout)["rows"]
+    assert len(rows) == 3 and all(r["points"] == 1 for r in rows), rows
+
+
+def test_item04_canvas_word_answer_columns_are_left_to_canvas(tmp_path, run):
+    """A problem with a word answer: its multiple-choice column in the Student Analysis
+    is not refused; the numbers beside it are regraded."""
+    import xml.etree.ElementTree as ET
+    import zipfile
+
+    problem = tmp_path / "top.yaml"
+    problem.write_text((ROOT / "problems" / "11_2_released_top.yaml").read_text())
+    package = tmp_path / "bank.zip"
+    assert run("export", "--to", "qti", problem, "-o", package).exit_code == 0
+    texts = qti_questions(package)
+    with zipfile.ZipFile(package) as z:
+        name = next(n for n in z.namelist() if n.endswith(".xml") and "manifest" not in n)
+        root = ET.fromstring(z.read(name))
+    typed = []
+    for item in (el for el in root.iter() if el.tag.endswith("}item")):
+        right = [el.text for el in item.iter() if el.tag.endswith("varequal")][0]
+        typed.append(f"{float(right):.5g}" if any(el.tag.endswith("render_fib")
+                                                   for el in item.iter()) else "cusps")
+    assert "cusps" in typed and len(typed) > 1
+    path = analysis(tmp_path, texts, {"ann": typed})
+    graded = run("check", "--answers", path, "--responses", "canvas", problem,
+                 "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = json.loads(graded.stdout)["rows"]
+    assert rows and all(r["points"] == 1 for r in rows), rows

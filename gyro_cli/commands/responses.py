@@ -189,9 +189,19 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
         for slot, (variant, part_of) in enumerate(problems, 1):
             for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
                 answers.append((student, variant.ident, part.name, part.index,
-                                f"{typed} {part.unit}".strip()))
+                                _with_unit(typed, part.unit)))
         by_student[student] = answers
     return _sheet([a for answers in by_student.values() for a in answers])
+
+
+def _with_unit(typed: str, unit: str) -> str:
+    """A typed number with its blank's unit; typed with a unit (Moodle's numerical
+    question asks for one), as typed."""
+    try:
+        float(typed)
+    except ValueError:
+        return typed
+    return f"{typed} {unit}".strip()
 
 
 def _moodle_student(header: list[str], row: list[str]) -> str:
@@ -209,8 +219,8 @@ def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,
     (part K the K-th blank; word answers after the blanks are not regraded), or a
     single-blank question's number alone."""
     cell = cell.strip()
-    if cell in ("", "-"):
-        return []
+    if cell in ("", "-") or not variant.blanks:
+        return []  # nothing typed, or a word answer alone (not regraded)
     pieces = _PART.split(cell)
     if len(pieces) == 1:
         if len(variant.blanks) != 1 or variant.choices:
@@ -228,6 +238,13 @@ def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,
         if index < len(variant.blanks) and typed not in ("", "-"):
             out.append((part_of[variant.blanks[index].key], typed))
     return out
+
+
+def _choice_text(variant: Any, choice: Any) -> str:
+    """A word answer's question text as the QTI export writes it (render/bank_qti.py)."""
+    from ..render.bank import choice_prompt, html_text
+
+    return variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
 
 
 #: a Canvas Student Analysis question column: "<question id>: <question text>"
@@ -251,12 +268,16 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
                          f"as 'ID: text'; got {', '.join(header[:8]) or 'nothing'}",
                          file=path, line=1)
     known = {_compact(text): found for text, found in questions(paths).items()}
+    words = {_compact(_choice_text(variant, choice))
+             for variant, _ in _variants(paths) for choice in variant.choices}
     asked: dict[int, tuple[str, Any]] = {}
     for k, name in enumerate(header[names.index("attempt") + 1:], names.index("attempt") + 1):
         m = _CANVAS_QUESTION.fullmatch(name)
         if m is None:
             continue  # a points column, n correct, n incorrect, score
         found = known.get(_compact(m.group(2)))
+        if found is None and _compact(m.group(2)) in words:
+            continue  # a word answer's multiple choice: Canvas's mark stands
         if found is None:
             raise InputError(f"no question of the problem files has the text of column "
                              f"{k + 1} ({plain(m.group(2))[:60]!r}...); regrade with the files "
@@ -276,6 +297,6 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
         for k, (problem, part) in asked.items():
             if row[k].strip():
                 answers.append((student, problem, part.name, part.index,
-                                f"{row[k].strip()} {part.unit}".strip()))
+                                _with_unit(row[k].strip(), part.unit)))
         by_student[student] = answers
     return _sheet([a for answers in by_student.values() for a in answers])
