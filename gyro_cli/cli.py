@@ -276,10 +276,13 @@ def _cpus() -> int:
                    "report (and --junit), with the summary and exit code of the whole.")
 @click.option("--answers", "sheet", metavar="SHEET",
               help="Grade students' answers in SHEET (CSV or YAML) instead of the answer key.")
-@click.option("--responses", type=click.Choice(("blackboard",)), default=None,
+@click.option("--responses", type=click.Choice(("blackboard", "moodle", "canvas")),
+              default=None,
               help="With --answers: SHEET is a platform's download of the responses to a "
                    "bank gyro exported from PATHS (blackboard: its Download Results, By "
-                   "Question and User), regraded by gyro (errors carried forward too).")
+                   "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
+                   "the quiz's Student Analysis of a QTI bank), "
+                   "regraded by gyro (errors carried forward too).")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
 @click.option("--out-format", "out_format", default="grades", show_default=True,
               type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
@@ -367,7 +370,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if responses and assignment:
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
-        graded = _grade_responses(sheet, paths, credit, student, reveal) if responses else \
+        graded = _grade_responses(sheet, responses, paths, credit, student, reveal) \
+            if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal)
         if out:
@@ -386,16 +390,18 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         sys.exit(INTERNAL)
 
 
-def _grade_responses(download: str, paths: tuple[str, ...], credit: str | None,
-                     student: str | None, reveal: bool):  # type: ignore[no-untyped-def]
-    """Grade a Blackboard download of responses: read as a gyro answer sheet (written to
+def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
+                     credit: str | None, student: str | None,
+                     reveal: bool):  # type: ignore[no-untyped-def]
+    """Grade a platform's download of responses: read as a gyro answer sheet (written to
     a scratch file that is removed after)."""
     import tempfile
 
     from .api import grade
-    from .commands.responses import blackboard_sheet
+    from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
-    text = blackboard_sheet(download, paths)
+    reader = {"moodle": moodle_sheet, "canvas": canvas_sheet}.get(platform, blackboard_sheet)
+    text = reader(download, paths)
     with tempfile.TemporaryDirectory() as scratch:
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:

@@ -616,9 +616,14 @@ def export(files: tuple[str, ...], fmt: str, count: int, seed: int, out: str,
     made, errors = stream(files, sink, count, seed, warn, ask, tolerance,
                           pictures and fmt != "blackboard", ecf_share, lost)
     if fmt != "prairielearn":
-        how = ("gyro check --answers DOWNLOAD --responses blackboard PATHS --credit ecf=S "
-               "(DOWNLOAD: the test's Download Results, By Question and User)"
-               if fmt == "blackboard" else "gyro check --answers ... --credit ecf=S")
+        how = {"blackboard": "gyro check --answers DOWNLOAD --responses blackboard PATHS "
+                             "--credit ecf=S (DOWNLOAD: the test's Download Results, By "
+                             "Question and User)",
+               "moodle": "gyro check --answers DOWNLOAD --responses moodle PATHS --credit "
+                         "ecf=S (DOWNLOAD: the quiz's Responses report as CSV, its questions "
+                         "in the bank's order)",
+               "qti": "gyro check --answers DOWNLOAD --responses canvas PATHS --credit "
+                      "ecf=S (DOWNLOAD: a Canvas quiz's Student Analysis)"}[fmt]
         for line in lost:
             warn(f"{line}; a {fmt} question grades each blank alone, so these lose errors "
                  f"carried forward: regrade the responses with {how}")

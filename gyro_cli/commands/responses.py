@@ -12,6 +12,19 @@ statement and ``precession (slow), in rpm:``), rebuilt from the same problem fil
 compared as plain text (tags dropped, character references read, spaces collapsed).
 Only a bank exported without ``--variants`` (each problem as written) can be matched:
 a drawn variant is not in the files.
+
+Moodle's quiz Responses report, downloaded as CSV: one row per attempt, the student's
+identity columns (``Surname``, ``First name`` and the site's identity fields such as
+``Username``, ``ID number`` or ``Email address``), ``State``, ``Started on`` ... and one
+``Response N`` column per quiz slot, in the quiz's order. The question text is not in it
+(unless asked for), so slot N is the N-th problem of the files, as the Moodle export
+wrote them: one cloze question per problem, whose response reads ``part 1: 0.0001954;
+part 2: 45.13; ...``, part K being the problem's K-th blank (render/bank_moodle.py).
+
+Canvas's quiz Student Analysis (CSV) of a QTI 1.2 bank: one row per student (``name``,
+``id``, ``sis_id``, ``section``, ``section_id``, ``section_sis_id``, ``submitted``,
+``attempt``), then per question a column ``<question id>: <question text>`` holding the
+response and a points column; each question is known by its text, as for Blackboard.
 """
 
 from __future__ import annotations
@@ -25,7 +38,7 @@ from typing import Any
 from ..core.errors import InputError
 
 #: the formats ``--responses`` reads
-FORMATS = ("blackboard",)
+FORMATS = ("blackboard", "moodle", "canvas")
 #: the columns a Blackboard long-format download must have (lower case)
 NEEDED = ("username", "question", "answer")
 _TAG = re.compile(r"<[^>]*>")
@@ -40,6 +53,17 @@ def questions(paths: list[str] | tuple[str, ...]) -> dict[str, tuple[str, Any]]:
     """Each question's plain text -> (problem id, what its blank is: `checking.ecf.Part`),
     as the Blackboard export of ``paths`` writes them."""
     from ..render.bank_blackboard import question_text
+
+    out: dict[str, tuple[str, Any]] = {}
+    for variant, part_of in _variants(paths):
+        for blank in variant.blanks:
+            out[plain(question_text(variant, blank))] = (variant.ident, part_of[blank.key])
+    return out
+
+
+def _variants(paths: list[str] | tuple[str, ...]) -> list[tuple[Any, dict[str, Any]]]:
+    """Each problem of ``paths`` as exported without --variants, in the files' order, with
+    its blanks' parts by key."""
     from ..solving.paths import problem_files
     from ..solving.problem import load
     from .export import variant_of
@@ -47,7 +71,7 @@ def questions(paths: list[str] | tuple[str, ...]) -> dict[str, tuple[str, Any]]:
     files, missing = problem_files(paths)
     if missing:
         raise InputError(missing[0][1])
-    out: dict[str, tuple[str, Any]] = {}
+    out: list[tuple[Any, dict[str, Any]]] = []
     for path in files:
         try:
             problem = load(path)
@@ -55,29 +79,14 @@ def questions(paths: list[str] | tuple[str, ...]) -> dict[str, tuple[str, Any]]:
             variant = variant_of(problem, 1, problem.title, parts_out=parts)
         except InputError as err:
             raise err.located(file=path) from None
-        part_of = {part.key: part for part in parts}
-        for blank in variant.blanks:
-            out[plain(question_text(variant, blank))] = (variant.ident, part_of[blank.key])
+        out.append((variant, {part.key: part for part in parts}))
     return out
 
 
 def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
     """A Blackboard long-format download of responses as a gyro answer sheet (CSV text:
     student, problem, answer, value), its rows in the order of each answer's values."""
-    from ..checking.grades import MAX_SHEET_BYTES
-    from ..core.safeyaml import read_bytes
-
-    data = read_bytes(path, MAX_SHEET_BYTES, "a Blackboard download of results")
-    # a tab-delimited download may come as UTF-16 with a byte-order mark
-    encoding = "utf-16" if data[:2] in (b"\xff\xfe", b"\xfe\xff") else "utf-8-sig"
-    try:
-        text = data.decode(encoding)
-    except UnicodeDecodeError:
-        raise InputError("is not " + ("UTF-16" if encoding == "utf-16" else "UTF-8") + " text",
-                         file=path) from None
-    first = text.split("\n", 1)[0]
-    rows = list(csv.reader(io.StringIO(text, newline=""),
-                           delimiter="\t" if "\t" in first else ","))
+    rows = _rows(path, "a Blackboard download of results")
     header = [c.strip().lower() for c in rows[0]] if rows else []
     if not all(name in header for name in NEEDED):
         raise InputError("not a Blackboard download of results in the long format (By "
@@ -105,6 +114,33 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
         problem, part = found
         value = f"{cell['answer']} {part.unit}".strip()
         answers.append((cell["username"], problem, part.name, part.index, value))
+    return _sheet(answers)
+
+
+def _rows(path: str, what: str) -> list[list[str]]:
+    """A download's CSV rows: comma or tab delimited, UTF-8 or UTF-16 (with its mark)."""
+    from ..checking.grades import MAX_SHEET_BYTES
+    from ..core.safeyaml import read_bytes
+
+    data = read_bytes(path, MAX_SHEET_BYTES, what)
+    # a tab-delimited download may come as UTF-16 with a byte-order mark
+    encoding = "utf-16" if data[:2] in (b"\xff\xfe", b"\xfe\xff") else "utf-8-sig"
+    try:
+        text = data.decode(encoding)
+    except UnicodeDecodeError:
+        raise InputError("is not " + ("UTF-16" if encoding == "utf-16" else "UTF-8") + " text",
+                         file=path) from None
+    first = text.split("\n", 1)[0]
+    try:
+        return list(csv.reader(io.StringIO(text, newline=""),
+                               delimiter="\t" if "\t" in first else ","))
+    except csv.Error as err:
+        raise InputError(f"is not CSV: {err}", file=path) from None
+
+
+def _sheet(answers: list[tuple[str, str, str, int, str]]) -> str:
+    """(student, problem, answer, index, value) as a gyro answer sheet, each answer's
+    values in one row in the order of its blanks."""
     values: dict[tuple[str, str, str], list[str]] = {}  # an answer's values in one row
     for student, problem, name, _, value in sorted(answers, key=lambda a: a[:4]):
         values.setdefault((student, problem, name), []).append(value)
@@ -114,3 +150,153 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
     for key, written in values.items():
         writer.writerow((*key, "; ".join(written)))
     return out.getvalue()
+
+
+#: Moodle's identity columns, the first filled one naming the student (lower case)
+MOODLE_WHO = ("username", "id number", "email address")
+_RESPONSE = re.compile(r"response (\d+)")
+#: a cloze response as Moodle summarises it: "part 1: 0.0001954; part 2: 45.13"
+_PART = re.compile(r"(?:^|;\s*)part (\d+):\s*", re.IGNORECASE)
+
+
+def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
+    """A Moodle quiz Responses report (CSV) as a gyro answer sheet: Response N is the
+    N-th problem of ``paths``; a later attempt of a student replaces an earlier one."""
+    rows = _rows(path, "a Moodle quiz responses report")
+    header = [c.strip().lower() for c in rows[0]] if rows else []
+    slots = {int(m.group(1)): k for k, name in enumerate(header)
+             if (m := _RESPONSE.fullmatch(name))}
+    if not slots or "surname" not in header:
+        raise InputError("not a Moodle quiz Responses report: the first row must name the "
+                         "columns Surname, First name, ... and Response 1, Response 2, ...; "
+                         f"got {', '.join(rows[0]) if rows else 'nothing'}", file=path, line=1)
+    problems = _variants(paths)
+    if sorted(slots) != list(range(1, len(problems) + 1)):
+        raise InputError(f"has Response columns {', '.join(map(str, sorted(slots)))}, expected "
+                         f"1 to {len(problems)}: one per problem file, the quiz's questions "
+                         "in the order the bank was exported", file=path, line=1)
+    by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
+    for number, row in enumerate(rows[1:], 2):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) < len(header):
+            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
+                             line=number)
+        student = _moodle_student(header, row)
+        if not student or student.lower().startswith("overall average"):
+            continue  # the report's average row is no one's attempt
+        answers: list[tuple[str, str, str, int, str]] = []
+        for slot, (variant, part_of) in enumerate(problems, 1):
+            for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
+                answers.append((student, variant.ident, part.name, part.index,
+                                _with_unit(typed, part.unit)))
+        by_student[student] = answers
+    return _sheet([a for answers in by_student.values() for a in answers])
+
+
+def _with_unit(typed: str, unit: str) -> str:
+    """A typed number with its blank's unit; typed with a unit (Moodle's numerical
+    question asks for one), as typed."""
+    try:
+        float(typed)
+    except ValueError:
+        return typed
+    return f"{typed} {unit}".strip()
+
+
+def _moodle_student(header: list[str], row: list[str]) -> str:
+    """Who made an attempt: the first identity field filled, else surname and first name."""
+    for name in MOODLE_WHO:
+        if name in header and row[header.index(name)].strip():
+            return row[header.index(name)].strip()
+    given = row[header.index("first name")].strip() if "first name" in header else ""
+    return " ".join(f"{row[header.index('surname')].strip()} {given}".split())
+
+
+def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,
+           line: int) -> list[tuple[Any, str]]:
+    """A response cell's typed numbers, each with its blank's part: a cloze's ``part K: x``
+    (part K the K-th blank; word answers after the blanks are not regraded), or a
+    single-blank question's number alone."""
+    cell = cell.strip()
+    if cell in ("", "-") or not variant.blanks:
+        return []  # nothing typed, or a word answer alone (not regraded)
+    pieces = _PART.split(cell)
+    if len(pieces) == 1:
+        if len(variant.blanks) != 1 or variant.choices:
+            raise InputError(f"the response to {variant.ident} ({cell[:40]!r}) is not in "
+                             "parts (part 1: ...; part 2: ...) as its cloze question gives",
+                             file=path, line=line)
+        return [(part_of[variant.blanks[0].key], cell)]
+    out = []
+    for k, typed in zip(pieces[1::2], pieces[2::2]):
+        index, typed = int(k) - 1, typed.strip()
+        if not 0 <= index < len(variant.blanks) + len(variant.choices):
+            raise InputError(f"the response to {variant.ident} has part {k}; its question "
+                             f"has {len(variant.blanks) + len(variant.choices)} parts",
+                             file=path, line=line)
+        if index < len(variant.blanks) and typed not in ("", "-"):
+            out.append((part_of[variant.blanks[index].key], typed))
+    return out
+
+
+def _choice_text(variant: Any, choice: Any) -> str:
+    """A word answer's question text as the QTI export writes it (render/bank_qti.py)."""
+    from ..render.bank import choice_prompt, html_text
+
+    return variant.statement_html + f"<p>{html_text(choice_prompt(choice))}:</p>"
+
+
+#: a Canvas Student Analysis question column: "<question id>: <question text>"
+_CANVAS_QUESTION = re.compile(r"(\d+):\s(.*)", re.S)
+
+
+def _compact(text: str) -> str:
+    """Question text with no spaces at all: Canvas strips the tags without a space."""
+    return "".join(plain(text).split())
+
+
+def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
+    """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet:
+    each question column matched by its text; a student's later row replaces an earlier."""
+    rows = _rows(path, "a Canvas Student Analysis report")
+    header = [c.strip() for c in rows[0]] if rows else []
+    names = [c.lower() for c in header]
+    if not all(name in names for name in ("name", "id", "sis_id", "attempt")):
+        raise InputError("not a Canvas quiz Student Analysis report: the first row must "
+                         "name the columns name, id, sis_id, ..., attempt, then each question "
+                         f"as 'ID: text'; got {', '.join(header[:8]) or 'nothing'}",
+                         file=path, line=1)
+    known = {_compact(text): found for text, found in questions(paths).items()}
+    words = {_compact(_choice_text(variant, choice))
+             for variant, _ in _variants(paths) for choice in variant.choices}
+    asked: dict[int, tuple[str, Any]] = {}
+    for k, name in enumerate(header[names.index("attempt") + 1:], names.index("attempt") + 1):
+        m = _CANVAS_QUESTION.fullmatch(name)
+        if m is None:
+            continue  # a points column, n correct, n incorrect, score
+        found = known.get(_compact(m.group(2)))
+        if found is None and _compact(m.group(2)) in words:
+            continue  # a word answer's multiple choice: Canvas's mark stands
+        if found is None:
+            raise InputError(f"no question of the problem files has the text of column "
+                             f"{k + 1} ({plain(m.group(2))[:60]!r}...); regrade with the files "
+                             "the bank was exported from (without --variants)", file=path,
+                             line=1)
+        asked[k] = found
+    who = (names.index("sis_id"), names.index("id"))
+    by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
+    for number, row in enumerate(rows[1:], 2):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) < len(header):
+            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
+                             line=number)
+        student = row[who[0]].strip() or row[who[1]].strip()
+        answers = []
+        for k, (problem, part) in asked.items():
+            if row[k].strip():
+                answers.append((student, problem, part.name, part.index,
+                                _with_unit(row[k].strip(), part.unit)))
+        by_student[student] = answers
+    return _sheet([a for answers in by_student.values() for a in answers])
