@@ -33,6 +33,7 @@ import csv
 import html
 import io
 import re
+from collections.abc import Iterator
 from typing import Any
 
 from ..core.errors import InputError
@@ -96,12 +97,7 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
     column = {name: header.index(name) for name in NEEDED}
     known = questions(paths)
     answers: list[tuple[str, str, str, int, str]] = []
-    for number, row in enumerate(rows[1:], 2):
-        if not any(c.strip() for c in row):
-            continue
-        if len(row) <= max(column.values()):
-            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
-                             line=number)
+    for number, row in _filled(rows, max(column.values()) + 1, path):
         cell = {name: row[k].strip() for name, k in column.items()}
         found = known.get(plain(cell["question"]))
         if found is None:
@@ -115,6 +111,18 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
         value = f"{cell['answer']} {part.unit}".strip()
         answers.append((cell["username"], problem, part.name, part.index, value))
     return _sheet(answers)
+
+
+def _filled(rows: list[list[str]], needed: int, path: str) -> Iterator[tuple[int, list[str]]]:
+    """Each row after the header that is not blank, with its line number; a row shorter
+    than ``needed`` columns is refused (the message counts the header's)."""
+    for number, row in enumerate(rows[1:], 2):
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) < needed:
+            raise InputError(f"expected {len(rows[0])} columns, got {len(row)}", file=path,
+                             line=number)
+        yield number, row
 
 
 def _rows(path: str, what: str) -> list[list[str]]:
@@ -176,12 +184,7 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
                          "in the order the bank was exported", file=path, line=1)
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
-    for number, row in enumerate(rows[1:], 2):
-        if not any(c.strip() for c in row):
-            continue
-        if len(row) < len(header):
-            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
-                             line=number)
+    for number, row in _filled(rows, len(header), path):
         student = _moodle_student(header, row)
         if not student or student.lower().startswith("overall average"):
             continue  # the report's average row is no one's attempt
@@ -286,12 +289,7 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
         asked[k] = found
     who = (names.index("sis_id"), names.index("id"))
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
-    for number, row in enumerate(rows[1:], 2):
-        if not any(c.strip() for c in row):
-            continue
-        if len(row) < len(header):
-            raise InputError(f"expected {len(header)} columns, got {len(row)}", file=path,
-                             line=number)
+    for _line, row in _filled(rows, len(header), path):
         student = row[who[0]].strip() or row[who[1]].strip()
         answers = []
         for k, (problem, part) in asked.items():
