@@ -3,7 +3,9 @@ four-wheeler): kinds may not import each other, so the sentence they share lives
 
 from __future__ import annotations
 
+from .expr import Sym
 from .prose import cross, names, plus, rel
+from .work import Work
 
 _H, _WP, _C = names("H omega_p C")
 
@@ -21,3 +23,13 @@ def reactive_couple(vehicle: str, rotors: str = "rotor") -> tuple:
             f"turn's angular velocity, about the vertical); couple on the {rotors} ",
             rel(_C, "=", COUPLE), f" (Eq. 11.29); the {vehicle} feels the reactive "
             "couple ", -_C)
+
+
+def rotor_steps(work: Work, J: float, spin: float, inertia: str,
+                speed: str) -> tuple[Sym, Sym, float]:
+    """The rotor's steps every vehicle kind opens with: J and omega (with the notes
+    ``inertia`` and ``speed``), and H = J omega; the symbols J, omega and H's size."""
+    work.step("J", value=J, unit="kg*m^2", note=inertia)
+    work.step("omega", value=spin, unit="rad/s", note=speed)
+    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
+    return J_, omega, work.step("H", J_ * omega, unit="kg m^2/s")

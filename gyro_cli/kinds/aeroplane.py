@@ -19,7 +19,7 @@ from ..core.expr import Sym, absolute
 from ..core.given import Given
 from ..core.prose import names, paren, plus, q, qvec, rel
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.vehicle_words import COUPLE, reactive_couple
+from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps
 from ..core.work import Work
 from ..physics import vehicles as V
 
@@ -61,10 +61,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 
     direction = V.spin_direction(sense) if sense else 1.0
     work.section("Engine and propeller")
-    work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotating parts")
-    work.step("omega", value=spin, unit="rad/s", note="engine speed")
-    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
-    work.step("H", J_ * omega, unit="kg m^2/s")
+    J_, omega, _ = rotor_steps(work, J, spin, "axial moment of inertia of the rotating parts",
+                               "engine speed")
     H = V.spin_vector(J, spin, direction)
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "

@@ -26,7 +26,7 @@ from ..core.expr import PI, Num, Sym, absolute, cos, sin
 from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel
 from ..core.spec import AnswerSpec, Kind, OneOf, Param
-from ..core.vehicle_words import COUPLE, reactive_couple
+from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps
 from ..core.work import Work
 from ..physics import vehicles as V
 
@@ -73,11 +73,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     else:
         direction = V.spin_direction(sense)
     work.section("Rotor")
-    work.step("J", value=J, unit="kg*m^2", note="axial moment of inertia of the rotor")
-    work.step("omega", value=spin, unit="rad/s", note="rotor speed")
     H = V.spin_vector(J, spin, direction)
-    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
-    Hmag = work.step("H", J_ * omega, unit="kg m^2/s")
+    J_, omega, Hmag = rotor_steps(work, J, spin, "axial moment of inertia of the rotor",
+                                  "rotor speed")
     if sense:
         way = "forward (toward the bow), " if direction > 0 else "aft (toward the stern), "
         work.text(f"{sense.replace('_', ' ')}: the spin vector points {way}",
@@ -306,10 +304,8 @@ def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin:
     work.text(*_STABILISER_REACTIVE)
     up = V.vertical_spin_direction(sense) if sense else 1.0
     work.section("Rotor")
-    work.step("J", value=J, unit="kg*m^2", note="the rotor's moment of inertia about its axle")
-    work.step("omega", value=spin, unit="rad/s", note="rotor speed")
-    J_, omega = Sym("J", J, "kg m^2"), Sym("omega", spin, "rad/s")
-    Hmag = work.step("H", J_ * omega, unit="kg m^2/s")
+    J_, omega, Hmag = rotor_steps(work, J, spin, "the rotor's moment of inertia about its axle",
+                                  "rotor speed")
     H = (0.0, 0.0, up * Hmag)
     if sense:
         work.text(f"{sense.replace('_', ' ')}: the spin vector points "
