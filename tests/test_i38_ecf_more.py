@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_i38_ecf import PROBLEM_11_3, hand_11_3  # the one hand calculation of 11/3
 
 from gyro_cli.checking import grades
 
@@ -155,24 +156,20 @@ def test_item02_bicycle_without_overrides_unchanged():
 
 # ---- item 4: a Blackboard download of responses regraded with errors carried forward ----
 
-PROBLEM_11_3 = (ROOT / "problems" / "11_3.yaml").read_text()
-OZF, INCH, RPM = 4.4482216152605 / 16, 0.0254, 2 * math.pi / 60
 #: Blackboard's Download Results, long format (By Question and User): its columns
 DOWNLOAD_HEADER = ["Username", "Last Name", "First Name", "Question ID", "Question", "Answer",
                    "Possible Points", "Auto Score", "Manual Score"]
 
 
-def hand_11_3(I_factor: float) -> dict[str, float]:
-    """11/3 by hand with I (about O) scaled: I, the precession roots and the least spin in
-    rpm (Eq. 11.13 and 2 sqrt((I - J) m g l cos(theta)) / J)."""
-    W, g = 3 * OZF, 32.2 * 0.3048
-    m = W / g
-    J, I = m * (0.84 * INCH) ** 2, m * (1.80 * INCH) ** 2 * I_factor
-    theta, psidot, mgl = math.radians(30), 1800 * RPM, m * g * 1.5 * INCH
-    a, b, c = (J - I) * math.cos(theta), J * psidot, -mgl
-    roots = sorted(abs((-b + s * math.sqrt(b * b - 4 * a * c)) / (2 * a)) for s in (1, -1))
-    least = 2 * math.sqrt((I - J) * mgl * math.cos(theta)) / J
-    return {"I": I, "slow": roots[0] / RPM, "fast": roots[1] / RPM, "min_spin": least / RPM}
+def carl_and_dana() -> dict[str, list[str]]:
+    """The responses to 11/3 with `steps: [I]` (I, the two roots, the least spin) that the
+    platform tests regrade: carl's I 10% high and the rest right for it; dana right but for
+    the fast root, left blank."""
+    own, right = hand_11_3(1.1), hand_11_3(1.0)
+    return {"carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
+                     f"{own['min_spin']:.4g}"],
+            "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "",
+                     f"{right['min_spin']:.4g}"]}
 
 
 def download(tmp_path: Path, upload: Path, answers: dict[str, list[str]]) -> Path:
@@ -206,11 +203,7 @@ def test_item04_blackboard_responses_regraded_with_errors_carried_forward(tmp_pa
     made = run("export", "--to", "blackboard", problem, "-o", upload)
     assert made.exit_code == 0, made.output
     assert "--responses blackboard" in made.stderr
-    own, right = hand_11_3(1.1), hand_11_3(1.0)
-    download_path = download(tmp_path, upload, {
-        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
-                 f"{own['min_spin']:.4g}"],
-        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]})
+    download_path = download(tmp_path, upload, carl_and_dana())
     graded = run("check", "--answers", download_path, "--responses", "blackboard", problem,
                  "--credit", "ecf=1", "--format", "json")
     assert graded.exit_code == 0, graded.output

@@ -9,7 +9,7 @@ import json
 import re
 from pathlib import Path
 
-from test_i38_ecf_more import PROBLEM_11_3, hand_11_3
+from test_i38_ecf_more import PROBLEM_11_3, carl_and_dana
 
 #: Moodle's Responses report downloaded as CSV (identity fields: the site's email address)
 HEADER = ["Surname", "First name", "Email address", "State", "Started on", "Completed",
@@ -51,12 +51,7 @@ def test_item04_moodle_responses_regraded_with_errors_carried_forward(tmp_path, 
     assert "--responses moodle" in made.stderr
     count = len(blanks(bank))
     assert count == 4
-    own, right = hand_11_3(1.1), hand_11_3(1.0)
-    path = report(tmp_path, {
-        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
-                 f"{own['min_spin']:.4g}"],
-        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]},
-        count)
+    path = report(tmp_path, carl_and_dana(), count)
     graded = run("check", "--answers", path, "--responses", "moodle", problem,
                  "--credit", "ecf=1", "--format", "json")
     assert graded.exit_code == 0, graded.output
@@ -150,11 +145,7 @@ def test_item04_canvas_student_analysis_regraded_with_errors_carried_forward(tmp
     assert "--responses canvas" in made.stderr
     texts = qti_questions(package)
     assert len(texts) == 4
-    own, right = hand_11_3(1.1), hand_11_3(1.0)
-    path = analysis(tmp_path, texts, {
-        "carl": [f"{own['I']:.4g}", f"{own['slow']:.4g}", f"{own['fast']:.4g}",
-                 f"{own['min_spin']:.4g}"],
-        "dana": [f"{right['I']:.4g}", f"{right['slow']:.4g}", "", f"{right['min_spin']:.4g}"]})
+    path = analysis(tmp_path, texts, carl_and_dana())
     graded = run("check", "--answers", path, "--responses", "canvas", problem,
                  "--credit", "ecf=1", "--format", "json")
     assert graded.exit_code == 0, graded.output
