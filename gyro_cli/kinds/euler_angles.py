@@ -827,6 +827,17 @@ def _energy_and_momentum(matrix, omega, R, work: Work) -> None:
         work.text(*_AT_REST)
 
 
+def _vector(name: str, dimension: str, body_x: str, fixed_x: str,
+            body: tuple[str, str] = ("along j", "along k"),
+            fixed: tuple[str, str] = ("along J", "along K")) -> tuple[AnswerSpec, ...]:
+    """The six answers of a vector: its body components ``name_x``, ``_y``, ``_z`` and its
+    fixed-frame ``name_X``, ``_Y``, ``_Z``, each documented by the first's words then the
+    others' (``body``, ``fixed``)."""
+    docs = (body_x, *body, fixed_x, *fixed)
+    return tuple(AnswerSpec(f"{name}_{axis}", dimension, f"{name}_{axis}", doc)
+                 for axis, doc in zip("xyzXYZ", docs, strict=True))
+
+
 KIND = Kind(
     name="euler_angles",
     summary="rigid body with one point fixed: omega from Euler angles and rates (and back), "
@@ -877,41 +888,23 @@ KIND = Kind(
               "positions in body axes from the fixed point"),
     ),
     answers=(
-        AnswerSpec("omega_x", "rate", "omega_x", "body component of omega along i (Eq. 11.8)"),
-        AnswerSpec("omega_y", "rate", "omega_y", "along j"),
-        AnswerSpec("omega_z", "rate", "omega_z", "along k"),
-        AnswerSpec("omega_X", "rate", "omega_X", "fixed-frame component along I"),
-        AnswerSpec("omega_Y", "rate", "omega_Y", "along J"),
-        AnswerSpec("omega_Z", "rate", "omega_Z", "along K"),
+        *_vector("omega", "rate", "body component of omega along i (Eq. 11.8)",
+                 "fixed-frame component along I"),
         AnswerSpec("omega", "rate", "|omega|", "magnitude of the angular velocity"),
         AnswerSpec("kinetic_energy", "energy", "T", "kinetic energy (Eq. 11.2; with products "
                    "(1/2) omega . I omega)"),
-        AnswerSpec("H_x", "angular_momentum", "H_x", "angular momentum about the fixed point, "
-                   "body x"),
-        AnswerSpec("H_y", "angular_momentum", "H_y", "body y"),
-        AnswerSpec("H_z", "angular_momentum", "H_z", "body z"),
-        AnswerSpec("H_X", "angular_momentum", "H_X", "fixed frame, along I"),
-        AnswerSpec("H_Y", "angular_momentum", "H_Y", "along J"),
-        AnswerSpec("H_Z", "angular_momentum", "H_Z", "along K"),
+        *_vector("H", "angular_momentum", "angular momentum about the fixed point, body x",
+                 "fixed frame, along I", body=("body y", "body z")),
         AnswerSpec("angular_momentum", "angular_momentum", "|H|", "magnitude of H"),
         AnswerSpec("omega_H_angle", "angle", "angle(omega, H)", "angle between omega and H "
                    "(zero only about a principal axis)"),
-        AnswerSpec("alpha_x", "angular_acceleration", "alpha_x", "angular acceleration, body "
-                   "component along i (Eq. 11.8 differentiated)"),
-        AnswerSpec("alpha_y", "angular_acceleration", "alpha_y", "along j"),
-        AnswerSpec("alpha_z", "angular_acceleration", "alpha_z", "along k"),
-        AnswerSpec("alpha_X", "angular_acceleration", "alpha_X", "fixed-frame component along I"),
-        AnswerSpec("alpha_Y", "angular_acceleration", "alpha_Y", "along J"),
-        AnswerSpec("alpha_Z", "angular_acceleration", "alpha_Z", "along K"),
+        *_vector("alpha", "angular_acceleration", "angular acceleration, body component "
+                 "along i (Eq. 11.8 differentiated)", "fixed-frame component along I"),
         AnswerSpec("angular_acceleration", "angular_acceleration", "|alpha|", "magnitude of "
                    "the angular acceleration"),
-        AnswerSpec("M_x", "moment", "M_x", "moment the motion needs, M = dH/dt = I alpha + "
-                   "omega x (I omega) (Euler's equations), body x"),
-        AnswerSpec("M_y", "moment", "M_y", "body y"),
-        AnswerSpec("M_z", "moment", "M_z", "body z"),
-        AnswerSpec("M_X", "moment", "M_X", "fixed frame, along I"),
-        AnswerSpec("M_Y", "moment", "M_Y", "along J"),
-        AnswerSpec("M_Z", "moment", "M_Z", "along K"),
+        *_vector("M", "moment", "moment the motion needs, M = dH/dt = I alpha + omega x "
+                 "(I omega) (Euler's equations), body x", "fixed frame, along I",
+                 body=("body y", "body z")),
         AnswerSpec("moment", "moment", "|M|", "magnitude of the moment"),
         AnswerSpec("I_x", "inertia", "I_x", "moment of inertia about body x (Eq. 11.3)"),
         AnswerSpec("I_y", "inertia", "I_y", "about body y"),
