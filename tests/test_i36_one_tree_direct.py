@@ -148,3 +148,19 @@ def test_item01_latex_and_mathml_share_bracket_and_sign_decisions_on_random_tree
                 assert ours == theirs, (P.text(tree), tex, markup)
                 checked += 1
     assert checked == 2400
+
+
+def test_item01_sin_squared_and_a_power_of_a_named_sine_stay_apart():
+    """``sin(x)^2`` is set ``sin^2 x``; a power of a quantity defined as a sine (a `Let`)
+    is a power like any other, as before the one tree, in both formats."""
+    from gyro_cli.render.mathml import MathMLPrinter
+    from gyro_cli.render.mathprint import formula_latex, formula_node
+
+    x = E.Sym("theta", 0.5, "deg")
+    named = E.Let(E.Sym("s", 0.4), E.sin(x)) ** 2
+    assert formula_latex(E.sin(x) ** 2) == r"\sin^{2} \theta"
+    assert formula_latex(named) == r"\sin \theta^{2}"
+    assert formula_latex(named, values=True) == "0.4000^{2}"
+    assert MathMLPrinter(True).doprint(formula_node(E.sin(x) ** 2)).startswith(
+        "<mrow><msup><mi>sin</mi>")
+    assert MathMLPrinter(True).doprint(formula_node(named)).startswith("<msup><mrow><mi>sin")

@@ -33,6 +33,7 @@ from .mathprint import (
     quantity_value,
     shown_name,
     sign_of,
+    sin_power,
     substitution_node,
     symbol_node,
 )
@@ -170,7 +171,7 @@ def width(node: Node | None) -> float:
             return max(_inner_width(left), _inner_width(right)) + 1
         return width(left) + width(right) + (3 if op in "+-" else 1)
     if isinstance(node, E.Pow):
-        if E.trig_power(node):  # sin^2(x): a function's name, its arguments, the power
+        if sin_power(node):  # sin^2(x): a function's name, its arguments, the power
             return _call_width(shown_name(node.left) or "", node.left.args, node.right)  # type: ignore[attr-defined]
         return width(node.left) + 0.7 * width(node.right)
     if is_quantity(node):

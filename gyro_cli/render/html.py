@@ -54,9 +54,8 @@ _T = TypeVar("_T")
 
 
 def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
-    """``function`` of a tree, remembered for the last trees met: the variants of a bank
-    share the symbolic side of each step (its tree), only the numbers differ. A tree
-    that cannot be hashed is computed afresh."""
+    """``function`` of a tree, remembered for the last trees met (a tree is one object:
+    core nodes compare by identity). A tree that cannot be hashed is computed afresh."""
     remembered = functools.lru_cache(maxsize=256)(function)
 
     def call(node: Node) -> _T:

@@ -53,9 +53,10 @@ __all__ = [
     "unit_tex",
 ]
 
-#: binding strength, loosest first
-PRECEDENCE = {"Rel": 0, "+": 10, "-": 10, "+-": 10, "-+": 10, "*": 20, "/": 20, "x": 20,
-              ".": 20, " ": 20, "Neg": 25, "Pow": 30, "Prime": 40, "Atom": 50}
+#: the levels `parenthesize` asks for, by operator: `core.expr`'s binding strengths
+PRECEDENCE = {"Rel": P.Rel.binding, "+": E.ADD, "-": E.ADD, "+-": E.ADD, "-+": E.ADD,
+              "*": E.MUL, "/": E.MUL, "x": E.MUL, ".": E.MUL, " ": E.MUL, "Neg": E.NEG,
+              "Pow": E.POW, "Atom": E.ATOM}
 
 RELATIONS_TEX = {op: spelt[LATEX] for op, spelt in RELATIONS.items()}
 SUM_TEX = {op: spelt[LATEX] for op, spelt in SIGNS.items()}
@@ -177,20 +178,25 @@ def shown_name(node: E.Expr) -> str | None:
     return None
 
 
+def sin_power(node: E.Expr) -> str:
+    """``"2"`` for ``sin^2(x)`` as `Lowering` sets it (a power of sin, cos or tan by a
+    number as written, its label), else ""; ``(sin x)^2`` written through a `Let` is a
+    power like any other."""
+    if node.__class__ is E.Pow and node.right.__class__ is E.Num \
+            and node.right.label:  # type: ignore[attr-defined]
+        return E.trig_power(node)  # type: ignore[arg-type]
+    return ""
+
+
 def precedence(node: E.Expr) -> int:
-    """How tightly a set node binds."""
-    op = op_of(node)
-    if op is not None:
-        return PRECEDENCE[op]
-    if sign_of(node) is not None:
-        return PRECEDENCE["Neg"]
-    if isinstance(node, E.Pow):
-        return PRECEDENCE["*"] if E.trig_power(node) else PRECEDENCE["Pow"]
-    if isinstance(node, P.Rel):
-        return PRECEDENCE["Rel"]
-    if isinstance(node, (P.Total, P.Integral)) or is_quantity(node):
-        return PRECEDENCE["*"]
-    return PRECEDENCE["Atom"]
+    """How tightly a set node binds: `core.expr.precedence`, the one table, but where a
+    typeset formula reads otherwise: a number as written is an atom (its sign is a `Neg`),
+    ``sin^2 x`` and an integral bind as a product."""
+    if node.__class__ is E.Num:
+        return E.ATOM
+    if node.__class__ is P.Integral or sin_power(node):
+        return E.MUL
+    return E.precedence(node, False)
 
 
 # ---- lowering: a kind's tree as the core nodes it is set as ----------------------
@@ -218,7 +224,8 @@ class Lowering(BasePrinter):
         return symbol(node.name)
 
     def _print_Num(self, node: E.Num) -> E.Expr:
-        return E.Neg(number(node.text.lstrip("-"))) if node.si < 0 else number(node.text)
+        # a number as the kind wrote it stays (unlabelled: no power of sin^2, `sin_power`)
+        return E.Neg(number(node.text.lstrip("-"))) if node.si < 0 else node
 
     def _print_Let(self, node: E.Let) -> E.Expr:
         return self._print(node.sym if self.values else node.body)
@@ -533,7 +540,7 @@ class TypesetPrinter(BasePrinter):
                 if precedence(left) < level:
                     return False  # bracketed
                 node = left
-            elif isinstance(node, E.Pow) and not E.trig_power(node):
+            elif isinstance(node, E.Pow) and not sin_power(node):
                 base = node.left
                 if isinstance(base, (P.Bracket, E.Sym)) or base_needs_brackets(base):
                     return False  # bracketed, braced, or a name
@@ -720,8 +727,7 @@ class TypesetPrinter(BasePrinter):
         return self.relations(first, [(op, self._print(rhs)) for op, rhs in node.rest])
 
     def _print_Pow(self, node: E.Pow) -> str:
-        n = E.trig_power(node)
-        if n:  # sin^2(theta)
+        if sin_power(node):  # sin^2(theta)
             call = node.left
             assert isinstance(call, E.Call)
             return self._call(call.name, call.args, power=node.right)
