@@ -26,10 +26,9 @@ from __future__ import annotations
 
 import re
 
-from gyro_cli.render.conventions import GREEK, Token, dotted, tokens  # noqa: F401 (re-exported)
-from gyro_cli.render.conventions import symbolic as _symbolic  # noqa: F401
-from gyro_cli.render.mathprint import PRECEDENCE, SUM_TEX, Printer, _fold
-from gyro_cli.render.mathtree import (
+from oracle_tree import (
+    PRECEDENCE,
+    SUMS,
     Abs,
     BinOp,
     Call,
@@ -47,7 +46,15 @@ from gyro_cli.render.mathtree import (
     Sym,
     Text,
     Tuple,
+    Unsupported,
+    fold,
+    precedence,
+    to_core,
 )
+
+from gyro_cli.core.expr import Printer as CorePrinter
+from gyro_cli.render.conventions import GREEK, Token, dotted, tokens  # noqa: F401 (re-exported)
+from gyro_cli.render.conventions import symbolic as _symbolic  # noqa: F401
 
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "arcsin", "arccos",
              "arctan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh", "det", "sqrt",
@@ -679,22 +686,43 @@ def latex_math(text: str, units: bool = True, display: bool = False) -> str:
 
     tree = try_parse(text, units)
     if tree is not None:
-        return LatexPrinter(display).doprint(tree)
+        try:
+            return LatexPrinter(display).doprint(to_core(tree))
+        except Unsupported:
+            pass
     return f"\\text{{{text_escape(text)}}}"
 
 
 def latex_mixed(text: str) -> str:
     """A sentence with the oracle's maths spans typeset inline and the words escaped."""
-    from gyro_cli.render.mathprint import LatexPrinter
     from gyro_cli.render.writeup import words
 
-    return "".join(f"${LatexPrinter(False).doprint(part)}$" if is_math else words(str(part))
+    return "".join(f"${_inline(part)}$" if is_math else words(str(part))
                    for is_math, part in spans(text))
+
+
+def _inline(part: Node) -> str:
+    from gyro_cli.render.mathprint import LatexPrinter, text_escape
+
+    try:
+        return LatexPrinter(False).doprint(to_core(part))
+    except Unsupported:
+        return f"\\text{{{text_escape(text(part))}}}"
 
 
 # ---- plain text of the oracle's trees ------------------------------------------
 
-class TextPrinter(Printer):
+class BasePrinter(CorePrinter):
+    """Gyro's printer base (dispatch by class), brackets by the oracle's precedence."""
+
+    def parenthesize(self, node: Node, level: int, strict: bool = False) -> str:
+        p = precedence(node)
+        if p < level or (strict and p == level):
+            return self.brackets(self._print(node))
+        return self._print(node)
+
+
+class TextPrinter(BasePrinter):
     """The plain form of a parsed tree, one spelling per tree: the parser's round trip
     (gyro prints its own trees' text with `core.expr.TextPrinter`)."""
 
@@ -719,8 +747,8 @@ class TextPrinter(Printer):
 
     def _print_BinOp(self, node: BinOp) -> str:
         op = node.op
-        if op in SUM_TEX:
-            right, op = _fold(node.right, op)
+        if op in SUMS:
+            right, op = fold(node.right, op)
             left = self.parenthesize(node.left, PRECEDENCE["+"])
             rtext = self.parenthesize(right, PRECEDENCE["+"], strict=op != "+")
             return f"{left} {op} {rtext}"

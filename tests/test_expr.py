@@ -182,7 +182,7 @@ def test_a_tree_step_keeps_the_tree_and_prints_the_line():
 def test_a_total_over_rotors_is_set_as_a_sum():
     """``sum I_w`` (four_wheeler's total of the wheels' inertias) is set \\sum I_w in LaTeX;
     the text keeps the name and the JSON ``expr`` an identifier."""
-    from gyro_cli.render.exprnodes import latex
+    from gyro_cli.render.mathprint import formula_latex as latex
 
     tree = Sym("sum I_w", 36.0, "kg m^2") - Sym("G", 5.0) * Sym("sum I_E", 24.0, "kg m^2")
     assert latex(tree) == r"\sum I_{w} - G \sum I_{E}"
@@ -196,7 +196,7 @@ def test_a_chain_prints_its_equal_forms_and_substitutes_the_last():
     11/8): the formula shows both, the substitution, value and ``expr`` are the last's."""
     from gyro_cli.core.work import Work
     from gyro_cli.render import report
-    from gyro_cli.render.exprnodes import latex
+    from gyro_cli.render.mathprint import formula_latex as latex
 
     m, g, L = Sym("m", 2.0, "kg"), Sym("g", 9.81, "m/s^2"), Sym("L", 0.25, "m")
     th, I_O = Sym("theta", math.pi / 3, "deg"), Sym("I_O", 0.13, "kg m^2")

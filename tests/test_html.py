@@ -11,10 +11,17 @@ from html.parser import HTMLParser
 from pathlib import Path
 
 import pytest
-from formula_oracle import parse
+from formula_oracle import parse as parsed
+from oracle_tree import to_core
 
 from gyro_cli.render import html, mathml
 from gyro_cli.solving.solve import solve_file
+
+
+def parse(text: str):  # type: ignore[no-untyped-def]
+    """The core tree gyro prints for formula text (read by the oracle)."""
+    return to_core(parsed(text))
+
 
 ROOT = Path(__file__).resolve().parent.parent
 PROBLEMS = sorted(glob.glob(str(ROOT / "problems" / "*.yaml")))

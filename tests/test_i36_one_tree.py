@@ -40,9 +40,8 @@ def test_item01_a_rows_term_printed_by_the_sum_sign_rule():
     import inspect
 
     from gyro_cli.render import html, writeup
-    from gyro_cli.render.exprnodes import formula_node
     from gyro_cli.render.mathml import MathMLPrinter
-    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, formula_node
 
     a, b, c = P.names("a b c")
     for sign, term, tex in (("+", -b, "- b"), ("-", -b, "+ b"), ("-", b * c, "- b c"),
@@ -61,9 +60,8 @@ def test_item01_a_rows_term_printed_by_the_sum_sign_rule():
 def test_item01_a_powers_base_bracketed_by_one_rule():
     """Whether a power's base is bracketed is decided once, in the shared base; LaTeX and
     MathML only spell the power (a brace, an <msubsup>)."""
-    from gyro_cli.render.exprnodes import formula_node
     from gyro_cli.render.mathml import MathMLPrinter
-    from gyro_cli.render.mathprint import LatexPrinter, TypesetPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, TypesetPrinter, formula_node
 
     for printer in (LatexPrinter, MathMLPrinter):
         for name in ("_print_Pow", "_after_sign", "term"):

@@ -151,11 +151,10 @@ def test_a_sum_over_particles_prints_the_chapter_form_and_evaluates_its_terms():
 
 def test_matrices_primes_integrals_brackets_and_eigenvalues():
     """The nodes of the bicycle's and the released top's sentences, in text and LaTeX."""
-    from gyro_cli.render.exprnodes import NodePrinter
-    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, Lowering
 
     def tex(tree):
-        return LatexPrinter(False).doprint(NodePrinter().doprint(tree))
+        return LatexPrinter(False).doprint(Lowering().doprint(tree))
 
     M, qq, s, u, f = names("M q s u f")
     line = rel(M, "=", matrix([[80.81722, 0.0], [-2.5, 1.0]], "kg m^2", sig=10))
@@ -174,14 +173,13 @@ def test_matrices_primes_integrals_brackets_and_eigenvalues():
 
 
 def test_either_sign_a_continued_relation_and_a_bracketed_list():
-    from gyro_cli.render.exprnodes import NodePrinter
-    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, Lowering
 
     b, g, f = names("beta gamma f")
     line = rel(fn("f", pm(None, 1)), "=", -pm(b, g, "-+") ** 2, "<=", 0)
     assert Prose((line,)).text == "f(+-1) = -(beta -+ gamma)^2 <= 0"
-    assert r"f(\pm 1)" in LatexPrinter(False).doprint(NodePrinter().doprint(line))
-    assert r"\beta \mp \gamma" in LatexPrinter(False).doprint(NodePrinter().doprint(line))
+    assert r"f(\pm 1)" in LatexPrinter(False).doprint(Lowering().doprint(line))
+    assert r"\beta \mp \gamma" in LatexPrinter(False).doprint(Lowering().doprint(line))
     assert Prose(("       ", rel(None, "=", b + g))).equation() is not None
     assert Prose((rel(None, ">>", 1),)).text == ">> 1"
     assert Prose((bracket(-1, 1),)).text == "[-1, 1]"
@@ -369,8 +367,7 @@ def test_vectors_with_a_unit_explicit_signs_brackets_and_primes():
 def test_signs_derivatives_primes_vectors_and_a_relation_that_continues():
     """The nodes the vehicles and the rolling disk write: +z, d theta/dt, betadot'',
     (0, 2.011e+05, 0) N m, ``= 0.1047 rad`` (a note continuing its step)."""
-    from gyro_cli.render.exprnodes import prose_nodes
-    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, prose_nodes
 
     x, z, theta, H_O, bd, k, wp = names("x z theta H_O betadot k omega_p")
     line = Prose((plus(z), " ", -cross(wp, H), " ", rel(names("omega_p")[0], "=", deriv(theta)),
@@ -402,9 +399,8 @@ def test_labelled_symbols_and_a_primed_function_are_words_beside_maths():
     """``phidot (slow)``, ``phidot_slow at 30 deg``: words beside maths are no product (no
     dot, no invisible times); ``U_eff''(theta)`` is the primed name applied."""
     from gyro_cli.core.prose import map_values, words
-    from gyro_cli.render.exprnodes import symbol_node
     from gyro_cli.render.mathml import MathMLPrinter
-    from gyro_cli.render.mathprint import LatexPrinter
+    from gyro_cli.render.mathprint import LatexPrinter, symbol_node
 
     phidot, slow, theta, U = names("phidot phidot_slow theta U_eff")
     at = words("at", slow, q(math.pi / 6, "deg", exact=True))

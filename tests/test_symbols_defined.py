@@ -18,10 +18,7 @@ from pathlib import Path
 
 import pytest
 from formula_oracle import FUNCTIONS, UNITS, dotted, is_word, spans, try_parse
-
-from gyro_cli import kinds
-from gyro_cli.commands.authoring import template
-from gyro_cli.render.mathtree import (
+from oracle_tree import (
     Abs,
     BinOp,
     Call,
@@ -37,6 +34,9 @@ from gyro_cli.render.mathtree import (
     Sym,
     Tuple,
 )
+
+from gyro_cli import kinds
+from gyro_cli.commands.authoring import template
 from gyro_cli.render.writeup import file_keys
 from gyro_cli.solving.solve import solve_file
 

@@ -18,10 +18,28 @@ import re
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar
 
+from ..core import expr as E
+from ..core import prose as P
 from ..core.work import num
 from .conventions import unit_spelling
-from .exprnodes import formula_node, substitution_node, symbol_node
-from .mathtree import BinOp, Group, Node, Num, Pow, Quantity, Rel, Sym, Text, Tuple
+from .mathprint import (
+    formula_node,
+    grouped,
+    is_list,
+    is_quantity,
+    op_of,
+    quantity_node,
+    quantity_unit,
+    quantity_value,
+    shown_name,
+    sign_of,
+    sin_power,
+    substitution_node,
+    symbol_node,
+)
+
+#: a tree as `mathprint.Lowering` sets it: core nodes
+Node = E.Expr
 
 __all__ = ["Keys", "Writer", "walk", "step_pieces", "equation_tag", "answer_symbol",
            "answer_lhs", "width", "pack", "unbracketed"]
@@ -84,7 +102,7 @@ def file_keys(kind: Any) -> re.Pattern[str] | None:
 def step_pieces(step: Any) -> tuple[Node, list[Node]]:
     """A step's symbol and the right-hand sides it shows: its formula and substitution
     (typeset from its tree, nothing parsed) and its value."""
-    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or Text(step.symbol)
+    lhs = symbol_node(step.symbol, getattr(step, "symbol_expr", None)) or P.Words(step.symbol)
     pieces: list[Node] = []
     tree = getattr(step, "shown", None)
     if tree is not None:
@@ -96,7 +114,7 @@ def step_pieces(step: Any) -> tuple[Node, list[Node]]:
         raise TypeError(f"the step {step.symbol} has a formula but no tree")
     if step.value is not None:
         unit = unit_spelling(step.unit)
-        pieces.append(Quantity(Num(num(step.value)), unit) if unit else Num(num(step.value)))
+        pieces.append(quantity_node(num(step.value), unit))
     return lhs, pieces
 
 
@@ -107,7 +125,7 @@ def equation_tag(step: Any) -> tuple[str, str]:
 
 
 def answer_symbol(answer: Any) -> Node | None:
-    """An answer's symbol as typesetting nodes (its tree, or its one name)."""
+    """An answer's symbol as set (its tree, or its one name)."""
     return symbol_node(answer.symbol, getattr(answer, "symbol_expr", None))
 
 
@@ -119,7 +137,7 @@ def answer_lhs(answer: Any) -> Node | None:
             and not (answer.values and not isinstance(answer.values[0], str)) \
             and answer.symbol.isalpha() and len(answer.symbol) > 2:
         return None
-    if isinstance(tree, Group) and isinstance(tree.body, Tuple) and len(answer.values) > 1:
+    if is_list(tree) and len(answer.values) > 1:
         return None  # (I_1, I_2, I_3): one symbol per value, not the triple before each
     return tree
 
@@ -128,9 +146,17 @@ def answer_lhs(answer: Any) -> Node | None:
 
 def unbracketed(node: Node) -> Node:
     """The node inside round brackets that a stacked fraction makes redundant."""
-    while isinstance(node, Group) and node.open == "(":
-        node = node.body
+    while isinstance(node, P.Bracket) and node.open[0] == "(" and grouped(node) is not None:
+        node = node.items[0]
     return node
+
+
+def _inner_width(node: Node) -> float:
+    """The width of a fraction's part: a list in round brackets without them."""
+    node = unbracketed(node)
+    if is_list(node) and node.open[0] == "(":  # type: ignore[attr-defined]
+        return width(node) - 2
+    return width(node)
 
 
 def width(node: Node | None) -> float:
@@ -138,31 +164,63 @@ def width(node: Node | None) -> float:
     its wider part)."""
     if node is None:
         return 0
-    if isinstance(node, BinOp):
-        if node.op == "/":
-            return max(width(unbracketed(node.left)), width(unbracketed(node.right))) + 1
-        return width(node.left) + width(node.right) + (3 if node.op in "+-" else 1)
-    if isinstance(node, Pow):
-        return width(node.base) + 0.7 * width(node.exp)
-    if isinstance(node, Quantity):
-        return width(node.value) + 0.9 * len(node.unit) + 1
-    if isinstance(node, Num):
+    op = op_of(node)
+    if op is not None:
+        left, right = node.left, node.right  # type: ignore[attr-defined]
+        if op == "/":
+            return max(_inner_width(left), _inner_width(right)) + 1
+        return width(left) + width(right) + (3 if op in "+-" else 1)
+    if isinstance(node, E.Pow):
+        if sin_power(node):  # sin^2(x): a function's name, its arguments, the power
+            return _call_width(shown_name(node.left) or "", node.left.args, node.right)  # type: ignore[attr-defined]
+        return width(node.left) + 0.7 * width(node.right)
+    if is_quantity(node):
+        return width(quantity_value(node)) + 0.9 * len(quantity_unit(node)) + 1
+    if isinstance(node, E.Num):
         return len(node.text) + (4 if "e" in node.text.lower() else 0)
-    if isinstance(node, Sym):
+    if isinstance(node, E.Sym):
         return 1.2 + 0.7 * len(node.name.partition("_")[2])
-    if isinstance(node, Rel):
+    if isinstance(node, P.Rel):
         return width(node.first) + sum(3 + width(rhs) for _, rhs in node.rest)
-    if isinstance(node, Text):
-        return len(node.text)
+    if isinstance(node, P.Words):
+        return len(node.words)
+    name = shown_name(node)
+    if name is not None and not (isinstance(node, E.Call) and node.name == "abs"):
+        return _call_width(name, node.args)  # type: ignore[attr-defined]
     total = 2.0
-    for value in vars(node).values():
-        if isinstance(value, Node):
-            total += width(value)
-        elif isinstance(value, tuple):
-            total += sum(width(x) + 1 for x in value if isinstance(x, Node))
-            total += sum(width(x[1]) + 2 for x in value if isinstance(x, tuple))
-        elif isinstance(value, str) and type(node).__name__ == "Call":
-            total += len(value) if value not in ("|", ",") else 0
+    if isinstance(node, P.Bracket) and is_list(node):
+        total += 2.0 + sum(width(x) + 1 for x in node.items)
+    elif isinstance(node, P.Mat):
+        total += sum(width(row[1]) + 2 for row in node.rows)
+    elif isinstance(node, P.Integral):
+        total += width(node.lower)
+        total += width(node.upper)
+        total += width(node.body)
+    else:  # a sign, brackets, |x|, a sum over particles, a prime: around one node
+        inner = _held(node)
+        total += width(inner)
+    return total
+
+
+def _held(node: Node) -> Node:
+    """The one node a sign, brackets, |x|, a sum or a prime holds."""
+    if sign_of(node) is not None or isinstance(node, P.Prime):
+        return node.arg  # type: ignore[attr-defined, no-any-return]
+    if isinstance(node, P.Bracket):
+        return node.items[0]
+    if isinstance(node, E.Call):  # |x|
+        return node.args[0]
+    if isinstance(node, P.Total):
+        return node.body
+    raise TypeError(f"no width for {type(node).__name__}")
+
+
+def _call_width(name: str, args: tuple[Node, ...], power: Node | None = None) -> float:
+    total = 2.0
+    total += len(name) if name not in ("|", ",") else 0
+    total += sum(width(x) + 1 for x in args)
+    if power is not None:
+        total += width(power)
     return total
 
 

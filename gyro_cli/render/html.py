@@ -43,18 +43,19 @@ from .document import (
     walk,
     width,
 )
-from .exprnodes import formula_node, prose_nodes, symbol_node
 from .formats import Format
 from .mathml import MathMLPrinter, math_element
-from .mathtree import BinOp, Node, Num, Quantity, Rel
+from .mathprint import formula_node, op_of, prose_nodes, quantity_node, symbol_node
+
+#: a tree as `mathprint.Lowering` sets it: core nodes
+Node = Expr
 
 _T = TypeVar("_T")
 
 
 def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
-    """``function`` of a tree, remembered for the last trees met: the variants of a bank
-    share the symbolic side of each step (its tree), only the numbers differ. A tree
-    that cannot be hashed is computed afresh."""
+    """``function`` of a tree, remembered for the last trees met (a tree is one object:
+    core nodes compare by identity). A tree that cannot be hashed is computed afresh."""
     remembered = functools.lru_cache(maxsize=256)(function)
 
     def call(node: Node) -> _T:
@@ -221,18 +222,20 @@ def _links(tree: Expr) -> tuple[Expr, tuple[tuple[str, Expr], ...]] | None:
 
 def _terms(node: Node) -> list[tuple[str, Node]]:
     """A sum as its signed terms, a product as its factors (the places a row may break)."""
-    if isinstance(node, BinOp) and node.op in ("+", "-"):
-        return _terms(node.left) + [(node.op, node.right)]
-    if isinstance(node, BinOp) and node.op in (" ", "*", ".", "x"):
-        left = _terms(node.left) if not _is_sum(node.left) else [("", node.left)]
+    op = op_of(node)
+    pair: Any = node  # a binary node: its left and right
+    if op in ("+", "-"):
+        return _terms(pair.left) + [(op, pair.right)]
+    if op in (" ", "*", ".", "x"):
+        left = _terms(pair.left) if not _is_sum(pair.left) else [("", pair.left)]
         if len(left) > 1 and any(sign in ("+", "-") for sign, _ in left[1:]):
             return [("", node)]
-        return left + [(node.op, node.right)]
+        return left + [(str(op), pair.right)]
     return [("", node)]
 
 
 def _is_sum(node: Node) -> bool:
-    return isinstance(node, BinOp) and node.op in ("+", "-")
+    return op_of(node) in ("+", "-")
 
 
 def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
@@ -328,7 +331,7 @@ def _step_html(step: Any, keys: Keys = NO_KEYS) -> str:
 
 def _relation_html(tree: Node, tag: str = "") -> str:
     """A displayed relation: one chain of one kind of relation in rows, else as it is."""
-    if isinstance(tree, Rel) and tree.rest and tree.first is not None \
+    if isinstance(tree, P.Rel) and tree.rest and tree.first is not None \
             and len({op for op, _ in tree.rest}) == 1:
         math, wide = _equation(tree.first, [rhs for _, rhs in tree.rest], tree.rest[0][0])
     else:
@@ -376,8 +379,7 @@ def _quantity(value: float | str, unit: str | None) -> str:
     if isinstance(value, str):
         return escape(value.replace("_", " "))
     unit = unit_spelling(unit or "")
-    node: Node = Quantity(Num(num(value)), unit) if unit else Num(num(value))
-    return _math(node)
+    return _math(quantity_node(num(value), unit))
 
 
 def _given_table(result: Result, level: int, keys: Keys = NO_KEYS) -> str:
@@ -392,8 +394,7 @@ def _given_table(result: Result, level: int, keys: Keys = NO_KEYS) -> str:
             note = f" ({prose_pieces_html(g.note_prose, keys)})"
         cell = escape(text)
         if g.shown is not None:  # the quantity as read, as maths
-            cell = _math(Quantity(Num(g.shown[0]), g.shown[1]) if g.shown[1]
-                         else Num(g.shown[0]))
+            cell = _math(quantity_node(g.shown[0], g.shown[1]))
             cell += " (default)" if g.text.endswith(" (default)") else ""
         rows.append(f"<tr><th scope=\"row\">{sym}</th><td>{cell}{note}</td>"
                     f"<td>{_quantity(g.si_value, g.si_unit)}</td></tr>")

@@ -1,4 +1,4 @@
-"""MathML for `mathtree` expressions: the formulas of an HTML page.
+"""MathML for the formulas of an HTML page: core trees as `mathprint.Lowering` sets them.
 
 `MathMLPrinter` spells what `mathprint.TypesetPrinter` decides (the precedence
 table, brackets, signs, fractions, the LaTeX printer's decisions) in MathML
@@ -13,8 +13,9 @@ from __future__ import annotations
 
 import re
 from html import escape
-from typing import Any, ClassVar
+from typing import ClassVar
 
+from ..core import expr as E
 from .conventions import (
     DEGREES,
     FUNCTIONS,
@@ -31,8 +32,11 @@ from .mathprint import (
     TypesetPrinter,
     _rightmost,
     beside_text,
+    is_quantity,
+    op_of,
+    shown_name,
+    sign_of,
 )
-from .mathtree import Abs, BinOp, Call, Neg, Node, Num, Pow, Quantity, Sym, Tuple
 
 __all__ = ["PRECEDENCE", "MathMLPrinter", "math_element", "symbol_mathml", "tree_mathml"]
 
@@ -197,25 +201,25 @@ class MathMLPrinter(TypesetPrinter):
     def infix(self, left: str, op: str, right: str) -> str:
         return _row(left, op, right)
 
-    def beside(self, node: BinOp, left: str, right: str) -> str:
+    def beside(self, node: E.BinOp, left: str, right: str) -> str:
         # words beside maths, one row: phidot_slow at 30 deg
         return _row(*(text[6:-7] if beside_text(side) and text.startswith("<mrow>") else text
                       for text, side in ((left, node.left), (right, node.right))))
 
-    def number_follows(self, node: Node, text: str) -> bool:
+    def number_follows(self, node: E.Expr, text: str) -> bool:
         return _starts_number(node)
 
-    def juxtapose(self, node: BinOp, left: str, right: str) -> str:
-        if isinstance(_rightmost(node.left), Quantity) or _starts_function(node.right):
+    def juxtapose(self, node: E.BinOp, left: str, right: str) -> str:
+        if is_quantity(_rightmost(node.left)) or _starts_function(node.right):
             return _row(left, THIN, INVISIBLE_TIMES, right)
         return _row(left, INVISIBLE_TIMES, right)
 
     def bracketed(self, text: str) -> bool:
         return True  # a Group's own brackets, or a stacked fraction that needs none
 
-    def power(self, base: Node, text: str, exp: str) -> str:
+    def power(self, base: E.Expr, text: str, exp: str) -> str:
         exp = _row(exp)
-        if isinstance(base, Sym) and text.startswith("<msub>") and text.endswith("</msub>"):
+        if isinstance(base, E.Sym) and text.startswith("<msub>") and text.endswith("</msub>"):
             return "<msubsup>" + text[len("<msub>"):-len("</msub>")] + exp + "</msubsup>"
         return f"<msup>{text}{exp}</msup>"
 
@@ -242,23 +246,22 @@ class MathMLPrinter(TypesetPrinter):
         primes = {1: "′", 2: "″", 3: "‴"}.get(count, "′" * count)
         return _row(inner, _mo(primes))
 
-    def _print_Tuple(self, node: Tuple) -> str:
-        return _row(*_joined([self._print(x) for x in node.items], _mo(",")))
+    def items(self, texts: list[str]) -> str:
+        return _row(*_joined(texts, _mo(",")))
 
-    def _print_Abs(self, node: Abs) -> str:
-        return _row(_mo("|"), self._print(node.body), _mo("|"))
+    def magnitude(self, inner: str) -> str:
+        return _row(_mo("|"), inner, _mo("|"))
 
-    def _print_Sum(self, node: Any) -> str:
-        return _row('<mo largeop="true">∑</mo>', self._print(node.body))
+    def total(self, body: str) -> str:
+        return _row('<mo largeop="true">∑</mo>', body)
 
-    def _print_Integral(self, node: Any) -> str:
-        return _row(f"<msubsup><mo>∫</mo>{_row(self._print(node.lower))}"
-                    f"{_row(self._print(node.upper))}</msubsup>", self._print(node.body))
+    def integral(self, lower: str, upper: str, body: str) -> str:
+        return _row(f"<msubsup><mo>∫</mo>{_row(lower)}{_row(upper)}</msubsup>", body)
 
-    def _print_Matrix(self, node: Any) -> str:
-        rows = "".join("<mtr>" + "".join(f"<mtd>{self._print(x)}</mtd>" for x in row) + "</mtr>"
-                       for row in node.rows)
-        return self.brackets(f"<mtable>{rows}</mtable>", "[", "]")
+    def matrix(self, rows: list[list[str]]) -> str:
+        body = "".join("<mtr>" + "".join(f"<mtd>{x}</mtd>" for x in row) + "</mtr>"
+                       for row in rows)
+        return self.brackets(f"<mtable>{body}</mtable>", "[", "]")
 
 
 def _joined(items: list[str], sep: str) -> list[str]:
@@ -270,22 +273,22 @@ def _joined(items: list[str], sep: str) -> list[str]:
     return out
 
 
-def _first(node: Node) -> Node:
+def _first(node: E.Expr) -> E.Expr:
     """The node a product, quotient, sum or power is written starting with."""
-    while isinstance(node, (BinOp, Pow)):
-        node = node.left if isinstance(node, BinOp) else node.base
+    while op_of(node) is not None or isinstance(node, E.Pow):
+        node = node.left  # type: ignore[attr-defined]
     return node
 
 
-def _starts_number(node: Node) -> bool:
+def _starts_number(node: E.Expr) -> bool:
     """Juxtaposition before a number (``2 (3)``) is written with a dot."""
-    return isinstance(_first(node), (Num, Quantity, Neg))
-
-
-def _starts_function(node: Node) -> bool:
-    """``m g l sin(theta)``: a thin space before the function's name, as LaTeX sets it."""
     first = _first(node)
-    return isinstance(first, Call) and first.name in FUNCTIONS
+    return isinstance(first, E.Num) or is_quantity(first) or sign_of(first) is not None
+
+
+def _starts_function(node: E.Expr) -> bool:
+    """``m g l sin(theta)``: a thin space before the function's name, as LaTeX sets it."""
+    return shown_name(_first(node)) in FUNCTIONS
 
 
 
@@ -299,7 +302,7 @@ def math_element(inner: str, display: bool = False, label: str | None = None) ->
     return f"<math{attrs}>{inner}</math>"
 
 
-def tree_mathml(node: Node, display: bool = False) -> str:
+def tree_mathml(node: E.Expr, display: bool = False) -> str:
     """The content of a ``<math>`` element for one tree."""
     return MathMLPrinter(display).doprint(node)
 

@@ -95,7 +95,7 @@ def equation(step: Step) -> dict[str, Any]:
     if step.expr is None:  # a step still written as text
         return out | {"formula_latex": None, "substitution_latex": None, "expr": None,
                       "symbols": None}
-    from .exprnodes import latex
+    from .mathprint import formula_latex as latex
 
     tree = step.shown
     assert tree is not None

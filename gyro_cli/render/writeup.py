@@ -3,8 +3,8 @@
 `gyro solve --format markdown|latex [--standalone]`. The solution is walked once
 (`document.walk`); `MarkdownWriter` and `LatexWriter` write its parts. Each step
 of the worked answer (``work.Step``: symbol, formula, substitution, value, unit,
-ref, text) is typeset from the expression tree the kind wrote (`exprnodes` makes
-the typesetting nodes of `mathtree`, `mathprint` sets them); a line of prose is
+ref, text) is typeset from the expression tree the kind wrote (`mathprint` sets its
+core nodes); a line of prose is
 the words and trees the kind wrote (`core.prose`): words are set as text, trees
 as maths, and nothing is parsed back from text. A display too wide for the page
 is set as aligned rows, one per ``=``, and a long sum is broken at its ``+`` and
@@ -22,6 +22,8 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
+from ..core import expr as E
+from ..core import prose as P
 from ..core.errors import terminal_text
 from ..core.work import num
 from ..solving.solve import Result
@@ -38,17 +40,22 @@ from .document import (
     walk,
     width,
 )
-from .exprnodes import prose_nodes, symbol_node
 from .formats import Format
 from .mathprint import (
     RELATIONS_TEX,
     LatexPrinter,
+    grouped,
     number_tex,
+    op_of,
+    prose_nodes,
+    symbol_node,
     symbol_tex,
     text_escape,
     unit_tex,
 )
-from .mathtree import BinOp, Group, Node, Rel
+
+#: a tree as `mathprint.Lowering` sets it: core nodes
+Node = E.Expr
 
 __all__ = ["markdown", "latex", "standalone", "symbol_latex", "words", "text_escape",
            "symbol_tex", "file_keys", "prose_latex", "Keys", "MarkdownWriter", "LatexWriter",
@@ -109,8 +116,9 @@ def prose_latex(prose: Any, markdown: bool = False, keys: Keys = NO_KEYS) -> str
 
 def _terms(node: Node) -> list[tuple[str, Node]]:
     """A sum as its terms with their signs: a - b + c -> [("", a), ("-", b), ("+", c)]."""
-    if isinstance(node, BinOp) and node.op in ("+", "-"):
-        return _terms(node.left) + [(node.op, node.right)]
+    op = op_of(node)
+    if op in ("+", "-"):
+        return _terms(node.left) + [(op, node.right)]  # type: ignore[attr-defined]
     return [("", node)]
 
 
@@ -118,18 +126,19 @@ def _opened(piece: Node, printer: LatexPrinter) -> tuple[str, Node, str]:
     """A piece whose width is in one bracketed sum: the text before the sum, the sum and the
     text after (``a (b + c + d)`` -> ``a \\Bigl(``, b + c + d, ``\\Bigr)``)."""
     node = piece
-    if isinstance(node, BinOp) and node.op == "/" and len(_terms(unbracketed(node.left))) > 1:
+    if isinstance(node, E.Div) and len(_terms(unbracketed(node.left))) > 1:
         den = printer.doprint(unbracketed(node.right))
         return f"\\frac{{1}}{{{den}}} \\Bigl(", unbracketed(node.left), " \\Bigr)"
-    if isinstance(node, BinOp) and node.op in (" ", "*"):
+    if isinstance(node, E.Mul):
         right = node.right
-        if isinstance(right, Group) and len(_terms(right.body)) > 1 \
-                and width(right) > width(node.left):
-            o, c = ("[", "]") if right.open == "[" else ("(", ")")
-            return f"{printer.doprint(node.left)} \\Bigl{o}", right.body, f" \\Bigr{c}"
-    if isinstance(node, Group) and len(_terms(node.body)) > 1:
-        o, c = ("[", "]") if node.open == "[" else ("(", ")")
-        return f"\\Bigl{o}", node.body, f" \\Bigr{c}"
+        body = grouped(right)
+        if body is not None and len(_terms(body)) > 1 and width(right) > width(node.left):
+            o, c = ("[", "]") if right.open == "[" else ("(", ")")  # type: ignore[attr-defined]
+            return f"{printer.doprint(node.left)} \\Bigl{o}", body, f" \\Bigr{c}"
+    body = grouped(node)
+    if body is not None and len(_terms(body)) > 1:
+        o, c = ("[", "]") if node.open == "[" else ("(", ")")  # type: ignore[attr-defined]
+        return f"\\Bigl{o}", body, f" \\Bigr{c}"
     return "", piece, ""
 
 
@@ -159,7 +168,7 @@ def _rows(lhs: str, pieces: list[Node], budget: float) -> list[tuple[str, str]]:
     return rows
 
 
-def _rel_rows(tree: Rel) -> list[str]:
+def _rel_rows(tree: P.Rel) -> list[str]:
     printer = LatexPrinter(True)
     first = printer.doprint(tree.first) if tree.first is not None else ""
     rows = []
@@ -345,7 +354,7 @@ class _TexWriter(Writer):
                 if tag else ""
             if isinstance(tree, str):
                 raise TypeError("a relation is a tree")
-            if width(tree) <= WIDTH or not isinstance(tree, Rel):
+            if width(tree) <= WIDTH or not isinstance(tree, P.Rel):
                 return _display(LatexPrinter(True).doprint(tree) + number, markdown)
             return _display("\\begin{aligned}\n" + " \\\\\n".join(_rel_rows(tree)) +
                             "\n\\end{aligned}" + number, markdown)
