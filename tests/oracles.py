@@ -28,3 +28,29 @@ def tilt_rate_harmonic(drop: float, drop_time: float, spacing: float) -> float:
 def counterweight_offset(moment: float, counterweight: float, g: float) -> float:
     """How far the block moves from the balance point so its weight gives the moment: M / (m_c g)."""
     return abs(moment) / (counterweight * g)
+
+
+# ---- the precession of the equinoxes (kinds/earth_precession.py) ----------------------
+
+def tidal_from_period(period: float, mass_ratio: float) -> float:
+    """G M_b / a^3 from the orbital period and q = M_b / M: n^2 q / (1 + q) (Kepler III)."""
+    n = 2 * math.pi / period
+    return n * n * mass_ratio / (1 + mass_ratio)
+
+
+def node_factor(inclination: float) -> float:
+    """(1 - (3/2) sin^2 i): the torque of an orbit at i, averaged over its turning node."""
+    return 1 - 1.5 * math.sin(inclination) ** 2
+
+
+def eccentricity_factor(e: float) -> float:
+    """(1 - e^2)^(-3/2): <a^3 / r^3> over a Kepler orbit (time average)."""
+    return (1 - e * e) ** -1.5
+
+
+def precession_rate(tidal: float, e: float, H: float, obliquity: float, omega: float,
+                    inclination: float = 0.0) -> float:
+    """Rate at which the spin axis turns about the orbit normal, rad/s (retrograde positive):
+    (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) (1 - (3/2) sin^2 i) / omega."""
+    return (1.5 * tidal * eccentricity_factor(e) * H * math.cos(obliquity)
+            * node_factor(inclination) / omega)
