@@ -99,6 +99,11 @@ def gyroscopic_couple(J: F, spin: F, precession: F) -> F:
     return J * spin * precession
 
 
+def precession_for_couple(couple: F, J: F, spin: F) -> F:
+    """omega_p = M / (J omega): the precession at which a rotor gives the couple M."""
+    return couple / (J * spin)
+
+
 def overturning_couple(rotor_inertia: F, speed: F, turn_radius: F, wheel_radius: F) -> F:
     """C_g = (sum I_w +- G sum I_E) v^2 / (R r_w): the geared rotors' gyroscopic couple."""
     return rotor_inertia * speed ** 2 / (turn_radius * wheel_radius)
