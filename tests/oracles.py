@@ -54,3 +54,18 @@ def precession_rate(tidal: float, e: float, H: float, obliquity: float, omega: f
     (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) (1 - (3/2) sin^2 i) / omega."""
     return (1.5 * tidal * eccentricity_factor(e) * H * math.cos(obliquity)
             * node_factor(inclination) / omega)
+
+
+# ---- Euler angles (kinds/euler_angles.py) ----------------------------------------------
+
+def fixed_accel_zxz(phi: float, theta: float, rates: tuple[float, float, float],
+                    accels: tuple[float, float, float]) -> tuple[float, float, float]:
+    """(alpha_X, alpha_Y, alpha_Z): the fixed components of omega differentiated,
+    omega_X = thetadot c(ph) + psidot s(th) s(ph), omega_Y = thetadot s(ph) - psidot s(th) c(ph),
+    omega_Z = phidot + psidot c(th)."""
+    p1, p2, p3 = rates
+    a1, a2, a3 = accels
+    st, ct, sf, cf = math.sin(theta), math.cos(theta), math.sin(phi), math.cos(phi)
+    return (a2 * cf - p2 * p1 * sf + a3 * st * sf + p3 * p2 * ct * sf + p3 * p1 * st * cf,
+            a2 * sf + p2 * p1 * cf - a3 * st * cf - p3 * p2 * ct * cf + p3 * p1 * st * sf,
+            a1 + a3 * ct - p3 * p2 * st)
