@@ -69,3 +69,16 @@ def fixed_accel_zxz(phi: float, theta: float, rates: tuple[float, float, float],
     return (a2 * cf - p2 * p1 * sf + a3 * st * sf + p3 * p2 * ct * sf + p3 * p1 * st * cf,
             a2 * sf + p2 * p1 * cf - a3 * st * cf - p3 * p2 * ct * cf + p3 * p1 * st * sf,
             a1 + a3 * ct - p3 * p2 * st)
+
+
+# ---- the released top (kinds/released_top.py) ------------------------------------------
+
+def released_u1(I: float, J: float, mgl: float, theta0: float, omega_z: float) -> float:
+    """u1 = gamma^2/(2a) - sqrt(gamma^4/(4a^2) - gamma^2/a cos(theta0) + 1) (Eq. 11.25), as
+    printed but for the root: written without cancellation, u1 = c / q of the quadratic
+    a u^2 - gamma^2 u + gamma^2 u0 - a = 0 (Eq. 11.24 corrected)."""
+    a = 2 * mgl / I
+    g2 = (J * omega_z / I) ** 2
+    b, c = -g2, g2 * math.cos(theta0) - a
+    q = -0.5 * (b + math.copysign(math.sqrt(max(b * b - 4 * a * c, 0.0)), b))
+    return min(q / a, c / q)
