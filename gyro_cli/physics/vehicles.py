@@ -1,4 +1,4 @@
-"""Gyroscopic effects on vehicles: ships, aeroplanes, two- and four-wheelers (plain floats).
+"""Gyroscopic effects on vehicles: ships, aeroplanes, two- and four-wheelers.
 
 Vehicle axes, fixed in the vehicle: x forward (toward the bow or nose), y to the
 left (port), z up. A rotor of axial inertia J spinning at omega about its axis
