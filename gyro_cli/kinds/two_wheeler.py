@@ -69,11 +69,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     v, R = given["speed"], given["turn_radius"]
     turn = given.word("turn", "left")
     w = V.rolling_rate(v, rw)
-    rotors = V.rotor_inertia(2 * Iw, G, IE, sense)
-    H = V.spin_momentum(rotors, w)
-    Cg, Cc = V.overturning_couple(rotors, v, R, rw), V.centrifugal_couple(m, v, h, R)
+    H = V.spin_momentum(V.rotor_inertia(2 * Iw, G, IE, sense), w)
+    Cg, Cc = V.book_couples(H, V.turn_rate(v, R), m, v, h, R)
     refuse_overflow(Cg, Cc, m * g * h, w)
-    heel = V.heel(Cg, Cc, m, g, h)
+    heel = math.atan2(Cg + Cc, m * g * h)  # V.heel's angle, as the answers have always had it
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_AXES)

@@ -343,10 +343,19 @@ def four_wheeler(mass: float, g: float, cg_height: float, track: float, wheel_ra
     wp = turn_rate(speed, turn_radius)
     H = spin_momentum(rotor_inertia(wheel_inertia_total, gear_ratio, engine_inertia_total,
                                     engine_sense), w)
-    Cg = H * wp  # the answer as the books work it: H omega_p, then m v v h / R
-    Cc = mass * speed * speed * cg_height / turn_radius
+    Cg, Cc = book_couples(H, wp, mass, speed, cg_height, turn_radius)
     return FourWheeler(w, wp, Cg, Cc, weight_share(mass, g), couple_share(Cg, track),
                        couple_share(Cc, track))
+
+
+def book_couples(H: float, precession: float, mass: float, speed: float, cg_height: float,
+                 turn_radius: float) -> tuple[float, float]:
+    """(C_g, C_c) for the answers, worked as the books do: H omega_p, and m v v h / R.
+
+    The steps print the same couples as (sum I_w +- G sum I_E) v^2 / (R r_w) and
+    m v^2 h / R (overturning_couple, centrifugal_couple); the two orders of working can
+    differ in the last bit, and the answers keep the books' order."""
+    return H * precession, mass * speed * speed * cg_height / turn_radius
 
 
 def weight_share(mass: F, g: F) -> F:
