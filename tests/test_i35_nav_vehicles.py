@@ -520,20 +520,21 @@ def test_item04_cant_is_the_bank_of_its_sine(write):
     assert si(by_cant, "wheel_loads") == pytest.approx(si(by_angle, "wheel_loads"), rel=1e-12)
 
 
-def test_item03_the_worked_steps_agree_with_the_physics_functions(write):
-    """The kind's trees and physics/directional_gyro.py compute the same quantities."""
-    from gyro_cli.physics import directional_gyro as dg
-
+def test_item03_the_worked_steps_agree_with_a_hand_calculation(write):
+    """The kind's steps (written by physics/directional_gyro.py's functions) against the
+    rates worked by hand: the Earth's vertical component, the craft's longitude rate on the
+    nautical-mile sphere, the nut's rate and moment."""
     path = dg_file(write, "  latitude: 35 S\n  latitude_nut: 48 N\n  ground_speed: 320 kt\n"
                           "  direction: west\n  angular_momentum: 0.5 kg m^2/s",
                    "{drift_rate: deg/h, earth_rate_drift: deg/h, transport_wander: deg/h, "
                    "nut_correction: deg/h, nut_moment: N m}")
     lat, nut = math.radians(-35), math.radians(48)
-    assert si(path, "earth_rate_drift")[0] == pytest.approx(dg.earth_rate_drift(SIDEREAL, lat))
-    assert si(path, "transport_wander")[0] == pytest.approx(
-        dg.transport_wander(-320 * KT, lat, dg.NAUTICAL_EARTH_RADIUS))
-    assert si(path, "nut_correction")[0] == pytest.approx(dg.nut_correction(SIDEREAL, nut))
-    assert si(path, "nut_moment")[0] == pytest.approx(dg.nut_moment(0.5, SIDEREAL, nut))
+    radius = 1852 * 60 / math.radians(1)  # one arc minute is one nautical mile
+    assert si(path, "earth_rate_drift")[0] == pytest.approx(SIDEREAL * math.sin(lat))
+    # west at 320 kt: l' = -v / (R cos(lat)); its vertical part l' sin(lat) = -v tan(lat) / R
+    assert si(path, "transport_wander")[0] == pytest.approx(-320 * KT * math.tan(lat) / radius)
+    assert si(path, "nut_correction")[0] == pytest.approx(-SIDEREAL * math.sin(nut))
+    assert si(path, "nut_moment")[0] == pytest.approx(0.5 * SIDEREAL * math.sin(nut))
     # westward in the south: with the Earth's sense reversed there, the transport wander is
     # to the right (clockwise), opposite to the Earth's apparent drift to the left
     assert si(path, "transport_wander")[0] > 0 > si(path, "earth_rate_drift")[0]

@@ -164,9 +164,9 @@ def test_fast_top_approximations_converge():
     errors = []
     for spin in (2000 * RPM, 20000 * RPM, 200000 * RPM):
         nut = analyse(TOP, Start(theta0, spin))
-        errors.append([abs(fast_nutation_period(TOP, spin) / nut.nutation_period - 1),
-                       abs(fast_mean_precession(TOP, spin) / nut.mean_precession - 1),
-                       abs(fast_nutation_amplitude(TOP, spin, theta0)
+        errors.append([abs(fast_nutation_period(TOP.I, TOP.J, spin) / nut.nutation_period - 1),
+                       abs(fast_mean_precession(TOP.mgl, TOP.J, spin) / nut.mean_precession - 1),
+                       abs(fast_nutation_amplitude(TOP.I, TOP.mgl, theta0, TOP.J, spin)
                            / (nut.theta_max - nut.theta_min) - 1)])
     errors = np.array(errors)
     assert np.all(errors[1] < errors[0] / 50) and np.all(errors[2] < errors[1] / 50)

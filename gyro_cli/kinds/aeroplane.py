@@ -74,13 +74,13 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     else:
         turn = given.word("turn", "left")
         work.section("Turn: precession about the vertical")
-        rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
+        rate = work.step("omega_p", V.turn_rate(Sym("v", v, "m/s"), Sym("R", R, "m")), unit="rad/s")
         wp = V.steering_precession(v, R, turn)
         work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
                   "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")))
 
     work.section(*_COUPLE_TITLE)
-    C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29")
+    C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m", ref="Eq. 11.29")
     refuse_overflow(C)
     work.answer("couple", "C", [C], "moment")
     work.answer("precession", "omega_p", [rate], "rate")
@@ -100,7 +100,7 @@ def _loop(given: Given, v: float, R: float, work: Work) -> tuple[V.Vector, float
     about its own lateral axis, nose rising (an inside loop) unless ``nose`` says falling."""
     nose = given.word("nose")
     work.section("Loop: precession about the lateral axis")
-    rate = work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s",
+    rate = work.step("omega_p", V.turn_rate(Sym("v", v, "m/s"), Sym("R", R, "m")), unit="rad/s",
                      note="the rate of pitch on the vertical circle")
     if nose is None:
         nose = "rising"

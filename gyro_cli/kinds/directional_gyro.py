@@ -53,7 +53,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     lam, W = Sym("lambda", lat, "deg"), Sym("Omega_E", Omega, "deg/h")
     work.section("Apparent drift from the Earth's rotation")
     work.text(*_EARTH)
-    earth = work.step("D_E", W * sin(lam), unit="deg/h") * DEG_H
+    earth = work.step("D_E", dg.earth_rate_drift(W, lam), unit="deg/h") * DEG_H
     work.answer("earth_rate_drift", "D_E", [earth], "rate")
     parts = [("D_E", earth)]
     transport = _transport(given, find, lat, work)
@@ -137,10 +137,11 @@ def _transport(given: Given, find: frozenset[str], lat: float, work: Work) -> fl
         work.step("v_E", V if v_east >= 0 else -V, unit="m/s",
                   note=(f"flying {given.word('direction')}",))
     v = Sym("v_E", v_east, "m/s")
-    rate = work.step("l'", v / (R * cos(lam)), unit="deg/h",
+    rate = work.step("l'", dg.longitude_rate(v, R, lam), unit="deg/h",
                      note=("the rate of change of longitude, east positive",))
-    wander = work.step("D_T", Let(Sym("l'", rate * DEG_H, "deg/h"), v / (R * cos(lam))) *
-                       sin(lam), unit="deg/h") * DEG_H
+    wander = work.step("D_T", dg.transport_wander(Let(Sym("l'", rate * DEG_H, "deg/h"),
+                                                      dg.longitude_rate(v, R, lam)), lam),
+                       unit="deg/h") * DEG_H
     if "earth_radius" not in given:
         kt = v_east / KNOT  # the rule as pilots learn it, with the speed in knots
         V_kt = Sym("V_kt", kt, "")
@@ -166,7 +167,7 @@ def _transport_over_longitude(given: Given, find: frozenset[str], lat: float,
     work.section("Transport wander over the change of longitude")
     work.text(*_OVER_LONGITUDE)
     lam, dl = Sym("lambda", lat, "deg"), Sym("dl", given["longitude_change"], "deg")
-    angle = work.step("A_T", dl * sin(lam), unit="deg") * math.pi / 180
+    angle = work.step("A_T", dg.transport_wander(dl, lam), unit="deg") * math.pi / 180
     work.answer("transport_wander_angle", "A_T", [angle], "angle")
     if "duration" not in given:
         if {"transport_wander", "drift_rate", "drift_angle", "reading_change",
@@ -201,12 +202,12 @@ def _nut(given: Given, find: frozenset[str], W: Sym, work: Work) -> float | None
     work.section("Latitude nut")
     work.text(*_NUT)
     lam_n = Sym("lambda_n", given["latitude_nut"], "deg")
-    nut = work.step("D_N", -W * sin(lam_n), unit="deg/h") * DEG_H
+    nut = work.step("D_N", dg.nut_correction(W, lam_n), unit="deg/h") * DEG_H
     work.answer("nut_correction", "D_N", [nut], "rate")
     H = _momentum(given, work)
     if H is not None:
-        M = work.step("M_n", Sym("H", H, "kg m^2/s") * Sym("Omega_E", W.si, "rad/s") *
-                      sin(lam_n), unit="N*m", note=("the moment of the nut about the horizontal "
+        M = work.step("M_n", dg.nut_moment(Sym("H", H, "kg m^2/s"), Sym("Omega_E", W.si, "rad/s"),
+                                           lam_n), unit="N*m", note=("the moment of the nut about the horizontal "
                                                     "gimbal axis",))
         work.answer("nut_moment", "M_n", [M], "moment")
     elif "nut_moment" in find:

@@ -55,8 +55,10 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              key=f"given.{key}")
     Omega, R = given["shaft_speed"], given["path_radius"]
     n = given["rollers"] if "rollers" in given else 1
-    mill = P.edge_runner(J, r, R, Omega)
-    refuse_overflow(mill.couple, mill.extra_pressure)
+    omega = P.roller_spin(Omega, R, r)
+    C = P.couple(J, omega, Omega)
+    extra = P.extra_pressure(C, R)
+    refuse_overflow(C, extra)
 
     work.section("The mill")
     work.text(*_SETUP)
@@ -66,21 +68,18 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               "precession")
     work.text(*_SPIN)
     Om_, R_, r_ = Sym("Omega", Omega, "rad/s"), Sym("R", R, "m"), Sym("r", r, "m")
-    omega = mill.roller_spin
-    work.step("omega", Om_ * R_ / r_, unit="rad/s", note="the roller's spin")
+    work.step("omega", P.roller_spin(Om_, R_, r_), unit="rad/s", note="the roller's spin")
     work.answer("roller_spin", "omega", [omega], "rate")
 
     work.section("Gyroscopic couple")
     work.text(*_TURNS)
-    C = mill.couple
-    work.step("C", Sym("J", J, "kg m^2") * Sym("omega", omega, "rad/s") * Om_, unit="N*m",
+    work.step("C", P.couple(Sym("J", J, "kg m^2"), Sym("omega", omega, "rad/s"), Om_), unit="N*m",
               ref="Eq. 11.29")
     work.answer("couple", "C", [C], "moment")
 
     work.section("Pressure on the pan")
     work.text(*_MOMENTS)
-    extra = mill.extra_pressure
-    work.step("P", Sym("C", C, "N m") / R_, unit="N",
+    work.step("P", P.extra_pressure(Sym("C", C, "N m"), R_), unit="N",
               note="the couple's share of the pressure on the pan")
     work.answer("extra_pressure", "P", [extra], "force")
     work.check(rel(P0, "=", q(extra, "N"), "=", J0 * Om0 ** 2 / r0, "=",
@@ -90,7 +89,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         N = P.pan_force(W, extra)
         work.step("W", Sym("m", body.m, "kg") * Sym("g", body.g, "m/s^2"), unit="N",
                   note="the roller's weight")
-        work.step("N", Sym("W", W, "N") + Sym("P", extra, "N"), unit="N",
+        work.step("N", P.pan_force(Sym("W", W, "N"), Sym("P", extra, "N")), unit="N",
                   note="the pan's force on each roller, and the roller's on the pan")
         work.answer("pan_force", "N", [N], "force")
         total = n * N

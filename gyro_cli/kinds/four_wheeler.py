@@ -32,7 +32,7 @@ import math
 
 from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import InputError, refuse_overflow
-from ..core.expr import Expr, Let, Sym, asin, cos, sin, sqrt
+from ..core.expr import Expr, Let, Sym, asin, cos, sin
 from ..core.given import Given
 from ..core.prose import names, plus, q, qvec, rel, total, tup
 from ..core.spec import AnswerSpec, Kind, Param
@@ -91,7 +91,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                              unit="kg*m^2")
     sum_w, sum_E = Sym("sum I_w", wheel_total, "kg m^2"), Sym("sum I_E", engine_total, "kg m^2")
     # in the wheels' sense: sum I_w + G sum I_E, or - with the engines against the wheels
-    rotors: Expr = sum_w + Sym("G", G) * sum_E if sense == "same" else sum_w - Sym("G", G) * sum_E
+    rotors = V.rotor_inertia(sum_w, Sym("G", G), sum_E, sense)
     I_eq = work.step("I_eq", rotors, unit="kg*m^2")
     equivalent = Let(Sym("I_eq", I_eq, "kg m^2"), rotors)
 
@@ -128,10 +128,11 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
     v_, r_w, R_ = Sym("v", v, "m/s"), Sym("r_w", rw, "m"), Sym("R", R, "m")
     m_, x_ = Sym("m", m, "kg"), Sym("x", x, "m")
     work.section("Rates")
-    omega_w = work.step("omega_w", v_ / r_w, unit="rad/s")
-    work.step("omega_p", v_ / R_, unit="rad/s")
+    omega_w = work.step("omega_w", V.rolling_rate(v_, r_w), unit="rad/s")
+    work.step("omega_p", V.turn_rate(v_, R_), unit="rad/s")
     work.section("Vector rule")
-    H = work.step("H", equivalent.sym * Sym("omega_w", omega_w, "rad/s"), unit="kg m^2/s",
+    H = work.step("H", V.spin_momentum(equivalent.sym, Sym("omega_w", omega_w, "rad/s")),
+                  unit="kg m^2/s",
                   note=ALONG_LEFT)
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
     work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
@@ -141,16 +142,17 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
               + ("overturns it outward (lifts the inner wheels)" if H >= 0 else
                  "presses the inner wheels down (the engines' reversed momentum dominates)"))
     work.section("Couples and their shares on each wheel")
-    C_g = work.step("C_g", equivalent * v_ ** 2 / (R_ * r_w), unit="N*m", ref="Eq. 11.29")
-    C_c = work.step("C_c", m_ * v_ ** 2 * Sym("h", h, "m") / R_, unit="N*m")
-    P_w = Sym("P_w", work.step("P_w", m_ * Sym("g", g, "m/s^2") / 4, unit="N",
+    C_g = work.step("C_g", V.overturning_couple(equivalent, v_, R_, r_w), unit="N*m",
+                    ref="Eq. 11.29")
+    C_c = work.step("C_c", V.centrifugal_couple(m_, v_, Sym("h", h, "m"), R_), unit="N*m")
+    P_w = Sym("P_w", work.step("P_w", V.weight_share(m_, Sym("g", g, "m/s^2")), unit="N",
                                note="weight, every wheel"), "N")
-    P_g = Sym("P_g", work.step("P_g", Sym("C_g", C_g, "N m") / (2 * x_), unit="N",
+    P_g = Sym("P_g", work.step("P_g", V.couple_share(Sym("C_g", C_g, "N m"), x_), unit="N",
                                note="gyroscopic: + outer, - inner"), "N")
-    P_c = Sym("P_c", work.step("P_c", Sym("C_c", C_c, "N m") / (2 * x_), unit="N",
+    P_c = Sym("P_c", work.step("P_c", V.couple_share(Sym("C_c", C_c, "N m"), x_), unit="N",
                                note="centrifugal: + outer, - inner"), "N")
-    work.step("R_outer", P_w + P_g + P_c, unit="N", note="each outer wheel")
-    work.step("R_inner", P_w - P_g - P_c, unit="N", note="each inner wheel")
+    work.step("R_outer", V.outer_reaction(P_w, P_g, P_c), unit="N", note="each outer wheel")
+    work.step("R_inner", V.inner_reaction(P_w, P_g, P_c), unit="N", note="each inner wheel")
     if inner < 0:
         work.warn("the inner wheels' reaction is negative (", q(inner, "N"), "): at this speed "
                   "the inner wheels leave the road (the vehicle overturns) unless held down")
@@ -170,15 +172,14 @@ def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: flo
            wheels: float, engines: float, G: float, sense: str, I_eq: float) -> None:
     work.section("Limiting speed: the inner wheels' reaction falls to zero")
     work.text(*_AT_THE_LIMIT)
-    v2 = V.limiting_speed_squared(m, g, h, x, rw, wheels, engines, G, sense, R)
-    if v2 is None:
+    if V.rotor_inertia(wheels, G, engines, sense) / rw + m * h <= 0:
         raise InputError(f"the inner wheels never leave the road: the engines' reversed "
                          f"gyroscopic couple, I_eq / r_w = {qty(I_eq / rw, 'kg m')}, outweighs "
                          f"the centrifugal m h = {qty(m * h, 'kg m')}", key="find.limiting_speed")
     m_ = Sym("m", m, "kg")
-    v = work.step("v_lim", sqrt(m_ * Sym("g", g, "m/s^2") * Sym("x", x, "m") * Sym("R", R, "m")
-                                / (2 * (Sym("I_eq", I_eq, "kg m^2") / Sym("r_w", rw, "m")
-                                        + m_ * Sym("h", h, "m")))), unit="m/s")
+    v = work.step("v_lim", V.limiting_speed(m_, Sym("g", g, "m/s^2"), Sym("x", x, "m"),
+                                            Sym("R", R, "m"), Sym("I_eq", I_eq, "kg m^2"),
+                                            Sym("r_w", rw, "m"), Sym("h", h, "m")), unit="m/s")
     work.answer("limiting_speed", "v_lim", [v], "speed")
 
 
@@ -335,7 +336,8 @@ def _rotors(given: Given, work: Work, along: bool) -> tuple[tuple[float, float],
 def _momenta(given: Given, work: Work, v: float, along: bool) -> tuple[float, float]:
     """Steps for H across the car and H_L along it, at speed v (values as _rotors gave)."""
     rw = given["wheel_radius"]
-    w_w = work.step("omega_w", Sym("v", v, "m/s") / Sym("r_w", rw, "m"), unit="rad/s")
+    w_w = work.step("omega_w", V.rolling_rate(Sym("v", v, "m/s"), Sym("r_w", rw, "m")),
+                    unit="rad/s")
     wheels, engines = _wheels(given).value, given["engines"] * given["engine_inertia"]
     S_w, S_E = Sym("sum I_w", wheels, "kg m^2"), Sym("sum I_E", engines, "kg m^2")
     omega_w = Sym("omega_w", w_w, "rad/s")
@@ -345,8 +347,8 @@ def _momenta(given: Given, work: Work, v: float, along: bool) -> tuple[float, fl
     if "engine_speed" in given:
         w_E = Sym("omega_E", given["engine_speed"], "rad/s")
     else:
-        w_E = Sym("omega_E", work.step("omega_E", Sym("G", given["gear_ratio"]) * omega_w,
-                                       unit="rad/s"), "rad/s")
+        w_E = Sym("omega_E", work.step("omega_E", V.geared_rate(Sym("G", given["gear_ratio"]),
+                                                                omega_w), unit="rad/s"), "rad/s")
     if along:
         H = work.step("H", S_w * omega_w, unit="kg m^2/s", note=ALONG_LEFT)
         H_L = work.step("H_L", S_E * w_E, unit="kg m^2/s",
@@ -369,7 +371,7 @@ def _book_steps(given: Given, work: Work, loads: V.CarLoads, v: float, R: float,
     work.section("Forces normal to the track, and the couples")
     N = work.step("N", m_ * (g_ * cos(b_) + v_ ** 2 / R_ * sin(b_)) if bank else m_ * g_,
                   unit="N", note=("the track's forces on all four wheels",))
-    wp = work.step("omega_p", v_ / R_, unit="rad/s") if v else 0.0
+    wp = work.step("omega_p", V.turn_rate(v_, R_), unit="rad/s") if v else 0.0
     is_along = given.word("engine_axis") == "fore_and_aft"
     H_L = 0.0
     if v:
@@ -380,7 +382,7 @@ def _book_steps(given: Given, work: Work, loads: V.CarLoads, v: float, R: float,
     level_rest = not v and not bank
     if not level_rest:
         work.step("C_c", m_ * h_ * (v_ ** 2 / R_ * cos(b_) - g_ * sin(b_)) if bank else
-                  m_ * v_ ** 2 * h_ / R_, unit="N*m",
+                  V.centrifugal_couple(m_, v_, h_, R_), unit="N*m",
                   note=("the friction across the track, h below the centre of mass; + "
                         "outward",))
     if is_along and H_L:

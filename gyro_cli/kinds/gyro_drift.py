@@ -93,7 +93,8 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
     if ways == ["moment"]:
         M = given["moment"]
         work.section(*_DRIFT_TITLE)
-        rate = work.step("Omega_d", Sym("M", M, "N m") / Sym("H", H, "kg m^2/s"), unit="rad/s",
+        rate = work.step("Omega_d", gd.drift_rate(Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")),
+                         unit="rad/s",
                          note=_equals(gd.drift_rate(M, H) / DEG_PER_HOUR, "deg/h"))
         return M, rate
     if ways == ["drift_period"]:
@@ -163,7 +164,7 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
     work.text(*source)
     H_, I_x, I_y = Sym("H", abs(H), "kg m^2/s"), Sym("I_x", Ix, "kg m^2"), Sym("I_y", Iy, "kg m^2")
     w = gd.nutation_frequency(abs(H), Ix, Iy)
-    wn = work.step("w_n", H_ / sqrt(I_x * I_y), unit="rad/s", note=_equals(w / (2 * math.pi), "Hz"))
+    wn = work.step("w_n", gd.nutation_frequency(H_, I_x, I_y), unit="rad/s", note=_equals(w / (2 * math.pi), "Hz"))
     period = work.step("T_n", 2 * PI / Sym("w_n", wn, "rad/s"), unit="s")
     work.text(*_FROM_REST)
     M_, H_ = Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")

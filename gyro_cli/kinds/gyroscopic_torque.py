@@ -30,6 +30,7 @@ from ..core.errors import InputError
 from ..core.expr import PI, Expr, Let, Sym, absolute, sqrt
 from ..core.expr import cos as cos_
 from ..core.expr import sin as sin_
+from ..core.generic import V
 from ..core.given import Given
 from ..core.prose import cross, deriv, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param
@@ -107,7 +108,7 @@ def bearing_forces(mass: float, g: float, moment: float, spacing: float, cg_posi
     return BearingForces(
         weight=(W * b / L, W * a / L),
         inertial=(mass * up * b / L, mass * up * a / L),
-        couple=(moment / L, -moment / L),
+        couple=couple_forces(moment, L),
         side=(mass * toward * b / L, mass * toward * a / L),
         thrust=mass * (g * cos_theta(theta) + along_k))
 
@@ -520,7 +521,7 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
             parts[end].append(Sym(f"F_{end},accel", work.step(
                 f"F_{end},accel", m_ * a_up * arm / L_, unit="N", substitute=False), "N"))
     M_ = Sym("M", M, "N m")
-    for end, couple in (("A", M_ / L_), ("B", -M_ / L_)):
+    for end, couple in zip("AB", couple_forces(M_, L_)):
         parts[end].append(Sym(f"F_{end},couple", work.step(
             f"F_{end},couple", couple, unit="N",
             note="gyroscopic couple" if end == "A" else ""), "N"))
@@ -554,9 +555,9 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
                rel(M0, "=", q(M, "N m")))
 
 
-def couple_forces(moment: float, spacing: float) -> tuple[float, float]:
+def couple_forces(moment: V, spacing: V) -> tuple[V, V]:
     """The gyroscopic couple's share of the bearing (or rail) forces: +M / L at A, -M / L at B,
-    a pair of equal and opposite forces L apart whose moment is M."""
+    a pair of equal and opposite forces L apart whose moment is M (floats or trees)."""
     return moment / spacing, -moment / spacing
 
 
@@ -581,8 +582,9 @@ def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> No
     work.text(*why_pieces, *_COUPLE_SHARE)
     F_A, F_B = couple_forces(M, L)
     M_, L_ = Sym("M", M, "N m"), Sym("L", L, "m")
-    work.step("F_A,couple", M_ / L_, unit="N", note=_ON_THE_ROTOR_UP if M >= 0 else _ON_THE_ROTOR)
-    work.step("F_B,couple", -M_ / L_, unit="N")
+    on_A, on_B = couple_forces(M_, L_)
+    work.step("F_A,couple", on_A, unit="N", note=_ON_THE_ROTOR_UP if M >= 0 else _ON_THE_ROTOR)
+    work.step("F_B,couple", on_B, unit="N")
     work.text(*_PUSHES_BACK)
     work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
     work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])

@@ -203,7 +203,7 @@ def _released(nut, t: dict[str, Expr], work: Work) -> None:
     work.text(*_ERRATA)
     g, a = t["gamma"], t["a"]
     u1_ = names("u1")[0]
-    # as printed; released_u1 computes it without cancellation (a test holds the two together)
+    # as printed; the check below holds it against the root of Eq. 11.19 (no cancellation)
     u1 = work.step("u1", g ** 2 / (2 * a) - sqrt(g ** 4 / (4 * a ** 2) - g ** 2 / a
                                                   * cos(t["theta0"]) + 1), ref="Eq. 11.25")
     assert u1 is not None
@@ -346,22 +346,29 @@ _AMPLITUDE = theta_max - theta_min
 
 
 def _fast_top(nut, t: dict[str, Expr], released: bool, work: Work) -> None:
+    from ..physics.nutation import (
+        fast_mean_precession,
+        fast_nutation_amplitude,
+        fast_nutation_period,
+    )
+
     work.section(*_FAST_TITLE)
     ratio = nut.gamma ** 2 / nut.a
     work.step(_GAMMA2_A, value=ratio, note=_NEEDS)
     work.text(*_FAST)
-    Jw = t["J"] * t["omega_z"]
-    T = (2 * PI * t["I"] / Jw).value  # fast_nutation_period: a test holds the two together
-    work.step("T_fast", 2 * PI * t["I"] / Jw, unit="s",
+    period = fast_nutation_period(t["I"], t["J"], t["omega_z"])
+    T = period.value
+    work.step("T_fast", period, unit="s",
               note=("exact ", q(nut.nutation_period, "s"), ", error ",
                     *_rel(T, nut.nutation_period)))
-    mean = (t["mgl"] / Jw).value  # fast_mean_precession
-    work.step("phidot_fast", t["mgl"] / Jw, unit="rad/s",
+    precession = fast_mean_precession(t["mgl"], t["J"], t["omega_z"])
+    mean = precession.value
+    work.step("phidot_fast", precession, unit="rad/s",
               note=("exact ", q(nut.mean_precession, "rad/s"), ", error ",
                     *_rel(mean, nut.mean_precession)))
     if released:
         work.text(*_FAST_RELEASED)
-        tree = 2 * t["I"] * t["mgl"] * sin(t["theta0"]) / Jw ** 2  # fast_nutation_amplitude
+        tree = fast_nutation_amplitude(t["I"], t["mgl"], t["theta0"], t["J"], t["omega_z"])
         amp, exact = tree.value, nut.theta_max - nut.theta_min
         work.step("dtheta_fast", tree, unit="deg",
                   note=("exact ", rel(_AMPLITUDE, "=", q(exact, "deg")), ", error ",

@@ -466,7 +466,7 @@ _UPRIGHT = ("upright rolling in a straight line ", tup(rel(b0, "=", 0), rel(W0, 
 def _stability(m: float, g: float, r: float, J: float, I: float, states: list[FreeDisk],
                work: Work) -> None:
     """Each steady state's stability: tilt perturbed, linearised (physics/stability.py)."""
-    from ..physics.stability import UNSTABLE, disk_rolling
+    from ..physics.stability import UNSTABLE, disk_critical_axial_rate, disk_rolling
 
     work.section(*_STABILITY_TITLE)
     work.text(*_STABILITY)
@@ -491,8 +491,7 @@ def _stability(m: float, g: float, r: float, J: float, I: float, states: list[Fr
         rates.append(verdict.growth_rate)
     m_, g_, r_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("r", r, "m")
     J_, I_ = Sym("J", J, "kg m^2"), Sym("I_G", I, "kg m^2")
-    # r times disk_critical_axial_rate
-    upright = work.step("v_upright", r_ * sqrt(m_ * g_ * r_ * I_ / (J_ * (J_ + m_ * r_ ** 2))),
+    upright = work.step("v_upright", r_ * disk_critical_axial_rate(m_, g_, r_, I_, J_),
                         unit="m/s", note=_UPRIGHT)
     work.answer("stability", "stability", words, None)
     work.answer("growth_rate", "sigma", rates, "rate")

@@ -22,7 +22,7 @@ import math
 from typing import Any
 
 from ..core.errors import InputError, refuse_overflow
-from ..core.expr import PI, Num, Sym, absolute, cos, sin
+from ..core.expr import Num, Sym, absolute, cos, sin
 from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel
 from ..core.spec import AnswerSpec, Kind, OneOf, Param
@@ -99,7 +99,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         C = work.step("C", J_ * omega * omega_p * sin(Num(0)), unit="N*m", substitute=False)
     else:
         assert rate is not None, "only a roll leaves the rate unknown"
-        C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m",
+        C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
                       else "")
     refuse_overflow(C, Hmag)
@@ -146,7 +146,7 @@ def _steering(given: Given, work: Work) -> V.Vector:
     v, R = given["speed"], given["turn_radius"]
     turn = given.word("turn", "left")
     work.section("Steering: precession about the vertical")
-    work.step("omega_p", Sym("v", v, "m/s") / Sym("R", R, "m"), unit="rad/s")
+    work.step("omega_p", V.turn_rate(Sym("v", v, "m/s"), Sym("R", R, "m")), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
     _steering_line(turn, wp, work)
     return wp
@@ -203,7 +203,7 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
                 rel(None, "=", q(phi, "rad")),))
         if period_key == "frequency":
             f_rate = given["frequency"]  # rad/s: a frequency in Hz is read as 2 pi f
-            T = work.step("T", 2 * PI / Sym("omega_1", f_rate, "rad/s"), unit="s",
+            T = work.step("T", V.circular_frequency(Sym("omega_1", f_rate, "rad/s")), unit="s",
                           note=_FROM_FREQUENCY)
         else:
             T = given["period"]
@@ -212,11 +212,11 @@ def _pitching(given: Given, find: frozenset[str], work: Work) -> V.Vector:
             work.step("omega_1", value=p.frequency, unit="rad/s", note="the circular "
                       "frequency of the pitching")
         else:
-            work.step("omega_1", 2 * PI / Sym("T", T, "s"), unit="rad/s")
+            work.step("omega_1", V.circular_frequency(Sym("T", T, "s")), unit="rad/s")
         work.text(*_PITCH_ANGLE)
         work.text(*_PITCH_RATE)
         phi_, omega_1 = Sym("phi", phi), Sym("omega_1", p.frequency, "rad/s")  # phi in rad
-        rate = work.step("omega_p,max", phi_ * omega_1, unit="rad/s")
+        rate = work.step("omega_p,max", V.max_pitching_rate(phi_, omega_1), unit="rad/s")
         work.text(*_PITCH_ACCELERATION)
         work.step("alpha_max", phi_ * omega_1 ** 2, unit="rad/s^2")
         work.answer("max_precession", "omega_p,max", [p.max_precession], "rate")
@@ -325,7 +325,7 @@ def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin:
         raise InputError("the effect needs axle_top (forward or aft: which way the top of the "
                          "rotor's axle moves) or the roll to counteract", key="given.axle_top")
     work.section(*_COUPLE_TITLE)
-    C = work.step("C", J_ * omega * Sym("omega_p", rate, "rad/s"), unit="N*m", ref="Eq. 11.29",
+    C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m", ref="Eq. 11.29",
                   note="with the axle vertical")
     refuse_overflow(C, Hmag)
     work.answer("couple", "C", [C], "moment")
@@ -346,7 +346,7 @@ def _stabiliser_rate(given: Given, work: Work, J_: Sym, omega: Sym) -> float:
         work.step("omega_p", value=rate, unit="rad/s", note="the frame's rate of precession")
         return rate
     if "rolling_couple" in given:
-        return work.step("omega_p", Sym("M", given["rolling_couple"], "N m") / (J_ * omega),
+        return work.step("omega_p", V.precession_for_couple(Sym("M", given["rolling_couple"], "N m"), J_, omega),
                          unit="rad/s", note="the precession that gives the couple to resist")
     raise InputError("the stabiliser needs its precession (the frame's rate about the "
                      "athwartship axis), or the rolling_couple it must resist",

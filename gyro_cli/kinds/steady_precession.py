@@ -292,8 +292,8 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
         if omega == 0:
             raise InputError(f"the approximation m g l / (J {symbol}) needs a non-zero {rate}",
                              key=f"given.{rate}")
-        precession = work.step("phidot_approx", _driver_tree(D, "m g l") / (
-            J_v * _rate(symbol, omega)), unit="rad/s")  # steady.precession_approx
+        precession = work.step("phidot_approx", steady.precession_approx(
+            _driver_tree(D, "m g l"), J_v, _rate(symbol, omega)), unit="rad/s")
         for name, symbol_ in (("precession_approx", "phidot_approx"), ("precession", "phidot")):
             work.answer(name, symbol_, [precession], "rate", ["approximation"])
         work.answer(rate, symbol, [omega], "rate")
@@ -647,8 +647,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
-    value = work.step("phidot_approx", _driver_tree(D, driver) / (
-        Sym("J", J, "kg m^2") * _rate(symbol, omega)), unit="rad/s")
+    value = work.step("phidot_approx", steady.precession_approx(
+        _driver_tree(D, driver), Sym("J", J, "kg m^2"), _rate(symbol, omega)), unit="rad/s")
     exact = work.answers.get("precession")
     if exact and exact.si_values and exact.labels != ["approximation"]:
         slow = min(exact.si_values, key=abs)

@@ -26,6 +26,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..core import generic
 from ..core.errors import InputError
 from ..core.expr import Chain, Expr, Let, Sym, absolute, cos, sin, sqrt
 from ..core.given import Given
@@ -34,17 +35,18 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num
 from ..physics.algebra import cos_theta
 
-# ---- physics on floats ------------------------------------------------------
+# ---- physics, for floats (the answers) and trees (the steps) ------------------
 
-def swing_rate_sq(m: float, g: float, L: float, I_O: float, theta0: float,
-                  theta: float) -> float:
+def swing_rate_sq(m: generic.V, g: generic.V, L: generic.V, I_O: generic.V, theta0: generic.V,
+                  theta: generic.V) -> generic.V:
     """thetadot^2 from energy: 2 m g L (cos theta0 - cos theta) / I_O."""
-    return 2 * m * g * L * (math.cos(theta0) - math.cos(theta)) / I_O
+    return 2 * m * g * L * (generic.cos(theta0) - generic.cos(theta)) / I_O
 
 
-def swing_acceleration(m: float, g: float, L: float, I_O: float, theta: float) -> float:
+def swing_acceleration(m: generic.V, g: generic.V, L: generic.V, I_O: generic.V,
+                       theta: generic.V) -> generic.V:
     """thetaddot from moments about the shaft: m g L sin(theta) / I_O."""
-    return m * g * L * math.sin(theta) / I_O
+    return m * g * L * generic.sin(theta) / I_O
 
 
 @dataclass(frozen=True)
@@ -163,10 +165,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     # I_O / m in the rotor's own symbols, its value from I_O as swing_forces takes it
     per_m = Let(Sym("I_O/m", I_O / m, "m^2"), kG2_ + L_ ** 2)
     drop = cos(th0) - cos(th)  # cos theta0 - cos theta: the centre's fall is L times it
-    work.step(_TD2, Chain(2 * m_ * g_ * L_ * drop / I_O_, 2 * g_ * L_ * drop / per_m),
+    work.step(_TD2, Chain(swing_rate_sq(m_, g_, L_, I_O_, th0, th), 2 * g_ * L_ * drop / per_m),
               unit="rad^2/s^2", ref="energy")
     work.step("thetadot", value=f.thetadot, unit="rad/s")
-    work.step("thetaddot", Chain(m_ * g_ * L_ * sin(th) / I_O_, g_ * L_ * sin(th) / per_m),
+    work.step("thetaddot", Chain(swing_acceleration(m_, g_, L_, I_O_, th),
+                                 g_ * L_ * sin(th) / per_m),
               unit="rad/s^2", ref="moments about AB")
     work.section(*_COUPLE_TITLE)
     work.text(*_H_O_LINE)

@@ -25,7 +25,7 @@ import math
 
 from ..core.body import vehicle_data, vehicle_params
 from ..core.errors import refuse_overflow
-from ..core.expr import Expr, Sym, atan, cos, sin
+from ..core.expr import Sym, cos, sin
 from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel, tup
 from ..core.spec import AnswerSpec, Kind, Param
@@ -68,8 +68,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     G, sense = given["gear_ratio"], given.word("engine_sense", "same")
     v, R = given["speed"], given["turn_radius"]
     turn = given.word("turn", "left")
-    s = V.two_wheeler(m, g, h, Iw, rw, IE, G, sense, v, R)
-    refuse_overflow(s.gyroscopic_couple, s.centrifugal_couple, m * g * h, s.wheel_rate)
+    w = V.rolling_rate(v, rw)
+    H = V.spin_momentum(V.rotor_inertia(2 * Iw, G, IE, sense), w)
+    Cg, Cc = V.book_couples(H, V.turn_rate(v, R), m, v, h, R)
+    refuse_overflow(Cg, Cc, m * g * h, w)
+    heel = math.atan2(Cg + Cc, m * g * h)  # V.heel's angle, as the answers have always had it
 
     work.section("Conventions (Khurmi, Theory of Machines, ch. 14)")
     work.text(*_AXES)
@@ -79,17 +82,16 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     m_, g_, h_ = Sym("m", m, "kg"), Sym("g", g, "m/s^2"), Sym("h", h, "m")
     G_ = Sym("G", G)
     work.section("Rates")
-    omega_w = Sym("omega_w", work.step("omega_w", v_ / r_w, unit="rad/s",
+    omega_w = Sym("omega_w", work.step("omega_w", V.rolling_rate(v_, r_w), unit="rad/s",
                                        note="road wheels (rolling)"), "rad/s")
-    work.step("omega_E", G_ * omega_w, unit="rad/s", note=f"engine, {sense} sense as the wheels")
-    work.step("omega_p", v_ / R_, unit="rad/s", note="precession about the vertical")
+    work.step("omega_E", V.geared_rate(G_, omega_w), unit="rad/s",
+              note=f"engine, {sense} sense as the wheels")
+    work.step("omega_p", V.turn_rate(v_, R_), unit="rad/s", note="precession about the vertical")
 
     work.section("Vector rule (upright)")
-    H = s.gyroscopic_couple / s.precession if s.precession else 0.0
     # the spinning parts' inertia in the wheels' sense: 2 I_w + G I_E, or - with the engine against
-    wheels, engine = 2 * Sym("I_w", Iw, "kg m^2"), G_ * Sym("I_E", IE, "kg m^2")
-    rotors: Expr = wheels + engine if sense == "same" else wheels - engine
-    work.step("H", rotors * omega_w, unit="kg m^2/s",
+    rotors_ = V.rotor_inertia(2 * Sym("I_w", Iw, "kg m^2"), G_, Sym("I_E", IE, "kg m^2"), sense)
+    work.step("H", V.spin_momentum(rotors_, omega_w), unit="kg m^2/s",
               note=ALONG_LEFT)
     wp = V.steering_precession(v, R, turn)
     Hv = V.scale(H, V.LEFT)
@@ -101,24 +103,23 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                                 if H >= 0 else "outer side: it leans the machine inward"))
 
     work.section("Overturning couples, upright")
-    C_g = work.step("C_g", rotors * v_ ** 2 / (R_ * r_w), unit="N*m", ref="Eq. 11.29")
-    C_c = work.step("C_c", m_ * v_ ** 2 * h_ / R_, unit="N*m", note=_CENTRIFUGAL)
+    C_g = work.step("C_g", V.overturning_couple(rotors_, v_, R_, r_w), unit="N*m",
+                    ref="Eq. 11.29")
+    C_c = work.step("C_c", V.centrifugal_couple(m_, v_, h_, R_), unit="N*m", note=_CENTRIFUGAL)
 
     work.section(*_HEEL_TITLE)
     work.text(*_HEEL_FREE_BODY)
     work.text(*_HEEL_BALANCE)
-    work.step("theta", atan((Sym("C_g", C_g, "N m") + Sym("C_c", C_c, "N m")) / (m_ * g_ * h_)),
+    work.step("theta", V.heel(Sym("C_g", C_g, "N m"), Sym("C_c", C_c, "N m"), m_, g_, h_),
               unit="deg")
-    if s.heel < 0:
+    if heel < 0:
         work.warn("the engine's reversed gyroscopic couple outweighs the centrifugal one: the "
                   "machine leans outward")
-    balance = m * g * h * math.sin(s.heel) - (s.gyroscopic_couple + s.centrifugal_couple) * \
-        math.cos(s.heel)
+    balance = m * g * h * math.sin(heel) - (Cg + Cc) * math.cos(heel)
     work.check(rel(_NET_MOMENT, "=", q(balance, "N m")))
-    work.answer("heel_angle", "theta", [s.heel], "angle")
-    work.answer("gyroscopic_couple", "C_g", [s.gyroscopic_couple], "moment")
-    work.answer("centrifugal_couple", "C_c", [s.centrifugal_couple], "moment")
-
+    work.answer("heel_angle", "theta", [heel], "angle")
+    work.answer("gyroscopic_couple", "C_g", [Cg], "moment")
+    work.answer("centrifugal_couple", "C_c", [Cc], "moment")
 
 KIND = Kind(
     name="two_wheeler",

@@ -629,11 +629,6 @@ class Stability:
     spectra: dict = field(default_factory=dict, compare=False, repr=False)
 
 
-def spectral_abscissa(m: Matrices, v: float, g: float) -> float:
-    """The largest real part of the eigenvalues at speed v."""
-    return max(eigenvalues(m, v, g).real)
-
-
 # A Hurwitz quantity within this fraction of the sum of its terms' magnitudes is
 # rounding's to decide: far above the few ulps of rounding in a_k(v) and H3, far below
 # any margin a root finder's backward error could cross.

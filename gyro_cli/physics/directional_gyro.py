@@ -30,12 +30,15 @@ M = H Omega_E sin(lambda_n), and it turns the axis left (anticlockwise from abov
 Omega_E sin(lambda_n), cancelling the Earth's drift at that latitude.
 
 Signs here: a drift is positive to the right (clockwise seen from above); latitudes
-north positive; an eastward speed positive. Plain floats only.
+north positive; an eastward speed positive. The formulas are written once for floats and
+formula trees (core/generic.py): the kind calls them with its symbols to write its steps.
 """
 
 from __future__ import annotations
 
 import math
+
+from ..core.generic import V, cos, sin
 
 #: the Earth's sidereal rate, rad/s (360 deg in 23 h 56 min 4.1 s: 15.041 deg/h)
 EARTH_RATE = 7.292115e-5
@@ -43,29 +46,30 @@ EARTH_RATE = 7.292115e-5
 NAUTICAL_EARTH_RADIUS = 1852.0 * 60 * 180 / math.pi
 
 
-def earth_rate_drift(earth_rate: float, latitude: float) -> float:
+def earth_rate_drift(earth_rate: V, latitude: V) -> V:
     """Apparent drift from the Earth's rotation, Omega_E sin(lambda), right positive."""
-    return earth_rate * math.sin(latitude)
+    return earth_rate * sin(latitude)
 
 
-def longitude_rate(east_speed: float, latitude: float, radius: float) -> float:
+def longitude_rate(east_speed: V, radius: V, latitude: V) -> V:
     """The craft's rate of change of longitude, v_E / (R cos(lambda)), east positive."""
-    return east_speed / (radius * math.cos(latitude))
+    return east_speed / (radius * cos(latitude))
 
 
-def transport_wander(east_speed: float, latitude: float, radius: float) -> float:
-    """Drift from moving east, l' sin(lambda) = v_E tan(lambda) / R, right positive."""
-    return longitude_rate(east_speed, latitude, radius) * math.sin(latitude)
+def transport_wander(longitude_change: V, latitude: V) -> V:
+    """Drift from moving east, l' sin(lambda) = v_E tan(lambda) / R, right positive: a rate
+    from the rate of change of longitude l', an angle from a whole change of longitude."""
+    return longitude_change * sin(latitude)
 
 
-def nut_correction(earth_rate: float, nut_latitude: float) -> float:
+def nut_correction(earth_rate: V, nut_latitude: V) -> V:
     """The latitude nut's precession, -Omega_E sin(lambda_n) (left for a northern setting)."""
-    return -earth_rate * math.sin(nut_latitude)
+    return -earth_rate * sin(nut_latitude)
 
 
-def nut_moment(H: float, earth_rate: float, nut_latitude: float) -> float:
+def nut_moment(H: V, earth_rate: V, nut_latitude: V) -> V:
     """The moment the nut must apply, H Omega_E sin(lambda_n) (Eq. 11.29: rate = M / H)."""
-    return H * earth_rate * math.sin(nut_latitude)
+    return H * earth_rate * sin(nut_latitude)
 
 
 def heading_after(initial: float, heading_change: float, drift_angle: float) -> float:

@@ -38,29 +38,3 @@ G = 6.67430e-11                  # m^3 kg^-1 s^-2, CODATA 2018
 ARCSEC = math.pi / (180 * 3600)  # rad
 JULIAN_YEAR = 365.25 * 86400.0   # s
 
-
-def tidal_from_period(period: float, mass_ratio: float) -> float:
-    """G M_b / a^3 from the orbital period and q = M_b / M: n^2 q / (1 + q) (Kepler III)."""
-    n = 2 * math.pi / period
-    return n * n * mass_ratio / (1 + mass_ratio)
-
-
-def node_factor(inclination: float) -> float:
-    """(1 - (3/2) sin^2 i): the torque of an orbit at i, averaged over its turning node."""
-    return 1 - 1.5 * math.sin(inclination) ** 2
-
-
-def eccentricity_factor(e: float) -> float:
-    """(1 - e^2)^(-3/2): <a^3 / r^3> over a Kepler orbit (time average)."""
-    return (1 - e * e) ** -1.5
-
-
-def precession_rate(tidal: float, e: float, H: float, obliquity: float, omega: float,
-                    inclination: float = 0.0) -> float:
-    """Rate at which the spin axis turns about the orbit normal, rad/s (retrograde positive).
-
-    (3/2) (G M_b / a^3) (1 - e^2)^(-3/2) H cos(eps) (1 - (3/2) sin^2 i) / omega.
-    """
-    return (1.5 * tidal * eccentricity_factor(e) * H * math.cos(obliquity)
-            * node_factor(inclination) / omega)
-

@@ -1,5 +1,5 @@
 """The edge-runner (muller) mill: a heavy roller on a horizontal axle hinged to a vertical
-shaft, rolling round a pan (plain floats, SI).
+shaft, rolling round a pan (SI).
 
 Axes at the hinge O, on the shaft's axis: e_r along the axle toward the roller, e_t
 horizontal in the sense of the shaft's turning, z up. The shaft turns at Omega about z;
@@ -25,30 +25,31 @@ The couple always adds to the pressure on the pan, whichever way the shaft turns
 (Omega^2); that is why the mill is built so. (R.S. Khurmi and J.K. Gupta, *Theory of
 Machines*, ch. 14, and the Physics LibreTexts millstone: "the normal force is larger
 when the runner stone is rolling around".)
+
+The formulas are written once for floats and formula trees (core/generic.py):
+the kind calls them with its symbols to write its steps, and with floats for its answers.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from ..core.generic import V
 
 
-@dataclass(frozen=True)
-class EdgeRunner:
-    """One roller's motion and forces, SI."""
-
-    roller_spin: float     # omega = Omega R / r
-    couple: float          # C = J omega Omega
-    extra_pressure: float  # C / R = J Omega^2 / r, the couple's share of the pan's force
+def roller_spin(shaft_speed: V, path_radius: V, roller_radius: V) -> V:
+    """omega = Omega R / r: rolling without slipping."""
+    return shaft_speed * path_radius / roller_radius
 
 
-def edge_runner(J: float, roller_radius: float, path_radius: float,
-                shaft_speed: float) -> EdgeRunner:
-    """The roller's spin, the gyroscopic couple and the extra pressure on the pan."""
-    omega = abs(shaft_speed) * path_radius / roller_radius
-    couple = J * omega * abs(shaft_speed)
-    return EdgeRunner(omega, couple, couple / path_radius)
+def couple(J: V, roller_spin: V, shaft_speed: V) -> V:
+    """C = J omega Omega (Eq. 11.29): the gyroscopic couple on one roller."""
+    return J * roller_spin * shaft_speed
 
 
-def pan_force(weight: float, extra_pressure: float) -> float:
+def extra_pressure(couple: V, path_radius: V) -> V:
+    """C / R = J Omega^2 / r: the couple's share of the pan's force."""
+    return couple / path_radius
+
+
+def pan_force(weight: V, extra_pressure: V) -> V:
     """N = m g + C / R: the pan's upward force on one roller (and the roller's on the pan)."""
     return weight + extra_pressure

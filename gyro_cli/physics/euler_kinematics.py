@@ -182,19 +182,6 @@ def body_accel_zxz(theta: float, psi: float, rates: Sequence[float],
             a1 * ct - p1 * p2 * st + a3)
 
 
-def fixed_accel_zxz(phi: float, theta: float, rates: Sequence[float],
-                    accels: Sequence[float]) -> Vector:
-    """(alpha_X, alpha_Y, alpha_Z): the fixed components of omega differentiated,
-    omega_X = thetadot c(ph) + psidot s(th) s(ph), omega_Y = thetadot s(ph) - psidot s(th) c(ph),
-    omega_Z = phidot + psidot c(th)."""
-    p1, p2, p3 = rates
-    a1, a2, a3 = accels
-    st, ct, sf, cf = sin_exact(theta), cos_exact(theta), sin_exact(phi), cos_exact(phi)
-    return (a2 * cf - p2 * p1 * sf + a3 * st * sf + p3 * p2 * ct * sf + p3 * p1 * st * cf,
-            a2 * sf + p2 * p1 * cf - a3 * st * cf - p3 * p2 * ct * cf + p3 * p1 * st * sf,
-            a1 + a3 * ct - p3 * p2 * st)
-
-
 def body_accel_zyx(pitch: float, roll: float, rates: Sequence[float],
                    accels: Sequence[float]) -> Vector:
     """(pdot, qdot, rdot): the yaw-pitch-roll body rates differentiated in time."""

@@ -25,26 +25,20 @@ M I_y / H^2 (about x, the moment's axis) and M sqrt(I_x I_y) / H^2 (about y);
 for equal inertias both are M I / H^2, the cone of the fast top. A linear
 (small-angle) analysis: the deflections must stay small.
 
-Plain floats only.
+The formulas are written once for floats and formula trees (core/generic.py): the kind
+calls them with its symbols to write its steps.
 """
 
 from __future__ import annotations
 
-import math
+from ..core.generic import V, sqrt
 
 
-def spin_momentum(J: float, spin: float) -> float:
-    """H = J psidot (the rotor's spin angular momentum; gimbal rates are negligible)."""
-    return J * spin
-
-
-def drift_rate(moment: float, H: float) -> float:
+def drift_rate(moment: V, H: V) -> V:
     """Precession (drift) of the spin axis under a moment at right angles: M / H."""
     return moment / H
 
 
-def nutation_frequency(H: float, Ix: float, Iy: float) -> float:
+def nutation_frequency(H: V, Ix: V, Iy: V) -> V:
     """w_n = H / sqrt(I_x I_y), rad/s."""
-    return H / math.sqrt(Ix * Iy)
-
-
+    return H / sqrt(Ix * Iy)

@@ -28,6 +28,8 @@ import math
 from dataclasses import dataclass
 from typing import TypedDict
 
+from ..core.generic import V, pi_like, sin
+
 STEADY_AMPLITUDE = 1e-9    # rad: a theta range below this is no nutation ("steady")
 CUSP_TOLERANCE = 1e-10     # |phidot| at a limit, relative to the larger one: a cusp
 
@@ -115,23 +117,7 @@ def phidot(nut: Nutation, u):
     return float(rate) if rate.ndim == 0 else rate
 
 
-def psidot(nut: Nutation, u, top: Top):
-    """Spin psidot = P2 / J - phidot cos(theta) (Eq. 11.16)."""
-    return nut.P2 / top.J - phidot(nut, u) * u
-
-
 # ---- the cubic, relative to the start -------------------------------------------
-
-def shifted_cubic(top: Top, start: Start) -> tuple[float, float, float, float]:
-    """Coefficients (c0, c1, c2, c3) of f(u0 + d) = c0 + c1 d + c2 d^2 + c3 d^3.
-
-    With A = thetadot0^2 + phidot0^2 sin^2(theta0), B = beta - gamma u0 = phidot0 sin^2(theta0)
-    and 1 - u^2 = sin^2(theta0) - 2 u0 d - d^2, Eq. 11.19 expands to
-    c0 = sin^2(theta0) thetadot0^2, c1 = sin^2(theta0) (2 phidot0 gamma - a - 2 u0 phidot0^2)
-    - 2 u0 thetadot0^2, c2 = 2 a u0 - A - gamma^2, c3 = a.
-    """
-    return _shifted_cubic(constants(top, start), start)
-
 
 def _shifted_cubic(k: dict[str, float], start: Start) -> tuple[float, float, float, float]:
     """shifted_cubic from the constants of the motion already worked out (``constants``)."""
@@ -186,12 +172,6 @@ def _quadratic_roots(a: float, b: float, c: float) -> tuple[float, float]:
         return 0.0, 0.0
     low, high = sorted((q / a, c / q))
     return low, high
-
-
-def d_roots(top: Top, start: Start) -> tuple[float, float, float]:
-    """Roots d1 <= d2 <= d3 of f(u0 + d): u_i = u0 + d_i (Eq. 11.19), ascending."""
-    return _d_roots(_shifted_cubic(constants(top, start), start),
-                    *_one_minus_plus(start.theta0))
 
 
 def _d_roots(c: tuple[float, float, float, float], one_minus: float,
@@ -363,37 +343,24 @@ def _sleeping(top: Top, start: Start, k: dict, roots, common: _Common) -> Nutati
 
 # ---- the fast top (gamma^2 >> a) ------------------------------------------------
 
-def fast_nutation_frequency(top: Top, omega_z: float) -> float:
-    """J omega_z / I = gamma: sqrt(a (u3 - u1)) with u3 ~ gamma^2 / a for a fast top."""
-    return top.J * omega_z / top.I
+def fast_nutation_period(I: V, J: V, omega_z: V) -> V:
+    """2 pi I / (J omega_z): 2 pi over gamma = J omega_z / I, which is sqrt(a (u3 - u1))
+    with u3 ~ gamma^2 / a for a fast top."""
+    return 2 * pi_like(I, J, omega_z) * I / (J * omega_z)
 
 
-def fast_nutation_period(top: Top, omega_z: float) -> float:
-    """2 pi I / (J omega_z)."""
-    return 2 * math.pi / fast_nutation_frequency(top, omega_z)
-
-
-def fast_mean_precession(top: Top, omega_z: float) -> float:
+def fast_mean_precession(mgl: V, J: V, omega_z: V) -> V:
     """m g l / (J omega_z) = a / (2 gamma): the slow root of Eq. 11.20 for gamma^2 >> a."""
-    return top.mgl / (top.J * omega_z)
+    return mgl / (J * omega_z)
 
 
-def fast_nutation_amplitude(top: Top, omega_z: float, theta0: float) -> float:
+def fast_nutation_amplitude(I: V, mgl: V, theta0: V, J: V, omega_z: V) -> V:
     """theta_max - theta_min ~ 2 I m g l sin(theta0) / (J omega_z)^2, released from rest.
 
     From Eq. 11.23, a (1 - u^2) = gamma^2 (u2 - u) at u = u1; for gamma^2 >> a,
     u2 - u1 ~ a sin^2(theta0) / gamma^2 and dtheta ~ du / sin(theta0).
     """
-    return 2 * top.I * top.mgl * math.sin(theta0) / (top.J * omega_z) ** 2
-
-
-def released_u1(top: Top, theta0: float, omega_z: float) -> float:
-    """u1 = gamma^2/(2a) - sqrt(gamma^4/(4a^2) - gamma^2/a cos(theta0) + 1) (Eq. 11.25), as
-    printed but for the root: written without cancellation, u1 = c / q of the quadratic
-    a u^2 - gamma^2 u + gamma^2 u2 - a = 0 (Eq. 11.24 corrected)."""
-    a = 2 * top.mgl / top.I
-    g2 = (top.J * omega_z / top.I) ** 2
-    return min(_quadratic_roots(a, -g2, g2 * math.cos(theta0) - a))
+    return 2 * I * mgl * sin(theta0) / (J * omega_z) ** 2
 
 
 # ---- helpers ---------------------------------------------------------------------

@@ -79,6 +79,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from ..core.generic import V, sqrt
+
 STABLE, UNSTABLE, NEUTRAL = "stable", "unstable", "neutral"
 NEUTRAL_TOLERANCE = 1e-12   # |k| below this fraction of its largest term counts as zero
 
@@ -143,6 +145,6 @@ def disk_rolling(m: float, g: float, r: float, A: float, C: float, tilt: float,
     return verdict(sum(terms) / denominator, max(map(abs, terms)) / denominator)
 
 
-def disk_critical_axial_rate(m: float, g: float, r: float, A: float, C: float) -> float:
+def disk_critical_axial_rate(m: V, g: V, r: V, A: V, C: V) -> V:
     """Upright straight rolling is stable above |omega_z| = sqrt(m g r A / (C (C + m r^2)))."""
-    return math.sqrt(m * g * r * A / (C * (C + m * r * r)))
+    return sqrt(m * g * r * A / (C * (C + m * r ** 2)))

@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import math
 
+from ..core.generic import V
 
-def precession_approx(D: float, J: float, axial: float) -> float:
+
+def precession_approx(D: V, J: V, axial: V) -> V:
     """The gyroscopic approximation Omega = D / (J omega) = m g l / (J omega).
 
     Eq. 11.13 with thetaddot = 0 divided by J omega_z phidot reads

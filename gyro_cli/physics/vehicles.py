@@ -1,4 +1,4 @@
-"""Gyroscopic effects on vehicles: ships, aeroplanes, two- and four-wheelers (plain floats).
+"""Gyroscopic effects on vehicles: ships, aeroplanes, two- and four-wheelers.
 
 Vehicle axes, fixed in the vehicle: x forward (toward the bow or nose), y to the
 left (port), z up. A rotor of axial inertia J spinning at omega about its axis
@@ -31,6 +31,10 @@ the vehicle outward; the gyroscopic one does too when the net spin angular
 momentum has the wheels' own sense (going forward it points to the vehicle's
 left, whichever way the vehicle turns), and presses the inner wheels down when
 engines running against the wheels dominate.
+
+The scalar formulas the kinds print as steps (rates, couples, the heel, the pitching's
+frequency) are written once for floats and formula trees (core/generic.py): the kinds call
+them with their symbols to write the steps and with floats for their answers.
 """
 
 from __future__ import annotations
@@ -38,6 +42,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+
+from ..core.generic import V as F  # a float, or a formula tree
+from ..core.generic import atan, pi_like, sqrt
 
 Vector = tuple[float, float, float]
 
@@ -56,6 +63,71 @@ def scale(k: float, a: Vector) -> Vector:
 
 def norm(a: Vector) -> float:
     return math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+
+
+# ---- formulas written once, for floats and trees ---------------------------------
+
+def turn_rate(speed: F, turn_radius: F) -> F:
+    """omega_p = v / R: the precession of a vehicle on a circle (or a loop)."""
+    return speed / turn_radius
+
+
+def rolling_rate(speed: F, wheel_radius: F) -> F:
+    """omega_w = v / r_w: a road wheel rolling without slipping."""
+    return speed / wheel_radius
+
+
+def geared_rate(gear_ratio: F, wheel_rate: F) -> F:
+    """omega_E = G omega_w: an engine geared to the wheels."""
+    return gear_ratio * wheel_rate
+
+
+def rotor_inertia(wheels: F, gear_ratio: F, engines: F, engine_sense: str) -> F:
+    """sum I_w +- G sum I_E: the spinning parts' inertia referred to the wheels' rate, in the
+    wheels' sense (minus with the engines turning against the wheels)."""
+    geared = gear_ratio * engines
+    return wheels + geared if engine_sense == "same" else wheels - geared
+
+
+def spin_momentum(rotor_inertia: F, wheel_rate: F) -> F:
+    """H = (sum I_w +- G sum I_E) omega_w: positive in the wheels' own sense."""
+    return rotor_inertia * wheel_rate
+
+
+def gyroscopic_couple(J: F, spin: F, precession: F) -> F:
+    """C = J omega omega_p (Eq. 11.29): a rotor's couple, its spin across the precession."""
+    return J * spin * precession
+
+
+def precession_for_couple(couple: F, J: F, spin: F) -> F:
+    """omega_p = M / (J omega): the precession at which a rotor gives the couple M."""
+    return couple / (J * spin)
+
+
+def overturning_couple(rotor_inertia: F, speed: F, turn_radius: F, wheel_radius: F) -> F:
+    """C_g = (sum I_w +- G sum I_E) v^2 / (R r_w): the geared rotors' gyroscopic couple."""
+    return rotor_inertia * speed ** 2 / (turn_radius * wheel_radius)
+
+
+def centrifugal_couple(mass: F, speed: F, cg_height: F, turn_radius: F) -> F:
+    """C_c = m v^2 h / R: the centrifugal force's couple about the ground line."""
+    return mass * speed ** 2 * cg_height / turn_radius
+
+
+def heel(gyroscopic: F, centrifugal: F, mass: F, g: F, cg_height: F) -> F:
+    """theta = atan((C_g + C_c) / (m g h)): the heel that balances both couples
+    (m g h sin(theta) = (C_g + C_c) cos(theta))."""
+    return atan((gyroscopic + centrifugal) / (mass * g * cg_height))
+
+
+def circular_frequency(period: F) -> F:
+    """omega_1 = 2 pi / T (and T = 2 pi / omega_1): simple harmonic pitching."""
+    return 2 * pi_like(period) / period
+
+
+def max_pitching_rate(amplitude: F, frequency: F) -> F:
+    """omega_p,max = phi omega_1: the pitching's largest rate, at the mean position."""
+    return amplitude * frequency
 
 
 # ---- the rotor's spin vector ----------------------------------------------------
@@ -93,7 +165,7 @@ def spin_vector(J: float, spin: float, direction: float) -> Vector:
 
 def steering_precession(speed: float, radius: float, turn: str) -> Vector:
     """Turning on a circle: omega_p = v / R about +z for a left turn, -z for a right one."""
-    rate = speed / radius
+    rate = turn_rate(speed, radius)
     return scale(rate if turn == "left" else -rate, UP)
 
 
@@ -235,44 +307,8 @@ class Pitching:
 
 
 def pitching(amplitude: float, period: float) -> Pitching:
-    w1 = 2 * math.pi / period
-    return Pitching(w1, amplitude * w1, amplitude * w1 * w1)
-
-
-# ---- two-wheeler ----------------------------------------------------------------
-
-def spin_momentum(wheel_inertia_total: float, engine_inertia_total: float, gear_ratio: float,
-                  engine_sense: str, wheel_rate: float) -> float:
-    """(sum I_w +- G sum I_E) omega_w: positive in the wheels' own sense."""
-    sign = 1.0 if engine_sense == "same" else -1.0
-    return (wheel_inertia_total + sign * gear_ratio * engine_inertia_total) * wheel_rate
-
-
-@dataclass(frozen=True)
-class TwoWheeler:
-    """Upright couples and the heel that balances them, SI."""
-
-    wheel_rate: float         # omega_w = v / r_w
-    precession: float         # omega_p = v / R
-    gyroscopic_couple: float  # C_g upright = H omega_p
-    centrifugal_couple: float  # C_c upright = m v^2 h / R
-    heel: float               # theta from the vertical, toward the centre of the turn
-
-
-def two_wheeler(mass: float, g: float, cg_height: float, wheel_inertia: float,
-                wheel_radius: float, engine_inertia: float, gear_ratio: float,
-                engine_sense: str, speed: float, turn_radius: float) -> TwoWheeler:
-    """Heeled by theta, both couples scale by cos(theta) and the weight gives m g h sin(theta):
-
-    m g h sin(theta) = (C_g + C_c) cos(theta)  ->  tan(theta) = (C_g + C_c) / (m g h).
-    """
-    w = speed / wheel_radius
-    wp = speed / turn_radius
-    H = spin_momentum(2 * wheel_inertia, engine_inertia, gear_ratio, engine_sense, w)
-    Cg = H * wp
-    Cc = mass * speed * speed * cg_height / turn_radius
-    heel = math.atan2(Cg + Cc, mass * g * cg_height)
-    return TwoWheeler(w, wp, Cg, Cc, heel)
+    w1 = circular_frequency(period)
+    return Pitching(w1, max_pitching_rate(amplitude, w1), amplitude * w1 * w1)
 
 
 # ---- four-wheeler ---------------------------------------------------------------
@@ -291,11 +327,11 @@ class FourWheeler:
 
     @property
     def outer(self) -> float:
-        return self.weight_share + self.gyroscopic_share + self.centrifugal_share
+        return outer_reaction(self.weight_share, self.gyroscopic_share, self.centrifugal_share)
 
     @property
     def inner(self) -> float:
-        return self.weight_share - self.gyroscopic_share - self.centrifugal_share
+        return inner_reaction(self.weight_share, self.gyroscopic_share, self.centrifugal_share)
 
 
 def four_wheeler(mass: float, g: float, cg_height: float, track: float, wheel_radius: float,
@@ -303,28 +339,55 @@ def four_wheeler(mass: float, g: float, cg_height: float, track: float, wheel_ra
                  engine_sense: str, speed: float, turn_radius: float) -> FourWheeler:
     """Each couple is taken by the outer and inner wheel pairs, x apart: P = C / x per
     pair, C / (2 x) per wheel; the weight is shared equally by the four wheels."""
-    w = speed / wheel_radius
-    wp = speed / turn_radius
-    H = spin_momentum(wheel_inertia_total, engine_inertia_total, gear_ratio, engine_sense, w)
-    Cg = H * wp
-    Cc = mass * speed * speed * cg_height / turn_radius
-    return FourWheeler(w, wp, Cg, Cc, mass * g / 4, Cg / (2 * track), Cc / (2 * track))
+    w = rolling_rate(speed, wheel_radius)
+    wp = turn_rate(speed, turn_radius)
+    H = spin_momentum(rotor_inertia(wheel_inertia_total, gear_ratio, engine_inertia_total,
+                                    engine_sense), w)
+    Cg, Cc = book_couples(H, wp, mass, speed, cg_height, turn_radius)
+    return FourWheeler(w, wp, Cg, Cc, weight_share(mass, g), couple_share(Cg, track),
+                       couple_share(Cc, track))
 
 
-def limiting_speed_squared(mass: float, g: float, cg_height: float, track: float,
-                           wheel_radius: float, wheel_inertia_total: float,
-                           engine_inertia_total: float, gear_ratio: float, engine_sense: str,
-                           turn_radius: float) -> float | None:
-    """v^2 at which the inner wheels' reaction falls to zero; None if it never does.
+def book_couples(H: float, precession: float, mass: float, speed: float, cg_height: float,
+                 turn_radius: float) -> tuple[float, float]:
+    """(C_g, C_c) for the answers, worked as the books do: H omega_p, and m v v h / R.
+
+    The steps print the same couples as (sum I_w +- G sum I_E) v^2 / (R r_w) and
+    m v^2 h / R (overturning_couple, centrifugal_couple); the two orders of working can
+    differ in the last bit, and the answers keep the books' order."""
+    return H * precession, mass * speed * speed * cg_height / turn_radius
+
+
+def weight_share(mass: F, g: F) -> F:
+    """m g / 4: the weight, shared equally by the four wheels."""
+    return mass * g / 4
+
+
+def couple_share(couple: F, track: F) -> F:
+    """C / (2 x): a couple about the fore-and-aft axis taken by the outer and inner wheel
+    pairs, x apart; + on each outer wheel, - on each inner one."""
+    return couple / (2 * track)
+
+
+def outer_reaction(weight: F, gyroscopic: F, centrifugal: F) -> F:
+    """An outer wheel's reaction: its weight share plus both couples' shares."""
+    return weight + gyroscopic + centrifugal
+
+
+def inner_reaction(weight: F, gyroscopic: F, centrifugal: F) -> F:
+    """An inner wheel's reaction: its weight share less both couples' shares."""
+    return weight - gyroscopic - centrifugal
+
+
+def limiting_speed(mass: F, g: F, track: F, turn_radius: F, rotor_inertia: F,
+                   wheel_radius: F, cg_height: F) -> F:
+    """The speed at which the inner wheels' reaction falls to zero (the rotors' and the
+    centre of mass's overturning, I_eq / r_w + m h, must be > 0):
 
     m g / 4 = (v^2 / (2 x R)) (I_eq / r_w + m h),  I_eq = sum I_w +- G sum I_E.
     """
-    sign = 1.0 if engine_sense == "same" else -1.0
-    per_v2 = ((wheel_inertia_total + sign * gear_ratio * engine_inertia_total) / wheel_radius
-              + mass * cg_height)
-    if per_v2 <= 0:
-        return None
-    return mass * g * track * turn_radius / (2 * per_v2)
+    return sqrt(mass * g * track * turn_radius
+                / (2 * (rotor_inertia / wheel_radius + mass * cg_height)))
 
 
 # ---- a four-wheeler as the books draw it: bank, wheelbase, engine along the car ---
