@@ -305,6 +305,89 @@ class StagedSet:
         return [Path(name) for name, _ in self.staged]
 
 
+class StagedFolder:
+    """`StagedSet` for a folder that does not exist yet (a roster's set): its files are
+    written into a hidden folder beside it, ``.NAME.XXXXXXXX.tmp``, and `place` syncs the
+    disks once and renames that folder into place. One rename for the whole set instead
+    of a temporary file, a rename and a chmod per file (20,000 of them cost as much as
+    drawing the set), and no file of the set can exist before. Leaving the ``with``
+    block without `place` removes the hidden folder and the parents made for it."""
+
+    def __init__(self, folder: str) -> None:
+        import secrets
+
+        self.folder = os.path.normpath(folder)
+        self.prefix = os.path.join(folder, "")  # what every path given to `add` starts with
+        parent = os.path.dirname(self.folder) or "."
+        self.made = _make_folders(parent, []) if parent != "." else []
+        name = os.path.basename(self.folder)
+        for _ in range(100):
+            self.stage = os.path.join(parent, f".{name}.{secrets.token_hex(4)}.tmp")
+            try:
+                os.mkdir(self.stage)  # the mode a folder made by _make_folders has
+                break
+            except FileExistsError:
+                continue
+            except OSError as err:
+                _remove_empty(self.made)
+                raise InputError(f"cannot create the directory: {err.strerror}",
+                                 file=folder) from None
+        else:
+            _remove_empty(self.made)
+            raise InputError("cannot create a hidden folder beside it", file=folder)
+        self.folders = {""}  # those made in the hidden folder, by their relative name
+        self.done = False
+
+    def __enter__(self) -> StagedFolder:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        if not self.done:
+            import shutil
+
+            shutil.rmtree(self.stage, ignore_errors=True)
+            _remove_empty(self.made)
+
+    def add(self, path: str, text: str | bytes | Iterable[str | bytes]) -> None:
+        """Write one file of the set (``path``: the folder's name joined to the file's)."""
+        if not path.startswith(self.prefix):
+            raise ValueError(f"{path} is not in {self.prefix}")
+        relative = path[len(self.prefix):]
+        below = os.path.dirname(relative)
+        try:
+            if below not in self.folders:
+                os.makedirs(os.path.join(self.stage, below), exist_ok=True)
+                self.folders.add(below)
+            fd = os.open(os.path.join(self.stage, relative),
+                         os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0),
+                         0o666)  # the mode StagedSet gives its files: umask applies
+            try:
+                for piece in [text] if isinstance(text, (str, bytes)) else text:
+                    _write_all(fd, _utf8(piece) if isinstance(piece, str) else piece)
+            finally:
+                os.close(fd)
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                             "written", file=path) from None
+
+    def place(self) -> None:
+        """Sync the disks once and rename the hidden folder into place."""
+        os.sync()
+        try:
+            os.rename(self.stage, self.folder)  # fails if the folder was filled meanwhile
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                             "written", file=self.folder) from None
+        self.done = True
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """os.write until every byte is written (a write may take fewer)."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view):]
+
+
 def refuse_special(path: str | os.PathLike) -> None:
     """InputError unless ``path`` is a regular file (or its link) or does not exist."""
     try:

@@ -1,0 +1,75 @@
+"""Issue 37, item 3: `gyro vary --roster` of a class in seconds. A new folder is written
+whole through one hidden folder renamed into place (core/files.py: StagedFolder), with the
+same bytes and modes as the set written file by file into an existing folder, and nothing
+left behind when the set fails."""
+
+from __future__ import annotations
+
+import os
+import stat
+from pathlib import Path
+
+import pytest
+
+from gyro_cli.core.errors import InputError
+from gyro_cli.core.files import StagedFolder
+
+ROOT = Path(__file__).resolve().parent.parent
+TOP = ROOT / "problems" / "11_3.yaml"
+FIVE = ROOT / "problems" / "11_5.yaml"
+
+
+def _roster(path: Path, students: int) -> Path:
+    path.write_text("student,section\n" + "".join(f"s{k:03d},{k % 3}\n"
+                                                  for k in range(students)))
+    return path
+
+
+def _tree(folder: Path) -> dict[str, tuple[bytes, int]]:
+    """Every file below ``folder``: its bytes and permission bits (folders' bits too)."""
+    out = {}
+    for path in sorted(folder.rglob("*")):
+        mode = stat.S_IMODE(path.stat().st_mode)
+        out[str(path.relative_to(folder))] = (path.read_bytes() if path.is_file() else b"",
+                                              mode)
+    return out
+
+
+def test_item03_new_folder_same_bytes_and_modes_as_file_by_file(run, tmp_path):
+    roster = _roster(tmp_path / "r.csv", 12)
+    fresh = tmp_path / "deep" / "new"  # its parent made too
+    old = tmp_path / "old"
+    old.mkdir()  # an existing folder: the set is staged and placed file by file
+    for out in (fresh, old):
+        result = run("vary", TOP, FIVE, "--roster", roster, "-o", out)
+        assert result.exit_code == 0, result.output
+    a, b = _tree(fresh), _tree(old)
+    key_a, key_b = a.pop("key.json"), b.pop("key.json")
+    assert a == b and len(a) == 2 + 24 + 1
+    assert key_a == key_b
+    assert stat.S_IMODE(fresh.stat().st_mode) == stat.S_IMODE(old.stat().st_mode)
+    assert sorted(os.listdir(fresh.parent)) == ["new"]  # no hidden folder left
+    result = run("vary", TOP, "--roster", roster, "-o", fresh)  # exists now: refused
+    assert result.exit_code == 2 and "exists; not overwritten" in result.output
+
+
+def test_item03_failed_new_folder_leaves_nothing(tmp_path):
+    target = tmp_path / "made" / "hw"
+    with pytest.raises(RuntimeError):
+        with StagedFolder(str(target)) as staged:
+            staged.add(str(target / "a" / "x.yaml"), "one")
+            staged.add(str(target / "key.json"), iter([b"{", "}"]))
+            raise RuntimeError("a draw failed")
+    assert os.listdir(tmp_path) == []  # the hidden folder and the parent made are gone
+
+
+def test_item03_new_folder_taken_meanwhile_is_not_replaced(tmp_path):
+    target = tmp_path / "hw"
+    with pytest.raises(InputError, match="nothing of the set was written"):
+        with StagedFolder(str(target)) as staged:
+            staged.add(str(target / "x.yaml"), "mine")
+            target.mkdir()
+            (target / "theirs.txt").write_text("theirs")
+            staged.place()
+    assert sorted(os.listdir(tmp_path)) == ["hw"]
+    assert os.listdir(target) == ["theirs.txt"]
