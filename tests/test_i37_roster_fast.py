@@ -73,3 +73,81 @@ def test_item03_new_folder_taken_meanwhile_is_not_replaced(tmp_path):
             staged.place()
     assert sorted(os.listdir(tmp_path)) == ["hw"]
     assert os.listdir(target) == ["theirs.txt"]
+
+
+def _answers(result) -> dict:  # type: ignore[no-untyped-def]
+    """A result's answers, a symbol written as a tree compared by its text."""
+    from gyro_cli.core.prose import text
+
+    out = {}
+    for name, answer in result.answers.items():
+        fields = dict(answer.__dict__)
+        tree = fields.pop("symbol_expr")
+        out[name] = (fields, None if tree is None else text(tree))
+    return out
+
+
+def _varied(path: Path):  # type: ignore[no-untyped-def]
+    """The problem of ``path`` with a `vary` block scaling each number it gives that
+    `gyro vary` can draw (0.5 to 1.5 times: wide, so some draws have no real solution)."""
+    from gyro_cli.commands.authoring import parse_vary
+    from gyro_cli.solving.problem import load
+
+    problem = load(str(path))
+    if problem.vary is not None:
+        return problem
+    keys = {}
+    for key in problem.data["given"]:
+        problem.vary = {key: [0.5, 1.5]}
+        try:
+            parse_vary(problem)
+        except Exception:
+            continue
+        keys[key] = [0.5, 1.5]
+    problem.vary = keys or None
+    return problem
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "problems").glob("*.yaml")),
+                         ids=lambda p: p.stem)
+def test_item03_a_variant_built_from_the_first_is_built_whole(path):
+    # A variant's problem is the first variant's with its given values, id, title and
+    # source read again (authoring._variant_problem): every draw, taken or refused, gives
+    # the data, `expected` and the solver's answers of the variant built whole.
+    import copy
+    import random
+
+    from gyro_cli.commands import authoring
+    from gyro_cli.commands.authoring import draw_variant, parse_vary
+
+    problem = _varied(path)
+    if not problem.vary:
+        pytest.skip("no number given that gyro vary can draw")
+    ranges = parse_vary(problem)
+    base = copy.deepcopy(problem.data)
+    base.pop("vary", None)
+    keyed = [n for n in problem.expected if problem.kind.answer(n) is not None] \
+        or list(problem.find)
+    fast, whole = random.Random(7), random.Random(7)
+    authoring._TEMPLATE.clear()
+    taken = 0
+    for n in range(12):
+        made: list = []
+        again: list = []
+        data = draw_variant(problem, base, ranges, fast, keyed, f"v{n}", f"t{n}", "s",
+                            solved=made)
+        saved = list(authoring._TEMPLATE)
+        authoring._TEMPLATE.clear()  # built whole
+        expect = draw_variant(problem, base, ranges, whole, keyed, f"v{n}", f"t{n}", "s",
+                              solved=again)
+        authoring._TEMPLATE[:] = saved
+        assert data == expect
+        if data is not None:
+            taken += 1
+            assert _answers(made[0]) == _answers(again[0])
+            assert made[0].problem.given.values == again[0].problem.given.values
+            assert made[0].problem.quantities == again[0].problem.quantities
+            for name in ("id", "title", "source", "find", "us_customary", "units", "ask",
+                         "steps", "statement", "notes", "expected", "tolerance"):
+                assert getattr(made[0].problem, name) == getattr(again[0].problem, name)
+    assert taken or problem.data.get("vary") is None

@@ -25,6 +25,7 @@ import copy
 import csv
 import hashlib
 import io
+import json
 import os
 import random
 from collections.abc import Iterator
@@ -219,11 +220,9 @@ class KeyWriter:
         self.text.write((json.dumps(head, allow_nan=False)[:-1] + ', "variants": {').encode())
 
     def add(self, variant_id: str, entry: dict[str, Any]) -> None:
-        import json
-
-        piece = json.dumps({variant_id: entry}, allow_nan=False)[1:-1]
+        piece = _KEY_TEXT.encode({variant_id: entry})[1:-1]
         self.text.write(((", " if self.index else "") + piece).encode())
-        canon = _canonical({variant_id: entry})[1:-1].encode()
+        canon = _KEY_CANONICAL.encode({variant_id: entry})[1:-1].encode()
         self.index.append((variant_id, self.canonical.tell(), len(canon)))
         self.canonical.write(canon)
 
@@ -249,6 +248,13 @@ class KeyWriter:
                 break
             yield data
         yield tail
+
+
+# The encoders of ``json.dumps(..., allow_nan=False)`` and of `_canonical`, made once
+# (json.dumps makes one a call when given any option).
+_KEY_TEXT = json.JSONEncoder(allow_nan=False)
+_KEY_CANONICAL = json.JSONEncoder(sort_keys=True, separators=(",", ":"), ensure_ascii=True,
+                                  allow_nan=False)
 
 
 def _canonical(data: dict[str, Any]) -> str:
