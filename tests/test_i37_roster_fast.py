@@ -151,3 +151,17 @@ def test_item03_a_variant_built_from_the_first_is_built_whole(path):
                          "steps", "statement", "notes", "expected", "tolerance"):
                 assert getattr(made[0].problem, name) == getattr(again[0].problem, name)
     assert taken or problem.data.get("vary") is None
+
+
+def test_item03_new_folder_write_error_is_one_line_and_leaves_nothing(tmp_path):
+    # The files are written by a thread beside the drawing: its error (here a file where
+    # a folder of the set goes) is raised in the command, and nothing is left.
+    target = tmp_path / "hw"
+    with pytest.raises(InputError, match="cannot write") as err:
+        with StagedFolder(str(target)) as staged:
+            Path(staged.stage, "a").write_text("in the way")
+            for n in range(200):
+                staged.add(str(target / "a" / f"{n}.yaml"), "x")
+            staged.place()
+    assert str(target / "a") in str(err.value.file)
+    assert os.listdir(tmp_path) == []
