@@ -527,7 +527,6 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     computed `expected` answers, or None when the draw has no real solution. The
     solver's result is appended to ``solved`` when that is given."""
     from ..checking.tolerance import tolerance_for
-    from ..solving.problem import _build
     from ..solving.solve import solve
 
     answer_names = [a.name for a in problem.kind.answers]
@@ -547,7 +546,7 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     data["find"] = find
     data.pop("expected", None)
     try:
-        result = solve(_build(problem.file, data, {}))
+        result = solve(_variant_problem(problem.file, base, keyed, data))
     except InputError:
         return None
     expected = {}
@@ -567,6 +566,33 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     order = ["id", "title", "kind", "source", "statement", "notes", "given", "find",
              "expected", "tolerance", "ask", "steps"]
     return {k: data[k] for k in order if k in data}
+
+
+# The last problem built whole for a variant: (its base data, the keys keyed, the problem).
+_TEMPLATE: list[Any] = []
+
+
+def _variant_problem(path: str, base: dict[str, Any], keyed: list[str],
+                     data: dict[str, Any]) -> Any:
+    """``_build(path, data, {})`` of a variant drawn from ``base``. A variant's data differ
+    from another's of the same base only in its given values, id, title and source, so
+    after the first is built whole (every key checked), only those are read again: the
+    rest (kind, find, statement, notes, ask, steps) would be checked to the same end."""
+    from ..solving.problem import _build, _id, _text, parse_given
+
+    if _TEMPLATE and _TEMPLATE[0] is base and _TEMPLATE[1] == keyed \
+            and _TEMPLATE[2].file == path:
+        problem = copy.copy(_TEMPLATE[2])
+        problem.given, problem.quantities, problem.us_customary = parse_given(
+            problem.kind, data["given"])
+        problem.id = _id(data["id"])
+        problem.title = _text(data.get("title", ""), "title")
+        problem.source = _text(data.get("source", ""), "source")
+        problem.data = data
+        return problem
+    problem = _build(path, data, {})
+    _TEMPLATE[:] = [base, list(keyed), problem]
+    return problem
 
 
 def variant_yaml(data: dict[str, Any], shared: dict[str, tuple[Any, str]] | None = None) -> str:
@@ -641,14 +667,25 @@ def _simple_yaml(key: str, value: Any) -> str | None:
             return None
         out = [f"{key}:\n"]
         for name, item in value.items():
-            if not isinstance(name, str) or not _simple_word(name):
-                return None
-            text = _simple_entry("  ", name, item)
+            text = _ENTRIES.get((name, item)) if isinstance(item, str) else None
             if text is None:
-                return None
+                if not isinstance(name, str) or not _simple_word(name):
+                    return None
+                text = _simple_entry("  ", name, item)
+                if text is None:
+                    return None
+                if isinstance(item, str):
+                    if len(_ENTRIES) >= 4096:  # the drawn values: each met once
+                        _ENTRIES.clear()
+                    _ENTRIES[(name, item)] = text
             out.append(text)
         return "".join(out)
     return _simple_entry("", key, value)
+
+
+#: a mapping's entry ``  name: text`` by (name, text), as `_simple_entry` writes it (the
+#: given values a problem's variants share are written once)
+_ENTRIES: dict[tuple[Any, str], str] = {}
 
 
 def _simple_entry(indent: str, key: str, value: Any) -> str | None:

@@ -25,6 +25,7 @@ import copy
 import csv
 import hashlib
 import io
+import json
 import os
 import random
 from collections.abc import Iterator
@@ -219,11 +220,9 @@ class KeyWriter:
         self.text.write((json.dumps(head, allow_nan=False)[:-1] + ', "variants": {').encode())
 
     def add(self, variant_id: str, entry: dict[str, Any]) -> None:
-        import json
-
-        piece = json.dumps({variant_id: entry}, allow_nan=False)[1:-1]
+        piece = _KEY_TEXT.encode({variant_id: entry})[1:-1]
         self.text.write(((", " if self.index else "") + piece).encode())
-        canon = _canonical({variant_id: entry})[1:-1].encode()
+        canon = _KEY_CANONICAL.encode({variant_id: entry})[1:-1].encode()
         self.index.append((variant_id, self.canonical.tell(), len(canon)))
         self.canonical.write(canon)
 
@@ -249,6 +248,13 @@ class KeyWriter:
                 break
             yield data
         yield tail
+
+
+# The encoders of ``json.dumps(..., allow_nan=False)`` and of `_canonical`, made once
+# (json.dumps makes one a call when given any option).
+_KEY_TEXT = json.JSONEncoder(allow_nan=False)
+_KEY_CANONICAL = json.JSONEncoder(sort_keys=True, separators=(",", ":"), ensure_ascii=True,
+                                  allow_nan=False)
 
 
 def _canonical(data: dict[str, Any]) -> str:
@@ -284,22 +290,30 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     """Write the set and ``out_dir/assignment.csv``; nothing over an existing file without
     ``force`` (checked before anything is drawn). Each variant is written (to a temporary
     file) as it is drawn, so 10,000 students need not be held in memory; the set is placed
-    whole or not at all (core/files.py: StagedSet), and never over one of its inputs."""
-    from ..core.files import StagedSet, refuse_outputs_over_inputs
+    whole or not at all (core/files.py: StagedSet, or StagedFolder for a new ``out_dir``),
+    and never over one of its inputs."""
+    from ..core.files import StagedFolder, StagedSet, refuse_outputs_over_inputs
 
     made = roster_set(paths, roster, seed)
     if os.path.exists(out_dir) and not os.path.isdir(out_dir):
         raise InputError("exists and is not a directory", file=out_dir)
     targets = [os.path.join(out_dir, name) for name in made.files()]
     targets += [os.path.join(out_dir, "key.json"), os.path.join(out_dir, "assignment.csv")]
-    refuse_outputs_over_inputs(targets, [*paths, roster], option="a variant", yaml_output=True)
-    if not force:
-        clash = [t for t in targets if os.path.lexists(t)]
-        if clash:
-            raise InputError(f"exists; not overwritten (use --force to replace it; {len(clash)} "
-                             "file(s) of the set already there)", file=clash[0])
+    staged: StagedFolder | StagedSet
+    if out_dir.strip() and not os.path.lexists(out_dir):
+        staged = StagedFolder(out_dir)  # a new folder: no file of the set, nor an input, in it
+    else:
+        refuse_outputs_over_inputs(targets, [*paths, roster], option="a variant",
+                                   yaml_output=True)
+        if not force:
+            clash = [t for t in targets if os.path.lexists(t)]
+            if clash:
+                raise InputError(f"exists; not overwritten (use --force to replace it; "
+                                 f"{len(clash)} file(s) of the set already there)",
+                                 file=clash[0])
+        staged = StagedSet(force, out_dir, targets, sync_each=False)
     key = KeyWriter(_key_head(made))
-    with StagedSet(force, out_dir, targets, sync_each=False) as staged:
+    with staged:
         for name, text, variant_id, entry in made.draw():
             staged.add(os.path.join(out_dir, name), text)
             key.add(variant_id, entry)

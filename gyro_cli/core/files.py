@@ -305,6 +305,139 @@ class StagedSet:
         return [Path(name) for name, _ in self.staged]
 
 
+class StagedFolder:
+    """`StagedSet` for a folder that does not exist yet (a roster's set): its files are
+    written into a hidden folder beside it, ``.NAME.XXXXXXXX.tmp``, and `place` syncs the
+    disks once and renames that folder into place. One rename for the whole set instead
+    of a temporary file, a rename and a chmod per file (20,000 of them cost as much as
+    drawing the set), and no file of the set can exist before. A thread creates and
+    writes the files (a few at a time, handed over as they are made) while the set is
+    drawn: the system's time creating 20,000 files is spent beside the drawing, on the
+    other core. Leaving the ``with`` block without `place` removes the hidden folder and
+    the parents made for it."""
+
+    QUEUED = 64  # files handed over and not written yet, at most
+
+    def __init__(self, folder: str) -> None:
+        import queue
+        import secrets
+        import threading
+
+        self.folder = os.path.normpath(folder)
+        self.prefix = os.path.join(folder, "")  # what every path given to `add` starts with
+        parent = os.path.dirname(self.folder) or "."
+        self.made = _make_folders(parent, []) if parent != "." else []
+        name = os.path.basename(self.folder)
+        for _ in range(100):
+            self.stage = os.path.join(parent, f".{name}.{secrets.token_hex(4)}.tmp")
+            try:
+                os.mkdir(self.stage)  # the mode a folder made by _make_folders has
+                break
+            except FileExistsError:
+                continue
+            except OSError as err:
+                _remove_empty(self.made)
+                raise InputError(f"cannot create the directory: {err.strerror}",
+                                 file=folder) from None
+        else:
+            _remove_empty(self.made)
+            raise InputError("cannot create a hidden folder beside it", file=folder)
+        self.folders = {""}  # those made in the hidden folder, by their relative name
+        self.done = False
+        self.failed: Exception | None = None  # the writer's error, raised by the next call
+        self.dropped = False  # the set failed: what is still handed over is not written
+        self.queue: queue.Queue[tuple[str, str, bytes] | None] = queue.Queue(self.QUEUED)
+        self.writer = threading.Thread(target=self._write_queued, daemon=True)
+        self.writer.start()
+
+    def __enter__(self) -> StagedFolder:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._stop(drop=not self.done)
+        if not self.done:
+            import shutil
+
+            shutil.rmtree(self.stage, ignore_errors=True)
+            _remove_empty(self.made)
+
+    def add(self, path: str, text: str | bytes | Iterable[str | bytes]) -> None:
+        """Write one file of the set (``path``: the folder's name joined to the file's):
+        a text is handed to the writer; pieces (a file too large to hold) are written
+        here, once the writer has written the files before."""
+        if self.failed is not None:
+            raise self.failed
+        if not path.startswith(self.prefix):
+            raise ValueError(f"{path} is not in {self.prefix}")
+        relative = path[len(self.prefix):]
+        if isinstance(text, (str, bytes)):
+            self.queue.put((path, relative, _utf8(text) if isinstance(text, str) else text))
+            return
+        self.queue.join()
+        if self.failed is not None:
+            raise self.failed
+        self._write(path, relative, text)
+
+    def _write_queued(self) -> None:
+        while True:
+            item = self.queue.get()
+            try:
+                if item is None:
+                    return
+                if self.failed is None and not self.dropped:
+                    self._write(*item)
+            except Exception as err:  # raised in the drawing thread by its next call
+                self.failed = err
+            finally:
+                self.queue.task_done()
+
+    def _write(self, path: str, relative: str, text: bytes | Iterable[str | bytes]) -> None:
+        below = os.path.dirname(relative)
+        try:
+            if below not in self.folders:
+                os.makedirs(os.path.join(self.stage, below), exist_ok=True)
+                self.folders.add(below)
+            fd = os.open(os.path.join(self.stage, relative),
+                         os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0),
+                         0o666)  # the mode StagedSet gives its files: umask applies
+            try:
+                for piece in [text] if isinstance(text, bytes) else text:
+                    _write_all(fd, _utf8(piece) if isinstance(piece, str) else piece)
+            finally:
+                os.close(fd)
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                             "written", file=path) from None
+
+    def _stop(self, drop: bool = False) -> None:
+        """Let the writer write what it was handed (``drop``: nothing more) and end."""
+        self.dropped = self.dropped or drop
+        if self.writer.is_alive():
+            self.queue.put(None)
+            self.writer.join()
+
+    def place(self) -> None:
+        """Wait for the writer, sync the disks once and rename the hidden folder into
+        place."""
+        self._stop()
+        if self.failed is not None:
+            raise self.failed
+        os.sync()
+        try:
+            os.rename(self.stage, self.folder)  # fails if the folder was filled meanwhile
+        except OSError as err:
+            raise InputError(f"cannot write: {err.strerror}; nothing of the set was "
+                             "written", file=self.folder) from None
+        self.done = True
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """os.write until every byte is written (a write may take fewer)."""
+    view = memoryview(data)
+    while view:
+        view = view[os.write(fd, view):]
+
+
 def refuse_special(path: str | os.PathLike) -> None:
     """InputError unless ``path`` is a regular file (or its link) or does not exist."""
     try:
