@@ -8,6 +8,10 @@ so pint builds its registry; it is set against python + pint + yaml + click
 than before the unit table). Median of 10 runs each, interleaved.
 
     .venv/bin/python benchmarks/bench_solve.py [--runs 10] [FILE]
+
+``--instructions``: the warm solve and the floor counted in instructions by valgrind
+(callgrind), one run each: the same on a machine shared with other work, where wall
+times are not.
 """
 
 from __future__ import annotations
@@ -33,10 +37,27 @@ def wall(cmd: list[str], env: dict | None = None) -> float:
     return time.perf_counter() - start
 
 
+def instructions(cmd: list[str], env: dict | None = None) -> int:
+    """The instructions ``cmd`` runs, counted by valgrind's callgrind."""
+    done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                           *cmd], capture_output=True, text=True, check=True, cwd=ROOT,
+                          env=env)
+    return int(done.stderr.rsplit("Collected : ", 1)[1].split()[0])
+
+
+def count(solve_cmd: list[str], floor_cmd: list[str], warm_env: dict) -> None:
+    floor, warm = instructions(floor_cmd), instructions(solve_cmd, warm_env)
+    print(f"python -c '{FLOOR}':                       {floor / 1e6:7.1f} M instructions")
+    print(f"gyro solve (warm unit cache):                 {warm / 1e6:7.1f} M instructions   "
+          f"ratio {warm / floor:.3f}x")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=10)
     parser.add_argument("file", nargs="?", default="problems/11_3.yaml")
+    parser.add_argument("--instructions", action="store_true",
+                        help="count instructions (valgrind) instead of timing")
     args = parser.parse_args()
     gyro = str(Path(sys.executable).with_name("gyro"))
     solve_cmd = [gyro, "solve", args.file] if os.path.exists(gyro) else \
@@ -49,6 +70,11 @@ def main() -> None:
     # bytecode, as an installed package has it (yaml and click's came with pip install)
     subprocess.run([sys.executable, "-m", "compileall", "-q", str(ROOT / "gyro_cli")], check=True)
     wall(solve_cmd, warm_env), wall(solve_cmd, cold_env)  # fill the caches
+    if args.instructions:
+        count(solve_cmd, floor_cmd, warm_env)
+        shutil.rmtree(warm_dir, ignore_errors=True)
+        shutil.rmtree(cold_dir, ignore_errors=True)
+        return
     wall(floor_cmd), wall(pint_cmd)
     times: dict[str, list[float]] = {"floor": [], "warm": [], "pint": [], "cold": []}
     for _ in range(args.runs):

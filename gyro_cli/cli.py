@@ -21,8 +21,40 @@ from .core.errors import InputError, terminal_text
 from .render.formats import HELP as FORMAT_HELP
 from .render.formats import NAMES as FORMATS
 
+# click's own words for --help and --version, written here: click translates them with
+# gettext, whose first call imports locale (about 1 ms of every run)
+HELP_TEXT = "Show this message and exit."
+VERSION_TEXT = "Show the version and exit."
 
-class _Guarded(click.Group):
+
+def _show_help(ctx: click.Context, _param: click.Parameter, value: bool) -> None:
+    if value and not ctx.resilient_parsing:
+        click.echo(ctx.get_help(), color=ctx.color)
+        ctx.exit()
+
+
+def _show_version(ctx: click.Context, _param: click.Parameter, value: bool) -> None:
+    if value and not ctx.resilient_parsing:
+        click.echo(f"gyro, version {__version__}", color=ctx.color)
+        ctx.exit()
+
+
+class _Command(click.Command):
+    """A command whose --help option is made without gettext (click's is the same option)."""
+
+    _help: click.Option | None = None
+
+    def get_help_option(self, ctx: click.Context) -> click.Option | None:
+        names = self.get_help_option_names(ctx)
+        if not names or not self.add_help_option:
+            return None
+        if self._help is None:  # one object: click orders the eager callbacks by identity
+            self._help = click.Option(names, is_flag=True, is_eager=True, expose_value=False,
+                                      callback=_show_help, help=HELP_TEXT)
+        return self._help
+
+
+class _Guarded(_Command, click.Group):
     """The last line of defence: an exception no command caught is one line and exit 3.
 
     Around every command (``--help`` and ``--version`` too): a failing standard
@@ -72,6 +104,8 @@ class _Guarded(click.Group):
         except Exception as err:
             internal(getattr(err, "gyro_file", None), err)
             sys.exit(INTERNAL)
+
+    command_class = _Command
 
     # Commands whose module is imported only when they run: `gyro solve` does not pay for
     # their options. Each with the first paragraph of its help, which `gyro --help` lists
@@ -145,7 +179,8 @@ def _reader_left() -> None:
 
 
 @click.group(cls=_Guarded, context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(__version__, "--version", prog_name="gyro")
+@click.option("--version", is_flag=True, is_eager=True, expose_value=False,
+              callback=_show_version, help=VERSION_TEXT)
 def main() -> None:
     """Worked answers to textbook problems of gyroscopic motion (Chapter 11).
 

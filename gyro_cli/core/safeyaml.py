@@ -352,7 +352,7 @@ def _nests_itself() -> bool:
 _COMPOSE_FIRST: bool | None = None
 # An anchor is "&" and at least one character that is neither a space nor a flow
 # indicator (YAML 1.2, ns-anchor-name): "Ruina & Schwab" holds none.
-_ANCHOR = re.compile(r"&[^\s,\[\]{}]")
+_ANCHOR = r"&[^\s,\[\]{}]"  # compiled on first use (re keeps it)
 
 
 def _check_tree(root: Any) -> None:
@@ -398,7 +398,7 @@ def load(text: str) -> tuple[Any, Any]:
     global _COMPOSE_FIRST
     if _COMPOSE_FIRST is None:
         _COMPOSE_FIRST = _nests_itself()
-    compose_first = _COMPOSE_FIRST and not _ANCHOR.search(text)
+    compose_first = _COMPOSE_FIRST and not re.search(_ANCHOR, text)
     if not compose_first:
         prescan(text)
     import yaml

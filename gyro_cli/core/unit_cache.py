@@ -21,9 +21,12 @@ to fail on: see ``units.registry``.
 from __future__ import annotations
 
 import atexit
-import json
 import math
 import os
+
+TYPE_CHECKING = False  # typing is not imported here: its names are only for mypy
+if TYPE_CHECKING:
+    import ast
 
 FORMAT = 2
 MAX_BYTES = 1 << 20      # a cache file larger than this is not read
@@ -110,32 +113,18 @@ def stamp() -> list | None:
     global _stamp
     if _stamp is not None:
         return _stamp
+    import binascii  # CRC-32 and the size: enough to tell an edit; loaded with yaml already
     import importlib.util
-    import zlib  # CRC-32 and Adler-32: enough to tell an edit, and 10x cheaper to load
 
-    # than hashlib on the start-up path
     from .. import __version__
 
-    class Digest:
-        def __init__(self, data: bytes) -> None:
-            self.crc, self.adler, self.size = 0, 1, 0
-            self.update(data)
-
-        def update(self, data: bytes) -> None:
-            self.crc = zlib.crc32(data, self.crc)
-            self.adler = zlib.adler32(data, self.adler)
-            self.size += len(data)
-
-        def hexdigest(self) -> str:
-            return f"{self.crc:08x}{self.adler:08x}{self.size:x}"
-
-    digest = Digest(f"{FORMAT}\0{__version__}".encode())
+    parts = [f"{FORMAT}\0{__version__}".encode()]
     try:
         here = os.path.dirname(os.path.abspath(__file__))
         for name in sorted(os.listdir(here)):
             if name.startswith("unit") and name.endswith(".py"):
                 with open(os.path.join(here, name), "rb") as handle:
-                    digest.update(b"\0" + name.encode() + b"\0" + handle.read())
+                    parts.append(b"\0" + name.encode() + b"\0" + handle.read())
         spec = importlib.util.find_spec("pint")
         origin = spec.origin if spec else None
         if not origin:
@@ -143,14 +132,15 @@ def stamp() -> list | None:
         package = os.path.dirname(origin)
         for name in ("__init__.py", "default_en.txt"):
             info = os.stat(os.path.join(package, name))
-            digest.update(f"\0{package}/{name}\0{info.st_size}\0{info.st_mtime_ns}".encode())
+            parts.append(f"\0{package}/{name}\0{info.st_size}\0{info.st_mtime_ns}".encode())
         site = os.path.dirname(package)
         versions = sorted(n for n in os.listdir(site)
                           if n.startswith("pint-") and n.endswith((".dist-info", ".egg-info")))
-        digest.update(("\0" + "\0".join(versions)).encode())
+        parts.append(("\0" + "\0".join(versions)).encode())
     except (OSError, ImportError, ValueError):
         return None
-    _stamp = [FORMAT, digest.hexdigest()]
+    data = b"".join(parts)
+    _stamp = [FORMAT, f"{binascii.crc32(data):08x}{len(data):x}"]
     return _stamp
 
 
@@ -176,8 +166,8 @@ def _load() -> dict[str, dict]:
 
     try:
         # Only a regular file, opened without blocking: a FIFO put there is ignored.
-        data = json.loads(read_bytes(where, MAX_BYTES, "a unit cache"))
-    except (InputError, OSError, ValueError, RecursionError):
+        data = from_json(read_bytes(where, MAX_BYTES, "a unit cache").decode("utf-8"))
+    except (InputError, OSError, ValueError, SyntaxError, RecursionError, MemoryError):
         return tables
     if not isinstance(data, dict) or data.get("stamp") != made:
         return tables
@@ -187,6 +177,43 @@ def _load() -> dict[str, dict]:
             table.update((k, v) for k, v in list(stored.items())[:MAX_ENTRIES]
                          if _valid(name, k, v))
     return tables
+
+
+_JSON_NAMES = {"true": True, "false": False, "null": None}
+
+
+def from_json(text: str) -> object:
+    """The JSON ``text`` (as ``json.dump`` writes it) as Python values, read by Python's
+    own parser: ``ast`` is loaded with click already, ``json`` is not (its import is
+    about 1.5 ms of a warm run). ValueError or SyntaxError when it is not such a text."""
+    import ast
+    import warnings
+
+    with warnings.catch_warnings():  # a foreign file's "\/" is no warning of gyro's
+        warnings.simplefilter("ignore")
+        return _json_value(ast.parse(text, mode="eval").body, 0)
+
+
+def _json_value(node: ast.expr | None, depth: int) -> object:
+    import ast
+
+    if depth > 4:  # the table is three deep
+        raise ValueError("nested too deep for a unit table")
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        value = _json_value(node.operand, depth + 1)
+        if type(value) in (int, float):
+            return -value  # type: ignore[operator]
+    elif isinstance(node, ast.Constant) and isinstance(node.value, (str, int, float)):
+        return node.value
+    elif isinstance(node, ast.Name) and node.id in _JSON_NAMES:
+        return _JSON_NAMES[node.id]
+    elif isinstance(node, ast.List):
+        return [_json_value(item, depth + 1) for item in node.elts]
+    elif isinstance(node, ast.Dict):
+        keys = [key.value for key in node.keys if isinstance(key, ast.Constant)]
+        if all(isinstance(key, str) for key in keys) and len(keys) == len(node.keys):
+            return {key: _json_value(value, depth + 1) for key, value in zip(keys, node.values)}
+    raise ValueError("not a JSON unit table")
 
 
 def _tables_now() -> dict[str, dict]:
@@ -221,6 +248,7 @@ def save() -> None:
     where, made = path(), stamp()
     if not _dirty or _tables is None or where is None or made is None:
         return
+    import json
     import tempfile
 
     tmp = None

@@ -281,7 +281,7 @@ def _statement(value: Any, given: dict) -> str:
     # every brace of the text is in a {name} and each name is a key of `given`, it has
     # nothing to refuse, so the text is not filled here (only where it is shown); anything
     # else ({{, }}, a lone brace, another name) is filled, to be refused in its words.
-    names = _PLACEHOLDER_NAMES.findall(value) if "{" in value else []
+    names = re.findall(_PLACEHOLDER_NAMES, value) if "{" in value else []
     if value.count("{") + value.count("}") == 2 * len(names):
         for name in names:
             if name.strip() not in given:  # the test fill_statement makes of a name
@@ -299,7 +299,7 @@ def _statement(value: Any, given: dict) -> str:
 
 # statement.PLACEHOLDER's {name}: where these account for every brace, the text holds no
 # {{, }} or lone brace, and PLACEHOLDER reads the same names from it.
-_PLACEHOLDER_NAMES = re.compile(r"\{([^{}]*)\}")
+_PLACEHOLDER_NAMES = r"\{([^{}]*)\}"  # compiled on first use (re keeps it)
 
 
 def _unit_system(value: Any) -> str:

@@ -71,7 +71,7 @@ def solve(problem: Problem, overrides: dict[str, float] | None = None) -> Result
     try:
         return _solve(problem, overrides)
     except InputError as err:
-        if _NOT_FINITE.search(re.sub(r"'[^'\n]*'", "''", err.message)):
+        if re.search(_NOT_FINITE, re.sub(r"'[^'\n]*'", "''", err.message)):
             # A kind's check whose message would print inf or nan (m l^2 = inf kg m^2):
             # the data are past what double precision holds, and that is the message.
             err.message = ("these data overflow double precision (a value past 1e308 in "
@@ -208,7 +208,8 @@ def _scaled_data_refused(problem: Problem) -> None:
                              "it the body is worked per kilogram or per unit radius, and "
                              f"rates from {param.name} would be wrong)",
                              key="given.radius" if body.per_size else "given.mass")
-_NOT_FINITE = re.compile(r"(?<![\w.])[-+]?(?:nan|inf)(?![\w])", re.I)
+# compiled on first use (re keeps it): not at every start
+_NOT_FINITE = r"(?i)(?<![\w.])[-+]?(?:nan|inf)(?![\w])"
 
 
 def _all_finite(solution: Solution, trees: bool = True) -> None:
@@ -264,7 +265,7 @@ def _not_finite(text: str) -> bool:
         lower = text.lower()
         if "inf" not in lower and "nan" not in lower:
             return False
-    return _NOT_FINITE.search(text) is not None
+    return re.search(_NOT_FINITE, text) is not None
 
 
 def _symbols_finite(expr, finite: set[int] | None = None) -> bool:  # type: ignore[no-untyped-def]
