@@ -115,7 +115,8 @@ _MATH_AS_TEXT = """() => { for (const m of Array.from(document.querySelectorAll(
 
 
 # One text of each style keeps its words; the others are blanked (their elements stay,
-# so every background and box a kept text sits on is as it was). The number kept.
+# so every background and box a kept text sits on is as it was), and the kept are marked
+# (axe looks only at them). The number kept.
 _ONE_TEXT_A_STYLE = """() => { const seen = new Set(), blank = [];
   const mark = e => e.tagName + Array.from(e.classList).sort().map(c => '.' + c).join('')
     + (e.getAttribute('style') ? '{' + e.getAttribute('style') + '}' : '');
@@ -126,18 +127,21 @@ _ONE_TEXT_A_STYLE = """() => { const seen = new Set(), blank = [];
     const s = getComputedStyle(e);
     let key = [s.color, s.fontSize, s.fontWeight, s.opacity].join(' ');
     for (let x = e; x; x = x.parentElement) key = mark(x) + '>' + key;
-    if (seen.has(key)) blank.push(...own); else seen.add(key);
+    if (seen.has(key)) blank.push(...own);
+    else { seen.add(key); e.setAttribute('data-contrast', ''); }
   }
   for (const n of blank) n.textContent = '';
   return seen.size; }"""
 _CONTRAST = {"type": "rule", "values": ["color-contrast"]}
 
 
-def _axe(page, only: dict, contrast: bool = True) -> dict:
-    """axe-core's violations on the page as it is now (formulas as text, see above)."""
-    return page.evaluate("([only, contrast]) => axe.run(document, {runOnly: only, "
-                         "rules: {'color-contrast': {enabled: contrast}}, "
-                         "resultTypes: ['violations']})", [only, contrast])
+def _axe(page, only: dict, contrast: bool = True, marked: bool = False) -> dict:
+    """axe-core's violations on the page as it is now (formulas as text, see above); in
+    the elements _ONE_TEXT_A_STYLE kept where ``marked``."""
+    return page.evaluate("([only, contrast, marked]) => axe.run("
+                         "marked ? {include: [['[data-contrast]']]} : document, "
+                         "{runOnly: only, rules: {'color-contrast': {enabled: contrast}}, "
+                         "resultTypes: ['violations']})", [only, contrast, marked])
 
 
 def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
@@ -175,10 +179,10 @@ def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
         light = _axe(page, {"type": "tag", "values": WCAG}, contrast=SWEEP)
         if not SWEEP:
             assert page.evaluate(_ONE_TEXT_A_STYLE) > 0
-            contrast = _axe(page, _CONTRAST)
+            contrast = _axe(page, _CONTRAST, marked=True)
             light["violations"] += contrast["violations"]
         page.emulate_media(color_scheme="dark")
-        dark = _axe(page, _CONTRAST)
+        dark = _axe(page, _CONTRAST, marked=not SWEEP)
         for scheme, result in (("light", light), ("dark", dark)):
             for v in result["violations"]:
                 node = v["nodes"][0]
