@@ -4,6 +4,8 @@
 #               every core (pytest-xdist)
 #   make props  the property tests with long hypothesis budgets (EXAMPLES times the
 #               default, default 10), on every core
+#   make browser  the pages in Chromium with the contrast of every text (make test checks
+#               one text of each style)
 #   make handout  a solution sheet of every bundled problem, handout.pdf (needs pdflatex:
 #               apt-get install texlive-latex-base texlive-latex-recommended
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
@@ -19,7 +21,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test props check bench handout fuzz examples docs dist environment clean
+.PHONY: demo test props browser check bench handout fuzz examples docs dist environment clean
 
 MINUTES ?= 5
 EXAMPLES ?= 10
@@ -44,6 +46,9 @@ test: $(STAMP)
 
 props: $(STAMP)
 	GYRO_EXAMPLES=$(EXAMPLES) $(BIN)/python -m pytest -q -n auto -m property
+
+browser: $(STAMP)
+	GYRO_BROWSER_SWEEP=1 $(BIN)/python -m pytest -q -n auto tests/test_browser.py tests/test_course_browser.py
 
 check: $(STAMP)
 	$(BIN)/lint-imports --no-cache

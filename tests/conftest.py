@@ -46,3 +46,27 @@ def write(tmp_path):
 @pytest.fixture
 def problems_dir() -> Path:
     return PROBLEMS
+
+
+@pytest.fixture(scope="session")
+def browser():
+    """One headless Chromium per test process, shared by every page test
+    (tests/test_browser.py finds it and says why it is missing)."""
+    from test_browser import CHROMIUM, MISSING, sync_playwright
+
+    if MISSING is not None:
+        pytest.skip(MISSING)
+    os.environ.setdefault("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1")
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM,
+                              args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="session")
+def axe():
+    """axe-core's script, read once per test process."""
+    from test_browser import Axe
+
+    return Axe()

@@ -200,23 +200,14 @@ def test_mp4_through_ffmpeg(run, tmp_path):
     assert out.read_bytes()[4:8] == b"ftyp"
 
 
-def _chromium() -> str | None:
-    return shutil.which("chromium") or shutil.which("chromium-browser")
-
-
-@pytest.mark.skipif(_chromium() is None, reason="Chromium is not installed (apt-get install "
-                                                "chromium); .ci/run installs it")
-def test_html_animation_plays_in_chromium_without_console_errors(run, tmp_path):
-    playwright = pytest.importorskip("playwright.sync_api",
-                                     reason="playwright is not installed")
+def test_html_animation_plays_in_chromium_without_console_errors(run, tmp_path, browser):
+    """(`browser`, conftest.py: the test process's Chromium; skips, saying why, without.)"""
     out = tmp_path / "a.html"
     assert run("simulate", PROBLEMS / "11_3.yaml", "--animate", out, "--periods", "0.3",
                "--fps", "10").exit_code == 0
     errors: list[str] = []
-    with playwright.sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=_chromium(),
-                                     args=["--no-sandbox", "--disable-gpu"])
-        page = browser.new_page()
+    page = browser.new_page()
+    try:
         page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
         page.on("pageerror", lambda e: errors.append(str(e)))
         page.goto(out.as_uri())
@@ -225,7 +216,8 @@ def test_html_animation_plays_in_chromium_without_console_errors(run, tmp_path):
             const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
             let ink = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) ink++;
             return ink; }""")
-        browser.close()
+    finally:
+        page.close()
     assert errors == []
     assert drawn > 1000
 

@@ -9,7 +9,14 @@ wcag2a, wcag2aa, wcag21a, wcag21aa) in the light scheme, and no contrast violati
 the dark one (`prefers-color-scheme: dark`). Where $GYRO_SCREENSHOT_DIR is set, a
 screenshot at 360 px of each page is written there for the record (never committed).
 
-One browser per module (per test process); each page is loaded once and checked at both
+Contrast is axe's costly rule (five sixths of its time on a folder page: it finds each
+text's background). A text's colours and size follow from the CSS of its path (each
+ancestor's tag, classes and style) and its own computed colour, size and weight, so the
+contrast is checked on one text of each such style: the others are blanked after every
+other check has run on the whole page. `make browser` ($GYRO_BROWSER_SWEEP=1) checks the
+contrast of every text, on eight smaller folder pages.
+
+One browser per test process (conftest.py); each page is loaded once and checked at both
 widths and in both schemes. The tests skip, saying why, where Chromium or Playwright is
 missing (`.ci/run` installs Chromium; `make test` installs the Python packages).
 """
@@ -25,11 +32,13 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 PROBLEMS = sorted(glob.glob(str(ROOT / "problems" / "*.yaml")))
+# $GYRO_BROWSER_SWEEP (`make browser`): the contrast of every text, not of one per style.
+SWEEP = bool(os.environ.get("GYRO_BROWSER_SWEEP"))
 # The bundled problems on PAGES folder pages (every PAGES-th problem on each, so that
 # the pages are of like size): a page's fixed cost (load, axe injected) is paid a few
-# times, not once a problem, and axe, whose time grows faster than a page's size, still
-# sees small pages; the pages can go to different test processes.
-PAGES = 8
+# times, not once a problem; one page per test process. The sweep's axe, whose contrast
+# time grows faster than a page's size, sees smaller pages.
+PAGES = 8 if SWEEP else 2
 FOLDERS = [PROBLEMS[i::PAGES] for i in range(PAGES)]
 WCAG = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 
@@ -58,16 +67,6 @@ pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
 
 
 @pytest.fixture(scope="module")
-def browser():
-    os.environ.setdefault("PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD", "1")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM,
-                              args=["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"])
-        yield b
-        b.close()
-
-
-@pytest.fixture(scope="module")
 def shots() -> Path | None:
     """Where the screenshots go ($GYRO_SCREENSHOT_DIR), or None: none taken."""
     where = os.environ.get("GYRO_SCREENSHOT_DIR")
@@ -76,11 +75,6 @@ def shots() -> Path | None:
     path = Path(where)
     path.mkdir(parents=True, exist_ok=True)
     return path
-
-
-@pytest.fixture(scope="module")
-def axe():
-    return Axe()
 
 
 @pytest.fixture(scope="module")
@@ -120,10 +114,34 @@ _MATH_AS_TEXT = """() => { for (const m of Array.from(document.querySelectorAll(
   const s = document.createElement('span'); s.textContent = m.textContent; m.replaceWith(s); } }"""
 
 
-def _axe(page, only: dict) -> dict:
-    """axe-core's violations on the page as it is now (formulas as text, see above)."""
-    return page.evaluate("only => axe.run(document, {runOnly: only, "
-                         "resultTypes: ['violations']})", only)
+# One text of each style keeps its words; the others are blanked (their elements stay,
+# so every background and box a kept text sits on is as it was), and the kept are marked
+# (axe looks only at them). The number kept.
+_ONE_TEXT_A_STYLE = """() => { const seen = new Set(), blank = [];
+  const mark = e => e.tagName + Array.from(e.classList).sort().map(c => '.' + c).join('')
+    + (e.getAttribute('style') ? '{' + e.getAttribute('style') + '}' : '');
+  for (const e of document.body.querySelectorAll('*')) {
+    const own = Array.from(e.childNodes).filter(n => n.nodeType === Node.TEXT_NODE
+                                                     && n.textContent.trim());
+    if (!own.length) continue;
+    const s = getComputedStyle(e);
+    let key = [s.color, s.fontSize, s.fontWeight, s.opacity].join(' ');
+    for (let x = e; x; x = x.parentElement) key = mark(x) + '>' + key;
+    if (seen.has(key)) blank.push(...own);
+    else { seen.add(key); e.setAttribute('data-contrast', ''); }
+  }
+  for (const n of blank) n.textContent = '';
+  return seen.size; }"""
+_CONTRAST = {"type": "rule", "values": ["color-contrast"]}
+
+
+def _axe(page, only: dict, contrast: bool = True, marked: bool = False) -> dict:
+    """axe-core's violations on the page as it is now (formulas as text, see above); in
+    the elements _ONE_TEXT_A_STYLE kept where ``marked``."""
+    return page.evaluate("([only, contrast, marked]) => axe.run("
+                         "marked ? {include: [['[data-contrast]']]} : document, "
+                         "{runOnly: only, rules: {'color-contrast': {enabled: contrast}}, "
+                         "resultTypes: ['violations']})", [only, contrast, marked])
 
 
 def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
@@ -158,9 +176,13 @@ def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
             page.emulate_media(color_scheme="light")
             page.evaluate(_MATH_AS_TEXT)
         page.evaluate(axe.axe_script)  # axe-core, once per page
-        light = _axe(page, {"type": "tag", "values": WCAG})
+        light = _axe(page, {"type": "tag", "values": WCAG}, contrast=SWEEP)
+        if not SWEEP:
+            assert page.evaluate(_ONE_TEXT_A_STYLE) > 0
+            contrast = _axe(page, _CONTRAST, marked=True)
+            light["violations"] += contrast["violations"]
         page.emulate_media(color_scheme="dark")
-        dark = _axe(page, {"type": "rule", "values": ["color-contrast"]})
+        dark = _axe(page, _CONTRAST, marked=not SWEEP)
         for scheme, result in (("light", light), ("dark", dark)):
             for v in result["violations"]:
                 node = v["nodes"][0]

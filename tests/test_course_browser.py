@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from test_browser import MISSING, _inspect, axe, browser, pages, shots  # noqa: F401 (fixtures)
+from test_browser import MISSING, _inspect, shots  # noqa: F401 (a fixture)
 from test_check import put
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -50,9 +50,28 @@ def gyro(*args, env=None, cwd=None, stdout=subprocess.PIPE, timeout=120, stdin=N
                           stdin=stdin if stdin is not None else subprocess.DEVNULL)
 
 
-def driver(code: str, *args, env=None, cwd=None, timeout=120):
-    """Run gyro's main() in a subprocess after ``code`` (a hook) has run."""
-    script = textwrap.dedent(code) + "\nfrom gyro_cli.cli import main\nmain()\n"
+# A process started from a terminal in the foreground: Ctrl-C raises KeyboardInterrupt,
+# SIGTERM and SIGHUP kill. The suite itself may run with SIGINT or SIGHUP ignored (started
+# in the background by a shell without job control, or under nohup), and an ignored
+# disposition is inherited by every child: gyro then stays immune on purpose, and a test
+# of how gyro answers a signal would see exit 0. So the driver sets the dispositions first.
+FOREGROUND = """
+import signal as _signal
+_signal.signal(_signal.SIGINT, _signal.default_int_handler)
+for _name in ("SIGTERM", "SIGHUP"):
+    if hasattr(_signal, _name):
+        _signal.signal(getattr(_signal, _name), _signal.SIG_DFL)
+"""
+
+
+def driver(code: str, *args, env=None, cwd=None, timeout=120, foreground=True):
+    """Run gyro's main() in a subprocess after ``code`` (a hook) has run.
+
+    ``foreground`` gives the child the signal dispositions of a foreground
+    process, whatever the suite inherited.
+    """
+    script = ((FOREGROUND if foreground else "") + textwrap.dedent(code)
+              + "\nfrom gyro_cli.cli import main\nmain()\n")
     full = dict(os.environ)
     full.update(env or {})
     return subprocess.run([sys.executable, "-c", script, *map(str, args)], cwd=cwd or ROOT,
@@ -488,6 +507,25 @@ def test_i22_14_sigint_exits_130_not_1(tmp_path):
     one_line(result.stderr, "interrupted")
     assert b"Aborted" not in result.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_i22_14_an_ignored_sigint_is_inherited_and_stays_ignored(tmp_path):
+    """nohup or a background job: SIGINT arrives ignored, and gyro keeps it so."""
+    hook = """
+        import os, signal
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        import gyro_cli.core.safeyaml as safeyaml
+        real = safeyaml.read_bytes
+        def read_bytes(*args, **kwargs):
+            os.kill(os.getpid(), signal.SIGINT)
+            os.write(2, b"SIGINT sent\\n")
+            return real(*args, **kwargs)
+        safeyaml.read_bytes = read_bytes
+    """
+    result = driver(hook, "check", P11_3, "--junit", "j.xml", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.startswith(b"SIGINT sent\n")  # the hook did run
+    assert (tmp_path / "j.xml").exists()
 
 
 @needs_dev_full
