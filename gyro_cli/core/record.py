@@ -12,25 +12,83 @@ writing its own ``__init__`` (kept, as ``@dataclass`` keeps one).
 
 ``frozen=True`` makes instances hashable by their fields, as a frozen dataclass
 is; it does not forbid assignment (nothing in gyro assigns to one).
+
+``dataclasses`` itself (and ``copy``, which it imports) is imported only when a
+record's ``__dataclass_fields__`` is first read, by ``dataclasses.fields`` and the
+like: about 1.5 ms that a ``gyro solve`` never needs.
 """
 
 from __future__ import annotations
 
-import dataclasses
-from dataclasses import MISSING, Field
+import sys
 from typing import Any, TypeVar, dataclass_transform
 
 __all__ = ["record", "field"]
 
-field = dataclasses.field
 _T = TypeVar("_T", bound=type)
-# The marker dataclasses.fields() keeps a field by; public in effect since Python 3.7.
-_FIELD = dataclasses._FIELD  # type: ignore[attr-defined]
+
+
+class _Missing:
+    """No default: dataclasses.MISSING, before dataclasses is imported."""
+
+    def __repr__(self) -> str:
+        return "MISSING"
+
+
+MISSING: Any = _Missing()
+
+
+class _Field:
+    """What ``field()`` says of a field (its default or default factory), until
+    dataclasses is imported."""
+
+    __slots__ = ("default", "default_factory")
+
+    def __init__(self, default: Any, default_factory: Any) -> None:
+        self.default, self.default_factory = default, default_factory
+
+
+def field(*, default: Any = MISSING, default_factory: Any = MISSING) -> Any:
+    """A record's field with a default or a default factory, as ``dataclasses.field``
+    (whose Field it is once dataclasses is imported: a @dataclass may use it too)."""
+    if default is not MISSING and default_factory is not MISSING:
+        raise ValueError("cannot specify both default and default_factory")
+    dataclasses = sys.modules.get("dataclasses")
+    if dataclasses is not None:
+        return dataclasses.field(
+            default=dataclasses.MISSING if default is MISSING else default,
+            default_factory=dataclasses.MISSING if default_factory is MISSING else default_factory)
+    return _Field(default, default_factory)
+
+
+class _Fields:
+    """A record's ``__dataclass_fields__``: its ``dataclasses.Field`` objects, made (and
+    dataclasses imported) when first read."""
+
+    def __init__(self, spec: dict[str, tuple[Any, Any, Any]]) -> None:
+        self.spec = spec  # name -> (type, default, factory)
+        self.made: dict | None = None
+
+    def __get__(self, instance: Any, owner: type) -> dict:
+        if self.made is None:
+            import dataclasses
+
+            made = {}
+            for name, (type_, default, factory) in self.spec.items():
+                one: Any = dataclasses.field(
+                    default=dataclasses.MISSING if default is MISSING else default,
+                    default_factory=dataclasses.MISSING if factory is MISSING else factory)
+                # the marker dataclasses.fields() keeps a field by
+                one.name, one.type = name, type_
+                one._field_type = dataclasses._FIELD  # type: ignore[attr-defined]
+                made[name] = one
+            self.made = made
+        return self.made
 
 
 def _init_spec(cls: type) -> tuple[tuple[str, Any, Any], ...]:
-    return tuple((f.name, f.default, f.default_factory)
-                 for f in cls.__dataclass_fields__.values())  # type: ignore[attr-defined]
+    return tuple((name, default, factory)
+                 for name, (_, default, factory) in cls.__record_fields__.items())  # type: ignore[attr-defined]
 
 
 # A class made this many times gets a compiled __init__ (what @dataclass writes): a
@@ -95,11 +153,11 @@ def _init(self: Any, *args: Any, **kwargs: Any) -> None:
 
 
 def _values(self: Any) -> tuple:
-    return tuple(getattr(self, name) for name in self.__dataclass_fields__)
+    return tuple(getattr(self, name) for name in self.__record_fields__)
 
 
 def _repr(self: Any) -> str:
-    inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__dataclass_fields__)
+    inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_fields__)
     return f"{type(self).__qualname__}({inner})"
 
 
@@ -113,25 +171,42 @@ def _hash(self: Any) -> int:
     return hash(_values(self))
 
 
+def _inherited(base: type) -> dict[str, tuple[Any, Any, Any]]:
+    """The fields of a base class, a record's or a dataclass's, as (type, default, factory)."""
+    if "__record_fields__" in base.__dict__:
+        return base.__dict__["__record_fields__"]
+    if "__dataclass_fields__" not in base.__dict__:
+        return {}
+    import dataclasses
+
+    return {f.name: (f.type, MISSING if f.default is dataclasses.MISSING else f.default,
+                     MISSING if f.default_factory is dataclasses.MISSING else f.default_factory)
+            for f in dataclasses.fields(base)}
+
+
 def _make(cls: _T, frozen: bool) -> _T:
-    fields: dict[str, Field] = {}
+    fields: dict[str, tuple[Any, Any, Any]] = {}  # name -> (type, default, factory)
     for base in reversed(cls.__mro__[1:]):  # a record's fields are inherited, as a dataclass's
-        fields.update(getattr(base, "__dataclass_fields__", {}))
+        fields.update(_inherited(base))
+    dataclasses = sys.modules.get("dataclasses")  # a field made by dataclasses.field
     for name, type_ in cls.__dict__.get("__annotations__", {}).items():
         if str(type_).startswith(("ClassVar", "typing.ClassVar")):
             continue
         default = cls.__dict__.get(name, MISSING)
-        if isinstance(default, Field):
-            made = default
-            if made.default is MISSING:
+        if isinstance(default, _Field) or (dataclasses and isinstance(default, dataclasses.Field)):
+            value, factory = default.default, default.default_factory
+            if dataclasses and isinstance(default, dataclasses.Field):
+                value = MISSING if value is dataclasses.MISSING else value
+                factory = MISSING if factory is dataclasses.MISSING else factory
+            if value is MISSING:
                 delattr(cls, name)
             else:
-                setattr(cls, name, made.default)
+                setattr(cls, name, value)
         else:
-            made = field(default=default)
-        made.name, made.type, made._field_type = name, type_, _FIELD  # type: ignore[attr-defined]
-        fields[name] = made
-    setattr(cls, "__dataclass_fields__", fields)
+            value, factory = default, MISSING
+        fields[name] = (type_, value, factory)
+    setattr(cls, "__record_fields__", fields)
+    setattr(cls, "__dataclass_fields__", _Fields(fields))
     setattr(cls, "__record_init__", _init_spec(cls))
     own = cls.__dict__
     if "__init__" not in own:
@@ -145,7 +220,7 @@ def _make(cls: _T, frozen: bool) -> _T:
     return cls
 
 
-@dataclass_transform(field_specifiers=(dataclasses.field, Field))
+@dataclass_transform(field_specifiers=(field,))
 def record(cls: Any = None, /, *, frozen: bool = False) -> Any:
     """``@record`` or ``@record(frozen=True)``: a dataclass without compiled methods."""
     def wrap(cls: _T) -> _T:

@@ -17,6 +17,7 @@ written with omega_z it is Eq. 11.20, real when J^2 omega_z^2 >= 4 I D cos(theta
 from __future__ import annotations
 
 import math
+from functools import cache
 
 from ..core.errors import InputError
 from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, exp, sqrt
@@ -229,21 +230,29 @@ WITHOUT_THETA = {"precession", "precession_approx", "precession_period", "spin",
 SPREAD_ANGLES = (30.0, 60.0, 90.0)  # deg: how far the exact slow root moves with theta
 
 
-w0 = names("omega")[0]
-_APPROXIMATE_RATE = _moment_of("m g l") / (J_ * w0)  # m g l / (J omega)
-#: what the sentences name, with the spin written psidot or omega_z
-_NO_ANGLE = {symbol: (th, ", the angle of the axis from the upward vertical, is not given; ",
-                      phd, ", the precession rate about the vertical; ", w0, ", the spin (here ",
-                      names(symbol)[0], ")") for symbol in ("psidot", "omega_z")}
-_WHATEVER_THETA = (
-    "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
-    J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
-    rel(phd, "=", _APPROXIMATE_RATE), " whatever ", th, " is, once the ", _DROPPED_TERM,
-    " term of Eq. 11.13 is dropped (exact at ", _AT_90, ", where ", _COS_0, ")")
-_PER_UNIT_SIN = ("per unit ", sin_(th))
-_APPROXIMATION_ONLY = ("no ", th, " given: the answers use the gyroscopic approximation ",
-                       _APPROXIMATE_RATE, ", exact only with the axis horizontal (", _AT_90,
-                       "); the exact roots of Eq. 11.13 need ", th)
+# The sentences below are made when a solve first needs them, once (functools.cache), not
+# when the module is imported: most solves never write them.
+
+
+@cache
+def _without_theta_words() -> tuple[dict[str, tuple], tuple, tuple, tuple]:
+    """What a solve without theta writes: what the sentences name (with the spin written
+    psidot or omega_z), why theta does not matter, D's note and the warning."""
+    w0 = names("omega")[0]
+    approximate_rate = _moment_of("m g l") / (J_ * w0)  # m g l / (J omega)
+    no_angle = {symbol: (th, ", the angle of the axis from the upward vertical, is not given; ",
+                         phd, ", the precession rate about the vertical; ", w0, ", the spin (here ",
+                         names(symbol)[0], ")") for symbol in ("psidot", "omega_z")}
+    whatever_theta = (
+        "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
+        J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
+        rel(phd, "=", approximate_rate), " whatever ", th, " is, once the ", _DROPPED_TERM,
+        " term of Eq. 11.13 is dropped (exact at ", _AT_90, ", where ", _COS_0, ")")
+    per_unit_sin = ("per unit ", sin_(th))
+    approximation_only = ("no ", th, " given: the answers use the gyroscopic approximation ",
+                          approximate_rate, ", exact only with the axis horizontal (", _AT_90,
+                          "); the exact roots of Eq. 11.13 need ", th)
+    return no_angle, whatever_theta, per_unit_sin, approximation_only
 
 
 def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
@@ -268,11 +277,12 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
                          "approximation m g l / (J omega) is 0; give cg_distance",
                          key="given.cg_distance")
     work.section("No angle given: the gyroscopic approximation")
+    no_angle, whatever_theta, per_unit_sin, approximation_only = _without_theta_words()
     symbol = {"spin": "psidot", "axial_rate": "omega_z", "precession": "psidot"}[rates[0]]
-    work.text(*_NO_ANGLE[symbol])
-    work.text(*_WHATEVER_THETA)
+    work.text(*no_angle[symbol])
+    work.text(*whatever_theta)
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
-                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=_PER_UNIT_SIN)
+                  * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=per_unit_sin)
     J_v = Sym("J", body.needed("J"), "kg m^2")
     rate = rates[0]
     if rate == "precession":
@@ -304,16 +314,24 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     if missing:
         raise InputError(f"{missing[0]} needs the angle theta of the axis from the upward "
                          "vertical (omega_z = psidot + phidot cos(theta))", key="given.theta")
-    work.warn(*_APPROXIMATION_ONLY, *_spread(body, rate, given[rate], D, work))
+    work.warn(*approximation_only, *_spread(body, rate, given[rate], D, work))
 
 
 _NEITHER_GIVEN = ("the exact roots need ", th, " and the transverse inertia about the pivot "
                   "(I_pivot, k_pivot, I_cg or k_cg, or a shape), neither given")
 _AND_I = (" and the transverse inertia ", I_)
-_ANGLE = {degrees: _deg(degrees) for degrees in SPREAD_ANGLES}  # 30 deg, 60 deg, 90 deg
-#: ``phidot_slow at 30 deg``: the exact root at each angle, by its symbol and the angle
-_AT_ANGLE = {(root, degrees): words("at", names(root)[0], angle)
-             for root in ("psidot", "phidot_slow") for degrees, angle in _ANGLE.items()}
+
+
+@cache
+def _angle(degrees: float) -> Expr:
+    """30 deg, 60 deg, 90 deg: the angles of the spread."""
+    return _deg(degrees)
+
+
+@cache
+def _at_angle(root: str, degrees: float) -> Expr:
+    """``phidot_slow at 30 deg``: the exact root at an angle, by its symbol and the angle."""
+    return words("at", names(root)[0], _angle(degrees))
 
 
 def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
@@ -336,18 +354,18 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
               ") with the transverse inertia ", rel(I_, "=", q(I, "kg m^2")), " at three angles:")
     exact_root = "psidot" if rate == "precession" else "phidot_slow"
     for degrees, root in slow.items():
-        work.step(_AT_ANGLE[exact_root, degrees], value=root, unit="rad/s",
+        work.step(_at_angle(exact_root, degrees), value=root, unit="rad/s",
                   note="exact, Eq. 11.13" if root is not None else
                   "no steady precession: below the least spin (Eq. 11.21)")
     exact, at_30 = slow[90.0], slow[30.0]
     assert exact is not None, "at 90 deg Eq. 11.13 is linear: one root for a non-zero rate"
     if at_30 is None:
         return ("; for these data the exact " + name + " is ", q(exact, "rad/s"), " at ",
-                _ANGLE[90.0], " and there is none at ", _ANGLE[30.0], " (the spin is below the "
+                _angle(90.0), " and there is none at ", _angle(30.0), " (the spin is below the "
                 "least, Eq. 11.21)")
     apart = abs(at_30 - exact) / abs(exact)
     return ("; for these data the exact " + name + " is ", q(at_30, "rad/s"), " at ",
-            _ANGLE[30.0], " and ", q(exact, "rad/s"), " at ", _ANGLE[90.0], ", ",
+            _angle(30.0), " and ", q(exact, "rad/s"), " at ", _angle(90.0), ", ",
             _percent(apart, 2), "% apart")
 
 
@@ -482,12 +500,18 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     _check(I, J, theta, spins, roots, D, work, driver)
 
 
-_SPIN_TITLE = ("Spin for the given precession, Eq. 11.13 with ", _THETA_STEADY, " solved for ", psd)
-#: J psidot phidot + (J - I) cos(theta) phidot^2 = m g l (or D), by driver
-_SPIN_EQUATION = {driver: (rel(J_ * psd * phd + (J_ - I_) * cos_(th) * _PHIDOT_SQUARED, "=",
-                               _moment_of(driver)),) for driver in _DRIVERS}
-_AGAINST = (rel(psd, "<", 0), ": the body spins against the sense that precession alone would "
-            "need; the sign is the answer, not an error")
+
+
+@cache
+def _spin_words(driver: str) -> tuple[tuple, tuple, tuple]:
+    """The title, the equation J psidot phidot + (J - I) cos(theta) phidot^2 = m g l (or
+    D), by driver, and the note on a negative spin."""
+    title = ("Spin for the given precession, Eq. 11.13 with ", _THETA_STEADY, " solved for ", psd)
+    equation = (rel(J_ * psd * phd + (J_ - I_) * cos_(th) * _PHIDOT_SQUARED, "=",
+                    _moment_of(driver)),)
+    against = (rel(psd, "<", 0), ": the body spins against the sense that precession alone "
+               "would need; the sign is the answer, not an error")
+    return title, equation, against
 
 
 def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float, theta: float,
@@ -511,15 +535,16 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     if precession == 0:
         raise InputError("a steady precession of zero needs no spin and no moment: give a "
                          "non-zero precession", key="given.precession")
-    work.section(*_SPIN_TITLE)
-    work.text(*_SPIN_EQUATION[driver])
+    title, equation, against = _spin_words(driver)
+    work.section(*title)
+    work.text(*equation)
     J_v, I_v, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
     spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
                                 * phidot ** 2) / (J_v * phidot), unit="rad/s")
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(_theta(theta)),
                       unit="rad/s", ref="Eq. 11.8")
     if spin < 0:
-        work.text(*_AGAINST)
+        work.text(*against)
     work.answer("precession", "phidot", [precession], "rate")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
@@ -528,8 +553,14 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
 
 
 _DH = deriv(H)  # dH/dt
-_MOMENT_TITLE = ("Moment for the motion, Eq. 11.13 with ", _THETA_STEADY, " (",
-                 rel(_DH, "=", names("M")[0]), ")")
+
+
+@cache
+def _moment_title() -> tuple:
+    return ("Moment for the motion, Eq. 11.13 with ", _THETA_STEADY, " (",
+            rel(_DH, "=", names("M")[0]), ")")
+
+
 #: the applied moment about the line of nodes, m g l sin(theta) (or D sin(theta)), by driver
 _APPLIED = {driver: _moment_of(driver) * sin_(th) for driver in _DRIVERS}
 
@@ -537,7 +568,7 @@ _APPLIED = {driver: _moment_of(driver) * sin_(th) for driver in _DRIVERS}
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
             driver: str, work: Work) -> None:
     sin = math.sin(theta)
-    work.section(*_MOMENT_TITLE)
+    work.section(*_moment_title())
     phidot, th_v = _rate("phidot", precession), _theta(theta)
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(th_v), unit="rad/s",
                       ref="Eq. 11.8")
@@ -593,18 +624,24 @@ def _least(symbol: str) -> str:
     return f"{symbol},min" if "_" in symbol else f"{symbol}_min"
 
 
-k0, U0, p_phi0, p_psi0, sigma0, t0 = names("k U_eff p_phi p_psi sigma t")
-_STABILITY_TITLE = ("Stability: small changes of ", th, " with ", p_phi0, " and ", p_psi0,
-                    " fixed, ", rel(prime(th, 2) + k0 * th, "=", 0))
-_SQRT_K, _GROWTH = sqrt(k0), exp(sigma0 * t0)  # the frequency, and the growth of an unstable root
-_STABILITY = (
-    rel(k0, "=", fn("U_eff''", th) / I_, "=",
-        ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + _PHIDOT_SQUARED * sin_(th)**2, ">=", 0),
-    " (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady precession of a heavy top about a "
-    "fixed point is a minimum of ", U0, ", stable; a change of ", p_phi0, " or ", p_psi0, " only "
-    "moves it to a neighbouring steady precession; an unstable root (", rel(k0, "<", 0), ") would "
-    "grow as ", _GROWTH, " with the growth rate ", rel(sigma0, "=", sqrt(-k0)), ", and ",
-    rel(sigma0, "=", 0), " for a stable one")
+@cache
+def _stability_words() -> tuple[tuple, tuple, Expr, Expr, Expr]:
+    """The title, the account, the frequency sqrt(k), the growth of an unstable root and
+    its rate sigma."""
+    k0, U0, p_phi0, p_psi0, sigma0, t0 = names("k U_eff p_phi p_psi sigma t")
+    title = ("Stability: small changes of ", th, " with ", p_phi0, " and ", p_psi0,
+             " fixed, ", rel(prime(th, 2) + k0 * th, "=", 0))
+    growth = exp(sigma0 * t0)
+    account = (
+        rel(k0, "=", fn("U_eff''", th) / I_, "=",
+            ((J_ * wz - 2 * I_ * phd * cos_(th)) / I_)**2 + _PHIDOT_SQUARED * sin_(th)**2, ">=",
+            0),
+        " (Eqs. 11.13-11.16; Goldstein Sec. 5.7): every steady precession of a heavy top about "
+        "a fixed point is a minimum of ", U0, ", stable; a change of ", p_phi0, " or ", p_psi0,
+        " only moves it to a neighbouring steady precession; an unstable root (",
+        rel(k0, "<", 0), ") would grow as ", growth, " with the growth rate ",
+        rel(sigma0, "=", sqrt(-k0)), ", and ", rel(sigma0, "=", 0), " for a stable one")
+    return title, account, sqrt(k0), growth, sigma0
 
 
 def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
@@ -617,25 +654,25 @@ def _stability(given: Given, n_rates: int, I: float, J: float, theta: float,
                          "one of spin, axial_rate, precession): how an applied moment changes "
                          "with theta is not given", key="find.stability")
     answer = work.answers["precession"]
-    work.section(*_STABILITY_TITLE)
-    work.text(*_STABILITY)
+    title, account, sqrt_k, growth, sigma0 = _stability_words()
+    work.section(*title)
+    work.text(*account)
     words, rates = [], []
     for phidot, axial, label in zip(answer.si_values, work.answers["axial_rate"].si_values,
                                     answer.labels or [""] * len(answer.si_values)):
         verdict = top_steady_precession(I, J, theta, phidot, axial)
         work.step(_label("k", label), value=verdict.k, unit="1/s^2", note=(
             verdict.word, ", ", th, " oscillates at ",
-            rel(_SQRT_K, "=", q(verdict.frequency, "rad/s"))) if verdict.frequency else
+            rel(sqrt_k, "=", q(verdict.frequency, "rad/s"))) if verdict.frequency else
             verdict.word)
         if verdict.word == UNSTABLE:
             work.warn("the steady precession ", rel(phd, "=", q(phidot, "rad/s")), " is "
-                      "unstable: a small disturbance grows as ", _GROWTH, " with ",
+                      "unstable: a small disturbance grows as ", growth, " with ",
                       rel(sigma0, "=", q(verdict.growth_rate, "1/s")))
         words.append(verdict.word)
         rates.append(verdict.growth_rate)
     work.answer("stability", "stability", words, None, answer.labels)
     work.answer("growth_rate", "sigma", rates, "rate", answer.labels)
-_APPROXIMATION_TITLE = ("Gyroscopic approximation (the ", _DROPPED_TERM, " term dropped)")
 
 
 def _approximation(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
@@ -643,7 +680,7 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    work.section(*_APPROXIMATION_TITLE)
+    work.section("Gyroscopic approximation (the ", _DROPPED_TERM, " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
@@ -664,17 +701,13 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     return value
 
 
-_ONLY_THE_APPROXIMATION = (
-    "no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: `precession` "
-    "is the gyroscopic approximation ", names("phidot_approx")[0], ", not an exact root of Eq. "
-    "11.13; the exact roots need ", I_)
-
-
 def _approximate_only(given: Given, rate: str, J: float, theta: float, D: float, driver: str,
                       work: Work) -> None:
     """No transverse inertia away from 90 deg: the approximation, labelled, and a warning."""
     value = _approximation(given, rate, J, theta, D, driver, work)
-    work.warn(*_ONLY_THE_APPROXIMATION)
+    work.warn("no transverse inertia (I_pivot, k_pivot, I_cg or k_cg, or a shape) was given: "
+              "`precession` is the gyroscopic approximation ", names("phidot_approx")[0],
+              ", not an exact root of Eq. 11.13; the exact roots need ", I_)
     cos = cos_theta(theta)
     spin = given["spin"] if rate == "spin" else given["axial_rate"] - value * cos
     work.answer("precession", "phidot", [value], "rate", ["approximation"])
@@ -702,19 +735,26 @@ def _by_root(find: frozenset[str], work: Work) -> None:
             work.answer(key, f"{answer.symbol}_{which}", [value], "rate")
 
 
-_CG_CIRCLE = ("the centre of mass runs round a horizontal circle of radius ", l0 * sin_(th),
-              " at the rate ", phd, " (", th, " constant)")
-F0, a_G0, G0, I_G0, H_G0, F_v0, F_h0 = names("F a_G G I_G H_G F_vertical F_horizontal")
-_NEWTON = ("Newton's second law for the centre of mass, ", rel(F0 + m0 * g0, "=", m0 * a_G0),
-           ", where ", F0, " is the force of the support: it carries the weight and supplies the "
-           "centripetal force")
-_SIZE_OF_F = absolute(F0)  # |F|
-# the check of the pivot force: its moment about G against dH_G/dt (Eq. 11.13 about G)
-_I_G = I_ - m0 * l0**2
-_ABOUT_G = (" the transverse moment about ", G0, " and ", H_G0, " the angular momentum about ",
-            G0, ", ")
-_PIVOT_MOMENT = l0 * (F_v0 * sin_(th) + F_h0 * cos_(th))
-_DH_G, _RATE_OF_H_G = deriv(H_G0), phd * sin_(th) * (J_ * wz - I_G0 * phd * cos_(th))
+@cache
+def _cg_circle() -> tuple:
+    return ("the centre of mass runs round a horizontal circle of radius ", l0 * sin_(th),
+            " at the rate ", phd, " (", th, " constant)")
+
+
+@cache
+def _pivot_words() -> tuple[tuple, Expr, tuple]:
+    """Newton's law for the centre of mass, |F|, and the check of the pivot force: its
+    moment about G against dH_G/dt (Eq. 11.13 about G), after the numbers."""
+    F0, a_G0, G0, I_G0, H_G0, F_v0, F_h0 = names("F a_G G I_G H_G F_vertical F_horizontal")
+    newton = ("Newton's second law for the centre of mass, ", rel(F0 + m0 * g0, "=", m0 * a_G0),
+              ", where ", F0, " is the force of the support: it carries the weight and supplies "
+              "the centripetal force")
+    about_g = (" the transverse moment about ", G0, " and ", H_G0, " the angular momentum "
+               "about ", G0, ", ")
+    pivot_moment = l0 * (F_v0 * sin_(th) + F_h0 * cos_(th))
+    rate_of_h_g = phd * sin_(th) * (J_ * wz - I_G0 * phd * cos_(th))
+    check = (G0, I_G0, I_ - m0 * l0**2, about_g, pivot_moment, deriv(H_G0), rate_of_h_g)
+    return newton, absolute(F0), check
 
 
 def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
@@ -726,7 +766,7 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
     rates, labels = answer.si_values, answer.labels or [""] * len(answer.si_values)
     l = body.l
     work.section("Motion of the centre of mass and the force at the pivot")
-    work.text(*_CG_CIRCLE)
+    work.text(*_cg_circle())
     if "precession_period" in find:
         if any(p == 0 for p in rates):
             raise InputError("the precession rate is 0: it never completes a turn",
@@ -749,7 +789,9 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                                                 for p in rates], "acceleration", answer.labels)
     if "pivot_force" in find:
         m, g = body.m, body.g
-        work.text(*_NEWTON)
+        newton, size_of_f, (G0, I_G0, I_G_tree, about_g, pivot_moment, dh_g, rate_of_h_g) = \
+            _pivot_words()
+        work.text(*newton)
         values, parts = [], []
         forces = [steady.pivot_force(m, g, l, theta, p) for p in rates]  # for the steps and check
         for i, (p, tag, (up, toward, size)) in enumerate(zip(rates, labels, forces)):
@@ -762,7 +804,7 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                       Sym("l", l, "m") * sin_(_theta(theta)) * _rate("phidot", p) ** 2)
             work.step(_label("F_horizontal", tag), Sym("m", m, "kg") * a_G, unit="N",
                       note="toward the precession axis")
-            size = work.step(_label(_SIZE_OF_F, tag), sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
+            size = work.step(_label(size_of_f, tag), sqrt(Sym("F_vertical", up, "N") ** 2 + Sym(
                 "F_horizontal", toward, "N") ** 2), unit="N", substitute=False)
             values += [toward, size]
             parts += [f"horizontal{_tag(tag)}", f"magnitude{_tag(tag)}"]
@@ -774,11 +816,11 @@ def _motion(body, theta: float, find: frozenset[str], work: Work) -> None:
                 axial = spin + p * cos_theta(theta)
                 rate = p * math.sin(theta) * (body.J * axial - I_G * p * cos_theta(theta))
                 work.check(rel(phd, "=", q(p, "rad/s")), ": moment of the pivot force about ",
-                           G0, ", with ", rel(I_G0, "=", _I_G, "=", q(I_G, "kg m^2")),
-                           *_ABOUT_G,
-                           rel(_PIVOT_MOMENT, "=",
+                           G0, ", with ", rel(I_G0, "=", I_G_tree, "=", q(I_G, "kg m^2")),
+                           *about_g,
+                           rel(pivot_moment, "=",
                                q(l * (up * math.sin(theta) + toward * cos_theta(theta)), "N m")),
-                           "; ", rel(_DH_G, "=", _RATE_OF_H_G, "=", q(rate, "N m")))
+                           "; ", rel(dh_g, "=", rate_of_h_g, "=", q(rate, "N m")))
 
 
 def _tag(label: str) -> str:

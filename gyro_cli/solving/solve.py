@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import re
 from typing import TYPE_CHECKING
@@ -55,6 +54,8 @@ def asking(problem: Problem, names: Iterable[str]) -> Problem:
     more = [name for name in names if name not in problem.find]
     if not more:
         return problem
+    import dataclasses  # here: a solve that asks for nothing more never imports it
+
     return dataclasses.replace(problem, find=problem.find | dict.fromkeys(more))
 
 
