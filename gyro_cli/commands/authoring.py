@@ -568,7 +568,8 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     return {k: data[k] for k in order if k in data}
 
 
-# The last problem built whole for a variant: (its base data, the keys keyed, the problem).
+# The last problem built whole for a variant: (its base data, the keys keyed, the problem,
+# the given strings read for its variants: most are the base's, read again for each).
 _TEMPLATE: list[Any] = []
 
 
@@ -584,14 +585,14 @@ def _variant_problem(path: str, base: dict[str, Any], keyed: list[str],
             and _TEMPLATE[2].file == path:
         problem = copy.copy(_TEMPLATE[2])
         problem.given, problem.quantities, problem.us_customary = parse_given(
-            problem.kind, data["given"])
+            problem.kind, data["given"], _TEMPLATE[3])
         problem.id = _id(data["id"])
         problem.title = _text(data.get("title", ""), "title")
         problem.source = _text(data.get("source", ""), "source")
         problem.data = data
         return problem
     problem = _build(path, data, {})
-    _TEMPLATE[:] = [base, list(keyed), problem]
+    _TEMPLATE[:] = [base, list(keyed), problem, {}]  # and the given strings read so far
     return problem
 
 

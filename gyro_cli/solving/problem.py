@@ -349,8 +349,12 @@ def _facts(kind: Kind) -> _KindFacts:
 _FACTS: dict[str, _KindFacts] = {}
 
 
-def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
-    """Parse every given quantity into SI; apply the kind's defaults."""
+def parse_given(kind: Kind, raw: dict,
+                memo: dict[tuple[str, str], tuple[Any, Any]] | None = None
+                ) -> tuple[Given, dict[str, Any], bool]:
+    """Parse every given quantity into SI; apply the kind's defaults. ``memo``: each string
+    read before for a key of this kind (its value and reading), kept by a caller that
+    parses many givens of one kind that share most strings (a roster's variants)."""
     facts = _facts(kind)
     params = facts.params
     values: dict[str, float | str | Particles] = {}
@@ -366,18 +370,34 @@ def parse_given(kind: Kind, raw: dict) -> tuple[Given, dict[str, Any], bool]:
             known = [*params, *facts.alternatives]
             raise InputError(f"unknown key for kind {kind.name}{suggest(str(key), known)}"
                              f" (see `gyro kinds`)", key=f"given.{key}")
-        values[param.name], quantities[param.name] = _parse_param(param, text, facts)
+        values[param.name], quantities[param.name] = _parse_remembered(param, text, facts, memo)
     _hemisphere_once(params, raw, values)
     defaulted = set()
     for param in facts.defaults:
         if param.name not in values:
-            values[param.name], quantities[param.name] = _parse_param(param, param.default,
-                                                                      facts)
+            values[param.name], quantities[param.name] = _parse_remembered(
+                param, param.default, facts, memo)
             defaulted.add(param.name)
     us = any(units.is_us_customary(quantities[k]) for k in ("mass", "weight") if k in quantities)
     if not us and "mass" not in quantities and "weight" not in quantities:
         us = any(_us_length(q) for q in quantities.values())  # inches, no mass: US data
     return Given(values, defaulted=defaulted, derived=derived), quantities, us
+
+
+def _parse_remembered(param: Param, text: Any, facts: _KindFacts,
+                      memo: dict[tuple[str, str], tuple[Any, Any]] | None) -> tuple[Any, Any]:
+    """`_parse_param` of a string looked up in ``memo`` first (a refusal is not kept)."""
+    if memo is None or text.__class__ is not str:
+        return _parse_param(param, text, facts)
+    known = memo.get((param.name, text))
+    if known is None:
+        known = _parse_param(param, text, facts)
+        if len(memo) < _MEMO_MAX:  # a varied value is seldom seen again
+            memo[(param.name, text)] = known
+    return known
+
+
+_MEMO_MAX = 1024
 
 
 # US customary units of length (and speed) as gyro prints them: a file in these with no

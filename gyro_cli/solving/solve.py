@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ..core import units
 from ..core.alternatives import alternatives_of, step_tree
@@ -338,6 +338,13 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
                                    "listed under Inertia", ""))
             continue
         raw = problem.data.get("given", {}).get(key, param.default)
+        if raw.__class__ is str:
+            known = _WRITTEN.get((id(param), key, raw, key in problem.given.defaulted))
+            if known is None or known[4] is not param:
+                known = _written_line(param, key, raw, quantity, key in problem.given.defaulted)
+            lines.append(GivenLine(key, param.symbol, known[0], value, known[1], known[2],
+                                   symbol_expr=param.symbol_tree, shown=known[3]))
+            continue
         if isinstance(raw, str):
             text = " ".join(raw.split())
         elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
@@ -356,3 +363,27 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
                                units.si_text(param.dimension), note,
                                symbol_expr=param.symbol_tree, shown=shown))
     return lines
+
+
+# The text of a given line written as a string, by (param, string, defaulted): the same for
+# every variant of a set whose value is not varied (and a solve of the same file again).
+_Written = tuple[str, str, str, "tuple[str, str] | None", Any]  # text, SI unit, note, shown, param
+_WRITTEN: dict[tuple[int, str, str, bool], _Written] = {}
+_WRITTEN_MAX = 4096  # held while under this many: varied values are seldom seen twice
+
+
+def _written_line(param: Any, key: str, raw: str, quantity: Any, defaulted: bool) -> _Written:
+    """A given line's text, SI unit, note and the quantity as written, for a string ``raw``
+    read as ``quantity`` (what `_given_lines` writes of it), kept in `_WRITTEN`."""
+    text = " ".join(raw.split())
+    note = ""
+    if key == "weight":
+        note = "weight"
+        if set(raw.split()) & {"lb", "lbs", "oz", "pound", "ounce"}:
+            note = f"weight: read as {units.unit_text(quantity)}"
+    if defaulted:
+        text += " (default)"
+    line = (text, units.si_text(param.dimension), note, units.written(raw), param)
+    if len(_WRITTEN) < _WRITTEN_MAX:
+        _WRITTEN[(id(param), key, raw, defaulted)] = line
+    return line
