@@ -19,14 +19,13 @@ Every string from a problem file is HTML-escaped.
 
 from __future__ import annotations
 
-import functools
 import re
 from collections.abc import Callable, Sequence
 from html import escape as _escape
 from typing import Any, TypeVar
 
 from ..core import prose as P
-from ..core.expr import Chain, Expr
+from ..core.expr import Chain, Expr, Sym
 from ..core.prose import text as prose_text
 from ..core.work import num
 from ..solving.solve import Result
@@ -54,16 +53,62 @@ _T = TypeVar("_T")
 
 
 def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
-    """``function`` of a tree, remembered for the last trees met (a tree is one object:
-    core nodes compare by identity). A tree that cannot be hashed is computed afresh."""
-    remembered = functools.lru_cache(maxsize=256)(function)
+    """``function`` of a set tree, remembered for the last trees met by their shape
+    (`shape`), so the variants of a bank share the formulas they have in common. A tree
+    whose shape cannot be told is computed afresh."""
+    remembered: dict[tuple, object] = {}
 
     def call(node: Node) -> _T:
         try:
-            return remembered(node)
+            key = shape(node)
         except TypeError:
             return function(node)
+        value = remembered.get(key, _MISSING)  # one lookup: another thread may clear
+        if value is _MISSING:
+            value = function(node)
+            if len(remembered) >= 256:
+                remembered.clear()
+            remembered[key] = value
+        return value  # type: ignore[return-value]
     return call
+
+
+_MISSING = object()
+
+
+def _slots(cls: type) -> tuple[str, ...]:
+    return tuple(name for klass in reversed(cls.__mro__)
+                 for name in getattr(klass, "__slots__", ()))
+
+
+_SLOTS: dict[type, tuple[str, ...]] = {}
+
+
+def shape(node: object) -> tuple:
+    """A set tree as a key equal for trees the printers print alike: each node's class and
+    every field it holds, but a symbol's SI value (a set tree shows a symbol by its name;
+    `mathprint.Lowering` has already put a substitution's values in as quantities).
+    TypeError for a field that is neither a node, a tuple, nor a plain value."""
+    cls = node.__class__
+    names = _SLOTS.get(cls)
+    if names is None:
+        names = _SLOTS[cls] = _slots(cls)
+    key: list = [cls]
+    for name in names:
+        if cls is Sym and name == "si":
+            continue
+        key.append(_field(getattr(node, name, None)))
+    return tuple(key)
+
+
+def _field(value: object) -> object:
+    if isinstance(value, Expr):
+        return shape(value)
+    if isinstance(value, (tuple, list)):
+        return tuple(_field(item) for item in value)
+    if value is None or isinstance(value, (str, int, float, bool)):
+        return value
+    raise TypeError(f"no shape for {type(value).__name__}")
 
 
 def escape(text: str, quote: bool = True) -> str:
@@ -170,16 +215,18 @@ CSP = "default-src 'none'; style-src 'unsafe-inline'; img-src data:"
 
 def formula_mathml(node: Node, display: bool = True) -> str:
     """The one place a formula becomes MathML (content of a <math> element); the last
-    trees met are remembered (`_memo`)."""
-    try:
-        return _formula(node, display)
-    except TypeError:  # a tree that cannot be hashed
-        return mathml.tree_mathml(node, display)
+    trees met are remembered by their shape (`_memo`)."""
+    return (_display_mathml if display else _inline_mathml)(node)
 
 
-@functools.lru_cache(maxsize=256)
-def _formula(node: Node, display: bool) -> str:
-    return mathml.tree_mathml(node, display)
+@_memo
+def _display_mathml(node: Node) -> str:
+    return mathml.tree_mathml(node, True)
+
+
+@_memo
+def _inline_mathml(node: Node) -> str:
+    return mathml.tree_mathml(node, False)
 
 
 def _math(node: Node, display: bool = False) -> str:
