@@ -338,52 +338,50 @@ def _given_lines(problem: Problem) -> list[GivenLine]:
                                    "listed under Inertia", ""))
             continue
         raw = problem.data.get("given", {}).get(key, param.default)
-        if raw.__class__ is str:
-            known = _WRITTEN.get((id(param), key, raw, key in problem.given.defaulted))
-            if known is None or known[4] is not param:
-                known = _written_line(param, key, raw, quantity, key in problem.given.defaulted)
-            lines.append(GivenLine(key, param.symbol, known[0], value, known[1], known[2],
-                                   symbol_expr=param.symbol_tree, shown=known[3]))
-            continue
-        if isinstance(raw, str):
-            text = " ".join(raw.split())
-        elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
-            text = f"{raw:g} {units.unit_text(quantity)}".rstrip()  # a bare number as written
-        else:
-            text = f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
-        note = ""
-        if key == "weight":
-            note = "weight"
-            if isinstance(raw, str) and set(raw.split()) & {"lb", "lbs", "oz", "pound", "ounce"}:
-                note = f"weight: read as {units.unit_text(quantity)}"
-        if key in problem.given.defaulted:
-            text += " (default)"
-        shown = units.written(raw) if isinstance(raw, str) else None  # typeset as written
-        lines.append(GivenLine(key, param.symbol, text, value,
-                               units.si_text(param.dimension), note,
+        text, si, note, shown = _written(param, key, raw, quantity,
+                                         key in problem.given.defaulted)
+        lines.append(GivenLine(key, param.symbol, text, value, si, note,
                                symbol_expr=param.symbol_tree, shown=shown))
     return lines
 
 
-# The text of a given line written as a string, by (param, string, defaulted): the same for
-# every variant of a set whose value is not varied (and a solve of the same file again).
-_Written = tuple[str, str, str, "tuple[str, str] | None", Any]  # text, SI unit, note, shown, param
-_WRITTEN: dict[tuple[int, str, str, bool], _Written] = {}
+# A given line's words for a value written as a string, by (param, key, string, defaulted):
+# the same for every variant of a set whose value is not varied (and a solve of the same
+# file again). The param is kept to tell a reused id apart.
+_Written = tuple[str, str, str, "tuple[str, str] | None"]  # text, SI unit, note, shown
+_WRITTEN: dict[tuple[int, str, str, bool], tuple[_Written, Any]] = {}
 _WRITTEN_MAX = 4096  # held while under this many: varied values are seldom seen twice
 
 
-def _written_line(param: Any, key: str, raw: str, quantity: Any, defaulted: bool) -> _Written:
-    """A given line's text, SI unit, note and the quantity as written, for a string ``raw``
-    read as ``quantity`` (what `_given_lines` writes of it), kept in `_WRITTEN`."""
-    text = " ".join(raw.split())
+def _written(param: Any, key: str, raw: Any, quantity: Any, defaulted: bool) -> _Written:
+    """`_written_line`, remembered in `_WRITTEN` for a string ``raw``."""
+    if raw.__class__ is not str:
+        return _written_line(param, key, raw, quantity, defaulted)
+    memo = (id(param), key, raw, defaulted)
+    known = _WRITTEN.get(memo)
+    if known is not None and known[1] is param:
+        return known[0]
+    line = _written_line(param, key, raw, quantity, defaulted)
+    if len(_WRITTEN) < _WRITTEN_MAX:
+        _WRITTEN[memo] = (line, param)
+    return line
+
+
+def _written_line(param: Any, key: str, raw: Any, quantity: Any, defaulted: bool) -> _Written:
+    """A given line's text, SI unit, note and the quantity as written (typeset as written,
+    for a string), for ``raw`` as the file gives it, read as ``quantity``."""
+    if isinstance(raw, str):
+        text = " ".join(raw.split())
+    elif isinstance(raw, (int, float)) and not isinstance(raw, bool):
+        text = f"{raw:g} {units.unit_text(quantity)}".rstrip()  # a bare number as written
+    else:
+        text = f"{num(quantity.magnitude, 6)} {units.unit_text(quantity)}".rstrip()
     note = ""
     if key == "weight":
         note = "weight"
-        if set(raw.split()) & {"lb", "lbs", "oz", "pound", "ounce"}:
+        if isinstance(raw, str) and set(raw.split()) & {"lb", "lbs", "oz", "pound", "ounce"}:
             note = f"weight: read as {units.unit_text(quantity)}"
     if defaulted:
         text += " (default)"
-    line = (text, units.si_text(param.dimension), note, units.written(raw), param)
-    if len(_WRITTEN) < _WRITTEN_MAX:
-        _WRITTEN[(id(param), key, raw, defaulted)] = line
-    return line
+    shown = units.written(raw) if isinstance(raw, str) else None
+    return text, units.si_text(param.dimension), note, shown
