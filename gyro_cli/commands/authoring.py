@@ -568,9 +568,11 @@ def draw_variant(problem: Any, base: dict[str, Any], ranges: list, rng: random.R
     return {k: data[k] for k in order if k in data}
 
 
-# The last problem built whole for a variant: (its base data, the keys keyed, the problem,
-# the given strings read for its variants: most are the base's, read again for each).
-_TEMPLATE: list[Any] = []
+# The last problem built whole for a variant, as one tuple (read and replaced whole, so
+# threads drawing from two files never mix one's base with the other's problem): its base
+# data, the keys keyed, the problem, the given strings read for its variants (most are
+# the base's, read again for each).
+_TEMPLATE: list[tuple[dict[str, Any], list[str], Any, dict]] = []
 
 
 def _variant_problem(path: str, base: dict[str, Any], keyed: list[str],
@@ -581,18 +583,18 @@ def _variant_problem(path: str, base: dict[str, Any], keyed: list[str],
     rest (kind, find, statement, notes, ask, steps) would be checked to the same end."""
     from ..solving.problem import _build, _id, _text, parse_given
 
-    if _TEMPLATE and _TEMPLATE[0] is base and _TEMPLATE[1] == keyed \
-            and _TEMPLATE[2].file == path:
-        problem = copy.copy(_TEMPLATE[2])
-        problem.given, problem.quantities, problem.us_customary = parse_given(
-            problem.kind, data["given"], _TEMPLATE[3])
-        problem.id = _id(data["id"])
-        problem.title = _text(data.get("title", ""), "title")
-        problem.source = _text(data.get("source", ""), "source")
-        problem.data = data
-        return problem
+    for held_base, held_keyed, template, memo in _TEMPLATE[-1:]:
+        if held_base is base and held_keyed == keyed and template.file == path:
+            problem = copy.copy(template)
+            problem.given, problem.quantities, problem.us_customary = parse_given(
+                problem.kind, data["given"], memo)
+            problem.id = _id(data["id"])
+            problem.title = _text(data.get("title", ""), "title")
+            problem.source = _text(data.get("source", ""), "source")
+            problem.data = data
+            return problem
     problem = _build(path, data, {})
-    _TEMPLATE[:] = [base, list(keyed), problem, {}]  # and the given strings read so far
+    _TEMPLATE[:] = [(base, list(keyed), problem, {})]
     return problem
 
 
