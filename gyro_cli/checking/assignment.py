@@ -244,11 +244,23 @@ def file_digest(text: str | bytes) -> str:
 def key_digest(data: dict) -> str:
     """The SHA-256 of a key's content (every field but ``digest`` itself, answers
     included), as canonical JSON: what `gyro vary` wrote is what grading uses."""
-    import json
-
     body = {k: v for k, v in data.items() if k != "digest"}
-    return file_digest(json.dumps(body, sort_keys=True, separators=(",", ":"),
-                                  ensure_ascii=True, allow_nan=False))
+    return file_digest(canonical_json(body))
+
+
+def canonical_json(data: dict) -> str:
+    """The canonical JSON a key's digest is taken over (keys sorted, no spaces, ASCII,
+    no NaN); `gyro vary` writes its digest from the same, piece by piece."""
+    global _CANONICAL
+    if _CANONICAL is None:
+        import json
+
+        _CANONICAL = json.JSONEncoder(sort_keys=True, separators=(",", ":"),
+                                      ensure_ascii=True, allow_nan=False)
+    return _CANONICAL.encode(data)
+
+
+_CANONICAL: Any = None  # made on first use: json is not imported by a solve
 
 
 def read_key(path: str) -> tuple[dict | None, str]:

@@ -36,6 +36,7 @@ from ..checking.assignment import (
     ASSIGNMENT_COLUMNS,
     KEY_FORMAT,
     Student,
+    canonical_json,
     code_fingerprint,
     file_digest,
     file_names,
@@ -222,14 +223,14 @@ class KeyWriter:
     def add(self, variant_id: str, entry: dict[str, Any]) -> None:
         piece = _KEY_TEXT.encode({variant_id: entry})[1:-1]
         self.text.write(((", " if self.index else "") + piece).encode())
-        canon = _KEY_CANONICAL.encode({variant_id: entry})[1:-1].encode()
+        canon = canonical_json({variant_id: entry})[1:-1].encode()
         self.index.append((variant_id, self.canonical.tell(), len(canon)))
         self.canonical.write(canon)
 
     def digest(self) -> str:
         import hashlib
 
-        digest = hashlib.sha256((_canonical(self.head)[:-1] + ',"variants":{').encode())
+        digest = hashlib.sha256((canonical_json(self.head)[:-1] + ',"variants":{').encode())
         for n, (_, offset, length) in enumerate(sorted(self.index)):
             self.canonical.seek(offset)
             digest.update((b"," if n else b"") + self.canonical.read(length))
@@ -250,19 +251,9 @@ class KeyWriter:
         yield tail
 
 
-# The encoders of ``json.dumps(..., allow_nan=False)`` and of `_canonical`, made once
-# (json.dumps makes one a call when given any option).
+# The encoder of ``json.dumps(..., allow_nan=False)``, made once (json.dumps makes one a
+# call when given any option); the canonical one is `checking.assignment.canonical_json`.
 _KEY_TEXT = json.JSONEncoder(allow_nan=False)
-_KEY_CANONICAL = json.JSONEncoder(sort_keys=True, separators=(",", ":"), ensure_ascii=True,
-                                  allow_nan=False)
-
-
-def _canonical(data: dict[str, Any]) -> str:
-    """JSON as `checking.assignment.key_digest` hashes it."""
-    import json
-
-    return json.dumps(data, sort_keys=True, separators=(",", ":"), ensure_ascii=True,
-                      allow_nan=False)
 
 
 def roster_variants(paths: list[str], roster: str, seed: int
