@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import os
 import stat
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 
 from .errors import InputError
@@ -37,7 +37,6 @@ def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | byt
     parent = target.parent if str(target.parent) else Path(".")
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
-    pieces = [text] if isinstance(text, (str, bytes)) else text
     import tempfile  # here: a solve to the terminal writes no file
 
     try:
@@ -46,8 +45,8 @@ def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | byt
         raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
     try:
         with os.fdopen(fd, "wb") as handle:
-            for piece in pieces:
-                handle.write(_utf8(piece) if isinstance(piece, str) else piece)
+            for piece in _pieces(text):
+                handle.write(piece)
             handle.flush()
             os.fsync(handle.fileno())
         if not force:
@@ -254,11 +253,10 @@ class StagedSet:
         except OSError as err:
             raise InputError(f"cannot write: {err.strerror}", file=str(target)) from None
         self.staged.append((os.fspath(path), tmp))
-        pieces = [text] if isinstance(text, (str, bytes)) else text
         try:
             with os.fdopen(fd, "wb") as handle:
-                for piece in pieces:
-                    handle.write(_utf8(piece) if isinstance(piece, str) else piece)
+                for piece in _pieces(text):
+                    handle.write(piece)
                 handle.flush()
                 if self.sync_each:
                     os.fsync(handle.fileno())
@@ -401,8 +399,8 @@ class StagedFolder:
                          os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0),
                          0o666)  # the mode StagedSet gives its files: umask applies
             try:
-                for piece in [text] if isinstance(text, bytes) else text:
-                    _write_all(fd, _utf8(piece) if isinstance(piece, str) else piece)
+                for piece in _pieces(text):
+                    _write_all(fd, piece)
             finally:
                 os.close(fd)
         except OSError as err:
@@ -449,6 +447,12 @@ def refuse_special(path: str | os.PathLike) -> None:
 
         message = _not_regular(mode, "a file to write").replace("reads", "writes")
         raise InputError(message, file=str(path))
+
+
+def _pieces(text: str | bytes | Iterable[str | bytes]) -> Iterator[bytes]:
+    """A file's content, given whole or in pieces, as bytes to write (`_utf8` for text)."""
+    for piece in [text] if isinstance(text, (str, bytes)) else text:
+        yield _utf8(piece) if isinstance(piece, str) else piece
 
 
 def _utf8(text: str) -> bytes:
