@@ -398,7 +398,7 @@ def load(text: str) -> tuple[Any, Any]:
     global _COMPOSE_FIRST
     if _COMPOSE_FIRST is None:
         _COMPOSE_FIRST = _nests_itself()
-    compose_first = _COMPOSE_FIRST and not re.search(_ANCHOR, text)
+    compose_first = _COMPOSE_FIRST and ("&" not in text or not re.search(_ANCHOR, text))
     if not compose_first:
         prescan(text)
     import yaml

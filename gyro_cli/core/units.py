@@ -668,7 +668,8 @@ def written(text: str) -> tuple[str, str] | None:
     if match is None:
         return None
     number, unit = match.group(1), " ".join(match.group(2).split())
-    if unit and not re.fullmatch(_PLAIN_UNIT, unit):
+    # one name (rpm, oz, deg) needs no pattern: compiling it is a tenth of a millisecond
+    if unit and not (unit.isascii() and unit.isalpha()) and not re.fullmatch(_PLAIN_UNIT, unit):
         return None
     return number, unit
 
