@@ -20,7 +20,6 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
-from scipy.signal import find_peaks
 
 # ---------------------------------------------------------------- units
 SLUG_FT2 = 14.59390293720636 * 0.3048**2   # 1 slug ft^2 in kg m^2
@@ -801,6 +800,8 @@ def gd_yaml(given, find=GD_FIND):
 
 def measure_nutation(t, a, b):
     """Drift rate, nutation frequency and amplitudes measured on a(t), b(t)."""
+    from scipy.signal import find_peaks  # here: scipy.signal costs every test process a second
+
     sign = 1.0 if abs(np.max(a)) >= abs(np.min(a)) else -1.0
     peaks, _ = find_peaks(sign * a)
     tp = []
