@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 from functools import cache
+from typing import TYPE_CHECKING, Any
 
 from ..core.errors import InputError
 from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, exp, sqrt
@@ -30,6 +31,9 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
 from ..physics import steady
 from ..physics.algebra import cos_theta, quadratic_roots
+
+if TYPE_CHECKING:
+    from collections.abc import Callable
 
 RPM = 2 * math.pi / 60
 
@@ -61,7 +65,19 @@ m0, g0, l0, tdd0, V0 = names("m g l thetaddot V")
 
 #: the moment per unit sin(theta) in a sentence: m g l (gravity) or D (applied), by driver
 _MOMENT_OF = {"m g l": m0 * g0 * l0, "D": D_}
-_DRIVERS = tuple(_MOMENT_OF)
+
+
+class _Made(dict):
+    """Sentences by key (the driver, gravity or not), each made when a solve first asks for
+    it: a solve writes one driver's, and building both at import was start-up time."""
+
+    def __init__(self, make: Callable[[Any], Any]) -> None:
+        super().__init__()
+        self.make = make
+
+    def __missing__(self, key: Any) -> Any:
+        made = self[key] = self.make(key)
+        return made
 
 
 def _moment_of(driver: str) -> Expr:
@@ -94,7 +110,7 @@ def _conventions(gravity: bool) -> tuple:
             "fixed point; ", _AXIAL_RATE, " (Eq. 11.8); ", I_, " is about the fixed point")
 
 
-_CONVENTIONS = {gravity: _conventions(gravity) for gravity in (True, False)}
+_CONVENTIONS = _Made(_conventions)
 _I_DROPS_OUT = (_AT_90, ": ", _COS_0, ", so the transverse inertia ", I_, " drops out of Eq. "
                 "11.13 and is not needed")
 
@@ -412,18 +428,16 @@ def _axial_quadratic(driver: str) -> tuple:
             "    (Eq. 11.20)")
 
 
-_SPIN_QUADRATIC = {driver: _spin_quadratic(driver) for driver in _DRIVERS}
-_AXIAL_QUADRATIC = {driver: _axial_quadratic(driver) for driver in _DRIVERS}
+_SPIN_QUADRATIC = _Made(_spin_quadratic)
+_AXIAL_QUADRATIC = _Made(_axial_quadratic)
 #: the least psidot and the least omega_z with a real root (Eq. 11.21 corrected), by driver
-_LEAST_SPIN = {driver: 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_
-               for driver in _DRIVERS}
-_LEAST_AXIAL_RATE = {driver: 2 * sqrt(I_ * _moment_of(driver) * cos_(th)) / J_
-                     for driver in _DRIVERS}
+_LEAST_SPIN = _Made(lambda driver: 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_)
+_LEAST_AXIAL_RATE = _Made(lambda driver: 2 * sqrt(I_ * _moment_of(driver) * cos_(th)) / J_)
 _NO_PRECESSION = ("no moment: ", rel(phd, "=", 0), " (the body spinning about a fixed axis) also "
                   "solves the equation; it is no precession and is left out")
 #: "one root: the phidot^2 term vanishes (...)", at theta = 90 deg or with I = J
-_ONE_ROOT = {at_90: ("one root: the ", _PHIDOT_SQUARED, " term vanishes (",
-                     _AT_90 if at_90 else rel(I_, "=", J_), ")") for at_90 in (True, False)}
+_ONE_ROOT = _Made(lambda at_90: ("one root: the ", _PHIDOT_SQUARED, " term vanishes (",
+                                  _AT_90 if at_90 else rel(I_, "=", J_), ")"))
 _EXACT_AT_90 = ("at ", _AT_90, ", exact")
 
 
@@ -562,7 +576,7 @@ def _moment_title() -> tuple:
 
 
 #: the applied moment about the line of nodes, m g l sin(theta) (or D sin(theta)), by driver
-_APPLIED = {driver: _moment_of(driver) * sin_(th) for driver in _DRIVERS}
+_APPLIED = _Made(lambda driver: _moment_of(driver) * sin_(th))
 
 
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
@@ -584,9 +598,9 @@ def _moment(I: float, J: float, theta: float, spin: float, precession: float, D:
 
 
 #: (I - J) m g l cos(theta) <= 0: no least spin (Eq. 11.21), by driver
-_NO_LEAST_SPIN = {driver: (rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0), ": real "
-                           "roots for every spin, no least spin (",
-                           rel(names("psidot_min")[0], "=", 0), ")") for driver in _DRIVERS}
+_NO_LEAST_SPIN = _Made(lambda driver: (rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0),
+                                       ": real roots for every spin, no least spin (",
+                                       rel(names("psidot_min")[0], "=", 0), ")"))
 
 
 def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Work) -> None:
