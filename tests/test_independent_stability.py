@@ -951,13 +951,31 @@ def _bisect(f, a, b, n=100):
     return 0.5 * (a + b)
 
 
+def _scan(mats, vs, g):
+    """_weave_fn and _capsize_fn at every speed of vs, the eigenvalues and
+    determinants of all the speeds computed together (one call each)."""
+    M, C1, K0, K2 = mats
+    Minv = np.linalg.inv(M)
+    v = vs[:, None, None]
+    n = len(vs)
+    A = np.zeros((n, 4, 4))
+    A[:, :2, 2:] = np.eye(2)
+    A[:, 2:, :2] = -Minv @ (g * K0 + v * v * K2)
+    A[:, 2:, 2:] = -v * (Minv @ C1)
+    ev = np.linalg.eigvals(A)
+    osc = np.abs(ev.imag) > 1e-9 * np.maximum(1.0, np.abs(ev))
+    lead = np.where(osc, ev.real, -np.inf).max(axis=1)
+    wf = [float(x) if o else None for x, o in zip(lead, osc.any(axis=1))]
+    cf = np.linalg.det(g * K0 + v * v * K2)
+    return wf, cf
+
+
 def bicycle_speeds(mats, g, vmax=60.0, dv=0.005):
     """Weave speeds (an oscillatory pair crosses Re = 0) and capsize speeds (a real
     eigenvalue crosses 0), by a scan in v and bisection."""
     vs = np.arange(dv, vmax, dv)
     weave, capsize = [], []
-    wf = [_weave_fn(mats, v, g) for v in vs]
-    cf = [_capsize_fn(mats, v, g) for v in vs]
+    wf, cf = _scan(mats, vs, g)
     for i in range(len(vs) - 1):
         if wf[i] is not None and wf[i + 1] is not None and wf[i] * wf[i + 1] < 0:
             weave.append(_bisect(lambda v: _weave_fn(mats, v, g), vs[i], vs[i + 1]))
