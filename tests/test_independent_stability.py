@@ -562,7 +562,8 @@ def disk_integrate(beta, rho, Om, m, r, J, IG, g, kval, kick_rel=1e-9):
     half = np.polyfit(np.arange(len(tz)), tz, 1)[0]
     # the tilt stays within a few times kick / sqrt(k): the disturbance does not grow
     ts = np.linspace(0, 20 * T, 4000)
-    bet = np.array([math.asin(sol.sol(t)[2] / np.linalg.norm(sol.sol(t)[:3])) for t in ts])
+    ys = sol.sol(ts)
+    bet = np.arcsin(ys[2] / np.linalg.norm(ys[:3], axis=0))
     assert np.max(np.abs(bet - beta)) < 5 * kick_rel * max(np.linalg.norm(w0), 1.0) / wf
     return math.pi / half
 
