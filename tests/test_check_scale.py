@@ -184,12 +184,12 @@ def test_a_file_that_hangs_is_stopped_at_the_time_limit(monkeypatch, tmp_path, r
 
     monkeypatch.setattr(check, "check_file", hanging)
     start = time.monotonic()
-    result = run("check", tmp_path, "--jobs", jobs, "--timeout", "2", "--junit",
+    result = run("check", tmp_path, "--jobs", jobs, "--timeout", "1", "--junit",
                  tmp_path / "out.xml")
     assert time.monotonic() - start < 60
     assert result.exit_code == 3
     assert result.stderr.splitlines() == [
-        f"gyro: {files[1]}: internal error: took longer than the time limit of 2 s per file "
+        f"gyro: {files[1]}: internal error: took longer than the time limit of 1 s per file "
         "(--timeout); stopped (please report)"]
     assert result.stdout.count("  PASS  ") == 3 * 3  # the other files: two roots, min_spin
     root = ET.parse(tmp_path / "out.xml").getroot()
@@ -216,11 +216,11 @@ def test_the_failed_file_is_found_inside_a_batch(monkeypatch, tmp_path, how):
         return real(path, strict)
 
     monkeypatch.setattr(check, "check_file", failing)
-    results = list(check.checks(files, jobs=2, timeout=2 if how == "hang" else 60))
+    results = list(check.checks(files, jobs=2, timeout=1 if how == "hang" else 60))
     assert [p.file for p in results] == files
     assert [p.file for p in results if p.status != "pass"] == [bad]
     assert results[13].internal
-    assert ("died (killed by signal 11)" if how == "crash" else "time limit of 2 s") \
+    assert ("died (killed by signal 11)" if how == "crash" else "time limit of 1 s") \
         in results[13].error
 
 
