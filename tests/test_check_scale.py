@@ -255,14 +255,18 @@ def _both_ways(monkeypatch, text: str):
     return outcomes
 
 
+#: the limit of values the refusals below are tried at (safeyaml.MAX_NODES, 100,000, lowered:
+#: both ways read it where they compare, and lists of 100,000 values took seconds to parse)
+LIMIT = 1_000
+
 HOSTILE = {
     "deep flow": "a: " + "[" * 65 + "]" * 65 + "\n",
     "deep flow past libyaml's limit": "a: " + "[" * 5000 + "]" * 5000 + "\n",
     "deep block": "".join("  " * i + f"k{i}:\n" for i in range(70)) + "  " * 70 + "x: 1\n",
     "at the limit": "a: " + "[" * 63 + "]" * 63 + "\n",
-    "too many values": "a: [" + ", ".join(["1"] * 100_001) + "]\n",
-    "just enough values": "a: [" + ", ".join(["1"] * 99_997) + "]\n",
-    "deep and long": "b: [" + ", ".join(["1"] * 100_500) + "]\na: " + "[" * 70 + "]" * 70,
+    "too many values": "a: [" + ", ".join(["1"] * (LIMIT + 1)) + "]\n",
+    "just enough values": "a: [" + ", ".join(["1"] * (LIMIT - 3)) + "]\n",
+    "deep and long": "b: [" + ", ".join(["1"] * (LIMIT + 500)) + "]\na: " + "[" * 70 + "]" * 70,
     "undefined alias": "a: *x\n",
     "malformed": "a: [1, 2\nb: c\n",
     "empty": "",
@@ -276,6 +280,9 @@ HOSTILE = {
 
 @pytest.mark.parametrize("name", sorted(HOSTILE))
 def test_composing_first_refuses_what_the_event_walk_refuses(monkeypatch, name):
+    from gyro_cli.core import safeyaml
+
+    monkeypatch.setattr(safeyaml, "MAX_NODES", LIMIT)
     with_prescan, composed = _both_ways(monkeypatch, HOSTILE[name])
     assert with_prescan == composed
     refused = {"deep flow", "deep flow past libyaml's limit", "deep block", "too many values",
