@@ -29,7 +29,8 @@ from lxml import etree
 from test_export import remembered
 
 import gyro_cli
-from gyro_cli.render import html as worked, picture
+from gyro_cli.render import html as worked
+from gyro_cli.render import picture
 
 SCHEMAS = Path(__file__).parent / "lms-schemas"
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"

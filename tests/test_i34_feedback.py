@@ -45,7 +45,7 @@ def gyro(*args: object) -> object:
     return result
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _variant(path: Path) -> dict:
     """A variant file's data, read once (libyaml's loader: the pure-Python one took most
     of the class's set-up)."""

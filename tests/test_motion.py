@@ -16,7 +16,7 @@ from gyro_cli.physics import motion
 from gyro_cli.physics.nutation import Start, analyse
 
 
-@functools.lru_cache(maxsize=None)  # theta and phi, psi are checked against one integration
+@functools.cache  # theta and phi, psi are checked against one integration
 def _reference(top, start, periods: float, n: int = 2001):
     nut = analyse(top, start)
     t = np.linspace(0.0, periods * nut.nutation_period, n)

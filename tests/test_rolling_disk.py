@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 import pytest
-from rotations import K, cross, omega_of, rx, rz
+from rotations import K, omega_of, rx, rz
 from scipy.integrate import solve_ivp
 
 from gyro_cli.kinds.rolling_disk import (
