@@ -184,12 +184,12 @@ def test_a_file_that_hangs_is_stopped_at_the_time_limit(monkeypatch, tmp_path, r
 
     monkeypatch.setattr(check, "check_file", hanging)
     start = time.monotonic()
-    result = run("check", tmp_path, "--jobs", jobs, "--timeout", "2", "--junit",
+    result = run("check", tmp_path, "--jobs", jobs, "--timeout", "1", "--junit",
                  tmp_path / "out.xml")
     assert time.monotonic() - start < 60
     assert result.exit_code == 3
     assert result.stderr.splitlines() == [
-        f"gyro: {files[1]}: internal error: took longer than the time limit of 2 s per file "
+        f"gyro: {files[1]}: internal error: took longer than the time limit of 1 s per file "
         "(--timeout); stopped (please report)"]
     assert result.stdout.count("  PASS  ") == 3 * 3  # the other files: two roots, min_spin
     root = ET.parse(tmp_path / "out.xml").getroot()
@@ -216,11 +216,11 @@ def test_the_failed_file_is_found_inside_a_batch(monkeypatch, tmp_path, how):
         return real(path, strict)
 
     monkeypatch.setattr(check, "check_file", failing)
-    results = list(check.checks(files, jobs=2, timeout=2 if how == "hang" else 60))
+    results = list(check.checks(files, jobs=2, timeout=1 if how == "hang" else 60))
     assert [p.file for p in results] == files
     assert [p.file for p in results if p.status != "pass"] == [bad]
     assert results[13].internal
-    assert ("died (killed by signal 11)" if how == "crash" else "time limit of 2 s") \
+    assert ("died (killed by signal 11)" if how == "crash" else "time limit of 1 s") \
         in results[13].error
 
 
@@ -255,14 +255,18 @@ def _both_ways(monkeypatch, text: str):
     return outcomes
 
 
+#: the limit of values the refusals below are tried at (safeyaml.MAX_NODES, 100,000, lowered:
+#: both ways read it where they compare, and lists of 100,000 values took seconds to parse)
+LIMIT = 1_000
+
 HOSTILE = {
     "deep flow": "a: " + "[" * 65 + "]" * 65 + "\n",
     "deep flow past libyaml's limit": "a: " + "[" * 5000 + "]" * 5000 + "\n",
     "deep block": "".join("  " * i + f"k{i}:\n" for i in range(70)) + "  " * 70 + "x: 1\n",
     "at the limit": "a: " + "[" * 63 + "]" * 63 + "\n",
-    "too many values": "a: [" + ", ".join(["1"] * 100_001) + "]\n",
-    "just enough values": "a: [" + ", ".join(["1"] * 99_997) + "]\n",
-    "deep and long": "b: [" + ", ".join(["1"] * 100_500) + "]\na: " + "[" * 70 + "]" * 70,
+    "too many values": "a: [" + ", ".join(["1"] * (LIMIT + 1)) + "]\n",
+    "just enough values": "a: [" + ", ".join(["1"] * (LIMIT - 3)) + "]\n",
+    "deep and long": "b: [" + ", ".join(["1"] * (LIMIT + 500)) + "]\na: " + "[" * 70 + "]" * 70,
     "undefined alias": "a: *x\n",
     "malformed": "a: [1, 2\nb: c\n",
     "empty": "",
@@ -276,6 +280,9 @@ HOSTILE = {
 
 @pytest.mark.parametrize("name", sorted(HOSTILE))
 def test_composing_first_refuses_what_the_event_walk_refuses(monkeypatch, name):
+    from gyro_cli.core import safeyaml
+
+    monkeypatch.setattr(safeyaml, "MAX_NODES", LIMIT)
     with_prescan, composed = _both_ways(monkeypatch, HOSTILE[name])
     assert with_prescan == composed
     refused = {"deep flow", "deep flow past libyaml's limit", "deep block", "too many values",

@@ -161,10 +161,15 @@ def test_prose_is_split_by_the_parser():
     assert text(spans("up: a F_A - b F_B = M")[1][1]) == "a F_A - b F_B = M"
 
 
+_MARKDOWN: dict[str, str] = {}  # path -> its write-up: three tests read every problem's
+
+
 def _markdown(run, path) -> str:
-    result = run("solve", "--format", "markdown", path)
-    assert result.exit_code == 0, result.output
-    return result.stdout
+    if str(path) not in _MARKDOWN:
+        result = run("solve", "--format", "markdown", path)
+        assert result.exit_code == 0, result.output
+        _MARKDOWN[str(path)] = result.stdout
+    return _MARKDOWN[str(path)]
 
 
 def test_markdown_has_no_raw_signs_or_names(run):

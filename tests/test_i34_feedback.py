@@ -15,6 +15,7 @@ students copy another student's whole homework as printed in that student's file
 from __future__ import annotations
 
 import csv
+import functools
 import json
 import math
 import random
@@ -44,9 +45,16 @@ def gyro(*args: object) -> object:
     return result
 
 
+@functools.cache
+def _variant(path: Path) -> dict:
+    """A variant file's data, read once (libyaml's loader: the pure-Python one took most
+    of the class's set-up)."""
+    return yaml.load(path.read_text(), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+
+
 def _printed(variant: Path) -> dict[str, list[str]]:
     """A variant's answers as its file prints them (what a copier copies)."""
-    data = yaml.safe_load(variant.read_text())
+    data = _variant(variant)
     return {q: [str(v) for v in (vs if isinstance(vs, list) else [vs])]
             for q, vs in data["expected"].items()}
 
@@ -64,7 +72,7 @@ def _own_answers(rng: random.Random, pid: str, variant: Path) -> dict[str, list[
     printed = _printed(variant)
     mode = rng.choice(("each", "same", "given"))
     if mode == "given":  # a given value misread: the problem worked again from it
-        data = yaml.safe_load(variant.read_text())
+        data = _variant(variant)
         key = rng.choice(VARIED[pid])
         number, unit = str(data["given"][key]).split(maxsplit=1)
         worked = api.solve_file(str(variant), **{key: _written(float(number) * _slip(rng),

@@ -8,6 +8,7 @@ maths in Unicode, LaTeX typesets it, and the other printers keep it.
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 import shutil
@@ -33,10 +34,12 @@ ASCII_MATHS = re.compile(
     r"\d[eE][-+]?\d")
 
 
+@functools.cache  # two tests read every problem's words
 def _free_text(path: Path) -> list[tuple[str, str]]:
     """(field, text) of a problem's own words, without what is not prose: key names in
     backticks, {placeholders} of a statement and web addresses."""
-    data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    data = yaml.load(path.read_text(encoding="utf-8"),
+                     Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
     out = []
     for field in FREE_TEXT:
         value = data.get(field)

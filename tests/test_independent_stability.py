@@ -395,17 +395,41 @@ KV = np.array([0.0, 0.0, 1.0])
 
 
 def disk_wdot(k, w, m, r, J, IG, g):
-    k = k / np.linalg.norm(k)
-    c = k[2]
+    """wdot from the 3x3 system above, in plain floats: the integrations call this a
+    hundred thousand times, where numpy's cost per small array would be most of the time."""
+    k0, k1, c = k
+    n = math.sqrt(k0 * k0 + k1 * k1 + c * c)
+    k0, k1, c = k0 / n, k1 / n, c / n
+    w0, w1, w2 = w
     s = math.sqrt(1.0 - c * c)
-    u = (KV - c * k) / s
-    kd = cross(w, k)
-    cd = kd[2]
-    ud = (-cd * k - c * kd) / s + u * c * cd / s ** 2
-    A = IG * np.eye(3) + (J - IG) * np.outer(k, k) + m * r * r * (np.eye(3) - np.outer(u, u))
-    b = (-(J - IG) * (np.dot(w, kd) * k + np.dot(w, k) * kd)
-         - m * r * r * cross(u, cross(w, ud)) - m * g * r * cross(u, KV))
-    return np.linalg.solve(A, b)
+    u0, u1, u2 = -c * k0 / s, -c * k1 / s, (1.0 - c * c) / s
+    kd0, kd1, cd = w1 * c - w2 * k1, w2 * k0 - w0 * c, w0 * k1 - w1 * k0   # kdot = w x k
+    f = c * cd / s ** 2
+    ud0 = (-cd * k0 - c * kd0) / s + u0 * f
+    ud1 = (-cd * k1 - c * kd1) / s + u1 * f
+    ud2 = (-cd * c - c * cd) / s + u2 * f
+    a, mr2 = J - IG, m * r * r
+    # A = I_G 1 + (J - I_G) k k^T + m r^2 (1 - u u^T), symmetric
+    a00 = IG + a * k0 * k0 + mr2 * (1.0 - u0 * u0)
+    a11 = IG + a * k1 * k1 + mr2 * (1.0 - u1 * u1)
+    a22 = IG + a * c * c + mr2 * (1.0 - u2 * u2)
+    a01 = a * k0 * k1 - mr2 * u0 * u1
+    a02 = a * k0 * c - mr2 * u0 * u2
+    a12 = a * k1 * c - mr2 * u1 * u2
+    wkd, wk = w0 * kd0 + w1 * kd1 + w2 * cd, w0 * k0 + w1 * k1 + w2 * c
+    x0, x1, x2 = w1 * ud2 - w2 * ud1, w2 * ud0 - w0 * ud2, w0 * ud1 - w1 * ud0  # w x udot
+    mgr = m * g * r
+    b0 = -a * (wkd * k0 + wk * kd0) - mr2 * (u1 * x2 - u2 * x1) - mgr * u1     # u x K = (u1, -u0, 0)
+    b1 = -a * (wkd * k1 + wk * kd1) - mr2 * (u2 * x0 - u0 * x2) + mgr * u0
+    b2 = -a * (wkd * c + wk * cd) - mr2 * (u0 * x1 - u1 * x0)
+    # Cramer's rule
+    c00 = a11 * a22 - a12 * a12
+    c01 = a02 * a12 - a01 * a22
+    c02 = a01 * a12 - a02 * a11
+    det = a00 * c00 + a01 * c01 + a02 * c02
+    return np.array([(c00 * b0 + c01 * b1 + c02 * b2) / det,
+                     (c01 * b0 + (a00 * a22 - a02 * a02) * b1 + (a02 * a01 - a00 * a12) * b2) / det,
+                     (c02 * b0 + (a01 * a02 - a00 * a12) * b1 + (a00 * a11 - a01 * a01) * b2) / det])
 
 
 def disk_normal_force(k, w, wd, m, r, g):
@@ -538,7 +562,8 @@ def disk_integrate(beta, rho, Om, m, r, J, IG, g, kval, kick_rel=1e-9):
     half = np.polyfit(np.arange(len(tz)), tz, 1)[0]
     # the tilt stays within a few times kick / sqrt(k): the disturbance does not grow
     ts = np.linspace(0, 20 * T, 4000)
-    bet = np.array([math.asin(sol.sol(t)[2] / np.linalg.norm(sol.sol(t)[:3])) for t in ts])
+    ys = sol.sol(ts)
+    bet = np.arcsin(ys[2] / np.linalg.norm(ys[:3], axis=0))
     assert np.max(np.abs(bet - beta)) < 5 * kick_rel * max(np.linalg.norm(w0), 1.0) / wf
     return math.pi / half
 
@@ -951,13 +976,31 @@ def _bisect(f, a, b, n=100):
     return 0.5 * (a + b)
 
 
+def _scan(mats, vs, g):
+    """_weave_fn and _capsize_fn at every speed of vs, the eigenvalues and
+    determinants of all the speeds computed together (one call each)."""
+    M, C1, K0, K2 = mats
+    Minv = np.linalg.inv(M)
+    v = vs[:, None, None]
+    n = len(vs)
+    A = np.zeros((n, 4, 4))
+    A[:, :2, 2:] = np.eye(2)
+    A[:, 2:, :2] = -Minv @ (g * K0 + v * v * K2)
+    A[:, 2:, 2:] = -v * (Minv @ C1)
+    ev = np.linalg.eigvals(A)
+    osc = np.abs(ev.imag) > 1e-9 * np.maximum(1.0, np.abs(ev))
+    lead = np.where(osc, ev.real, -np.inf).max(axis=1)
+    wf = [float(x) if o else None for x, o in zip(lead, osc.any(axis=1))]
+    cf = np.linalg.det(g * K0 + v * v * K2)
+    return wf, cf
+
+
 def bicycle_speeds(mats, g, vmax=60.0, dv=0.005):
     """Weave speeds (an oscillatory pair crosses Re = 0) and capsize speeds (a real
     eigenvalue crosses 0), by a scan in v and bisection."""
     vs = np.arange(dv, vmax, dv)
     weave, capsize = [], []
-    wf = [_weave_fn(mats, v, g) for v in vs]
-    cf = [_capsize_fn(mats, v, g) for v in vs]
+    wf, cf = _scan(mats, vs, g)
     for i in range(len(vs) - 1):
         if wf[i] is not None and wf[i + 1] is not None and wf[i] * wf[i + 1] < 0:
             weave.append(_bisect(lambda v: _weave_fn(mats, v, g), vs[i], vs[i + 1]))

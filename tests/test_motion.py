@@ -4,6 +4,7 @@ differences, and across the start (either direction, any point of the band)."""
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -15,6 +16,7 @@ from gyro_cli.physics import motion
 from gyro_cli.physics.nutation import Start, analyse
 
 
+@functools.cache  # theta and phi, psi are checked against one integration
 def _reference(top, start, periods: float, n: int = 2001):
     nut = analyse(top, start)
     t = np.linspace(0.0, periods * nut.nutation_period, n)

@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 import pytest
-from rotations import K, cross, omega_of, rx, rz
+from rotations import K, omega_of, rx, rz
 from scipy.integrate import solve_ivp
 
 from gyro_cli.kinds.rolling_disk import (
@@ -72,29 +72,53 @@ def test_problem_11_6_by_hand(run, problems_dir):
     assert answers["moment"]["values"][0] == pytest.approx(1.5 * Omega ** 2 * 2, rel=1e-9)
 
 
-def rolling_disk_rhs(m, g, r, J, I):
-    """Newton-Euler for a rigid disk rolling without slipping; state G, v_G, k, omega."""
-    def rhs(t, y):
-        v, k, w = y[3:6], y[6:9], y[9:12]
-        k = k / np.linalg.norm(k)
-        u = K - (K @ k) * k
-        un = np.linalg.norm(u)
-        uh = u / un
-        rho = -r * uh  # from G to the contact point
-        kdot = cross(w, k)
-        udot = -(K @ kdot) * k - (K @ k) * kdot
-        rhodot = -r * (udot - (uh @ udot) * uh) / un
-        Iw = I * (np.eye(3) - np.outer(k, k)) + J * np.outer(k, k)
+def _x(a, b):
+    """a x b of two 3-tuples."""
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
-        def skew(a):
-            return np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-        A = np.zeros((9, 9))
-        b = np.zeros(9)
-        A[0:3, 0:3], A[0:3, 6:9], b[0:3] = m * np.eye(3), -np.eye(3), -m * g * K
-        A[3:6, 3:6], A[3:6, 6:9], b[3:6] = Iw, -skew(rho), -cross(w, Iw @ w)
-        A[6:9, 0:3], A[6:9, 3:6], b[6:9] = np.eye(3), -skew(rho), -cross(w, rhodot)
-        x = np.linalg.solve(A, b)
-        return np.concatenate([v, x[0:3], kdot, x[3:6]])
+
+def rolling_disk_rhs(m, g, r, J, I):
+    """Newton-Euler for a rigid disk rolling without slipping; state G, v_G, k, omega.
+
+    With rho from G to the contact point, the contact force F and a = dv_G/dt:
+        m a = F - m g K,   I_w wdot + w x I_w w = rho x F,   a = rho x wdot - w x rhodot
+    (the contact point at rest), so F = m a + m g K eliminates F and a:
+        (I_w - m [rho]x^2) wdot = -w x I_w w - m rho x (w x rhodot) + m g rho x K,
+    a 3x3 system solved by Cramer's rule in plain floats (the integrations call this
+    tens of thousands of times; numpy's cost per small array was most of their time)."""
+    def rhs(t, y):
+        v, (k0, k1, k2), w = y[3:6], y[6:9], tuple(y[9:12])
+        n = math.sqrt(k0 * k0 + k1 * k1 + k2 * k2)
+        k = (k0 / n, k1 / n, k2 / n)
+        u = (-k[2] * k[0], -k[2] * k[1], 1.0 - k[2] * k[2])   # K - (K.k) k
+        un = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
+        uh = (u[0] / un, u[1] / un, u[2] / un)
+        rho = (-r * uh[0], -r * uh[1], -r * uh[2])
+        kdot = _x(w, k)
+        udot = tuple(-kdot[2] * k[i] - k[2] * kdot[i] for i in range(3))
+        uu = sum(uh[i] * udot[i] for i in range(3))
+        rhodot = tuple(-r * (udot[i] - uu * uh[i]) / un for i in range(3))
+        kw = sum(k[i] * w[i] for i in range(3))
+        Iw_w = tuple(I * w[i] + (J - I) * kw * k[i] for i in range(3))
+        # I_w - m [rho]x^2 = I 1 + (J - I) k k^T + m (|rho|^2 1 - rho rho^T)
+        rr = rho[0] ** 2 + rho[1] ** 2 + rho[2] ** 2
+        A = [[(I + m * rr if i == j else 0.0) + (J - I) * k[i] * k[j] - m * rho[i] * rho[j]
+              for j in range(3)] for i in range(3)]
+        t1, t2, t3 = _x(w, Iw_w), _x(rho, _x(w, rhodot)), _x(rho, (0.0, 0.0, 1.0))
+        b = [-t1[i] - m * t2[i] + m * g * t3[i] for i in range(3)]
+        c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1]
+        c01 = A[1][2] * A[2][0] - A[1][0] * A[2][2]
+        c02 = A[1][0] * A[2][1] - A[1][1] * A[2][0]
+        det = A[0][0] * c00 + A[0][1] * c01 + A[0][2] * c02
+        wd = [(c00 * b[0] + (A[0][2] * A[2][1] - A[0][1] * A[2][2]) * b[1]
+               + (A[0][1] * A[1][2] - A[0][2] * A[1][1]) * b[2]) / det,
+              (c01 * b[0] + (A[0][0] * A[2][2] - A[0][2] * A[2][0]) * b[1]
+               + (A[0][2] * A[1][0] - A[0][0] * A[1][2]) * b[2]) / det,
+              (c02 * b[0] + (A[0][1] * A[2][0] - A[0][0] * A[2][1]) * b[1]
+               + (A[0][0] * A[1][1] - A[0][1] * A[1][0]) * b[2]) / det]
+        a = [p - q for p, q in zip(_x(rho, wd), _x(w, rhodot))]
+        return [v[0], v[1], v[2], a[0], a[1], a[2], kdot[0], kdot[1], kdot[2],
+                wd[0], wd[1], wd[2]]
     return rhs
 
 
