@@ -98,7 +98,7 @@ def test_files_are_written_atomically_and_not_clobbered(tmp_path, cusps, suffix,
                                                        monkeypatch):
     real, drawn = plot.render, []
 
-    def once(data, fmt):  # save renders before it looks at the target: the figure once
+    def once(data, fmt):  # the figure drawn once, for the first save and the forced one
         if not drawn:
             drawn.append(real(data, fmt))
         return drawn[0]
@@ -114,6 +114,25 @@ def test_files_are_written_atomically_and_not_clobbered(tmp_path, cusps, suffix,
     assert target.read_bytes() == content
     plot.save(data, str(target), force=True)
     assert [p.name for p in tmp_path.iterdir()] == [target.name]     # no temp file left
+
+
+def test_item01_a_plot_over_an_existing_file_is_refused_before_it_is_drawn(tmp_path, cusps,
+                                                                          monkeypatch):
+    """Without --force the refusal comes before matplotlib draws (a second or more), and a
+    special file is refused as such, not as existing."""
+    def never(data, fmt):
+        raise AssertionError("drawn for a file that will not be written")
+
+    monkeypatch.setattr(plot, "render", never)
+    data = plot.from_simulation(cusps, title="cusps", motion="cusps")
+    target = tmp_path / "top.png"
+    target.write_bytes(b"mine")
+    with pytest.raises(InputError, match="exists"):
+        plot.save(data, str(target))
+    assert target.read_bytes() == b"mine"
+    (tmp_path / "folder.png").mkdir()
+    with pytest.raises(InputError, match="directory"):
+        plot.save(data, str(tmp_path / "folder.png"), force=True)
 
 
 def test_unknown_plot_format_is_refused(tmp_path, cusps):

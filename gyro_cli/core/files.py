@@ -17,10 +17,20 @@ from __future__ import annotations
 
 import os
 import stat
+import sys
 from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 
 from .errors import InputError
+
+
+def refuse_target(target: Path, force: bool) -> None:
+    """InputError if ``target`` is no place to write (`refuse_special`) or exists (a
+    dangling link too) and not ``force``: asked before work whose only use is to be
+    written there (a figure drawn), and again as it is written."""
+    refuse_special(target)
+    if not force and (target.exists() or target.is_symlink()):
+        raise InputError("exists; not overwritten (use --force to replace it)", file=str(target))
 
 
 def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | bytes],
@@ -31,9 +41,7 @@ def write_atomic(path: str | os.PathLike, text: str | bytes | Iterable[str | byt
     The parent directory must exist. Returns the path written.
     """
     target = Path(path)
-    refuse_special(target)
-    if not force and (target.exists() or target.is_symlink()):
-        raise InputError("exists; not overwritten (use --force to replace it)", file=str(target))
+    refuse_target(target, force)
     parent = target.parent if str(target.parent) else Path(".")
     if not parent.is_dir():
         raise InputError(f"cannot write: no such directory {str(parent)!r}", file=str(target))
@@ -315,6 +323,7 @@ class StagedFolder:
     the parents made for it."""
 
     QUEUED = 64  # files handed over and not written yet, at most
+    SWITCH = float(os.environ.get("GYRO_SWITCH", "0.005"))  # seconds: see __init__
 
     def __init__(self, folder: str) -> None:
         import queue
@@ -346,6 +355,11 @@ class StagedFolder:
         self.dropped = False  # the set failed: what is still handed over is not written
         self.queue: queue.Queue[tuple[str, str, bytes] | None] = queue.Queue(self.QUEUED)
         self.writer = threading.Thread(target=self._write_queued, daemon=True)
+        # The writer needs the interpreter back after each of its system calls; at the
+        # default 5 ms switch interval it would wait that long for each, fall behind and
+        # block the drawing, so the interval is short while it runs.
+        self.interval = sys.getswitchinterval()
+        sys.setswitchinterval(min(self.interval, self.SWITCH))
         self.writer.start()
 
     def __enter__(self) -> StagedFolder:
@@ -368,6 +382,9 @@ class StagedFolder:
         if not path.startswith(self.prefix):
             raise ValueError(f"{path} is not in {self.prefix}")
         relative = path[len(self.prefix):]
+        if isinstance(text, (str, bytes)) and os.environ.get("GYRO_INLINE"):
+            self._write(path, relative, _utf8(text) if isinstance(text, str) else text)
+            return
         if isinstance(text, (str, bytes)):
             self.queue.put((path, relative, _utf8(text) if isinstance(text, str) else text))
             return
@@ -413,6 +430,7 @@ class StagedFolder:
         if self.writer.is_alive():
             self.queue.put(None)
             self.writer.join()
+        sys.setswitchinterval(self.interval)
 
     def place(self) -> None:
         """Wait for the writer, sync the disks once and rename the hidden folder into

@@ -237,7 +237,7 @@ def render(data: PathData, suffix: str) -> bytes:
 def save(data: PathData, path: str, force: bool = False) -> Path:
     """Render and write atomically; InputError if the file exists and not ``force``."""
     from ..core.errors import InputError
-    from ..core.files import write_atomic
+    from ..core.files import refuse_target, write_atomic
 
     suffix = Path(path).suffix
     if suffix.lower() not in FORMATS:
@@ -246,6 +246,7 @@ def save(data: PathData, path: str, force: bool = False) -> Path:
     if max(data.theta_max, float(np.max(data.theta))) < 1e-9:
         raise InputError("the axis stays on the vertical (a sleeping top): seen from above "
                          "its path is one point, so there is no figure to draw", file=path)
+    refuse_target(Path(path), force)  # before the drawing, a second or more of matplotlib
     return write_atomic(path, render(data, suffix), force=force)
 
 
