@@ -10,6 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from test_bad_input import one_line_error
+from test_i36_printers import switching_often
 
 # ---- item 23: a tagged YAML value is bad input naming its key, never exit 3 ----------
 
@@ -294,18 +295,18 @@ def test_item25_threads_render_what_one_thread_renders():
     def work(t: int) -> None:
         start.wait()
         # one round, each thread a different share of the problems and its own order of
-        # formats, so that every kind is drawn while others are (a second round, each
-        # problem drawn twice more, found nothing the first had not: every problem's prose
-        # keys are read by the render, so a swap in another thread shows at once)
+        # formats, so that every kind is drawn while others are (with the interpreter
+        # handed over every millisecond, a second round found nothing the first had not)
         for i in range(t, len(results), threads_n):
             for fmt in FORMATS[t % 5:] + FORMATS[:t % 5]:
                 if _render(results[i], fmt) != serial[i, fmt]:
                     wrong.append((results[i].id, fmt))
 
     pool = [threading.Thread(target=work, args=(t,)) for t in range(threads_n)]
-    for thread in pool:
-        thread.start()
-    for thread in pool:
-        thread.join()
+    with switching_often():
+        for thread in pool:
+            thread.start()
+        for thread in pool:
+            thread.join()
     assert not wrong, sorted(set(wrong))
 
