@@ -28,7 +28,9 @@ from __future__ import annotations
 import glob
 import os
 import shutil
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -140,8 +142,11 @@ def _axe(page, only: dict) -> dict:
                          "resultTypes: ['violations']})", only)
 
 
-def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
-    """Every check on one page; the list of what failed."""
+def _inspect(browser, axe, path: Path, shots: Path | None,
+             at_1024: Callable[[Any], None] | None = None) -> list[str]:
+    """Every check on one page; the list of what failed. ``at_1024``: a test's own checks
+    of the page as loaded, at 1024 px (the page then scrolled back to its top), so that
+    the page is not loaded a second time for them."""
     problems: list[str] = []
     page = browser.new_page(viewport={"width": 360, "height": 800}, color_scheme="light")
     errors: list[str] = []
@@ -163,6 +168,9 @@ def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
                 problems.append(f"{width} px: <math> with an empty box: {empty[:3]}")
             if width == 360 and shots is not None:
                 page.screenshot(path=str(shots / f"{path.stem}-360.png"), full_page=True)
+        if at_1024 is not None:
+            at_1024(page)
+            page.evaluate("window.scrollTo(0, 0)")
         if page.evaluate("document.querySelectorAll('math').length"):
             if page.evaluate(_MATH_COLOUR):
                 problems.append("a formula sets its own colour or background")
@@ -220,17 +228,19 @@ def test_check_report_in_chromium(browser, axe, pages, shots, tmp_path):
     report = gyro_cli.check(str(tmp_path / "wrong.yaml"), str(ROOT / "problems" / "11_4.yaml"))
     assert report.exit_code == 1
     check = _write(pages, "check.html", report.html(page=True))
-    assert _inspect(browser, axe, check, shots) == []
-    page = browser.new_page(viewport={"width": 1024, "height": 800})
-    try:
-        page.goto(check.as_uri())
+    links: list[tuple[str, str, bool]] = []
+
+    def follow_the_first_row(page) -> None:  # type: ignore[no-untyped-def]
         first = page.locator("tbody tr").first
-        assert first.locator("td").first.inner_text() == "FAIL"
+        result = first.locator("td").first.inner_text()
         first.locator("a").first.click()
         target = page.evaluate("location.hash")
-        assert target.endswith("-precession") and page.locator(target).is_visible()
-    finally:
-        page.close()
+        links.append((result, target, page.locator(target).is_visible()))
+
+    assert _inspect(browser, axe, check, shots, at_1024=follow_the_first_row) == []
+    [(result, target, visible)] = links
+    assert result == "FAIL"
+    assert target.endswith("-precession") and visible
 
 
 def test_solution_page_embeds_animations_that_play(browser, axe, pages, shots):
@@ -247,14 +257,13 @@ def test_solution_page_embeds_animations_that_play(browser, axe, pages, shots):
     assert out.exit_code == 0, out.output
     assert out.output.count("<canvas") == 3 and "script-src 'sha256-" in out.output
     path = _write(pages, "animated.html", out.output)
-    assert _inspect(browser, axe, path, shots) == []
-    page = browser.new_page(viewport={"width": 1024, "height": 800})
-    try:
-        page.goto(path.as_uri())
+    ink: list[int] = []
+
+    def drawn(page) -> None:  # type: ignore[no-untyped-def]
         page.wait_for_timeout(400)
-        ink = page.evaluate("""() => Array.from(document.querySelectorAll('canvas')).map(c => {
+        ink.extend(page.evaluate("""() => Array.from(document.querySelectorAll('canvas')).map(c => {
             const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; })""")
-    finally:
-        page.close()
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; })"""))
+
+    assert _inspect(browser, axe, path, shots, at_1024=drawn) == []
     assert len(ink) == 3 and min(ink) > 1000
