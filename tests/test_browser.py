@@ -12,12 +12,14 @@ screenshot at 360 px of each page is written there for the record (never committ
 Contrast is axe's costly rule (five sixths of its time on a folder page: it finds each
 text's background). A text's colours and size follow from the CSS of its path (each
 ancestor's tag, classes and style) and its own computed colour, size and weight, so the
-contrast is checked on one text of each such style: the others are blanked after every
-other check has run on the whole page. `make browser` ($GYRO_BROWSER_SWEEP=1) checks the
-contrast of every text, on eight smaller folder pages.
+contrast is checked on one text of each such style (marked; axe's contrast rule is
+given their selector), in the same axe run as every other rule on the whole page.
+`make browser` ($GYRO_BROWSER_SWEEP=1) checks the contrast of every text, on eight
+smaller folder pages.
 
 One browser per test process (conftest.py); each page is loaded once and checked at both
-widths and in both schemes. The tests skip, saying why, where Chromium or Playwright is
+widths and in both schemes (the scheme switched twice while the formulas are MathML,
+whose style is most of a page's, and once after they are text). The tests skip, saying why, where Chromium or Playwright is
 missing (`.ci/run` installs Chromium; `make test` installs the Python packages).
 """
 
@@ -26,7 +28,9 @@ from __future__ import annotations
 import glob
 import os
 import shutil
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -114,38 +118,35 @@ _MATH_AS_TEXT = """() => { for (const m of Array.from(document.querySelectorAll(
   const s = document.createElement('span'); s.textContent = m.textContent; m.replaceWith(s); } }"""
 
 
-# One text of each style keeps its words; the others are blanked (their elements stay,
-# so every background and box a kept text sits on is as it was), and the kept are marked
-# (axe looks only at them). The number kept.
-_ONE_TEXT_A_STYLE = """() => { const seen = new Set(), blank = [];
+# The first text of each style is marked, and axe's contrast rule looks only at the
+# marked (its selector; every other rule at the whole page). The number marked.
+_ONE_TEXT_A_STYLE = """() => { const seen = new Set();
   const mark = e => e.tagName + Array.from(e.classList).sort().map(c => '.' + c).join('')
     + (e.getAttribute('style') ? '{' + e.getAttribute('style') + '}' : '');
   for (const e of document.body.querySelectorAll('*')) {
-    const own = Array.from(e.childNodes).filter(n => n.nodeType === Node.TEXT_NODE
-                                                     && n.textContent.trim());
-    if (!own.length) continue;
+    if (!Array.from(e.childNodes).some(n => n.nodeType === Node.TEXT_NODE
+                                            && n.textContent.trim())) continue;
     const s = getComputedStyle(e);
     let key = [s.color, s.fontSize, s.fontWeight, s.opacity].join(' ');
     for (let x = e; x; x = x.parentElement) key = mark(x) + '>' + key;
-    if (seen.has(key)) blank.push(...own);
-    else { seen.add(key); e.setAttribute('data-contrast', ''); }
+    if (!seen.has(key)) { seen.add(key); e.setAttribute('data-contrast', ''); }
   }
-  for (const n of blank) n.textContent = '';
+  axe.configure({rules: [{id: 'color-contrast', selector: '[data-contrast]'}]});
   return seen.size; }"""
 _CONTRAST = {"type": "rule", "values": ["color-contrast"]}
 
 
-def _axe(page, only: dict, contrast: bool = True, marked: bool = False) -> dict:
-    """axe-core's violations on the page as it is now (formulas as text, see above); in
-    the elements _ONE_TEXT_A_STYLE kept where ``marked``."""
-    return page.evaluate("([only, contrast, marked]) => axe.run("
-                         "marked ? {include: [['[data-contrast]']]} : document, "
-                         "{runOnly: only, rules: {'color-contrast': {enabled: contrast}}, "
-                         "resultTypes: ['violations']})", [only, contrast, marked])
+def _axe(page, only: dict) -> dict:
+    """axe-core's violations on the page as it is now (formulas as text, see above)."""
+    return page.evaluate("(only) => axe.run(document, {runOnly: only, "
+                         "resultTypes: ['violations']})", only)
 
 
-def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
-    """Every check on one page; the list of what failed."""
+def _inspect(browser, axe, path: Path, shots: Path | None,
+             at_1024: Callable[[Any], None] | None = None) -> list[str]:
+    """Every check on one page; the list of what failed. ``at_1024``: a test's own checks
+    of the page as loaded, at 1024 px (the page then scrolled back to its top), so that
+    the page is not loaded a second time for them."""
     problems: list[str] = []
     page = browser.new_page(viewport={"width": 360, "height": 800}, color_scheme="light")
     errors: list[str] = []
@@ -167,22 +168,24 @@ def _inspect(browser, axe, path: Path, shots: Path | None) -> list[str]:
                 problems.append(f"{width} px: <math> with an empty box: {empty[:3]}")
             if width == 360 and shots is not None:
                 page.screenshot(path=str(shots / f"{path.stem}-360.png"), full_page=True)
+        if at_1024 is not None:
+            at_1024(page)
+            page.evaluate("window.scrollTo(0, 0)")
         if page.evaluate("document.querySelectorAll('math').length"):
             if page.evaluate(_MATH_COLOUR):
                 problems.append("a formula sets its own colour or background")
             page.emulate_media(color_scheme="dark")
             if page.evaluate(_MATH_COLOUR):
                 problems.append("dark: a formula sets its own colour or background")
+            page.evaluate(_MATH_AS_TEXT)  # before light comes back: its styles are then found
+            # for spans of text, not again for every MathML element
             page.emulate_media(color_scheme="light")
-            page.evaluate(_MATH_AS_TEXT)
         page.evaluate(axe.axe_script)  # axe-core, once per page
-        light = _axe(page, {"type": "tag", "values": WCAG}, contrast=SWEEP)
         if not SWEEP:
             assert page.evaluate(_ONE_TEXT_A_STYLE) > 0
-            contrast = _axe(page, _CONTRAST, marked=True)
-            light["violations"] += contrast["violations"]
+        light = _axe(page, {"type": "tag", "values": WCAG})
         page.emulate_media(color_scheme="dark")
-        dark = _axe(page, _CONTRAST, marked=not SWEEP)
+        dark = _axe(page, _CONTRAST)
         for scheme, result in (("light", light), ("dark", dark)):
             for v in result["violations"]:
                 node = v["nodes"][0]
@@ -225,17 +228,19 @@ def test_check_report_in_chromium(browser, axe, pages, shots, tmp_path):
     report = gyro_cli.check(str(tmp_path / "wrong.yaml"), str(ROOT / "problems" / "11_4.yaml"))
     assert report.exit_code == 1
     check = _write(pages, "check.html", report.html(page=True))
-    assert _inspect(browser, axe, check, shots) == []
-    page = browser.new_page(viewport={"width": 1024, "height": 800})
-    try:
-        page.goto(check.as_uri())
+    links: list[tuple[str, str, bool]] = []
+
+    def follow_the_first_row(page) -> None:  # type: ignore[no-untyped-def]
         first = page.locator("tbody tr").first
-        assert first.locator("td").first.inner_text() == "FAIL"
+        result = first.locator("td").first.inner_text()
         first.locator("a").first.click()
         target = page.evaluate("location.hash")
-        assert target.endswith("-precession") and page.locator(target).is_visible()
-    finally:
-        page.close()
+        links.append((result, target, page.locator(target).is_visible()))
+
+    assert _inspect(browser, axe, check, shots, at_1024=follow_the_first_row) == []
+    [(result, target, visible)] = links
+    assert result == "FAIL"
+    assert target.endswith("-precession") and visible
 
 
 def test_solution_page_embeds_animations_that_play(browser, axe, pages, shots):
@@ -252,14 +257,13 @@ def test_solution_page_embeds_animations_that_play(browser, axe, pages, shots):
     assert out.exit_code == 0, out.output
     assert out.output.count("<canvas") == 3 and "script-src 'sha256-" in out.output
     path = _write(pages, "animated.html", out.output)
-    assert _inspect(browser, axe, path, shots) == []
-    page = browser.new_page(viewport={"width": 1024, "height": 800})
-    try:
-        page.goto(path.as_uri())
+    ink: list[int] = []
+
+    def drawn(page) -> None:  # type: ignore[no-untyped-def]
         page.wait_for_timeout(400)
-        ink = page.evaluate("""() => Array.from(document.querySelectorAll('canvas')).map(c => {
+        ink.extend(page.evaluate("""() => Array.from(document.querySelectorAll('canvas')).map(c => {
             const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; })""")
-    finally:
-        page.close()
+            let n = 0; for (let i = 0; i < d.length; i += 4) if (d[i] < 200) n++; return n; })"""))
+
+    assert _inspect(browser, axe, path, shots, at_1024=drawn) == []
     assert len(ink) == 3 and min(ink) > 1000
