@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import os
 import stat
-import sys
 from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 
@@ -323,7 +322,6 @@ class StagedFolder:
     the parents made for it."""
 
     QUEUED = 64  # files handed over and not written yet, at most
-    SWITCH = float(os.environ.get("GYRO_SWITCH", "0.005"))  # seconds: see __init__
 
     def __init__(self, folder: str) -> None:
         import queue
@@ -355,11 +353,6 @@ class StagedFolder:
         self.dropped = False  # the set failed: what is still handed over is not written
         self.queue: queue.Queue[tuple[str, str, bytes] | None] = queue.Queue(self.QUEUED)
         self.writer = threading.Thread(target=self._write_queued, daemon=True)
-        # The writer needs the interpreter back after each of its system calls; at the
-        # default 5 ms switch interval it would wait that long for each, fall behind and
-        # block the drawing, so the interval is short while it runs.
-        self.interval = sys.getswitchinterval()
-        sys.setswitchinterval(min(self.interval, self.SWITCH))
         self.writer.start()
 
     def __enter__(self) -> StagedFolder:
@@ -382,9 +375,6 @@ class StagedFolder:
         if not path.startswith(self.prefix):
             raise ValueError(f"{path} is not in {self.prefix}")
         relative = path[len(self.prefix):]
-        if isinstance(text, (str, bytes)) and os.environ.get("GYRO_INLINE"):
-            self._write(path, relative, _utf8(text) if isinstance(text, str) else text)
-            return
         if isinstance(text, (str, bytes)):
             self.queue.put((path, relative, _utf8(text) if isinstance(text, str) else text))
             return
@@ -430,7 +420,6 @@ class StagedFolder:
         if self.writer.is_alive():
             self.queue.put(None)
             self.writer.join()
-        sys.setswitchinterval(self.interval)
 
     def place(self) -> None:
         """Wait for the writer, sync the disks once and rename the hidden folder into
