@@ -136,3 +136,26 @@ def test_item02_help_and_version_say_what_click_says(tmp_path):
                                               done.stdout)
     done = subprocess.run([*run, "solve"], capture_output=True, text=True, env=env)
     assert done.returncode == 2 and "Try 'gyro solve --help' for help." in done.stderr
+
+
+def test_item02_a_long_unit_table_is_read_by_json_as_from_json_reads_it(tmp_path, monkeypatch):
+    """Past AST_MAX characters the table is read by json (ast.parse of a table near
+    MAX_BYTES would take hundreds of milliseconds a run): the same tables either way, a
+    damaged long table still ignored."""
+    monkeypatch.setenv("GYRO_CACHE_DIR", str(tmp_path))
+    unit_cache.forget()
+    made = unit_cache.stamp()
+    assert made is not None
+    parse = {f"u{n}\x1flength\x1f0": [1.0 + n / 7, f"u{n}", n % 2 == 0] for n in range(300)}
+    text = json.dumps({"parse": parse, "shown": {}, "to": {"rate\x1frpm": 9.5}, "stamp": made})
+    assert len(text) > unit_cache.AST_MAX
+    assert unit_cache.read_table(text) == unit_cache.from_json(text) == json.loads(text)
+    (tmp_path / "units.json").write_text(text)
+    try:
+        assert unit_cache.get("parse", "u123", "length", 0) == parse["u123\x1flength\x1f0"]
+        assert unit_cache.get("to", "rate", "rpm") == 9.5
+        unit_cache.forget()
+        (tmp_path / "units.json").write_text(text[:-40])  # cut short: not JSON
+        assert unit_cache.get("parse", "u123", "length", 0) is None
+    finally:
+        unit_cache.forget()
