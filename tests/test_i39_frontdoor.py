@@ -3,8 +3,9 @@ alone (item 3), and the hooks for course repositories (item 4).
 
 The slow ones build things as a user would, offline: the site with mkdocs in strict
 mode (~10 s), the sdist and wheel with ``python -m build`` then the wheel in a fresh
-virtual environment (~30 s), and the pre-commit hook through ``pre-commit try-repo``
-(~30-60 s, most of it pre-commit making the hook's environment). The wheel and the hook
+virtual environment (~30 s), and the pre-commit hook named in a course repository's
+configuration and run by ``pre-commit run`` (~10 s, most of it pre-commit making the hook's
+environment). The wheel and the hook
 take their dependencies (numpy, scipy, pint...) from this test's own environment rather
 than from a package index, so they need no network; gyro itself is always the one
 installed from the built package, never this checkout.
@@ -295,14 +296,23 @@ def test_item4_pre_commit_hook_passes_right_key_and_fails_wrong(tmp_path: Path) 
                      PYTHONPATH=str(_dependencies_dir(tmp_path / "deps")),
                      GYRO_CACHE_DIR=str(tmp_path / "cache"))
 
-    def try_repo(*files: str) -> subprocess.CompletedProcess[str]:
-        return _run([sys.executable, "-m", "pre_commit", "try-repo", gyro_repo, "gyro-check",
-                     "--files", *files], cwd=course, env=env)
+    # The course repository names the hook as course repositories do (repo and rev in its
+    # .pre-commit-config.yaml): the hook's environment is made once, for both runs (try-repo
+    # would make it again for each, 6 s).
+    rev = subprocess.run(["git", "rev-parse", "HEAD"], cwd=gyro_repo, check=True,
+                         capture_output=True, text=True).stdout.strip()
+    (course / ".pre-commit-config.yaml").write_text(
+        f"repos:\n  - repo: {gyro_repo}\n    rev: {rev}\n    hooks:\n      - id: gyro-check\n")
+    _git(course, "add", ".pre-commit-config.yaml")
 
-    right = try_repo("problems/right.yaml", ".github/workflows/ci.yml")
+    def hook(*files: str) -> subprocess.CompletedProcess[str]:
+        return _run([sys.executable, "-m", "pre_commit", "run", "gyro-check", "--files", *files],
+                    cwd=course, env=env)
+
+    right = hook("problems/right.yaml", ".github/workflows/ci.yml")
     assert right.returncode == 0, right.stdout + right.stderr
     assert re.search(r"gyro check \(answer keys\)\.+Passed", right.stdout), right.stdout
-    wrong = try_repo("problems/wrong.yaml", "problems/right.yaml")
+    wrong = hook("problems/wrong.yaml", "problems/right.yaml")
     assert wrong.returncode == 1, wrong.stdout + wrong.stderr
     assert re.search(r"FAIL\s+min_spin", wrong.stdout) and "exit code: 1" in wrong.stdout, wrong.stdout
 
