@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import math
 from functools import cache
-from typing import TYPE_CHECKING, Any
 
 from ..core.errors import InputError
 from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, exp, sqrt
@@ -31,9 +30,6 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
 from ..physics import steady
 from ..physics.algebra import cos_theta, quadratic_roots
-
-if TYPE_CHECKING:
-    from collections.abc import Callable
 
 RPM = 2 * math.pi / 60
 
@@ -67,19 +63,6 @@ m0, g0, l0, tdd0, V0 = names("m g l thetaddot V")
 _MOMENT_OF = {"m g l": m0 * g0 * l0, "D": D_}
 
 
-class _Made(dict):
-    """Sentences by key (the driver, gravity or not), each made when a solve first asks for
-    it: a solve writes one driver's, and building both at import was start-up time."""
-
-    def __init__(self, make: Callable[[Any], Any]) -> None:
-        super().__init__()
-        self.make = make
-
-    def __missing__(self, key: Any) -> Any:
-        made = self[key] = self.make(key)
-        return made
-
-
 def _moment_of(driver: str) -> Expr:
     """The moment per unit sin(theta) in a sentence: m g l (gravity) or D (applied)."""
     return _MOMENT_OF[driver]
@@ -99,6 +82,9 @@ _AXIAL_RATE = rel(wz, "=", psd + phd * cos_(th))  # omega_z = psidot + phidot co
 _DROPPED_TERM = I_ * phd * cos_(th)  # the term of Eq. 11.13 the gyroscopic approximation drops
 
 
+# Made on first use, once (functools.cache), as the sentences by driver below: a solve
+# writes one case's, not both.
+@cache
 def _conventions(gravity: bool) -> tuple:
     """Euler angles, the rates and H; with ``gravity`` its potential V (Eq. 11.11)."""
     return ("Euler angles z-x-z; ", th, " from the upward vertical to the axis through the "
@@ -110,7 +96,6 @@ def _conventions(gravity: bool) -> tuple:
             "fixed point; ", _AXIAL_RATE, " (Eq. 11.8); ", I_, " is about the fixed point")
 
 
-_CONVENTIONS = _Made(_conventions)
 _I_DROPS_OUT = (_AT_90, ": ", _COS_0, ", so the transverse inertia ", I_, " drops out of Eq. "
                 "11.13 and is not needed")
 
@@ -204,7 +189,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                          "I_cg or k_cg (with cg_distance) or a shape (only at theta = 90 deg "
                          "does it drop out)", key="given.I_pivot")
     work.section("Conventions (errata)")
-    work.text(*_CONVENTIONS["moment" not in given and bool(body.l)])
+    work.text(*_conventions("moment" not in given and bool(body.l)))
     if body.I_pivot is None and cos == 0:
         work.text(*_I_DROPS_OUT)
     D, driver = _driver(given, theta, work)
@@ -414,12 +399,14 @@ _STEADY_TITLE = ("Steady precession, Eq. 11.13 with ", _THETA_STEADY, " and ", _
 _PHIDOT_SQUARED = phd ** 2
 
 
+@cache
 def _spin_quadratic(driver: str) -> tuple:
     """(J - I) cos(theta) phidot^2 + J psidot phidot - m g l = 0 (Eq. 11.13, thetaddot = 0)."""
     return (rel((J_ - I_) * cos_(th) * _PHIDOT_SQUARED + J_ * psd * phd - _moment_of(driver), "=",
                 0),)
 
 
+@cache
 def _axial_quadratic(driver: str) -> tuple:
     """phidot^2 cos(theta) - gamma phidot + a / 2 = 0 with its gamma and a (Eq. 11.20)."""
     gamma, a_ = names("gamma a")
@@ -428,16 +415,31 @@ def _axial_quadratic(driver: str) -> tuple:
             "    (Eq. 11.20)")
 
 
-_SPIN_QUADRATIC = _Made(_spin_quadratic)
-_AXIAL_QUADRATIC = _Made(_axial_quadratic)
-#: the least psidot and the least omega_z with a real root (Eq. 11.21 corrected), by driver
-_LEAST_SPIN = _Made(lambda driver: 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_)
-_LEAST_AXIAL_RATE = _Made(lambda driver: 2 * sqrt(I_ * _moment_of(driver) * cos_(th)) / J_)
+@cache
+def _least_spin(driver: str) -> Expr:
+    """The least psidot with a real root (Eq. 11.21 corrected)."""
+    return 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_
+
+
+@cache
+def _least_axial_rate(driver: str) -> Expr:
+    """The least omega_z with a real root (Eq. 11.21 corrected)."""
+    return 2 * sqrt(I_ * _moment_of(driver) * cos_(th)) / J_
+
+
+
 _NO_PRECESSION = ("no moment: ", rel(phd, "=", 0), " (the body spinning about a fixed axis) also "
                   "solves the equation; it is no precession and is left out")
-#: "one root: the phidot^2 term vanishes (...)", at theta = 90 deg or with I = J
-_ONE_ROOT = _Made(lambda at_90: ("one root: the ", _PHIDOT_SQUARED, " term vanishes (",
-                                  _AT_90 if at_90 else rel(I_, "=", J_), ")"))
+
+
+@cache
+def _one_root(at_90: bool) -> tuple:
+    """One root: the phidot^2 term vanishes, at theta = 90 deg or with I = J."""
+    return ("one root: the ", _PHIDOT_SQUARED, " term vanishes (",
+            _AT_90 if at_90 else rel(I_, "=", J_), ")")
+
+
+
 _EXACT_AT_90 = ("at ", _AT_90, ", exact")
 
 
@@ -448,20 +450,20 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
     if rate == "spin":
         spin = given["spin"]
         a, b = (J - I) * cos, J * spin
-        work.text(*_SPIN_QUADRATIC[driver])
+        work.text(*_spin_quadratic(driver))
         work.text(rel(paren(q(a, "kg m^2")) * _PHIDOT_SQUARED + paren(q(b, "kg m^2/s")) * phd
                       - q(D, "N m"), "=", 0))
         roots = precession_from_spin(I, J, theta, spin, D)
-        least, formula = min_spin(I, J, theta, D), _LEAST_SPIN[driver]
+        least, formula = min_spin(I, J, theta, D), _least_spin(driver)
         symbol = "psidot"
     else:
         axial = given["axial_rate"]
-        work.text(*_AXIAL_QUADRATIC[driver])
+        work.text(*_axial_quadratic(driver))
         J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
         work.step("gamma", J_v * _rate("omega_z", axial) / I_v, unit="rad/s")
         work.step("a", 2 * _driver_tree(D, driver) / I_v, unit="1/s^2")
         roots = precession_from_axial_rate(I, J, theta, axial, D)
-        least, formula = min_axial_rate(I, J, theta, D), _LEAST_AXIAL_RATE[driver]
+        least, formula = min_axial_rate(I, J, theta, D), _least_axial_rate(driver)
         symbol, spin = "omega_z", None
     if D == 0 and 0.0 in roots:
         roots = [r for r in roots if r != 0.0]
@@ -488,7 +490,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
                                                    names(_least(symbol))[0], "=", formula, "=",
                                                    q(least, "rad/s")), "    (Eq. 11.21)")
     if len(roots) == 1:
-        work.text(*_ONE_ROOT[abs(cos) < 1e-12])
+        work.text(*_one_root(abs(cos) < 1e-12))
     labels = _labels(roots)
     if abs(cos) == 0 and len(roots) == 1 and D:
         omega = given["spin"] if rate == "spin" else given["axial_rate"]
@@ -575,8 +577,10 @@ def _moment_title() -> tuple:
             rel(_DH, "=", names("M")[0]), ")")
 
 
-#: the applied moment about the line of nodes, m g l sin(theta) (or D sin(theta)), by driver
-_APPLIED = _Made(lambda driver: _moment_of(driver) * sin_(th))
+@cache
+def _applied(driver: str) -> Expr:
+    """The applied moment about the line of nodes, m g l sin(theta) (or D sin(theta))."""
+    return _moment_of(driver) * sin_(th)
 
 
 def _moment(I: float, J: float, theta: float, spin: float, precession: float, D: float,
@@ -590,17 +594,19 @@ def _moment(I: float, J: float, theta: float, spin: float, precession: float, D:
     M = work.step("M", phidot * sin_(th_v) * (J_v * _rate("omega_z", axial) - I_v * phidot
                                               * cos_(th_v)), unit="N*m")  # moment_required
     if D:
-        work.text("of which ", rel(_APPLIED[driver], "=", q(D * sin, "N m")),
+        work.text("of which ", rel(_applied(driver), "=", q(D * sin, "N m")),
                   " is supplied; the rest, ", q(M - D * sin, "N m"), ", must be applied")
     work.answer("spin", "psidot", [spin], "rate")
     work.answer("axial_rate", "omega_z", [axial], "rate")
     work.answer("moment", "M", [M], "moment")
 
 
-#: (I - J) m g l cos(theta) <= 0: no least spin (Eq. 11.21), by driver
-_NO_LEAST_SPIN = _Made(lambda driver: (rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0),
-                                       ": real roots for every spin, no least spin (",
-                                       rel(names("psidot_min")[0], "=", 0), ")"))
+@cache
+def _no_least_spin(driver: str) -> tuple:
+    """(I - J) m g l cos(theta) <= 0: no least spin (Eq. 11.21)."""
+    return (rel((I_ - J_) * _moment_of(driver) * cos_(th), "<=", 0),
+            ": real roots for every spin, no least spin (", rel(names("psidot_min")[0], "=", 0),
+            ")")
 
 
 def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Work) -> None:
@@ -614,7 +620,7 @@ def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Wor
         work.step("psidot_min", 2 * sqrt(difference * _driver_tree(D, driver) * cos_value)
                   / J_v, unit="rad/s")
     else:
-        work.text(*_NO_LEAST_SPIN[driver])
+        work.text(*_no_least_spin(driver))
     work.answer("min_spin", "psidot_min", [least], "rate")
 
 
@@ -630,7 +636,7 @@ def _check(I: float, J: float, theta: float, spins: list[float], precessions: li
         rate = moment_required(I, J, theta, spin, precession)
         work.check(rel(phd, "=", q(precession, "rad/s")), ": ",
                    rel(_DH, "=", _RATE_OF_H, "=", q(rate, "N m")), "; applied ",
-                   rel(_APPLIED[driver], "=", q(D * math.sin(theta), "N m")))
+                   rel(_applied(driver), "=", q(D * math.sin(theta), "N m")))
 
 
 def _least(symbol: str) -> str:
