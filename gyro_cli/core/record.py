@@ -38,6 +38,16 @@ class _Missing:
 MISSING: Any = _Missing()
 
 
+def _theirs(dataclasses: Any, value: Any) -> Any:
+    """``value`` with this module's MISSING as dataclasses' own."""
+    return dataclasses.MISSING if value is MISSING else value
+
+
+def _ours(dataclasses: Any, value: Any) -> Any:
+    """``value`` with dataclasses' MISSING as this module's."""
+    return MISSING if value is dataclasses.MISSING else value
+
+
 class _Field:
     """What ``field()`` says of a field (its default or default factory), until
     dataclasses is imported."""
@@ -55,9 +65,8 @@ def field(*, default: Any = MISSING, default_factory: Any = MISSING) -> Any:
         raise ValueError("cannot specify both default and default_factory")
     dataclasses = sys.modules.get("dataclasses")
     if dataclasses is not None:
-        return dataclasses.field(
-            default=dataclasses.MISSING if default is MISSING else default,
-            default_factory=dataclasses.MISSING if default_factory is MISSING else default_factory)
+        return dataclasses.field(default=_theirs(dataclasses, default),
+                                 default_factory=_theirs(dataclasses, default_factory))
     return _Field(default, default_factory)
 
 
@@ -75,9 +84,8 @@ class _Fields:
 
             made = {}
             for name, (type_, default, factory) in self.spec.items():
-                one: Any = dataclasses.field(
-                    default=dataclasses.MISSING if default is MISSING else default,
-                    default_factory=dataclasses.MISSING if factory is MISSING else factory)
+                one: Any = dataclasses.field(default=_theirs(dataclasses, default),
+                                             default_factory=_theirs(dataclasses, factory))
                 # the marker dataclasses.fields() keeps a field by
                 one.name, one.type = name, type_
                 one._field_type = dataclasses._FIELD  # type: ignore[attr-defined]
@@ -179,8 +187,7 @@ def _inherited(base: type) -> dict[str, tuple[Any, Any, Any]]:
         return {}
     import dataclasses
 
-    return {f.name: (f.type, MISSING if f.default is dataclasses.MISSING else f.default,
-                     MISSING if f.default_factory is dataclasses.MISSING else f.default_factory)
+    return {f.name: (f.type, _ours(dataclasses, f.default), _ours(dataclasses, f.default_factory))
             for f in dataclasses.fields(base)}
 
 
@@ -196,8 +203,7 @@ def _make(cls: _T, frozen: bool) -> _T:
         if isinstance(default, _Field) or (dataclasses and isinstance(default, dataclasses.Field)):
             value, factory = default.default, default.default_factory
             if dataclasses and isinstance(default, dataclasses.Field):
-                value = MISSING if value is dataclasses.MISSING else value
-                factory = MISSING if factory is dataclasses.MISSING else factory
+                value, factory = _ours(dataclasses, value), _ours(dataclasses, factory)
             if value is MISSING:
                 delattr(cls, name)
             else:
