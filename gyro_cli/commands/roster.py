@@ -213,7 +213,6 @@ class KeyWriter:
     FLUSH = 1 << 20  # bytes held before they go to the temporary files
 
     def __init__(self, head: dict[str, Any]) -> None:
-        import json
         import tempfile
 
         self.head = head  # format, code, seed, problems
@@ -225,7 +224,7 @@ class KeyWriter:
         self.held: list[bytes] = []
         self.held_canonical: list[bytes] = []
         self.size = self.held_size = 0
-        self.held.append((json.dumps(head, allow_nan=False)[:-1] + ', "variants": {').encode())
+        self.held.append((_KEY_TEXT.encode(head)[:-1] + ', "variants": {').encode())
 
     def add(self, variant_id: str, entry: dict[str, Any]) -> None:
         piece = _KEY_TEXT.encode({variant_id: entry})[1:-1]
@@ -258,8 +257,6 @@ class KeyWriter:
 
     def chunks(self) -> Iterator[bytes]:
         """key.json: what was written, then the digest."""
-        import json
-
         tail = f'}}, "digest": {json.dumps(self.digest())}}}'.encode()
         self.text.seek(0)
         while True:

@@ -351,7 +351,7 @@ class StagedFolder:
         self.done = False
         self.failed: Exception | None = None  # the writer's error, raised by the next call
         self.dropped = False  # the set failed: what is still handed over is not written
-        self.queue: queue.Queue[tuple[str, str, bytes] | None] = queue.Queue(self.QUEUED)
+        self.queue: queue.Queue[tuple[str, str, str | bytes] | None] = queue.Queue(self.QUEUED)
         self.writer = threading.Thread(target=self._write_queued, daemon=True)
         self.writer.start()
 
@@ -376,7 +376,7 @@ class StagedFolder:
             raise ValueError(f"{path} is not in {self.prefix}")
         relative = path[len(self.prefix):]
         if isinstance(text, (str, bytes)):
-            self.queue.put((path, relative, _utf8(text) if isinstance(text, str) else text))
+            self.queue.put((path, relative, text))
             return
         self.queue.join()
         if self.failed is not None:
@@ -396,7 +396,7 @@ class StagedFolder:
             finally:
                 self.queue.task_done()
 
-    def _write(self, path: str, relative: str, text: bytes | Iterable[str | bytes]) -> None:
+    def _write(self, path: str, relative: str, text: str | bytes | Iterable[str | bytes]) -> None:
         below = os.path.dirname(relative)
         try:
             if below not in self.folders:
