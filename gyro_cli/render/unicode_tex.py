@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from functools import lru_cache
 
 __all__ = ["UNICODE_MATH", "UNICODE_TEXT", "text_tex"]
 
@@ -72,12 +73,27 @@ _LATIN_SUB = re.compile(rf"(?<![\w\\])[A-Za-z]_(?P<plain>[A-Za-z0-9]{{1,8}}(?![A
                         rf"[{_GREEK_CLASS}](?![\w]))")
 
 
+# A run of printable ASCII that LaTeX sets as itself: taken whole, where each of its
+# characters would be tried against every pattern in turn. Its last letter is left to
+# them when something follows (``I_G``, a letter and a combining accent).
+_PLAIN = re.compile(r"[^\x00-\x1f\x7f-\U0010ffff" + re.escape("".join(TEXT_ESCAPES)) + "]+")
+
+
+@lru_cache(maxsize=4096)  # a handout sets the same sentences, titles and units again
 def text_tex(text: str) -> str:
     """``text`` in LaTeX text mode, its Unicode maths as inline maths."""
     pieces: list[tuple[bool, str]] = []  # (is maths, LaTeX)
     text = unicodedata.normalize("NFC", text)  # ≠ stays one sign; ψ̇ has no composed form
     pos = 0
     while pos < len(text):
+        plain = _PLAIN.match(text, pos)
+        end = plain.end() if plain else pos
+        if end < len(text) and end > pos and text[end - 1].isalpha():
+            end -= 1
+        if end > pos:
+            pieces.append((False, text[pos:end]))
+            pos = end
+            continue
         pos = _next_piece(text, pos, pieces)
     return _joined(pieces)
 
