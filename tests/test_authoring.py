@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 import yaml
-from conftest import PROBLEMS
+from conftest import PROBLEMS, read_yaml
 from test_check import put
 
 from gyro_cli import kinds
@@ -145,7 +145,7 @@ def test_schema_agrees_with_the_loader(schema, tmp_path):
 
 def test_bundled_problems_are_valid_under_the_schema(schema, problems_dir):
     for path in sorted(problems_dir.glob("*.yaml")):
-        data = yaml.safe_load(path.read_text())
+        data = read_yaml(path.read_text())
         if data.get("kind") in kinds.REGISTRY:
             assert valid(data, schema), path
 

@@ -26,19 +26,14 @@ from pathlib import Path
 import jsonschema
 import pytest
 import yaml
-from conftest import PROBLEMS
+from conftest import PROBLEMS, read_yaml
 
 import gyro_cli
 from gyro_cli.render import html
 
 VARIANTS = 2
-#: libyaml's safe loader where PyYAML has it (the same data, a tenth of the time: the
-#: tests read every bundled problem and variant)
-_YAML_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
-def _yaml(text: str):
-    return yaml.load(text, Loader=_YAML_LOADER)
 
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
 CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
@@ -68,7 +63,7 @@ PL_INFO_SCHEMA = {
 
 def _reference(path: Path, tmp: Path, run) -> dict[int, list[float]]:
     """Variant number -> the sorted numbers the export must hold, from gyro_cli.solve."""
-    data = _yaml(path.read_text())
+    data = read_yaml(path.read_text())
     if "vary" in data:
         out_dir = tmp / path.stem
         done = run("vary", path, "--count", VARIANTS, "--seed", 0, "-o", out_dir)
@@ -78,7 +73,7 @@ def _reference(path: Path, tmp: Path, run) -> dict[int, list[float]]:
         files = [path]
     out = {}
     for n, file in enumerate(files, 1):
-        variant = _yaml(file.read_text())
+        variant = read_yaml(file.read_text())
         find = variant["find"] if isinstance(variant["find"], dict) else \
             {name: None for name in variant["find"]}
         for name in variant.get("expected") or {}:
@@ -207,7 +202,7 @@ def test_moodle_export_holds_the_solvers_answers(exported):
     assert len(bank) == len(reference)
     by_id = {}
     for path in PROBLEMS.glob("*.yaml"):
-        data = _yaml(path.read_text())
+        data = read_yaml(path.read_text())
         title = f"{data['id']}: {data['title']}" if data.get("title") else str(data["id"])
         by_id["$course$/top/gyro/" + " ".join(title.split()).replace("/", "//")] = path.stem
     for category, variants in bank.items():
@@ -231,7 +226,7 @@ def test_moodle_tolerance_is_the_problems(exported, run, tmp_path):
     bank = _moodle(exported["moodle"])
     # Every problem with a relative tolerance (one for the file): error = fraction * |answer|
     for path in PROBLEMS.glob("*.yaml"):
-        data = _yaml(path.read_text())
+        data = read_yaml(path.read_text())
         match = re.fullmatch(r"([\d.]+)%", str(data.get("tolerance", "1%")))
         if not match or path.stem not in exported["reference"]:
             continue
@@ -467,7 +462,7 @@ def test_blackboard_tolerance_is_the_problems(exported, run, tmp_path):
     for stem, want in exported["reference"].items():
         lines = rows[at:at + sum(len(v) for v in want.values())]
         at += len(lines)
-        tolerance = str(_yaml((PROBLEMS / f"{stem}.yaml").read_text()).get(
+        tolerance = str(read_yaml((PROBLEMS / f"{stem}.yaml").read_text()).get(
             "tolerance", "1%"))
         relative = re.fullmatch(r"([\d.]+)%", tolerance)
         absolute = re.fullmatch(r"([\d.e+-]+) deg/s", tolerance)
@@ -509,7 +504,7 @@ def test_blackboard_line_breaks_tabs_and_html_never_break_a_line(run, write, tmp
         find:
           precession: rpm
         """)
-    title = _yaml(path.read_text())["title"]
+    title = read_yaml(path.read_text())["title"]
     assert "\t" in title and "\n" in title and "\u2028" in title
     done = run("export", "--to", "blackboard", path, "-o", tmp_path / "b.txt")
     assert done.exit_code == 0, done.output
@@ -697,7 +692,7 @@ def test_hostile_text_is_escaped_in_every_format(run, write, tmp_path):
         find:
           precession: rpm
         """)
-    title = _yaml(path.read_text())["title"]
+    title = read_yaml(path.read_text())["title"]
     assert "\x01" in title and "]]>" in title
     for fmt, out in (("moodle", tmp_path / "m.xml"), ("qti", tmp_path / "q.zip"),
                      ("prairielearn", tmp_path / "pl")):
@@ -729,7 +724,7 @@ def test_hostile_text_is_escaped_in_every_format(run, write, tmp_path):
 def test_question_text_is_the_statement_with_each_variants_numbers(run, tmp_path):
     """11/3's statement names {spin} and {theta}: as written the question reads 1800 rpm
     and 30 deg, and each variant reads the numbers gyro vary gave it."""
-    statement = _yaml((PROBLEMS / "11_3.yaml").read_text())["statement"]
+    statement = read_yaml((PROBLEMS / "11_3.yaml").read_text())["statement"]
     assert "{spin}" in statement and "{theta}" in statement
     done = run("export", "--to", "moodle", PROBLEMS / "11_3.yaml", "-o", tmp_path / "a.xml")
     assert done.exit_code == 0, done.output
@@ -743,7 +738,7 @@ def test_question_text_is_the_statement_with_each_variants_numbers(run, tmp_path
     assert done.exit_code == 0, done.output
     questions = ET.parse(tmp_path / "v.xml").getroot().findall("question")[1:]
     for question, file in zip(questions, sorted((tmp_path / "v").glob("*.yaml"))):
-        given = _yaml(file.read_text())["given"]
+        given = read_yaml(file.read_text())["given"]
         text = question.findtext("questiontext/text")
         assert given["spin"] in text and given["theta"] in text, (given, text)
 
@@ -854,7 +849,7 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
     written = 0
     for question in sorted(p for p in exported["prairielearn"].iterdir() if p.is_dir()):
         source = PROBLEMS / f"{question.name}.yaml"
-        data = _yaml(source.read_text())
+        data = read_yaml(source.read_text())
         if "vary" in data:
             done = run("vary", source, "--count", VARIANTS, "--seed", 0, "-o",
                        tmp_path / "v" / question.name)
@@ -863,7 +858,7 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
         else:
             files = [source]
         for seed, file in enumerate(files):
-            variant = _yaml(file.read_text())
+            variant = read_yaml(file.read_text())
             answers = _generate(question / "server.py", seed)["correct_answers"]
             names = list(variant["find"]) + list(variant.get("expected") or {})
             html = (question / "question.html").read_text()

@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import read_yaml
 from formula_oracle import latex_math, latex_mixed, parse, spans, text, try_parse
 from oracle_tree import (
     Abs,
@@ -216,7 +217,7 @@ def without_authors_words(paths, folder: Path) -> list[Path]:
     which gyro prints as written."""
     out = []
     for path in paths:
-        data = yaml.safe_load(Path(path).read_text())
+        data = read_yaml(Path(path).read_text())
         data.pop("notes", None), data.pop("source", None)
         out.append(folder / f"plain_{Path(path).name}")
         out[-1].write_text(yaml.safe_dump(data, sort_keys=False))

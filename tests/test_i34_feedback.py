@@ -23,8 +23,8 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
 from click.testing import CliRunner
+from conftest import read_yaml
 
 from gyro_cli import api
 from gyro_cli.checking import copies, matching
@@ -49,7 +49,7 @@ def gyro(*args: object) -> object:
 def _variant(path: Path) -> dict:
     """A variant file's data, read once (libyaml's loader: the pure-Python one took most
     of the class's set-up)."""
-    return yaml.load(path.read_text(), Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    return read_yaml(path.read_text())
 
 
 def _printed(variant: Path) -> dict[str, list[str]]:

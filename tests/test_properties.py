@@ -28,7 +28,7 @@ from functools import cache
 import pytest
 
 hypothesis = pytest.importorskip("hypothesis")
-from conftest import ROOT, examples  # noqa: E402
+from conftest import ROOT, examples, read_yaml  # noqa: E402
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
@@ -119,7 +119,6 @@ def key_variant(name: str):
 
 def _bases() -> list[dict]:
     """Solvable starting points: each kind's `gyro new` example and the bundled problems."""
-    import yaml
 
     out = []
     for name in KIND_NAMES:
@@ -129,7 +128,7 @@ def _bases() -> list[dict]:
                         "given": dict(example.get("given", {})),
                         "find": dict(example.get("find", {}))})
     for path in sorted((ROOT / "problems").glob("*.yaml")):
-        out.append(yaml.safe_load(path.read_text()))
+        out.append(read_yaml(path.read_text()))
     return out
 
 

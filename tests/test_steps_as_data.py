@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from conftest import read_yaml
 
 from gyro_cli.commands.authoring import template
 from gyro_cli.core.errors import InputError
@@ -69,7 +70,7 @@ def test_every_equation_step_re_evaluates_to_its_value(tmp_path):
 
 def _negated(path: Path, tmp_path: Path) -> Path | None:
     """The problem with its spin, precession, moment and axial rate negated."""
-    data = yaml.safe_load(path.read_text())
+    data = read_yaml(path.read_text())
     given = data.get("given") or {}
     changed = False
     for key in ("spin", "precession", "moment", "axial_rate", "spin_rate", "turn_rate"):
@@ -530,7 +531,7 @@ def test_four_wheeler_trees_agree_with_a_hand_calculation(name):
     the book's working by hand (C_g = H omega_p); at the limiting speed the inner wheels'
     reaction, worked by hand, is zero."""
     steps, v = _tree_steps(ROOT / "problems" / name)
-    data = yaml.safe_load((ROOT / "problems" / name).read_text())["given"]
+    data = read_yaml((ROOT / "problems" / name).read_text())["given"]
     sense = data.get("engine_sense", "same")
     wheels = 4 * v["I_w"] if "I_w" in v else 2 * v["I_axle"]
     engines = v["n_E"] * v["I_E"]
