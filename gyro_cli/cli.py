@@ -292,14 +292,6 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
         sys.exit(2)
 
 
-def _cpus() -> int:
-    """The CPUs this process may run on (its affinity, e.g. a CI container's share)."""
-    try:
-        return len(os.sched_getaffinity(0)) or 1
-    except (AttributeError, OSError):
-        return os.cpu_count() or 1
-
-
 @main.command()
 @click.argument("paths", nargs=-1)
 @click.option("--format", "fmt", type=click.Choice(("table", "json")), default="table",
@@ -393,7 +385,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             if junit_file and html_file and os.path.abspath(junit_file) == \
                     os.path.abspath(html_file):
                 fail("--junit and --html name the same file")
-        _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or _cpus(), timeout,
+        from .checking.pool import cpus
+
+        _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or cpus(), timeout,
                    shard, merge, found)
     if junit_file or strict or html_file or jobs or shard or merge:
         fail("--junit, --html, --strict, --jobs, --shard and --merge go with checking the "

@@ -1,0 +1,91 @@
+"""Issue 37, item 3: `gyro vary --roster` draws a class of `POOLED` variants or more in
+forked workers (`--jobs N`, default the CPUs), to the same bytes as one process: a
+variant depends only on the seed, its problem and its student."""
+
+from __future__ import annotations
+
+import os
+import stat
+import threading
+from pathlib import Path
+
+import pytest
+
+from gyro_cli.checking import pool
+from gyro_cli.commands import roster
+
+ROOT = Path(__file__).resolve().parent.parent
+TOP = ROOT / "problems" / "11_3.yaml"
+FIVE = ROOT / "problems" / "11_5.yaml"
+
+needs_fork = pytest.mark.skipif(not pool.forks(), reason="no fork here: one process draws")
+
+
+def _roster(path: Path, students: int) -> Path:
+    path.write_text("student,section\n" + "".join(f"s{k:03d},{k % 3}\n"
+                                                  for k in range(students)))
+    return path
+
+
+def _tree(folder: Path) -> dict[str, tuple[bytes, int]]:
+    return {str(p.relative_to(folder)): (p.read_bytes() if p.is_file() else b"",
+                                         stat.S_IMODE(p.stat().st_mode))
+            for p in sorted(folder.rglob("*"))}
+
+
+@pytest.fixture
+def forks(monkeypatch):  # type: ignore[no-untyped-def]
+    """The threads alive at each fork of this process (the parent's record)."""
+    seen: list[int] = []
+    real = os.fork
+
+    def fork() -> int:
+        seen.append(threading.active_count())
+        return real()
+
+    monkeypatch.setattr(os, "fork", fork)
+    return seen
+
+
+@needs_fork
+def test_item03_two_workers_write_the_bytes_one_process_writes(run, tmp_path, forks):
+    students = roster.POOLED // 2  # two problems: exactly POOLED variants
+    names = _roster(tmp_path / "r.csv", students)
+    one, two = tmp_path / "one", tmp_path / "two"
+    threads = threading.active_count()  # the test run's own
+    assert run("vary", TOP, FIVE, "--roster", names, "-o", one, "--jobs", "1").exit_code == 0
+    assert forks == []
+    result = run("vary", TOP, FIVE, "--roster", names, "-o", two, "--jobs", "2")
+    assert result.exit_code == 0, result.output
+    # two workers, each forked while gyro had started no thread (the staged folder's
+    # writer starts after them)
+    assert forks == [threads, threads]
+    assert _tree(two) == _tree(one)
+    assert len(list((two / "11_3").iterdir())) == students
+
+
+@needs_fork
+def test_item03_a_class_under_pooled_is_drawn_in_this_process(run, tmp_path, forks):
+    names = _roster(tmp_path / "r.csv", roster.POOLED // 2 - 1)
+    result = run("vary", TOP, FIVE, "--roster", names, "-o", tmp_path / "set", "--jobs", "4")
+    assert result.exit_code == 0, result.output
+    assert forks == []
+
+
+@needs_fork
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_item03_no_real_draw_in_a_worker_is_one_line_and_nothing_written(run, tmp_path,
+                                                                          jobs):
+    slow = tmp_path / "slow.yaml"  # a spin of 180-360 rpm: below the least for steady precession
+    slow.write_text(TOP.read_text().replace("spin: [0.8, 1.25]", "spin: [0.1, 0.2]"))
+    names = _roster(tmp_path / "r.csv", roster.POOLED)
+    result = run("vary", slow, "--roster", names, "-o", tmp_path / "set", "--jobs", jobs)
+    assert result.exit_code == 2, result.output
+    assert "no draw of 200 for student 's000' has a real solution" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["r.csv", "slow.yaml"]
+
+
+def test_item03_jobs_goes_with_roster(run, tmp_path):
+    result = run("vary", TOP, "-n", "2", "-o", tmp_path / "v", "--jobs", "2")
+    assert result.exit_code == 2 and "--jobs goes with --roster" in result.stderr
