@@ -2,7 +2,9 @@
 `gyro export --to FORMAT --variants N`, this code against another checkout, interleaved.
 
 Each command runs in its own process; its peak resident memory is that process's
-``ru_maxrss`` (os.wait4, the rusage of that one child). With ``--old DIR`` each run of
+``ru_maxrss`` (os.wait4, the rusage of that one child: the largest of it and the workers
+it forks), and the peak proportional set size of all its processes together is sampled
+from /proc every 0.1 s (a roster drawn by workers: the memory they take beside it). With ``--old DIR`` each run of
 this checkout is followed by the same command run with ``PYTHONPATH=DIR`` (an older
 checkout, e.g. one made by ``git worktree add /tmp/old 1438cdf``), so a loaded machine
 slows both alike; the load average is printed before and after. Medians of ``--repeat``
@@ -25,6 +27,7 @@ import statistics
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -51,17 +54,57 @@ def cache_for(code: Path) -> str:
     return CACHES[code]
 
 
-def run(cmd: list[str], code: Path) -> tuple[float, float]:
-    """(seconds, peak RSS in MB) of ``cmd`` run with ``code`` first on the path and its own
-    warm unit table; its CPU seconds (user + system, steadier than the wall on a shared
-    machine) go to CPU."""
+def _tree(pid: int) -> list[int]:
+    """``pid`` and every process below it (Linux's /proc; just ``pid`` elsewhere)."""
+    found, i = [pid], 0
+    while i < len(found):
+        try:
+            for task in os.listdir(f"/proc/{found[i]}/task"):
+                with open(f"/proc/{found[i]}/task/{task}/children") as children:
+                    found += [int(c) for c in children.read().split()]
+        except OSError:
+            pass
+        i += 1
+    return found
+
+
+def _pss_mb(pids: list[int]) -> float:
+    """The processes' proportional set size together (a page shared by two forks counts
+    half in each), in MB; NaN where /proc has no smaps_rollup."""
+    total = 0
+    for pid in pids:
+        try:
+            with open(f"/proc/{pid}/smaps_rollup") as rollup:
+                total += next(int(line.split()[1]) for line in rollup if line.startswith("Pss:"))
+        except (OSError, StopIteration, ValueError):
+            if pid == pids[0]:
+                return float("nan")
+    return total / 1024
+
+
+def _sample_pss(pid: int, peak: list[float], done: threading.Event) -> None:
+    while not done.wait(0.1):
+        peak[0] = max(peak[0], _pss_mb(_tree(pid)))
+
+
+def run(cmd: list[str], code: Path) -> tuple[float, float, float]:
+    """(seconds, peak RSS in MB, peak PSS of its processes together in MB) of ``cmd`` run
+    with ``code`` first on the path and its own warm unit table; its CPU seconds (user +
+    system, steadier than the wall on a shared machine; its workers' included) go to CPU.
+    The RSS is the largest one process had (the command's or a worker's); the PSS, sampled
+    every 0.1 s, counts every process of the command, workers included."""
     env = dict(os.environ, PYTHONPATH=str(code), GYRO_CACHE_DIR=cache_for(code))
     start = time.perf_counter()
     # Run from the checkout: ``python -m`` puts the working directory first on the path.
     child = subprocess.Popen(cmd, env=env, cwd=code, stdout=subprocess.DEVNULL,
                              stderr=subprocess.PIPE)
     assert child.stderr is not None
+    peak, done = [0.0], threading.Event()
+    sampler = threading.Thread(target=_sample_pss, args=(child.pid, peak, done), daemon=True)
+    sampler.start()
     err = child.stderr.read()
+    done.set()
+    sampler.join()
     _, status, usage = os.wait4(child.pid, 0)
     took = time.perf_counter() - start
     CPU.setdefault(f"{cmd[3]} {code}", []).append(usage.ru_utime + usage.ru_stime)
@@ -69,8 +112,8 @@ def run(cmd: list[str], code: Path) -> tuple[float, float]:
     if child.returncode != 0:  # an old checkout may not read today's problem files
         lines = err.decode().strip().splitlines() or [""]
         print(f"  {code}: exited {child.returncode}: {lines[-1][:300]}", flush=True)
-        return float("nan"), float("nan")
-    return took, usage.ru_maxrss / 1024  # kB on Linux
+        return float("nan"), float("nan"), float("nan")
+    return took, usage.ru_maxrss / 1024, peak[0]  # kB on Linux
 
 
 def commands(work: Path, students: int, counts: list[int], fmt: str
@@ -119,7 +162,8 @@ def main() -> None:
         for name, cmd, target in rows:
             if args.only and args.only not in name:
                 continue
-            measured: dict[str, list[tuple[float, float]]] = {label: [] for label, _ in codes}
+            measured: dict[str, list[tuple[float, float, float]]] = {
+                label: [] for label, _ in codes}
             alone = any(name.endswith(f" {n}") and "export" in name for n in args.alone)
             for _ in range(args.repeat):
                 for label, code in codes[:1] if alone else codes:
@@ -128,13 +172,19 @@ def main() -> None:
                         shutil.rmtree(target)
                     elif target.exists():
                         target.unlink()
+                    # the deletion's writes to the disk before the next run, not during it
+                    # (20,000 files deleted then slowed the next set's creation two to
+                    # eightfold, whichever code ran next)
+                    os.sync()
             for label, _ in codes[:1] if alone else codes:
-                seconds = statistics.median(t for t, _ in measured[label])
-                peak = statistics.median(m for _, m in measured[label])
+                seconds = statistics.median(t for t, _, _ in measured[label])
+                peak = statistics.median(m for _, m, _ in measured[label])
+                pss = statistics.median(p for _, _, p in measured[label])
                 runs = CPU[f"{cmd[3]} {code_of[label]}"][-len(measured[label]):]
                 cpu = statistics.median(runs)
                 print(f"{name:<48} {label}: {seconds:7.1f} s  {cpu:7.1f} CPU-s  {peak:7.1f} MB peak "
-                      f"(runs: {', '.join(f'{t:.1f} s/{m:.0f} MB' for t, m in measured[label])})",
+                      f"RSS  {pss:7.1f} MB peak PSS of all its processes (runs: "
+                      f"{', '.join(f'{t:.1f} s/{m:.0f}/{p:.0f} MB' for t, m, p in measured[label])})",
                       flush=True)
     print(f"load average after: {load()}")
     for folder in CACHES.values():
