@@ -385,7 +385,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             if junit_file and html_file and os.path.abspath(junit_file) == \
                     os.path.abspath(html_file):
                 fail("--junit and --html name the same file")
-        from .checking.pool import cpus
+        from .core.streams import cpus
 
         _check_key(paths, fmt, junit_file, strict, html_file, force, jobs or cpus(), timeout,
                    shard, merge, found)

@@ -215,15 +215,6 @@ class _Worker:
         return self.exitcode
 
 
-def cpus() -> int:
-    """The CPUs this process may run on (its affinity, e.g. a CI container's share): the
-    workers `gyro check` and `gyro vary --roster` use unless told."""
-    try:
-        return len(os.sched_getaffinity(0)) or 1
-    except (AttributeError, OSError):
-        return os.cpu_count() or 1
-
-
 def forks() -> bool:
     """Whether worker processes can be forked here (not on Windows)."""
     return hasattr(os, "fork")

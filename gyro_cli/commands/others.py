@@ -87,7 +87,7 @@ def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: in
         fail("give --count N (variants of one FILE) or --roster ROSTER.csv (one per student)")
     try:
         if roster is not None:
-            from ..checking.pool import cpus
+            from ..core.streams import cpus
             from .roster import write_roster_variants
 
             written = write_roster_variants(list(files), roster, seed, out_dir, force,

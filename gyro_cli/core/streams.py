@@ -1,4 +1,5 @@
-"""The process's surroundings: standard output that may fail, and signals.
+"""The process's surroundings: standard output that may fail, signals, and the CPUs it
+may run on.
 
 A command's files (``--junit``, ``--plot``, ``--csv``, ...) are written whatever
 happens to standard output. ``guard_output`` puts a thin wrapper on
@@ -209,3 +210,12 @@ def on_signals() -> Callable[[], None]:
             except (ValueError, OSError):
                 pass
     return undo
+
+
+def cpus() -> int:
+    """The CPUs this process may run on (its affinity, e.g. a CI container's share): the
+    workers `gyro check` and `gyro vary --roster` start unless told."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
