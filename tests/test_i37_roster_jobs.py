@@ -5,11 +5,11 @@ variant depends only on the seed, its problem and its student."""
 from __future__ import annotations
 
 import os
-import stat
 import threading
 from pathlib import Path
 
 import pytest
+from test_i37_roster_fast import _roster, _tree
 
 from gyro_cli.checking import pool
 from gyro_cli.commands import roster
@@ -19,18 +19,6 @@ TOP = ROOT / "problems" / "11_3.yaml"
 FIVE = ROOT / "problems" / "11_5.yaml"
 
 needs_fork = pytest.mark.skipif(not pool.forks(), reason="no fork here: one process draws")
-
-
-def _roster(path: Path, students: int) -> Path:
-    path.write_text("student,section\n" + "".join(f"s{k:03d},{k % 3}\n"
-                                                  for k in range(students)))
-    return path
-
-
-def _tree(folder: Path) -> dict[str, tuple[bytes, int]]:
-    return {str(p.relative_to(folder)): (p.read_bytes() if p.is_file() else b"",
-                                         stat.S_IMODE(p.stat().st_mode))
-            for p in sorted(folder.rglob("*"))}
 
 
 @pytest.fixture

@@ -51,6 +51,11 @@ MAX_DRAWS = 200  # per student and problem, before the ranges are called too wid
 # time than two workers take to start and hand it back
 POOLED = 200
 
+#: one drawn variant: its file name, YAML text, variant id and key entry
+Variant = tuple[str, str, str, dict[str, Any]]
+#: what a problem's variants share, by the problem's index (`RosterSet._variant`)
+Shared = dict[int, tuple[dict, list[str], dict, str]]
+
 
 def student_rng(seed: int, problem_id: str, student: str) -> random.Random:
     """The random stream of one student's variant of one problem (stable, independent)."""
@@ -103,7 +108,7 @@ class RosterSet:
                                                              + _keyed(problem)))}
                 for problem, _, _ in self.problems}
 
-    def draw(self, jobs: int = 1) -> Generator[tuple[str, str, str, dict[str, Any]], None, None]:
+    def draw(self, jobs: int = 1) -> Generator[Variant, None, None]:
         """Each variant in turn, problem by problem: its file name, YAML text, variant id
         and key entry (its problem, the file's SHA-256 and the solver's answers). With
         ``jobs`` > 1, a set of `POOLED` variants or more is drawn by that many forked
@@ -115,13 +120,12 @@ class RosterSet:
         if jobs > 1 and count >= POOLED and pool.forks():
             yield from self._pooled(jobs)
             return
-        made: dict[int, tuple[dict, list[str], dict, str]] = {}
+        made: Shared = {}
         for p in range(len(self.problems)):
             for s in range(len(self.students)):
                 yield self._variant(p, s, made)
 
-    def _variant(self, p: int, s: int, made: dict[int, tuple[dict, list[str], dict, str]]
-                 ) -> tuple[str, str, str, dict[str, Any]]:
+    def _variant(self, p: int, s: int, made: Shared) -> Variant:
         """The variant of problem ``p`` for student ``s``; ``made`` holds what a problem's
         variants share (its data without `vary`, the answers keyed, the YAML of the values
         they share, the file's name), made by its first variant."""
@@ -154,12 +158,12 @@ class RosterSet:
                  "answers": {n: _answer_entry(a) for n, a in solved[-1].answers.items()}}
         return f"{stem}/{self.names[student.id]}.yaml", text, variant_id, entry
 
-    def _pooled(self, jobs: int) -> Iterator[tuple[str, str, str, dict[str, Any]]]:
+    def _pooled(self, jobs: int) -> Iterator[Variant]:
         """`draw` by ``jobs`` forked workers. Bad input found by a worker (a student with
         no real draw) is raised here, as it would be in this process."""
         from ..checking import pool
 
-        made: dict[int, tuple[dict, list[str], dict, str]] = {}
+        made: Shared = {}
 
         def work(which: str) -> tuple[Any, ...]:
             p, s = map(int, which.split())
