@@ -144,22 +144,9 @@ def switching_often() -> Iterator[None]:
         sys.setswitchinterval(before)
 
 
-def test_item02_rendering_is_reentrant_8_threads_equal_serial():
-    """Every format rendered by 8 threads at once, problems of different kinds (their
-    file's keys written as words differ) and unit systems: each output as rendered alone."""
-    from concurrent.futures import ThreadPoolExecutor
-
-    from gyro_cli import api
-    from gyro_cli.render import formats
-
-    paths = sorted((ROOT / "problems").glob("*.yaml"))[::6]
-    results = [api.solve_file(str(p), units=u) for p in paths for u in (None, "us")]
-    for r in results:
-        r.solved  # noqa: B018 (the US conversion made once, before the threads)
-    jobs = [(r, fmt) for r in results for fmt in formats.NAMES]
-    serial = [r.render(fmt) for r, fmt in jobs]
-    with ThreadPoolExecutor(8) as pool, switching_often():
-        assert list(pool.map(lambda job: job[0].render(job[1]), jobs)) == serial
+# Item 2's renders by 8 threads at once, in SI and US units, are test_i34_robust's
+# test_item25_threads_render_what_one_thread_renders (every problem in SI, every sixth in
+# US units too): the same threads' check of the same renders, made once.
 
 
 def test_item02_one_walker_and_no_state_between_renders():
