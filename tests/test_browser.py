@@ -136,9 +136,13 @@ _ONE_TEXT_A_STYLE = """() => { const seen = new Set();
 _CONTRAST = {"type": "rule", "values": ["color-contrast"]}
 
 
-def _axe(page, only: dict) -> dict:
-    """axe-core's violations on the page as it is now (formulas as text, see above)."""
-    return page.evaluate("(only) => axe.run(document, {runOnly: only, "
+def _axe(page, only: dict, marked: bool = False) -> dict:
+    """axe-core's violations on the page as it is now (formulas as text, see above).
+    ``marked``: only the texts marked by _ONE_TEXT_A_STYLE and what is inside them are
+    axe's context (its contrast rule then builds its tree of the page's nodes for those
+    alone: a third less time, the same passes and violations)."""
+    context = "{include: [['[data-contrast]']]}" if marked else "document"
+    return page.evaluate(f"(only) => axe.run({context}, {{runOnly: only, "
                          "resultTypes: ['violations']})", only)
 
 
@@ -185,7 +189,7 @@ def _inspect(browser, axe, path: Path, shots: Path | None,
             assert page.evaluate(_ONE_TEXT_A_STYLE) > 0
         light = _axe(page, {"type": "tag", "values": WCAG})
         page.emulate_media(color_scheme="dark")
-        dark = _axe(page, _CONTRAST)
+        dark = _axe(page, _CONTRAST, marked=not SWEEP)
         for scheme, result in (("light", light), ("dark", dark)):
             for v in result["violations"]:
                 node = v["nodes"][0]
@@ -206,6 +210,19 @@ def test_bundled_problems_in_chromium(browser, axe, pages, shots, paths):
     name = f"folder-{FOLDERS.index(paths) + 1}.html"
     page = _write(pages, name, html.page([solve_file(p) for p in paths]))
     assert _inspect(browser, axe, page, shots) == []
+
+
+def test_a_text_unreadable_in_the_dark_scheme_is_found(browser, axe, pages, shots):
+    """The checks themselves: a page readable in the light scheme and not in the dark one
+    fails on the dark scheme's contrast alone (axe run on the marked texts)."""
+    page = _write(pages, "dark.html", """<!DOCTYPE html><html lang="en"><head>
+<meta charset="utf-8"><title>dark</title><style>
+@media (prefers-color-scheme: dark) { body { background: #000; } p.note { color: #222; } }
+</style></head><body><main><h1>A page</h1><p>Readable text.</p>
+<p class="note">A note no one reads in the dark.</p></main></body></html>""")
+    found = _inspect(browser, axe, page, shots)
+    assert len(found) == 1 and found[0].startswith("axe dark: color-contrast"), found
+    assert "A note no one reads" in found[0]
 
 
 def test_problem_page_in_chromium(browser, axe, pages, shots):
