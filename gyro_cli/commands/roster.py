@@ -30,7 +30,7 @@ import os
 import random
 from collections.abc import Generator, Iterator
 from dataclasses import dataclass
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING, Any
 
 from ..checking.assignment import (
     ASSIGNMENT_COLUMNS,
@@ -46,13 +46,17 @@ from ..core.csvsafe import safe_cell
 from ..core.errors import InputError
 from .authoring import draw_variant, parse_vary, variant_yaml
 
+if TYPE_CHECKING:
+    from ..core.files import StagedFolder
+
 MAX_DRAWS = 200  # per student and problem, before the ranges are called too wide
 # variants of a set, at least, for `draw` to fork workers: a smaller class is drawn in less
 # time than two workers take to start and hand it back
 POOLED = 200
 
-#: one drawn variant: its file name, YAML text, variant id and key entry
-Variant = tuple[str, str, str, dict[str, Any]]
+#: one drawn variant: its file name, YAML text (None: the worker that drew it wrote the
+#: file, `RosterSet.draw`), variant id and key entry
+Variant = tuple[str, str | None, str, dict[str, Any]]
 #: what a problem's variants share, by the problem's index (`RosterSet._variant`)
 Shared = dict[int, tuple[dict, list[str], dict, str]]
 
@@ -108,24 +112,28 @@ class RosterSet:
                                                              + _keyed(problem)))}
                 for problem, _, _ in self.problems}
 
-    def draw(self, jobs: int = 1) -> Generator[Variant, None, None]:
+    def draw(self, jobs: int = 1, into: StagedFolder | None = None
+             ) -> Generator[Variant, None, None]:
         """Each variant in turn, problem by problem: its file name, YAML text, variant id
         and key entry (its problem, the file's SHA-256 and the solver's answers). With
         ``jobs`` > 1, a set of `POOLED` variants or more is drawn by that many forked
         workers (`checking.pool`), in the same order and to the same bytes: a variant
-        depends only on the seed, its problem and its student."""
+        depends only on the seed, its problem and its student. Workers given ``into``
+        (the set's staged folder, its writer thread not started) write each variant's
+        file there themselves, and its text comes back as None: the files are created on
+        every core, and their text is not sent back to be written."""
         from ..checking import pool
 
         count = len(self.problems) * len(self.students)
         if jobs > 1 and count >= POOLED and pool.forks():
-            yield from self._pooled(jobs)
+            yield from self._pooled(jobs, into)
             return
         made: Shared = {}
         for p in range(len(self.problems)):
             for s in range(len(self.students)):
                 yield self._variant(p, s, made)
 
-    def _variant(self, p: int, s: int, made: Shared) -> Variant:
+    def _variant(self, p: int, s: int, made: Shared) -> tuple[str, str, str, dict[str, Any]]:
         """The variant of problem ``p`` for student ``s``; ``made`` holds what a problem's
         variants share (its data without `vary`, the answers keyed, the YAML of the values
         they share, the file's name), made by its first variant."""
@@ -158,9 +166,10 @@ class RosterSet:
                  "answers": {n: _answer_entry(a) for n, a in solved[-1].answers.items()}}
         return f"{stem}/{self.names[student.id]}.yaml", text, variant_id, entry
 
-    def _pooled(self, jobs: int) -> Iterator[Variant]:
+    def _pooled(self, jobs: int, into: StagedFolder | None) -> Iterator[Variant]:
         """`draw` by ``jobs`` forked workers. Bad input found by a worker (a student with
-        no real draw) is raised here, as it would be in this process."""
+        no real draw, a file it cannot write) is raised here, as it would be in this
+        process."""
         from ..checking import pool
 
         made: Shared = {}
@@ -168,7 +177,11 @@ class RosterSet:
         def work(which: str) -> tuple[Any, ...]:
             p, s = map(int, which.split())
             try:
-                return self._variant(p, s, made)
+                name, text, variant_id, entry = self._variant(p, s, made)
+                if into is not None:
+                    into.write_now(into.prefix + name, text)
+                    return name, None, variant_id, entry
+                return name, text, variant_id, entry
             except InputError as err:
                 return (None, err.message, err.file, err.key)
 
@@ -331,6 +344,7 @@ def roster_variants(paths: list[str], roster: str, seed: int
     key = KeyWriter(_key_head(made))
     files = []
     for name, text, variant_id, entry in made.draw():
+        assert text is not None, "drawn without a folder to write into: the text comes back"
         files.append((name, text))
         key.add(variant_id, entry)
     return files, "".join(made.assignment()), b"".join(key.chunks()).decode()
@@ -349,7 +363,6 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
     whole or not at all (core/files.py: StagedSet, or StagedFolder for a new ``out_dir``),
     and never over one of its inputs. ``jobs``: workers drawing the set (`RosterSet.draw`)."""
     import contextlib
-    import itertools
 
     from ..core.files import StagedFolder, StagedSet, refuse_outputs_over_inputs
 
@@ -369,21 +382,22 @@ def write_roster_variants(paths: list[str], roster: str, seed: int, out_dir: str
                                  f"{len(clash)} file(s) of the set already there)",
                                  file=clash[0])
     key = KeyWriter(_key_head(made))
-    drawn = made.draw(jobs)
-    with contextlib.closing(drawn):
-        # the first variant before the staged folder's writer thread: workers are forked
-        # from a process with one thread
-        first = list(itertools.islice(drawn, 1))
-        staged: StagedFolder | StagedSet
-        if new_folder:
-            staged = StagedFolder(out_dir)  # no file of the set, nor an input, in it
-        else:
-            staged = StagedSet(force, out_dir, targets, sync_each=False)
-        with staged:
-            for name, text, variant_id, entry in itertools.chain(first, drawn):
-                staged.add(os.path.join(out_dir, name), text)
+    staged: StagedFolder | StagedSet
+    if new_folder:
+        staged = StagedFolder(out_dir)  # no file of the set, nor an input, in it
+    else:
+        staged = StagedSet(force, out_dir, targets, sync_each=False)
+    with staged:
+        # the workers, if any, are forked at the first variant, before the staged folder's
+        # writer thread starts (at the first file handed to it); they write into the
+        # staged folder, so they are ended (closing) before it is removed or placed
+        drawn = made.draw(jobs, staged if isinstance(staged, StagedFolder) else None)
+        with contextlib.closing(drawn):
+            for name, text, variant_id, entry in drawn:
+                if text is not None:
+                    staged.add(os.path.join(out_dir, name), text)
                 key.add(variant_id, entry)
-            staged.add(targets[-2], key.chunks())
-            staged.add(targets[-1], made.assignment())
-            staged.place()
+        staged.add(targets[-2], key.chunks())
+        staged.add(targets[-1], made.assignment())
+        staged.place()
     return targets

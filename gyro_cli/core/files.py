@@ -318,8 +318,10 @@ class StagedFolder:
     drawing the set), and no file of the set can exist before. A thread creates and
     writes the files (a few at a time, handed over as they are made) while the set is
     drawn: the system's time creating 20,000 files is spent beside the drawing, on the
-    other core. Leaving the ``with`` block without `place` removes the hidden folder and
-    the parents made for it."""
+    other core. The thread starts with the first file handed over, so processes forked
+    before that (the roster's workers) are forked from one thread; such a process writes
+    its own files with `write_now`. Leaving the ``with`` block without `place` removes the
+    hidden folder and the parents made for it."""
 
     QUEUED = 64  # files handed over and not written yet, at most
 
@@ -353,7 +355,6 @@ class StagedFolder:
         self.dropped = False  # the set failed: what is still handed over is not written
         self.queue: queue.Queue[tuple[str, str, str | bytes] | None] = queue.Queue(self.QUEUED)
         self.writer = threading.Thread(target=self._write_queued, daemon=True)
-        self.writer.start()
 
     def __enter__(self) -> StagedFolder:
         return self
@@ -376,12 +377,22 @@ class StagedFolder:
             raise ValueError(f"{path} is not in {self.prefix}")
         relative = path[len(self.prefix):]
         if isinstance(text, (str, bytes)):
+            if self.writer.ident is None:
+                self.writer.start()
             self.queue.put((path, relative, text))
             return
         self.queue.join()
         if self.failed is not None:
             raise self.failed
         self._write(path, relative, text)
+
+    def write_now(self, path: str, text: str) -> None:
+        """Write one file of the set here, not by the writer thread: what a process forked
+        from this one (a roster's worker) does with the files it makes. Its folder is
+        made if need be; bad input as `add`'s."""
+        if not path.startswith(self.prefix):
+            raise ValueError(f"{path} is not in {self.prefix}")
+        self._write(path, path[len(self.prefix):], text)
 
     def _write_queued(self) -> None:
         while True:
