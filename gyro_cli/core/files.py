@@ -373,9 +373,7 @@ class StagedFolder:
         here, once the writer has written the files before."""
         if self.failed is not None:
             raise self.failed
-        if not path.startswith(self.prefix):
-            raise ValueError(f"{path} is not in {self.prefix}")
-        relative = path[len(self.prefix):]
+        relative = self._relative(path)
         if isinstance(text, (str, bytes)):
             if self.writer.ident is None:
                 self.writer.start()
@@ -390,9 +388,14 @@ class StagedFolder:
         """Write one file of the set here, not by the writer thread: what a process forked
         from this one (a roster's worker) does with the files it makes. Its folder is
         made if need be; bad input as `add`'s."""
+        self._write(path, self._relative(path), text)
+
+    def _relative(self, path: str) -> str:
+        """A file of the set's name inside its folder (``path``: the folder's name joined
+        to it)."""
         if not path.startswith(self.prefix):
             raise ValueError(f"{path} is not in {self.prefix}")
-        self._write(path, path[len(self.prefix):], text)
+        return path[len(self.prefix):]
 
     def _write_queued(self) -> None:
         while True:
