@@ -33,8 +33,6 @@ from gyro_cli.render import html
 
 VARIANTS = 2
 
-
-
 QTI = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
 CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
 

@@ -46,15 +46,9 @@ def gyro(*args: object) -> object:
 
 
 @functools.cache
-def _variant(path: Path) -> dict:
-    """A variant file's data, read once (libyaml's loader: the pure-Python one took most
-    of the class's set-up)."""
-    return read_yaml(path.read_text())
-
-
 def _printed(variant: Path) -> dict[str, list[str]]:
     """A variant's answers as its file prints them (what a copier copies)."""
-    data = _variant(variant)
+    data = read_yaml(variant.read_text())
     return {q: [str(v) for v in (vs if isinstance(vs, list) else [vs])]
             for q, vs in data["expected"].items()}
 
@@ -72,7 +66,7 @@ def _own_answers(rng: random.Random, pid: str, variant: Path) -> dict[str, list[
     printed = _printed(variant)
     mode = rng.choice(("each", "same", "given"))
     if mode == "given":  # a given value misread: the problem worked again from it
-        data = _variant(variant)
+        data = read_yaml(variant.read_text())
         key = rng.choice(VARIED[pid])
         number, unit = str(data["given"][key]).split(maxsplit=1)
         worked = api.solve_file(str(variant), **{key: _written(float(number) * _slip(rng),

@@ -179,7 +179,7 @@ class RosterSet:
             try:
                 name, text, variant_id, entry = self._variant(p, s, made)
                 if into is not None:
-                    into.write_now(into.prefix + name, text)
+                    into.write_now(name, text)
                     return name, None, variant_id, entry
                 return name, text, variant_id, entry
             except InputError as err:

@@ -373,7 +373,9 @@ class StagedFolder:
         here, once the writer has written the files before."""
         if self.failed is not None:
             raise self.failed
-        relative = self._relative(path)
+        if not path.startswith(self.prefix):
+            raise ValueError(f"{path} is not in {self.prefix}")
+        relative = path[len(self.prefix):]
         if isinstance(text, (str, bytes)):
             if self.writer.ident is None:
                 self.writer.start()
@@ -384,18 +386,11 @@ class StagedFolder:
             raise self.failed
         self._write(path, relative, text)
 
-    def write_now(self, path: str, text: str) -> None:
-        """Write one file of the set here, not by the writer thread: what a process forked
-        from this one (a roster's worker) does with the files it makes. Its folder is
-        made if need be; bad input as `add`'s."""
-        self._write(path, self._relative(path), text)
-
-    def _relative(self, path: str) -> str:
-        """A file of the set's name inside its folder (``path``: the folder's name joined
-        to it)."""
-        if not path.startswith(self.prefix):
-            raise ValueError(f"{path} is not in {self.prefix}")
-        return path[len(self.prefix):]
+    def write_now(self, name: str, text: str) -> None:
+        """Write the file ``name`` (inside the set's folder) here, not by the writer
+        thread: what a process forked from this one (a roster's worker) does with the
+        files it makes. Its folder is made if need be; bad input as `add`'s."""
+        self._write(self.prefix + name, name, text)
 
     def _write_queued(self) -> None:
         while True:
