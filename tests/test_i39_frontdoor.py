@@ -14,6 +14,7 @@ installed from the built package, never this checkout.
 from __future__ import annotations
 
 import importlib.util
+import json
 import os
 import re
 import shutil
@@ -199,22 +200,34 @@ def test_item3_sdist_and_wheel_build_pass_twine_and_install_alone(tmp_path: Path
         assert done.returncode == 0, (args, done.stderr)
         return done.stdout
 
-    where = _run([python, "-c", "import gyro_cli; print(gyro_cli.__file__)"], cwd=work, env=env).stdout
-    assert where.startswith(str(venv)), where
     assert run("--version").strip() == f"gyro, version {version}"
     assert "533.5 rpm" in run("solve", "11_3.yaml")
-    assert "<math" in run("solve", "--format", "html", "11_3.yaml")
-    assert "\\begin" in run("solve", "--format", "latex", "--standalone", "11_3.yaml")
-    assert "OK: 3 answers" in run("check", "11_3.yaml")
-    assert "steady_precession" in run("kinds")
-    assert '"$schema"' in run("schema")
-    assert "kind: steady_precession" in run("new", "steady_precession")
-    # the course layer: variants, a question bank, a report page
-    run("vary", "11_3.yaml", "--count", "2", "--seed", "1", "-o", "variants")
+    # The other commands in one process of the virtual environment's Python (the console
+    # script is the same `main`; a process each cost 0.3 s): each command's exit code and
+    # output, with the package's own data files, from the wheel alone.
+    commands = [["solve", "--format", "html", "11_3.yaml"],
+                ["solve", "--format", "latex", "--standalone", "11_3.yaml"],
+                ["check", "11_3.yaml"], ["kinds"], ["schema"], ["new", "steady_precession"],
+                # the course layer: variants, a question bank, a report page
+                ["vary", "11_3.yaml", "--count", "2", "--seed", "1", "-o", "variants"],
+                ["export", "--to", "qti", "11_3.yaml", "-o", "bank.zip"],
+                ["check", "11_3.yaml", "--html", "report.html"]]
+    script = ("import json, sys, gyro_cli\nfrom click.testing import CliRunner\n"
+              "from gyro_cli.cli import main\nruns = [CliRunner().invoke(main, a) for a in "
+              "json.loads(sys.argv[1])]\nprint(json.dumps([gyro_cli.__file__] + "
+              "[[r.exit_code, r.stdout, r.stderr] for r in runs]))")
+    done = _run([python, "-c", script, json.dumps(commands)], cwd=work, env=env)
+    assert done.returncode == 0, done.stderr
+    where, *outputs = json.loads(done.stdout)
+    assert where.startswith(str(venv)), where
+    for args, (code, _, errors) in zip(commands, outputs, strict=True):
+        assert code == 0, (args, errors)
+    html, latex, check, kinds, schema, new = (text for _, text, _ in outputs[:6])
+    assert "<math" in html and "\\begin" in latex and "OK: 3 answers" in check
+    assert "steady_precession" in kinds and '"$schema"' in schema
+    assert "kind: steady_precession" in new
     assert sorted(p.name for p in (work / "variants").iterdir()) == ["11_3-v01.yaml", "11_3-v02.yaml"]
-    run("export", "--to", "qti", "11_3.yaml", "-o", "bank.zip")
     assert zipfile.ZipFile(work / "bank.zip").namelist()
-    run("check", "11_3.yaml", "--html", "report.html")
     assert (work / "report.html").read_text().startswith("<!DOCTYPE html>")
     assert (Path(where).parent / "py.typed").is_file()
 
