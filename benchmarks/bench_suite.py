@@ -35,7 +35,9 @@ def clone(source: str, rev: str, into: Path) -> Path:
     """A fresh clone of ``source`` at ``rev`` in ``into``, set up by `make demo`."""
     subprocess.run(["git", "clone", "-q", source, str(into)], check=True)
     subprocess.run(["git", "-C", str(into), "checkout", "-q", rev], check=True)
-    subprocess.run(["make", "-C", str(into), "demo"], check=True, stdout=subprocess.DEVNULL)
+    with (into.parent / f"{into.name}-demo.log").open("w") as log:
+        subprocess.run(["make", "-C", str(into), "demo"], check=True, stdout=log,
+                       stderr=subprocess.STDOUT)
     return into
 
 
