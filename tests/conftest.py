@@ -2,13 +2,26 @@
 
 from __future__ import annotations
 
+import atexit
 import os
+import shutil
 import tempfile
 import textwrap
 from pathlib import Path
 
-# The unit cache of the test run is its own, never the user's (~/.cache/gyro).
-os.environ["GYRO_CACHE_DIR"] = tempfile.mkdtemp(prefix="gyro-test-cache-")
+# The unit cache of the test run is its own, never the user's (~/.cache/gyro), and it is
+# removed when the process that made it ends (each of the three processes of a `make test`
+# left one in the temporary folder: 1,454 of them, 300 MB, on the project's machine).
+TEST_CACHE = tempfile.mkdtemp(prefix="gyro-test-cache-")
+os.environ["GYRO_CACHE_DIR"] = TEST_CACHE
+
+
+def _remove_test_cache(owner: int = os.getpid()) -> None:
+    if os.getpid() == owner:  # not a child forked by a test, which ends while the run goes on
+        shutil.rmtree(TEST_CACHE, ignore_errors=True)
+
+
+atexit.register(_remove_test_cache)
 
 import pytest
 from click.testing import CliRunner

@@ -155,3 +155,24 @@ def test_warm_bicycle_solve_imports_no_numpy(tmp_path):
     assert run.returncode == 0, run.stderr
     assert "v_w" in run.stdout and "motion" in run.stdout
     assert run.stderr.strip().splitlines()[-1] == "[]", run.stderr
+
+
+def test_the_test_runs_own_cache_is_removed_when_its_process_ends():
+    """tests/conftest.py's cache folder goes with the process that made it (every `make
+    test` left three behind), and not with a child forked by a test, which ends first."""
+    script = """
+import os, sys
+sys.path.insert(0, "tests")
+import conftest
+child = os.fork()
+if child == 0:
+    sys.exit(0)  # the child's exit handlers run, with the parent's cleanup among them
+os.waitpid(child, 0)
+print(conftest.TEST_CACHE, os.path.isdir(conftest.TEST_CACHE))
+"""
+    done = subprocess.run([sys.executable, "-c", script], cwd=ROOT, capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    cache, there = done.stdout.split()
+    assert there == "True"  # kept while the process that made it runs
+    assert Path(cache).name.startswith("gyro-test-cache-") and not Path(cache).exists()
