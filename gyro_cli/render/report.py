@@ -117,7 +117,7 @@ def graph_data(result: Result) -> dict[str, Any]:
     ``graph`` of ``gyro solve --format json``, which errors carried forward follow."""
     from ..solving.deps import as_data, graph
 
-    return as_data(graph(result.problem), list(result.answers))
+    return as_data(graph(result.problem, result), list(result.answers))
 
 
 class _Text(Format):
