@@ -290,8 +290,9 @@ def _piece_rows(piece: Node, budget: float) -> list[tuple[str, float]]:
     of its sum or between the factors of its product."""
     printer = MathMLPrinter(True)
     terms = _terms(piece)
-    if width(piece) <= budget or len(terms) == 1:
-        return [(printer.doprint(piece), width(piece))]
+    whole = width(piece)
+    if whole <= budget or len(terms) == 1:
+        return [(printer.doprint(piece), whole)]
     items = []
     for sign, term in terms:
         if sign in ("+", "-"):

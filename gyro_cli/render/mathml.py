@@ -12,6 +12,7 @@ HTML-escaped here. Names, numbers and units follow `conventions`.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from html import escape
 from typing import ClassVar
 
@@ -104,6 +105,7 @@ def _spell(part: NamePart, sub: bool = False) -> str:
     return _mi(part[1])  # a letter; a multi-letter name is upright
 
 
+@lru_cache(maxsize=4096)  # a worked answer sets the same few symbols and units again and again
 def symbol_mathml(name: str) -> str:
     """One symbol name: ``psidot_min`` -> psi with a dot, sub min."""
     base, subs = symbol_parts(name)
@@ -128,6 +130,7 @@ def number_mathml(text: str) -> str:
     return _row(minus, body) if sign else body
 
 
+@lru_cache(maxsize=4096)
 def unit_mathml(unit: str) -> str:
     """A unit upright: ``kg m^2/s`` -> kg, thin space, m squared, /, s."""
     if unit in DEGREES:

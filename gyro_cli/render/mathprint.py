@@ -17,6 +17,7 @@ How names, numbers and units are set is `conventions`.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from typing import Any, ClassVar
 
 from ..core import expr as E
@@ -434,6 +435,7 @@ def _spell_tex(part: NamePart) -> str:
     return str(part[1])  # a letter, digits, one character
 
 
+@lru_cache(maxsize=4096)  # a worked answer sets the same few symbols and units again and again
 def symbol_tex(name: str) -> str:
     """One symbol name in LaTeX: ``psidot_min`` -> ``\\dot{\\psi}_{\\mathrm{min}}``."""
     base, subs = symbol_parts(name)
@@ -453,6 +455,7 @@ def number_tex(text: str) -> str:
     return f"{sign}{mantissa}\\times 10^{{{power}}}"
 
 
+@lru_cache(maxsize=4096)
 def unit_tex(unit: str) -> str:
     """A unit upright: ``kg m^2/s`` -> ``\\mathrm{kg\\,m^{2}/s}``."""
     out: list[str] = []

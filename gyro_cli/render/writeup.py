@@ -305,9 +305,10 @@ class _TexWriter(Writer):
         if step.text and getattr(step, "prose", None) is None:
             notes.append(step.text)
         note = " ".join(notes)
-        total = width(lhs) + sum(width(p) + 3 for p in pieces)
+        lhs_width, piece_widths = width(lhs), [width(p) for p in pieces]  # each walked once
+        total = lhs_width + sum(w + 3 for w in piece_widths)
         widest = total if total <= WIDTH else \
-            max(width(lhs) + 3 + min(width(p), WIDTH) for p in pieces)
+            max(lhs_width + 3 + min(w, WIDTH) for w in piece_widths)
         beside = ""  # a short note, set beside the equation
 
         def short(text: str) -> bool:
@@ -333,7 +334,7 @@ class _TexWriter(Writer):
         if total <= WIDTH:
             body = " = ".join([left] + [printer.doprint(p) for p in pieces])
         else:
-            rows = _rows(left, pieces, WIDTH - min(width(lhs), 12) - 4)
+            rows = _rows(left, pieces, WIDTH - min(lhs_width, 12) - 4)
             body = "\\begin{aligned}\n" + " \\\\\n".join(f"{a} &{b}" for a, b in rows) + \
                 "\n\\end{aligned}"
         if beside:

@@ -1,0 +1,90 @@
+"""Rendering every bundled problem in each output format, in one process: the work a
+`gyro check`, a handout, a bank and most of the test suite repeat.
+
+Each format's pass renders the worked answer of every file in `problems/` from a fresh
+solve (solving is its own row), and is timed in the process's CPU seconds, the best of
+``--passes`` (a machine shared with other work slows a pass; it never speeds one). With
+``--old DIR`` the same passes run in a checkout of other code (a `git worktree`), the two
+interleaved, so that a change is read against the code before it in one call.
+
+    .venv/bin/python benchmarks/bench_render.py [--passes 7] [--rounds 3] [--old DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+FORMATS = ("solve", "text", "markdown", "latex", "json", "html")
+
+
+def measure(passes: int) -> dict[str, float]:
+    """Each format's best pass over every bundled problem, CPU seconds (this process)."""
+    import glob
+
+    import gyro_cli
+    from gyro_cli import api
+
+    paths = sorted(glob.glob("problems/*.yaml"))
+    assert paths and Path(gyro_cli.__file__).resolve().is_relative_to(Path.cwd().resolve()), \
+        f"gyro_cli from {gyro_cli.__file__}, not the checkout in {Path.cwd()}"
+
+    def one(fmt: str) -> float:
+        results = [api.solve_file(p) for p in paths]
+        start = time.process_time()
+        if fmt == "solve":
+            for p in paths:
+                api.solve_file(p)
+        elif fmt == "html":
+            for r in results:
+                r.html(picture=False)
+        else:
+            for r in results:
+                r.render(fmt)
+        return time.process_time() - start
+
+    for fmt in FORMATS:  # a first pass of each, not timed: imports, the unit table
+        one(fmt)
+    return {fmt: min(one(fmt) for _ in range(passes)) / len(paths) for fmt in FORMATS}
+
+
+def run_in(tree: Path, passes: int) -> dict[str, float]:
+    """`measure` in another checkout: a child process started there, importing its code."""
+    code = (f"import runpy, sys; sys.argv = [{str(Path(__file__))!r}, '--measure', "
+            f"'--passes', '{passes}']; runpy.run_path(sys.argv[0], run_name='__main__')")
+    done = subprocess.run([sys.executable, "-c", code], cwd=tree, check=True,
+                          capture_output=True, text=True)
+    return json.loads(done.stdout)  # type: ignore[no-any-return]
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--passes", type=int, default=7)
+    parser.add_argument("--rounds", type=int, default=3, help="with --old: each code's runs")
+    parser.add_argument("--old", type=Path, help="a checkout of the code to compare with")
+    parser.add_argument("--measure", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.measure:
+        print(json.dumps(measure(args.passes)))
+        return
+    trees = [("this", ROOT)] + ([("old", args.old.resolve())] if args.old else [])
+    runs: dict[str, list[dict[str, float]]] = {name: [] for name, _ in trees}
+    for k in range(args.rounds if args.old else 1):
+        for name, tree in trees if k % 2 == 0 else trees[::-1]:  # ABBA
+            runs[name].append(run_in(tree, args.passes))
+    print("ms a problem (CPU, best pass, best run)  " + "  ".join(f"{f:>8}" for f in FORMATS))
+    best = {name: {f: min(r[f] for r in rs) * 1000 for f in FORMATS} for name, rs in runs.items()}
+    for name, row in best.items():
+        print(f"{name:40}  " + "  ".join(f"{row[f]:8.2f}" for f in FORMATS))
+    if args.old:
+        print(f"{'this / old':40}  " + "  ".join(
+            f"{best['this'][f] / best['old'][f]:7.2f}x" for f in FORMATS))
+
+
+if __name__ == "__main__":
+    main()
