@@ -7,7 +7,14 @@ solve (solving is its own row), and is timed in the process's CPU seconds, the b
 ``--old DIR`` the same passes run in a checkout of other code (a `git worktree`), the two
 interleaved, so that a change is read against the code before it in one call.
 
+``--instructions``: each format's pass over every ``--every``-th bundled problem counted
+in instructions by valgrind (callgrind), the same on a machine shared with other work,
+where CPU seconds vary by a third from one run to the next. A process that solves the
+files and renders them in one format, less one that only solves them (both after a
+first pass of every format), is that format's pass.
+
     .venv/bin/python benchmarks/bench_render.py [--passes 7] [--rounds 3] [--old DIR]
+    .venv/bin/python benchmarks/bench_render.py --instructions [--every 4] [--old DIR]
 """
 
 from __future__ import annotations
@@ -21,6 +28,27 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 FORMATS = ("solve", "text", "markdown", "latex", "json", "html")
+RENDERED = FORMATS[1:]
+
+#: run in the checkout measured (its code imported), under valgrind: a first pass of
+#: every format, then the files solved, then rendered in one format (or not: "none")
+COUNTED = """
+import glob, sys
+from gyro_cli import api
+fmt, every = sys.argv[1], int(sys.argv[2])
+paths = sorted(glob.glob("problems/*.yaml"))[::every]
+
+def render(results, fmt):
+    for r in results:
+        r.html(picture=False) if fmt == "html" else r.render(fmt)
+
+for f in RENDERED:
+    render([api.solve_file(p) for p in paths], f)
+results = [api.solve_file(p) for p in paths]
+if fmt != "none":
+    render(results, fmt)
+print(len(paths))
+"""
 
 
 def measure(passes: int) -> dict[str, float]:
@@ -62,17 +90,46 @@ def run_in(tree: Path, passes: int) -> dict[str, float]:
     return json.loads(done.stdout)  # type: ignore[no-any-return]
 
 
+def counted(tree: Path, fmt: str, every: int) -> tuple[int, int]:
+    """Instructions of a `COUNTED` process in ``tree`` and the number of files it read."""
+    code = f"RENDERED = {RENDERED!r}\n" + COUNTED
+    done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                           sys.executable, "-c", code, fmt, str(every)], cwd=tree,
+                          check=True, capture_output=True, text=True)
+    return int(done.stderr.rsplit("Collected : ", 1)[1].split()[0]), int(done.stdout)
+
+
+def instructions(trees: list[tuple[str, Path]], every: int) -> None:
+    """Each format's pass in instructions per file, each tree (see the module's doc)."""
+    print("M instructions a problem" + " " * 16 + "  ".join(f"{f:>8}" for f in RENDERED))
+    rows = {}
+    for name, tree in trees:
+        base, files = counted(tree, "none", every)
+        rows[name] = {f: (counted(tree, f, every)[0] - base) / files / 1e6 for f in RENDERED}
+        print(f"{name:40}" + "  ".join(f"{rows[name][f]:8.2f}" for f in RENDERED))
+    if len(trees) > 1:
+        print(f"{'this / old':40}" + "  ".join(
+            f"{rows['this'][f] / rows['old'][f]:7.3f}x" for f in RENDERED))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--passes", type=int, default=7)
     parser.add_argument("--rounds", type=int, default=3, help="with --old: each code's runs")
     parser.add_argument("--old", type=Path, help="a checkout of the code to compare with")
+    parser.add_argument("--instructions", action="store_true",
+                        help="count instructions (valgrind) instead of timing")
+    parser.add_argument("--every", type=int, default=4,
+                        help="with --instructions: every Nth bundled problem")
     parser.add_argument("--measure", action="store_true", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.measure:
         print(json.dumps(measure(args.passes)))
         return
     trees = [("this", ROOT)] + ([("old", args.old.resolve())] if args.old else [])
+    if args.instructions:
+        instructions(trees, args.every)
+        return
     runs: dict[str, list[dict[str, float]]] = {name: [] for name, _ in trees}
     for k in range(args.rounds if args.old else 1):
         for name, tree in trees if k % 2 == 0 else trees[::-1]:  # ABBA

@@ -60,7 +60,7 @@ def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
 
     def call(node: Node) -> _T:
         try:
-            key = shape(node)
+            key = _shape_of(node)
         except TypeError:
             return function(node)
         value = remembered.get(key, _MISSING)  # one lookup: another thread may clear
@@ -74,6 +74,24 @@ def _memo(function: Callable[[Node], _T]) -> Callable[[Node], _T]:
 
 
 _MISSING = object()
+
+#: the shapes of the last trees met, by identity: a step's sides reach four of the memos
+#: above (printed, width, rows), and walking a tree for its shape cost as much as printing
+#: it. Each entry holds its tree, so that no other tree can take its id while it is here;
+#: the trees are not changed once made.
+_SHAPED: dict[int, tuple[object, tuple]] = {}
+
+
+def _shape_of(node: object) -> tuple:
+    """`shape`, walked once for a tree met again soon after (see _SHAPED)."""
+    held = _SHAPED.get(id(node))  # one lookup: another thread may clear
+    if held is not None and held[0] is node:
+        return held[1]
+    key = shape(node)
+    if len(_SHAPED) >= 256:
+        _SHAPED.clear()
+    _SHAPED[id(node)] = (node, key)
+    return key
 
 
 def _slots(cls: type) -> tuple[str, ...]:
