@@ -477,6 +477,9 @@ def precedence(node: Expr, values: bool) -> int:
     """How tightly the node binds as printed; with ``values`` a symbol is its value,
     a quantity with a unit (``0.5 kg``) binds as a product and a negative number as a
     unary minus."""
+    fixed = _OPERATORS.get(node.__class__)  # the operators, a third of all calls
+    if fixed is not None:
+        return fixed
     if isinstance(node, Let):
         return precedence(node.sym if values else node.body, values)
     own = getattr(node, "binding", None)  # the typeset-only nodes of core/prose.py
@@ -502,6 +505,11 @@ def precedence(node: Expr, values: bool) -> int:
         if isinstance(node, Sym) and node.unit:
             return MUL
     return ATOM
+
+
+#: the binding of each operator's own class (its subclasses, typeset nodes among them,
+#: go the long way above)
+_OPERATORS: dict[type, int] = {Add: ADD, Sub: ADD, Mul: MUL, Div: MUL, Neg: NEG, Pow: POW}
 
 
 def leaf(node: Expr, values: bool) -> Expr:
