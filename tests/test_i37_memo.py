@@ -43,3 +43,25 @@ def test_item03_the_second_variant_prints_its_shared_formulas_from_memory(monkey
     first = len(calls)
     html.formula_mathml(formula_node(_tree(3.5, 0.9)))
     assert first == 1 and len(calls) == first
+
+
+def test_item03_a_tree_met_again_is_walked_once_for_its_shape(monkeypatch):
+    """A step's sides reach several memos (printed, width, rows): the tree's shape is
+    walked for the first, and kept by identity for the others."""
+    node = formula_node(_tree(1.5, 0.4))
+    walked = []
+    real = html.shape
+    monkeypatch.setattr(html, "shape", lambda n: walked.append(n is node) or real(n))
+    html.formula_mathml(node, True)
+    html.formula_mathml(node, False)
+    assert walked.count(True) == 1
+
+
+def test_item03_a_tree_gone_never_lends_its_shape_to_one_in_its_place():
+    """Python gives a freed object's id to the next one made: the shape kept for a tree
+    is never served to another tree that came to have its id."""
+    names = ("m", "M", "g", "theta", "x", "r")
+    for k in range(3000):
+        node = formula_node(Sym(names[k % 6], 1.0, "kg") * Sym(names[k % 5], 2.0, "m")
+                            if k % 2 else Sym(names[k % 6], 1.0, "kg") / Sym("g", 2.0, "m"))
+        assert html._shape_of(node) == html.shape(node), k
