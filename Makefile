@@ -78,6 +78,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_simulate.py
 	$(BIN)/python benchmarks/bench_motion.py
 	$(BIN)/python benchmarks/bench_animate.py
+	$(BIN)/python benchmarks/bench_render.py --passes 5
 
 examples: $(STAMP)
 	$(BIN)/gyro solve --format html problems/11_3.yaml > docs/examples/11_3.html

@@ -90,22 +90,35 @@ def run_in(tree: Path, passes: int) -> dict[str, float]:
     return json.loads(done.stdout)  # type: ignore[no-any-return]
 
 
-def counted(tree: Path, fmt: str, every: int) -> tuple[int, int]:
+def counted(tree: Path, fmt: str, every: int, env: dict[str, str],
+            valgrind: bool = True) -> tuple[int, int]:
     """Instructions of a `COUNTED` process in ``tree`` and the number of files it read."""
     code = f"RENDERED = {RENDERED!r}\n" + COUNTED
-    done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
-                           sys.executable, "-c", code, fmt, str(every)], cwd=tree,
-                          check=True, capture_output=True, text=True)
+    tool = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] if valgrind else []
+    done = subprocess.run([*tool, sys.executable, "-c", code, fmt, str(every)], cwd=tree,
+                          check=True, capture_output=True, text=True, env=env)
+    if not valgrind:
+        return 0, int(done.stdout)
     return int(done.stderr.rsplit("Collected : ", 1)[1].split()[0]), int(done.stdout)
 
 
 def instructions(trees: list[tuple[str, Path]], every: int) -> None:
     """Each format's pass in instructions per file, each tree (see the module's doc)."""
+    import os
+    import shutil
+    import tempfile
+
     print("M instructions a problem" + " " * 16 + "  ".join(f"{f:>8}" for f in RENDERED))
     rows = {}
     for name, tree in trees:
-        base, files = counted(tree, "none", every)
-        rows[name] = {f: (counted(tree, f, every)[0] - base) / files / 1e6 for f in RENDERED}
+        # each tree its own unit table, filled by a run not counted: a run that met a unit
+        # first (pint imported, the table written) would count far more than the others
+        env = dict(os.environ, GYRO_CACHE_DIR=tempfile.mkdtemp(prefix="gyro-bench-render-"))
+        counted(tree, RENDERED[-1], every, env, valgrind=False)
+        base, files = counted(tree, "none", every, env)
+        rows[name] = {f: (counted(tree, f, every, env)[0] - base) / files / 1e6
+                      for f in RENDERED}
+        shutil.rmtree(env["GYRO_CACHE_DIR"], ignore_errors=True)
         print(f"{name:40}" + "  ".join(f"{rows[name][f]:8.2f}" for f in RENDERED))
     if len(trees) > 1:
         print(f"{'this / old':40}" + "  ".join(
