@@ -30,37 +30,43 @@ ROOT = Path(__file__).resolve().parent.parent
 FORMATS = ("solve", "text", "markdown", "latex", "json", "html")
 RENDERED = FORMATS[1:]
 
-#: run in the checkout measured (its code imported), under valgrind: a first pass of
-#: every format, then the files solved, then rendered in one format (or not: "none")
-COUNTED = """
-import glob, sys
-from gyro_cli import api
-fmt, every = sys.argv[1], int(sys.argv[2])
-paths = sorted(glob.glob("problems/*.yaml"))[::every]
 
-def render(results, fmt):
+def _render(results: list, fmt: str) -> None:
     for r in results:
         r.html(picture=False) if fmt == "html" else r.render(fmt)
 
-for f in RENDERED:
-    render([api.solve_file(p) for p in paths], f)
-results = [api.solve_file(p) for p in paths]
-if fmt != "none":
-    render(results, fmt)
-print(len(paths))
-"""
 
-
-def measure(passes: int) -> dict[str, float]:
-    """Each format's best pass over every bundled problem, CPU seconds (this process)."""
+def _paths(every: int = 1) -> list[str]:
+    """The bundled problems of the checkout in the working directory, whose code this
+    process imported (`python -c` puts the working directory first)."""
     import glob
 
     import gyro_cli
+
+    assert Path(gyro_cli.__file__).resolve().is_relative_to(Path.cwd().resolve()), \
+        f"gyro_cli from {gyro_cli.__file__}, not the checkout in {Path.cwd()}"
+    return sorted(glob.glob("problems/*.yaml"))[::every]
+
+
+def count_pass(fmt: str, every: int) -> int:
+    """What `--instructions` counts under valgrind: a first pass of every format, then
+    the files solved, then rendered in ``fmt`` (or not: "none"); the number of files."""
     from gyro_cli import api
 
-    paths = sorted(glob.glob("problems/*.yaml"))
-    assert paths and Path(gyro_cli.__file__).resolve().is_relative_to(Path.cwd().resolve()), \
-        f"gyro_cli from {gyro_cli.__file__}, not the checkout in {Path.cwd()}"
+    paths = _paths(every)
+    for f in RENDERED:
+        _render([api.solve_file(p) for p in paths], f)
+    results = [api.solve_file(p) for p in paths]
+    if fmt != "none":
+        _render(results, fmt)
+    return len(paths)
+
+
+def measure(passes: int) -> dict[str, float]:
+    """Each format's best pass over every bundled problem, CPU seconds of this process."""
+    from gyro_cli import api
+
+    paths = _paths()
 
     def one(fmt: str) -> float:
         results = [api.solve_file(p) for p in paths]
@@ -68,12 +74,8 @@ def measure(passes: int) -> dict[str, float]:
         if fmt == "solve":
             for p in paths:
                 api.solve_file(p)
-        elif fmt == "html":
-            for r in results:
-                r.html(picture=False)
         else:
-            for r in results:
-                r.render(fmt)
+            _render(results, fmt)
         return time.process_time() - start
 
     for fmt in FORMATS:  # a first pass of each, not timed: imports, the unit table
@@ -81,22 +83,25 @@ def measure(passes: int) -> dict[str, float]:
     return {fmt: min(one(fmt) for _ in range(passes)) / len(paths) for fmt in FORMATS}
 
 
+def _this_script_in(tree: Path, *args: str, env: dict[str, str] | None = None,
+                    tool: tuple[str, ...] = ()) -> subprocess.CompletedProcess[str]:
+    """This script run with ``args`` in another checkout, importing that checkout's code."""
+    code = (f"import runpy, sys; sys.argv = [{str(Path(__file__))!r}, *{list(args)!r}]; "
+            "runpy.run_path(sys.argv[0], run_name='__main__')")
+    return subprocess.run([*tool, sys.executable, "-c", code], cwd=tree, check=True,
+                          capture_output=True, text=True, env=env)
+
+
 def run_in(tree: Path, passes: int) -> dict[str, float]:
-    """`measure` in another checkout: a child process started there, importing its code."""
-    code = (f"import runpy, sys; sys.argv = [{str(Path(__file__))!r}, '--measure', "
-            f"'--passes', '{passes}']; runpy.run_path(sys.argv[0], run_name='__main__')")
-    done = subprocess.run([sys.executable, "-c", code], cwd=tree, check=True,
-                          capture_output=True, text=True)
-    return json.loads(done.stdout)  # type: ignore[no-any-return]
+    """`measure` in a checkout."""
+    return json.loads(_this_script_in(tree, "--measure", "--passes", str(passes)).stdout)  # type: ignore[no-any-return]
 
 
 def counted(tree: Path, fmt: str, every: int, env: dict[str, str],
             valgrind: bool = True) -> tuple[int, int]:
-    """Instructions of a `COUNTED` process in ``tree`` and the number of files it read."""
-    code = f"RENDERED = {RENDERED!r}\n" + COUNTED
-    tool = ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] if valgrind else []
-    done = subprocess.run([*tool, sys.executable, "-c", code, fmt, str(every)], cwd=tree,
-                          check=True, capture_output=True, text=True, env=env)
+    """Instructions of a `count_pass` process in ``tree`` and the number of files it read."""
+    tool = ("valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null") if valgrind else ()
+    done = _this_script_in(tree, "--count", fmt, "--every", str(every), env=env, tool=tool)
     if not valgrind:
         return 0, int(done.stdout)
     return int(done.stderr.rsplit("Collected : ", 1)[1].split()[0]), int(done.stdout)
@@ -135,7 +140,11 @@ def main() -> None:
     parser.add_argument("--every", type=int, default=4,
                         help="with --instructions: every Nth bundled problem")
     parser.add_argument("--measure", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--count", help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.count:
+        print(count_pass(args.count, args.every))
+        return
     if args.measure:
         print(json.dumps(measure(args.passes)))
         return
