@@ -5,20 +5,11 @@ from __future__ import annotations
 import os
 import stat
 
-import pytest
 
-
-@pytest.mark.parametrize("turn", [1, 2])
-def test_tmp_path_is_a_new_empty_private_folder_under_the_base(tmp_path, tmp_path_factory,
-                                                               request, turn):
+def test_tmp_path_is_a_new_empty_private_folder_under_the_base(tmp_path, tmp_path_factory):
     """Each test's tmp_path: a new folder, empty, only its owner's, named after the test,
     under the run's base folder (where pytest keeps the last three runs)."""
     assert tmp_path.is_dir() and list(tmp_path.iterdir()) == []
     assert tmp_path.parent == tmp_path_factory.getbasetemp()
     assert stat.S_IMODE(os.stat(tmp_path).st_mode) == 0o700
     assert tmp_path.name.startswith("test_tmp_path_is_a_new_empty_")
-    (tmp_path / "mine").write_text(str(turn))
-    others = [p for p in tmp_path.parent.iterdir()
-              if p != tmp_path and p.name.startswith(tmp_path.name[:30])]
-    assert all(not (p / "mine").exists() or p.joinpath("mine").read_text() != str(turn)
-               for p in others)
