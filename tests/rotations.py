@@ -35,3 +35,13 @@ def omega_of(R_of, t: float, h: float = 1e-6) -> np.ndarray:
     """Angular velocity from the skew matrix dR/dt R^T (central differences)."""
     W = (R_of(t + h) - R_of(t - h)) / (2 * h) @ R_of(t).T
     return np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2
+
+
+def rows_times_skew(R: list[float], w0: float, w1: float, w2: float) -> list[float]:
+    """R [omega]x for R given by rows as 9 floats: row i is R_i x omega (on floats: the
+    numpy product of two 3x3 matrices cost the torque-free integrations most of their time)."""
+    out: list[float] = []
+    for i in (0, 3, 6):
+        r0, r1, r2 = R[i:i + 3]
+        out += [r1 * w2 - r2 * w1, r2 * w0 - r0 * w2, r0 * w1 - r1 * w0]
+    return out

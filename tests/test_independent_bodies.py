@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 import pytest
+from rotations import rows_times_skew
 from scipy.integrate import solve_ivp
 
 # ---------------------------------------------------------------- units
@@ -59,10 +60,6 @@ def refused(run, write, text, key):
 
 def close(a, b, rtol=RTOL, atol=0.0):
     return math.isclose(a, b, rel_tol=rtol, abs_tol=atol)
-
-
-def skew(w):
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
 
 
 def vee(W):
@@ -229,12 +226,11 @@ def tf_integrate(I, J, wz, wt):
     t = np.linspace(0.0, t_end, 6001)
 
     def f(_t, y):
-        w = y[:3]
-        R = y[3:].reshape(3, 3)
-        dw = [(I - J) / I * w[1] * w[2],      # I w_x' = (I_y - I_z) w_y w_z
-              (J - I) / I * w[2] * w[0],      # I w_y' = (I_z - I_x) w_z w_x
+        w0, w1, w2, *R = y.tolist()
+        dw = [(I - J) / I * w1 * w2,          # I w_x' = (I_y - I_z) w_y w_z
+              (J - I) / I * w2 * w0,          # I w_y' = (I_z - I_x) w_z w_x
               0.0]                            # J w_z' = 0
-        return np.concatenate([dw, (R @ skew(w)).ravel()])
+        return dw + rows_times_skew(R, w0, w1, w2)
 
     y0 = np.concatenate([[wt, 0.0, wz], np.eye(3).ravel()])
     sol = solve_ivp(f, (0, t_end), y0, method="DOP853", t_eval=t, rtol=1e-12, atol=1e-13)
@@ -870,16 +866,14 @@ def free_rotor(J, I, spin, M, cycles=12, per=400):
     H = J * spin
     w_n = H / I
     t = np.linspace(0, cycles * 2 * math.pi / w_n, cycles * per + 1)
-    Mx = np.array([M, 0.0, 0.0])
 
     def f(_t, y):
-        w = y[:3]
-        R = y[3:].reshape(3, 3)
-        Mb = R.T @ Mx
-        dw = [((I - J) * w[1] * w[2] + Mb[0]) / I,
-              ((J - I) * w[2] * w[0] + Mb[1]) / I,
-              Mb[2] / J]
-        return np.concatenate([dw, (R @ skew(w)).ravel()])
+        w0, w1, w2, *R = y.tolist()
+        m0, m1, m2 = M * R[0], M * R[1], M * R[2]     # R^T (M, 0, 0): M times R's first row
+        dw = [((I - J) * w1 * w2 + m0) / I,
+              ((J - I) * w2 * w0 + m1) / I,
+              m2 / J]
+        return dw + rows_times_skew(R, w0, w1, w2)
 
     y0 = np.concatenate([[0.0, 0.0, spin], np.eye(3).ravel()])
     sol = solve_ivp(f, (0, t[-1]), y0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)

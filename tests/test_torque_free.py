@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 import pytest
+from rotations import rows_times_skew
 from scipy.integrate import solve_ivp
 from test_bad_input import one_line_error
 
@@ -25,16 +26,12 @@ RPM = 2 * math.pi / 60
 SIDEREAL_DAY = 86164.0905  # s
 
 
-def skew(w):
-    return np.array([[0.0, -w[2], w[1]], [w[2], 0.0, -w[0]], [-w[1], w[0], 0.0]])
-
-
 def integrate(J, I, omega, beta, periods):
     """Body rates and attitude from omega at beta to k (in the body x-z plane), R(0) = 1."""
     def rhs(t, y):
-        w, R = y[:3], y[3:].reshape(3, 3)
-        dw = [(I - J) * w[1] * w[2] / I, (J - I) * w[2] * w[0] / I, 0.0]
-        return np.concatenate([dw, (R @ skew(w)).ravel()])
+        w0, w1, w2, *R = y.tolist()
+        dw = [(I - J) * w1 * w2 / I, (J - I) * w2 * w0 / I, 0.0]
+        return dw + rows_times_skew(R, w0, w1, w2)
 
     w0 = [omega * math.sin(beta), 0.0, omega * math.cos(beta)]
     y0 = np.concatenate([w0, np.eye(3).ravel()])
