@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 import pytest
-from rotations import rx, rz
+from rotations import cross3, rx, rz
 from scipy.integrate import solve_ivp
 from test_bad_input import one_line_error
 from test_torque_free import measure
@@ -203,14 +203,10 @@ def _dissipate(J: float, I: float, w0: np.ndarray, rate: float = 2.0, span: floa
     inertia = np.array([I, I, J])
 
     def rhs(t, H):
-        # on floats, the cross products written out: np.cross of two 3-vectors cost this
-        # test four fifths of its time
-        h0, h1, h2 = H.tolist()
-        w0, w1, w2 = h0 / I, h1 / I, h2 / J
-        c0, c1, c2 = h1 * w2 - h2 * w1, h2 * w0 - h0 * w2, h0 * w1 - h1 * w0   # H x omega
-        k = rate / (h0 * h0 + h1 * h1 + h2 * h2)
-        return [c0 + k * (h1 * c2 - h2 * c1), c1 + k * (h2 * c0 - h0 * c2),
-                c2 + k * (h0 * c1 - h1 * c0)]
+        H = H.tolist()  # floats: a numpy array's items cost more than the arithmetic
+        turning = cross3(H, [H[0] / I, H[1] / I, H[2] / J])            # H x omega
+        k = rate / (H[0] * H[0] + H[1] * H[1] + H[2] * H[2])
+        return [a + k * b for a, b in zip(turning, cross3(H, turning))]
 
     sol = solve_ivp(rhs, (0.0, span), inertia * w0, rtol=1e-11, atol=1e-13, method="DOP853")
     assert sol.success

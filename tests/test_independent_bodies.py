@@ -230,7 +230,7 @@ def tf_integrate(I, J, wz, wt):
         dw = [(I - J) / I * w1 * w2,          # I w_x' = (I_y - I_z) w_y w_z
               (J - I) / I * w2 * w0,          # I w_y' = (I_z - I_x) w_z w_x
               0.0]                            # J w_z' = 0
-        return dw + rows_times_skew(R, w0, w1, w2)
+        return dw + rows_times_skew(R, [w0, w1, w2])
 
     y0 = np.concatenate([[wt, 0.0, wz], np.eye(3).ravel()])
     sol = solve_ivp(f, (0, t_end), y0, method="DOP853", t_eval=t, rtol=1e-12, atol=1e-13)
@@ -873,7 +873,7 @@ def free_rotor(J, I, spin, M, cycles=12, per=400):
         dw = [((I - J) * w1 * w2 + m0) / I,
               ((J - I) * w2 * w0 + m1) / I,
               m2 / J]
-        return dw + rows_times_skew(R, w0, w1, w2)
+        return dw + rows_times_skew(R, [w0, w1, w2])
 
     y0 = np.concatenate([[0.0, 0.0, spin], np.eye(3).ravel()])
     sol = solve_ivp(f, (0, t[-1]), y0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)

@@ -31,7 +31,7 @@ def integrate(J, I, omega, beta, periods):
     def rhs(t, y):
         w0, w1, w2, *R = y.tolist()
         dw = [(I - J) * w1 * w2 / I, (J - I) * w2 * w0 / I, 0.0]
-        return dw + rows_times_skew(R, w0, w1, w2)
+        return dw + rows_times_skew(R, [w0, w1, w2])
 
     w0 = [omega * math.sin(beta), 0.0, omega * math.cos(beta)]
     y0 = np.concatenate([w0, np.eye(3).ravel()])
