@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import atexit
 import os
+import re
 import shutil
 import tempfile
 import textwrap
@@ -52,8 +53,6 @@ def tmp_path(tmp_path_factory: pytest.TempPathFactory, request: pytest.FixtureRe
     folder made before it in the process, which cost each test process of a `make test`
     about two seconds (1,500 tests write files). A folder of its own under the same base
     (named after the test, as pytest's is, with a random end), kept as pytest keeps its."""
-    import re
-
     name = re.sub(r"\W", "_", request.node.name)[:30]
     return Path(tempfile.mkdtemp(prefix=name, dir=tmp_path_factory.getbasetemp()))
 

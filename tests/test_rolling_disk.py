@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 import pytest
-from rotations import K, omega_of, rx, rz
+from rotations import K, cross3, omega_of, rx, rz
 from scipy.integrate import solve_ivp
 
 from gyro_cli.kinds.rolling_disk import (
@@ -72,11 +72,6 @@ def test_problem_11_6_by_hand(run, problems_dir):
     assert answers["moment"]["values"][0] == pytest.approx(1.5 * Omega ** 2 * 2, rel=1e-9)
 
 
-def _x(a, b):
-    """a x b of two 3-tuples."""
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
 def rolling_disk_rhs(m, g, r, J, I):
     """Newton-Euler for a rigid disk rolling without slipping; state G, v_G, k, omega.
 
@@ -94,7 +89,7 @@ def rolling_disk_rhs(m, g, r, J, I):
         un = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
         uh = (u[0] / un, u[1] / un, u[2] / un)
         rho = (-r * uh[0], -r * uh[1], -r * uh[2])
-        kdot = _x(w, k)
+        kdot = cross3(w, k)
         udot = tuple(-kdot[2] * k[i] - k[2] * kdot[i] for i in range(3))
         uu = sum(uh[i] * udot[i] for i in range(3))
         rhodot = tuple(-r * (udot[i] - uu * uh[i]) / un for i in range(3))
@@ -104,7 +99,7 @@ def rolling_disk_rhs(m, g, r, J, I):
         rr = rho[0] ** 2 + rho[1] ** 2 + rho[2] ** 2
         A = [[(I + m * rr if i == j else 0.0) + (J - I) * k[i] * k[j] - m * rho[i] * rho[j]
               for j in range(3)] for i in range(3)]
-        t1, t2, t3 = _x(w, Iw_w), _x(rho, _x(w, rhodot)), _x(rho, (0.0, 0.0, 1.0))
+        t1, t2, t3 = cross3(w, Iw_w), cross3(rho, cross3(w, rhodot)), cross3(rho, (0.0, 0.0, 1.0))
         b = [-t1[i] - m * t2[i] + m * g * t3[i] for i in range(3)]
         c00 = A[1][1] * A[2][2] - A[1][2] * A[2][1]
         c01 = A[1][2] * A[2][0] - A[1][0] * A[2][2]
@@ -116,7 +111,7 @@ def rolling_disk_rhs(m, g, r, J, I):
                + (A[0][2] * A[1][0] - A[0][0] * A[1][2]) * b[2]) / det,
               (c02 * b[0] + (A[0][1] * A[2][0] - A[0][0] * A[2][1]) * b[1]
                + (A[0][0] * A[1][1] - A[0][1] * A[1][0]) * b[2]) / det]
-        a = [p - q for p, q in zip(_x(rho, wd), _x(w, rhodot))]
+        a = [p - q for p, q in zip(cross3(rho, wd), cross3(w, rhodot))]
         return [v[0], v[1], v[2], a[0], a[1], a[2], kdot[0], kdot[1], kdot[2],
                 wd[0], wd[1], wd[2]]
     return rhs
