@@ -5,8 +5,8 @@ The suite runs as `make test` runs it (two test processes on this machine, work 
 plain asserts), with this module loaded as a pytest plugin in every test process. Each
 test's record: its wall time, its process's CPU time (user + system) and the CPU time of
 the children it waited for (`RUSAGE_CHILDREN`: a `gyro` subprocess, a build, a hook's
-environment; Chromium is Playwright's child, waited for when the browser closes, so its
-time lands on the test whose teardown closes it). Then the report:
+environment; a process reaped later, such as one of Chromium's, lands on the test that
+is running when it is reaped, and some of Chromium's are never counted). Then the report:
 
 - the run's wall time, and per test process when its first test started, when its last
   ended, and how long it spent in tests (a process that ends long before the other is
@@ -114,14 +114,15 @@ def report(folder: Path, wall: float, start: float, top: int) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--top", type=int, default=25)
-    parser.add_argument("--keep", type=Path, help="keep each test process's records here")
+    parser.add_argument("--keep", type=Path,
+                        help="keep each test process's records in this new or empty folder")
     parser.add_argument("pytest_args", nargs="*", help="after --: pytest's own arguments")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="suite-parts-") as scratch:
         folder = args.keep or Path(scratch)
+        if folder.exists() and any(folder.iterdir()):
+            parser.error(f"--keep {folder}: not an empty folder (the records are written there)")
         folder.mkdir(parents=True, exist_ok=True)
-        for old in folder.glob("*.json"):
-            old.unlink()
         start = time.time()
         wall = run(folder, args.pytest_args)
         report(folder, wall, start, args.top)
