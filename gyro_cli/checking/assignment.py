@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import csv
 import hashlib
-import io
 import os
 import re
 import unicodedata
@@ -71,16 +70,19 @@ def read_table(path: str, what: str, ours: bool = False
     cells it guarded for spreadsheets (csvsafe.py); the guard is taken off again. A
     roster is the teacher's: a leading quote in it is part of the id.
     """
+    from ..core.csvsafe import CellRunsOn, one_line_rows
     from ..core.safeyaml import read_text
 
     text = read_text(path, MAX_ROSTER_BYTES, what, "utf-8-sig")
     try:
-        rows = list(csv.reader(io.StringIO(text, newline="")))
+        rows = one_line_rows(text)
     except csv.Error as err:
         raise InputError(f"not a CSV file: {err}", file=path) from None
+    except CellRunsOn as err:
+        raise InputError(str(err), file=path, line=err.line) from None
     if not rows:
         raise InputError(f"empty; expected {what} with a header row", file=path)
-    header = [c.strip().lower() for c in rows[0]]
+    header = [c.strip().lower() for c in rows[0][1]]
     seen: dict[str, int] = {}
     for k, name in enumerate(header, 1):
         if name and name in seen:
@@ -88,7 +90,7 @@ def read_table(path: str, what: str, ours: bool = False
                              f"and {k}); keep one", file=path, line=1)
         seen[name] = k
     out = []
-    for number, row in enumerate(rows[1:], 2):
+    for number, row in rows[1:]:
         if not any(c.strip() for c in row):
             continue
         if len(row) > len(header) and any(c.strip() for c in row[len(header):]):

@@ -25,7 +25,6 @@ The sheet is read like a problem file: only a regular file, at most
 from __future__ import annotations
 
 import csv
-import io
 import math
 import re
 from dataclasses import dataclass, field
@@ -114,14 +113,18 @@ def read_sheet(path: str) -> list[Submission]:
 
 
 def _read_csv(path: str) -> list[Submission]:
+    from ..core.csvsafe import CellRunsOn, one_line_rows
     from ..core.safeyaml import read_text
     from .assignment import student_id
 
     text = read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)", "utf-8-sig")
     try:
-        rows = list(csv.reader(io.StringIO(text, newline="")))
+        lines = one_line_rows(text)
     except csv.Error as err:
         raise InputError(f"not a CSV file: {err}", file=path) from None
+    except CellRunsOn as err:
+        raise InputError(str(err), file=path, line=err.line) from None
+    rows = [row for _, row in lines]
     order = list(COLUMNS)
     start = 0
     if rows and rows[0] \
@@ -139,7 +142,7 @@ def _read_csv(path: str) -> list[Submission]:
         start = 1
     merged: dict[tuple[str, str, str], Submission] = {}
     seen: dict[tuple[str, ...], int] = {}
-    for number, row in enumerate(rows[start:], start + 1):
+    for number, row in lines[start:]:
         if not any(c.strip() for c in row):
             continue
         same = tuple(" ".join(c.split()) for c in row)

@@ -68,3 +68,31 @@ def plain_cell(text: str) -> str:
         return text
     plain = UNGUARD.sub(lambda m: m.group(1) or m.group(2) or "", text)
     return plain if safe_cell(plain) == text else text
+
+
+class CellRunsOn(ValueError):
+    """A CSV cell holding a line break, at ``line`` (where its row starts)."""
+
+    def __init__(self, line: int) -> None:
+        super().__init__("a cell runs over a line break: a quote left open (\") takes in the "
+                         "lines after it as one cell; close it (a cell here is one line)")
+        self.line = line
+
+
+def one_line_rows(text: str) -> list[tuple[int, list[str]]]:
+    """The rows of a CSV text, each with the line it starts on. A cell that holds a line
+    break is refused (`CellRunsOn`): in a roster or an answer sheet none is meant, and a
+    stray quote would otherwise fold the rows after it, silently, into one cell.
+    ``csv.Error`` is the caller's to report."""
+    import csv
+    import io
+
+    reader = csv.reader(io.StringIO(text, newline=""))
+    rows = []
+    line = 1
+    for row in reader:
+        if any("\n" in cell or "\r" in cell for cell in row):
+            raise CellRunsOn(line)
+        rows.append((line, row))
+        line = reader.line_num + 1
+    return rows
