@@ -130,11 +130,13 @@ def test_missing_means_an_assigned_question_left_blank(run, tmp_path):
     import json
 
     data = json.loads(result.stdout)
-    # 3 students x (2 answers of 11/3 + 2 of 11/5), whatever the sheet holds
-    assert len(data["rows"]) == 12
+    # 3 students x (2 answers of 11/3 + the 1 of 11/5 its statement asks, `ask:`), whatever
+    # the sheet holds (11/5's moment, never asked, was once graded missing)
+    assert len(data["rows"]) == 9
     mine = [r for r in data["rows"] if r["student"] == "s000"]
-    assert [r["result"] for r in mine] == ["missing", "correct", "missing", "missing"]
-    assert data["scores"]["s000"] == {"points": 1.0, "max_points": 4.0}
+    assert [(r["answer"], r["result"]) for r in mine] == [
+        ("precession", "missing"), ("min_spin", "correct"), ("bearing_forces", "missing")]
+    assert data["scores"]["s000"] == {"points": 1.0, "max_points": 3.0}
 
 
 def test_assignment_refuses_strangers_and_doubles(run, tmp_path):
@@ -313,3 +315,34 @@ def test_a_student_id_with_a_line_break_is_refused(run, tmp_path):
     # refused as every cell over a line break is (tests/test_csv_one_line_cells.py)
     assert result.exit_code == 2 and "a cell runs over a line break" in result.stderr
     assert "line 3" in result.stderr and not (tmp_path / "hw").exists()
+
+
+def _solver_answer(run, variant: Path, name: str) -> str:
+    import json
+
+    done = run("solve", "--format", "json", variant)
+    answer = json.loads(done.stdout)["answers"][name]
+    return "; ".join(f"{v!r} {answer['unit']}" for v in answer["values"])
+
+
+def test_a_student_is_graded_on_what_their_statement_asks(run, tmp_path):
+    """11/5's statement asks the supports' forces alone (`ask: [bearing_forces]`): a full
+    answer to it is full marks, with the key and without it, and the moment the file also
+    finds is not a question (it was graded `missing`, half the points, in every student's
+    feedback)."""
+    out = make_set(run, tmp_path, 2, MOTOR)
+    answer = _solver_answer(run, out / "11_5" / "s000.yaml", "bearing_forces")
+    sheet = put(tmp_path, "s.csv", f"s000,11/5,bearing_forces,{answer}\n")
+    for keyed in (True, False):
+        if not keyed:
+            (out / "key.json").rename(tmp_path / "key.json")
+        feedback = tmp_path / f"fb-{keyed}"
+        result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv",
+                     "--feedback", feedback, "--format", "json")
+        assert result.exit_code == 0, result.output
+        import json
+
+        data = json.loads(result.stdout)
+        assert data["scores"]["s000"] == {"points": 1.0, "max_points": 1.0}, keyed
+        assert {r["answer"] for r in data["rows"]} == {"bearing_forces"}, keyed
+        assert "moment" not in (feedback / "s000.md").read_text(encoding="utf-8")

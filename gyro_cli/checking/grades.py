@@ -535,8 +535,11 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         if planned.problem not in questions:
             problem = variants[planned.variant]
             steps = list(getattr(problem, "steps", []))
-            questions[planned.problem] = list(dict.fromkeys(steps + list(problem.find) + [
-                n for n in problem.expected if problem.kind.answer(n) is not None]))
+            # what the student's statement asks (`ask:`, as the handout and a bank ask),
+            # else every answer the file finds or expects; another answer is `extra`
+            answers = list(getattr(problem, "ask", None) or []) or list(problem.find) + [
+                n for n in problem.expected if problem.kind.answer(n) is not None]
+            questions[planned.problem] = list(dict.fromkeys(steps + answers))
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}

@@ -106,10 +106,11 @@ class RosterSet:
                 for s in self.students]
 
     def key_problems(self) -> dict[str, Any]:
-        """The key's entry of each problem: its kind, tolerance and the questions keyed."""
+        """The key's entry of each problem: its kind, tolerance and the questions keyed
+        (what its statement asks, `ask:`, when it says)."""
         return {problem.id: {"kind": problem.kind.name, "tolerance": problem.tolerance,
-                             "questions": list(dict.fromkeys(list(problem.find)
-                                                             + _keyed(problem)))}
+                             "questions": list(dict.fromkeys(
+                                 problem.ask or list(problem.find) + _keyed(problem)))}
                 for problem, _, _ in self.problems}
 
     def draw(self, jobs: int = 1, into: StagedFolder | None = None
