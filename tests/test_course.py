@@ -346,3 +346,12 @@ def test_a_student_is_graded_on_what_their_statement_asks(run, tmp_path):
         assert data["scores"]["s000"] == {"points": 1.0, "max_points": 1.0}, keyed
         assert {r["answer"] for r in data["rows"]} == {"bearing_forces"}, keyed
         assert "moment" not in (feedback / "s000.md").read_text(encoding="utf-8")
+
+
+def test_vary_roster_counts_the_variants_it_wrote(run, tmp_path):
+    """2 students x 2 problems are 4 variant files (key.json was counted as a fifth)."""
+    result = run("vary", TOP, MOTOR, "--roster", roster(tmp_path, 2), "-o", tmp_path / "hw")
+    assert result.exit_code == 0, result.output
+    written = sorted(p for p in (tmp_path / "hw").rglob("*.yaml"))
+    assert len(written) == 4
+    assert "wrote 4 variant file(s), the key and the assignment:" in result.stderr

@@ -92,8 +92,9 @@ def vary(files: tuple[str, ...], count: int | None, roster: str | None, seed: in
 
             written = write_roster_variants(list(files), roster, seed, out_dir, force,
                                             jobs or cpus())
-            click.echo(f"wrote {len(written) - 1} variant file(s) and the assignment:",
-                       err=True)
+            # written: the variants, then key.json, then the assignment
+            click.echo(f"wrote {len(written) - 2} variant file(s), the key and the "
+                       "assignment:", err=True)
             click.echo(written[-1])
             return
         if len(files) != 1 or count is None:
