@@ -355,3 +355,25 @@ def test_vary_roster_counts_the_variants_it_wrote(run, tmp_path):
     written = sorted(p for p in (tmp_path / "hw").rglob("*.yaml"))
     assert len(written) == 4
     assert "wrote 4 variant file(s), the key and the assignment:" in result.stderr
+
+
+def test_a_copy_names_every_student_who_drew_the_same_numbers(run, tmp_path):
+    """s0374 and s0487 draw the same 11/3 (seed 2026): answers with those numbers are
+    either's, and the teacher's note names both, not the first in order alone."""
+    import json
+
+    path = put(tmp_path, "r.csv", "student\ns0000\ns0374\ns0487\n")
+    assert run("vary", TOP, "--roster", path, "--seed", "2026", "-o",
+               tmp_path / "hw").exit_code == 0
+    given = [yaml.safe_load((tmp_path / "hw" / "11_3" / f"{s}.yaml").read_text())["given"]
+             for s in ("s0374", "s0487", "s0000")]
+    assert given[0] == given[1] != given[2]  # the premise: two alike, the copier's own not
+    theirs = json.loads(run("solve", "--format", "json",
+                            tmp_path / "hw" / "11_3" / "s0487.yaml").stdout)["answers"]
+    rows = [f"s0000,11/3,{name},{'; '.join(f'{v!r} rpm' for v in theirs[name]['values'])}"
+            for name in ("precession", "min_spin")]
+    sheet = put(tmp_path, "s.csv", "\n".join(rows) + "\n")
+    result = run("check", "--answers", sheet, "--assignment", tmp_path / "hw" / "assignment.csv",
+                 "--format", "json")
+    notes = [r["note"] for r in json.loads(result.stdout)["rows"] if r["student"] == "s0000"]
+    assert len(notes) == 2 and all("s0374" in n and "s0487" in n for n in notes), notes

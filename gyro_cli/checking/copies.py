@@ -74,6 +74,9 @@ class Match:
     student: str
     variants: dict[str, tuple[str, str]]  # problem -> (other's variant, own variant)
     chance: float  # expected number of students so named by chance in the class
+    #: the other students whose variants have the same numbers (drawn alike): any of them
+    #: may be the source, so the note names them all
+    also: tuple[str, ...] = ()
 
 
 class VariantIndex:
@@ -227,7 +230,7 @@ def whose(index: VariantIndex, student: str, wrong: dict[str, tuple[Any, dict[st
         if not common:
             return None
         found[problem] = answered
-    other = sorted(common or ())[0]
+    other, *also = sorted(common or ())
     chance = float(class_size) * (class_size - 1)
     variants = {}
     for problem, answered in found.items():
@@ -235,4 +238,4 @@ def whose(index: VariantIndex, student: str, wrong: dict[str, tuple[Any, dict[st
         theirs = index.plan.by_item[(other, problem)].variant
         variants[problem] = (theirs, own.variant)
         chance *= index.chance(problem, own.variant, answered)
-    return Match(other, variants, chance) if chance < ALPHA else None
+    return Match(other, variants, chance, tuple(also)) if chance < ALPHA else None

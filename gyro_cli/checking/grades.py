@@ -711,8 +711,10 @@ def _name_match(rows: list[GradeRow], match: Match | None) -> None:
     for row in rows:
         if row.problem in match.variants and row.result in ("wrong", "partial"):
             theirs, own = match.variants[row.problem]
-            row.note = (f"these are the answers to student {match.student}'s variant {theirs}, "
-                        f"not to this student's own {own} (expected number of students "
+            same = (f" (student {', student '.join(match.also)} drew the same numbers)"
+                    if match.also else "")
+            row.note = (f"these are the answers to student {match.student}'s variant {theirs}"
+                        f"{same}, not to this student's own {own} (expected number of students "
                         f"matched by chance in this class: {match.chance:.1g}); "
                         + row.note).rstrip("; ")
 
