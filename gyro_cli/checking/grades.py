@@ -124,21 +124,20 @@ def _read_csv(path: str) -> list[Submission]:
         raise InputError(f"not a CSV file: {err}", file=path) from None
     except CellRunsOn as err:
         raise InputError(str(err), file=path, line=err.line) from None
-    rows = [row for _, row in lines]
+    head = lines[0][1] if lines else []  # a header row, if it is one
     order = list(COLUMNS)
     start = 0
-    if rows and rows[0] \
-            and all(c.strip().lower() in HEADER_WORDS for c in rows[0] if c.strip()):
-        order = [HEADER_WORDS[c.strip().lower()] for c in rows[0] if c.strip()]
+    if head and all(c.strip().lower() in HEADER_WORDS for c in head if c.strip()):
+        order = [HEADER_WORDS[c.strip().lower()] for c in head if c.strip()]
         for k, name in enumerate(order):
             if name in order[:k]:
                 first = order.index(name)
-                raise InputError(f"the header has two {name} columns ({rows[0][first].strip()!r} "
-                                 f"in column {first + 1} and {rows[0][k].strip()!r} in column "
+                raise InputError(f"the header has two {name} columns ({head[first].strip()!r} "
+                                 f"in column {first + 1} and {head[k].strip()!r} in column "
                                  f"{k + 1}); keep one", file=path, line=1)
         if sorted(set(order)) != sorted(COLUMNS):
             raise InputError(f"the header must name the columns {', '.join(COLUMNS)}; got "
-                             f"{', '.join(rows[0])}", file=path, line=1)
+                             f"{', '.join(head)}", file=path, line=1)
         start = 1
     merged: dict[tuple[str, str, str], Submission] = {}
     seen: dict[tuple[str, ...], int] = {}
@@ -494,7 +493,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     """
     import os
 
-    from ..solving.problem import load
+    from ..solving.problem import asked, load
     from .assignment import load_variant, read_assignment, read_key
 
     plan = read_assignment(assignment_path)
@@ -535,11 +534,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         if planned.problem not in questions:
             problem = variants[planned.variant]
             steps = list(getattr(problem, "steps", []))
-            # what the student's statement asks (`ask:`, as the handout and a bank ask),
-            # else every answer the file finds or expects; another answer is `extra`
-            answers = list(getattr(problem, "ask", None) or []) or list(problem.find) + [
-                n for n in problem.expected if problem.kind.answer(n) is not None]
-            questions[planned.problem] = list(dict.fromkeys(steps + answers))
+            # what the student's statement asks, as a bank asks it; another answer is `extra`
+            questions[planned.problem] = list(dict.fromkeys(steps + asked(problem)))
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
@@ -748,7 +744,8 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
     except (KeyError, TypeError):
         return None  # a damaged key: solve instead
     problem = SimpleNamespace(id=row.variant, kind=kind, tolerance=about.get("tolerance"),
-                              file=row.file, find={q: None for q in questions}, expected={})
+                              file=row.file, find={q: None for q in questions}, expected={},
+                              ask=questions)
     return problem, SimpleNamespace(answers=answers)
 
 

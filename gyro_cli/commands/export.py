@@ -86,13 +86,13 @@ def _scale(value: float, si: float, unit: str, dimension: str) -> float:
 
 
 def _asked(problem: Problem, ask: tuple[str, ...] | None) -> list[str]:
-    """The answers a bank asks: ``--ask`` (those this problem finds), else the file's
-    `ask`, else every answer of `find` and `expected`."""
-    names = list(dict.fromkeys([*problem.find, *(n for n in problem.expected
-                                                 if problem.kind.answer(n) is not None)]))
+    """The answers a bank asks: ``--ask`` (those this problem finds), else what its
+    statement asks (`solving.problem.asked`)."""
+    from ..solving.problem import answer_names, asked
+
     if ask is not None:
-        return [name for name in names if name in ask]
-    return problem.ask or names
+        return [name for name in answer_names(problem) if name in ask]
+    return asked(problem)
 
 
 def _key(name: str, label: str, index: int, several: bool, answers: set[str],

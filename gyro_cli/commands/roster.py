@@ -107,10 +107,11 @@ class RosterSet:
 
     def key_problems(self) -> dict[str, Any]:
         """The key's entry of each problem: its kind, tolerance and the questions keyed
-        (what its statement asks, `ask:`, when it says)."""
+        (what its statement asks)."""
+        from ..solving.problem import asked
+
         return {problem.id: {"kind": problem.kind.name, "tolerance": problem.tolerance,
-                             "questions": list(dict.fromkeys(
-                                 problem.ask or list(problem.find) + _keyed(problem)))}
+                             "questions": asked(problem)}
                 for problem, _, _ in self.problems}
 
     def draw(self, jobs: int = 1, into: StagedFolder | None = None

@@ -64,6 +64,18 @@ class Problem:
         return self.lines.get(key or "")
 
 
+def answer_names(problem: Any) -> list[str]:
+    """Every answer a problem gives: its `find`, then those of its `expected` the kind has."""
+    return list(dict.fromkeys([*problem.find, *(n for n in problem.expected
+                                                if problem.kind.answer(n) is not None)]))
+
+
+def asked(problem: Any) -> list[str]:
+    """What its statement asks of a student (`ask:`), else every answer: what a question
+    bank asks and grading by assignment grades."""
+    return list(problem.ask) or answer_names(problem)
+
+
 def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
     """A "did you mean" for a misspelt key or answer.
 
