@@ -414,10 +414,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal)
-        if out:
-            grades_report.write_out(graded, out, out_format, force, read, reveal)
-        if feedback_dir:
-            grades_report.write_feedback(graded, feedback_dir, force, read, reveal)
+        if out or feedback_dir:  # one set: a refused --feedback leaves no --out behind
+            grades_report.write_outputs(graded, force, read, reveal, out=out or None,
+                                        fmt=out_format, feedback=feedback_dir or None)
     except InputError as err:
         fail(err)
     for line in graded.notes:

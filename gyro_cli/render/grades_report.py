@@ -189,50 +189,88 @@ def graded_inputs(graded: Graded, read: Iterable[str] = ()) -> list[str]:
     return inputs
 
 
-def write_out(graded: Graded, out: str, fmt: str, force: bool,
-              read: Iterable[str] = (), reveal: bool = False) -> list[str]:
-    """Write the grades to ``out`` in ``fmt``; the JSON formats are one file per student:
-    ``out`` itself when it ends in .json (the sheet must hold one student), else
-    ``out/<student>.json`` for every student graded. No file written replaces one the
-    grading read (:func:`graded_inputs` of ``read``), with or without ``force``."""
+Target = tuple[str, str]  # (path, text): one file of what a grading writes
+
+
+def out_files(graded: Graded, out: str, fmt: str, read: Iterable[str] = (),
+              reveal: bool = False) -> tuple[list[Target], str | None]:
+    """The files ``--out`` writes in ``fmt``, and the folder they go into (None for one
+    file): the JSON formats are one file per student, ``out`` itself when it ends in
+    .json (the sheet must hold one student), else ``out/<student>.json`` for every
+    student graded. None may replace a file the grading read (:func:`graded_inputs` of
+    ``read``), with or without ``force``: refused here, before anything is written."""
     import os
 
-    from ..core.files import refuse_outputs_over_inputs, write_atomic, write_set_in
-
-    def refuse_inputs(targets: list[str]) -> None:
-        refuse_outputs_over_inputs(targets, graded_inputs(graded, read), option="--out")
-
-    if fmt in ("grades", "canvas"):
-        refuse_inputs([out])
-        if fmt == "grades":
-            write_atomic(out, csv_text(graded), force=force)
-        else:
-            column = os.path.splitext(os.path.basename(out))[0] or "gyro"
-            write_atomic(out, canvas_csv(graded, column), force=force)
-        return [out]
     from ..core.errors import InputError
+    from ..core.files import refuse_outputs_over_inputs
 
-    results = gradescope_results if fmt == "gradescope" else prairielearn_results
+    folder = None
+    if fmt in ("grades", "canvas"):
+        column = os.path.splitext(os.path.basename(out))[0] or "gyro"
+        targets = [(out, csv_text(graded) if fmt == "grades" else canvas_csv(graded, column))]
+    else:
+        results = gradescope_results if fmt == "gradescope" else prairielearn_results
+        if out.endswith(".json"):  # one student's results, as inside an autograder
+            if len(graded.sheet_students) != 1:
+                raise InputError(f"a .json file holds one student's results; the sheet has "
+                                 f"{len(graded.sheet_students)} students: give a directory",
+                                 file=out)
+            targets = [(out, results(graded, graded.sheet_students[0], reveal))]
+        else:
+            from ..checking.assignment import file_names
 
-    def render(graded: Graded, student: str) -> str:
-        return results(graded, student, reveal)
+            names = file_names(list(graded.scores))
+            targets = [(os.path.join(out, names[s] + ".json"), results(graded, s, reveal))
+                       for s in graded.scores]
+            folder = out
+    refuse_outputs_over_inputs([t for t, _ in targets], graded_inputs(graded, read),
+                               option="--out")
+    return targets, folder
 
-    if out.endswith(".json"):  # one student's results, as inside an autograder
-        if len(graded.sheet_students) != 1:
-            raise InputError(f"a .json file holds one student's results; the sheet has "
-                             f"{len(graded.sheet_students)} students: give a directory",
-                             file=out)
-        refuse_inputs([out])
-        write_atomic(out, render(graded, graded.sheet_students[0]), force=force)
-        return [out]
-    students = list(graded.scores)
-    from ..checking.assignment import file_names
 
-    names = file_names(students)
-    targets = [(os.path.join(out, names[s] + ".json"), render(graded, s)) for s in students]
-    refuse_inputs([t for t, _ in targets])
-    write_set_in(out, targets, force=force)  # every student's file, or none
-    return [t for t, _ in targets]
+def write_out(graded: Graded, out: str, fmt: str, force: bool,
+              read: Iterable[str] = (), reveal: bool = False) -> list[str]:
+    """Write the grades to ``out`` in ``fmt`` (:func:`out_files`): every file, or none."""
+    return write_outputs(graded, force, read, reveal, out=out, fmt=fmt)
+
+
+def write_outputs(graded: Graded, force: bool, read: Iterable[str] = (),
+                  reveal: bool = False, *, out: str | None = None, fmt: str = "grades",
+                  feedback: str | None = None) -> list[str]:
+    """Write what a grading was asked for, ``--out`` (:func:`out_files`) and ``--feedback``
+    (:func:`feedback_files`), as one set: every check (a file that exists without
+    ``force``, an input in the way, a file where a folder should be) is made before the
+    first file is written, and a failure leaves none of them: a refused ``--feedback``
+    leaves no new grades file behind."""
+    import os
+
+    from ..core.errors import InputError
+    from ..core.files import write_set, write_set_in
+
+    read = list(read)
+    targets: list[Target] = []
+    folders: list[str] = []
+    if out is not None:
+        files, folder = out_files(graded, out, fmt, read, reveal)
+        targets += files
+        if folder is not None:
+            folders.append(folder)
+    if feedback is not None:
+        targets += feedback_files(graded, feedback, read, reveal)
+        folders.append(feedback)
+    seen: set[str] = set()
+    for path, _ in targets:
+        same = os.path.normcase(os.path.abspath(path))
+        if same in seen:
+            raise InputError("--out and --feedback would both write this file; give them "
+                             "different places", file=path)
+        seen.add(same)
+    if out is not None and out not in folders and not os.path.isdir(os.path.dirname(out) or "."):
+        raise InputError(f"cannot write: no such directory {os.path.dirname(out)!r}",
+                         file=out)  # one file's folder is not made, as for any output
+    # write_set_in makes every folder a file goes into, and removes them on a failure
+    written = write_set_in(folders[0], targets, force) if folders else write_set(targets, force)
+    return [str(path) for path in written]
 
 
 # ---- feedback: a short page per student -------------------------------------------------
@@ -283,23 +321,29 @@ def _md(text: Any) -> str:
     return out
 
 
-def write_feedback(graded: Graded, folder: str, force: bool,
-                   read: Iterable[str] = (), reveal: bool = False) -> list[str]:
-    """``folder/<student>.md`` for every student graded; nothing over an existing file
-    without ``force``, nothing over a file the grading read (:func:`graded_inputs`) at
-    all (checked before anything is written)."""
+def feedback_files(graded: Graded, folder: str, read: Iterable[str] = (),
+                   reveal: bool = False) -> list[Target]:
+    """``folder/<student>.md`` for every student graded (:func:`feedback_text`); none may
+    replace a file the grading read (:func:`graded_inputs`): refused here, before
+    anything is written."""
     import os
 
     from ..checking.assignment import file_names
     from ..core.errors import InputError
-    from ..core.files import refuse_outputs_over_inputs, write_set_in
+    from ..core.files import refuse_outputs_over_inputs
 
+    if os.path.exists(folder) and not os.path.isdir(folder):
+        raise InputError("exists and is not a directory", file=folder)
     names = file_names(list(graded.scores))
     targets = [(os.path.join(folder, names[s] + ".md"), feedback_text(graded, s, reveal))
                for s in graded.scores]
-    if os.path.exists(folder) and not os.path.isdir(folder):
-        raise InputError("exists and is not a directory", file=folder)
     refuse_outputs_over_inputs([t for t, _ in targets], graded_inputs(graded, read),
                                option="--feedback")
-    write_set_in(folder, targets, force=force)  # every student's file, or none
-    return [t for t, _ in targets]
+    return targets
+
+
+def write_feedback(graded: Graded, folder: str, force: bool,
+                   read: Iterable[str] = (), reveal: bool = False) -> list[str]:
+    """Write every student's feedback page (:func:`feedback_files`): all of them, or none;
+    nothing over an existing file without ``force``."""
+    return write_outputs(graded, force, read, reveal, feedback=folder)

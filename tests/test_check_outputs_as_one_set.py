@@ -1,0 +1,73 @@
+"""`gyro check --out F --feedback DIR` writes its files as one set: a refusal of either
+(a feedback page that exists, an input in the way) comes before anything is written (an
+adversarial pass found the grades file written, then --feedback refused with exit 2)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import PROBLEMS
+
+
+@pytest.fixture
+def homework(run, tmp_path: Path) -> Path:
+    (tmp_path / "roster.csv").write_text("student,name\nann,Ann\nbob,Bob\n")
+    done = run("vary", PROBLEMS / "11_3.yaml", "--roster", tmp_path / "roster.csv",
+               "--seed", "7", "-o", tmp_path / "hw")
+    assert done.exit_code == 0, done.output
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text("student,problem,answer,value\nann,11/3,min_spin,991.9 rpm\n"
+                     "bob,11/3,min_spin,941.8 rpm\n")
+    return tmp_path / "hw" / "assignment.csv"
+
+
+def _refused(result, name: str) -> None:
+    assert result.exit_code == 2, result.output
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1 and name in lines[0] and "exists" in lines[0], lines
+
+
+@pytest.mark.parametrize("fmt", ["grades", "canvas", "gradescope", "prairielearn"])
+def test_a_refused_feedback_page_leaves_no_out_behind(run, tmp_path, homework, fmt):
+    feedback = tmp_path / "fb"
+    feedback.mkdir()
+    (feedback / "bob.md").write_text("last week's page\n")
+    out = tmp_path / ("grades.csv" if fmt in ("grades", "canvas") else fmt)
+    result = run("check", "--answers", tmp_path / "sheet.csv", "--assignment", homework,
+                 "--out", out, "--out-format", fmt, "--feedback", feedback)
+    _refused(result, "bob.md")
+    assert not out.exists()
+    assert sorted(p.name for p in feedback.iterdir()) == ["bob.md"]
+    assert (feedback / "bob.md").read_text() == "last week's page\n"
+
+
+def test_a_refused_out_leaves_no_feedback_behind(run, tmp_path, homework):
+    out = tmp_path / "grades.csv"
+    out.write_text("last week's grades\n")
+    feedback = tmp_path / "fb"
+    result = run("check", "--answers", tmp_path / "sheet.csv", "--assignment", homework,
+                 "--out", out, "--feedback", feedback)
+    _refused(result, "grades.csv")
+    assert out.read_text() == "last week's grades\n" and not feedback.exists()
+
+
+def test_with_force_both_are_written(run, tmp_path, homework):
+    feedback = tmp_path / "fb"
+    feedback.mkdir()
+    (feedback / "bob.md").write_text("last week's page\n")
+    out = tmp_path / "grades.csv"
+    result = run("check", "--answers", tmp_path / "sheet.csv", "--assignment", homework,
+                 "--out", out, "--feedback", feedback, "--force")
+    assert result.exit_code == 0, result.output
+    assert out.read_text().startswith("student,")
+    assert sorted(p.name for p in feedback.iterdir()) == ["ann.md", "bob.md"]
+    assert "# Feedback for bob" in (feedback / "bob.md").read_text()
+
+
+def test_out_and_feedback_naming_one_file_is_refused(run, tmp_path, homework):
+    feedback = tmp_path / "fb"
+    result = run("check", "--answers", tmp_path / "sheet.csv", "--assignment", homework,
+                 "--out", feedback / "ann.md", "--feedback", feedback)
+    assert result.exit_code == 2, result.output
+    assert "would both write" in result.stderr and not feedback.exists()
