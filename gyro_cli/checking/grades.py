@@ -72,6 +72,8 @@ class Submission:
     answer: str
     values: list[Any]
     line: int | None = None
+    # (line, values) of each sheet row merged into this one (a CSV root a row)
+    rows: list[tuple[int | None, list[Any]]] = field(default_factory=list)
 
 
 @dataclass
@@ -162,7 +164,8 @@ def _read_csv(path: str) -> list[Submission]:
         if key in merged:
             merged[key].values += values
         else:
-            merged[key] = Submission(*key, values, number)
+            merged[key] = Submission(*key, list(values), number)
+        merged[key].rows.append((number, values))
     return list(merged.values())
 
 
@@ -347,6 +350,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
                              f"{answers}{steps})", file=sheet, line=s.line)
+        _refuse_repeated_rows(s, problem, sheet)
         questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
         questions[s.answer] = None
     graded = Graded([])
@@ -573,12 +577,13 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             names = ", ".join(a.name for a in problem.kind.answers)
             raise InputError(f"problem {own.problem!r} has no answer {s.answer!r} (answers: "
                              f"{names})", **where)
+        _refuse_repeated_rows(s, problem, sheet)
         if s.answer not in questions[own.problem]:
             extra.append((s, own))
             continue
         key = (s.student, own.problem, s.answer)
         if key in items:  # the same question under a second id: one question all the same
-            _same_answer(items[key], named[key], s, sheet)
+            _same_answer(items[key], named[key], s, problem, sheet)
             continue
         items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
         named[key] = s.problem
@@ -664,13 +669,12 @@ def _submitter_only(submissions: list[Submission], student: str, sheet: str) -> 
                              "answers only", file=sheet, line=s.line)
 
 
-def _same_answer(first: Submission, first_id: str, again: Submission, sheet: str) -> None:
-    """A question answered under two ids (``11/3`` and ``11/3-ann``): the same values count
-    once; different ones are refused naming both lines (which one would count?)."""
-    def plain(values: list[Any]) -> list[str]:
-        return sorted(" ".join(str(v).split()).lower() for v in values)
-
-    if plain(first.values) == plain(again.values):
+def _same_answer(first: Submission, first_id: str, again: Submission, problem: Any,
+                 sheet: str) -> None:
+    """A question answered under two ids (``11/3`` and ``11/3-ann``): the same values
+    (:func:`same_values`) count once; different ones are refused naming both lines (which
+    one would count?)."""
+    if same_values(first.values, again.values, problem, again.answer):
         return
     lines = (f"lines {first.line} and {again.line}" if first.line != again.line
              else f"line {first.line}")
@@ -678,6 +682,44 @@ def _same_answer(first: Submission, first_id: str, again: Submission, sheet: str
                      f"{first.problem} twice, under {first_id!r} and {again.problem!r} "
                      f"({lines}), with different values; keep one", file=sheet,
                      line=again.line)
+
+
+def _refuse_repeated_rows(submission: Submission, problem: Any, sheet: str) -> None:
+    """Two rows of one question giving the same values (:func:`same_values`: ``991.9 rpm``
+    and ``991.9rpm``) are a copy-paste slip, refused as a row repeated word for word is
+    (`_read_csv`): merged as two roots they would halve the point."""
+    for k, (line, values) in enumerate(submission.rows):
+        for earlier, before in submission.rows[:k]:
+            if same_values(before, values, problem, submission.answer):
+                raise InputError(f"this row gives the values of line {earlier} again "
+                                 f"({'; '.join(map(str, values))}); remove one (several "
+                                 "roots go in one row separated by ';' or in rows with "
+                                 "different values)", file=sheet, line=line)
+
+
+def same_values(first: list[Any], again: list[Any], problem: Any, name: str) -> bool:
+    """Whether two lists of submitted values are one answer: each value read as the
+    answer's quantity (``991.9 rpm``, ``991.9rpm`` and ``991.9 RPM`` are one, ``5 mN*m``
+    and ``5 MN*m`` two), a value that does not read as one compared as its text without
+    spaces, a word answer's words ignoring case and spacing; roots in any order."""
+    spec = problem.kind.answer(name)
+    dimension = spec.dimension if spec is not None else ""  # "": a step, compared as text
+
+    def key(value: Any) -> tuple[str, Any]:
+        text = str(value)
+        if dimension is None:
+            return "word", " ".join(text.split()).casefold()
+        if dimension:
+            try:
+                return "si", parse_value(value, dimension, name).si
+            except Exception:  # not a quantity (graded `invalid`): its text decides
+                pass
+        return "text", "".join(text.split())
+
+    def keys(values: list[Any]) -> list[tuple[str, Any]]:
+        return sorted(map(key, values), key=repr)
+
+    return keys(first) == keys(again)
 
 
 def conceal(graded: Graded, student: str, reveal: bool = False) -> Graded:
