@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 import unicodedata
 from pathlib import Path
 
@@ -136,6 +137,31 @@ def test_item11_grades_out_never_replace_the_assignment_key_or_sheet(run, tmp_pa
                  "--feedback", tmp_path / "fb", "--force")
     _one_line(result, "ann.md", "input")
     assert sheet.read_bytes() == before
+
+
+def test_ids_windows_keeps_for_devices_get_hashed_file_names(run, tmp_path):
+    """`con.md` or `11_3/nul.yaml` is a device on Windows, not a file (found by reading
+    the code in an adversarial pass): such an id gets a hashed name, as `key` does."""
+    from gyro_cli.checking.assignment import file_names
+
+    devices = ["con", "NUL", "Aux", "prn", "com1", "LPT9", "con.x", "nul ", "CONIN$"]
+    names = file_names(devices + ["console", "com", "ann"])
+    for sid in devices:
+        stem = names[sid].split(".")[0].lower()
+        assert stem not in {"con", "prn", "aux", "nul", "conin$", "conout$"} and \
+            not re.fullmatch(r"(com|lpt)[0-9]", stem), (sid, names[sid])
+    assert [names[s] for s in ("console", "com", "ann")] == ["console", "com", "ann"]
+    # end to end: the variant files and the feedback pages
+    r = _roster(tmp_path, ["con", "ann"])
+    out = tmp_path / "hw"
+    assert run("vary", TOP, "--roster", r, "-o", out).exit_code == 0
+    files = {row["student"]: row["file"] for row in assignment_rows(out)}
+    assert files["ann"] == "11_3/ann.yaml" and files["con"].startswith("11_3/con-"), files
+    result = run("check", "--answers", _sheet(tmp_path, _own_answers(out)), "--assignment",
+                 out / "assignment.csv", "--feedback", tmp_path / "fb")
+    assert result.exit_code == 0, result.output
+    pages = sorted(p.name for p in (tmp_path / "fb").iterdir())
+    assert pages[0] == "ann.md" and pages[1].startswith("con-") and len(pages) == 2, pages
 
 
 # ---- item 12 -----------------------------------------------------------------------------

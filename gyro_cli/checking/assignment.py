@@ -373,18 +373,27 @@ def load_variant(row: Assigned, assignment_path: str) -> Any:
 # Names gyro gives its own files beside the students' (key.json, assignment.csv, the
 # handout's OUT-key.csv): no student's file is named so.
 RESERVED_NAMES = frozenset(("key", "assignment"))
+# Names Windows keeps for devices, whatever follows a dot: `con.md` is the console there.
+WINDOWS_DEVICES = frozenset(("con", "prn", "aux", "nul", "conin$", "conout$")) | \
+    frozenset(f"{port}{n}" for port in ("com", "lpt") for n in range(10))
+
+
+def _a_device(name: str) -> bool:
+    """Whether Windows would take a file ``name.EXT`` for a device (`WINDOWS_DEVICES`)."""
+    return name.split(".")[0].rstrip(" ").lower() in WINDOWS_DEVICES
 
 
 def file_names(students: list[str]) -> dict[str, str]:
     """A file name stem per student id, unique across the whole list and case-insensitively
     too (a file system that folds case). A safe id is its own name unless an earlier id
-    took it (in any case) or gyro names its own files so (RESERVED_NAMES); any other id
-    gets its safe letters and a hash of the exact id, never a name another student has."""
+    took it (in any case), gyro names its own files so (RESERVED_NAMES) or Windows keeps
+    it for a device (`con`, `nul`, `com1`: WINDOWS_DEVICES); any other id gets its safe
+    letters and a hash of the exact id, never a name another student has."""
     out: dict[str, str] = {}
     taken: set[str] = set()
     for sid in students:  # first the ids that are their own names
         if sid not in out and _safe_letters(sid) == sid and sid.lower() not in taken \
-                and sid.lower() not in RESERVED_NAMES:
+                and sid.lower() not in RESERVED_NAMES and not _a_device(sid):
             out[sid] = sid
             taken.add(sid.lower())
     for sid in students:
@@ -401,6 +410,8 @@ def _safe_letters(sid: str) -> str:
 def _hashed_name(sid: str, taken: set[str]) -> str:
     """``<safe letters>-<hash>``, the hash longer (then numbered) until no one has it."""
     stem = _safe_letters(sid) or "student"
+    if _a_device(stem + "-"):  # `con.x-<hash>` would still be the device on Windows
+        stem = "_" + stem
     digest = hashlib.sha256(sid.encode("utf-8", "surrogatepass")).hexdigest()
     for size in (8, 16, 64):
         name = f"{stem}-{digest[:size]}"
