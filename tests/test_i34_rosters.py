@@ -164,6 +164,39 @@ def test_ids_windows_keeps_for_devices_get_hashed_file_names(run, tmp_path):
     assert pages[0] == "ann.md" and pages[1].startswith("con-") and len(pages) == 2, pages
 
 
+@pytest.mark.parametrize(("one", "other", "words"), [
+    ("\u00b5lab", "\u03bclab", "U+00B5 MICRO SIGN against U+03BC GREEK SMALL LETTER MU"),
+    ("\ufb01ona", "fiona", "U+FB01 LATIN SMALL LIGATURE FI against U+0066"),
+    ("ann\u00a0lee", "ann lee", "U+00A0 NO-BREAK SPACE against U+0020 SPACE"),
+    ("\uff41nn", "ann", "U+FF41 FULLWIDTH LATIN SMALL LETTER A against U+0061"),
+])
+def test_roster_ids_that_look_alike_are_refused(run, tmp_path, one, other, words):
+    """Two ids no one can tell apart on a sheet (found in an adversarial pass: `µlab` and
+    `μlab` were two students, each with a variant) are refused naming both lines."""
+    r = _roster(tmp_path, [other, "bob", one])
+    result = run("vary", TOP, "--roster", r, "-o", tmp_path / "hw")
+    assert result.exit_code == 2, result.output
+    (line,) = result.stderr.splitlines()
+    assert "looks the same" in line and "lines 2 and 4" in line and words in line, line
+    assert not (tmp_path / "hw").exists()
+
+
+def test_a_sheet_id_that_only_looks_like_a_roster_id_is_named_with_it(run, tmp_path):
+    r = _roster(tmp_path, ["\u03bclab", "ann"])
+    out = tmp_path / "hw"
+    assert run("vary", TOP, "--roster", r, "-o", out).exit_code == 0
+    sheet = put(tmp_path, "s.csv", "\u00b5lab,11/3,min_spin,900 rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv")
+    assert result.exit_code == 2, result.output
+    (line,) = result.stderr.splitlines()
+    assert "is not in the assignment" in line and "which looks the same" in line, line
+    assert "U+00B5 MICRO SIGN against U+03BC" in line, line
+    # an id like no roster id gets no such words
+    put(tmp_path, "s.csv", "zed,11/3,min_spin,900 rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv")
+    assert result.exit_code == 2 and "looks the same" not in result.stderr
+
+
 # ---- item 12 -----------------------------------------------------------------------------
 
 @pytest.mark.parametrize("column", ["variant", "Problem", "file"])

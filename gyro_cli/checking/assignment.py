@@ -135,6 +135,26 @@ def student_id(text: str) -> str:
     return unicodedata.normalize("NFC", text)
 
 
+def looks_as(sid: str) -> str:
+    """What an id looks like: NFKC, under which the micro sign ``µ`` is the Greek ``μ``,
+    the ligature ``ﬁ`` is ``fi`` and a no-break space a space. Two roster ids that look
+    alike are refused; a sheet's id that only looks like a roster id is named with it."""
+    return unicodedata.normalize("NFKC", sid)
+
+
+def lookalike_words(one: str, other: str) -> str:
+    """Where two ids that look alike (:func:`looks_as`) differ, for a message:
+    ``U+00B5 MICRO SIGN against U+03BC GREEK SMALL LETTER MU``."""
+    def named(c: str) -> str:
+        return f"U+{ord(c):04X} {unicodedata.name(c, 'unnamed')}"
+
+    a = next((c for c in one if c not in other), None)
+    b = next((c for c in other if c not in one), None)
+    if a is None or b is None:
+        return "their letters are written differently"
+    return f"{named(a)} against {named(b)}"
+
+
 def _roster_cells(header: list[str], cells: list[str], path: str, line: int) -> None:
     """A name is printable text; no cell holds a NUL."""
     for column, cell in zip(header, cells):
@@ -163,6 +183,7 @@ def read_roster(path: str) -> list[Student]:
     at = header.index("student")
     students: dict[str, Student] = {}
     written: dict[str, str] = {}
+    looks: dict[str, str] = {}  # looks_as(id) -> the id
     for number, cells in rows:
         if not cells[at]:
             raise InputError("empty student id", file=path, line=number)
@@ -174,6 +195,12 @@ def read_roster(path: str) -> list[Student]:
                 if written[sid] != cells[at] else ""
             raise InputError(f"student {sid!r} is listed twice (lines {students[sid].line} "
                              f"and {number}{forms}); keep one", file=path, line=number)
+        alike = looks.setdefault(looks_as(sid), sid)
+        if alike != sid:  # on an answer sheet no one could tell them apart
+            raise InputError(f"student {sid!r} looks the same as student {alike!r} (lines "
+                             f"{students[alike].line} and {number}: "
+                             f"{lookalike_words(sid, alike)}); keep one, or give ids that "
+                             "can be told apart", file=path, line=number)
         extra = {h: c for h, c in zip(header, cells) if h and h != "student"}
         students[sid] = Student(sid, extra, number)
         written[sid] = cells[at]

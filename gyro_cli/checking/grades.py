@@ -504,7 +504,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     submissions = read_sheet(sheet)
     if submitter is not None:
         if submitter not in plan.students:
-            raise InputError(f"--student {submitter!r} is not in the assignment",
+            raise InputError(f"--student {submitter!r} is not in the assignment"
+                             f"{_looks_like(submitter, plan.students)}",
                              file=assignment_path)
         _submitter_only(submissions, submitter, sheet)
     stored_key, why = read_key(os.path.join(os.path.dirname(assignment_path), "key.json"))
@@ -549,7 +550,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         where = _Where(file=sheet, line=s.line)
         if s.student not in plan.students:
             raise InputError(f"student {s.student!r} is not in the assignment "
-                             f"{assignment_path}", **where)
+                             f"{assignment_path}{_looks_like(s.student, plan.students)}",
+                             **where)
         if s.problem in assigned and s.problem in plan.by_variant:
             holder = plan.by_variant[s.problem]
             raise InputError(f"the id {s.problem!r} is both problem {s.problem} of the "
@@ -667,6 +669,19 @@ def _submitter_only(submissions: list[Submission], student: str, sheet: str) -> 
             raise InputError(f"this row names student {s.student!r}, but the submitter is "
                              f"{student!r} (--student); a submission holds its submitter's "
                              "answers only", file=sheet, line=s.line)
+
+
+def _looks_like(sid: str, students: Any) -> str:
+    """``; the assignment has 'μ1', which looks the same (...)`` when a roster id only
+    looks like ``sid`` (`assignment.looks_as`: a micro sign for a mu, a no-break space)."""
+    from .assignment import lookalike_words, looks_as
+
+    looks = looks_as(sid)
+    alike = next((other for other in students if looks_as(other) == looks), None)
+    if alike is None:
+        return ""
+    return (f"; the assignment has {alike!r}, which looks the same "
+            f"({lookalike_words(sid, alike)})")
 
 
 def _same_answer(first: Submission, first_id: str, again: Submission, problem: Any,
