@@ -30,7 +30,7 @@ from typing import Any
 
 from ..core.errors import InputError
 from .expected import Expected, parse_value
-from .matching import compare
+from .matching import graded_lines
 from .tolerance import Tolerance, tolerance_for
 
 ECF = "ecf"
@@ -153,7 +153,7 @@ def follow_branch(items: list[Item], result: Any) -> None:
         sub = SimpleNamespace(si_values=[answer.si_values[i] for i in keep],
                               si_unit=answer.si_unit, unit=answer.si_unit,
                               labels=[answer.labels[i] for i in keep])
-        lines = compare(item.name, parsed, item.tolerance, sub)
+        lines = graded_lines(item.name, parsed, item.tolerance, sub)
         if len(lines) == len(keep) and all(line.passed for line in lines):
             item.row.points, item.row.result = 1.0, "correct"
             item.row.note = item.row.feedback = ""  # the other root is not missing
@@ -162,7 +162,7 @@ def follow_branch(items: list[Item], result: Any) -> None:
 
 def _branch(item: Item, parsed: list[Expected], answer: Any) -> set[str] | None:
     """The labels of the roots a student's values matched (all of them must match)."""
-    lines = compare(item.name, parsed, item.tolerance, answer)
+    lines = graded_lines(item.name, parsed, item.tolerance, answer)
     labels = set()
     for line in lines:
         if line.expected is None:

@@ -36,7 +36,7 @@ from . import check
 from .copies import Match, VariantIndex, whose
 from .ecf import check_steps
 from .expected import parse_value
-from .matching import compare, diagnose
+from .matching import diagnose, graded_lines
 from .tolerance import tolerance_for
 
 COLUMNS = ("student", "problem", "answer", "value")
@@ -844,7 +844,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
             row.feedback = row.note
             return row
-    lines = compare(name, parsed, tolerance, reported)
+    lines = graded_lines(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
     row.points = round(passed / len(lines), 4) if lines else 0.0
     row.result = "correct" if passed == len(lines) else ("partial" if passed else "wrong")

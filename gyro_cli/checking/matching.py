@@ -122,7 +122,8 @@ def match_in_order(n_expected: int, n_computed: int) -> list[tuple[int | None, i
 
 def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: Any,
             strict: bool = True, convention: str = "",
-            signs: tuple[tuple[str, int], ...] = ()) -> list[AnswerCheck]:
+            signs: tuple[tuple[str, int], ...] = (),
+            root_widths: list[float] | None = None) -> list[AnswerCheck]:
     """Compare the expected values of one answer with its computed values: roots as sets
     (each expected value with its nearest root), an ordered answer (labelled A, B, outer,
     inner, components) position by position.
@@ -133,6 +134,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     the kind signs this answer, quoted when an expected value is a computed one's size;
     ``signs``, the words that sign its sizes (``up``, ``down``), offered in that case. A
     value whose words name its place (``1.4 kN down at B``) is compared with that place.
+    ``root_widths``: the SI half-width of each computed root, when the computed values are
+    the truth and the values compared are a student's (grading: `tolerance.student_widths`);
+    else each expected value's own tolerance decides.
     """
     computed = list(reported.si_values)
     if tolerance.magnitude and reported.si_unit is not None:
@@ -153,13 +157,16 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                                    f"expected {value.text}, got {', '.join(got)}"))
         return out
     widths_si = [tolerance.half_width(float(v.si), v.number) for v in values]
-    for v, width in zip(values, widths_si):
-        if not math.isfinite(width / v.factor):  # 1e300 rev/s in arcsec/yr
+    for v, w in zip(values, widths_si):
+        if not math.isfinite(w / v.factor):  # 1e300 rev/s in arcsec/yr
             raise InputError(f"tolerance {tolerance.text!r} is too large to express in "
                              f"{v.unit or reported.unit}; give a smaller one", key="tolerance")
 
+    def width(i: int, j: int | None) -> float:
+        return root_widths[j] if root_widths is not None and j is not None else widths_si[i]
+
     def within(i: int, j: int) -> bool:
-        return abs(computed[j] - float(values[i].si)) <= widths_si[i] * (1 + 1e-12) + 1e-300
+        return abs(computed[j] - float(values[i].si)) <= width(i, j) * (1 + 1e-12) + 1e-300
 
     in_order = ordered(labels)
     if any(v.side is not None for v in values):  # placed by their words
@@ -201,14 +208,14 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
             continue
         value = values[i]
         unit = value.unit or reported.unit or ""
-        width_si = widths_si[i]
-        width = width_si / value.factor
+        width_si = width(i, j)
+        half = width_si / value.factor
         check = AnswerCheck(name, index, value.text, None, False, unit=unit,
                             expected_value=value.number, expected_si=value.si,
                             si_unit=reported.si_unit, tolerance=tolerance.text,
-                            tolerance_value=width)
+                            tolerance_value=half)
         if j is None:
-            check.message = (f"expected {value.text} +- {num(width)} {unit}, got no root "
+            check.message = (f"expected {value.text} +- {num(half)} {unit}, got no root "
                              f"({len(values)} expected, {len(computed)} computed)").replace(" ,", ",")
             check.slip = diagnose(float(value.si), math.nan, width_si, computed)
             if check.slip:
@@ -229,7 +236,7 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         if not check.passed:
             off = ("expected is 0" if not value.si else "more than 1e308 times the expected value" if
                    check.relative_error is None else f"{check.relative_error * 100:+.3g}%")
-            check.message = (f"expected {value.text} +- {num(width)} {unit}, got "
+            check.message = (f"expected {value.text} +- {num(half)} {unit}, got "
                              f"{num(got)} {unit}; off by {num(got - value.number)} {unit} "
                              f"({off})").replace("  ", " ")
             if not math.isfinite(got):
@@ -255,6 +262,17 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                 check.slip = _other_root(value, others, width_si, unit)
         out.append(check)
     return out
+
+
+def graded_lines(name: str, parsed: list[Any], tolerance: Any, reported: Any) -> list[Any]:
+    """A student's values of one answer against the solver's (`matching.compare`), each
+    accepted within the tolerance measured from the solver's value, and never within less
+    than its printed figures cost (`tolerance.student_widths`): the printed answer copied
+    digit for digit is right, as in a question bank's blank."""
+    from .tolerance import student_widths
+
+    return compare(name, parsed, tolerance, reported,
+                   root_widths=student_widths(tolerance, reported))
 
 
 def _other_root(value: Expected, roots: list[float], width_si: float, unit: str) -> str:

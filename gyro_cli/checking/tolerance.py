@@ -49,6 +49,58 @@ class Tolerance:
         return half_unit * abs(expected_si / expected_number)
 
 
+# What a student's answer is accepted within where the problem's own tolerance is tighter
+# than the figures gyro prints (`gyro export --tolerance`'s default, and grading's).
+STUDENT_TOLERANCE = "1%"
+
+
+def rounding(value: float, digits: int) -> float:
+    """How far ``value`` rounded to ``digits`` significant figures can be from it: half a
+    unit of the last digit kept."""
+    if not value or value != value:
+        return 0.0
+    return 0.5 * 10.0 ** (math.floor(math.log10(abs(value))) - digits + 1)
+
+
+def student_width(tol: Tolerance, student: Tolerance, value: float, half: float,
+                  digits: int) -> tuple[float, Tolerance]:
+    """What a student's answer is accepted within around the solver's ``value`` (as
+    printed, in its unit): ``half`` (the problem's tolerance ``tol``), unless that is
+    tighter than rounding to ``digits`` figures can cost, so that the printed answer
+    copied digit for digit would fail; then the student tolerance, never less than that
+    cost. The half-width (in ``value``'s unit) and the tolerance used. A question bank's
+    blank and `gyro check --answers` accept the same."""
+    least = rounding(value, digits)
+    if value == 0 and tol.form != "absolute":
+        return half, student  # 0 either way; said as the others of the question
+    if half < least * (1 - 1e-9):
+        return max(student.half_width(value, value), least), student
+    return half, tol
+
+
+def student_widths(tol: Tolerance, reported: Any) -> list[float]:
+    """The SI half-width each computed root accepts a student's value within
+    (:func:`student_width` at the solver's value as printed, SIG figures): measured from
+    the solver's value, the truth, never from the student's."""
+    from ..core.expr import SIG
+
+    student = parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
+    values = list(getattr(reported, "values", None) or reported.si_values)
+    out = []
+    for value, si in zip(values, reported.si_values):
+        si = float(si)
+        value = float(value) if isinstance(value, (int, float)) else si
+        if not (math.isfinite(si) and math.isfinite(value)):
+            out.append(0.0)
+            continue
+        if tol.magnitude:
+            value, si = abs(value), abs(si)
+        scale = abs(si / value) if value else 1.0  # SI per printed unit
+        half, _ = student_width(tol, student, value, tol.half_width(si, value) / scale, SIG)
+        out.append(half * scale)
+    return out
+
+
 def parse_tolerance(raw: Any, dimension: str | None, key: str = "tolerance") -> Tolerance:
     """One tolerance: ``"1%"``, ``"3 sig"`` or a quantity in the answer's dimension.
 

@@ -21,7 +21,6 @@ See docs/course.md ("Question banks") for importing the result.
 
 from __future__ import annotations
 
-import math
 import os
 import sys
 from collections.abc import Callable, Iterator
@@ -29,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..checking.tolerance import STUDENT_TOLERANCE
 from ..core.errors import InputError
 
 if TYPE_CHECKING:
@@ -44,7 +44,6 @@ DEFAULT_ECF = 0.5
 FILE_FORMATS = ("moodle", "qti", "blackboard")
 #: what a blank accepts where the problem's tolerance is tighter than the significant
 #: figures the question asks for (--tolerance)
-STUDENT_TOLERANCE = "1%"
 
 
 # ---- building the banks ----------------------------------------------------------
@@ -116,21 +115,13 @@ def _key(name: str, label: str, index: int, several: bool, answers: set[str],
     return key
 
 
-def rounding(value: float, digits: int) -> float:
-    """How far ``value`` rounded to ``digits`` significant figures can be from it: half a
-    unit of the last digit kept."""
-    if not value or value != value:
-        return 0.0
-    return 0.5 * 10.0 ** (math.floor(math.log10(abs(value))) - digits + 1)
-
-
 def _blanks(problem: Problem, solved: Any, asked: list[str], student: Tolerance,
             tight: list[str], used: set[str], parts: list | None = None) -> list[Blank]:
     """One blank per numeric value of the answers asked. Each accepts the value as the
     worked answer prints it (core.expr.SIG significant figures): where the problem's tolerance
     is tighter than that, the student tolerance (``student``) is used and the answer's name
     added to ``tight``."""
-    from ..checking.tolerance import tolerance_for
+    from ..checking.tolerance import student_width, tolerance_for
     from ..core.expr import SIG as digits
     from ..render.bank import Blank
 
@@ -153,7 +144,7 @@ def _blanks(problem: Problem, solved: Any, asked: list[str], student: Tolerance,
                 value, si, text = abs(value), abs(si), f"magnitude of {text}"
             unit = answer.unit or ""
             scale = _scale(value, si, unit, spec.dimension)
-            half, used_tol = _width(tol, student, float(value),
+            half, used_tol = student_width(tol, student, float(value),
                                     tol.half_width(si, value) / abs(scale), digits)
             if used_tol is student and value:
                 tight.append(name)
@@ -172,6 +163,7 @@ def _step_blanks(problem: Problem, solved: Any, student: Tolerance, used: set[st
                  parts: list) -> list[Blank]:
     """One blank per step the problem asks (`steps:`), in SI, before the answers."""
     from ..checking.ecf import Part, step_names, step_tolerance
+    from ..checking.tolerance import student_width
     from ..core.expr import SIG as digits
     from ..render.bank import Blank, slug
 
@@ -181,26 +173,13 @@ def _step_blanks(problem: Problem, solved: Any, student: Tolerance, used: set[st
         value, unit, dimension = steps[symbol]
         tol = step_tolerance(problem, symbol, dimension)
         key = _key("step_" + slug(symbol).replace("-", "_"), "", 0, False, set(), used)
-        half, used_tol = _width(tol, student, value, tol.half_width(value, value), digits)
+        half, used_tol = student_width(tol, student, value, tol.half_width(value, value), digits)
         fraction = used_tol.value if used_tol.form != "absolute" else half
         out.append(Blank(key, f"{symbol} (a step of the working)", float(value), unit, half,
                          tol.text, used_tol.form, fraction,
                          accepts=accepts(used_tol, half, unit), digits=digits))
         parts.append(Part(key, symbol, 0, True, unit, dimension))
     return out
-
-
-def _width(tol: Tolerance, student: Tolerance, value: float, half: float,
-           digits: int) -> tuple[float, Tolerance]:
-    """What a blank accepts around ``value``: ``half`` (the problem's tolerance ``tol``),
-    unless that is tighter than rounding to ``digits`` figures can cost; then the student
-    tolerance, never less than that cost. The half-width and the tolerance used."""
-    least = rounding(value, digits)
-    if value == 0 and tol.form != "absolute":
-        return half, student  # 0 either way; said as the others of the question
-    if half < least * (1 - 1e-9):
-        return max(student.half_width(value, value), least), student
-    return half, tol
 
 
 def _choices(problem: Problem, solved: Any, asked: list[str], used: set[str]
