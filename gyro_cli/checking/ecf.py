@@ -94,11 +94,11 @@ def _written_place(text: str, number: float) -> float | None:
     """Half a unit of the last digit of the number written first in ``text`` (in the
     number's own unit), at most that of its third significant figure (``0.02`` is taken
     as 0.0200: a round number is no claim of one figure); None when there is no number."""
-    match = re.match(r"\s*[-+]?(\d*)(?:\.(\d*))?(?:[eE]([-+]?\d+))?", text)
+    match = re.match(r"\s*[-+\u2212]?(\d*)(?:\.(\d*))?(?:[eE]([-+\u2212]?\d+))?", text)
     if not match or not (match.group(1) or match.group(2)) or not number:
         return None
     decimals = len(match.group(2) or "")
-    exponent = int(match.group(3) or 0)
+    exponent = int((match.group(3) or "0").replace("\u2212", "-"))
     third = 0.5 * 10.0 ** (math.floor(math.log10(abs(number))) - 2)
     return min(0.5 * 10.0 ** (exponent - decimals), third)
 

@@ -208,7 +208,7 @@ def _example_expected(kind: Kind, given: dict[str, str], find: dict[str, Any]) -
 
 # ---- gyro schema ------------------------------------------------------------
 
-QUANTITY_PATTERN = (r"^\s*[-+]?(\d+(\.\d*)?|\.\d+)([eE][-+]?\d{1,3})?\s*"
+QUANTITY_PATTERN = (r"^\s*[-+\u2212]?(\d+(\.\d*)?|\.\d+)([eE][-+\u2212]?\d{1,3})?\s*"
                     r"[A-Za-z_°µΩ(1]?[A-Za-z0-9_°µΩ*/^() \t.+-]*$")
 
 #: a latitude or longitude written with its hemisphere first, "S 30", "N45.5 deg"

@@ -63,7 +63,8 @@ MAX_DEPTH = 8   # brackets nested in one unit
 
 # Regular expressions are compiled on first use (re keeps them): a compile at import is
 # up to 0.2 ms of every run, used or not.
-_NUMBER = r"(?s)\s*([-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d{1,3})?)(.*)"
+# A sign may be U+2212, the minus sign gyro's pages and handouts print (copied from them).
+_NUMBER = r"(?s)\s*([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+\u2212]?\d{1,3})?)(.*)"
 _NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_°µΩ")
 _NAME_CHARS = _NAME_START | frozenset("0123456789")
 
@@ -297,6 +298,7 @@ def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[
             raise InputError(f"expected a number and a unit such as '150 mm', got {text!r}",
                              key=key)
         number, unit = match.groups()
+        number = number.replace("\u2212", "-")
         unit = unit.strip()
         unit = WHOLE_UNITS.get(unit, unit)
         if unit in _VALID:
