@@ -169,6 +169,10 @@ def test_ids_windows_keeps_for_devices_get_hashed_file_names(run, tmp_path):
     ("\ufb01ona", "fiona", "U+FB01 LATIN SMALL LIGATURE FI against U+0066"),
     ("ann\u00a0lee", "ann lee", "U+00A0 NO-BREAK SPACE against U+0020 SPACE"),
     ("\uff41nn", "ann", "U+FF41 FULLWIDTH LATIN SMALL LETTER A against U+0061"),
+    # a spreadsheet shows both as 7: the sheet's 7 was graded on 7's variant, 007 missing,
+    # and 7 named as having copied 007's numbers (found in an adversarial pass)
+    ("007", "7", "drops leading zeros, and shows both as 7"),
+    ("0042", "042", "shows both as 42"),
 ])
 def test_roster_ids_that_look_alike_are_refused(run, tmp_path, one, other, words):
     """Two ids no one can tell apart on a sheet (found in an adversarial pass: `µlab` and
@@ -191,6 +195,16 @@ def test_a_sheet_id_that_only_looks_like_a_roster_id_is_named_with_it(run, tmp_p
     (line,) = result.stderr.splitlines()
     assert "is not in the assignment" in line and "which looks the same" in line, line
     assert "U+00B5 MICRO SIGN against U+03BC" in line, line
+    # an id of digits whose leading zeros a spreadsheet dropped
+    r = _roster(tmp_path, ["007", "ann"], "r2.csv")
+    out = tmp_path / "hw2"
+    assert run("vary", TOP, "--roster", r, "-o", out).exit_code == 0
+    put(tmp_path, "s.csv", "7,11/3,min_spin,900 rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv")
+    assert result.exit_code == 2, result.output
+    (line,) = result.stderr.splitlines()
+    assert "'7' is not in the assignment" in line and "has '007'" in line, line
+    assert "drops leading zeros" in line, line
     # an id like no roster id gets no such words
     put(tmp_path, "s.csv", "zed,11/3,min_spin,900 rpm\n")
     result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv")

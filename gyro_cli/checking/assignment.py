@@ -137,9 +137,12 @@ def student_id(text: str) -> str:
 
 def looks_as(sid: str) -> str:
     """What an id looks like: NFKC, under which the micro sign ``µ`` is the Greek ``μ``,
-    the ligature ``ﬁ`` is ``fi`` and a no-break space a space. Two roster ids that look
-    alike are refused; a sheet's id that only looks like a roster id is named with it."""
-    return unicodedata.normalize("NFKC", sid)
+    the ligature ``ﬁ`` is ``fi`` and a no-break space a space; an id of digits alone
+    without its leading zeros, as a spreadsheet shows ``007`` once it has opened the file.
+    Two roster ids that look alike are refused; a sheet's id that only looks like a
+    roster id is named with it."""
+    looks = unicodedata.normalize("NFKC", sid)
+    return looks.lstrip("0") or "0" if looks.isascii() and looks.isdigit() else looks
 
 
 def lookalike_words(one: str, other: str) -> str:
@@ -147,6 +150,10 @@ def lookalike_words(one: str, other: str) -> str:
     ``U+00B5 MICRO SIGN against U+03BC GREEK SMALL LETTER MU``."""
     def named(c: str) -> str:
         return f"U+{ord(c):04X} {unicodedata.name(c, 'unnamed')}"
+
+    if all(unicodedata.normalize("NFKC", t).isdigit() for t in (one, other)):
+        return ("a spreadsheet that opens the file drops leading zeros, and shows both "
+                f"as {looks_as(one)}")
 
     a = next((c for c in one if c not in other), None)
     b = next((c for c in other if c not in one), None)
