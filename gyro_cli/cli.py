@@ -440,12 +440,14 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
     reader = {"moodle": moodle_sheet, "canvas": canvas_sheet}.get(platform, blackboard_sheet)
-    text = reader(download, paths)
+    text, people = reader(download, paths)
     with tempfile.TemporaryDirectory() as scratch:
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:
             out.write(text)
-        return grade(sheet, paths, credit=credit, student=student, reveal=reveal)
+        graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal)
+    graded.people = people  # the platform's names and ids, for --out-format canvas
+    return graded
 
 
 def _check_key(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,

@@ -103,6 +103,9 @@ class Graded:
     sheet_students: list[str] = field(default_factory=list)  # who the sheet holds answers of
     notes: list[str] = field(default_factory=list)  # for the teacher, one line each (stderr)
     submitter: str | None = None  # --student: only their rows, no solver value shown
+    # each student's identity columns from a platform's download (--responses): name,
+    # id, sis_id, section, read as a roster's extra columns are
+    people: dict[str, dict[str, str]] = field(default_factory=dict)
 
 
 # ---- reading the sheet ------------------------------------------------------

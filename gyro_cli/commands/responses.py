@@ -84,9 +84,11 @@ def _variants(paths: list[str] | tuple[str, ...]) -> list[tuple[Any, dict[str, A
     return out
 
 
-def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
+def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]
+                     ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Blackboard long-format download of responses as a gyro answer sheet (CSV text:
-    student, problem, answer, value), its rows in the order of each answer's values."""
+    student, problem, answer, value), its rows in the order of each answer's values, and
+    each student's name."""
     rows = _rows(path, "a Blackboard download of results")
     header = [c.strip().lower() for c in rows[0]] if rows else []
     if not all(name in header for name in NEEDED):
@@ -97,6 +99,7 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
     column = {name: header.index(name) for name in NEEDED}
     known = questions(paths)
     answers: list[tuple[str, str, str, int, str]] = []
+    people: dict[str, dict[str, str]] = {}
     for number, row in _filled(rows, max(column.values()) + 1, path):
         cell = {name: row[k].strip() for name, k in column.items()}
         found = known.get(plain(cell["question"]))
@@ -105,12 +108,17 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
                              f"({plain(cell['question'])[:60]!r}...); regrade with the files the "
                              "bank was exported from (without --variants)", file=path,
                              line=number)
-        if not cell["answer"]:
-            continue  # a blank response: missing, as in a sheet
         problem, part = found
-        value = f"{cell['answer']} {part.unit}".strip()
+        # a blank response is `missing`, as in a sheet
+        value = f"{cell['answer']} {part.unit}".strip() if cell["answer"] else ""
         answers.append((cell["username"], problem, part.name, part.index, value))
-    return _sheet(answers)
+        people.setdefault(cell["username"], {"name": " ".join(
+            f"{_cell(row, header, 'first name')} {_cell(row, header, 'last name')}".split())})
+    return _sheet(answers), people
+
+
+def _cell(row: list[str], header: list[str], name: str) -> str:
+    return row[header.index(name)].strip() if name in header else ""
 
 
 def _filled(rows: list[list[str]], needed: int, path: str) -> Iterator[tuple[int, list[str]]]:
@@ -148,10 +156,14 @@ def _rows(path: str, what: str) -> list[list[str]]:
 
 def _sheet(answers: list[tuple[str, str, str, int, str]]) -> str:
     """(student, problem, answer, index, value) as a gyro answer sheet, each answer's
-    values in one row in the order of its blanks."""
+    values in one row in the order of its blanks. A blank left empty (value "") keeps its
+    row, so that a student who typed nothing at all is graded (every answer `missing`,
+    0 points) instead of left out of the grades."""
     values: dict[tuple[str, str, str], list[str]] = {}  # an answer's values in one row
     for student, problem, name, _, value in sorted(answers, key=lambda a: a[:4]):
-        values.setdefault((student, problem, name), []).append(value)
+        typed = values.setdefault((student, problem, name), [])
+        if value:
+            typed.append(value)
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(("student", "problem", "answer", "value"))
@@ -167,9 +179,12 @@ _RESPONSE = re.compile(r"response (\d+)")
 _PART = re.compile(r"(?:^|;\s*)part (\d+):\s*", re.IGNORECASE)
 
 
-def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
-    """A Moodle quiz Responses report (CSV) as a gyro answer sheet: Response N is the
-    N-th problem of ``paths``; a later attempt of a student replaces an earlier one."""
+def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]
+                 ) -> tuple[str, dict[str, dict[str, str]]]:
+    """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
+    name: Response N is the N-th problem of ``paths``; a later finished attempt of a
+    student replaces an earlier one, and an attempt not finished (State) is not graded,
+    as Moodle grades none; each number is read as Moodle reads it (`moodle_number`)."""
     rows = _rows(path, "a Moodle quiz responses report")
     header = [c.strip().lower() for c in rows[0]] if rows else []
     slots = {int(m.group(1)): k for k, name in enumerate(header)
@@ -184,17 +199,55 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
                          "in the order the bank was exported", file=path, line=1)
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
+    named: dict[str, int] = {}  # a student known by name alone -> the line of their row
+    people: dict[str, dict[str, str]] = {}
+    state = header.index("state") if "state" in header else None
     for number, row in _filled(rows, len(header), path):
-        student = _moodle_student(header, row)
+        student, by_name = _moodle_student(header, row)
         if not student or student.lower().startswith("overall average"):
             continue  # the report's average row is no one's attempt
+        if state is not None and row[state].strip().lower() != "finished":
+            continue  # in progress, overdue, never submitted: Moodle grades none of them
+        if by_name:
+            if student in named:
+                raise InputError(f"rows {named[student]} and {number} both name {student!r} "
+                                 "and the report shows no identity field (Username, ID number "
+                                 "or Email address) to tell two students from two attempts: "
+                                 "download it with one", file=path, line=number)
+            named[student] = number
         answers: list[tuple[str, str, str, int, str]] = []
         for slot, (variant, part_of) in enumerate(problems, 1):
             for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
                 answers.append((student, variant.ident, part.name, part.index,
-                                _with_unit(typed, part.unit)))
+                                _with_unit(moodle_number(typed), part.unit)))
         by_student[student] = answers
-    return _sheet([a for answers in by_student.values() for a in answers])
+        people[student] = {"name": _moodle_name(header, row)}
+    return _sheet([a for answers in by_student.values() for a in answers]), people
+
+
+#: a typed number as Moodle's numerical questions read it: digits with '.' or ',', spaces
+#: (thousands), and a power of ten written e, E, x10^, *10^, ×10^ or x10**
+_MOODLE_NUMBER = re.compile(r"\s*([-+\u2212]?[\d.,\s]*\d)\s*"
+                            r"(?:(?:e|E|(?:x|X|\*|×)\s*10\s*(?:\^|\*\*))\s*([-+]?\d+))?(.*)",
+                            re.S)
+
+
+def moodle_number(typed: str) -> str:
+    """A response's number written as Moodle's numerical question reads it (its answer
+    processor): spaces dropped; a '.' or several ',' mean ',' separates thousands, else
+    a single ',' is the decimal point (``965,4``); ``9.283x10^2`` is ``9.283e2``. The
+    unit typed after it is kept."""
+    match = _MOODLE_NUMBER.fullmatch(typed)
+    if match is None:
+        return typed
+    digits, power, rest = match.groups()
+    digits = "".join(digits.split())
+    if "." in digits or digits.count(",") > 1:
+        digits = digits.replace(",", "")
+    else:
+        digits = digits.replace(",", ".")
+    number = digits + (f"e{power}" if power else "")
+    return f"{number} {rest.strip()}".strip() if rest.strip() else number
 
 
 def _with_unit(typed: str, unit: str) -> str:
@@ -207,13 +260,19 @@ def _with_unit(typed: str, unit: str) -> str:
     return f"{typed} {unit}".strip()
 
 
-def _moodle_student(header: list[str], row: list[str]) -> str:
-    """Who made an attempt: the first identity field filled, else surname and first name."""
+def _moodle_student(header: list[str], row: list[str]) -> tuple[str, bool]:
+    """Who made an attempt: the first identity field filled, else surname and first name
+    (then True: a name, which two students may share)."""
     for name in MOODLE_WHO:
         if name in header and row[header.index(name)].strip():
-            return row[header.index(name)].strip()
+            return row[header.index(name)].strip(), False
     given = row[header.index("first name")].strip() if "first name" in header else ""
-    return " ".join(f"{row[header.index('surname')].strip()} {given}".split())
+    return " ".join(f"{row[header.index('surname')].strip()} {given}".split()), True
+
+
+def _moodle_name(header: list[str], row: list[str]) -> str:
+    given = row[header.index("first name")].strip() if "first name" in header else ""
+    return " ".join(f"{given} {row[header.index('surname')].strip()}".split())
 
 
 def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,
@@ -259,9 +318,14 @@ def _compact(text: str) -> str:
     return "".join(plain(text).split())
 
 
-def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
-    """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet:
-    each question column matched by its text; a student's later row replaces an earlier."""
+def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]
+                 ) -> tuple[str, dict[str, dict[str, str]]]:
+    """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet,
+    and each student's Canvas identity (name, Canvas id, SIS id, section: the gradebook
+    columns of `--out-format canvas`). Each question column is matched by its text; a
+    student is their SIS id, else their Canvas id; of several attempts, the highest
+    counts (the attempt column, whatever the rows' order); an attempt left blank is
+    graded, every answer `missing`."""
     rows = _rows(path, "a Canvas Student Analysis report")
     header = [c.strip() for c in rows[0]] if rows else []
     names = [c.lower() for c in header]
@@ -287,14 +351,38 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]) -> str:
                              "the bank was exported from (without --variants)", file=path,
                              line=1)
         asked[k] = found
-    who = (names.index("sis_id"), names.index("id"))
-    by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
-    for _line, row in _filled(rows, len(header), path):
-        student = row[who[0]].strip() or row[who[1]].strip()
-        answers = []
+    column = {name: names.index(name) for name in ("name", "id", "sis_id", "attempt")}
+    latest: dict[str, tuple[int, list[str]]] = {}  # Canvas id -> (attempt, row)
+    for line, row in _filled(rows, len(header), path):
+        canvas_id = row[column["id"]].strip()
+        if not canvas_id:
+            raise InputError("a row with no Canvas id (column id)", file=path, line=line)
+        attempt = _attempt(row[column["attempt"]])
+        if canvas_id not in latest or attempt >= latest[canvas_id][0]:
+            latest[canvas_id] = (attempt, row)  # the highest attempt, in any row order
+    people: dict[str, dict[str, str]] = {}
+    answers: list[tuple[str, str, str, int, str]] = []
+    for canvas_id, (_, row) in latest.items():
+        sis_id = row[column["sis_id"]].strip()
+        student = sis_id or canvas_id
+        if student in people:  # one's SIS id is another's Canvas id
+            raise InputError(f"two students would be graded as {student!r}: Canvas ids "
+                             f"{people[student]['id']} and {canvas_id} (one's SIS id is the "
+                             "other's Canvas id); give every student an SIS id, or none",
+                             file=path)
+        people[student] = {"name": row[column["name"]].strip(), "id": canvas_id,
+                           "sis_id": sis_id, "section": row[names.index("section")].strip()
+                           if "section" in names else ""}
         for k, (problem, part) in asked.items():
-            if row[k].strip():
-                answers.append((student, problem, part.name, part.index,
-                                _with_unit(row[k].strip(), part.unit)))
-        by_student[student] = answers
-    return _sheet([a for answers in by_student.values() for a in answers])
+            typed = row[k].strip()
+            answers.append((student, problem, part.name, part.index,
+                            _with_unit(typed, part.unit) if typed else ""))
+    return _sheet(answers), people
+
+
+def _attempt(cell: str) -> int:
+    """A Canvas row's attempt number (0 when it is not one)."""
+    try:
+        return int(cell.strip())
+    except ValueError:
+        return 0

@@ -108,7 +108,8 @@ def canvas_csv(graded: Graded, column: str) -> str:
                      f"{max(totals):g}" if totals else ""])
     students = graded.assignment.students if graded.assignment is not None else {}
     for student, (points, _total) in graded.scores.items():
-        extra = students[student].extra if student in students else {}
+        extra = students[student].extra if student in students else \
+            graded.people.get(student, {})
         cells = {name: _roster_value(extra, keys) for name, keys in CANVAS_FROM_ROSTER.items()}
         cells["Student"] = cells["Student"] or student
         if not (cells["ID"] or cells["SIS User ID"] or cells["SIS Login ID"]):

@@ -1,0 +1,171 @@
+"""A platform's download regraded fairly (an adversarial pass): Canvas's highest attempt
+whatever the rows' order, a blank attempt graded 0 (not left out of the grades), each
+student's Canvas id and name in the gradebook file, no student silently replaced by
+another; Moodle's numbers read as Moodle reads them (`965,4`, `9.654x10^2`), attempts
+not finished left ungraded, and two students of one name never merged."""
+
+from __future__ import annotations
+
+import csv
+import json
+import xml.etree.ElementTree as ET
+import zipfile
+from pathlib import Path
+
+import pytest
+from test_i38_ecf_more import PROBLEM_11_3
+from test_i38_regrade import CANVAS_HEADER, HEADER, blanks, qti_questions
+
+
+@pytest.fixture
+def canvas(run, tmp_path: Path) -> tuple[Path, list[str], list[str]]:
+    """11/3 exported as QTI: the problem, its questions' texts and the right typed values."""
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3)
+    package = tmp_path / "bank.zip"
+    assert run("export", "--to", "qti", problem, "-o", package).exit_code == 0
+    with zipfile.ZipFile(package) as z:
+        name = next(n for n in z.namelist() if n.endswith(".xml") and "manifest" not in n)
+        root = ET.fromstring(z.read(name))
+    right = [f"{float(el.text):.5g}" for el in root.iter() if el.tag.endswith("varequal")]
+    texts = qti_questions(package)
+    assert len(right) == len(texts) == 3
+    return problem, texts, right
+
+
+def _analysis(tmp_path: Path, texts: list[str], rows: list[list[str]]) -> Path:
+    """rows: [name, id, sis_id, attempt, typed...]."""
+    path = tmp_path / "student_analysis.csv"
+    with path.open("w", newline="", encoding="utf-8") as out:
+        writer = csv.writer(out)
+        header = list(CANVAS_HEADER)
+        for k, text in enumerate(texts):
+            header += [f"{5000 + k}: {text}", "1.0"]
+        writer.writerow(header + ["n correct", "n incorrect", "score"])
+        for name, canvas_id, sis_id, attempt, *typed in rows:
+            cells = [c for value in typed for c in (value, "0.0")]
+            writer.writerow([name, canvas_id, sis_id, "Dynamics", "7", "", "2026-11-27",
+                             attempt] + cells + ["0", "3", "0"])
+    return path
+
+
+def _scores(run, path: Path, problem: Path) -> dict[str, float]:
+    done = run("check", "--answers", path, "--responses", "canvas", problem,
+               "--format", "json")
+    assert done.exit_code == 0, done.output
+    return {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
+
+
+def test_canvas_the_highest_attempt_counts_in_any_row_order(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    wrong = ["1", "1", "1"]
+    rows = [["Ann Lee", "101", "S1", "2", *right], ["Ann Lee", "101", "S1", "1", *wrong]]
+    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
+    rows.reverse()  # the same attempts in the other order
+    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
+
+
+def test_canvas_a_blank_attempt_is_graded_zero_not_left_out(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "S1", "1", *right], ["Bob Roe", "102", "S2", "1", "", "", ""]]
+    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0, "S2": 0.0}
+
+
+def test_canvas_ids_and_names_go_to_their_gradebook_columns(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "S1", "1", *right], ["Bob Roe", "102", "", "1", *right]]
+    out = tmp_path / "quiz.csv"
+    done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+               "canvas", problem, "--out", out, "--out-format", "canvas")
+    assert done.exit_code == 0, done.output
+    with open(out, newline="") as handle:
+        table = list(csv.DictReader(handle))[1:]  # after "Points Possible"
+    got = [(r["Student"], r["ID"], r["SIS User ID"], r["Section"], r["quiz"]) for r in table]
+    # bob has no SIS id: his Canvas id goes in ID, not in SIS User ID
+    assert sorted(got) == [("Ann Lee", "101", "S1", "Dynamics", "2"),
+                   ("Bob Roe", "102", "", "Dynamics", "2")]
+
+
+def test_canvas_one_sis_id_equal_to_anothers_canvas_id_is_refused(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "102", "1", *right], ["Bob Roe", "102", "", "1", "", "", ""]]
+    done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+               "canvas", problem)
+    assert done.exit_code == 2, done.output
+    (line,) = done.stderr.splitlines()
+    assert "two students would be graded as '102'" in line and "101 and 102" in line, line
+
+
+@pytest.mark.parametrize(("typed", "read"), [
+    ("965,4", "965.4"), ("1,005", "1.005"), ("1,005.5", "1005.5"), ("2,456,789", "2456789"),
+    ("9.654x10^2", "9.654e2"), ("9.654 × 10^2 rpm", "9.654e2 rpm"), ("9.654E2", "9.654e2"),
+    ("9.654*10**-2", "9.654e-2"), ("1 005", "1005"), ("965.4 rpm", "965.4 rpm"),
+    ("-965,4", "-965.4"), ("cusps", "cusps"),
+])
+def test_moodle_numbers_by_hand(typed, read):
+    from gyro_cli.commands.responses import moodle_number
+
+    # Moodle's qtype_numerical answer processor: a '.' or several ',' make ',' a
+    # thousands separator, else one ',' is the decimal point; x10^ is a power of ten
+    assert moodle_number(typed) == read
+
+
+def _moodle(tmp_path: Path, rows: list[list[str]], header: list[str] = HEADER) -> Path:
+    path = tmp_path / "quiz-responses.csv"
+    with path.open("w", newline="", encoding="utf-8-sig") as out:
+        writer = csv.writer(out)
+        writer.writerow(header)
+        writer.writerows(rows)
+    return path
+
+
+@pytest.fixture
+def moodle(run, tmp_path: Path) -> tuple[Path, list[str]]:
+    problem = tmp_path / "p11_3.yaml"
+    problem.write_text(PROBLEM_11_3)
+    bank = tmp_path / "bank.xml"
+    assert run("export", "--to", "moodle", problem, "-o", bank).exit_code == 0
+    return problem, [f"{float(v):.5g}" for v in blanks(bank)]
+
+
+def _cell(values: list[str]) -> str:
+    return "; ".join(f"part {k}: {v}" for k, v in enumerate(values, 1))
+
+
+def _moodle_scores(run, path: Path, problem: Path) -> dict[str, float]:
+    done = run("check", "--answers", path, "--responses", "moodle", problem,
+               "--format", "json")
+    assert done.exit_code == 0, done.output
+    return {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
+
+
+def test_moodle_a_decimal_comma_is_right_as_moodle_marked_it(run, tmp_path, moodle):
+    problem, right = moodle
+    comma = [v.replace(".", ",") for v in right]
+    assert any("," in v for v in comma)
+    powers = [f"{float(v) / 100:.7g}x10^2" for v in right]
+    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(comma)],
+            ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "3", _cell(powers)]]
+    assert _moodle_scores(run, _moodle(tmp_path, rows), problem) == \
+        {"ann@x.edu": 2.0, "bob@x.edu": 2.0}
+
+
+def test_moodle_an_attempt_not_finished_is_not_graded(run, tmp_path, moodle):
+    problem, right = moodle
+    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(right)],
+            ["Lee", "Ann", "ann@x.edu", "In progress", "", "", "", "-", _cell(["", "", ""])],
+            ["Roe", "Bob", "bob@x.edu", "In progress", "", "", "", "-", _cell(right)]]
+    assert _moodle_scores(run, _moodle(tmp_path, rows), problem) == {"ann@x.edu": 2.0}
+
+
+def test_moodle_two_rows_of_one_name_without_identity_fields_are_refused(run, tmp_path,
+                                                                       moodle):
+    problem, right = moodle
+    header = [h for h in HEADER if h != "Email address"]
+    rows = [["Lee", "Ann", "Finished", "", "", "", "3", _cell(right)],
+            ["Lee", "Ann", "Finished", "", "", "", "0", _cell(["1", "1", "1"])]]
+    done = run("check", "--answers", _moodle(tmp_path, rows, header), "--responses", "moodle",
+               problem)
+    assert done.exit_code == 2, done.output
+    (line,) = done.stderr.splitlines()
+    assert "rows 2 and 3 both name 'Lee Ann'" in line and "identity field" in line, line
