@@ -875,7 +875,11 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
                     else f"{line.expected}: wrong")
             said = f"{line.expected}: {direction(truth, submitted)}"
             slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
-            if slip:
+            placed = line.slip if (line.slip or "").startswith(("the order", "the place")) else ""
+            if placed:  # right for another of the answer's places (A for B): say so
+                note += f" (likely slip: {placed})"
+                said = f"{line.expected}: not in its place (likely slip: {_place_for_student(placed)})"
+            elif slip:
                 note += f" (likely slip: {slip.replace('got is', 'submitted is')})"
                 said += f" (likely slip: {_slip_for_student(slip)})"
                 share, named = slip_credit(slip, credit)
@@ -900,6 +904,14 @@ def direction(truth: float, submitted: float) -> str:
     if truth < 0:
         return "too large in size" if submitted < truth else "too small in size"
     return "too high" if submitted > truth else "too low"
+
+
+def _place_for_student(slip: str) -> str:
+    """`matching.compare`'s order or place slip as the student reads it: which order the
+    answer asks for, not which of the solver's values theirs is."""
+    if slip.startswith("the order"):
+        return "the order: " + slip.rpartition("; ")[2].replace("this answer", "the answer")
+    return "the place: the words give another place than the value's"
 
 
 def _slip_for_student(slip: str) -> str:
