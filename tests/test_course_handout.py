@@ -8,6 +8,7 @@ pdflatex where it is installed (skipped with the reason otherwise).
 from __future__ import annotations
 
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -102,3 +103,35 @@ def test_handout_latex_compiles_clean(run, tmp_path):
                               timeout=120)
         assert done.returncode == 0, done.stdout[-2000:]
         assert "Overfull \\hbox" not in done.stdout
+
+
+def test_the_teachers_key_lists_what_grading_grades(run, tmp_path):
+    """A step asked (`steps: [I]`) is a row of the key and 11/5's `moment`, which its
+    statement does not ask, is none (an adversarial pass found the step missing and the
+    unasked moment listed): the key's questions are key.json's, what a student is graded
+    on, each with the value grading takes as right."""
+    top = tmp_path / "top.yaml"
+    top.write_text(TOP.read_text().replace("tolerance: 1%\n", "tolerance: 1%\nsteps: [I]\n"))
+    r = roster(tmp_path)
+    assert run("handout", top, MOTOR, "--roster", r, "--seed", 4,
+               "-o", tmp_path / "h.html").exit_code == 0
+    with open(tmp_path / "h-key.csv", newline="") as handle:
+        key = list(csv.DictReader(handle))
+    assert [(k["student"], k["problem"], k["answer"]) for k in key] == [
+        (s, p, a) for s in ("ann", "bob")
+        for p, a in (("11/3", "I"), ("11/3", "precession"), ("11/3", "min_spin"),
+                     ("11/5", "bearing_forces"))]
+    assert run("vary", top, MOTOR, "--roster", r, "--seed", 4,
+               "-o", tmp_path / "hw").exit_code == 0
+    stored = json.loads((tmp_path / "hw" / "key.json").read_text())
+    assert {p: about["questions"] for p, about in stored["problems"].items()} == \
+        {"11/3": ["precession", "min_spin"], "11/5": ["bearing_forces"]}
+    # every value of the key, answered, is graded right
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text("student,problem,answer,value\n" + "".join(
+        f"{k['student']},{k['problem']},{k['answer']},{k['correct']}\n" for k in key))
+    graded = run("check", "--answers", sheet, "--assignment",
+                 tmp_path / "hw" / "assignment.csv", "--format", "json")
+    assert graded.exit_code == 0, graded.output
+    rows = json.loads(graded.stdout)["rows"]
+    assert len(rows) == 8 and all(row["result"] == "correct" for row in rows), rows

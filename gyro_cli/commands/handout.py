@@ -185,8 +185,11 @@ def html_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
 # ---- the files --------------------------------------------------------------------------
 
 def key_csv(sheets_: list[Sheet]) -> str:
-    """The teacher's key: student, problem, variant, answer, the solver's value."""
-    from ..checking.grades import _correct_text
+    """The teacher's key: student, problem, variant, question, the solver's value; the
+    questions are what grading grades (the steps asked, `steps:`, then what the
+    statement asks, `ask:`), not every answer the kind computes."""
+    from ..checking.grades import _correct_text, reported
+    from ..solving.problem import asked
     from ..solving.solve import solve
 
     out = io.StringIO()
@@ -195,9 +198,11 @@ def key_csv(sheets_: list[Sheet]) -> str:
     for sheet in sheets_:
         for problem, pid in zip(sheet.problems, sheet.variants):
             result = solve(problem)
-            for name, answer in result.answers.items():
+            steps = list(getattr(problem, "steps", []))
+            for name in dict.fromkeys(steps + asked(problem)):
                 writer.writerow([safe_cell(c) for c in (sheet.student or "", pid, problem.id,
-                                                       name, _correct_text(answer))])
+                                                       name,
+                                                       _correct_text(reported(result, name)))])
     return out.getvalue()
 
 
