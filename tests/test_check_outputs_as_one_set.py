@@ -71,3 +71,28 @@ def test_out_and_feedback_naming_one_file_is_refused(run, tmp_path, homework):
                  "--out", feedback / "ann.md", "--feedback", feedback)
     assert result.exit_code == 2, result.output
     assert "would both write" in result.stderr and not feedback.exists()
+
+
+def test_a_submitter_cannot_tell_a_classmates_variant_id_from_an_unknown_one(run, tmp_path,
+                                                                           homework):
+    """Inside an autograder (--student) another student's variant id had been graded ("on
+    your own variant") and an unknown one refused: trying ids told who is enrolled (an
+    adversarial pass). Now both are refused in the same words; the teacher's own run
+    still grades the classmate's id (on the student's own variant)."""
+    import csv
+
+    with open(homework, newline="") as handle:
+        variant = {row["student"]: row["variant"] for row in csv.DictReader(handle)}
+    told = []
+    for pid in (variant["bob"], "11/3-nobody"):
+        sheet = tmp_path / "mine.csv"
+        sheet.write_text(f"student,problem,answer,value\nann,{pid},min_spin,991.9 rpm\n")
+        result = run("check", "--answers", sheet, "--assignment", homework, "--student", "ann")
+        assert result.exit_code == 2, result.output
+        (line,) = result.stderr.splitlines()
+        told.append(line.replace(repr(pid), "ID"))
+    assert told[0] == told[1] and "one of their own variants" in told[0], told
+    sheet = tmp_path / "teacher.csv"
+    sheet.write_text(f"student,problem,answer,value\nann,{variant['bob']},min_spin,991.9 rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", homework)
+    assert result.exit_code == 0 and "ann          score 1 / 2" in result.stdout, result.output

@@ -565,10 +565,15 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
         note = ""
         if own is None:
             other = plan.by_variant.get(s.problem)
-            if other is None:
+            # A submitter (--student, inside an autograder) is told the same of another
+            # student's variant id as of an unknown one: else trying ids would tell who
+            # is enrolled. The teacher's own run grades it and notes whose it is.
+            if other is None or (submitter is not None and other.student != s.student):
+                nor_what = "one of their own variants" if submitter is not None else \
+                    "one of its variants"
                 raise InputError(f"problem {s.problem!r} (student {s.student!r}) is neither a "
                                  f"problem of the assignment ({', '.join(plan.problems())}) nor "
-                                 "one of its variants", **where)
+                                 f"{nor_what}", **where)
             own = plan.by_item.get((s.student, other.problem))
             if own is None:
                 raise InputError(f"student {s.student!r} is not assigned problem "
