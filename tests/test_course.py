@@ -183,6 +183,11 @@ def test_an_edited_variant_is_solved_again_not_graded_by_the_stored_key(run, tmp
                  "--format", "json")
     assert result.exit_code == 0, result.output
     assert '"result": "correct"' in result.stdout
+    # ... and the teacher is told which file changed (a handout made before shows the
+    # numbers drawn; found unsaid in an adversarial pass)
+    notes = [line for line in result.stderr.splitlines() if line.startswith("gyro: note:")]
+    assert len(notes) == 1 and "1 variant file(s) changed since gyro vary" in notes[0]
+    assert "s000.yaml" in notes[0] and "s001.yaml" not in notes[0]
     # a damaged key is ignored (every variant solved), not an error
     (out / "key.json").write_text("{not json")
     result = run("check", "--answers", sheet, "--assignment", out / "assignment.csv",

@@ -517,15 +517,24 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     variants: dict[str, Any] = {}
     stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
     seen_files: dict[str, str] = {}
+    changed: list[str] = []  # variant files edited since gyro vary wrote them
     for planned in plan.rows:
         seen_files[os.path.realpath(planned.file)] = planned.variant
         # errors carried forward solve again: the stored answers are not enough
-        keyed = _from_key(stored_key, planned) if stored_key and "ecf" not in (credit or {}) \
-            else None
+        keyed = _from_key(stored_key, planned, changed) \
+            if stored_key and "ecf" not in (credit or {}) else None
         if keyed is not None:
             variants[planned.variant], stored[planned.variant] = keyed
             continue
         variants[planned.variant] = load_variant(planned, assignment_path)
+    if submitter is not None:  # no other student's file named in a submitter's output
+        changed = [row.file for row in plan.rows
+                   if row.student == submitter and row.file in changed]
+    if changed:  # the teacher's to know: a handout made before shows other numbers
+        graded.notes.append(
+            f"{len(changed)} variant file(s) changed since gyro vary wrote them, graded as "
+            f"they are now (a handout made before shows the numbers drawn): "
+            f"{', '.join(changed[:3])}{' and more' if len(changed) > 3 else ''}")
     if paths:  # the originals (or the variants' folder): every assigned problem among them
         files, errors = check.collect(paths)
         if errors:
@@ -780,9 +789,11 @@ def _name_match(rows: list[GradeRow], match: Match | None) -> None:
                         + row.note).rstrip("; ")
 
 
-def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
+def _from_key(key: dict, row: Any, changed: list[str] | None = None
+              ) -> tuple[Any, Any] | None:
     """A variant's problem and answers from the stored key, when its file is the one the
-    key was made with (same SHA-256); else None, and the file is read and solved."""
+    key was made with (same SHA-256); else None, and the file is read and solved (a
+    file whose digest differs is added to ``changed``)."""
     from types import SimpleNamespace
 
     from ..core.safeyaml import read_bytes
@@ -798,6 +809,8 @@ def _from_key(key: dict, row: Any) -> tuple[Any, Any] | None:
     try:
         data = read_bytes(row.file, MAX_FILE_BYTES)
         if file_digest(data) != entry.get("sha256"):
+            if changed is not None:
+                changed.append(row.file)
             return None
         if re.search(rb"^steps\s*:", data, re.M):  # steps asked: graded from the worked answer
             return None
