@@ -135,3 +135,33 @@ def test_the_teachers_key_lists_what_grading_grades(run, tmp_path):
     assert graded.exit_code == 0, graded.output
     rows = json.loads(graded.stdout)["rows"]
     assert len(rows) == 8 and all(row["result"] == "correct" for row in rows), rows
+
+
+def test_a_sheet_that_fails_leaves_no_class_half_written(run, tmp_path, monkeypatch):
+    """Each sheet and the key are placed together at the end: a PDF that failed for the
+    second student had left the first's sheet written (and a rerun refused over it)."""
+    from gyro_cli.commands import handout
+    from gyro_cli.core.errors import InputError
+
+    made = []
+
+    def compile_once(tex: str) -> bytes:
+        made.append(tex)
+        if len(made) == 2:
+            raise InputError("pdflatex failed: ! Emergency stop.")
+        return b"%PDF-1.5 stand-in\n"
+
+    monkeypatch.setattr(handout, "compile_pdf", compile_once)
+    r = roster(tmp_path)
+    out = tmp_path / "out"
+    out.mkdir()
+    result = run("handout", TOP, "--roster", r, "-o", out / "s.pdf")
+    assert result.exit_code == 2 and "pdflatex failed" in result.stderr, result.output
+    assert len(made) == 2 and list(out.iterdir()) == []
+    made.clear()
+    monkeypatch.setattr(handout, "compile_pdf", lambda tex: b"%PDF-1.5 stand-in\n")
+    result = run("handout", TOP, "--roster", r, "-o", out / "s.pdf")
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in out.iterdir()) == ["s-ann.pdf", "s-bob.pdf", "s-key.csv"]
+    # a roster's numbers are drawn from the seed: the teacher is reminded which
+    assert "drawn from --seed 0" in result.stderr and "--assignment" in result.stderr

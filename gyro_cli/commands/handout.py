@@ -224,7 +224,7 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
     """Write the handout(s) and, per student, the key CSV; nothing over an existing file
     without ``force`` (checked before anything is written)."""
     from ..checking.assignment import file_names
-    from ..core.files import refuse_outputs_over_inputs, write_atomic
+    from ..core.files import StagedSet, refuse_outputs_over_inputs
 
     stem, ext = os.path.splitext(out)
     if ext.lower() not in FORMATS:
@@ -242,21 +242,21 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
         targets.append((f"{stem}-key.csv", None))
     refuse_outputs_over_inputs([target for target, _ in targets],
                                _inputs(paths, roster, assignment, todo), option="the handout")
-    if not force:
-        for target, _ in targets:
-            if os.path.exists(target) or os.path.islink(target):
-                raise InputError("exists; not overwritten (use --force to replace it)",
-                                 file=target)
-    written = []
-    for target, sheet in targets:
-        if sheet is None:
-            data: str | bytes = key_csv(todo)
-        elif ext.lower() == ".html":
-            data = html_sheet(sheet, course, title, solutions)
-        else:
-            data = latex_sheet(sheet, course, title, solutions)
-            if ext.lower() == ".pdf":
-                data = compile_pdf(data)
-        write_atomic(target, data, force=force)
-        written.append(target)
-    return written
+    folder = os.path.dirname(out) or "."
+    if not os.path.isdir(folder):
+        raise InputError(f"cannot write: no such directory {folder!r}", file=out)
+    # every sheet and the key, or none: a PDF that fails for one student leaves no
+    # class half written (each file is staged as it is made and placed at the end)
+    with StagedSet(force, None, [target for target, _ in targets]) as staged:
+        for target, sheet in targets:
+            if sheet is None:
+                data: str | bytes = key_csv(todo)
+            elif ext.lower() == ".html":
+                data = html_sheet(sheet, course, title, solutions)
+            else:
+                data = latex_sheet(sheet, course, title, solutions)
+                if ext.lower() == ".pdf":
+                    data = compile_pdf(data)
+            staged.add(target, data)
+        staged.place()
+    return [target for target, _ in targets]

@@ -191,6 +191,10 @@ def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: st
                                  course, title, force)
     except InputError as err:
         fail(err)
+    if roster:  # the numbers are drawn again: the seed must be gyro vary's
+        click.echo(f"gyro: note: each student's numbers are drawn from --seed {seed}, as "
+                   f"gyro vary --roster draws them with that seed; --assignment "
+                   "DIR/assignment.csv prints the variants gyro vary wrote", err=True)
     for path in written:
         click.echo(path)
 
