@@ -89,3 +89,57 @@ def test_without_an_assignment_a_repeat_is_refused_too(run, tmp_path):
     result = run("check", "--answers", sheet, PROBLEMS / "11_3.yaml")
     assert result.exit_code == 2, result.output
     assert "values of line 2 again" in result.stderr and "line 3" in result.stderr
+
+
+@pytest.fixture
+def motor(run, tmp_path: Path) -> tuple[Path, str, str]:
+    """11/5 for one student: the assignment and ann's forces at A and B as solved."""
+    import json
+
+    (tmp_path / "r5.csv").write_text("student,name\nann,Ann\n")
+    done = run("vary", PROBLEMS / "11_5.yaml", "--roster", tmp_path / "r5.csv",
+               "--seed", "7", "-o", tmp_path / "hw5")
+    assert done.exit_code == 0, done.output
+    key = json.loads((tmp_path / "hw5" / "key.json").read_text())
+    (entry,) = key["variants"].values()
+    a, b = entry["answers"]["bearing_forces"]["values"]
+    assert entry["answers"]["bearing_forces"]["labels"] == ["A", "B"]
+    return tmp_path / "hw5" / "assignment.csv", f"{a:.4g} N", f"{b:.4g} N"
+
+
+def test_an_ordered_answer_in_two_orders_under_both_ids_is_two_answers(run, tmp_path, motor):
+    """A then B, and B then A, are different answers to 11/5 (a second adversarial pass
+    found them taken as one, so the row that came first decided the grade)."""
+    assignment, a, b = motor
+    variant = _variant(assignment)
+    for first, second in (((a, b), (b, a)), ((b, a), (a, b))):
+        rows = (f"ann,11/5,bearing_forces,{first[0]}; {first[1]}\n"
+                f"ann,{variant},bearing_forces,{second[0]}; {second[1]}\n")
+        result = _check(run, tmp_path, assignment, rows)
+        assert result.exit_code == 2, result.output
+        assert "different values" in result.stderr
+    same = f"ann,11/5,bearing_forces,{a}; {b}\nann,{variant},bearing_forces,{a}; {b}\n"
+    assert _ann_scores(_check(run, tmp_path, assignment, same)) == "1 / 1"
+
+
+def test_an_ordered_answer_in_two_orders_in_two_rows_is_no_repeat(run, tmp_path, motor):
+    assignment, a, b = motor
+    result = _check(run, tmp_path, assignment, f"ann,11/5,bearing_forces,{a}; {b}\n"
+                                               f"ann,11/5,bearing_forces,{b}; {a}\n")
+    assert result.exit_code == 0 and "again" not in result.stderr, result.output
+
+
+def test_a_step_asked_is_compared_as_a_quantity(run, tmp_path):
+    """`steps: [I]`: 1.776e-4 kg m^2 and 1.776e-04 kg*m^2 are one value (they had been
+    compared as text and merged as two roots, halving the point)."""
+    path = tmp_path / "t3.yaml"
+    path.write_text((PROBLEMS / "11_3.yaml").read_text()
+                    .replace("tolerance: 1%\n", "tolerance: 1%\nsteps: [I]\n"))
+    sheet = tmp_path / "sheet.csv"
+    sheet.write_text(HEAD + "ann,11/3,I,1.776e-4 kg m^2\nann,11/3,I,1.776e-04 kg*m^2\n")
+    result = run("check", "--answers", sheet, path)
+    assert result.exit_code == 2, result.output
+    assert "values of line 2 again" in result.stderr and "line 3" in result.stderr
+    sheet.write_text(HEAD + "ann,11/3,I,1.776e-4 kg m^2\nann,11/3,I,1.776e-4 kg\n")
+    result = run("check", "--answers", sheet, path)  # another dimension: not a repeat
+    assert result.exit_code == 0, result.output

@@ -353,13 +353,15 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
             raise InputError(f"problem {s.problem!r} has no answer {s.answer!r} (answers: "
                              f"{answers}{steps})", file=sheet, line=s.line)
-        _refuse_repeated_rows(s, problem, sheet)
         questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
         questions[s.answer] = None
     graded = Graded([])
     solved: dict[str, Any] = {}
     for pid, names in asked.items():
         _solved_for(problems[pid], names, pid, solved, graded)
+    for s in submissions:  # rows that repeat (an ordered answer's values in their order)
+        _refuse_repeated_rows(s, problems[s.problem], sheet,
+                              _in_order(solved.get(s.problem), s.answer))
     items = [(pid, name) for pid, names in asked.items() for name in names]
     students = list(dict.fromkeys(s.student for s in submissions))
     graded.sheet_students = students
@@ -557,6 +559,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
     extra: list[tuple[Submission, Any]] = []
+    # (submission, its variant, and the first of the same question under another id)
+    alike: list[tuple[Submission, str, tuple[Submission, str] | None]] = []
     assigned = set(plan.problems())
     for s in submissions:
         where = _Where(file=sheet, line=s.line)
@@ -596,13 +600,13 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             names = ", ".join(a.name for a in problem.kind.answers)
             raise InputError(f"problem {own.problem!r} has no answer {s.answer!r} (answers: "
                              f"{names})", **where)
-        _refuse_repeated_rows(s, problem, sheet)
+        alike.append((s, own.variant, None))  # rows that repeat: checked once solved
         if s.answer not in questions[own.problem]:
             extra.append((s, own))
             continue
         key = (s.student, own.problem, s.answer)
         if key in items:  # the same question under a second id: one question all the same
-            _same_answer(items[key], named[key], s, problem, sheet)
+            alike.append((s, own.variant, (items[key], named[key])))
             continue
         items[key] = Submission(s.student, own.problem, s.answer, list(s.values), s.line)
         named[key] = s.problem
@@ -615,6 +619,12 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             continue
         _solved_for(problem, questions[plan.by_variant[variant].problem], variant, solved,
                     graded, locate=True)
+    for s, variant, first in alike:  # an ordered answer's values compared in their order
+        in_order = _in_order(solved.get(variant), s.answer)
+        if first is None:
+            _refuse_repeated_rows(s, variants[variant], sheet, in_order)
+        else:
+            _same_answer(first[0], first[1], s, variants[variant], sheet, in_order)
     lookup = VariantIndex(plan, variants, solved)
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:
@@ -701,12 +711,25 @@ def _looks_like(sid: str, students: Any) -> str:
             f"({lookalike_words(sid, alike)})")
 
 
+def _in_order(result: Any, name: str) -> bool:
+    """Whether an answer's values have places (A, B; outer, inner), as solved: then two
+    lists of values are one answer only in the same order."""
+    from .matching import ordered
+
+    if result is None:
+        return False
+    try:
+        return ordered(list(reported(result, name).labels))
+    except (KeyError, AttributeError):
+        return False  # an answer not solved for (one not asked)
+
+
 def _same_answer(first: Submission, first_id: str, again: Submission, problem: Any,
-                 sheet: str) -> None:
+                 sheet: str, in_order: bool = False) -> None:
     """A question answered under two ids (``11/3`` and ``11/3-ann``): the same values
     (:func:`same_values`) count once; different ones are refused naming both lines (which
     one would count?)."""
-    if same_values(first.values, again.values, problem, again.answer):
+    if same_values(first.values, again.values, problem, again.answer, in_order):
         return
     lines = (f"lines {first.line} and {again.line}" if first.line != again.line
              else f"line {first.line}")
@@ -716,40 +739,48 @@ def _same_answer(first: Submission, first_id: str, again: Submission, problem: A
                      line=again.line)
 
 
-def _refuse_repeated_rows(submission: Submission, problem: Any, sheet: str) -> None:
+def _refuse_repeated_rows(submission: Submission, problem: Any, sheet: str,
+                          in_order: bool = False) -> None:
     """Two rows of one question giving the same values (:func:`same_values`: ``991.9 rpm``
     and ``991.9rpm``) are a copy-paste slip, refused as a row repeated word for word is
     (`_read_csv`): merged as two roots they would halve the point."""
     for k, (line, values) in enumerate(submission.rows):
         for earlier, before in submission.rows[:k]:
-            if same_values(before, values, problem, submission.answer):
+            if same_values(before, values, problem, submission.answer, in_order):
                 raise InputError(f"this row gives the values of line {earlier} again "
                                  f"({'; '.join(map(str, values))}); remove one (several "
                                  "roots go in one row separated by ';' or in rows with "
                                  "different values)", file=sheet, line=line)
 
 
-def same_values(first: list[Any], again: list[Any], problem: Any, name: str) -> bool:
+def same_values(first: list[Any], again: list[Any], problem: Any, name: str,
+                in_order: bool = False) -> bool:
     """Whether two lists of submitted values are one answer: each value read as the
     answer's quantity (``991.9 rpm``, ``991.9rpm`` and ``991.9 RPM`` are one, ``5 mN*m``
-    and ``5 MN*m`` two), a value that does not read as one compared as its text without
-    spaces, a word answer's words ignoring case and spacing; roots in any order."""
+    and ``5 MN*m`` two; a step's in whichever dimension reads it), a value that does not
+    read as one compared as its text without spaces, a word answer's words ignoring case
+    and spacing; roots in any order, the values of an answer with places (``in_order``:
+    A, B) in theirs."""
+    from ..core.units import DIMENSIONS
+
     spec = problem.kind.answer(name)
-    dimension = spec.dimension if spec is not None else ""  # "": a step, compared as text
+    # a step asked as a question has no spec: its dimension is the one its text reads in
+    dimensions = [spec.dimension] if spec is not None else list(DIMENSIONS)
 
     def key(value: Any) -> tuple[str, Any]:
         text = str(value)
-        if dimension is None:
+        if dimensions == [None]:
             return "word", " ".join(text.split()).casefold()
-        if dimension:
+        for dimension in dimensions:
             try:
-                return "si", parse_value(value, dimension, name).si
-            except Exception:  # not a quantity (graded `invalid`): its text decides
-                pass
+                return "si " + str(dimension), parse_value(value, dimension, name).si
+            except Exception:  # not this dimension's quantity (graded `invalid`)
+                continue
         return "text", "".join(text.split())
 
     def keys(values: list[Any]) -> list[tuple[str, Any]]:
-        return sorted(map(key, values), key=repr)
+        found = [key(v) for v in values]
+        return found if in_order else sorted(found, key=repr)
 
     return keys(first) == keys(again)
 
