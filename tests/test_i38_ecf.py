@@ -560,3 +560,26 @@ def test_item02_assigned_variants_carry_errors_and_ask_the_steps(tmp_path, run):
     rows = by_answer(graded, "ann")
     assert rows["I"].points == 0 and rows["min_spin"].result == "carried"
     assert graded.scores["ann"] == (1.0, 3.0)
+
+
+def test_carried_values_accept_the_printed_figures_under_a_tight_tolerance(tmp_path):
+    """ECF grades a carried answer as grading grades the solver's: within the tolerance
+    measured from the carried value, never tighter than four figures (a second adversarial
+    pass found a least spin right for the student's I to gyro's printed 4 figures `wrong`
+    under a 0.02% tolerance: the band was measured from the student's value, no floor)."""
+    problem = problem_with(tmp_path, tolerance="0.0001%")
+    own = hand_11_3(1.1)
+    # four figures of carl's values are outside 0.0001% of them: the tolerance alone fails
+    for name in ("slow", "fast", "min_spin"):
+        assert abs(float(f"{own[name]:.4g}") - own[name]) / own[name] > 1e-6, name
+    graded = grades.grade(str(sheet(tmp_path, carl_rows())), [str(problem)],
+                          credit={"ecf": 1.0})
+    rows = by_answer(graded, "carl")
+    assert rows["I"].points == 0
+    for name in ("precession", "min_spin"):
+        assert rows[name].result == "carried" and rows[name].points == 1, rows[name]
+    # 1.2% off his own least spin is no follow-through, with or without the floor
+    off = carl_rows()[:2] + [("carl", "min_spin", f"{own['min_spin'] * 1.012:.4g} rpm")]
+    rows = by_answer(grades.grade(str(sheet(tmp_path, off, "off.csv")), [str(problem)],
+                                  credit={"ecf": 1.0}), "carl")
+    assert rows["min_spin"].result == "wrong" and rows["min_spin"].points == 0

@@ -31,7 +31,7 @@ from typing import Any
 from ..core.errors import InputError
 from .expected import Expected, parse_value
 from .matching import graded_lines
-from .tolerance import Tolerance, tolerance_for
+from .tolerance import Tolerance, student_widths, tolerance_for
 
 ECF = "ecf"
 
@@ -241,7 +241,9 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     if not again or not truth or not all(math.isfinite(v) for v in again) or \
             again.count(0.0) > truth.count(0.0):
         return
-    widths = [item.tolerance.half_width(float(v.si), v.number) for v in submitted]
+    # each carried value accepts what grading accepts around the solver's (measured from
+    # it, never tighter than its printed figures: tolerance.student_widths)
+    widths = student_widths(item.tolerance, _reported(item, result, again))
     if len(again) == len(truth) and all(
             abs(a - t) <= item.tolerance.half_width(t, t) for a, t in zip(again, truth)):
         _note(item, "the values carried barely change this answer: no follow-through")
@@ -265,13 +267,13 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
 
 def _matched(submitted: list[float], widths: list[float], carried: list[float],
              extra: list[float], labels: list[str]) -> tuple[int, int]:
-    """How many of the submitted values match a carried value (each within its own width
-    and what the last digit carried moves that value), and how many values are graded:
-    roots as sets, places (labelled A, B, outer, ...) in order."""
+    """How many of the submitted values match a carried value (within the carried value's
+    width, ``widths[j]``, and what the last digit carried moves that value), and how many
+    values are graded: roots as sets, places (labelled A, B, outer, ...) in order."""
     from .matching import match_roots, ordered
 
     def passes(i: int, j: int) -> bool:
-        return abs(submitted[i] - carried[j]) <= widths[i] + extra[j] + 1e-300
+        return abs(submitted[i] - carried[j]) <= widths[j] + extra[j] + 1e-300
 
     if ordered(labels):
         pairs: list[tuple[int | None, int | None]] = [
@@ -289,8 +291,11 @@ def _reported(item: Item, result: Any, again: list[float]) -> Any:
         unit = step_names(result)[item.name][1]
         return SimpleNamespace(si_values=again, si_unit=unit, unit=unit, labels=[])
     answer = result.answers[item.name]
+    # the carried values as the answer prints them (its unit), for the printed figures
+    scale = next((v / si for v, si in zip(answer.values, answer.si_values)
+                  if isinstance(v, (int, float)) and si), 1.0)
     return SimpleNamespace(si_values=again, si_unit=answer.si_unit, unit=answer.si_unit,
-                           labels=list(answer.labels))
+                           labels=list(answer.labels), values=[a * scale for a in again])
 
 
 def _note(item: Item, text: str) -> None:
