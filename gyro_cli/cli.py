@@ -321,6 +321,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                    "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
                    "the quiz's Student Analysis of a QTI bank), "
                    "regraded by gyro (errors carried forward too).")
+@click.option("--decimal-comma", is_flag=True,
+              help="With --responses moodle: the site's language writes a decimal comma, "
+                   "so a single ',' in a typed number is the decimal point, as Moodle reads "
+                   "it there (965,4 is 965.4); by default, as on an English site, ',' "
+                   "separates thousands (965,4 is 9654).")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
 @click.option("--out-format", "out_format", default="grades", show_default=True,
               type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
@@ -355,7 +360,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           credit: str | None = None, feedback_dir: str | None = None,
           reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
           shard: str | None = None, merge: bool = False, student: str | None = None,
-          responses: str | None = None) -> None:
+          responses: str | None = None, decimal_comma: bool = False) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -407,10 +412,13 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if out is not None:
         _outputs_apart(read, out=out)
 
+    if decimal_comma and responses != "moodle":
+        fail("--decimal-comma goes with --responses moodle")
     if responses and assignment:
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
-        graded = _grade_responses(sheet, responses, paths, credit, student, reveal) \
+        graded = _grade_responses(sheet, responses, paths, credit, student, reveal,
+                                  decimal_comma) \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal)
@@ -431,7 +439,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
 def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
                      credit: str | None, student: str | None,
-                     reveal: bool):  # type: ignore[no-untyped-def]
+                     reveal: bool, decimal_comma: bool = False):  # type: ignore[no-untyped-def]
     """Grade a platform's download of responses: read as a gyro answer sheet (written to
     a scratch file that is removed after)."""
     import tempfile
@@ -439,8 +447,11 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     from .api import grade
     from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
-    reader = {"moodle": moodle_sheet, "canvas": canvas_sheet}.get(platform, blackboard_sheet)
-    text, people = reader(download, paths)
+    if platform == "moodle":
+        text, people = moodle_sheet(download, paths, decimal_comma)
+    else:
+        text, people = (canvas_sheet if platform == "canvas" else blackboard_sheet)(download,
+                                                                                    paths)
     with tempfile.TemporaryDirectory() as scratch:
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:

@@ -86,6 +86,18 @@ def test_canvas_ids_and_names_go_to_their_gradebook_columns(run, tmp_path, canva
                    ("Bob Roe", "102", "", "Dynamics", "2")]
 
 
+def test_canvas_a_row_without_an_attempt_number_is_refused(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    for attempt in ("", "x", "2.0"):
+        rows = [["Bob Roe", "102", "S2", attempt, *right], ["Bob Roe", "102", "S2", "1",
+                                                            "1", "1", "1"]]
+        done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+                   "canvas", problem)
+        assert done.exit_code == 2, done.output
+        (line,) = done.stderr.splitlines()
+        assert "line 2" in line and "not an attempt number" in line, line
+
+
 def test_canvas_one_sis_id_equal_to_anothers_canvas_id_is_refused(run, tmp_path, canvas):
     problem, texts, right = canvas
     rows = [["Ann Lee", "101", "102", "1", *right], ["Bob Roe", "102", "", "1", "", "", ""]]
@@ -96,18 +108,24 @@ def test_canvas_one_sis_id_equal_to_anothers_canvas_id_is_refused(run, tmp_path,
     assert "two students would be graded as '102'" in line and "101 and 102" in line, line
 
 
-@pytest.mark.parametrize(("typed", "read"), [
-    ("965,4", "965.4"), ("1,005", "1.005"), ("1,005.5", "1005.5"), ("2,456,789", "2456789"),
-    ("9.654x10^2", "9.654e2"), ("9.654 × 10^2 rpm", "9.654e2 rpm"), ("9.654E2", "9.654e2"),
-    ("9.654*10**-2", "9.654e-2"), ("1 005", "1005"), ("965.4 rpm", "965.4 rpm"),
-    ("-965,4", "-965.4"), ("cusps", "cusps"),
+@pytest.mark.parametrize(("typed", "english", "comma"), [
+    ("965,4", "9654", "965.4"), ("1,005", "1005", "1.005"),
+    ("1,005.5", "1005.5", "1005.5"), ("2,456,789", "2456789", "2456789"),
+    ("2,5e-3", "25e-3", "2.5e-3"), ("1 005", "1005", "1005"),
+    ("9.654x10^2", "9.654e2", "9.654e2"), ("9.654 × 10^2 rpm", "9.654e2 rpm", "9.654e2 rpm"),
+    ("9.654E2", "9.654e2", "9.654e2"), ("9.654*10**-2", "9.654e-2", "9.654e-2"),
+    ("965.", "965.", "965."), ("965. rpm", "965. rpm", "965. rpm"),
+    ("965.4 rpm", "965.4 rpm", "965.4 rpm"), ("\u2212965,4", "-9654", "-965.4"),
+    ("1.2.3", "1.2.3", "1.2.3"), ("cusps", "cusps", "cusps"),
 ])
-def test_moodle_numbers_by_hand(typed, read):
+def test_moodle_numbers_by_hand(typed, english, comma):
+    # Moodle's apply_units (question/type/numerical/question.php): spaces dropped, x10^
+    # a power of ten; a '.' or several ',' make ',' a thousands separator; else the site's
+    # thousands separator is dropped (',' on an English site) and a ',' left is the point
     from gyro_cli.commands.responses import moodle_number
 
-    # Moodle's qtype_numerical answer processor: a '.' or several ',' make ',' a
-    # thousands separator, else one ',' is the decimal point; x10^ is a power of ten
-    assert moodle_number(typed) == read
+    assert moodle_number(typed) == english
+    assert moodle_number(typed, decimal_comma=True) == comma
 
 
 def _moodle(tmp_path: Path, rows: list[list[str]], header: list[str] = HEADER) -> Path:
@@ -139,15 +157,30 @@ def _moodle_scores(run, path: Path, problem: Path) -> dict[str, float]:
     return {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
 
 
-def test_moodle_a_decimal_comma_is_right_as_moodle_marked_it(run, tmp_path, moodle):
+def test_moodle_a_decimal_comma_is_read_as_the_site_reads_it(run, tmp_path, moodle):
     problem, right = moodle
     comma = [v.replace(".", ",") for v in right]
     assert any("," in v for v in comma)
-    powers = [f"{float(v) / 100:.7g}x10^2" for v in right]
+    powers = [f"{float(v) / 100:.7g}x10^2 " for v in right]
+    # "534." with its point: 533.5 rpm to the units, inside 11/3's 1%
+    trailing = [f"{float(v):.0f}." if float(v) > 500 else v for v in right]
+    assert any(v.endswith(".") for v in trailing)
     rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(comma)],
-            ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "3", _cell(powers)]]
-    assert _moodle_scores(run, _moodle(tmp_path, rows), problem) == \
-        {"ann@x.edu": 2.0, "bob@x.edu": 2.0}
+            ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "3", _cell(powers)],
+            ["Poe", "Cat", "cat@x.edu", "Finished", "", "", "", "3", _cell(trailing)]]
+    path = _moodle(tmp_path, rows)
+    # a site whose language writes a decimal comma: 45,13 is 45.13
+    done = run("check", "--answers", path, "--responses", "moodle", problem,
+               "--decimal-comma", "--format", "json")
+    assert done.exit_code == 0, done.output
+    scores = {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
+    assert scores == {"ann@x.edu": 2.0, "bob@x.edu": 2.0, "cat@x.edu": 2.0}
+    # an English site (the default): 45,13 is 4513, as Moodle marked it
+    english = _moodle_scores(run, path, problem)
+    assert english["ann@x.edu"] < 2.0 and english["bob@x.edu"] == 2.0
+    assert run("check", "--answers", path, "--responses", "canvas", problem,
+               "--decimal-comma").exit_code == 2
+    del trailing
 
 
 def test_moodle_an_attempt_not_finished_is_not_graded(run, tmp_path, moodle):

@@ -179,12 +179,13 @@ _RESPONSE = re.compile(r"response (\d+)")
 _PART = re.compile(r"(?:^|;\s*)part (\d+):\s*", re.IGNORECASE)
 
 
-def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]
+def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False
                  ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
     name: Response N is the N-th problem of ``paths``; a later finished attempt of a
     student replaces an earlier one, and an attempt not finished (State) is not graded,
-    as Moodle grades none; each number is read as Moodle reads it (`moodle_number`)."""
+    as Moodle grades none; each number is read as Moodle reads it (`moodle_number`, with
+    the site's ``decimal_comma``)."""
     rows = _rows(path, "a Moodle quiz responses report")
     header = [c.strip().lower() for c in rows[0]] if rows else []
     slots = {int(m.group(1)): k for k, name in enumerate(header)
@@ -219,25 +220,31 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...]
         for slot, (variant, part_of) in enumerate(problems, 1):
             for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
                 answers.append((student, variant.ident, part.name, part.index,
-                                _with_unit(moodle_number(typed), part.unit)))
+                                _with_unit(moodle_number(typed, decimal_comma),
+                                           part.unit)))
         by_student[student] = answers
         people[student] = {"name": _moodle_name(header, row)}
     return _sheet([a for answers in by_student.values() for a in answers]), people
 
 
 #: a typed number as Moodle's numerical questions read it: digits with '.' or ',', spaces
-#: (thousands), and a power of ten written e, E, x10^, *10^, ×10^ or x10**
-_MOODLE_NUMBER = re.compile(r"\s*([-+\u2212]?[\d.,\s]*\d)\s*"
-                            r"(?:(?:e|E|(?:x|X|\*|×)\s*10\s*(?:\^|\*\*))\s*([-+]?\d+))?(.*)",
+#: (thousands), a trailing point (``965.``), and a power of ten written e, E, x10^,
+#: *10^, ×10^ or x10**; then the unit typed, kept as typed
+_MOODLE_NUMBER = re.compile(r"\s*([-+\u2212]?[\d.,\s]*\d\.?)\s*"
+                            r"(?:(?:e|E|(?:x|X|\*|×)\s*10\s*(?:\^|\*\*))\s*([-+\u2212]?\d+))?(.*)",
                             re.S)
+_PLAIN_NUMBER = re.compile(r"[-+]?(?:\d+(?:\.\d*)?|\.\d+)")
 
 
-def moodle_number(typed: str) -> str:
+def moodle_number(typed: str, decimal_comma: bool = False) -> str:
     """A response's number written as Moodle's numerical question reads it (its answer
-    processor): spaces dropped; a '.' or several ',' mean ',' separates thousands, else
-    a single ',' is the decimal point (``965,4``); ``9.283x10^2`` is ``9.283e2``. The
-    unit typed after it is kept."""
-    match = _MOODLE_NUMBER.fullmatch(typed)
+    processor, ``apply_units``): spaces dropped; a '.' or several ',' make ',' a thousands
+    separator; else a single ',' is the site's: a thousands separator where the site's
+    language writes one with ',' (English: ``965,4`` is 9654), the decimal point where it
+    writes a decimal comma (``decimal_comma``: ``965,4`` is 965.4); ``9.283x10^2`` is
+    ``9.283e2``; ``965.`` is 965. The unit typed after it is kept. Text that holds no
+    such number is returned as typed (and graded `invalid` with its reason)."""
+    match = _MOODLE_NUMBER.fullmatch(typed.replace("\u2212", "-"))
     if match is None:
         return typed
     digits, power, rest = match.groups()
@@ -245,8 +252,10 @@ def moodle_number(typed: str) -> str:
     if "." in digits or digits.count(",") > 1:
         digits = digits.replace(",", "")
     else:
-        digits = digits.replace(",", ".")
-    number = digits + (f"e{power}" if power else "")
+        digits = digits.replace(",", "." if decimal_comma else "")
+    if not _PLAIN_NUMBER.fullmatch(digits):
+        return typed  # 1.2.3, or a comma where the site reads none
+    number = digits + (f"e{power.replace(chr(0x2212), '-')}" if power else "")
     return f"{number} {rest.strip()}".strip() if rest.strip() else number
 
 
@@ -254,7 +263,7 @@ def _with_unit(typed: str, unit: str) -> str:
     """A typed number with its blank's unit; typed with a unit (Moodle's numerical
     question asks for one), as typed."""
     try:
-        float(typed)
+        float(typed.replace("\u2212", "-"))  # the minus sign of a page or handout too
     except ValueError:
         return typed
     return f"{typed} {unit}".strip()
@@ -357,7 +366,7 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]
         canvas_id = row[column["id"]].strip()
         if not canvas_id:
             raise InputError("a row with no Canvas id (column id)", file=path, line=line)
-        attempt = _attempt(row[column["attempt"]])
+        attempt = _attempt(row[column["attempt"]], path, line)
         if canvas_id not in latest or attempt >= latest[canvas_id][0]:
             latest[canvas_id] = (attempt, row)  # the highest attempt, in any row order
     people: dict[str, dict[str, str]] = {}
@@ -380,9 +389,10 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]
     return _sheet(answers), people
 
 
-def _attempt(cell: str) -> int:
-    """A Canvas row's attempt number (0 when it is not one)."""
-    try:
+def _attempt(cell: str, path: str, line: int) -> int:
+    """A Canvas row's attempt number; a row without one is refused (which of a student's
+    attempts counts would depend on the rows' order)."""
+    if cell.strip().isdigit():
         return int(cell.strip())
-    except ValueError:
-        return 0
+    raise InputError(f"attempt {cell.strip()!r} is not an attempt number (1, 2, ...)",
+                     file=path, line=line)
