@@ -96,3 +96,25 @@ def test_a_submitter_cannot_tell_a_classmates_variant_id_from_an_unknown_one(run
     sheet.write_text(f"student,problem,answer,value\nann,{variant['bob']},min_spin,991.9 rpm\n")
     result = run("check", "--answers", sheet, "--assignment", homework)
     assert result.exit_code == 0 and "ann          score 1 / 2" in result.stdout, result.output
+
+
+@pytest.mark.parametrize("damage", ["missing", "broken"])
+def test_a_classmates_broken_variant_neither_stops_nor_is_named_to_a_submitter(
+        run, tmp_path, homework, damage):
+    """--student grades the submitter's own variants alone: a classmate's variant file,
+    deleted or not YAML, had stopped the submitter's grading (exit 2) with a line naming
+    the classmate's file (a second adversarial pass)."""
+    bob = homework.parent / "11_3" / "bob.yaml"
+    if damage == "missing":
+        bob.unlink()
+    else:
+        bob.write_text("given: [unclosed\n")
+    sheet = tmp_path / "mine.csv"
+    sheet.write_text("student,problem,answer,value\nann,11/3,min_spin,991.9 rpm\n")
+    result = run("check", "--answers", sheet, "--assignment", homework, "--student", "ann")
+    assert result.exit_code == 0, result.output
+    assert "bob" not in result.output and "ann" in result.stdout
+    assert "score 1 / 2" in result.stdout
+    # the teacher's own run is stopped by it, naming the file
+    result = run("check", "--answers", sheet, "--assignment", homework)
+    assert result.exit_code == 2 and "bob.yaml" in result.stderr

@@ -520,8 +520,12 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     stored: dict[str, Any] = {}  # variant -> answers from the key (file unchanged)
     seen_files: dict[str, str] = {}
     changed: list[str] = []  # variant files edited since gyro vary wrote them
+    # A submitter (--student) is graded on their own variants alone: a classmate's file,
+    # missing or broken, neither stops their grading nor is named to them.
+    mine = [row for row in plan.rows if submitter is None or row.student == submitter]
     for planned in plan.rows:
         seen_files[os.path.realpath(planned.file)] = planned.variant
+    for planned in mine:
         # errors carried forward solve again: the stored answers are not enough
         keyed = _from_key(stored_key, planned, changed) \
             if stored_key and "ecf" not in (credit or {}) else None
@@ -529,9 +533,6 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             variants[planned.variant], stored[planned.variant] = keyed
             continue
         variants[planned.variant] = load_variant(planned, assignment_path)
-    if submitter is not None:  # no other student's file named in a submitter's output
-        changed = [row.file for row in plan.rows
-                   if row.student == submitter and row.file in changed]
     if changed:  # the teacher's to know: a handout made before shows other numbers
         graded.notes.append(
             f"{len(changed)} variant file(s) changed since gyro vary wrote them, graded as "
@@ -549,7 +550,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                                      f"files given (ids: {', '.join(sorted(originals))})",
                                      file=assignment_path)
     questions: dict[str, list[str]] = {}
-    for planned in plan.rows:
+    for planned in mine:
         if planned.problem not in questions:
             problem = variants[planned.variant]
             steps = list(getattr(problem, "steps", []))
@@ -570,8 +571,10 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                              **where)
         if s.problem in assigned and s.problem in plan.by_variant:
             holder = plan.by_variant[s.problem]
+            whose_id = "a student's" if submitter is not None else \
+                f"student {holder.student}'s"
             raise InputError(f"the id {s.problem!r} is both problem {s.problem} of the "
-                             f"assignment and student {holder.student}'s variant of problem "
+                             f"assignment and {whose_id} variant of problem "
                              f"{holder.problem} (assignment line {holder.line}); write the "
                              "student's own variant id instead", **where)
         own = plan.by_item.get((s.student, s.problem))
@@ -625,12 +628,12 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             _refuse_repeated_rows(s, variants[variant], sheet, in_order)
         else:
             _same_answer(first[0], first[1], s, variants[variant], sheet, in_order)
-    lookup = VariantIndex(plan, variants, solved)
+    lookup = VariantIndex(plan, variants, solved) if submitter is None else None
     extras_by_student: dict[str, list[tuple[Submission, Any]]] = {}
     for s, own in extra:
         extras_by_student.setdefault(s.student, []).append((s, own))
     assigned_problems = plan.problems()
-    for student in plan.students:
+    for student in plan.students if submitter is None else [submitter]:
         total = maximum = 0.0
         rows: list[GradeRow] = []
         wrong: dict[str, tuple[Any, dict[str, list[Any]]]] = {}
@@ -675,7 +678,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 maximum += row.max_points
         carrying.carry(graded.errors)
         total = sum(row.points for row in rows)
-        if submitter is None:  # --student: the submitter's output must not confirm whose
+        if lookup is not None:  # --student: the submitter's output must not confirm whose
             _name_match(rows, whose(lookup, student, wrong, len(plan.students)))
         graded.rows += rows
         for s, own in extras_by_student.get(student, []):
