@@ -321,6 +321,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                    "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
                    "the quiz's Student Analysis of a QTI bank), "
                    "regraded by gyro (errors carried forward too).")
+@click.option("--attempts", type=click.Choice(("latest", "best")), default="latest",
+              show_default=True,
+              help="With --responses moodle|canvas: regrade each student's latest attempt, "
+                   "or every attempt and keep the one with the most points (a quiz that "
+                   "keeps the highest grade).")
 @click.option("--decimal-comma", is_flag=True,
               help="With --responses moodle: the site's language writes a decimal comma, "
                    "so a single ',' in a typed number is the decimal point, as Moodle reads "
@@ -360,7 +365,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           credit: str | None = None, feedback_dir: str | None = None,
           reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
           shard: str | None = None, merge: bool = False, student: str | None = None,
-          responses: str | None = None, decimal_comma: bool = False) -> None:
+          responses: str | None = None, decimal_comma: bool = False,
+          attempts: str = "latest") -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -414,11 +420,15 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
     if decimal_comma and responses != "moodle":
         fail("--decimal-comma goes with --responses moodle")
+    if attempts != "latest" and responses not in ("moodle", "canvas"):
+        fail("--attempts goes with --responses moodle or canvas")
+    if attempts != "latest" and student is not None:
+        fail("--attempts best grades a whole class's download, not one --student")
     if responses and assignment:
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
         graded = _grade_responses(sheet, responses, paths, credit, student, reveal,
-                                  decimal_comma) \
+                                  decimal_comma, attempts == "best") \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal)
@@ -439,7 +449,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 
 def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
                      credit: str | None, student: str | None,
-                     reveal: bool, decimal_comma: bool = False):  # type: ignore[no-untyped-def]
+                     reveal: bool, decimal_comma: bool = False,
+                     every_attempt: bool = False):  # type: ignore[no-untyped-def]
     """Grade a platform's download of responses: read as a gyro answer sheet (written to
     a scratch file that is removed after)."""
     import tempfile
@@ -448,16 +459,22 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
     if platform == "moodle":
-        text, people = moodle_sheet(download, paths, decimal_comma)
+        text, people = moodle_sheet(download, paths, decimal_comma, every_attempt)
+    elif platform == "canvas":
+        text, people = canvas_sheet(download, paths, every_attempt)
     else:
-        text, people = (canvas_sheet if platform == "canvas" else blackboard_sheet)(download,
-                                                                                    paths)
+        text, people = blackboard_sheet(download, paths)
     with tempfile.TemporaryDirectory() as scratch:
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:
             out.write(text)
         graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal)
     graded.people = people  # the platform's names and ids, for --out-format canvas
+    if every_attempt:
+        from .checking.grades import best_attempts
+        from .commands.responses import ATTEMPT_OF
+
+        graded = best_attempts(graded, ATTEMPT_OF)
     return graded
 
 

@@ -202,3 +202,46 @@ def test_moodle_two_rows_of_one_name_without_identity_fields_are_refused(run, tm
     assert done.exit_code == 2, done.output
     (line,) = done.stderr.splitlines()
     assert "rows 2 and 3 both name 'Lee Ann'" in line and "identity field" in line, line
+
+
+def test_canvas_best_attempt_keeps_the_attempt_with_the_most_points(run, tmp_path, canvas):
+    """A quiz that keeps the highest grade: --attempts best regrades every attempt and
+    keeps the best (the latest alone could give less than the platform gave)."""
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "S1", "1", *right], ["Ann Lee", "101", "S1", "2", "1", "1", "1"],
+            ["Bob Roe", "102", "S2", "1", "1", "1", "1"]]
+    path = _analysis(tmp_path, texts, rows)
+    assert _scores(run, path, problem) == {"S1": 0.0, "S2": 0.0}
+    done = run("check", "--answers", path, "--responses", "canvas", problem, "--attempts",
+               "best", "--format", "json")
+    assert done.exit_code == 0, done.output
+    data = json.loads(done.stdout)
+    assert {s: v["points"] for s, v in data["scores"].items()} == {"S1": 2.0, "S2": 0.0}
+    assert {r["student"] for r in data["rows"]} == {"S1", "S2"}
+    assert len(data["rows"]) == 4  # each student's two questions, once
+    assert "1 student(s) made several attempts" in done.stderr
+    out = tmp_path / "quiz.csv"
+    assert run("check", "--answers", path, "--responses", "canvas", problem, "--attempts",
+               "best", "--out", out, "--out-format", "canvas").exit_code == 0
+    with open(out, newline="") as handle:
+        table = list(csv.DictReader(handle))[1:]
+    assert sorted((r["Student"], r["SIS User ID"], r["quiz"]) for r in table) == \
+        [("Ann Lee", "S1", "2"), ("Bob Roe", "S2", "0")]
+
+
+def test_moodle_best_attempt_and_a_blank_attempt(run, tmp_path, moodle):
+    problem, right = moodle
+    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(right)],
+            ["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "0", _cell(["1", "1", "1"])],
+            ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "0", _cell(["", "", ""])]]
+    path = _moodle(tmp_path, rows)
+    # the latest attempt; bob's blank one is graded 0, not left out
+    assert _moodle_scores(run, path, problem) == {"ann@x.edu": 0.0, "bob@x.edu": 0.0}
+    done = run("check", "--answers", path, "--responses", "moodle", problem, "--attempts",
+               "best", "--format", "json")
+    assert done.exit_code == 0, done.output
+    scores = {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
+    assert scores == {"ann@x.edu": 2.0, "bob@x.edu": 0.0}
+    refused = run("check", "--answers", path, "--responses", "moodle", problem, "--attempts",
+                  "best", "--student", "ann@x.edu")
+    assert refused.exit_code == 2

@@ -691,6 +691,33 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     return graded
 
 
+def best_attempts(graded: Graded, attempt_of: str) -> Graded:
+    """A grading of every attempt (entries whose identity in ``graded.people`` names their
+    student under ``attempt_of``) as a grading of students: each student's attempt with
+    the most points regraded (of equal ones the later), its rows and score theirs; a
+    platform that keeps the highest grade keeps it so."""
+    best: dict[str, str] = {}  # student -> their best attempt's entry
+    for entry, (points, _) in graded.scores.items():
+        student = graded.people.get(entry, {}).get(attempt_of, entry)
+        if student not in best or points >= graded.scores[best[student]][0]:
+            best[student] = entry
+    kept = {entry: student for student, entry in best.items()}
+    graded.rows = [r for r in graded.rows if r.student in kept]
+    for row in graded.rows:
+        row.student = kept[row.student]
+    several = sum(1 for s in best if sum(1 for e in graded.scores
+                                           if graded.people.get(e, {}).get(attempt_of) == s)
+                  > 1)
+    graded.scores = {student: graded.scores[entry] for student, entry in best.items()}
+    graded.people = {student: {k: v for k, v in graded.people.get(entry, {}).items()
+                               if k != attempt_of} for student, entry in best.items()}
+    graded.sheet_students = list(best)
+    if several:
+        graded.notes.append(f"{several} student(s) made several attempts: each is graded on "
+                            "the attempt with the most points regraded")
+    return graded
+
+
 def _submitter_only(submissions: list[Submission], student: str, sheet: str) -> None:
     """With --student the sheet is that student's submission: a row naming anyone else is
     refused (graded, it would give them the submitter's work)."""

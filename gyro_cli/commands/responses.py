@@ -179,13 +179,19 @@ _RESPONSE = re.compile(r"response (\d+)")
 _PART = re.compile(r"(?:^|;\s*)part (\d+):\s*", re.IGNORECASE)
 
 
-def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False
-                 ) -> tuple[str, dict[str, dict[str, str]]]:
+#: in a download read with every attempt: the student an attempt's entry is of
+ATTEMPT_OF = "attempt of"
+
+
+def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
+                 every_attempt: bool = False) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
     name: Response N is the N-th problem of ``paths``; a later finished attempt of a
     student replaces an earlier one, and an attempt not finished (State) is not graded,
     as Moodle grades none; each number is read as Moodle reads it (`moodle_number`, with
-    the site's ``decimal_comma``)."""
+    the site's ``decimal_comma``). With ``every_attempt`` each finished attempt is an
+    entry of its own, ``<student> (attempt N)``, whose identity names its student
+    (ATTEMPT_OF), for `checking.grades.best_attempts`."""
     rows = _rows(path, "a Moodle quiz responses report")
     header = [c.strip().lower() for c in rows[0]] if rows else []
     slots = {int(m.group(1)): k for k, name in enumerate(header)
@@ -200,6 +206,7 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
                          "in the order the bank was exported", file=path, line=1)
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
+    tries: dict[str, int] = {}  # finished attempts met per student (every_attempt)
     named: dict[str, int] = {}  # a student known by name alone -> the line of their row
     people: dict[str, dict[str, str]] = {}
     state = header.index("state") if "state" in header else None
@@ -216,14 +223,22 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                                  "or Email address) to tell two students from two attempts: "
                                  "download it with one", file=path, line=number)
             named[student] = number
+        who = student
+        if every_attempt:  # each finished attempt graded; `best_attempts` keeps the best
+            tries[student] = tries.get(student, 0) + 1
+            who = f"{student} (attempt {tries[student]})"
         answers: list[tuple[str, str, str, int, str]] = []
         for slot, (variant, part_of) in enumerate(problems, 1):
+            for blank in variant.blanks:  # a blank left empty is graded `missing`
+                part = part_of[blank.key]
+                answers.append((who, variant.ident, part.name, part.index, ""))
             for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
-                answers.append((student, variant.ident, part.name, part.index,
+                answers.append((who, variant.ident, part.name, part.index,
                                 _with_unit(moodle_number(typed, decimal_comma),
                                            part.unit)))
-        by_student[student] = answers
-        people[student] = {"name": _moodle_name(header, row)}
+        by_student[who] = answers
+        people[who] = {"name": _moodle_name(header, row)} | (
+            {ATTEMPT_OF: student} if every_attempt else {})
     return _sheet([a for answers in by_student.values() for a in answers]), people
 
 
@@ -327,13 +342,14 @@ def _compact(text: str) -> str:
     return "".join(plain(text).split())
 
 
-def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]
+def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: bool = False
                  ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet,
     and each student's Canvas identity (name, Canvas id, SIS id, section: the gradebook
     columns of `--out-format canvas`). Each question column is matched by its text; a
     student is their SIS id, else their Canvas id; of several attempts, the highest
-    counts (the attempt column, whatever the rows' order); an attempt left blank is
+    counts (the attempt column, whatever the rows' order), or with ``every_attempt`` each
+    is an entry of its own, as `moodle_sheet` makes them; an attempt left blank is
     graded, every answer `missing`."""
     rows = _rows(path, "a Canvas Student Analysis report")
     header = [c.strip() for c in rows[0]] if rows else []
@@ -362,29 +378,39 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...]
         asked[k] = found
     column = {name: names.index(name) for name in ("name", "id", "sis_id", "attempt")}
     latest: dict[str, tuple[int, list[str]]] = {}  # Canvas id -> (attempt, row)
+    every: dict[tuple[str, int], list[str]] = {}  # (Canvas id, attempt) -> row
     for line, row in _filled(rows, len(header), path):
         canvas_id = row[column["id"]].strip()
         if not canvas_id:
             raise InputError("a row with no Canvas id (column id)", file=path, line=line)
         attempt = _attempt(row[column["attempt"]], path, line)
+        if every_attempt and (canvas_id, attempt) in every:
+            raise InputError(f"Canvas id {canvas_id}'s attempt {attempt} is listed twice",
+                             file=path, line=line)
+        every[canvas_id, attempt] = row
         if canvas_id not in latest or attempt >= latest[canvas_id][0]:
             latest[canvas_id] = (attempt, row)  # the highest attempt, in any row order
     people: dict[str, dict[str, str]] = {}
+    students: dict[str, str] = {}  # student -> Canvas id
     answers: list[tuple[str, str, str, int, str]] = []
-    for canvas_id, (_, row) in latest.items():
+    chosen = sorted(every.items(), key=lambda e: e[0][1]) if every_attempt else \
+        [((canvas_id, attempt), row) for canvas_id, (attempt, row) in latest.items()]
+    for (canvas_id, attempt), row in chosen:
         sis_id = row[column["sis_id"]].strip()
         student = sis_id or canvas_id
-        if student in people:  # one's SIS id is another's Canvas id
+        if students.setdefault(student, canvas_id) != canvas_id:  # one's SIS id, other's id
             raise InputError(f"two students would be graded as {student!r}: Canvas ids "
-                             f"{people[student]['id']} and {canvas_id} (one's SIS id is the "
+                             f"{students[student]} and {canvas_id} (one's SIS id is the "
                              "other's Canvas id); give every student an SIS id, or none",
                              file=path)
-        people[student] = {"name": row[column["name"]].strip(), "id": canvas_id,
-                           "sis_id": sis_id, "section": row[names.index("section")].strip()
-                           if "section" in names else ""}
+        who = f"{student} (attempt {attempt})" if every_attempt else student
+        people[who] = {"name": row[column["name"]].strip(), "id": canvas_id,
+                       "sis_id": sis_id, "section": row[names.index("section")].strip()
+                       if "section" in names else ""} | (
+            {ATTEMPT_OF: student} if every_attempt else {})
         for k, (problem, part) in asked.items():
             typed = row[k].strip()
-            answers.append((student, problem, part.name, part.index,
+            answers.append((who, problem, part.name, part.index,
                             _with_unit(typed, part.unit) if typed else ""))
     return _sheet(answers), people
 
