@@ -75,6 +75,16 @@ def write(tmp_path):
     return _write
 
 
+def class_set(run, folder: Path, ids: list[str], problem: Path = PROBLEMS / "11_3.yaml",
+              seed: int = 7, name: str = "hw") -> Path:
+    """`gyro vary --roster` of the students ``ids`` into ``folder/name``; its assignment."""
+    roster = folder / f"{name}-roster.csv"
+    roster.write_text("student,name\n" + "".join(f"{i},{i.title()}\n" for i in ids))
+    done = run("vary", problem, "--roster", roster, "--seed", str(seed), "-o", folder / name)
+    assert done.exit_code == 0, done.output
+    return folder / name / "assignment.csv"
+
+
 @pytest.fixture
 def problems_dir() -> Path:
     return PROBLEMS

@@ -7,19 +7,16 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import PROBLEMS
+from conftest import class_set
 
 
 @pytest.fixture
 def homework(run, tmp_path: Path) -> Path:
-    (tmp_path / "roster.csv").write_text("student,name\nann,Ann\nbob,Bob\n")
-    done = run("vary", PROBLEMS / "11_3.yaml", "--roster", tmp_path / "roster.csv",
-               "--seed", "7", "-o", tmp_path / "hw")
-    assert done.exit_code == 0, done.output
+    assignment = class_set(run, tmp_path, ["ann", "bob"])
     sheet = tmp_path / "sheet.csv"
     sheet.write_text("student,problem,answer,value\nann,11/3,min_spin,991.9 rpm\n"
                      "bob,11/3,min_spin,941.8 rpm\n")
-    return tmp_path / "hw" / "assignment.csv"
+    return assignment
 
 
 def _refused(result, name: str) -> None:

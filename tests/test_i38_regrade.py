@@ -115,9 +115,9 @@ def qti_questions(package: Path) -> list[str]:
     return texts
 
 
-def analysis(tmp_path: Path, texts: list[str], answers: dict[str, list[str]]) -> Path:
+def canvas_analysis(tmp_path: Path, texts: list[str], rows: list[list[str]]) -> Path:
     """A Student Analysis: per question "ID: text" and its points column, then the totals;
-    per student one row (the first student's attempt 1 replaced by their attempt 2)."""
+    a row per attempt, ``rows`` as [name, Canvas id, SIS id, attempt, typed...]."""
     path = tmp_path / "student_analysis.csv"
     with path.open("w", newline="", encoding="utf-8") as out:
         writer = csv.writer(out)
@@ -125,13 +125,23 @@ def analysis(tmp_path: Path, texts: list[str], answers: dict[str, list[str]]) ->
         for k, text in enumerate(texts):
             header += [f"{5000 + k}: {text}", "1.0"]
         writer.writerow(header + ["n correct", "n incorrect", "score"])
-        for n, (user, typed) in enumerate(answers.items()):
+        for name, canvas_id, sis_id, attempt, *typed in rows:
             cells = [c for value in typed for c in (value, "0.0")]
-            info = [user.title(), str(100 + n), f"S{n}", "Dynamics", "7", "", "2026-11-27"]
-            if n == 0:
-                writer.writerow(info + ["1"] + ["1", "0.0"] * len(texts) + ["0", "4", "0"])
-            writer.writerow(info + ["2"] + cells + ["0", "4", "0"])
+            writer.writerow([name, canvas_id, sis_id, "Dynamics", "7", "", "2026-11-27",
+                             attempt] + cells + ["0", str(len(texts)), "0"])
     return path
+
+
+def analysis(tmp_path: Path, texts: list[str], answers: dict[str, list[str]]) -> Path:
+    """`canvas_analysis` with one row per student (the first student's attempt 1, all 1s,
+    replaced by their attempt 2)."""
+    rows = []
+    for n, (user, typed) in enumerate(answers.items()):
+        who = [user.title(), str(100 + n), f"S{n}"]
+        if n == 0:
+            rows.append(who + ["1"] + ["1"] * len(texts))
+        rows.append(who + ["2"] + list(typed))
+    return canvas_analysis(tmp_path, texts, rows)
 
 
 def test_item04_canvas_student_analysis_regraded_with_errors_carried_forward(tmp_path, run):

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 from test_i38_ecf_more import PROBLEM_11_3
-from test_i38_regrade import CANVAS_HEADER, HEADER, blanks, qti_questions
+from test_i38_regrade import HEADER, blanks, canvas_analysis, qti_questions
 
 
 @pytest.fixture
@@ -33,24 +33,10 @@ def canvas(run, tmp_path: Path) -> tuple[Path, list[str], list[str]]:
     return problem, texts, right
 
 
-def _analysis(tmp_path: Path, texts: list[str], rows: list[list[str]]) -> Path:
-    """rows: [name, id, sis_id, attempt, typed...]."""
-    path = tmp_path / "student_analysis.csv"
-    with path.open("w", newline="", encoding="utf-8") as out:
-        writer = csv.writer(out)
-        header = list(CANVAS_HEADER)
-        for k, text in enumerate(texts):
-            header += [f"{5000 + k}: {text}", "1.0"]
-        writer.writerow(header + ["n correct", "n incorrect", "score"])
-        for name, canvas_id, sis_id, attempt, *typed in rows:
-            cells = [c for value in typed for c in (value, "0.0")]
-            writer.writerow([name, canvas_id, sis_id, "Dynamics", "7", "", "2026-11-27",
-                             attempt] + cells + ["0", "3", "0"])
-    return path
-
-
-def _scores(run, path: Path, problem: Path) -> dict[str, float]:
-    done = run("check", "--answers", path, "--responses", "canvas", problem,
+def _scores(run, path: Path, problem: Path, platform: str = "canvas",
+            *options: str) -> dict[str, float]:
+    """Each student's points in a regrade of a platform's download."""
+    done = run("check", "--answers", path, "--responses", platform, problem, *options,
                "--format", "json")
     assert done.exit_code == 0, done.output
     return {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
@@ -60,22 +46,22 @@ def test_canvas_the_highest_attempt_counts_in_any_row_order(run, tmp_path, canva
     problem, texts, right = canvas
     wrong = ["1", "1", "1"]
     rows = [["Ann Lee", "101", "S1", "2", *right], ["Ann Lee", "101", "S1", "1", *wrong]]
-    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
+    assert _scores(run, canvas_analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
     rows.reverse()  # the same attempts in the other order
-    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
+    assert _scores(run, canvas_analysis(tmp_path, texts, rows), problem) == {"S1": 2.0}
 
 
 def test_canvas_a_blank_attempt_is_graded_zero_not_left_out(run, tmp_path, canvas):
     problem, texts, right = canvas
     rows = [["Ann Lee", "101", "S1", "1", *right], ["Bob Roe", "102", "S2", "1", "", "", ""]]
-    assert _scores(run, _analysis(tmp_path, texts, rows), problem) == {"S1": 2.0, "S2": 0.0}
+    assert _scores(run, canvas_analysis(tmp_path, texts, rows), problem) == {"S1": 2.0, "S2": 0.0}
 
 
 def test_canvas_ids_and_names_go_to_their_gradebook_columns(run, tmp_path, canvas):
     problem, texts, right = canvas
     rows = [["Ann Lee", "101", "S1", "1", *right], ["Bob Roe", "102", "", "1", *right]]
     out = tmp_path / "quiz.csv"
-    done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+    done = run("check", "--answers", canvas_analysis(tmp_path, texts, rows), "--responses",
                "canvas", problem, "--out", out, "--out-format", "canvas")
     assert done.exit_code == 0, done.output
     with open(out, newline="") as handle:
@@ -91,7 +77,7 @@ def test_canvas_a_row_without_an_attempt_number_is_refused(run, tmp_path, canvas
     for attempt in ("", "x", "2.0"):
         rows = [["Bob Roe", "102", "S2", attempt, *right], ["Bob Roe", "102", "S2", "1",
                                                             "1", "1", "1"]]
-        done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+        done = run("check", "--answers", canvas_analysis(tmp_path, texts, rows), "--responses",
                    "canvas", problem)
         assert done.exit_code == 2, done.output
         (line,) = done.stderr.splitlines()
@@ -101,7 +87,7 @@ def test_canvas_a_row_without_an_attempt_number_is_refused(run, tmp_path, canvas
 def test_canvas_one_sis_id_equal_to_anothers_canvas_id_is_refused(run, tmp_path, canvas):
     problem, texts, right = canvas
     rows = [["Ann Lee", "101", "102", "1", *right], ["Bob Roe", "102", "", "1", "", "", ""]]
-    done = run("check", "--answers", _analysis(tmp_path, texts, rows), "--responses",
+    done = run("check", "--answers", canvas_analysis(tmp_path, texts, rows), "--responses",
                "canvas", problem)
     assert done.exit_code == 2, done.output
     (line,) = done.stderr.splitlines()
@@ -150,13 +136,6 @@ def _cell(values: list[str]) -> str:
     return "; ".join(f"part {k}: {v}" for k, v in enumerate(values, 1))
 
 
-def _moodle_scores(run, path: Path, problem: Path) -> dict[str, float]:
-    done = run("check", "--answers", path, "--responses", "moodle", problem,
-               "--format", "json")
-    assert done.exit_code == 0, done.output
-    return {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
-
-
 def test_moodle_a_decimal_comma_is_read_as_the_site_reads_it(run, tmp_path, moodle):
     problem, right = moodle
     comma = [v.replace(".", ",") for v in right]
@@ -170,13 +149,10 @@ def test_moodle_a_decimal_comma_is_read_as_the_site_reads_it(run, tmp_path, mood
             ["Poe", "Cat", "cat@x.edu", "Finished", "", "", "", "3", _cell(trailing)]]
     path = _moodle(tmp_path, rows)
     # a site whose language writes a decimal comma: 45,13 is 45.13
-    done = run("check", "--answers", path, "--responses", "moodle", problem,
-               "--decimal-comma", "--format", "json")
-    assert done.exit_code == 0, done.output
-    scores = {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
-    assert scores == {"ann@x.edu": 2.0, "bob@x.edu": 2.0, "cat@x.edu": 2.0}
+    assert _scores(run, path, problem, "moodle", "--decimal-comma") == \
+        {"ann@x.edu": 2.0, "bob@x.edu": 2.0, "cat@x.edu": 2.0}
     # an English site (the default): 45,13 is 4513, as Moodle marked it
-    english = _moodle_scores(run, path, problem)
+    english = _scores(run, path, problem, "moodle")
     assert english["ann@x.edu"] < 2.0 and english["bob@x.edu"] == 2.0
     assert run("check", "--answers", path, "--responses", "canvas", problem,
                "--decimal-comma").exit_code == 2
@@ -188,7 +164,7 @@ def test_moodle_an_attempt_not_finished_is_not_graded(run, tmp_path, moodle):
     rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(right)],
             ["Lee", "Ann", "ann@x.edu", "In progress", "", "", "", "-", _cell(["", "", ""])],
             ["Roe", "Bob", "bob@x.edu", "In progress", "", "", "", "-", _cell(right)]]
-    assert _moodle_scores(run, _moodle(tmp_path, rows), problem) == {"ann@x.edu": 2.0}
+    assert _scores(run, _moodle(tmp_path, rows), problem, "moodle") == {"ann@x.edu": 2.0}
 
 
 def test_moodle_two_rows_of_one_name_without_identity_fields_are_refused(run, tmp_path,
@@ -210,7 +186,7 @@ def test_canvas_best_attempt_keeps_the_attempt_with_the_most_points(run, tmp_pat
     problem, texts, right = canvas
     rows = [["Ann Lee", "101", "S1", "1", *right], ["Ann Lee", "101", "S1", "2", "1", "1", "1"],
             ["Bob Roe", "102", "S2", "1", "1", "1", "1"]]
-    path = _analysis(tmp_path, texts, rows)
+    path = canvas_analysis(tmp_path, texts, rows)
     assert _scores(run, path, problem) == {"S1": 0.0, "S2": 0.0}
     done = run("check", "--answers", path, "--responses", "canvas", problem, "--attempts",
                "best", "--format", "json")
@@ -236,12 +212,9 @@ def test_moodle_best_attempt_and_a_blank_attempt(run, tmp_path, moodle):
             ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "0", _cell(["", "", ""])]]
     path = _moodle(tmp_path, rows)
     # the latest attempt; bob's blank one is graded 0, not left out
-    assert _moodle_scores(run, path, problem) == {"ann@x.edu": 0.0, "bob@x.edu": 0.0}
-    done = run("check", "--answers", path, "--responses", "moodle", problem, "--attempts",
-               "best", "--format", "json")
-    assert done.exit_code == 0, done.output
-    scores = {s: v["points"] for s, v in json.loads(done.stdout)["scores"].items()}
-    assert scores == {"ann@x.edu": 2.0, "bob@x.edu": 0.0}
+    assert _scores(run, path, problem, "moodle") == {"ann@x.edu": 0.0, "bob@x.edu": 0.0}
+    assert _scores(run, path, problem, "moodle", "--attempts", "best") == \
+        {"ann@x.edu": 2.0, "bob@x.edu": 0.0}
     refused = run("check", "--answers", path, "--responses", "moodle", problem, "--attempts",
                   "best", "--student", "ann@x.edu")
     assert refused.exit_code == 2

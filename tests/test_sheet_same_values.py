@@ -10,18 +10,14 @@ import re
 from pathlib import Path
 
 import pytest
-from conftest import PROBLEMS
+from conftest import PROBLEMS, class_set
 
 HEAD = "student,problem,answer,value\n"
 
 
 @pytest.fixture
 def homework(run, tmp_path: Path) -> Path:
-    (tmp_path / "roster.csv").write_text("student,name\nann,Ann\n")
-    done = run("vary", PROBLEMS / "11_3.yaml", "--roster", tmp_path / "roster.csv",
-               "--seed", "7", "-o", tmp_path / "hw")
-    assert done.exit_code == 0, done.output
-    return tmp_path / "hw" / "assignment.csv"
+    return class_set(run, tmp_path, ["ann"])
 
 
 def _variant(assignment: Path) -> str:
@@ -96,15 +92,12 @@ def motor(run, tmp_path: Path) -> tuple[Path, str, str]:
     """11/5 for one student: the assignment and ann's forces at A and B as solved."""
     import json
 
-    (tmp_path / "r5.csv").write_text("student,name\nann,Ann\n")
-    done = run("vary", PROBLEMS / "11_5.yaml", "--roster", tmp_path / "r5.csv",
-               "--seed", "7", "-o", tmp_path / "hw5")
-    assert done.exit_code == 0, done.output
-    key = json.loads((tmp_path / "hw5" / "key.json").read_text())
+    assignment = class_set(run, tmp_path, ["ann"], PROBLEMS / "11_5.yaml", name="hw5")
+    key = json.loads((assignment.parent / "key.json").read_text())
     (entry,) = key["variants"].values()
     a, b = entry["answers"]["bearing_forces"]["values"]
     assert entry["answers"]["bearing_forces"]["labels"] == ["A", "B"]
-    return tmp_path / "hw5" / "assignment.csv", f"{a:.4g} N", f"{b:.4g} N"
+    return assignment, f"{a:.4g} N", f"{b:.4g} N"
 
 
 def test_an_ordered_answer_in_two_orders_under_both_ids_is_two_answers(run, tmp_path, motor):
