@@ -472,9 +472,9 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     graded.people = people  # the platform's names and ids, for --out-format canvas
     if every_attempt:
         from .checking.grades import best_attempts
-        from .commands.responses import ATTEMPT_OF
+        from .commands.responses import ATTEMPT_NUMBER, ATTEMPT_OF
 
-        graded = best_attempts(graded, ATTEMPT_OF)
+        graded = best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER)
     return graded
 
 

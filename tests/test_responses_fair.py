@@ -205,10 +205,74 @@ def test_canvas_best_attempt_keeps_the_attempt_with_the_most_points(run, tmp_pat
         [("Ann Lee", "S1", "2"), ("Bob Roe", "S2", "0")]
 
 
+def test_moodle_the_latest_attempt_is_the_one_started_last(run, tmp_path, moodle):
+    """A report listing the newest attempt first (sorted by Started on) had its older
+    attempt regraded as the latest (a third adversarial pass)."""
+    problem, right = moodle
+    wrong = _cell(["1", "1", "1"])
+    newest_first = [
+        ["Lee", "Ann", "ann@x.edu", "Finished", "2 January 2027, 9:00 AM", "", "", "3",
+         _cell(right)],
+        ["Lee", "Ann", "ann@x.edu", "Finished", "1 January 2027, 9:00 AM", "", "", "0", wrong]]
+    assert _scores(run, _moodle(tmp_path, newest_first), problem, "moodle") == \
+        {"ann@x.edu": 2.0}
+    assert _scores(run, _moodle(tmp_path, newest_first[::-1]), problem, "moodle") == \
+        {"ann@x.edu": 2.0}
+    undated = [row[:4] + [""] + row[5:] for row in newest_first]
+    done = run("check", "--answers", _moodle(tmp_path, undated), "--responses", "moodle",
+               problem)
+    assert done.exit_code == 2 and "which is the latest is unknown" in done.stderr
+    assert _scores(run, _moodle(tmp_path, undated), problem, "moodle", "--attempts",
+                   "best") == {"ann@x.edu": 2.0}
+
+
+def test_attempts_are_one_student_whatever_their_rows_write(run, tmp_path, canvas, moodle):
+    """An SIS id added between attempts, or an id in another Unicode form, had split one
+    student in two under --attempts best (and lost their name from the gradebook)."""
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "", "1", *right], ["Ann Lee", "101", "S1", "2", "1", "1", "1"]]
+    path = canvas_analysis(tmp_path, texts, rows)
+    assert _scores(run, path, problem, "canvas", "--attempts", "best") == {"S1": 2.0}
+    assert _scores(run, path, problem) == {"S1": 0.0}
+    # attempts 9 and 10, equal points: the later is kept (not "10" < "9" as text)
+    later = [f"{float(v) * 1.001:.5g}" for v in right]  # as right, written otherwise
+    rows = [["Ann Lee", "101", "S1", "9", *right], ["Ann Lee", "101", "S1", "10", *later]]
+    done = run("check", "--answers", canvas_analysis(tmp_path, texts, rows), "--responses",
+               "canvas", problem, "--attempts", "best", "--format", "json")
+    assert done.exit_code == 0, done.output
+    kept = json.loads(done.stdout)["rows"]
+    assert all(r["points"] == 1 for r in kept)
+    assert {r["submitted"].split()[0] for r in kept} <= {*later}, kept
+    moodle_problem, moodle_right = moodle
+    nfd, nfc = "jose\u0301@x.edu", "jos\u00e9@x.edu"
+    rows = [["Ramírez", "José", nfd, "Finished", "1 January 2027, 9:00 AM", "", "", "3",
+             _cell(moodle_right)],
+            ["Ramírez", "José", nfd, "Finished", "2 January 2027, 9:00 AM", "", "", "0",
+             _cell(["1", "1", "1"])]]
+    path = _moodle(tmp_path, rows)
+    assert _scores(run, path, moodle_problem, "moodle", "--attempts", "best") == {nfc: 2.0}
+    out = tmp_path / "q.csv"
+    assert run("check", "--answers", path, "--responses", "moodle", moodle_problem,
+               "--out", out, "--out-format", "canvas").exit_code == 0
+    with open(out, newline="", encoding="utf-8") as handle:
+        (row,) = list(csv.DictReader(handle))[1:]
+    assert row["Student"] == "José Ramírez"
+
+
+def test_canvas_an_attempt_listed_twice_is_refused(run, tmp_path, canvas):
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "S1", "1", "1", "1", "1"], ["Ann Lee", "101", "S1", "1", *right]]
+    done = run("check", "--answers", canvas_analysis(tmp_path, texts, rows), "--responses",
+               "canvas", problem)
+    assert done.exit_code == 2 and "attempt 1 is listed twice" in done.stderr
+
+
 def test_moodle_best_attempt_and_a_blank_attempt(run, tmp_path, moodle):
     problem, right = moodle
-    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(right)],
-            ["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "0", _cell(["1", "1", "1"])],
+    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "1 Jan 2027 9:00 AM", "", "", "3",
+             _cell(right)],
+            ["Lee", "Ann", "ann@x.edu", "Finished", "2 Jan 2027 9:00 AM", "", "", "0",
+             _cell(["1", "1", "1"])],
             ["Roe", "Bob", "bob@x.edu", "Finished", "", "", "", "0", _cell(["", "", ""])]]
     path = _moodle(tmp_path, rows)
     # the latest attempt; bob's blank one is graded 0, not left out

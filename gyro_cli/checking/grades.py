@@ -691,15 +691,20 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     return graded
 
 
-def best_attempts(graded: Graded, attempt_of: str) -> Graded:
+def best_attempts(graded: Graded, attempt_of: str, attempt_number: str) -> Graded:
     """A grading of every attempt (entries whose identity in ``graded.people`` names their
-    student under ``attempt_of``) as a grading of students: each student's attempt with
-    the most points regraded (of equal ones the later), its rows and score theirs; a
-    platform that keeps the highest grade keeps it so."""
+    student under ``attempt_of`` and the attempt's number under ``attempt_number``) as a
+    grading of students: each student's attempt with the most points regraded (of equal
+    ones the later), its rows and score theirs; a platform that keeps the highest grade
+    keeps it so."""
+    def rank(entry: str) -> tuple[float, int]:
+        number = graded.people.get(entry, {}).get(attempt_number, "0")
+        return graded.scores[entry][0], int(number) if number.isdigit() else 0
+
     best: dict[str, str] = {}  # student -> their best attempt's entry
-    for entry, (points, _) in graded.scores.items():
+    for entry in graded.scores:
         student = graded.people.get(entry, {}).get(attempt_of, entry)
-        if student not in best or points >= graded.scores[best[student]][0]:
+        if student not in best or rank(entry) >= rank(best[student]):
             best[student] = entry
     kept = {entry: student for student, entry in best.items()}
     graded.rows = [r for r in graded.rows if r.student in kept]
@@ -710,7 +715,8 @@ def best_attempts(graded: Graded, attempt_of: str) -> Graded:
                   > 1)
     graded.scores = {student: graded.scores[entry] for student, entry in best.items()}
     graded.people = {student: {k: v for k, v in graded.people.get(entry, {}).items()
-                               if k != attempt_of} for student, entry in best.items()}
+                               if k not in (attempt_of, attempt_number)}
+                     for student, entry in best.items()}
     graded.sheet_students = list(best)
     if several:
         graded.notes.append(f"{several} student(s) made several attempts: each is graded on "

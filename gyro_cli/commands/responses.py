@@ -36,6 +36,7 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
+from ..checking.assignment import student_id
 from ..core.errors import InputError
 
 #: the formats ``--responses`` reads
@@ -111,8 +112,9 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]
         problem, part = found
         # a blank response is `missing`, as in a sheet
         value = f"{cell['answer']} {part.unit}".strip() if cell["answer"] else ""
-        answers.append((cell["username"], problem, part.name, part.index, value))
-        people.setdefault(cell["username"], {"name": " ".join(
+        user = student_id(cell["username"])  # as the sheet's reader compares ids: NFC
+        answers.append((user, problem, part.name, part.index, value))
+        people.setdefault(user, {"name": " ".join(
             f"{_cell(row, header, 'first name')} {_cell(row, header, 'last name')}".split())})
     return _sheet(answers), people
 
@@ -179,8 +181,10 @@ _RESPONSE = re.compile(r"response (\d+)")
 _PART = re.compile(r"(?:^|;\s*)part (\d+):\s*", re.IGNORECASE)
 
 
-#: in a download read with every attempt: the student an attempt's entry is of
+#: in a download read with every attempt: the student an attempt's entry is of, and the
+#: attempt's number (of equal grades the later attempt is kept)
 ATTEMPT_OF = "attempt of"
+ATTEMPT_NUMBER = "attempt number"
 
 
 def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
@@ -206,12 +210,13 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
                          "in the order the bank was exported", file=path, line=1)
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
-    tries: dict[str, int] = {}  # finished attempts met per student (every_attempt)
     named: dict[str, int] = {}  # a student known by name alone -> the line of their row
     people: dict[str, dict[str, str]] = {}
     state = header.index("state") if "state" in header else None
+    finished: dict[str, list[tuple[int, list[str]]]] = {}  # student -> (line, row)s
     for number, row in _filled(rows, len(header), path):
         student, by_name = _moodle_student(header, row)
+        student = student_id(student)  # as the sheet's reader compares ids: NFC
         if not student or student.lower().startswith("overall average"):
             continue  # the report's average row is no one's attempt
         if state is not None and row[state].strip().lower() != "finished":
@@ -223,13 +228,14 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                                  "or Email address) to tell two students from two attempts: "
                                  "download it with one", file=path, line=number)
             named[student] = number
-        who = student
-        if every_attempt:  # each finished attempt graded; `best_attempts` keeps the best
-            tries[student] = tries.get(student, 0) + 1
-            who = f"{student} (attempt {tries[student]})"
+        finished.setdefault(student, []).append((number, row))
+
+    def one_attempt(student: str, who: str, attempt: int, number: int,
+                    row: list[str]) -> None:
+        """One attempt's answers under ``who`` (every blank: an empty one is `missing`)."""
         answers: list[tuple[str, str, str, int, str]] = []
         for slot, (variant, part_of) in enumerate(problems, 1):
-            for blank in variant.blanks:  # a blank left empty is graded `missing`
+            for blank in variant.blanks:
                 part = part_of[blank.key]
                 answers.append((who, variant.ident, part.name, part.index, ""))
             for part, typed in _parts(row[slots[slot]], variant, part_of, path, number):
@@ -238,8 +244,49 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                                            part.unit)))
         by_student[who] = answers
         people[who] = {"name": _moodle_name(header, row)} | (
-            {ATTEMPT_OF: student} if every_attempt else {})
+            {ATTEMPT_OF: student, ATTEMPT_NUMBER: str(attempt)} if every_attempt else {})
+
+    for student, attempts in finished.items():
+        # in the order they were started (a report may list the newest first)
+        attempts = _by_start(header, attempts, path, student, not every_attempt) \
+            if len(attempts) > 1 else attempts
+        if not every_attempt:
+            one_attempt(student, student, len(attempts), *attempts[-1])
+            continue
+        for attempt, (number, row) in enumerate(attempts, 1):
+            one_attempt(student, f"{student} (attempt {attempt})", attempt, number, row)
     return _sheet([a for answers in by_student.values() for a in answers]), people
+
+
+def _by_start(header: list[str], attempts: list[tuple[int, list[str]]], path: str,
+              student: str, strict: bool = True) -> list[tuple[int, list[str]]]:
+    """A student's finished attempts in the order they were started (``Started on``, as
+    Moodle writes a date: ``27 November 2026, 9:00 AM``). When a date cannot be read the
+    report's own order may be the newest first: refused when ``strict`` (the latest
+    attempt is the one graded), else the rows' order (every attempt is graded)."""
+    import datetime
+
+    column = header.index("started on") if "started on" in header else None
+    when = []
+    for number, row in attempts:
+        text = " ".join(row[column].replace(",", " ").split()) if column is not None else ""
+        for form in ("%d %B %Y %I:%M %p", "%A %d %B %Y %I:%M %p", "%d %b %Y %I:%M %p",
+                     "%Y-%m-%d %H:%M:%S", "%Y-%m-%d %H:%M", "%d %B %Y %H:%M"):
+            try:
+                when.append(datetime.datetime.strptime(text, form))
+                break
+            except ValueError:
+                continue
+        else:
+            if not strict:
+                return attempts
+            raise InputError(f"{student!r} has {len(attempts)} finished attempts and this "
+                             f"one's Started on ({text[:40]!r}) is no date gyro reads, so "
+                             "which is the latest is unknown: download the report with its "
+                             "dates, or grade the best attempt (--attempts best)",
+                             file=path, line=number)
+    order = sorted(range(len(attempts)), key=lambda k: (when[k], k))
+    return [attempts[k] for k in order]
 
 
 #: a typed number as Moodle's numerical questions read it: digits with '.' or ',', spaces
@@ -384,7 +431,7 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: b
         if not canvas_id:
             raise InputError("a row with no Canvas id (column id)", file=path, line=line)
         attempt = _attempt(row[column["attempt"]], path, line)
-        if every_attempt and (canvas_id, attempt) in every:
+        if (canvas_id, attempt) in every:  # which of the two counts is the rows' order
             raise InputError(f"Canvas id {canvas_id}'s attempt {attempt} is listed twice",
                              file=path, line=line)
         every[canvas_id, attempt] = row
@@ -396,18 +443,21 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: b
     chosen = sorted(every.items(), key=lambda e: e[0][1]) if every_attempt else \
         [((canvas_id, attempt), row) for canvas_id, (attempt, row) in latest.items()]
     for (canvas_id, attempt), row in chosen:
-        sis_id = row[column["sis_id"]].strip()
-        student = sis_id or canvas_id
+        # a student is who their latest attempt names (an SIS id added later, say), for
+        # every attempt of their Canvas id
+        named_row = latest[canvas_id][1]
+        sis_id = named_row[column["sis_id"]].strip()
+        student = student_id(sis_id or canvas_id)  # as the sheet's reader compares: NFC
         if students.setdefault(student, canvas_id) != canvas_id:  # one's SIS id, other's id
             raise InputError(f"two students would be graded as {student!r}: Canvas ids "
                              f"{students[student]} and {canvas_id} (one's SIS id is the "
                              "other's Canvas id); give every student an SIS id, or none",
                              file=path)
         who = f"{student} (attempt {attempt})" if every_attempt else student
-        people[who] = {"name": row[column["name"]].strip(), "id": canvas_id,
-                       "sis_id": sis_id, "section": row[names.index("section")].strip()
+        people[who] = {"name": named_row[column["name"]].strip(), "id": canvas_id,
+                       "sis_id": sis_id, "section": named_row[names.index("section")].strip()
                        if "section" in names else ""} | (
-            {ATTEMPT_OF: student} if every_attempt else {})
+            {ATTEMPT_OF: student, ATTEMPT_NUMBER: str(attempt)} if every_attempt else {})
         for k, (problem, part) in asked.items():
             typed = row[k].strip()
             answers.append((who, problem, part.name, part.index,
