@@ -471,10 +471,9 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
         graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal)
     graded.people = people  # the platform's names and ids, for --out-format canvas
     if every_attempt:
-        from .checking.grades import best_attempts
-        from .commands.responses import ATTEMPT_NUMBER, ATTEMPT_OF
+        from .commands.responses import best_of_attempts
 
-        graded = best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER)
+        graded = best_of_attempts(graded)
     return graded
 
 

@@ -187,6 +187,14 @@ ATTEMPT_OF = "attempt of"
 ATTEMPT_NUMBER = "attempt number"
 
 
+def best_of_attempts(graded: Any) -> Any:
+    """A grading of a download read with every attempt as one of its students, each on
+    their best attempt (`checking.grades.best_attempts`)."""
+    from ..checking.grades import best_attempts
+
+    return best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER)
+
+
 def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
                  every_attempt: bool = False) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
