@@ -198,8 +198,9 @@ def best_of_attempts(graded: Any) -> Any:
 def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
                  every_attempt: bool = False) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
-    name: Response N is the N-th problem of ``paths``; a later finished attempt of a
-    student replaces an earlier one, and an attempt not finished (State) is not graded,
+    name: Response N is the N-th problem of ``paths``; a student's finished attempt
+    started last is the one read (`_by_start`), and an attempt not finished (State) is not
+    graded,
     as Moodle grades none; each number is read as Moodle reads it (`moodle_number`, with
     the site's ``decimal_comma``). With ``every_attempt`` each finished attempt is an
     entry of its own, ``<student> (attempt N)``, whose identity names its student
