@@ -583,3 +583,44 @@ def test_carried_values_accept_the_printed_figures_under_a_tight_tolerance(tmp_p
     rows = by_answer(grades.grade(str(sheet(tmp_path, off, "off.csv")), [str(problem)],
                                   credit={"ecf": 1.0}), "carl")
     assert rows["min_spin"].result == "wrong" and rows["min_spin"].points == 0
+
+
+def test_a_carried_value_inside_the_accepted_band_is_no_follow_through(tmp_path):
+    """'Barely moves' is judged with the band grading accepts around the truth: under a
+    0.004% tolerance (tighter than 4 figures, so 1% is accepted) carl's I 1.5% high moves
+    the least spin to 974.6 rpm, inside 965.4 +- 9.65 rpm, so his 984 rpm is his own
+    error, not one carried (a fourth adversarial pass found it credited)."""
+    problem = problem_with(tmp_path, tolerance="0.004%")
+    right, own = hand_11_3(), hand_11_3(I=1.803e-4)
+    assert 1.01 < 1.803e-4 / right["I"] < 1.02
+    assert abs(own["min_spin"] - right["min_spin"]) < 0.01 * right["min_spin"]  # inside
+    rows = [("carl", "I", "1.803e-4 kg m^2"), ("carl", "min_spin", "984 rpm")]
+    graded = grades.grade(str(sheet(tmp_path, rows)), [str(problem)], credit={"ecf": 0.5})
+    row = by_answer(graded, "carl")["min_spin"]
+    assert row.result == "wrong" and row.points == 0, row
+
+
+def test_sizes_carried_under_a_magnitude_tolerance(tmp_path):
+    """11/5 with `steps: [J]` and the moment quoted as a size: dana's J 10% high gives
+    M = J psidot phidot = 0.00336875 (-180.642) (5.02655) = -3.0588 N m and forces
+    49.05 -+ 3.0588 / 0.2 = 33.756 N at A, 64.344 N at B. Her size 3.059 N m and her
+    forces are right for her J (ECF); they had been wrong: the size compared with the
+    signed value, and carried as +3.059 it reversed the couple."""
+    text = (ROOT / "problems" / "11_5.yaml").read_text().replace(
+        "tolerance: 0.1%\n", "tolerance: {default: 1%, moment: 1% magnitude}\nsteps: [J]\n")
+    path = tmp_path / "p11_5.yaml"
+    path.write_text(text)
+    J = 2.5 * 0.035 ** 2 * 1.1
+    moment = J * (-1725 * RPM) * (48 * RPM)
+    a, b = 10 * 9.81 / 2 + moment / 0.2, 10 * 9.81 / 2 - moment / 0.2
+    assert abs(moment + 3.0588) < 1e-3 and abs(a - 33.756) < 1e-2 and abs(b - 64.344) < 1e-2
+    sheet_path = tmp_path / "s5.csv"
+    sheet_path.write_text("student,problem,answer,value\n"
+                          f"dana,11/5,J,{J:.4g} kg m^2\n"
+                          f"dana,11/5,moment,{abs(moment):.4g} N m\n"
+                          f"dana,11/5,bearing_forces,{a:.4g} N; {b:.4g} N\n")
+    graded = grades.grade(str(sheet_path), [str(path)], credit={"ecf": 0.5})
+    rows = by_answer(graded, "dana")
+    assert rows["J"].points == 0
+    for name in ("moment", "bearing_forces"):
+        assert rows[name].result == "carried" and rows[name].points == 0.5, rows[name]

@@ -152,7 +152,8 @@ def follow_branch(items: list[Item], result: Any) -> None:
         keep = [i for i, label in enumerate(answer.labels) if label in branch]
         sub = SimpleNamespace(si_values=[answer.si_values[i] for i in keep],
                               si_unit=answer.si_unit, unit=answer.si_unit,
-                              labels=[answer.labels[i] for i in keep])
+                              labels=[answer.labels[i] for i in keep],
+                              values=[answer.values[i] for i in keep])  # printed figures
         lines = graded_lines(item.name, parsed, item.tolerance, sub)
         if len(lines) == len(keep) and all(line.passed for line in lines):
             item.row.points, item.row.result = 1.0, "correct"
@@ -202,6 +203,16 @@ def _follow(item: Item, carried: dict[str, float], result: Any, symbol: str | No
     return [env[symbol]] if symbol in env and symbol not in carried else None
 
 
+def _as_carried(source: Item, value: float, result: Any) -> float:
+    """A student's value as it is carried: as written, but under a magnitude tolerance
+    (the book quotes a size) with the solver's sign, so a size written without its sign
+    carries the quantity the student meant, not its reverse."""
+    if not source.tolerance.magnitude:
+        return value
+    truth = _carried_values(source, result)
+    return math.copysign(abs(value), truth[0]) if truth else value
+
+
 def _carried_values(item: Item, solved: Any) -> list[float] | None:
     if item.is_step:
         step = step_names(solved).get(item.name)
@@ -225,7 +236,7 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
             _note(item, f"no follow-through from your {symbol} = {parsed[0].text} (a stock "
                   "value makes the rest another problem)")
             return
-        carried[symbol] = float(parsed[0].si)
+        carried[symbol] = _as_carried(source, float(parsed[0].si), result)
         written.append((symbol, parsed[0]))
         used.append(source)
     submitted = _parsed(item)
@@ -242,15 +253,20 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
             again.count(0.0) > truth.count(0.0):
         return
     # each carried value accepts what grading accepts around the solver's (measured from
-    # it, never tighter than its printed figures: tolerance.student_widths)
+    # it, never tighter than its printed figures: tolerance.student_widths); a carried
+    # value inside the band grading accepts around the truth barely moves the answer
     widths = student_widths(item.tolerance, _reported(item, result, again))
+    bands = student_widths(item.tolerance, _reported(item, result, truth))
     if len(again) == len(truth) and all(
-            abs(a - t) <= item.tolerance.half_width(t, t) for a, t in zip(again, truth)):
+            abs(a - t) <= band for a, t, band in zip(again, truth, bands)):
         _note(item, "the values carried barely change this answer: no follow-through")
         return
     extra = _propagated(item, written, carried, result, again, symbol_of[item.name])
     labels = _reported(item, result, again).labels
-    passed, total = _matched([float(v.si) for v in submitted], widths, again, extra, labels)
+    sizes = [float(v.si) for v in submitted]
+    if item.tolerance.magnitude:  # the book quotes sizes: sizes are compared
+        sizes, again = [abs(v) for v in sizes], [abs(v) for v in again]
+    passed, total = _matched(sizes, widths, again, extra, labels)
     if not passed:
         return
     full = all(source.name in slipped for source in used)
