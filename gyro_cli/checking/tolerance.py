@@ -78,13 +78,22 @@ def student_width(tol: Tolerance, student: Tolerance, value: float, half: float,
     return half, tol
 
 
+_STUDENT: list[Tolerance] = []  # STUDENT_TOLERANCE parsed once (a class: every answer)
+
+
+def _student_tolerance() -> Tolerance:
+    if not _STUDENT:
+        _STUDENT.append(parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance"))
+    return _STUDENT[0]
+
+
 def student_widths(tol: Tolerance, reported: Any) -> list[float]:
     """The SI half-width each computed root accepts a student's value within
     (:func:`student_width` at the solver's value as printed, SIG figures): measured from
     the solver's value, the truth, never from the student's."""
     from ..core.expr import SIG
 
-    student = parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
+    student = _student_tolerance()
     values = list(getattr(reported, "values", None) or reported.si_values)
     out = []
     for value, si in zip(values, reported.si_values):
