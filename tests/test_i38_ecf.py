@@ -624,3 +624,24 @@ def test_sizes_carried_under_a_magnitude_tolerance(tmp_path):
     assert rows["J"].points == 0
     for name in ("moment", "bearing_forces"):
         assert rows[name].result == "carried" and rows[name].points == 0.5, rows[name]
+
+
+def test_a_root_right_and_a_root_carried_add_up(tmp_path):
+    """Precession with the slow root right against the solver and the fast root right for
+    the student's own I (10% high): 1 + 0.5 of 2 roots under ecf=0.5, 0.75 (a fourth
+    adversarial pass found 0.5: the larger of the two grades, not their sum)."""
+    problem = problem_with(tmp_path)
+    right, own = hand_11_3(), hand_11_3(1.1)
+    # the slow root moves by more than 1% with I, the fast by far more: each value is
+    # right one way only
+    assert abs(own["slow"] - right["slow"]) > 0.011 * own["slow"]
+    assert abs(own["fast"] - right["fast"]) > 0.05 * right["fast"]
+    rows = [("carl", "I", f"{own['I']:.4g} kg m^2"),
+            ("carl", "precession", f"{right['slow']:.4g} rpm; {own['fast']:.4g} rpm")]
+    graded = grades.grade(str(sheet(tmp_path, rows)), [str(problem)], credit={"ecf": 0.5})
+    row = by_answer(graded, "carl")["precession"]
+    assert row.points == 0.75 and row.result == "carried", row
+    # without ECF: the slow root alone
+    row = by_answer(grades.grade(str(sheet(tmp_path, rows, "b.csv")), [str(problem)]),
+                    "carl")["precession"]
+    assert row.points == 0.5

@@ -266,26 +266,45 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     sizes = [float(v.si) for v in submitted]
     if item.tolerance.magnitude:  # the book quotes sizes: sizes are compared
         sizes, again = [abs(v) for v in sizes], [abs(v) for v in again]
-    passed, total = _matched(sizes, widths, again, extra, labels)
-    if not passed:
+    hits, total = _matched(sizes, widths, again, extra, labels)
+    if not hits:
         return
     full = all(source.name in slipped for source in used)
-    earned = (1.0 if full else share) * passed / total
+    # a root right against the solver's value keeps its whole point; a root right only
+    # for the student's own earlier values earns the ECF share
+    right = _right(item, submitted, result)
+    earned = (len(right) + (1.0 if full else share) * len(hits - right)) / total
     values = ", ".join(f"{symbol} = {value.text}" for symbol, value in written)
     why = f"consistent with your {values} (ECF" + (
         "; the slip there was already marked down)" if full else ")")
     if earned > item.row.points:
         item.row.points = round(earned, 4)
-        item.row.result = "carried" if passed == total else "partial"
+        item.row.result = "carried" if len(hits | right) == total else "partial"
         why += f" [credit {earned:g}]"
     _note(item, why)
 
 
+def _right(item: Item, submitted: list[Expected], result: Any) -> set[int]:
+    """Which of the submitted values are right against the solver's own (as graded)."""
+    reported = step_reported(result, item.name) if item.is_step \
+        else result.answers[item.name]
+    lines = graded_lines(item.name, submitted, item.tolerance, reported)
+    passed = [float(line.expected_si) for line in lines
+              if line.passed and line.expected_si is not None]
+    out = set()
+    for i, value in enumerate(submitted):
+        si = abs(float(value.si)) if item.tolerance.magnitude else float(value.si)
+        if si in passed:
+            passed.remove(si)
+            out.add(i)
+    return out
+
+
 def _matched(submitted: list[float], widths: list[float], carried: list[float],
-             extra: list[float], labels: list[str]) -> tuple[int, int]:
-    """How many of the submitted values match a carried value (within the carried value's
-    width, ``widths[j]``, and what the last digit carried moves that value), and how many
-    values are graded: roots as sets, places (labelled A, B, outer, ...) in order."""
+             extra: list[float], labels: list[str]) -> tuple[set[int], int]:
+    """Which submitted values match a carried value (within the carried value's width,
+    ``widths[j]``, and what the last digit carried moves that value), and how many values
+    are graded: roots as sets, places (labelled A, B, outer, ...) in order."""
     from .matching import match_roots, ordered
 
     def passes(i: int, j: int) -> bool:
@@ -297,7 +316,7 @@ def _matched(submitted: list[float], widths: list[float], carried: list[float],
             for i in range(max(len(submitted), len(carried)))]
     else:
         pairs = match_roots(submitted, carried, passes)
-    hits = sum(1 for i, j in pairs if i is not None and j is not None and passes(i, j))
+    hits = {i for i, j in pairs if i is not None and j is not None and passes(i, j)}
     return hits, len(pairs)
 
 
