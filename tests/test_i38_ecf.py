@@ -645,3 +645,28 @@ def test_a_root_right_and_a_root_carried_add_up(tmp_path):
     row = by_answer(grades.grade(str(sheet(tmp_path, rows, "b.csv")), [str(problem)]),
                     "carl")["precession"]
     assert row.points == 0.5
+
+
+def test_prairielearn_measures_a_carried_band_as_gyro_check_does(pl_question, tmp_path):
+    """A least spin 0.99% off the value carried from carl's I (10% high): inside 1% of the
+    carried 1025 rpm, outside 1% of the solver's 965.4 rpm. PrairieLearn's grade() took
+    the solver's width and refused it while gyro check credited it (a fourth adversarial
+    pass); both now measure the band from the carried value."""
+    own, right = hand_11_3(1.1), hand_11_3()
+    got = own["min_spin"] * 1.0099
+    assert abs(got - own["min_spin"]) > 0.01 * right["min_spin"]  # the old band refused it
+    I = float(f"{own['I']:.4g}")
+    data = pl_grade(pl_question, {"step_I": I, "min_spin": got})
+    assert data["partial_scores"]["min_spin"]["score"] == 1, data["partial_scores"]
+    rows = [("carl", "I", f"{I} kg m^2"), ("carl", "min_spin", f"{got!r} rpm")]
+    graded = grades.grade(str(sheet(tmp_path, rows)), [str(problem_with(tmp_path))],
+                          credit={"ecf": 1.0})
+    assert by_answer(graded, "carl")["min_spin"].result == "carried"
+    # 1.02 off the carried value: refused by both
+    far = own["min_spin"] * 1.02
+    data = pl_grade(pl_question, {"step_I": I, "min_spin": far})
+    assert data["partial_scores"]["min_spin"]["score"] == 0
+    rows = [("carl", "I", f"{I} kg m^2"), ("carl", "min_spin", f"{far!r} rpm")]
+    graded = grades.grade(str(sheet(tmp_path, rows, "far.csv")), [str(problem_with(tmp_path))],
+                          credit={"ecf": 1.0})
+    assert by_answer(graded, "carl")["min_spin"].points == 0

@@ -155,6 +155,23 @@ def _at(xs, ys, x):
     return None
 
 
+def _band(variant, target, carried, atol):
+    """The half-width a carried value accepts, measured from it as the variant's own is
+    from the solver's value (gyro check's rule): a relative tolerance or figures of the
+    carried value, never less than half a unit of its last printed figure; an absolute
+    one as it is."""
+    import math
+
+    form, fraction, digits = variant.get("tol", {}).get(target, ["absolute", atol, 4])
+    if form == "absolute" or not carried:
+        return atol
+    exponent = math.floor(math.log10(abs(carried)))
+    least = 0.5 * 10.0 ** (exponent - int(digits) + 1)
+    if form == "sig":
+        return max(0.5 * 10.0 ** (exponent - int(fraction) + 1), least)
+    return max(float(fraction) * abs(carried), least)
+
+
 def grade(data):
     """Errors carried forward: a wrong input that is right for the student's own wrong
     earlier step earns the share (not from a stock 0 or 1, nor from a step that barely
@@ -190,7 +207,7 @@ def _carry(data, variant, carry, source, table, scores):
             continue  # the step barely moves this answer
         moved = _at(table["at"], ys, own + _place(raw, own))
         widen = abs(moved - carried) if moved is not None else 0.0
-        if abs(got - carried) <= atol + widen:
+        if abs(got - carried) <= _band(variant, target, carried, atol) + widen:
             later["score"] = max(later.get("score") or 0.0, carry["share"])
             note = "consistent with your %s = %s (ECF)" % (carry["labels"][source], raw)
             later["feedback"] = note
@@ -219,6 +236,9 @@ def variant_entry(v: Variant, words: dict[str, tuple[str, ...]],
             "statement": v.statement_html, "feedback": v.feedback_html,
             "answers": {b.key: b.value for b in v.blanks},
             "atol": {b.key: number_text(b.half_width) for b in v.blanks},
+            # how the half-width is made (form, fraction or figures, figures printed), so
+            # that grade() measures a carried value's band as gyro check does
+            "tol": {b.key: [b.form, b.fraction, b.digits] for b in v.blanks},
             "correct": {c.key: _correct(c, words[c.key]) for c in v.choices},
             "figure": v.figure_name if pictured else "", "figure_alt": v.figure_alt} | (
                 {"ecf": v.carry} if v.carry else {})
