@@ -502,7 +502,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     """
     import os
 
-    from ..solving.problem import asked, load
+    from ..solving.problem import graded_questions, load
     from .assignment import load_variant, read_assignment, read_key
 
     plan = read_assignment(assignment_path)
@@ -553,9 +553,8 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     for planned in mine:
         if planned.problem not in questions:
             problem = variants[planned.variant]
-            steps = list(getattr(problem, "steps", []))
             # what the student's statement asks, as a bank asks it; another answer is `extra`
-            questions[planned.problem] = list(dict.fromkeys(steps + asked(problem)))
+            questions[planned.problem] = graded_questions(problem)
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
@@ -701,6 +700,8 @@ def best_attempts(graded: Graded, attempt_of: str, attempt_number: str) -> Grade
         number = graded.people.get(entry, {}).get(attempt_number, "0")
         return graded.scores[entry][0], int(number) if number.isdigit() else 0
 
+    from collections import Counter
+
     best: dict[str, str] = {}  # student -> their best attempt's entry
     for entry in graded.scores:
         student = graded.people.get(entry, {}).get(attempt_of, entry)
@@ -710,9 +711,8 @@ def best_attempts(graded: Graded, attempt_of: str, attempt_number: str) -> Grade
     graded.rows = [r for r in graded.rows if r.student in kept]
     for row in graded.rows:
         row.student = kept[row.student]
-    several = sum(1 for s in best if sum(1 for e in graded.scores
-                                           if graded.people.get(e, {}).get(attempt_of) == s)
-                  > 1)
+    tries = Counter(graded.people.get(e, {}).get(attempt_of, e) for e in graded.scores)
+    several = sum(1 for n in tries.values() if n > 1)
     graded.scores = {student: graded.scores[entry] for student, entry in best.items()}
     graded.people = {student: {k: v for k, v in graded.people.get(entry, {}).items()
                                if k not in (attempt_of, attempt_number)}

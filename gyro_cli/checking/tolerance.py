@@ -4,6 +4,7 @@ quantity; one for the file or one per answer (see docs/check.md)."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -78,13 +79,9 @@ def student_width(tol: Tolerance, student: Tolerance, value: float, half: float,
     return half, tol
 
 
-_STUDENT: list[Tolerance] = []  # STUDENT_TOLERANCE parsed once (a class: every answer)
-
-
+@functools.cache  # parsed once: a class grades every answer with it
 def _student_tolerance() -> Tolerance:
-    if not _STUDENT:
-        _STUDENT.append(parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance"))
-    return _STUDENT[0]
+    return parse_tolerance(STUDENT_TOLERANCE, None, "--tolerance")
 
 
 def student_widths(tol: Tolerance, reported: Any) -> list[float]:

@@ -42,9 +42,6 @@ FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
 DEFAULT_ECF = 0.5
 #: the formats written as one file
 FILE_FORMATS = ("moodle", "qti", "blackboard")
-#: what a blank accepts where the problem's tolerance is tighter than the significant
-#: figures the question asks for (--tolerance)
-
 
 # ---- building the banks ----------------------------------------------------------
 

@@ -189,7 +189,7 @@ def key_csv(sheets_: list[Sheet]) -> str:
     questions are what grading grades (the steps asked, `steps:`, then what the
     statement asks, `ask:`), not every answer the kind computes."""
     from ..checking.grades import _correct_text, reported
-    from ..solving.problem import asked
+    from ..solving.problem import graded_questions
     from ..solving.solve import solve
 
     out = io.StringIO()
@@ -198,8 +198,7 @@ def key_csv(sheets_: list[Sheet]) -> str:
     for sheet in sheets_:
         for problem, pid in zip(sheet.problems, sheet.variants):
             result = solve(problem)
-            steps = list(getattr(problem, "steps", []))
-            for name in dict.fromkeys(steps + asked(problem)):
+            for name in graded_questions(problem):
                 writer.writerow([safe_cell(c) for c in (sheet.student or "", pid, problem.id,
                                                        name,
                                                        _correct_text(reported(result, name)))])

@@ -346,13 +346,13 @@ def _moodle_student(header: list[str], row: list[str]) -> tuple[str, bool]:
     for name in MOODLE_WHO:
         if name in header and row[header.index(name)].strip():
             return row[header.index(name)].strip(), False
-    given = row[header.index("first name")].strip() if "first name" in header else ""
-    return " ".join(f"{row[header.index('surname')].strip()} {given}".split()), True
+    return " ".join(f"{_cell(row, header, 'surname')} {_cell(row, header, 'first name')}"
+                    .split()), True
 
 
 def _moodle_name(header: list[str], row: list[str]) -> str:
-    given = row[header.index("first name")].strip() if "first name" in header else ""
-    return " ".join(f"{given} {row[header.index('surname')].strip()}".split())
+    return " ".join(f"{_cell(row, header, 'first name')} {_cell(row, header, 'surname')}"
+                    .split())
 
 
 def _parts(cell: str, variant: Any, part_of: dict[str, Any], path: str,

@@ -341,10 +341,3 @@ def feedback_files(graded: Graded, folder: str, read: Iterable[str] = (),
     refuse_outputs_over_inputs([t for t, _ in targets], graded_inputs(graded, read),
                                option="--feedback")
     return targets
-
-
-def write_feedback(graded: Graded, folder: str, force: bool,
-                   read: Iterable[str] = (), reveal: bool = False) -> list[str]:
-    """Write every student's feedback page (:func:`feedback_files`): all of them, or none;
-    nothing over an existing file without ``force``."""
-    return write_outputs(graded, force, read, reveal, feedback=folder)

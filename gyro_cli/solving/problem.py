@@ -76,6 +76,12 @@ def asked(problem: Any) -> list[str]:
     return list(problem.ask) or answer_names(problem)
 
 
+def graded_questions(problem: Any) -> list[str]:
+    """What a student is graded on: the steps asked (`steps:`), then what the statement
+    asks (:func:`asked`); grading by assignment and the handout's key list these."""
+    return list(dict.fromkeys([*getattr(problem, "steps", []), *asked(problem)]))
+
+
 def suggest(word: str, options: list[str] | tuple[str, ...]) -> str:
     """A "did you mean" for a misspelt key or answer.
 
