@@ -670,3 +670,74 @@ def test_prairielearn_measures_a_carried_band_as_gyro_check_does(pl_question, tm
     graded = grades.grade(str(sheet(tmp_path, rows, "far.csv")), [str(problem_with(tmp_path))],
                           credit={"ecf": 1.0})
     assert by_answer(graded, "carl")["min_spin"].points == 0
+
+
+def _pl_11_5(tmp_path: Path, run, name: str, tolerance: str, steps: str, ask: str) -> Path:
+    """11/5 exported to PrairieLearn (--ecf 1) with the tolerance, steps and ask given;
+    its server.py."""
+    text = (ROOT / "problems" / "11_5.yaml").read_text()
+    text = text.replace("tolerance: 0.1%\n", f"tolerance: {tolerance}\nsteps: {steps}\n")
+    problem = tmp_path / f"{name}.yaml"
+    problem.write_text(text.replace("ask: [bearing_forces]", f"ask: {ask}"))
+    out = tmp_path / name
+    assert run("export", "--to", "prairielearn", problem, "-o", out, "--ecf", "1").exit_code == 0
+    [server] = out.glob("*/server.py")
+    return server
+
+
+def _dana_11_5() -> tuple[float, float, float]:
+    """dana's 11/5 with J 10% high: M = J psidot Omega = 0.00336875 (-180.642) (5.02655)
+    = -3.0588 N m, and the forces 49.05 +- M / 0.2 = 33.756 N at A, 64.344 N at B."""
+    J = 2.5 * 0.035 ** 2 * 1.1
+    M = J * (-1725 * RPM) * (48 * RPM)
+    a, b = 10 * 9.81 / 2 + M / 0.2, 10 * 9.81 / 2 - M / 0.2
+    assert abs(M + 3.0588) < 1e-3 and abs(a - 33.756) < 1e-2 and abs(b - 64.344) < 1e-2
+    return M, a, b
+
+
+def test_prairielearn_carries_a_negative_step(tmp_path, run):
+    """11/5 asked with its step M (negative): dana's M is wrong, her forces right for it.
+    PrairieLearn's grade() had carried nothing, its grid being in log x (a fifth
+    adversarial pass's finding); gyro check credits them."""
+    M, a, b = _dana_11_5()
+    server = _pl_11_5(tmp_path, run, "m", "1%", "[M]", "[bearing_forces, moment]")
+    data = pl_grade(server, {"step_M": float(f"{M:.4g}"), "bearing_forces_a": float(f"{a:.4g}"),
+                             "bearing_forces_b": float(f"{b:.4g}"), "moment": float(f"{M:.4g}")})
+    scores = data["partial_scores"]
+    assert scores["step_M"]["score"] == 0
+    for key in ("bearing_forces_a", "bearing_forces_b"):
+        assert scores[key]["score"] == 1 and "consistent with your M" in scores[key]["feedback"], scores
+    # the moment is M itself: the same slip written twice earns nothing, as in gyro check
+    assert scores["moment"]["score"] == 0, scores
+    sheet_path = tmp_path / "s5.csv"
+    sheet_path.write_text("student,problem,answer,value\n"
+                          f"dana,11/5,M,{M:.4g} N m\n"
+                          f"dana,11/5,bearing_forces,{a:.4g} N; {b:.4g} N\n"
+                          f"dana,11/5,moment,{M:.4g} N m\n")
+    graded = by_answer(grades.grade(str(sheet_path), [str(tmp_path / "m.yaml")],
+                                    credit={"ecf": 1.0}), "dana")
+    assert graded["bearing_forces"].result == "carried", graded["bearing_forces"]
+    assert graded["M"].points == 0 and graded["moment"].points == 0, graded
+    # a value of the other sign is on no point of the grid: nothing carried
+    data = pl_grade(server, {"step_M": float(f"{-M:.4g}"), "bearing_forces_a": float(f"{a:.4g}")})
+    assert data["partial_scores"]["bearing_forces_a"]["score"] == 0
+
+
+def test_prairielearn_carries_a_size_under_a_magnitude_tolerance(tmp_path, run):
+    """11/5 asked with its step J and its moment as a size (1% magnitude): dana's J is 10%
+    high, her size 3.059 N m right for it. PrairieLearn's grade() had compared her size
+    with the signed -3.0588 and refused it (a fifth adversarial pass); gyro check credits
+    it (test_sizes_carried_under_a_magnitude_tolerance)."""
+    M, a, b = _dana_11_5()
+    J = 2.5 * 0.035 ** 2 * 1.1
+    server = _pl_11_5(tmp_path, run, "j", "{default: 1%, moment: 1% magnitude}", "[J]",
+                      "[bearing_forces, moment]")
+    data = pl_grade(server, {"step_J": float(f"{J:.4g}"), "moment": float(f"{-M:.4g}"),
+                             "bearing_forces_a": float(f"{a:.4g}")})
+    scores = data["partial_scores"]
+    assert scores["step_J"]["score"] == 0
+    for key in ("moment", "bearing_forces_a"):
+        assert scores[key]["score"] == 1 and "consistent with your J" in scores[key]["feedback"], scores
+    # the size of the right moment is right; its reverse, the signed -3.059, is not carried
+    data = pl_grade(server, {"step_J": float(f"{J:.4g}"), "moment": float(f"{M:.4g}")})
+    assert data["partial_scores"]["moment"]["score"] == 0

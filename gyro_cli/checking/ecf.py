@@ -381,17 +381,21 @@ class Part:
     is_step: bool
     unit: str        # the blank's unit ("" for SI or a pure number)
     dimension: str | None = None
+    magnitude: bool = False  # the blank asks a size (a magnitude tolerance): sizes carried
 
 
 def followers(graph: Any, parts: list[Part]) -> dict[str, list[str]]:
-    """Each step blank's key -> the keys of the blanks that depend on it (ECF targets)."""
+    """Each step blank's key -> the keys of the blanks that depend on it (ECF targets); an
+    answer that is the step itself is none (gyro check's rule: the same slip written twice
+    is not consistent working)."""
     out: dict[str, list[str]] = {}
     for source in parts:
         if not source.is_step:
             continue
         for target in parts:
             key = target.name if target.is_step else f"answer:{target.name}"
-            if target is not source and source.name in graph.depends.get(key, []):
+            itself = target.name if target.is_step else graph.answer_step.get(target.name)
+            if itself != source.name and source.name in graph.depends.get(key, []):
                 out.setdefault(source.key, []).append(target.key)
     return {k: v for k, v in out.items() if v}
 
@@ -448,6 +452,8 @@ def _part_value(part: Part, again: Any, env: dict[str, float] | None, g: Any,
             si = env[symbol]
     if si is None or not math.isfinite(si):
         return None
+    if part.magnitude:  # the blank holds the size, as the student types it
+        si = abs(si)
     if part.is_step or not part.unit or part.dimension is None:
         return si
     return float(units.convert(si, part.dimension, part.unit))

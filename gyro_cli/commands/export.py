@@ -152,7 +152,7 @@ def _blanks(problem: Problem, solved: Any, asked: list[str], student: Tolerance,
             if parts is not None:  # what each blank is, for errors carried forward
                 from ..checking.ecf import Part
 
-                parts.append(Part(key, name, i, False, unit, spec.dimension))
+                parts.append(Part(key, name, i, False, unit, spec.dimension, tol.magnitude))
     return out
 
 

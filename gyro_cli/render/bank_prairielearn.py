@@ -140,10 +140,13 @@ def _place(raw, number):
 
 
 def _at(xs, ys, x):
-    """ys at x, linear in log x between the grid's points; None outside it or where the
-    problem has no solution."""
+    """ys at x, linear in log |x| between the grid's points; None outside it or where the
+    problem has no solution. The grid holds the step's own sign (a negative step's grid
+    is negative): a value of the other sign is on no point of it."""
     import math
 
+    if xs[0] < 0:
+        xs, x = [-v for v in xs], -x
     if not x > 0 or not xs[0] <= x <= xs[-1]:
         return None
     for k in range(1, len(xs)):
