@@ -162,7 +162,7 @@ def _read_csv(path: str) -> list[Submission]:
         if not (cells["student"] and cells["problem"] and cells["answer"]):
             raise InputError("student, problem and answer must not be empty", file=path,
                              line=number)
-        values = [v.strip() for v in cells["value"].split(";") if v.strip()]
+        values = written_values(cells["value"].split(";"))
         key = (student_id(cells["student"]), cells["problem"], cells["answer"])
         if key in merged:
             merged[key].values += values
@@ -170,6 +170,41 @@ def _read_csv(path: str) -> list[Submission]:
             merged[key] = Submission(*key, list(values), number)
         merged[key].rows.append((number, values))
     return list(merged.values())
+
+
+# A number alone, as units._NUMBER reads one (the rest of a value is its unit).
+_BARE = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+\u2212]?\d{1,3})?\s*")
+_NUMBER_AND_UNIT = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)"
+                              r"(?:[eE][-+\u2212]?\d{1,3})?\s*([^\d\s.+\-\u2212].*)")
+# "about": the signs students put before a rounded value (≈ 965.4 rpm, ~965.4 rpm)
+_ABOUT = re.compile(r"\s*[\u2248\u2243~]\s*")
+
+
+def written_values(values: Any) -> list[Any]:
+    """A student's values of one answer as written (a cell split at ';', a YAML list), read
+    as a reader of the sheet reads them: a leading ≈ or ~ is dropped, and a unit written
+    once, after the last of several numbers, is the unit of the bare numbers before it
+    (``45.13; 533.5 rpm`` is 45.13 rpm and 533.5 rpm; a YAML list's numbers too). Empty
+    values are dropped; a bare number with no unit after it is kept as it is."""
+    out = [_ABOUT.sub("", v, count=1) if isinstance(v, str) and _ABOUT.match(v) else v
+           for v in values]
+    out = [v.strip() if isinstance(v, str) else v for v in out]
+    out = [v for v in out if not (isinstance(v, str) and not v)]
+    unit = None
+    for k in range(len(out) - 1, -1, -1):
+        value = out[k]
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            value = repr(value)  # YAML's number: a bare number as written
+        elif not isinstance(value, str):
+            unit = None
+            continue
+        if _BARE.fullmatch(value):
+            if unit is not None:
+                out[k] = f"{value} {unit}"
+            continue
+        match = _NUMBER_AND_UNIT.fullmatch(value)
+        unit = match.group(1).strip() if match else None
+    return out
 
 
 def _read_yaml(path: str) -> list[Submission]:
@@ -194,7 +229,8 @@ def _read_yaml(path: str) -> list[Submission]:
             for answer, value, _, _ in _as_written(answers, inner, path, "answer name"):
                 values = value if isinstance(value, list) else [value]
                 out.append(Submission(student, problem, answer,
-                                      [v for v in values if v is not None], line))
+                                      written_values(v for v in values if v is not None),
+                                      line))
     return out
 
 
