@@ -72,3 +72,40 @@ def _problem():
     from conftest import PROBLEMS
 
     return PROBLEMS / "11_3.yaml"
+
+
+# ---- word answers: each side a set of words --------------------------------------------
+
+def _words(truth: list[str], written: str) -> grades.GradeRow:
+    from types import SimpleNamespace
+
+    row = grades.GradeRow("ann", "p", "motion", written, "", None, "missing", 0.0)
+    return grades._grade_words(row, written.split(";"), SimpleNamespace(si_values=truth))
+
+
+@pytest.mark.parametrize(("truth", "written", "points", "result"), [
+    # the solver's word repeated (both roots stable): one wrong word is half the point
+    (["stable", "stable"], "unstable; stable", 0.5, "partial"),
+    (["stable", "stable"], "stable; cusps", 0.5, "partial"),
+    (["stable", "stable"], "stable", 1.0, "correct"),
+    (["stable", "stable"], "Stable; stable.", 1.0, "correct"),
+    (["stable", "unstable"], "stable", 0.5, "partial"),
+    (["stable", "unstable"], "unstable; stable", 1.0, "correct"),
+    (["cusps"], "cusp; cusps", 1.0, "correct"),
+    (["cusps"], "loops", 0.0, "wrong"),
+])
+def test_words_are_sets_on_both_sides(truth, written, points, result):
+    row = _words(truth, written)
+    assert (row.points, row.result) == (points, result), row
+
+
+def test_a_wrong_stability_word_is_not_full_marks(tmp_path):
+    """11/3-stability: both roots stable. `unstable; stable` had been given 1 of 1 point
+    (the solver's two `stable` each matched by the student's one); an adversarial pass."""
+    from conftest import PROBLEMS
+
+    path = tmp_path / "w.csv"
+    path.write_text("student,problem,answer,value\nann,11/3-stability,stability,unstable; stable\n")
+    graded = grades.grade(str(path), [str(PROBLEMS / "11_3_stability.yaml")])
+    row = by_answer(graded, "ann")["stability"]
+    assert row.points == 0.5 and row.result == "partial", row

@@ -1110,7 +1110,11 @@ def normal_word(value: Any) -> str:
 
 
 def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
-    """Words against the solver's words: each solver word is one share of the point."""
+    """Words against the solver's words, each side as a set of different words (a word
+    written twice, or by a synonym, counts once on either side): the share of the point is
+    the words in common over the larger set's size. [stable, stable] against `stable`
+    is right; against `stable; unstable` it is half right (it had been given the point:
+    the solver's repeated word was matched twice by the student's one)."""
     truth = [str(v) for v in reported.si_values]
     submitted = []
     for value in values:
@@ -1119,21 +1123,18 @@ def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:
             row.feedback = row.note
             return row
         submitted.append(normal_word(value))
-    # A word written twice (`cusps; cusps`, or `cusp; cusps`) counts once (docs/check.md).
-    canonical: dict[str, str] = {}
-    for s in submitted:
-        canonical.setdefault(next((w.lower() for w in truth if s in
-                                   set(WORD_SYNONYMS.get(w.lower(), ())) | {w.lower()}), s), s)
-    submitted = list(canonical.values())
-    hits = 0
-    for word in truth:
-        accepted = set(WORD_SYNONYMS.get(word.lower(), ())) | {word.lower()}
-        if any(s in accepted for s in submitted):
-            hits += 1
-    extra = [s for s in submitted
-             if not any(s in set(WORD_SYNONYMS.get(w.lower(), ())) | {w.lower()} for w in truth)]
-    row.points = round(hits / max(len(truth), len(submitted)), 4) if truth else 0.0
-    row.result = "correct" if hits == len(truth) and not extra else (
+
+    def accepted(word: str) -> set[str]:
+        return set(WORD_SYNONYMS.get(word.lower(), ())) | {word.lower()}
+
+    right = list(dict.fromkeys(w.lower() for w in truth))  # the solver's words, once each
+    # each student word as the solver's word it names (a synonym), else as written
+    named = list(dict.fromkeys(next((w for w in right if s in accepted(w)), s)
+                               for s in submitted))
+    hits = sum(1 for w in right if w in named)
+    extra = [s for s in named if s not in right]
+    row.points = round(hits / max(len(right), len(named)), 4) if right else 0.0
+    row.result = "correct" if hits == len(right) and not extra else (
         "partial" if hits else "wrong")
     if row.result != "correct":
         row.note = f"expected {', '.join(truth)}, got {row.submitted}"
