@@ -109,3 +109,80 @@ def test_a_wrong_stability_word_is_not_full_marks(tmp_path):
     graded = grades.grade(str(path), [str(PROBLEMS / "11_3_stability.yaml")])
     row = by_answer(graded, "ann")["stability"]
     assert row.points == 0.5 and row.result == "partial", row
+
+
+# ---- numbers and units as students type them (a second adversarial pass) --------------
+
+J_11_5 = 2.5 * 0.035 ** 2  # 11/5's rotor: m k^2
+RPM = 2 * 3.141592653589793 / 60
+MOMENT = f"{J_11_5 * (-1725 * RPM) * (48 * RPM):.4g}"  # J psidot Omega = -2.781 N m
+
+
+def _one(tmp_path, problem: str, answer: str, written: str) -> grades.GradeRow:
+    from conftest import PROBLEMS
+
+    path = tmp_path / "one.csv"
+    ident = {"11_3.yaml": "11/3", "11_5.yaml": "11/5"}[problem]
+    path.write_text(f'student,problem,answer,value\nann,{ident},{answer},"{written}"\n',
+                    encoding="utf-8")
+    return by_answer(grades.grade(str(path), [str(PROBLEMS / problem)]), "ann")[answer]
+
+
+@pytest.mark.parametrize("written", [
+    f"{SLOW} rpm, {FAST} rpm", f"{SLOW}, {FAST} rpm", f"{SLOW} rpm and {FAST} rpm",
+    f"{SLOW} and {FAST} rpm", f"{float(SLOW) * RPM:.4g}; {float(FAST) * RPM:.4g} 1/s",
+    f"{SLOW} rpm.; {FAST} RPM.",
+])
+def test_roots_joined_as_students_join_them(tmp_path, written):
+    assert _one(tmp_path, "11_3.yaml", "precession", written).result == "correct"
+
+
+@pytest.mark.parametrize("written", [
+    f"{float(LEAST) / 100:.4g}×10^2 rpm", f"{float(LEAST) / 100:.4g} x 10^2 rpm",
+    f"{float(LEAST) / 100:.4g}·10² rpm", f"{float(LEAST) / 100:.4g}*10**2 rpm",
+    f"{float(LEAST) * 10:.5g} × 10^(-1) rpm", f"{LEAST} rpm.", f"{LEAST} r.p.m.",
+    f"{LEAST} min⁻¹", f"{float(LEAST) * RPM:.4g} rad·s⁻¹", f"{float(LEAST) / 60:.4g} hz",
+])
+def test_a_least_spin_typed_as_students_type_it(tmp_path, written):
+    assert _one(tmp_path, "11_3.yaml", "min_spin", written).result == "correct"
+
+
+@pytest.mark.parametrize("written", [
+    f"{MOMENT} N·m", f"{MOMENT} N⋅m", f"\u2013{MOMENT[1:]} N m", f"- {MOMENT[1:]} N m",
+    f"'{MOMENT} N m", f"{MOMENT} Nm.", f"{MOMENT} kg·m²/s²",
+])
+def test_a_negative_moment_typed_as_students_type_it(tmp_path, written):
+    assert MOMENT == "-2.781"
+    assert _one(tmp_path, "11_5.yaml", "moment", written).result == "correct"
+
+
+@pytest.mark.parametrize(("written", "why"), [
+    ("965.4 rpm # least", "a unit is names"),
+    ("45.13rpm,533.5 rpm", "separated by ';'"),
+    ("3 x 105 rpm", ""),  # no power of ten: not 3e5, not read at all
+])
+def test_what_a_sheet_still_refuses_says_why_in_a_sheets_words(tmp_path, written, why):
+    row = _one(tmp_path, "11_3.yaml", "min_spin", written)
+    assert row.result == "invalid" and why in row.feedback, row
+    assert "comment needs" not in row.feedback
+
+
+@pytest.mark.parametrize(("text", "same", "dimension"), [
+    ("0.16 kg·m²", "0.16 kg m^2", "inertia"), ("14.08 s⁻¹", "14.08 s^-1", "rate"),
+    ("19.47º", "19.47 deg", "angle"), ("19.47˚", "19.47 deg", "angle"),
+    ("19.47 DEG", "19.47 deg", "angle"), ("14.24 HZ", "14.24 Hz", "rate"),
+    ("2 N·m", "2 N m", "moment"),
+])
+def test_unit_spellings_read_everywhere(text, same, dimension):
+    """SI's ·, superscript powers and other keyboards' degree signs, in a problem file as
+    on a sheet (core.units)."""
+    from gyro_cli.core import units
+
+    assert units.parse(text, dimension, "k")[0] == units.parse(same, dimension, "k")[0]
+
+
+def test_percent_is_a_fraction():
+    from gyro_cli.core import units
+
+    assert units.parse("83.85%", "dimensionless", "k")[0] == pytest.approx(0.8385)
+    assert units.parse("83.85 %", "dimensionless", "k")[0] == pytest.approx(0.8385)

@@ -175,20 +175,59 @@ def _read_csv(path: str) -> list[Submission]:
 # A number alone, as units._NUMBER reads one (the rest of a value is its unit).
 _BARE = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+\u2212]?\d{1,3})?\s*")
 _NUMBER_AND_UNIT = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)"
-                              r"(?:[eE][-+\u2212]?\d{1,3})?\s*([^\d\s.+\-\u2212].*)")
+                              r"(?:[eE][-+\u2212]?\d{1,3})?\s*([^\d\s.+\-\u2212].*|1\s*/.*)")
 # "about": the signs students put before a rounded value (≈ 965.4 rpm, ~965.4 rpm)
 _ABOUT = re.compile(r"\s*[\u2248\u2243~]\s*")
+# a dash before a number as word processors write it (en dash, hyphen, figure dash) or
+# a minus with a space after it
+_DASH = re.compile(r"[\u2010\u2011\u2012\u2013\u2014]\s*(?=[\d.])|-\s+(?=[\d.])")
+# 9.654×10^2, 9.654 x 10^2, 9.654*10**2, 9.654·10²
+_SUPER = "\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
+_TIMES_TEN = re.compile(r"([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+))\s*[x\u00d7X*\u00b7\u22c5]\s*10"
+                        r"(?:\s*(?:\^|\*\*)\s*\(?\s*([-+\u2212]?\d{1,3})\s*\)?|([" + _SUPER + r"]+))"
+                        r"(?![\d" + _SUPER + r"])(.*)", re.S)
+# roots written with a comma and a space, or "and", between them (45.13 rpm, 533.5 rpm);
+# a comma inside a number (1,005) is no separator
+_LIST = re.compile(r",\s+(?=[-+\u2212\u2013]?[\d.])|\s+and\s+(?=[-+\u2212\u2013]?[\d.])")
+
+
+def _normal_value(value: str) -> str:
+    """One value as a reader of the sheet reads it: a cell gyro's CSV writer guarded
+    (``'-2.781 N m``) as the text it guarded, a leading ≈ or ~ dropped, a word
+    processor's dash before the number as a minus, ``9.654×10^2`` as ``9.654e2``, and a
+    full stop after the unit (``965.4 rpm.``) dropped."""
+    from ..core.csvsafe import plain_cell
+
+    value = plain_cell(value).strip()
+    if _ABOUT.match(value):
+        value = _ABOUT.sub("", value, count=1)
+    if _DASH.match(value):
+        value = "-" + _DASH.sub("", value, count=1)
+    power = _TIMES_TEN.fullmatch(value)
+    if power:
+        number, caret, raised, rest = power.groups()
+        exponent = caret or raised.translate(str.maketrans(_SUPER, "-+0123456789"))
+        value = f"{number}e{exponent.replace(chr(0x2212), '-')} {rest.strip()}".strip()
+    if value.endswith(".") and value[-2:-1].isalpha():
+        unit = _NUMBER_AND_UNIT.fullmatch(value)
+        if unit and "." not in unit.group(1)[:-1]:  # not r.p.m.
+            value = value[:-1]
+    return value
 
 
 def written_values(values: Any) -> list[Any]:
     """A student's values of one answer as written (a cell split at ';', a YAML list), read
-    as a reader of the sheet reads them: a leading ≈ or ~ is dropped, and a unit written
+    as a reader of the sheet reads them (`_normal_value`); several roots may also be joined
+    by a comma and a space or by "and" (``45.13 rpm, 533.5 rpm``), and a unit written
     once, after the last of several numbers, is the unit of the bare numbers before it
     (``45.13; 533.5 rpm`` is 45.13 rpm and 533.5 rpm; a YAML list's numbers too). Empty
     values are dropped; a bare number with no unit after it is kept as it is."""
-    out = [_ABOUT.sub("", v, count=1) if isinstance(v, str) and _ABOUT.match(v) else v
-           for v in values]
-    out = [v.strip() if isinstance(v, str) else v for v in out]
+    out: list[Any] = []
+    for v in values:
+        if isinstance(v, str):
+            out += [_normal_value(part) for part in _LIST.split(v)]
+        else:
+            out.append(v)
     out = [v for v in out if not (isinstance(v, str) and not v)]
     unit = None
     for k in range(len(out) - 1, -1, -1):
@@ -960,8 +999,8 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
         try:
             parsed.append(parse_value(value, dimension, name))
         except InputError as err:
-            row.result, row.note = "invalid", err.message
-            row.feedback = err.message
+            row.result, row.note = "invalid", _on_a_sheet(err.message)
+            row.feedback = row.note
             return row
         except Exception:  # the unit parser failed on it: still the student's slip
             row.result = "invalid"
@@ -1107,6 +1146,17 @@ def _submitted(values: list[Any] | None) -> str:
 def normal_word(value: Any) -> str:
     """A word answer as compared: lower case, one space, no trailing full stop."""
     return " ".join(str(value).lower().split()).strip(" .!")
+
+
+def _on_a_sheet(message: str) -> str:
+    """A unit reader's message as it reads on a sheet: a problem file's advice on comments
+    ('#', which a sheet's value does not take) and pint's dimension formula left out, and
+    the separator of roots named where a value holds a comma."""
+    message = re.sub(r"\s*\(a comment needs '#'\)|; a comment needs '#'", "", message)
+    message = re.sub(r" \(dimension [^()]*\[[^()]*\)", "", message)
+    if "','" in message or "unexpected ','" in message:
+        message += "; several roots go in one cell separated by ';'"
+    return message
 
 
 def _grade_words(row: GradeRow, values: list[Any], reported: Any) -> GradeRow:

@@ -84,6 +84,9 @@ ALIASES: dict[str, tuple[str, str]] = {
     # pint's cps is counts per second (1/s); on a rotor it is cycles (revolutions) per
     # second, as Hz is: read with 2 pi, never silently as 1 rad/s.
     "cps": ("revolution / second", "cps"), "CPS": ("revolution / second", "cps"),
+    # capitals as a caps-lock or a sentence's start writes them, where no other unit is meant
+    "Deg": ("degree", "deg"), "DEG": ("degree", "deg"), "hz": ("hertz", "Hz"),
+    "HZ": ("hertz", "Hz"),
 }
 # Whole units as books print them, with the dots of an abbreviation (the tokenizer would
 # read "r.p.m." as r * p * m) or a letter that alone means something else (pint's c is
@@ -91,7 +94,7 @@ ALIASES: dict[str, tuple[str, str]] = {
 WHOLE_UNITS: dict[str, str] = {
     "r.p.m.": "rpm", "r.p.m": "rpm", "R.P.M.": "rpm", "R.P.M": "rpm",
     "r.p.s.": "rps", "r.p.s": "rps", "R.P.S.": "rps", "R.P.S": "rps",
-    "c/s": "cps", "c.p.s.": "cps", "c.p.s": "cps",
+    "c/s": "cps", "c.p.s.": "cps", "c.p.s": "cps", "%": "percent",
 }
 # Names refused with the readings they could have had: no wrong number is printed.
 REFUSED_NAMES: dict[str, str] = {
@@ -284,6 +287,24 @@ def _names(unit: str) -> list[str]:
     return words
 
 
+# SI's own ways of writing a unit (N·m, kg·m², s⁻¹) and the degree signs of other
+# keyboards (º, ˚), as the tokenizer reads them: a product as a space, a power as ^n.
+_DOTS = str.maketrans({"\u00b7": " ", "\u22c5": " ", "\u2022": " ", "\u00ba": "\u00b0",
+                       "\u02da": "\u00b0"})
+_SUPERSCRIPTS = str.maketrans("\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076"
+                              "\u2077\u2078\u2079", "-+0123456789")
+
+
+def _plain_unit(unit: str) -> str:
+    """``N·m`` as ``N m``, ``kg·m²`` as ``kg m^2``, ``s⁻¹`` as ``s^-1``, ``19.47º``'s unit
+    as ``°``; any other text as it is."""
+    import re
+
+    unit = unit.translate(_DOTS)
+    return re.sub("[\u207b\u207a]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+",
+                  lambda m: "^" + m.group().translate(_SUPERSCRIPTS), unit)
+
+
 def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[float, str]:
     """Split a quantity into its number and its (checked) unit expression.
 
@@ -300,6 +321,8 @@ def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[
         number, unit = match.groups()
         number = number.replace("\u2212", "-")
         unit = unit.strip()
+        if not unit.isascii():
+            unit = _plain_unit(unit)
         unit = WHOLE_UNITS.get(unit, unit)
         if unit in _VALID:
             return float(number), unit
