@@ -186,3 +186,43 @@ def test_percent_is_a_fraction():
 
     assert units.parse("83.85%", "dimensionless", "k")[0] == pytest.approx(0.8385)
     assert units.parse("83.85 %", "dimensionless", "k")[0] == pytest.approx(0.8385)
+
+
+# ---- a value's label, as gyro prints it, or a place in words --------------------------
+
+# 11/5's forces: 49.05 N -+ |M| / 0.2 m
+F_A, F_B = (f"{49.05 + s * J_11_5 * (-1725 * RPM) * (48 * RPM) / 0.2:.4g}" for s in (1, -1))
+
+
+@pytest.mark.parametrize(("answer", "written", "problem"), [
+    ("precession", f"{SLOW} rpm (slow); {FAST} rpm (fast)", "11_3.yaml"),
+    ("precession", f"{FAST} rpm (fast); {SLOW} rpm (slow)", "11_3.yaml"),
+    ("bearing_forces", f"{F_A} N (A); {F_B} N (B)", "11_5.yaml"),
+    ("bearing_forces", f"{F_B} N (B); {F_A} N (A)", "11_5.yaml"),
+    ("bearing_forces", f"{F_A} N at A; {F_B} N at B", "11_5.yaml"),
+    ("bearing_forces", f"{F_B} N up at B; {F_A} N upwards at A", "11_5.yaml"),
+    ("bearing_forces", f"{F_A} N (A); {F_B} N", "11_5.yaml"),  # one placed: in order
+])
+def test_labels_as_gyro_prints_them_and_places_in_words(tmp_path, answer, written, problem):
+    """gyro's own printed form (`45.13 rpm (slow)`, `35.15 N (A)`) copied onto a sheet, and
+    an answer key's words (`62.95 N up at B`): graded `invalid` before."""
+    assert (F_A, F_B) == ("35.15", "62.95")
+    assert _one(tmp_path, problem, answer, written).result == "correct"
+
+
+def test_a_label_at_the_wrong_place_is_the_wrong_place(tmp_path):
+    row = _one(tmp_path, "11_5.yaml", "bearing_forces", f"{F_B} N (A); {F_A} N (B)")
+    assert row.result == "wrong" and "place" in row.note, row
+
+
+def test_a_labelled_root_carries_an_error(tmp_path):
+    """carl's I 10% high and both roots right for it, written as gyro prints them."""
+    from test_i38_ecf import problem_with
+
+    own = hand_11_3(1.1)
+    rows = [("carl", "I", f"{own['I']:.4g} kg m^2"),
+            ("carl", "precession", f"{own['slow']:.4g} rpm (slow); {own['fast']:.4g} rpm (fast)")]
+    graded = grades.grade(str(sheet(tmp_path, rows)), [str(problem_with(tmp_path))],
+                          credit={"ecf": 0.5})
+    row = by_answer(graded, "carl")["precession"]
+    assert row.result == "carried" and row.points == 0.5, row

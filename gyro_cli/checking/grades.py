@@ -25,6 +25,7 @@ The sheet is read like a problem file: only a regular file, at most
 from __future__ import annotations
 
 import csv
+import dataclasses
 import math
 import re
 from dataclasses import dataclass, field
@@ -522,7 +523,9 @@ class Carrying:
             tolerance = tolerance_for(problem.tolerance, name, dimension,
                                       [a.name for a in problem.kind.answers])
         entry = self.by_problem.setdefault(key, (problem, result, []))
-        entry[2].append(Item(name, row, list(values), dimension, tolerance, spec is None))
+        labels = list(reported(result, name).labels)
+        entry[2].append(Item(name, row, [_unlabelled(v, labels) for v in values], dimension,
+                             tolerance, spec is None))
 
     def carry(self, errors: list[str]) -> None:
         """Give each problem's carried credit (a failure here is an internal error of that
@@ -995,9 +998,11 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     if dimension is None:
         return _grade_words(row, values, reported)
     parsed = []
+    sides, signs = (spec.sides, spec.signs) if spec is not None else ((), ())
     for value in values:
         try:
-            parsed.append(parse_value(value, dimension, name))
+            parsed.append(_student_value(value, dimension, name, list(reported.labels),
+                                         sides, signs))
         except InputError as err:
             row.result, row.note = "invalid", _on_a_sheet(err.message)
             row.feedback = row.note
@@ -1007,6 +1012,8 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
             row.feedback = row.note
             return row
+    if any(p.side is None for p in parsed):  # placed by its label, each or none
+        parsed = [dataclasses.replace(p, side=None) for p in parsed]
     lines = graded_lines(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
     row.points = round(passed / len(lines), 4) if lines else 0.0
@@ -1146,6 +1153,37 @@ def _submitted(values: list[Any] | None) -> str:
 def normal_word(value: Any) -> str:
     """A word answer as compared: lower case, one space, no trailing full stop."""
     return " ".join(str(value).lower().split()).strip(" .!")
+
+
+_LABELLED = re.compile(r"(.*?)\s*\(\s*([^()]+?)\s*\)\s*", re.S)
+
+
+def _student_value(value: Any, dimension: str, name: str, labels: list[str],
+                   sides: tuple[str, ...], signs: tuple[tuple[str, int], ...]) -> Any:
+    """A student's value of a quantity, written as gyro prints it or as books do: with
+    its label in brackets (``45.13 rpm (slow)``: a root's label is dropped, the roots
+    being matched as a set; ``35.15 N (A)`` is placed at A), or with the words of an
+    answer that reads them (``35.15 N up at B``, as an answer key may: `_parse_worded`)."""
+    from .expected import _parse_worded
+    from .matching import ordered
+
+    label = _LABELLED.fullmatch(value) if isinstance(value, str) else None
+    if label and label.group(2).lower() in {x.lower() for x in labels if x}:
+        place = [x.lower() for x in labels].index(label.group(2).lower())
+        read = parse_value(label.group(1), dimension, name)
+        return dataclasses.replace(read, side=place) if ordered(labels) else read
+    if sides or signs:
+        return _parse_worded(value, dimension, name, sides, signs)
+    return parse_value(value, dimension, name)
+
+
+def _unlabelled(value: Any, labels: list[str]) -> Any:
+    """``45.13 rpm (slow)`` as ``45.13 rpm`` where ``slow`` is one of the answer's labels
+    (for errors carried forward, which read values without their places)."""
+    label = _LABELLED.fullmatch(value) if isinstance(value, str) else None
+    if label and label.group(2).lower() in {x.lower() for x in labels if x}:
+        return label.group(1)
+    return value
 
 
 def _on_a_sheet(message: str) -> str:
