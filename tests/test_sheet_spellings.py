@@ -226,3 +226,20 @@ def test_a_labelled_root_carries_an_error(tmp_path):
                           credit={"ecf": 0.5})
     row = by_answer(graded, "carl")["precession"]
     assert row.result == "carried" and row.points == 0.5, row
+
+
+# ---- a slip on every root (a fresh-clone walk-through) --------------------------------
+
+def test_both_roots_in_rad_s_written_as_rpm_are_named_and_credited(tmp_path):
+    """bob works 11/3 in rad/s (4.726 and 55.87 rad/s: the roots / 9.549) and writes rpm.
+    His 55.87 is nearer the slow root 45.13 than the fast 533.5 on a log scale, so it was
+    paired with the slow root: 'too high', no slip named, 0 points under --credit rpm=0.5.
+    Each is now paired with the root a slip explains: both 'too low', both the rpm slip."""
+    slow, fast = (float(x) * RPM for x in (SLOW, FAST))
+    written = f"{slow:.4g} rpm; {fast:.4g} rpm"
+    assert written == "4.726 rpm; 55.87 rpm"
+    graded = grades.grade(str(sheet(tmp_path, [("bob", "precession", written)])),
+                          [str(_problem())], credit={"rpm": 0.5})
+    row = by_answer(graded, "bob")["precession"]
+    assert row.points == 0.5 and row.note.count("rpm against rad/s") == 2, row
+    assert row.feedback.count("too low") == 2 and "too high" not in row.feedback, row

@@ -31,19 +31,22 @@ def distance(expected: float, got: float) -> float:
 
 
 def match_roots(expected: list[float], computed: list[float],
-                passes: Any = None) -> list[tuple[int | None, int | None]]:
+                passes: Any = None, slipped: Any = None) -> list[tuple[int | None, int | None]]:
     """Pairs (expected index, computed index): nearest first, none used twice.
 
     ``passes(i, j)`` (optional) says whether the pair is within tolerance; such
-    pairs are taken before any other. Unpaired expected values come as
-    (i, None), unclaimed roots as (None, j); the list is in the order of the
-    expected values, then the extra roots.
+    pairs are taken before any other; then the pairs ``slipped(i, j)`` (optional) says
+    a slip explains (`diagnose`: both roots in rad/s where rpm was asked are each the
+    root 9.549 times theirs, though the larger is nearer the smaller root). Unpaired
+    expected values come as (i, None), unclaimed roots as (None, j); the list is in the
+    order of the expected values, then the extra roots.
     """
-    pairs = sorted((not passes(i, j) if passes else False, distance(e, c), i, j)
+    pairs = sorted((not passes(i, j) if passes else False,
+                    not slipped(i, j) if slipped else False, distance(e, c), i, j)
                    for i, e in enumerate(expected) for j, c in enumerate(computed))
     of_expected: dict[int, int] = {}
     used: set[int] = set()
-    for _, _, i, j in pairs:
+    for _, _, _, i, j in pairs:
         if i not in of_expected and j not in used:
             of_expected[i] = j
             used.add(j)
@@ -176,7 +179,10 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     elif in_order:
         pairs = match_in_order(len(values), len(computed))
     else:
-        pairs = match_roots([float(v.si) for v in values], computed, within)
+        def slipped(i: int, j: int) -> bool:
+            return diagnose(computed[j], float(values[i].si), width(i, j)) is not None
+
+        pairs = match_roots([float(v.si) for v in values], computed, within, slipped)
         # A root equal to one an expected value already matched (the moment, the
         # same for both precession rates) is covered by it, not a missing value.
         pairs = [(i, j) for i, j in pairs
