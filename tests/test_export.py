@@ -817,6 +817,19 @@ def test_bad_options_exit_2(run, tmp_path, args, message):
     assert message in done.stderr
 
 
+def test_prairielearn_inputs_do_not_show_their_half_width(exported):
+    """pl-number-input prints its atol as the input's placeholder (``number ±0.451344``)
+    and in its help popup unless told not to (PrairieLearn's pl-number-input.py: the
+    placeholder from the same text as the help, show-help-text default true); with the
+    statement's "within 1%" that half-width is the answer, 45.1344 rpm (an adversarial
+    pass: 252 of 300 blanks). Every input hides both and says only "number"."""
+    for html_path in (exported["prairielearn"]).glob("*/question.html"):
+        inputs = re.findall(r"<pl-number-input [^>]*>", html_path.read_text())
+        assert inputs, html_path
+        for tag in inputs:
+            assert 'show-help-text="false"' in tag and 'placeholder="number"' in tag, tag
+
+
 def test_prairielearn_shows_each_variant_only_its_own_inputs(tmp_path):
     """A variant at theta = 90 deg has one precession root where the others have two:
     question.html holds the union, and each variant's page only the inputs it asks."""

@@ -49,6 +49,10 @@ def _input(blank: Blank) -> str:
     # The half-width is each variant's own (a relative tolerance widened to what rounding
     # to the figures asked can cost differs from variant to variant): a param.
     tolerance = f'comparison="relabs" rtol="0" atol="{{{{params.atol.{blank.key}}}}}"'
+    # The half-width is no hint to give: pl-number-input prints it as the placeholder
+    # ("number ±0.451344") and in its help popup, and with the statement's "within 1%" it
+    # tells the answer (45.1344 rpm). The statement says what is accepted.
+    tolerance += ' show-help-text="false" placeholder="number"'
     suffix = f' suffix="{_attr(blank.unit)}"' if blank.unit else ""
     return (f"{{{{#params.ask.{blank.key}}}}}\n"
             f'<pl-number-input answers-name="{blank.key}" {tolerance} '
