@@ -434,22 +434,35 @@ def test_item22_the_worked_answers_picture_travels_with_the_feedback(banks):
     with zipfile.ZipFile(banks["qti"]) as archive:
         manifest = ET.fromstring(archive.read("imsmanifest.xml"))
         listed = {f.get("href") for f in manifest.iter(f"{CP}file")}
-        figure = "11_2_released_top/figure-1.png"
+        [figure] = [n for n in archive.namelist() if n.startswith("11_2_released_top/figure-")]
         assert archive.read(figure).startswith(png) and figure in listed
+        name = _unguessable(figure.split("/")[-1], archive.read(figure))
         feedback = ET.fromstring(archive.read("11_2_released_top/11_2_released_top.xml")).find(
             f".//{QTI}itemfeedback//{QTI}mattext").text
-        assert '<img src="figure-1.png" alt="Path of the top' in feedback
+        assert f'<img src="{name}" alt="Path of the top' in feedback
         assert set(archive.namelist()) == listed | {"imsmanifest.xml"}
     question = banks["prairielearn"] / "11_2_released_top"
-    assert (question / "clientFilesQuestion" / "figure-1.png").read_bytes().startswith(png)
+    [path] = (question / "clientFilesQuestion").glob("figure-*.png")
+    assert path.read_bytes().startswith(png)
+    name = _unguessable(path.name, path.read_bytes())
     page = _pl_page((question / "question.html").read_text(),
                     _pl_generate(question / "server.py", 0)["params"])
-    assert re.search(r'<pl-answer-panel>.*<pl-figure file-name="figure-1.png" '
+    assert re.search(rf'<pl-answer-panel>.*<pl-figure file-name="{re.escape(name)}" '
                      r'directory="clientFilesQuestion" alt="Path of the top', page, re.S)
     plain = banks["prairielearn"] / "11_3"
     page = _pl_page((plain / "question.html").read_text(),
                     _pl_generate(plain / "server.py", 0)["params"])
     assert "<pl-figure" not in page and not (plain / "clientFilesQuestion").exists()
+
+
+def _unguessable(name: str, data: bytes) -> str:
+    """A picture's name in a package holds a digest of the picture: PrairieLearn serves
+    clientFilesQuestion to whoever can open the question, and a plot prints its answers
+    (an adversarial pass fetched figure-1.png before submitting)."""
+    import hashlib
+
+    assert name == f"figure-1-{hashlib.sha256(data).hexdigest()[:16]}.png", name
+    return name
 
 
 # ---- the platforms' schemas --------------------------------------------------------------

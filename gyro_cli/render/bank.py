@@ -18,6 +18,7 @@ statement's ``{{`` is a brace once filled in, and stays text here).
 
 from __future__ import annotations
 
+import hashlib
 import re
 import uuid
 from dataclasses import dataclass, field
@@ -73,11 +74,18 @@ class Variant:
     #: errors carried forward: a step blank's key -> its values on a grid ("at") and each
     #: later blank's value with it carried ("to"); checking/ecf.py `table`
     carry: dict = field(default_factory=dict)
+    figure_tag: str = ""      # a digest of ``figure``, kept where the PNG itself is not
 
     @property
     def figure_name(self) -> str:
-        """The picture's file name in a package: ``figure-1.png`` for variant 1."""
-        return f"figure-{self.number}.png"
+        """The picture's file name in a package: ``figure-1-<16 hex digits>.png`` for
+        variant 1, the digits a digest of the picture itself. A platform may serve a
+        package's files to whoever can open the question (PrairieLearn's
+        clientFilesQuestion), and a bicycle's plot prints its answers: a name no one can
+        guess before the answer is shown, the same at every export."""
+        tag = self.figure_tag or (hashlib.sha256(self.figure).hexdigest()[:16]
+                                  if self.figure else "")
+        return f"figure-{self.number}-{tag}.png" if tag else f"figure-{self.number}.png"
 
     def figure_html(self, src: str) -> str:
         """The picture as an ``<img>`` paragraph with ``src`` ("" without a picture)."""

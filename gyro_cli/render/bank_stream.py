@@ -271,24 +271,26 @@ class PrairieLearnSink(Sink):
 
     def __init__(self) -> None:
         self.spool: IO[bytes] = tempfile.TemporaryFile()
-        self.done: list[tuple[ProblemBank, list[tuple[int, int, int, int]]]] = []
+        self.done: list[tuple[ProblemBank, list[tuple[int, int, int, str]]]] = []
         self.open = False
 
     def begin(self, bank: ProblemBank) -> None:
         self.bank = bank
         self.mark = self.spool.tell()
         self.open = True
-        #: each variant: where its pickle lies, its size, its PNG's size and its number
-        self.where: list[tuple[int, int, int, int]] = []
+        #: each variant: where its pickle lies, its size, its PNG's size and its name
+        self.where: list[tuple[int, int, int, str]] = []
 
     def add(self, variant: Variant) -> None:
         import pickle
 
         at = self.spool.tell()
-        self.spool.write(pickle.dumps(dataclasses.replace(variant, figure=b"")))
+        name = variant.figure_name
+        tag = name[len(f"figure-{variant.number}-"):-4] if variant.figure else ""
+        self.spool.write(pickle.dumps(dataclasses.replace(variant, figure=b"", figure_tag=tag)))
         size = self.spool.tell() - at
         self.spool.write(variant.figure)
-        self.where.append((at, size, len(variant.figure), variant.number))
+        self.where.append((at, size, len(variant.figure), name))
 
     def commit(self, bank: ProblemBank) -> ProblemBank:
         done = dataclasses.replace(bank, count=len(self.where))
@@ -302,7 +304,7 @@ class PrairieLearnSink(Sink):
             self.spool.seek(self.mark)
         self.open = False
 
-    def _variants(self, where: list[tuple[int, int, int, int]]
+    def _variants(self, where: list[tuple[int, int, int, str]]
                   ) -> Iterator[tuple[Variant, int]]:
         """Each variant back from disk (without its PNG) and where its PNG lies."""
         import pickle
@@ -328,9 +330,9 @@ class PrairieLearnSink(Sink):
                        for k, (v, _) in enumerate(self._variants(where)))
             yield f"{bank.slug}/server.py", (piece.encode() for piece in
                                              pl.server_pieces(bank, entries))
-            for at, size, png, number in where:
+            for at, size, png, name in where:
                 if png:
-                    yield (f"{bank.slug}/clientFilesQuestion/figure-{number}.png",
+                    yield (f"{bank.slug}/clientFilesQuestion/{name}",
                            self._png(at + size, png))
 
     def names(self) -> list[str]:
@@ -338,10 +340,10 @@ class PrairieLearnSink(Sink):
         return [name for bank, where in self.done
                 for name in [f"{bank.slug}/info.json", f"{bank.slug}/question.html",
                              f"{bank.slug}/server.py",
-                             *(f"{bank.slug}/clientFilesQuestion/figure-{number}.png"
-                               for _, _, png, number in where if png)]]
+                             *(f"{bank.slug}/clientFilesQuestion/{name}"
+                               for _, _, png, name in where if png)]]
 
-    def _shown(self, bank: ProblemBank, where: list[tuple[int, int, int, int]]
+    def _shown(self, bank: ProblemBank, where: list[tuple[int, int, int, str]]
                ) -> ProblemBank:
         """The bank with variants enough for its page (every blank and choice of all of
         them, each choice with the words of all variants): a pass over the variants,
