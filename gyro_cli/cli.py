@@ -358,7 +358,8 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--html", "html_file", metavar="FILE",
               help="Also write the report as a self-contained HTML page to FILE: failing "
                    "answers first, each linking to its worked answer.")
-@click.option("--force", is_flag=True, help="With --out or --html: replace FILE if it exists.")
+@click.option("--force", is_flag=True, help="With --out, --html or --feedback: replace the "
+              "files that exist.")
 def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool,
           sheet: str | None, out: str | None, force: bool, html_file: str | None = None,
           assignment: str | None = None, out_format: str = "grades",
@@ -458,8 +459,9 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     from .api import grade
     from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
+    notes: list[str] = []
     if platform == "moodle":
-        text, people = moodle_sheet(download, paths, decimal_comma, every_attempt)
+        text, people = moodle_sheet(download, paths, decimal_comma, every_attempt, notes)
     elif platform == "canvas":
         text, people = canvas_sheet(download, paths, every_attempt)
     else:
@@ -470,6 +472,7 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
             out.write(text)
         graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal)
     graded.people = people  # the platform's names and ids, for --out-format canvas
+    graded.notes[:0] = notes
     if every_attempt:
         from .commands.responses import best_of_attempts
 

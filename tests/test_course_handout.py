@@ -67,6 +67,9 @@ def test_handout_from_an_assignment_is_the_same_sheet(run, tmp_path):
     b = run("handout", TOP, "--roster", r, "--seed", 5, "-o", tmp_path / "b" / "s.tex")
     assert a.exit_code == 0 and b.exit_code == 0, a.output + b.output
     assert (tmp_path / "a" / "s-ann.tex").read_text() == (tmp_path / "b" / "s-ann.tex").read_text()
+    # the key lies beside the sheets, named like them: the teacher is told to keep it back
+    # (a fresh-clone walk-through handed out s-* with the key among them)
+    assert f"{tmp_path / 'a' / 's-key.csv'} is the teacher's key" in a.stderr, a.stderr
 
 
 def test_one_handout_for_everyone_states_every_bundled_problem(run, tmp_path):

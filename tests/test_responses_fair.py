@@ -164,7 +164,11 @@ def test_moodle_an_attempt_not_finished_is_not_graded(run, tmp_path, moodle):
     rows = [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3", _cell(right)],
             ["Lee", "Ann", "ann@x.edu", "In progress", "", "", "", "-", _cell(["", "", ""])],
             ["Roe", "Bob", "bob@x.edu", "In progress", "", "", "", "-", _cell(right)]]
-    assert _scores(run, _moodle(tmp_path, rows), problem, "moodle") == {"ann@x.edu": 2.0}
+    path = _moodle(tmp_path, rows)
+    assert _scores(run, path, problem, "moodle") == {"ann@x.edu": 2.0}
+    # the teacher is told (bob, in progress, had been left out without a word)
+    done = run("check", "--answers", path, "--responses", "moodle", problem)
+    assert "2 attempt(s) not finished (State) are not graded" in done.stderr, done.stderr
 
 
 def test_moodle_two_rows_of_one_name_without_identity_fields_are_refused(run, tmp_path,

@@ -116,7 +116,7 @@ def template(kind_name: str) -> str:
         if a.name in expected_ex:
             out.append(f"  {a.name}: {expected_ex[a.name]}")
         else:
-            value = "cusps" if a.dimension is None else \
+            value = (a.words[0] if a.words else "cusps") if a.dimension is None else \
                 EXAMPLE_QUANTITY.get(a.dimension, "1").split()[0] + " " + (
                     ANSWER_UNIT.get(a.dimension) or units.si_text(a.dimension))
             out.append(f"  # {a.name}: {value}".rstrip())

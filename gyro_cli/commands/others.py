@@ -195,6 +195,10 @@ def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: st
         click.echo(f"gyro: note: each student's numbers are drawn from --seed {seed}, as "
                    f"gyro vary --roster draws them with that seed; --assignment "
                    "DIR/assignment.csv prints the variants gyro vary wrote", err=True)
+    key = [p for p in written if p.endswith("-key.csv")]
+    if key and (roster or assignment):  # beside the sheets, named like them
+        click.echo(f"gyro: note: {key[0]} is the teacher's key (every student's answers): "
+                   "keep it back when the sheets are handed out", err=True)
     for path in written:
         click.echo(path)
 

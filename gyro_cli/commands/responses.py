@@ -196,7 +196,8 @@ def best_of_attempts(graded: Any) -> Any:
 
 
 def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
-                 every_attempt: bool = False) -> tuple[str, dict[str, dict[str, str]]]:
+                 every_attempt: bool = False, notes: list[str] | None = None
+                 ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
     name: Response N is the N-th problem of ``paths``; a student's finished attempt
     started last is the one read (`_by_start`), and an attempt not finished (State) is not
@@ -223,12 +224,14 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
     people: dict[str, dict[str, str]] = {}
     state = header.index("state") if "state" in header else None
     finished: dict[str, list[tuple[int, list[str]]]] = {}  # student -> (line, row)s
+    unfinished = 0
     for number, row in _filled(rows, len(header), path):
         student, by_name = _moodle_student(header, row)
         student = student_id(student)  # as the sheet's reader compares ids: NFC
         if not student or student.lower().startswith("overall average"):
             continue  # the report's average row is no one's attempt
         if state is not None and row[state].strip().lower() != "finished":
+            unfinished += 1
             continue  # in progress, overdue, never submitted: Moodle grades none of them
         if by_name:
             if student in named:
@@ -264,6 +267,9 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
             continue
         for attempt, (number, row) in enumerate(attempts, 1):
             one_attempt(student, f"{student} (attempt {attempt})", attempt, number, row)
+    if unfinished and notes is not None:
+        notes.append(f"{unfinished} attempt(s) not finished (State) are not graded, as Moodle "
+                     "grades none")
     return _sheet([a for answers in by_student.values() for a in answers]), people
 
 

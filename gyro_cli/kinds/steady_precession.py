@@ -910,8 +910,8 @@ KIND = Kind(
         "statement": ("A top weighing {weight} has radii of gyration of {k_axial} about its axis "
                       "and {k_pivot} about its point of support, and its centre of mass is "
                       "{cg_distance} from that point. It spins at {spin} with its axis at {theta} "
-                      "from the upward vertical. Find the rate of steady precession and the least "
-                      "spin at which steady precession is possible at this angle."),
+                      "from the upward vertical. Find the two possible rates of steady precession and the "
+                      "least spin at which steady precession is possible at this angle."),
         "given": {"weight": "3 oz", "k_axial": "0.84 in", "k_pivot": "1.80 in",
                   "cg_distance": "1.5 in", "spin": "1800 rpm", "theta": "30 deg"},
         "find": {"precession": "rpm", "min_spin": "rpm"},
