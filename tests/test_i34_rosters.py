@@ -331,3 +331,19 @@ def test_item16_canvas_column_from_the_out_name_is_neutralised(run, tmp_path):
     with open(target, newline="") as handle:
         header = next(csv.reader(handle))
     assert header[-1] == "'=1+2"
+
+
+def test_a_canvas_gradebook_export_is_read_as_a_roster(run, tmp_path):
+    """A teacher's roster straight from Canvas (Grades > Export; gyro's own --out-format
+    canvas writes the same columns): its Student column holds names, a Points Possible
+    row sits under the header. A fresh-clone walk-through found 'Lee, Ann' made an id and
+    'Points Possible' a student, without a word. The student is the SIS User ID, else the
+    Canvas ID; the name is kept."""
+    roster = tmp_path / "canvas.csv"
+    roster.write_text('Student,ID,SIS User ID,SIS Login ID,Section,HW 3 (123)\n'
+                      '    Points Possible,,,,,2\n"Lee, Ann",101,S1,ann,A,\n'
+                      '"Roe, Bob",102,,bob,A,\n')
+    done = run("vary", TOP, "--roster", roster, "-o", tmp_path / "hw")
+    assert done.exit_code == 0, done.output
+    rows = list(csv.DictReader((tmp_path / "hw" / "assignment.csv").open()))
+    assert [(r["student"], r["name"]) for r in rows] == [("S1", "Lee, Ann"), ("102", "Roe, Bob")]

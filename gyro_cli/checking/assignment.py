@@ -176,9 +176,30 @@ def _roster_cells(header: list[str], cells: list[str], path: str, line: int) -> 
                              file=path, line=line)
 
 
+def _canvas_gradebook(header: list[str], rows: list[tuple[int, list[str]]]
+                      ) -> tuple[list[str], list[tuple[int, list[str]]]]:
+    """A Canvas gradebook export (or gyro's --out-format canvas) read as a roster: its
+    ``Student`` column holds names, so the student is the SIS User ID, else the Canvas
+    ID, and the name is kept as ``name``; the rows Canvas writes under the header for
+    the assignments (``Points Possible``, ``Manual Posting``) are no students. Read as
+    written, names had become ids ("Lee, Ann") and "Points Possible" a student."""
+    at = {name: header.index(name) for name in ("student", "id", "sis user id")}
+    named = [("name" if h == "student" else h) for h in header] + ["student"]
+    out: list[tuple[int, list[str]]] = []
+    for number, cells in rows:
+        cells = cells + [""] * (len(header) - len(cells))
+        if not cells[at["id"]].strip() and not cells[at["sis user id"]].strip():
+            continue  # Points Possible, Manual Posting: a row of the gradebook's own
+        sid = cells[at["sis user id"]].strip() or cells[at["id"]].strip()
+        out.append((number, cells + [sid]))
+    return named, out
+
+
 def read_roster(path: str) -> list[Student]:
     """The students of a roster CSV (a ``student`` column; the other columns kept)."""
     header, rows = read_table(path, "a roster (CSV with a student column)")
+    if {"student", "id", "sis user id"} <= set(header):
+        header, rows = _canvas_gradebook(header, rows)
     if "student" not in header:
         raise InputError(f"no `student` column in the header (columns: {', '.join(header)})",
                          file=path, line=1)
