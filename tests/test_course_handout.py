@@ -8,6 +8,7 @@ pdflatex where it is installed (skipped with the reason otherwise).
 from __future__ import annotations
 
 import csv
+import html
 import json
 import os
 import shutil
@@ -168,3 +169,17 @@ def test_a_sheet_that_fails_leaves_no_class_half_written(run, tmp_path, monkeypa
     assert sorted(p.name for p in out.iterdir()) == ["s-ann.pdf", "s-bob.pdf", "s-key.csv"]
     # a roster's numbers are drawn from the seed: the teacher is reminded which
     assert "drawn from --seed 0" in result.stderr and "--assignment" in result.stderr
+
+
+def test_each_sheet_says_how_to_write_its_answers(run, tmp_path):
+    """A student's sheet names the problem id to write, each question graded with its
+    unit, how many values and in which order (a fresh-clone walk-through: the sheets
+    named no answer, and one wrong name stops the grading of a whole class)."""
+    out = tmp_path / "s.html"
+    done = run("handout", TOP, MOTOR, "-o", out)
+    assert done.exit_code == 0, done.output
+    text = html.unescape(out.read_text())
+    assert ("Answer as problem 11/3: precession in rpm, two values separated by ';' (slow; "
+            "fast, in any order); min_spin in rpm.") in text
+    assert ("Answer as problem 11/5: bearing_forces in N, two values separated by ';' "
+            "(A; B, in that order).") in text

@@ -120,6 +120,45 @@ def statement_of(problem: Any) -> str:
     return f"{problem.title + '. ' if problem.title else ''}Given: {given}. Find: {asked}."
 
 
+_COUNT = {2: "two", 3: "three", 4: "four"}
+
+
+def answer_form(problem: Any, pid: str) -> str:
+    """How to write the answers on a sheet (docs/check.md): the problem id, then each
+    question graded (`graded_questions`) with its unit, how many values it takes and
+    their order. ``Answer as problem 11/3-ann: precession in rpm, two values (slow; fast,
+    in any order); min_spin in rpm.``"""
+    from ..checking.grades import reported
+    from ..checking.matching import ordered
+    from ..solving.problem import graded_questions
+    from ..solving.solve import solve
+
+    result = solve(problem)
+    parts = []
+    for name in graded_questions(problem):
+        answer = reported(result, name)
+        if answer.unit is None and answer.si_unit is None:
+            words = [str(v) for v in answer.values]
+            spec = problem.kind.answer(name)
+            choices = f" ({' or '.join(spec.words)})" if spec is not None and spec.words else ""
+            labels = [str(x) for x in answer.labels if x]
+            several = f"{_COUNT.get(len(words), str(len(words)))} words separated by ';'" + \
+                (f" ({'; '.join(labels)})" if len(labels) == len(words) else "")
+            parts.append(f"{name}: {'a word' if len(words) < 2 else several}{choices}")
+            continue
+        unit = answer.unit or "SI units"
+        text = f"{name} in {unit}"
+        n = len(answer.values)
+        if n > 1:
+            labels = [str(x) for x in answer.labels if x]
+            order = ("in that order" if ordered(list(answer.labels)) else "in any order") \
+                if len(labels) == n else ("in any order" if not labels else "")
+            listed = f"{'; '.join(labels)}, {order}" if len(labels) == n else order
+            text += f", {_COUNT.get(n, str(n))} values separated by ';' ({listed})"
+        parts.append(text)
+    return f"Answer as problem {pid}: " + "; ".join(parts) + "."
+
+
 # ---- LaTeX ------------------------------------------------------------------------------
 
 def latex_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
@@ -134,6 +173,8 @@ def latex_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
     for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
         body.append(f"\\section*{{Problem {k} ({text_escape(str(pid))})}}")
         body.append(text_escape(statement_of(problem)))
+        body.append("")
+        body.append(f"\\emph{{{text_escape(answer_form(problem, str(pid)))}}}")
         body.append("")
         if solutions:
             body.append(latex(solve(problem), level="subsection*"))
@@ -175,7 +216,9 @@ def html_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
         body.append(f"<p>For {escape(sheet.name)}</p>")
     for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
         body.append(f"<section aria-labelledby=\"p{k}\"><h2 id=\"p{k}\">Problem {k} "
-                    f"({escape(str(pid))})</h2>\n<p>{escape(statement_of(problem))}</p>")
+                    f"({escape(str(pid))})</h2>\n<p>{escape(statement_of(problem))}</p>\n"
+                    f"<p class=\"answer-form\"><em>{escape(answer_form(problem, str(pid)))}"
+                    "</em></p>")
         if solutions:
             body.append(html.worked_answer(solve(problem), level=3, ident=f"solution-{k}"))
         body.append("</section>")
