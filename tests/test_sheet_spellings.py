@@ -243,3 +243,38 @@ def test_both_roots_in_rad_s_written_as_rpm_are_named_and_credited(tmp_path):
     row = by_answer(graded, "bob")["precession"]
     assert row.points == 0.5 and row.note.count("rpm against rad/s") == 2, row
     assert row.feedback.count("too low") == 2 and "too high" not in row.feedback, row
+
+
+# ---- the sheet as a spreadsheet writes it -----------------------------------------------
+
+def test_answer_names_as_students_write_them(tmp_path):
+    """`Min_Spin`, `min spin`, `min-spin` name min_spin (one such row had stopped the
+    grading of a whole class, exit 2); two rows naming one answer two ways are one
+    answer, as two rows of one name are."""
+    path = tmp_path / "names.csv"
+    path.write_text("student,problem,answer,value\n"
+                    f"ann,11/3,Min_Spin,{LEAST} rpm\nbob,11/3,min spin,{LEAST} rpm\n"
+                    f"cy,11/3,Precession,{SLOW} rpm\ncy,11/3,precession,{FAST} rpm\n")
+    graded = grades.grade(str(path), [str(_problem())])
+    assert by_answer(graded, "ann")["min_spin"].result == "correct"
+    assert by_answer(graded, "bob")["min_spin"].result == "correct"
+    assert by_answer(graded, "cy")["precession"].result == "correct"
+
+
+def test_a_step_symbol_keeps_its_case(tmp_path):
+    from gyro_cli.checking.grades import _answer_named
+    from gyro_cli.solving.problem import load
+
+    problem = load(str(_problem()))
+    assert _answer_named(problem, "MIN SPIN") == "min_spin"
+    assert _answer_named(problem, "i") == "i"  # no answer: left for the refusal to name
+
+
+def test_a_sheet_saved_with_semicolons(tmp_path):
+    """A spreadsheet in a language with a decimal comma saves CSV with ';' between cells
+    (its cell holding roots quoted): read as such, not refused as one column."""
+    path = tmp_path / "semi.csv"
+    path.write_text(f'student;problem;answer;value\nann;11/3;min_spin;{LEAST} rpm\n'
+                    f'ann;11/3;precession;"{SLOW}; {FAST} rpm"\n')
+    rows = by_answer(grades.grade(str(path), [str(_problem())]), "ann")
+    assert rows["min_spin"].result == rows["precession"].result == "correct"

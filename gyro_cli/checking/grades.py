@@ -126,6 +126,9 @@ def _read_csv(path: str) -> list[Submission]:
     text = read_text(path, MAX_SHEET_BYTES, "an answer sheet (CSV or YAML)", "utf-8-sig")
     try:
         lines = one_line_rows(text)
+        if lines and len(lines[0][1]) == 1 and lines[0][1][0].count(";") >= len(COLUMNS) - 1:
+            # a spreadsheet in a language with a decimal comma saves its CSV with ';'
+            lines = one_line_rows(text, ";")
     except csv.Error as err:
         raise InputError(f"not a CSV file: {err}", file=path) from None
     except CellRunsOn as err:
@@ -424,6 +427,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
             raise InputError(f"problem {s.problem!r} (student {s.student!r}) is not among the "
                              f"problem files given (ids: {', '.join(sorted(problems)) or 'none'})",
                              file=sheet, line=s.line)
+        s.answer = _answer_named(problem, s.answer)
         if problem.kind.answer(s.answer) is None and s.answer not in problem.steps:
             answers = ", ".join(a.name for a in problem.kind.answers)
             steps = f"; steps: {', '.join(problem.steps)}" if problem.steps else ""
@@ -431,6 +435,7 @@ def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
                              f"{answers}{steps})", file=sheet, line=s.line)
         questions = asked.setdefault(s.problem, dict.fromkeys(problem.steps))
         questions[s.answer] = None
+    submissions = _merged(submissions)  # `min spin` and `min_spin` in two rows: one answer
     graded = Graded([])
     solved: dict[str, Any] = {}
     for pid, names in asked.items():
@@ -487,6 +492,28 @@ def grade_work(problem: Any, result: Any, values: dict[str, list[Any]],
     if errors:
         raise RuntimeError(errors[0])
     return rows
+
+
+def _merged(submissions: list[Submission]) -> list[Submission]:
+    """Submissions of one student's answer (its name written two ways) as one, in sheet
+    order: their values are its roots, as two rows of one name are."""
+    out: dict[tuple[str, str, str], Submission] = {}
+    for s in submissions:
+        first = out.setdefault((s.student, s.problem, s.answer), s)
+        if first is not s:
+            first.values = first.values + s.values
+            first.rows = first.rows + s.rows
+    return list(out.values())
+
+
+def _answer_named(problem: Any, name: str) -> str:
+    """An answer's name as a student may write it (``Min_Spin``, ``min spin``,
+    ``min-spin``): the kind's answer it names, else ``name`` as written. A step's symbol
+    (``I``, ``J``) is matched as written: its case is the symbol's."""
+    if problem.kind.answer(name) is not None or name in getattr(problem, "steps", []):
+        return name
+    plain = re.sub(r"[\s\-]+", "_", name.strip().lower())
+    return plain if problem.kind.answer(plain) is not None else name
 
 
 def reported(result: Any, name: str) -> Any:
@@ -675,6 +702,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                 note = (f"answered variant {other.variant} (student {other.student}'s numbers); "
                         f"graded on their own variant {own.variant}")
         problem = variants[own.variant]
+        s.answer = _answer_named(problem, s.answer)
         if problem.kind.answer(s.answer) is None and \
                 s.answer not in getattr(problem, "steps", []):
             names = ", ".join(a.name for a in problem.kind.answers)

@@ -79,7 +79,7 @@ class CellRunsOn(ValueError):
         self.line = line
 
 
-def one_line_rows(text: str) -> list[tuple[int, list[str]]]:
+def one_line_rows(text: str, delimiter: str = ",") -> list[tuple[int, list[str]]]:
     """The rows of a CSV text, each with the line it starts on. A cell that holds a line
     break is refused (`CellRunsOn`): in a roster or an answer sheet none is meant, and a
     stray quote would otherwise fold the rows after it, silently, into one cell.
@@ -87,7 +87,7 @@ def one_line_rows(text: str) -> list[tuple[int, list[str]]]:
     import csv
     import io
 
-    reader = csv.reader(io.StringIO(text, newline=""))
+    reader = csv.reader(io.StringIO(text, newline=""), delimiter=delimiter)
     rows = []
     line = 1
     for row in reader:
