@@ -327,10 +327,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                    "or every attempt and keep the one with the most points (a quiz that "
                    "keeps the highest grade).")
 @click.option("--decimal-comma", is_flag=True,
-              help="With --responses moodle: the site's language writes a decimal comma, "
-                   "so a single ',' in a typed number is the decimal point, as Moodle reads "
-                   "it there (965,4 is 965.4); by default, as on an English site, ',' "
-                   "separates thousands (965,4 is 9654).")
+              help="With --answers: the class writes a decimal comma (965,4 is 965.4; "
+                   "1.234,5 is 1234.5); by default a comma in a number is refused as "
+                   "ambiguous. With --responses moodle: the site's language writes one, as "
+                   "Moodle reads it there; by default, as on an English site, ',' separates "
+                   "thousands (965,4 is 9654).")
 @click.option("--out", metavar="FILE", help="With --answers: write the grades CSV to FILE.")
 @click.option("--out-format", "out_format", default="grades", show_default=True,
               type=click.Choice(("grades", "canvas", "gradescope", "prairielearn")),
@@ -379,9 +380,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
         if assignment or credit is not None or feedback_dir or student is not None or reveal \
-                or responses:
-            fail("--assignment, --credit, --feedback, --student, --reveal and --responses go "
-                 "with --answers SHEET")
+                or responses or decimal_comma:
+            fail("--assignment, --credit, --feedback, --student, --reveal, --responses and "
+                 "--decimal-comma go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
@@ -419,8 +420,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if out is not None:
         _outputs_apart(read, out=out)
 
-    if decimal_comma and responses != "moodle":
-        fail("--decimal-comma goes with --responses moodle")
+    if decimal_comma and responses not in (None, "moodle"):
+        fail("--decimal-comma goes with a sheet or --responses moodle (Canvas and Blackboard "
+             "keep the number as typed)")
     if attempts != "latest" and responses not in ("moodle", "canvas"):
         fail("--attempts goes with --responses moodle or canvas")
     if attempts != "latest" and student is not None:
@@ -432,7 +434,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
                                   decimal_comma, attempts == "best") \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
-                  reveal=reveal)
+                  reveal=reveal, decimal_comma=decimal_comma)
         if out or feedback_dir:  # one set: a refused --feedback leaves no --out behind
             grades_report.write_outputs(graded, force, read, reveal, out=out or None,
                                         fmt=out_format, feedback=feedback_dir or None)

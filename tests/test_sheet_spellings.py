@@ -278,3 +278,34 @@ def test_a_sheet_saved_with_semicolons(tmp_path):
                     f'ann;11/3;precession;"{SLOW}; {FAST} rpm"\n')
     rows = by_answer(grades.grade(str(path), [str(_problem())]), "ann")
     assert rows["min_spin"].result == rows["precession"].result == "correct"
+
+
+# ---- a class that writes a decimal comma (--decimal-comma) -----------------------------
+
+def test_a_decimal_comma_class(tmp_path, run):
+    """A class in a language with a decimal comma writes 965,4 rpm and saves its sheet
+    with ';': every right answer had been invalid. With --decimal-comma it is read as
+    such (1.234,5 groups thousands with dots); without, a comma in a number stays refused
+    as ambiguous (1,005: a thousand and five, or one and five thousandths?), and the
+    student is told to write a decimal point."""
+    path = tmp_path / "dc.csv"
+    comma = LEAST.replace(".", ",")
+    path.write_text(f'student;problem;answer;value\nann;11/3;min_spin;{comma} rpm\n'
+                    f'bob;11/3;precession;"{SLOW.replace(".", ",")}; {FAST.replace(".", ",")} rpm"\n'
+                    f'cy;11/3;min_spin;{float(LEAST) * RPM:.4g} rad/s\n'.replace(".", ","))
+    rows = grades.grade(str(path), [str(_problem())], decimal_comma=True).rows
+    results = {(r.student, r.answer): r.result for r in rows}
+    assert results[("ann", "min_spin")] == results[("bob", "precession")] == "correct"
+    assert results[("cy", "min_spin")] == "correct"
+    plain = by_answer(grades.grade(str(path), [str(_problem())]), "ann")["min_spin"]
+    assert plain.result == "invalid" and "decimal point as '.'" in plain.feedback
+    done = run("check", "--answers", path, _problem(), "--decimal-comma", "--format", "json")
+    assert done.exit_code == 0 and '"correct"' in done.stdout
+    assert run("check", _problem(), "--decimal-comma").exit_code == 2
+
+
+def test_thousands_grouped_with_dots_under_a_decimal_comma():
+    assert written_values(["1.234,5 rpm"], decimal_comma=True) == ["1234.5 rpm"]
+    assert written_values("-0,5; 2,25 N".split(";"), decimal_comma=True) == ["-0.5 N", "2.25 N"]
+    assert written_values(["45,13, 533,5 rpm"], decimal_comma=True) == ["45.13 rpm", "533.5 rpm"]
+    assert written_values(["965,4 rpm"]) == ["965,4 rpm"]  # without: as written

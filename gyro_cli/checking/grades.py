@@ -111,14 +111,15 @@ class Graded:
 
 # ---- reading the sheet ------------------------------------------------------
 
-def read_sheet(path: str) -> list[Submission]:
-    """The submissions in a CSV or YAML answer sheet, in sheet order."""
+def read_sheet(path: str, decimal_comma: bool = False) -> list[Submission]:
+    """The submissions in a CSV or YAML answer sheet, in sheet order (``decimal_comma``:
+    the class writes ``965,4`` for 965.4)."""
     if path.endswith((".yaml", ".yml")):
-        return _read_yaml(path)
-    return _read_csv(path)
+        return _read_yaml(path, decimal_comma)
+    return _read_csv(path, decimal_comma)
 
 
-def _read_csv(path: str) -> list[Submission]:
+def _read_csv(path: str, decimal_comma: bool = False) -> list[Submission]:
     from ..core.csvsafe import CellRunsOn, one_line_rows
     from ..core.safeyaml import read_text
     from .assignment import student_id
@@ -166,7 +167,7 @@ def _read_csv(path: str) -> list[Submission]:
         if not (cells["student"] and cells["problem"] and cells["answer"]):
             raise InputError("student, problem and answer must not be empty", file=path,
                              line=number)
-        values = written_values(cells["value"].split(";"))
+        values = written_values(cells["value"].split(";"), decimal_comma)
         key = (student_id(cells["student"]), cells["problem"], cells["answer"])
         if key in merged:
             merged[key].values += values
@@ -190,12 +191,14 @@ _SUPER = "\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u20
 _TIMES_TEN = re.compile(r"([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+))\s*[x\u00d7X*\u00b7\u22c5]\s*10"
                         r"(?:\s*(?:\^|\*\*)\s*\(?\s*([-+\u2212]?\d{1,3})\s*\)?|([" + _SUPER + r"]+))"
                         r"(?![\d" + _SUPER + r"])(.*)", re.S)
+# a number with a decimal comma, at the start of a value (after a sign or an about sign)
+_COMMA_NUMBER = re.compile(r"(?<![\d.,])(\d{1,3}(?:\.\d{3})+|\d+),(\d+)(?![\d,])")
 # roots written with a comma and a space, or "and", between them (45.13 rpm, 533.5 rpm);
 # a comma inside a number (1,005) is no separator
 _LIST = re.compile(r",\s+(?=[-+\u2212\u2013]?[\d.])|\s+and\s+(?=[-+\u2212\u2013]?[\d.])")
 
 
-def _normal_value(value: str) -> str:
+def _normal_value(value: str, decimal_comma: bool = False) -> str:
     """One value as a reader of the sheet reads it: a cell gyro's CSV writer guarded
     (``'-2.781 N m``) as the text it guarded, a leading ≈ or ~ dropped, a word
     processor's dash before the number as a minus, ``9.654×10^2`` as ``9.654e2``, and a
@@ -203,6 +206,9 @@ def _normal_value(value: str) -> str:
     from ..core.csvsafe import plain_cell
 
     value = plain_cell(value).strip()
+    if decimal_comma:  # 965,4 is 965.4; 1.234,5 is 1234.5 (the dots group thousands)
+        value = _COMMA_NUMBER.sub(lambda m: m.group(1).replace(".", "") + "." + m.group(2),
+                                  value, count=1)
     if _ABOUT.match(value):
         value = _ABOUT.sub("", value, count=1)
     if _DASH.match(value):
@@ -219,7 +225,7 @@ def _normal_value(value: str) -> str:
     return value
 
 
-def written_values(values: Any) -> list[Any]:
+def written_values(values: Any, decimal_comma: bool = False) -> list[Any]:
     """A student's values of one answer as written (a cell split at ';', a YAML list), read
     as a reader of the sheet reads them (`_normal_value`); several roots may also be joined
     by a comma and a space or by "and" (``45.13 rpm, 533.5 rpm``), and a unit written
@@ -229,7 +235,7 @@ def written_values(values: Any) -> list[Any]:
     out: list[Any] = []
     for v in values:
         if isinstance(v, str):
-            out += [_normal_value(part) for part in _LIST.split(v)]
+            out += [_normal_value(part, decimal_comma) for part in _LIST.split(v)]
         else:
             out.append(v)
     out = [v for v in out if not (isinstance(v, str) and not v)]
@@ -250,7 +256,7 @@ def written_values(values: Any) -> list[Any]:
     return out
 
 
-def _read_yaml(path: str) -> list[Submission]:
+def _read_yaml(path: str, decimal_comma: bool = False) -> list[Submission]:
     from ..solving.problem import read_yaml
     from .assignment import student_id
 
@@ -272,7 +278,8 @@ def _read_yaml(path: str) -> list[Submission]:
             for answer, value, _, _ in _as_written(answers, inner, path, "answer name"):
                 values = value if isinstance(value, list) else [value]
                 out.append(Submission(student, problem, answer,
-                                      written_values(v for v in values if v is not None),
+                                      written_values((v for v in values if v is not None),
+                                                     decimal_comma),
                                       line))
     return out
 
@@ -371,22 +378,27 @@ def load_problems(paths: list[str] | tuple[str, ...]) -> dict[str, Any]:
 
 def grade(sheet: str, paths: list[str] | tuple[str, ...],
           assignment: str | None = None, credit: dict[str, float] | None = None,
-          student: str | None = None, reveal: bool = False) -> Graded:
+          student: str | None = None, reveal: bool = False,
+          decimal_comma: bool = False) -> Graded:
     """Grade every submission in ``sheet`` against the problems under ``paths``.
 
     With ``assignment`` (an assignment.csv from ``gyro vary --roster``) each student
     is graded only on their own variants (:func:`grade_assigned`). With ``student``
     (the submitter, inside an autograder) the sheet must name no one else, and the
     grades are theirs only, without the solver's values (:func:`conceal`).
+    ``decimal_comma``: the class writes ``965,4`` for 965.4 (else a comma in a number
+    is refused as ambiguous).
     """
     if student is not None:
         from .assignment import student_id
 
         student = student_id(student)  # the sheet's and the roster's ids are NFC
     if assignment is not None:
-        graded = grade_assigned(sheet, paths, assignment, credit, submitter=student)
+        graded = grade_assigned(sheet, paths, assignment, credit, submitter=student,
+                                decimal_comma=decimal_comma)
     else:
-        graded = _grade_sheet(sheet, paths, credit, submitter=student)
+        graded = _grade_sheet(sheet, paths, credit, submitter=student,
+                              decimal_comma=decimal_comma)
     return conceal(graded, student, reveal) if student is not None else graded
 
 
@@ -413,10 +425,11 @@ def _solved_for(problem: Any, names: Any, key: str, solved: dict[str, Any],
 
 
 def _grade_sheet(sheet: str, paths: list[str] | tuple[str, ...],
-                 credit: dict[str, float] | None, submitter: str | None) -> Graded:
+                 credit: dict[str, float] | None, submitter: str | None,
+                 decimal_comma: bool = False) -> Graded:
     """Every submission of ``sheet`` against the problem of its id under ``paths``."""
 
-    submissions = read_sheet(sheet)
+    submissions = read_sheet(sheet, decimal_comma)
     if submitter is not None:
         _submitter_only(submissions, submitter, sheet)
     problems = load_problems(paths)
@@ -593,8 +606,8 @@ def _graph(result: Any) -> Any:
 
 
 def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_path: str,
-                   credit: dict[str, float] | None = None, submitter: str | None = None
-                   ) -> Graded:
+                   credit: dict[str, float] | None = None, submitter: str | None = None,
+                   decimal_comma: bool = False) -> Graded:
     """Each student graded on their own variant of each assigned problem only.
 
     The questions of a problem are the answers its variants ask for (`find`, and
@@ -611,7 +624,7 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     from .assignment import load_variant, read_assignment, read_key
 
     plan = read_assignment(assignment_path)
-    submissions = read_sheet(sheet)
+    submissions = read_sheet(sheet, decimal_comma)
     if submitter is not None:
         if submitter not in plan.students:
             raise InputError(f"--student {submitter!r} is not in the assignment"
@@ -1220,7 +1233,10 @@ def _on_a_sheet(message: str) -> str:
     the separator of roots named where a value holds a comma."""
     message = re.sub(r"\s*\(a comment needs '#'\)|; a comment needs '#'", "", message)
     message = re.sub(r" \(dimension [^()]*\[[^()]*\)", "", message)
-    if "','" in message or "unexpected ','" in message:
+    if re.search(r"'[-+\u2212]?\d+,\d", message):  # 965,4: a decimal comma or 1,005?
+        message += ("; write the decimal point as '.' (965.4), no thousands separator, and "
+                    "several roots separated by ';'")
+    elif "unexpected ','" in message:
         message += "; several roots go in one cell separated by ';'"
     return message
 
