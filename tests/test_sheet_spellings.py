@@ -309,3 +309,22 @@ def test_thousands_grouped_with_dots_under_a_decimal_comma():
     assert written_values("-0,5; 2,25 N".split(";"), decimal_comma=True) == ["-0.5 N", "2.25 N"]
     assert written_values(["45,13, 533,5 rpm"], decimal_comma=True) == ["45.13 rpm", "533.5 rpm"]
     assert written_values(["965,4 rpm"]) == ["965,4 rpm"]  # without: as written
+
+
+def test_roots_ten_apart_are_no_slip_of_the_student():
+    """Roots 10 and 100 rad/s (a ratio near a power of ten), a student 5% off each: paired
+    with their nearest roots, both 'off', no slip. Paired by slips instead they would be
+    two different slips (10x up and 10x down), which is the roots' ratio, not the
+    student's slip, and --credit would have paid for it."""
+    from types import SimpleNamespace
+
+    from gyro_cli.checking.expected import Expected
+    from gyro_cli.checking.matching import compare
+    from gyro_cli.checking.tolerance import parse_tolerance
+
+    reported = SimpleNamespace(si_values=[10.0, 100.0], labels=["slow", "fast"],
+                               unit="rad/s", si_unit="rad/s")
+    values = [Expected(f"{v} rad/s", v, v, "rad/s", 1.0) for v in (10.5, 95.5)]
+    lines = compare("precession", values, parse_tolerance("1%", "rate", "t"), reported)
+    assert [(line.expected_si, line.got_si) for line in lines] == [(10.5, 10.0), (95.5, 100.0)]
+    assert not any(line.slip for line in lines), [line.slip for line in lines]

@@ -179,10 +179,19 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     elif in_order:
         pairs = match_in_order(len(values), len(computed))
     else:
-        def slipped(i: int, j: int) -> bool:
-            return diagnose(computed[j], float(values[i].si), width(i, j)) is not None
+        def slip(i: int, j: int) -> str | None:
+            return diagnose(computed[j], float(values[i].si), width(i, j))
 
-        pairs = match_roots([float(v.si) for v in values], computed, within, slipped)
+        given = [float(v.si) for v in values]
+        pairs = match_roots(given, computed, within)
+        # Paired by a slip instead where one slip explains every value that is off (bob's
+        # two roots in rad/s, written as rpm); two different slips, or the two directions
+        # of one, are a coincidence of the roots' ratio, not the student's slip.
+        by_slip = match_roots(given, computed, within, lambda i, j: slip(i, j) is not None)
+        slips = {slip(i, j) for i, j in by_slip
+                 if i is not None and j is not None and not within(i, j)}
+        if by_slip != pairs and len(slips) == 1 and None not in slips:
+            pairs = by_slip
         # A root equal to one an expected value already matched (the moment, the
         # same for both precession rates) is covered by it, not a missing value.
         pairs = [(i, j) for i, j in pairs
