@@ -888,3 +888,16 @@ def test_gyro_check_accepts_every_exported_answer(exported, run, tmp_path):
     done = run("check", tmp_path / "checked")
     assert done.exit_code == 0, done.output
     assert written >= len(exported["reference"]) and "FAIL" not in done.output
+
+
+def test_a_value_too_small_for_a_platform_is_named(run, tmp_path):
+    """Gravity Probe B's moment, 4.7e-19 N m: an older Moodle adds 1e-14 to every
+    numerical tolerance (question/type/numerical/question.php), so any answer near 0
+    would pass (an adversarial pass). The export names such blanks and says what to do."""
+    done = run("export", "--to", "moodle", PROBLEMS / "drift_gpb_budget.yaml",
+               "-o", tmp_path / "g.xml")
+    assert done.exit_code == 0, done.output
+    line = next(l for l in done.stderr.splitlines() if "below 1e-09" in l)
+    assert "moment = 4.726e-19 N m (drift_gpb_budget.yaml)" in line and "smaller unit" in line
+    done = run("export", "--to", "moodle", PROBLEMS / "11_3.yaml", "-o", tmp_path / "a.xml")
+    assert "below 1e-09" not in done.stderr

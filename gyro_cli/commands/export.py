@@ -40,6 +40,8 @@ if TYPE_CHECKING:
 FORMATS = ("moodle", "qti", "blackboard", "prairielearn")
 #: the share of a point for a carried error in a PrairieLearn question (--ecf)
 DEFAULT_ECF = 0.5
+#: a blank's value below this (in its unit) may not be told from 0 on a platform
+TINY = 1e-9
 #: the formats written as one file
 FILE_FORMATS = ("moodle", "qti", "blackboard")
 
@@ -335,6 +337,7 @@ def stream(paths: list[str] | tuple[str, ...], sink: Sink, count: int = 1, seed:
     worded: list[str] = []                # files with word answers
     words: dict[str, None] = {}           # their names, in order ("motion", "effect")
     tightened: list[str] = []             # files whose tolerance is below the printed figures
+    tiny: dict[str, str] = {}              # blanks too small for a platform: text -> file
     answered: set[str] = set()            # the answers the files find (for --ask)
     for path in files:
         try:
@@ -364,6 +367,9 @@ def stream(paths: list[str] | tuple[str, ...], sink: Sink, count: int = 1, seed:
                 if variant.asks:
                     asking += 1
                     sink.add(variant)
+                tiny.update({f"{b.label} = {b.value:.4g} {b.unit}".rstrip()
+                             + f" ({os.path.basename(path)})": path
+                             for b in variant.blanks if 0 < abs(b.value) < TINY})
         except InputError as err:
             sink.abort()
             errors.append(str(err.located(file=path)))
@@ -395,6 +401,10 @@ def stream(paths: list[str] | tuple[str, ...], sink: Sink, count: int = 1, seed:
         warn(f"{len(tightened)} file(s) ask a tolerance tighter than the {SIG} significant figures "
              f"a student is asked for: those blanks accept {student.text} (--tolerance): "
              f"{_some(tightened)}")
+    if tiny:
+        warn(f"{len(tiny)} blank(s) hold a value below {TINY:g} in its unit, which a platform "
+             "may not tell from 0 (Moodle adds 1e-14 to a numerical question's tolerance): "
+             f"ask it in a smaller unit (find: moment: aN*m): {_some(list(tiny))}")
     if worded:
         warn(f"{len(worded)} file(s) have word answers without a list of choices "
              f"({', '.join(words)}), not asked: {_some(worded)}")
