@@ -328,3 +328,12 @@ def test_roots_ten_apart_are_no_slip_of_the_student():
     lines = compare("precession", values, parse_tolerance("1%", "rate", "t"), reported)
     assert [(line.expected_si, line.got_si) for line in lines] == [(10.5, 10.0), (95.5, 100.0)]
     assert not any(line.slip for line in lines), [line.slip for line in lines]
+
+
+def test_a_root_given_twice_is_said_so(tmp_path):
+    """`45.13 rpm; 45.13 rpm`: the slow root twice. The second had been fed back as 'too
+    low' against the fast root (an adversarial pass); it is a root given twice."""
+    graded = grades.grade(str(sheet(tmp_path, [("ann", "precession", f"{SLOW} rpm; {SLOW} rpm")])),
+                          [str(_problem())])
+    row = by_answer(graded, "ann")["precession"]
+    assert row.points == 0.5 and "given twice" in row.feedback and "too low" not in row.feedback

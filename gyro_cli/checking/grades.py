@@ -1084,7 +1084,14 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             said = f"{line.expected}: {direction(truth, submitted)}"
             slip = diagnose(truth, submitted, abs(truth) * 0.01, [])
             placed = line.slip if (line.slip or "").startswith(("the order", "the place")) else ""
-            if placed:  # right for another of the answer's places (A for B): say so
+            twice = any(other is not line and other.passed and other.got_si is not None and
+                        abs(_si(other.got_si) - submitted) <= 0.01 * abs(_si(other.got_si))
+                        for other in lines)
+            if twice:  # the root another value is, again: not "too low" for this one
+                note += " (the same root as another value: given twice)"
+                said = f"{line.expected}: given twice (another of your values is that root; " \
+                       "one is missing)"
+            elif placed:  # right for another of the answer's places (A for B): say so
                 note += f" (likely slip: {placed})"
                 said = f"{line.expected}: not in its place (likely slip: {_place_for_student(placed)})"
             elif slip:
