@@ -6,6 +6,8 @@ fifth session's adversarial passes). The right values are worked out by hand
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from test_i38_ecf import by_answer, hand_11_3, sheet
 
@@ -148,7 +150,7 @@ def test_a_least_spin_typed_as_students_type_it(tmp_path, written):
 
 
 @pytest.mark.parametrize("written", [
-    f"{MOMENT} N·m", f"{MOMENT} N⋅m", f"\u2013{MOMENT[1:]} N m", f"- {MOMENT[1:]} N m",
+    f"{MOMENT} N·m", f"{MOMENT} N⋅m", f"\u2013{MOMENT[1:]} N m",
     f"'{MOMENT} N m", f"{MOMENT} Nm.", f"{MOMENT} kg·m²/s²",
 ])
 def test_a_negative_moment_typed_as_students_type_it(tmp_path, written):
@@ -337,3 +339,67 @@ def test_a_root_given_twice_is_said_so(tmp_path):
                           [str(_problem())])
     row = by_answer(graded, "ann")["precession"]
     assert row.points == 0.5 and "given twice" in row.feedback and "too low" not in row.feedback
+
+
+# ---- a review of the above (an adversarial pass of this session's reading) --------------
+
+@pytest.mark.parametrize("written", [
+    f"{F_A} N at B; {F_B} N", f"{F_A} N up at B; {F_B} N", f"{F_A} N at B, {F_B} N",
+    f"{F_A} N (B); {F_B} N",
+])
+def test_a_place_named_for_one_value_is_kept(tmp_path, written):
+    """35.15 N (A's force) put at B: wrong, the other value taking the place left (A).
+    The named place had been dropped and the pair graded right in order."""
+    row = _one(tmp_path, "11_5.yaml", "bearing_forces", written)
+    assert row.points == 0 and row.result == "wrong", row
+
+
+@pytest.mark.parametrize("written", [f"{F_A}; {F_B} N (B)", f"{F_A}; {F_B} N at B",
+                                     f"{F_A} N (A); {F_B}"])
+def test_a_unit_written_once_carries_no_label(tmp_path, written):
+    """`35.15; 62.95 N (B)`: the unit is the first value's, not its label (which had put
+    both at B, 0.33 of a right answer)."""
+    row = _one(tmp_path, "11_5.yaml", "bearing_forces", written)
+    expected = "invalid" if written.endswith(F_B) else "correct"  # no unit after 62.95
+    assert row.result == expected, row
+
+
+def test_a_long_cell_costs_its_length(tmp_path):
+    """A value of `1 (`, 5000 spaces and `x`: the label's regular expression had taken
+    time cubic in the length (20 s for 2000 spaces; an autograder a student can stall)."""
+    import time
+
+    path = tmp_path / "long.csv"
+    path.write_text("student,problem,answer,value\nann,11/3,min_spin,1 (" + " " * 5000 + "x\n")
+    start = time.process_time()
+    row = by_answer(grades.grade(str(path), [str(_problem())]), "ann")["min_spin"]
+    assert row.result == "invalid" and time.process_time() - start < 2.0
+
+
+def test_dots_group_thousands_under_a_decimal_comma():
+    assert written_values(["965.400 rpm"], decimal_comma=True) == ["965400 rpm"]
+    assert written_values(["1.234 rpm"], decimal_comma=True) == ["1234 rpm"]
+    assert written_values(["45.13 rpm"], decimal_comma=True) == ["45.13 rpm"]
+    # YAML has split [45,13 rpm, 533,5 rpm] at its commas: no unit is given to 45 or 533
+    assert written_values([45, "13 rpm", 533, "5 rpm"], decimal_comma=True) == \
+        [45, "13 rpm", 533, "5 rpm"]
+
+
+def test_a_bullet_is_no_minus():
+    assert written_values(["- 45.13 rpm"]) == ["- 45.13 rpm"]
+    assert written_values(["\u201345.13 rpm"]) == ["-45.13 rpm"]
+
+
+def test_answer_names_two_ways_under_an_assignment(run, tmp_path):
+    """`precession` and `Precession` in two rows of an assigned student: one answer, its
+    two roots (it had stopped the class: 'answers precession twice, under 11/3 and 11/3')."""
+    from conftest import class_set
+
+    assignment = class_set(run, tmp_path, ["ann"])
+    path = tmp_path / "two.csv"
+    path.write_text("student,problem,answer,value\nann,11/3,precession,50 rpm\n"
+                    "ann,11/3,Precession,500 rpm\n")
+    done = run("check", "--answers", path, "--assignment", assignment, "--format", "json")
+    assert done.exit_code == 0, done.output
+    rows = [r for r in json.loads(done.stdout)["rows"] if r["answer"] == "precession"]
+    assert len(rows) == 1 and rows[0]["submitted"] == "50 rpm; 500 rpm", rows

@@ -183,9 +183,9 @@ _NUMBER_AND_UNIT = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)"
                               r"(?:[eE][-+\u2212]?\d{1,3})?\s*([^\d\s.+\-\u2212].*|1\s*/.*)")
 # "about": the signs students put before a rounded value (≈ 965.4 rpm, ~965.4 rpm)
 _ABOUT = re.compile(r"\s*[\u2248\u2243~]\s*")
-# a dash before a number as word processors write it (en dash, hyphen, figure dash) or
-# a minus with a space after it
-_DASH = re.compile(r"[\u2010\u2011\u2012\u2013\u2014]\s*(?=[\d.])|-\s+(?=[\d.])")
+# a dash before a number as word processors write it (en dash, hyphen, figure dash); a
+# hyphen and a space stay as written (a list's bullet, "- 45.13 rpm", is no minus)
+_DASH = re.compile(r"[\u2010\u2011\u2012\u2013\u2014]\s*(?=[\d.])")
 # 9.654×10^2, 9.654 x 10^2, 9.654*10**2, 9.654·10²
 _SUPER = "\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
 _TIMES_TEN = re.compile(r"([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+))\s*[x\u00d7X*\u00b7\u22c5]\s*10"
@@ -193,6 +193,13 @@ _TIMES_TEN = re.compile(r"([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+))\s*[x\u00d7X*\u00b
                         r"(?![\d" + _SUPER + r"])(.*)", re.S)
 # a number with a decimal comma, at the start of a value (after a sign or an about sign)
 _COMMA_NUMBER = re.compile(r"(?<![\d.,])(\d{1,3}(?:\.\d{3})+|\d+),(\d+)(?![\d,])")
+# under a decimal comma, dots that group thousands (965.400, 1.234.567) in a number alone
+_DOT_THOUSANDS = re.compile(r"(?<![\d.,])(\d{1,3}(?:\.\d{3})+)(?![\d.,])")
+# a value longer than this is not read further (units refuse a quantity of over 100)
+MAX_VALUE = 200
+# what follows a unit written once and is not unit: a label, a place, a direction
+_NOT_UNIT = re.compile(r"\s*(?:\(|\b(?:at|on|up|upwards?|down|downwards?|inner|outer)\b).*",
+                       re.S | re.I)
 # roots written with a comma and a space, or "and", between them (45.13 rpm, 533.5 rpm);
 # a comma inside a number (1,005) is no separator
 _LIST = re.compile(r",\s+(?=[-+\u2212\u2013]?[\d.])|\s+and\s+(?=[-+\u2212\u2013]?[\d.])")
@@ -206,9 +213,13 @@ def _normal_value(value: str, decimal_comma: bool = False) -> str:
     from ..core.csvsafe import plain_cell
 
     value = plain_cell(value).strip()
-    if decimal_comma:  # 965,4 is 965.4; 1.234,5 is 1234.5 (the dots group thousands)
+    if len(value) > MAX_VALUE:  # refused as it stands (units.MAX_TEXT): nothing to read
+        return value
+    if decimal_comma:  # 965,4 is 965.4; 1.234,5 is 1234.5 and 965.400 is 965400 (dots
+        # group thousands in such a class)
         value = _COMMA_NUMBER.sub(lambda m: m.group(1).replace(".", "") + "." + m.group(2),
                                   value, count=1)
+        value = _DOT_THOUSANDS.sub(lambda m: m.group(1).replace(".", ""), value, count=1)
     if _ABOUT.match(value):
         value = _ABOUT.sub("", value, count=1)
     if _DASH.match(value):
@@ -235,16 +246,18 @@ def written_values(values: Any, decimal_comma: bool = False) -> list[Any]:
     out: list[Any] = []
     for v in values:
         if isinstance(v, str):
-            out += [_normal_value(part, decimal_comma) for part in _LIST.split(v)]
+            parts = _LIST.split(v) if len(v) <= MAX_VALUE else [v]
+            out += [_normal_value(part, decimal_comma) for part in parts]
         else:
             out.append(v)
     out = [v for v in out if not (isinstance(v, str) and not v)]
     unit = None
     for k in range(len(out) - 1, -1, -1):
         value = out[k]
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            value = repr(value)  # YAML's number: a bare number as written
-        elif not isinstance(value, str):
+        if isinstance(value, (int, float)) and not isinstance(value, bool) and \
+                not decimal_comma:  # YAML's number: a bare number as written (under a
+            value = repr(value)     # decimal comma YAML has split 45,13 at its comma)
+        elif not isinstance(value, str) or len(value) > MAX_VALUE:
             unit = None
             continue
         if _BARE.fullmatch(value):
@@ -252,7 +265,8 @@ def written_values(values: Any, decimal_comma: bool = False) -> list[Any]:
                 out[k] = f"{value} {unit}"
             continue
         match = _NUMBER_AND_UNIT.fullmatch(value)
-        unit = match.group(1).strip() if match else None
+        # the unit alone: not the label or place words after it (62.95 N (B), 62.95 N at B)
+        unit = _NOT_UNIT.sub("", match.group(1)).strip() or None if match else None
     return out
 
 
@@ -673,6 +687,12 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
             problem = variants[planned.variant]
             # what the student's statement asks, as a bank asks it; another answer is `extra`
             questions[planned.problem] = graded_questions(problem)
+    # an answer's name written two ways (`Precession`, `precession`) is one answer
+    for s in submissions:
+        held = plan.by_item.get((s.student, s.problem)) or plan.by_variant.get(s.problem)
+        if held is not None and held.variant in variants:
+            s.answer = _answer_named(variants[held.variant], s.answer)
+    submissions = _merged(submissions)
     items: dict[tuple[str, str, str], Submission] = {}
     named: dict[tuple[str, str, str], str] = {}  # the sheet's id each item was given under
     notes: dict[tuple[str, str, str], list[str]] = {}
@@ -1053,8 +1073,14 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
             row.feedback = row.note
             return row
-    if any(p.side is None for p in parsed):  # placed by its label, each or none
-        parsed = [dataclasses.replace(p, side=None) for p in parsed]
+    if any(p.side is None for p in parsed) and any(p.side is not None for p in parsed):
+        # a place named for some values: theirs are kept, the others take the places left,
+        # in order (`35.15 N at B; 62.95 N` puts 62.95 N at A)
+        free = [k for k in range(len(reported.si_values))
+                if k not in {p.side for p in parsed}]
+        parsed = [p if p.side is not None else
+                  dataclasses.replace(p, side=free.pop(0) if free else len(parsed) + 99)
+                  for p in parsed]
     lines = graded_lines(name, parsed, tolerance, reported)
     passed = sum(line.passed for line in lines)
     row.points = round(passed / len(lines), 4) if lines else 0.0
@@ -1203,7 +1229,19 @@ def normal_word(value: Any) -> str:
     return " ".join(str(value).lower().split()).strip(" .!")
 
 
-_LABELLED = re.compile(r"(.*?)\s*\(\s*([^()]+?)\s*\)\s*", re.S)
+def _label_of(value: Any, labels: list[str]) -> tuple[str, int] | None:
+    """``45.13 rpm (slow)`` -> ("45.13 rpm", the index of ``slow`` among ``labels``) where
+    the bracket at the end names one of them; else None. No regular expression: a long
+    cell must not cost more than its length."""
+    if not isinstance(value, str) or not value.rstrip().endswith(")"):
+        return None
+    text = value.rstrip()
+    start = text.rfind("(")
+    if start < 0:
+        return None
+    word = text[start + 1:-1].strip().lower()
+    names = [x.lower() for x in labels]
+    return (text[:start].rstrip(), names.index(word)) if word and word in names else None
 
 
 def _student_value(value: Any, dimension: str, name: str, labels: list[str],
@@ -1215,11 +1253,10 @@ def _student_value(value: Any, dimension: str, name: str, labels: list[str],
     from .expected import _parse_worded
     from .matching import ordered
 
-    label = _LABELLED.fullmatch(value) if isinstance(value, str) else None
-    if label and label.group(2).lower() in {x.lower() for x in labels if x}:
-        place = [x.lower() for x in labels].index(label.group(2).lower())
-        read = parse_value(label.group(1), dimension, name)
-        return dataclasses.replace(read, side=place) if ordered(labels) else read
+    label = _label_of(value, labels)
+    if label is not None:
+        read = parse_value(label[0], dimension, name)
+        return dataclasses.replace(read, side=label[1]) if ordered(labels) else read
     if sides or signs:
         return _parse_worded(value, dimension, name, sides, signs)
     return parse_value(value, dimension, name)
@@ -1228,10 +1265,8 @@ def _student_value(value: Any, dimension: str, name: str, labels: list[str],
 def _unlabelled(value: Any, labels: list[str]) -> Any:
     """``45.13 rpm (slow)`` as ``45.13 rpm`` where ``slow`` is one of the answer's labels
     (for errors carried forward, which read values without their places)."""
-    label = _LABELLED.fullmatch(value) if isinstance(value, str) else None
-    if label and label.group(2).lower() in {x.lower() for x in labels if x}:
-        return label.group(1)
-    return value
+    label = _label_of(value, labels)
+    return label[0] if label is not None else value
 
 
 def _on_a_sheet(message: str) -> str:
