@@ -342,7 +342,7 @@ def test_a_canvas_gradebook_export_is_read_as_a_roster(run, tmp_path):
     roster = tmp_path / "canvas.csv"
     roster.write_text('Student,ID,SIS User ID,SIS Login ID,Section,HW 3 (123)\n'
                       '    Points Possible,,,,,2\n"Lee, Ann",101,S1,ann,A,\n'
-                      '"Roe, Bob",102,,bob,A,\n')
+                      '"Roe, Bob",102,,bob,A,\n"Student, Test",999,,,A,\n')
     done = run("vary", TOP, "--roster", roster, "-o", tmp_path / "hw")
     assert done.exit_code == 0, done.output
     rows = list(csv.DictReader((tmp_path / "hw" / "assignment.csv").open()))

@@ -181,7 +181,8 @@ def _canvas_gradebook(header: list[str], rows: list[tuple[int, list[str]]]
     """A Canvas gradebook export (or gyro's --out-format canvas) read as a roster: its
     ``Student`` column holds names, so the student is the SIS User ID, else the Canvas
     ID, and the name is kept as ``name``; the rows Canvas writes under the header for
-    the assignments (``Points Possible``, ``Manual Posting``) are no students. Read as
+    the assignments (``Points Possible``, ``Manual Posting``) and Canvas's ``Test Student``
+    (the teacher's Student View) are no students. Read as
     written, names had become ids ("Lee, Ann") and "Points Possible" a student."""
     at = {name: header.index(name) for name in ("student", "id", "sis user id")}
     named = [("name" if h == "student" else h) for h in header] + ["student"]
@@ -190,6 +191,8 @@ def _canvas_gradebook(header: list[str], rows: list[tuple[int, list[str]]]
         cells = cells + [""] * (len(header) - len(cells))
         if not cells[at["id"]].strip() and not cells[at["sis user id"]].strip():
             continue  # Points Possible, Manual Posting: a row of the gradebook's own
+        if " ".join(cells[at["student"]].split()) in ("Student, Test", "Test Student"):
+            continue  # Canvas's Student View, the teacher's own preview: no student
         sid = cells[at["sis user id"]].strip() or cells[at["id"]].strip()
         out.append((number, cells + [sid]))
     return named, out
