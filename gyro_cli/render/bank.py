@@ -83,9 +83,15 @@ class Variant:
         package's files to whoever can open the question (PrairieLearn's
         clientFilesQuestion), and a bicycle's plot prints its answers: a name no one can
         guess before the answer is shown, the same at every export."""
-        tag = self.figure_tag or (hashlib.sha256(self.figure).hexdigest()[:16]
-                                  if self.figure else "")
+        tag = self.figure_digest
         return f"figure-{self.number}-{tag}.png" if tag else f"figure-{self.number}.png"
+
+    @property
+    def figure_digest(self) -> str:
+        """16 hex digits of the picture's SHA-256 ("" without a picture), or the digest kept
+        where the PNG is not (``figure_tag``)."""
+        return self.figure_tag or (hashlib.sha256(self.figure).hexdigest()[:16]
+                                   if self.figure else "")
 
     def figure_html(self, src: str) -> str:
         """The picture as an ``<img>`` paragraph with ``src`` ("" without a picture)."""

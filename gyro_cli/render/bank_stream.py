@@ -286,8 +286,8 @@ class PrairieLearnSink(Sink):
 
         at = self.spool.tell()
         name = variant.figure_name
-        tag = name[len(f"figure-{variant.number}-"):-4] if variant.figure else ""
-        self.spool.write(pickle.dumps(dataclasses.replace(variant, figure=b"", figure_tag=tag)))
+        kept = dataclasses.replace(variant, figure=b"", figure_tag=variant.figure_digest)
+        self.spool.write(pickle.dumps(kept))
         size = self.spool.tell() - at
         self.spool.write(variant.figure)
         self.where.append((at, size, len(variant.figure), name))
