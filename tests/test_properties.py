@@ -348,10 +348,15 @@ def run_in_process():
     return _run
 
 
+# A value holding a line break is a cell over two lines, which the sheet's reader refuses
+# as a whole (tests/test_csv_one_line_cells.py): not a row to grade, so none is drawn.
 sheet_values = st.one_of(quantity("rate"), quantity("time"), near_miss,
                          st.sampled_from(["cusps", "Loops.", "WAVY", "steady precession", "",
-                                          "1e308 s", "965.4 rpm*", "nan rpm", "motion"]),
-                         st.text(alphabet="abcdefgh0123456789 .;,-+*/()^e", max_size=30))
+                                          "1e308 s", "965.4 rpm*", "nan rpm", "motion",
+                                          "45.13; 533.5 rpm", "≈965.4 rpm", "45.13 rpm (slow)",
+                                          "9.654×10^2 rpm", "965,4 rpm", "35.15 N at B"]),
+                         st.text(alphabet="abcdefgh0123456789 .;,-+*/()^e≈~–×·²⁻",
+                                 max_size=30)).filter(lambda v: "\n" not in v and "\r" not in v)
 
 
 @settings(max_examples=examples(150), **SETTINGS)
