@@ -321,11 +321,12 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                    "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
                    "the quiz's Student Analysis of a QTI bank), "
                    "regraded by gyro (errors carried forward too).")
-@click.option("--attempts", type=click.Choice(("latest", "best")), default="latest",
-              show_default=True,
-              help="With --responses moodle|canvas: regrade each student's latest attempt, "
-                   "or every attempt and keep the one with the most points (a quiz that "
-                   "keeps the highest grade).")
+@click.option("--attempts", type=click.Choice(("latest", "best", "first", "average")),
+              default="latest", show_default=True,
+              help="With --responses moodle|canvas: regrade each student's latest attempt; "
+                   "or every attempt, keeping the one with the most points (best), the first "
+                   "(first), or the mean of their points (average), as the quiz keeps a "
+                   "grade.")
 @click.option("--decimal-comma", is_flag=True,
               help="With --answers: the class writes a decimal comma (965,4 is 965.4; "
                    "1.234,5 is 1234.5); by default a comma in a number is refused as "
@@ -426,12 +427,12 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
     if attempts != "latest" and responses not in ("moodle", "canvas"):
         fail("--attempts goes with --responses moodle or canvas")
     if attempts != "latest" and student is not None:
-        fail("--attempts best grades a whole class's download, not one --student")
+        fail(f"--attempts {attempts} grades a whole class's download, not one --student")
     if responses and assignment:
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
         graded = _grade_responses(sheet, responses, paths, credit, student, reveal,
-                                  decimal_comma, attempts == "best") \
+                                  decimal_comma, attempts) \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal, decimal_comma=decimal_comma)
@@ -453,7 +454,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
                      credit: str | None, student: str | None,
                      reveal: bool, decimal_comma: bool = False,
-                     every_attempt: bool = False):  # type: ignore[no-untyped-def]
+                     attempts: str = "latest"):  # type: ignore[no-untyped-def]
     """Grade a platform's download of responses: read as a gyro answer sheet (written to
     a scratch file that is removed after)."""
     import tempfile
@@ -462,6 +463,7 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
 
     notes: list[str] = []
+    every_attempt = attempts != "latest"
     if platform == "moodle":
         text, people = moodle_sheet(download, paths, decimal_comma, every_attempt, notes)
     elif platform == "canvas":
@@ -478,7 +480,7 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
     if every_attempt:
         from .commands.responses import best_of_attempts
 
-        graded = best_of_attempts(graded)
+        graded = best_of_attempts(graded, attempts)
     return graded
 
 

@@ -286,3 +286,39 @@ def test_moodle_best_attempt_and_a_blank_attempt(run, tmp_path, moodle):
     refused = run("check", "--answers", path, "--responses", "moodle", problem, "--attempts",
                   "best", "--student", "ann@x.edu")
     assert refused.exit_code == 2
+
+
+@pytest.mark.parametrize(("keep", "ann"), [("latest", 0.0), ("best", 2.0), ("first", 2.0),
+                                           ("average", 1.0)])
+def test_canvas_attempts_kept_as_the_quiz_keeps_them(run, tmp_path, canvas, keep, ann):
+    """Ann's first attempt right (2 points), her second wrong (0): the quiz keeps the
+    latest (0), the highest (2), the first (2) or the average (1). A quiz that keeps the
+    first or the average had no regrade mode (left open two sessions)."""
+    problem, texts, right = canvas
+    rows = [["Ann Lee", "101", "S1", "1", *right], ["Ann Lee", "101", "S1", "2", "1", "1", "1"],
+            ["Bob Roe", "102", "S2", "1", *right]]
+    path = canvas_analysis(tmp_path, texts, rows)
+    assert _scores(run, path, problem, "canvas", "--attempts", keep) == {"S1": ann, "S2": 2.0}
+    done = run("check", "--answers", path, "--responses", "canvas", problem, "--attempts", keep,
+               "--format", "json")
+    data = json.loads(done.stdout)
+    assert len(data["rows"]) == 4  # each student's two questions, once
+    if keep == "average":
+        assert "the mean of their attempts' points" in done.stderr
+        # the rows shown are the latest attempt's
+        assert {r["result"] for r in data["rows"] if r["student"] == "S1"} == {"wrong"}
+
+
+@pytest.mark.parametrize(("keep", "ann"), [("latest", 2.0), ("best", 2.0), ("first", 0.0),
+                                           ("average", 1.0)])
+def test_moodle_attempts_kept_as_the_quiz_keeps_them(run, tmp_path, moodle, keep, ann):
+    """Moodle's grading methods (highest, average, first, last): Ann started a wrong
+    attempt on 1 January and a right one on 2 January, the report listing the newest
+    first; the first is the one started first, whatever the rows' order."""
+    problem, right = moodle
+    rows = [["Lee", "Ann", "ann@x.edu", "Finished", "2 January 2027, 9:00 AM", "", "", "3",
+             _cell(right)],
+            ["Lee", "Ann", "ann@x.edu", "Finished", "1 January 2027, 9:00 AM", "", "", "0",
+             _cell(["1", "1", "1"])]]
+    assert _scores(run, _moodle(tmp_path, rows), problem, "moodle", "--attempts", keep) == \
+        {"ann@x.edu": ann}

@@ -829,21 +829,35 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
     return graded
 
 
-def best_attempts(graded: Graded, attempt_of: str, attempt_number: str) -> Graded:
+def best_attempts(graded: Graded, attempt_of: str, attempt_number: str,
+                  keep: str = "best") -> Graded:
     """A grading of every attempt (entries whose identity in ``graded.people`` names their
     student under ``attempt_of`` and the attempt's number under ``attempt_number``) as a
-    grading of students: each student's attempt with the most points regraded (of equal
-    ones the later), its rows and score theirs; a platform that keeps the highest grade
-    keeps it so."""
+    grading of students, as the quiz keeps a grade (``keep``):
+
+    - ``best``: each student's attempt with the most points regraded (of equal ones the
+      later), its rows and score theirs (a quiz that keeps the highest grade);
+    - ``first``: the first attempt's (a quiz that keeps the first);
+    - ``average``: the score the mean of the attempts' points, the rows the latest
+      attempt's, a note saying so (a quiz that keeps the average)."""
+    def number(entry: str) -> int:
+        text = graded.people.get(entry, {}).get(attempt_number, "0")
+        return int(text) if text.isdigit() else 0
+
     def rank(entry: str) -> tuple[float, int]:
-        number = graded.people.get(entry, {}).get(attempt_number, "0")
-        return graded.scores[entry][0], int(number) if number.isdigit() else 0
+        if keep == "first":
+            return (0.0, -number(entry))
+        if keep == "average":
+            return (0.0, number(entry))  # the latest attempt's rows are shown
+        return graded.scores[entry][0], number(entry)
 
     from collections import Counter
 
-    best: dict[str, str] = {}  # student -> their best attempt's entry
+    best: dict[str, str] = {}  # student -> their kept attempt's entry
+    tried: dict[str, list[str]] = {}  # student -> every attempt's entry
     for entry in graded.scores:
         student = graded.people.get(entry, {}).get(attempt_of, entry)
+        tried.setdefault(student, []).append(entry)
         if student not in best or rank(entry) >= rank(best[student]):
             best[student] = entry
     kept = {entry: student for student, entry in best.items()}
@@ -852,14 +866,23 @@ def best_attempts(graded: Graded, attempt_of: str, attempt_number: str) -> Grade
         row.student = kept[row.student]
     tries = Counter(graded.people.get(e, {}).get(attempt_of, e) for e in graded.scores)
     several = sum(1 for n in tries.values() if n > 1)
-    graded.scores = {student: graded.scores[entry] for student, entry in best.items()}
+    scores = {student: graded.scores[entry] for student, entry in best.items()}
+    if keep == "average":
+        scores = {student: (round(sum(graded.scores[e][0] for e in tried[student])
+                                  / len(tried[student]), 4), graded.scores[entry][1])
+                  for student, entry in best.items()}
+    graded.scores = scores
     graded.people = {student: {k: v for k, v in graded.people.get(entry, {}).items()
                                if k not in (attempt_of, attempt_number)}
                      for student, entry in best.items()}
     graded.sheet_students = list(best)
     if several:
+        how = {"best": "the attempt with the most points regraded",
+               "first": "their first attempt",
+               "average": "the mean of their attempts' points regraded (the rows shown are "
+                          "the latest attempt's)"}[keep]
         graded.notes.append(f"{several} student(s) made several attempts: each is graded on "
-                            "the attempt with the most points regraded")
+                            f"{how}")
     return graded
 
 

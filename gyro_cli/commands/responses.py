@@ -187,12 +187,12 @@ ATTEMPT_OF = "attempt of"
 ATTEMPT_NUMBER = "attempt number"
 
 
-def best_of_attempts(graded: Any) -> Any:
+def best_of_attempts(graded: Any, keep: str = "best") -> Any:
     """A grading of a download read with every attempt as one of its students, each on
-    their best attempt (`checking.grades.best_attempts`)."""
+    the attempt the quiz keeps, or their attempts' mean (`checking.grades.best_attempts`)."""
     from ..checking.grades import best_attempts
 
-    return best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER)
+    return best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER, keep)
 
 
 def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
