@@ -43,6 +43,17 @@ class Sheet:
     name: str  # how the cover names the student ("" for everyone)
     problems: list[Any] = field(default_factory=list)  # solving.problem.Problem
     variants: list[str] = field(default_factory=list)  # the assigned problem id of each
+    results: list[Any] = field(default_factory=list)  # each problem solved (`solved`)
+
+
+def solved(sheet: Sheet) -> list[Any]:
+    """Each problem of the sheet solved, once: its answer line, its worked answer and the
+    teacher's key read the one result."""
+    if len(sheet.results) != len(sheet.problems):
+        from ..solving.solve import solve
+
+        sheet.results = [solve(problem) for problem in sheet.problems]
+    return sheet.results
 
 
 def _load_all(paths: list[str]) -> list[Any]:
@@ -123,7 +134,7 @@ def statement_of(problem: Any) -> str:
 _COUNT = {2: "two", 3: "three", 4: "four"}
 
 
-def answer_form(problem: Any, pid: str) -> str:
+def answer_form(problem: Any, result: Any, pid: str) -> str:
     """How to write the answers on a sheet (docs/check.md): the problem id, then each
     question graded (`graded_questions`) with its unit, how many values it takes and
     their order. ``Answer as problem 11/3-ann: precession in rpm, two values (slow; fast,
@@ -131,9 +142,7 @@ def answer_form(problem: Any, pid: str) -> str:
     from ..checking.grades import reported
     from ..checking.matching import ordered
     from ..solving.problem import graded_questions
-    from ..solving.solve import solve
 
-    result = solve(problem)
     parts = []
     for name in graded_questions(problem):
         answer = reported(result, name)
@@ -164,20 +173,20 @@ def answer_form(problem: Any, pid: str) -> str:
 def latex_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
     from ..render.mathprint import text_escape
     from ..render.writeup import PREAMBLE, latex
-    from ..solving.solve import solve
 
     heading = f"{course} -- {title}" if course else title
     body = [PREAMBLE, f"\\title{{{text_escape(heading)}}}",
             f"\\author{{{text_escape(sheet.name)}}}" if sheet.name else "\\author{}",
             "\\date{}", "\\begin{document}", "\\maketitle", ""]
-    for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
+    for k, (problem, result, pid) in enumerate(zip(sheet.problems, solved(sheet),
+                                                   sheet.variants), 1):
         body.append(f"\\section*{{Problem {k} ({text_escape(str(pid))})}}")
         body.append(text_escape(statement_of(problem)))
         body.append("")
-        body.append(f"\\emph{{{text_escape(answer_form(problem, str(pid)))}}}")
+        body.append(f"\\emph{{{text_escape(answer_form(problem, result, str(pid)))}}}")
         body.append("")
         if solutions:
-            body.append(latex(solve(problem), level="subsection*"))
+            body.append(latex(result, level="subsection*"))
     body.append("\\end{document}")
     return "\n".join(body) + "\n"
 
@@ -208,19 +217,19 @@ def compile_pdf(tex: str) -> bytes:
 
 def html_sheet(sheet: Sheet, course: str, title: str, solutions: bool) -> str:
     from ..render import html
-    from ..solving.solve import solve
 
     heading = f"{course}: {title}" if course else title
     body = [f"<h1>{escape(heading)}</h1>"]
     if sheet.name:
         body.append(f"<p>For {escape(sheet.name)}</p>")
-    for k, (problem, pid) in enumerate(zip(sheet.problems, sheet.variants), 1):
+    for k, (problem, result, pid) in enumerate(zip(sheet.problems, solved(sheet),
+                                                   sheet.variants), 1):
+        form = answer_form(problem, result, str(pid))
         body.append(f"<section aria-labelledby=\"p{k}\"><h2 id=\"p{k}\">Problem {k} "
                     f"({escape(str(pid))})</h2>\n<p>{escape(statement_of(problem))}</p>\n"
-                    f"<p class=\"answer-form\"><em>{escape(answer_form(problem, str(pid)))}"
-                    "</em></p>")
+                    f"<p class=\"answer-form\"><em>{escape(form)}</em></p>")
         if solutions:
-            body.append(html.worked_answer(solve(problem), level=3, ident=f"solution-{k}"))
+            body.append(html.worked_answer(result, level=3, ident=f"solution-{k}"))
         body.append("</section>")
     return html.document(heading + (f" ({sheet.name})" if sheet.name else ""), "\n".join(body))
 
@@ -233,14 +242,12 @@ def key_csv(sheets_: list[Sheet]) -> str:
     statement asks, `ask:`), not every answer the kind computes."""
     from ..checking.grades import _correct_text, reported
     from ..solving.problem import graded_questions
-    from ..solving.solve import solve
 
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["student", "problem", "variant", "answer", "correct"])
     for sheet in sheets_:
-        for problem, pid in zip(sheet.problems, sheet.variants):
-            result = solve(problem)
+        for problem, result, pid in zip(sheet.problems, solved(sheet), sheet.variants):
             for name in graded_questions(problem):
                 writer.writerow([safe_cell(c) for c in (sheet.student or "", pid, problem.id,
                                                        name,
