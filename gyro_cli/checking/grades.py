@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from typing import Any, TypedDict
 
 from ..core.errors import InputError
+from ..core.units import MANTISSA, NUMBER, SUPERSCRIPT, SUPERSCRIPTS
 from ..core.work import num
 from . import check
 from .copies import Match, VariantIndex, whose
@@ -178,19 +179,17 @@ def _read_csv(path: str, decimal_comma: bool = False) -> list[Submission]:
 
 
 # A number alone, as units._NUMBER reads one (the rest of a value is its unit).
-_BARE = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+\u2212]?\d{1,3})?\s*")
-_NUMBER_AND_UNIT = re.compile(r"\s*[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)"
-                              r"(?:[eE][-+\u2212]?\d{1,3})?\s*([^\d\s.+\-\u2212].*|1\s*/.*)")
+_BARE = re.compile(rf"\s*{NUMBER}\s*")
+_NUMBER_AND_UNIT = re.compile(rf"\s*{NUMBER}\s*([^\d\s.+\-\u2212].*|1\s*/.*)")
 # "about": the signs students put before a rounded value (≈ 965.4 rpm, ~965.4 rpm)
 _ABOUT = re.compile(r"\s*[\u2248\u2243~]\s*")
 # a dash before a number as word processors write it (en dash, hyphen, figure dash); a
 # hyphen and a space stay as written (a list's bullet, "- 45.13 rpm", is no minus)
 _DASH = re.compile(r"[\u2010\u2011\u2012\u2013\u2014]\s*(?=[\d.])")
 # 9.654×10^2, 9.654 x 10^2, 9.654*10**2, 9.654·10²
-_SUPER = "\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
-_TIMES_TEN = re.compile(r"([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+))\s*[x\u00d7X*\u00b7\u22c5]\s*10"
-                        r"(?:\s*(?:\^|\*\*)\s*\(?\s*([-+\u2212]?\d{1,3})\s*\)?|([" + _SUPER + r"]+))"
-                        r"(?![\d" + _SUPER + r"])(.*)", re.S)
+_TIMES_TEN = re.compile(rf"({MANTISSA})\s*[x\u00d7X*\u00b7\u22c5]\s*10"
+                        r"(?:\s*(?:\^|\*\*)\s*\(?\s*([-+\u2212]?\d{1,3})\s*\)?|([" + SUPERSCRIPT
+                        + r"]+))(?![\d" + SUPERSCRIPT + r"])(.*)", re.S)
 # a number with a decimal comma, at the start of a value (after a sign or an about sign)
 _COMMA_NUMBER = re.compile(r"(?<![\d.,])(\d{1,3}(?:\.\d{3})+|\d+),(\d+)(?![\d,])")
 # under a decimal comma, dots that group thousands (965.400, 1.234.567) in a number alone
@@ -227,7 +226,7 @@ def _normal_value(value: str, decimal_comma: bool = False) -> str:
     power = _TIMES_TEN.fullmatch(value)
     if power:
         number, caret, raised, rest = power.groups()
-        exponent = caret or raised.translate(str.maketrans(_SUPER, "-+0123456789"))
+        exponent = caret or raised.translate(SUPERSCRIPTS)
         value = f"{number}e{exponent.replace(chr(0x2212), '-')} {rest.strip()}".strip()
     if value.endswith(".") and value[-2:-1].isalpha():
         unit = _NUMBER_AND_UNIT.fullmatch(value)

@@ -64,7 +64,9 @@ MAX_DEPTH = 8   # brackets nested in one unit
 # Regular expressions are compiled on first use (re keeps them): a compile at import is
 # up to 0.2 ms of every run, used or not.
 # A sign may be U+2212, the minus sign gyro's pages and handouts print (copied from them).
-_NUMBER = r"(?s)\s*([-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+\u2212]?\d{1,3})?)(.*)"
+MANTISSA = r"[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)"
+NUMBER = MANTISSA + r"(?:[eE][-+\u2212]?\d{1,3})?"  # a quantity's number (a sheet's too)
+_NUMBER = rf"(?s)\s*({NUMBER})(.*)"
 _NAME_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_°µΩ")
 _NAME_CHARS = _NAME_START | frozenset("0123456789")
 
@@ -291,8 +293,8 @@ def _names(unit: str) -> list[str]:
 # keyboards (º, ˚), as the tokenizer reads them: a product as a space, a power as ^n.
 _DOTS = str.maketrans({"\u00b7": " ", "\u22c5": " ", "\u2022": " ", "\u00ba": "\u00b0",
                        "\u02da": "\u00b0"})
-_SUPERSCRIPTS = str.maketrans("\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076"
-                              "\u2077\u2078\u2079", "-+0123456789")
+SUPERSCRIPT = "\u207b\u207a\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079"
+SUPERSCRIPTS = str.maketrans(SUPERSCRIPT, "-+0123456789")  # ⁻¹² as -12
 
 
 def _plain_unit(unit: str) -> str:
@@ -302,7 +304,7 @@ def _plain_unit(unit: str) -> str:
 
     unit = unit.translate(_DOTS)
     return re.sub("[\u207b\u207a]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+",
-                  lambda m: "^" + m.group().translate(_SUPERSCRIPTS), unit)
+                  lambda m: "^" + m.group().translate(SUPERSCRIPTS), unit)
 
 
 def _split(text: Any, key: str, known: tuple[str, bool] | None = None) -> tuple[float, str]:
