@@ -144,6 +144,50 @@ def test_khurmi_wheel_drop_harmonic(problems_dir):
                                                          pytest.approx(-C / L, rel=1e-9)]
 
 
+def test_a_wheel_drops_the_couple_is_about_the_vertical_and_its_forces_along_the_track(write):
+    # Axes: x along the track, y the axle (A to B), z up. The drop tilts the axle about x at
+    # Omega, so dH/dt = Omega x_hat x (J spin y_hat) = J spin Omega z_hat: a couple about the
+    # vertical, whose forces at the wheels (L apart along y) lie along x, the track. The
+    # weight (along -z) is across them: with the mass given they are still +-M / L, and
+    # nothing says the couple loads or relieves a rail.
+    import numpy as np
+
+    from gyro_cli.render import report
+
+    J, spin, Omega, L, m = 180.0, 95 / 3.6 / 0.9, 0.003 * (2 * math.pi / 0.1) / 1.5, 1.5, 2000.0
+    dH = np.cross([Omega, 0, 0], [0, J * spin, 0])
+    assert dH[0] == dH[1] == 0 and dH[2] == pytest.approx(663.23, abs=0.01)
+    force = dH[2] / L                            # each wheel's, along the track
+    path = write(f"""\
+        id: x
+        kind: gyroscopic_torque
+        given: {{J: 180 kg m^2, speed: 95 km/h, wheel_radius: 0.9 m, drop: 6 mm,
+                drop_time: 0.1 s, bearing_spacing: 1.5 m, supported_mass: {m} kg}}
+        find: {{moment: N m, couple_forces: N, bearing_forces: N}}
+        """)
+    result = solve_file(path)
+    for key in ("couple_forces", "bearing_forces"):   # 10,250 N had been printed: + weight
+        assert result.answers[key].si_values == [pytest.approx(force, rel=1e-9),
+                                                 pytest.approx(-force, rel=1e-9)]
+    text = report.text(result)
+    assert "(down)" not in text and "couple about the vertical" in text
+    assert "relieved" not in text and "along the track: one forward and the other back" in text
+    assert "the weight (vertical) not among them" in text
+
+
+def test_a_wheel_drop_refuses_loads_that_need_a_vertical_precession_axis(run, write):
+    path = write("""\
+        id: x
+        kind: gyroscopic_torque
+        given: {J: 180 kg m^2, spin: 30 rad/s, drop: 6 mm, drop_time: 0.1 s,
+                bearing_spacing: 1.5 m, mass: 2000 kg}
+        find: {bearing_loads: N}
+        """)
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1, out.stderr
+    assert "find.bearing_loads" in out.stderr and "ask couple_forces" in out.stderr
+
+
 def test_wheel_drop_over_a_length_at_a_speed(write):
     # Rail wheels (J = 2 kg m^2 each pair), r_w = 0.5 m at 72 km/h; one wheel drops 10 mm
     # over 2 m of track, gauge 1.5 m. The drop lasts 2 / 20 = 0.1 s, the axle turns through

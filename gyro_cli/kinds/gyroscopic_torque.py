@@ -222,7 +222,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         M = work.step("M", Omega * sin_(_theta(theta)) * (
             J_ * _rate("omega_z", axial) - I_ * Omega * _cos(theta)), unit="N*m",
             ref="Eq. 11.29 generalised")
-    _sense(M, work)
+    _sense(M, drop, work)
     work.answer("moment", "M", [M], "moment")
     work.answer("precession", "Omega", [precession], "rate")
     work.check(*_H_CONSTANT, rel(_RATE_OF_H, "=", _TURNING_H, "=", q(abs(M), "N m")))
@@ -404,24 +404,28 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
                      "written without cancellation")
 
 
-def _sense_of(positive: bool) -> tuple:
-    """Where the moment points and which end of the axis it pushes down."""
+def _sense_of(positive: bool, drop: bool) -> tuple:
+    """Where the moment points and which way it pushes the end of the axis: down when K is
+    up; along the track when a wheel drops (K along the track, n vertical: a yawing couple)."""
+    toward = (" (along the track): a couple about the vertical, which would swerve the wheel "
+              "set",) if drop else (" (down)",)
     return ("Sense: the moment the bearings exert on the rotor points along ",
             signed("+", n0) if positive else -n0, ", the line of nodes; it turns the spin axis "
             "about ", n0, " so that the ", B0 if positive else A0, " end of the axis is pushed "
-            "toward ", -K0, " (down). The rotor exerts the equal and opposite moment on its "
+            "toward ", -K0, *toward, ". The rotor exerts the equal and opposite moment on its "
             "frame.")
 
 
 _NO_MOMENT = (rel(M0, "=", 0), ": no moment is needed")
-_SENSE = {positive: _sense_of(positive) for positive in (True, False)}
+_SENSE = {(positive, drop): _sense_of(positive, drop)
+          for positive in (True, False) for drop in (True, False)}
 
 
-def _sense(M: float, work: Work) -> None:
+def _sense(M: float, drop: bool, work: Work) -> None:
     if M == 0:
         work.text(*_NO_MOMENT)
         return
-    work.text(*_SENSE[M > 0])
+    work.text(*_SENSE[M > 0, drop])
 
 
 _BEARING_FORCES = (F_A0, ", ", F_B0, ": forces of the bearings on the rotor, perpendicular to "
@@ -476,14 +480,17 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
         raise InputError(f"cg_position {num(a)} m puts the centre of mass outside the bearings "
                          f"(0 to {num(L)} m from A); write `arrangement: overhung` if the rotor "
                          "really overhangs a bearing", key="given.cg_position")
-    if "supported_mass" not in given and (body.mass is None or "drop" in given):
+    # a wheel's drop: the couple's forces are along the track, the weight vertical, so the
+    # two are never summed, whatever mass is given
+    if "drop" in given or ("supported_mass" not in given and body.mass is None):
         wanted = sorted(find & {"bearing_side_forces", "bearing_loads", "axial_thrust"})
         if wanted:
+            if "drop" in given:
+                raise InputError(f"{wanted[0]} needs a vertical precession axis, and a wheel's "
+                                 "drop tilts the axle about the track: ask couple_forces (the "
+                                 "couple's forces, along the track)", key=f"find.{wanted[0]}")
             raise InputError(f"{wanted[0]} needs the mass the bearings carry (mass, weight or "
-                             "supported_mass)" + (" and a vertical precession axis" if "drop"
-                                                  in given else "") +
-                             "; couple_forces needs none", key="given.mass"
-                             if "drop" not in given else f"find.{wanted[0]}")
+                             "supported_mass); couple_forces needs none", key="given.mass")
         _couple_only(given, M, L, "bearing_forces" in find, work)
         return
     m = given["supported_mass"] if "supported_mass" in given else body.m
@@ -566,10 +573,19 @@ _NO_MASS = ("no mass is given",)
 _COUPLE_SHARE = (": the forces below are the gyroscopic couple's share alone, equal and opposite "
                  "at ", A0, " and ", B0, "; the static load (the weight's share) is added to them "
                  "where the weight is known")
+# a wheel drops: K lies along the track and the couple is about the vertical, so its forces
+# are horizontal, fore and aft, and the weight (vertical) is never added to them
+_COUPLE_ALONG_TRACK = (": the forces below are the gyroscopic couple's alone, equal and "
+                       "opposite at ", A0, " and ", B0, " and horizontal, along the track "
+                       "(along ", K0, "); the weight is vertical, across them, and the couple "
+                       "changes no wheel's vertical load")
 _ON_THE_ROTOR = ("on the rotor at ", A0)
 _ON_THE_ROTOR_UP = _ON_THE_ROTOR + (", toward ", signed("+", K0))
 _PUSHES_BACK = ("the rotor pushes each bearing (rail) the other way: one is loaded by ",
                 absolute(M0) / L0, " more, the other relieved by as much")
+_PUSHES_ALONG_TRACK = ("the wheel set pushes each rail (through its axle box and flange) the "
+                       "other way, along the track: one forward and the other back by ",
+                       absolute(M0) / L0)
 _PLUS_MINUS_SHARE = signed("+-", M0) / L0  # +-M / L
 _COUPLE_OF_FORCES = names("F_A,couple")[0] * L0
 _FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
@@ -578,21 +594,23 @@ _FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
 def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> None:
     """No mass (or a tilting axle): the couple's share of the bearing forces alone."""
     work.section("Forces of the gyroscopic couple on the bearings (rails)")
-    why_pieces = _TILTS if "drop" in given else _NO_MASS
-    work.text(*why_pieces, *_COUPLE_SHARE)
+    drop = "drop" in given
+    why_pieces = _TILTS if drop else _NO_MASS
+    work.text(*why_pieces, *(_COUPLE_ALONG_TRACK if drop else _COUPLE_SHARE))
     F_A, F_B = couple_forces(M, L)
     M_, L_ = Sym("M", M, "N m"), Sym("L", L, "m")
     on_A, on_B = couple_forces(M_, L_)
     work.step("F_A,couple", on_A, unit="N", note=_ON_THE_ROTOR_UP if M >= 0 else _ON_THE_ROTOR)
     work.step("F_B,couple", on_B, unit="N")
-    work.text(*_PUSHES_BACK)
+    work.text(*(_PUSHES_ALONG_TRACK if drop else _PUSHES_BACK))
     work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
     work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])
     if warn:
-        work.warn(*why_pieces, ": bearing_forces are the gyroscopic couple's share alone, ",
+        work.warn(*why_pieces, ": bearing_forces are the gyroscopic couple's "
+                  + ("forces, along the track, " if drop else "share alone, "),
                   rel(_PLUS_MINUS_SHARE, "=", signed("+-", q(abs(F_A), "N"))),
-                  ", without the weight's share" +
-                  ("" if "drop" in given else " (give mass for the whole force)"))
+                  ", the weight (vertical) not among them" if drop else
+                  ", without the weight's share (give mass for the whole force)")
     work.check(rel(_COUPLE_OF_FORCES, "=", q(F_A * L, "N m"), "=", M0, "=", q(M, "N m")),
                *_FORCES_CANCEL)
 
