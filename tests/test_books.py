@@ -825,3 +825,19 @@ def test_gyro_check_passes_on_the_books_folder(run, problems_dir, tmp_path):
     out = run("check", folder)
     assert out.exit_code == 0, out.stdout + out.stderr
     assert f"in {len(BOOKS_WORDS)} problems" in out.stdout and "0 failed" in out.stdout
+
+
+@pytest.mark.parametrize("name, axis", [
+    ("ship_pitching_6000kg.yaml", "athwartships as it pitches"),
+    ("ship_stabiliser_hospital_ship.yaml", "stabiliser's frame is turned, athwartships"),
+    ("aeroplane_outside_loop.yaml", "about its lateral axis in a loop"),
+])
+def test_a_pitch_or_a_loop_is_not_called_a_turn_about_the_vertical(problems_dir, name, axis):
+    # Pitching turns the spin axis about the athwartship axis and a loop about the lateral
+    # one (the worked answer's own omega_p = v / R step says so): the conventions had called
+    # omega_p "the turn's angular velocity, about the vertical" for every vehicle.
+    from gyro_cli.render import report
+
+    text = report.text(solve_file(str(problems_dir / name)))
+    assert "the turn's angular velocity, about the vertical" not in text
+    assert axis in text

@@ -16,11 +16,13 @@ COUPLE = cross(_WP, _H)
 ALONG_LEFT = ("along ", plus(names("x y z")[1]), " (left) if positive")
 
 
-def reactive_couple(vehicle: str, rotors: str = "rotor") -> tuple:
-    """The pieces of ``H: the angular momentum ...; couple on the rotor C = omega_p x H
-    (Eq. 11.29); the ship feels the reactive couple -C``, for the kind to finish."""
-    return (_H, ": the angular momentum of the spinning parts; ", _WP, ": the precession (the "
-            f"turn's angular velocity, about the vertical); couple on the {rotors} ",
+def reactive_couple(vehicle: str, rotors: str = "rotor",
+                    precession: str = "the turn's angular velocity, about the vertical") -> tuple:
+    """The pieces of ``H: the angular momentum ...; omega_p: the precession (``precession``);
+    couple on the rotor C = omega_p x H (Eq. 11.29); the ship feels the reactive couple -C``,
+    for the kind to finish."""
+    return (_H, ": the angular momentum of the spinning parts; ", _WP, f": the precession "
+            f"({precession}); couple on the {rotors} ",
             rel(_C, "=", COUPLE), f" (Eq. 11.29); the {vehicle} feels the reactive "
             "couple ", -_C)
 

@@ -32,7 +32,9 @@ _AXES = ("aeroplane axes: ", x, " forward (toward the nose), ", y, " to the left
          "forward), ", z, " up. The engine's axis lies fore and aft. A rotation that looks "
          "clockwise to an observer has its vector pointing away from the observer "
          "(right-hand rule).")
-_REACTIVE = (*reactive_couple("aeroplane"), ". About ", -y, " it raises the nose; about ",
+_REACTIVE = (*reactive_couple("aeroplane", precession="the aeroplane's angular velocity: about "
+                                                   "the vertical in a turn, about its lateral "
+                                                   "axis in a loop or a pull-out"), ". About ", -y, " it raises the nose; about ",
              plus(y), " it dips it; about ", plus(z), " it turns the nose to the left.")
 _FORWARD, _AFT = plus(x), -x
 _COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", COUPLE))

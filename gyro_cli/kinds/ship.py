@@ -41,8 +41,10 @@ _AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to port (left, lo
          "observer has its vector pointing away from the observer (right-hand rule).")
 #: the axes' senses as the sentences write them: +x forward, -x aft, +z up, ...
 _PLUS_X, _MINUS_X, _PLUS_Y, _MINUS_Y, _PLUS_Z, _MINUS_Z = plus(x), -x, plus(y), -y, plus(z), -z
-_REACTIVE = (*reactive_couple("ship"), ". About ", _MINUS_Y, " it raises the bow; about ",
-             _PLUS_Z, " it turns the ship to port.")
+_TURNS = "the ship's angular velocity: about the vertical as it steers, athwartships as it " \
+    "pitches, fore and aft as it rolls"
+_REACTIVE = (*reactive_couple("ship", precession=_TURNS), ". About ", _MINUS_Y, " it raises the "
+             "bow; about ", _PLUS_Z, " it turns the ship to port.")
 _COUPLE_TITLE = ("Gyroscopic couple, ", rel(C0, "=", COUPLE))
 _NO_ROLLING_COUPLE = (wp0, " lies along ", x, ", parallel to ", H0, ": ", rel(COUPLE, "=", 0),
                       ". Rolling gives no gyroscopic couple.")
@@ -280,9 +282,10 @@ _STABILISER_AXES = ("ship axes: ", x, " forward (toward the bow), ", y, " to por
                     " up. The stabiliser's rotor spins about the vertical; its frame is turned "
                     "(precessed) about the athwartship axis ", y, ", the top of the axle moving "
                     "forward (about ", _PLUS_Y, ") or aft (about ", _MINUS_Y, ").")
-_STABILISER_REACTIVE = (*reactive_couple("ship"), ", here about the fore-and-aft axis: about ",
-                        _PLUS_X, " it lifts the port side, about ", _MINUS_X, " the starboard "
-                        "side. (", wp0, ": the precession of the stabiliser's frame.)")
+_STABILISER_REACTIVE = (*reactive_couple("ship", precession="the rate at which the "
+                                         "stabiliser's frame is turned, athwartships"),
+                        ", here about the fore-and-aft axis: about ", _PLUS_X, " it lifts the "
+                        "port side, about ", _MINUS_X, " the starboard side.")
 
 
 def _stabilising(given: Given, find: frozenset[str], work: Work, J: float, spin: float) -> None:
