@@ -830,16 +830,18 @@ def check_stream(paths: Iterable[str], /, *, strict: bool = False, jobs: int = 1
 
 def grade(sheet: str, paths: Iterable[str], /, *, assignment: str | None = None,
           credit: str | None = None, student: str | None = None,
-          reveal: bool = False, decimal_comma: bool = False) -> Graded:
+          reveal: bool = False, decimal_comma: bool = False, hints: bool = True) -> Graded:
     """Grade the answer sheet ``sheet`` (a CSV of students' answers) against the problems
     under ``paths``, or each student's own variant by ``assignment``, as ``gyro check
     --answers`` does; ``credit`` "SLIP=SHARE,..." gives part credit for a known slip;
-    ``decimal_comma``: the class writes ``965,4`` for 965.4."""
+    ``decimal_comma``: the class writes ``965,4`` for 965.4; ``hints=False`` (``--no-hints``):
+    each row's ``feedback`` says only whether a value is right."""
     from .checking import grades
 
     policy = grades.parse_credit(credit) if credit is not None else None
-    return grades.grade(sheet, list(paths), assignment=assignment, credit=policy,
-                        student=student, reveal=reveal, decimal_comma=decimal_comma)
+    graded = grades.grade(sheet, list(paths), assignment=assignment, credit=policy,
+                          student=student, reveal=reveal, decimal_comma=decimal_comma)
+    return graded if hints else grades.withhold_hints(graded)
 
 
 def _keep(solved: dict, key: str, problem_of) -> None:

@@ -350,6 +350,11 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
 @click.option("--reveal", is_flag=True,
               help="With --feedback or a Gradescope / PrairieLearn --out: show each student "
                    "the answers they did not get right (after the due date).")
+@click.option("--no-hints", "no_hints", is_flag=True,
+              help="With --feedback, --student or a Gradescope / PrairieLearn --out: tell "
+                   "each student only whether each value is right, not too high or too low, "
+                   "its likely slip or its place (with resubmissions those lead to the "
+                   "answer).")
 @click.option("--assignment", metavar="ASSIGNMENT.csv",
               help="With --answers: grade each student only on their own variants, as "
                    "ASSIGNMENT.csv (from gyro vary --roster) gives them; PATHS optional.")
@@ -369,7 +374,7 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
           shard: str | None = None, merge: bool = False, student: str | None = None,
           responses: str | None = None, decimal_comma: bool = False,
-          attempts: str = "latest") -> None:
+          attempts: str = "latest", no_hints: bool = False) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -381,9 +386,9 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("give the problem files or directories to check (PATHS)")
     if sheet is None:
         if assignment or credit is not None or feedback_dir or student is not None or reveal \
-                or responses or decimal_comma:
-            fail("--assignment, --credit, --feedback, --student, --reveal, --responses and "
-                 "--decimal-comma go with --answers SHEET")
+                or responses or decimal_comma or no_hints:
+            fail("--assignment, --credit, --feedback, --student, --reveal, --no-hints, "
+                 "--responses and --decimal-comma go with --answers SHEET")
         if out or (force and not html_file) or out_format != "grades":
             fail("--out and --out-format go with --answers SHEET, --force with --out or --html")
         if merge and (shard or html_file or jobs):
@@ -410,6 +415,10 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("--out-format goes with --out FILE")
     if reveal and not (feedback_dir or out_format in ("gradescope", "prairielearn")):
         fail("--reveal goes with --feedback DIR or --out-format gradescope|prairielearn")
+    if no_hints and not (feedback_dir or student is not None
+                         or out_format in ("gradescope", "prairielearn")):
+        fail("--no-hints goes with --feedback DIR, --student ID or --out-format "
+             "gradescope|prairielearn (the teacher's grades keep every note)")
     from .api import grade
     from .render import grades_report
 
@@ -435,7 +444,11 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
                                   decimal_comma, attempts) \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
-                  reveal=reveal, decimal_comma=decimal_comma)
+                  reveal=reveal, decimal_comma=decimal_comma, hints=not no_hints)
+        if no_hints and responses:
+            from .checking.grades import withhold_hints
+
+            withhold_hints(graded)
         if out or feedback_dir:  # one set: a refused --feedback leaves no --out behind
             grades_report.write_outputs(graded, force, read, reveal, out=out or None,
                                         fmt=out_format, feedback=feedback_dir or None)

@@ -339,6 +339,8 @@ def _note(item: Item, text: str) -> None:
     row = item.row
     row.note = "; ".join(p for p in (row.note, text) if p)
     row.feedback = "; ".join(p for p in (row.feedback, text) if p)
+    if row.plain is not None:
+        row.plain = "; ".join(p for p in (row.plain, text) if p)
 
 
 def _propagated(item: Item, written: list[tuple[str, Expected]], carried: dict[str, float],

@@ -94,6 +94,9 @@ class GradeRow:
     # for the student: what was off, with no number derived from the solver's value
     # and no other student named (feedback pages, Gradescope, PrairieLearn)
     feedback: str = ""
+    # the same without hints (--no-hints): each value right or not, with no direction, slip
+    # or place, which a student resubmitting could follow to the answer; None: as feedback
+    plain: str | None = None
 
 
 @dataclass
@@ -811,6 +814,9 @@ def grade_assigned(sheet: str, paths: list[str] | tuple[str, ...], assignment_pa
                     row.note = "; ".join(notes[key] + ([row.note] if row.note else []))
                     row.feedback = "; ".join([f"graded on your own variant {own.variant}"]
                                              + ([row.feedback] if row.feedback else []))
+                    if row.plain is not None:
+                        row.plain = "; ".join([f"graded on your own variant {own.variant}"]
+                                              + ([row.plain] if row.plain else []))
                 rows.append(row)
                 maximum += row.max_points
         carrying.carry(graded.errors)
@@ -998,6 +1004,19 @@ def conceal(graded: Graded, student: str, reveal: bool = False) -> Graded:
     return graded
 
 
+def withhold_hints(graded: Graded) -> Graded:
+    """--no-hints: each student-facing note says only whether a value is right (and a root
+    missing or one too many), not which way it is off, its likely slip or its place: with
+    resubmissions, "too high" halves the range each time (6 tries from a 100x range) and a
+    slip gives the answer in one. The teacher's notes keep everything."""
+    for row in graded.rows:
+        if row.plain is not None:
+            row.feedback = row.plain
+            if graded.submitter is not None:  # conceal() made the printed note the feedback
+                row.note = row.feedback
+    return graded
+
+
 ERROR_FEEDBACK = "not graded: gyro failed on this problem (your teacher is told)"
 
 
@@ -1113,7 +1132,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
               and float(line.got_si) != 0]
     errors = [e for e in errors if math.isfinite(e)]  # 1e308 s against 2 s: no figure
     row.relative_error = max(errors, key=abs) if errors else None
-    notes, feedback = [], []
+    notes, feedback, plain = [], [], []
     credited = 0.0
     for line in lines:
         if line.passed:
@@ -1121,10 +1140,13 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
         if line.expected is None:
             notes.append(f"missing root {line.got}")
             feedback.append("a root is missing")
+            plain.append(feedback[-1])
         elif line.got_si is None:
             notes.append(f"{line.expected}: no such root")
             feedback.append(f"{line.expected}: no such root (one value too many)")
+            plain.append(feedback[-1])
         else:
+            unhinted = f"{line.expected}: not right"
             truth, submitted = _si(line.got_si), _si(line.expected_si)
             off = (submitted - truth) / abs(truth) * 100 if truth else math.inf
             note = (f"{line.expected}: off by {off:+.3g}%" if math.isfinite(off)
@@ -1150,10 +1172,13 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
                     credited += share
                     note += f" [credit {share:g} for {' and '.join(named)}]"
                     said += f" [credit {share:g} for {' and '.join(named)}]"
+                    unhinted += f" [credit {share:g}]"
             notes.append(note)
             feedback.append(said)
+            plain.append(unhinted)
     row.note = "; ".join(notes)
     row.feedback = "; ".join(feedback)
+    row.plain = "; ".join(plain)
     if credited and lines:
         row.points = round((passed + credited) / len(lines), 4)
         row.result = "partial" if row.result == "wrong" else row.result

@@ -1,0 +1,95 @@
+"""--no-hints: what a student is told cannot lead them to the answer by resubmitting.
+
+With the words of docs/course.md section 7, a student who may resubmit halves the range at
+each try ("too high", "too low": 6 tries from a 100x range, a helper's search found 11/3's
+965.4 rpm so) and a likely slip gives the answer in one. With --no-hints a wrong value is
+"not right", whatever the value; the teacher's own notes keep the direction and the slip.
+The values are 11/3's (45.13 and 533.5 rpm, 965.4 rpm) and 11/5's (35.15 N at A, 62.95 N
+at B): 101.1 rpm is 965.4 rpm's 101.1 rad/s written as rpm, a factor 60 / (2 pi).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from gyro_cli import api
+
+ROOT = Path(__file__).resolve().parent.parent
+PROBLEMS = [str(ROOT / "problems" / "11_3.yaml"), str(ROOT / "problems" / "11_5.yaml")]
+HINTS = re.compile(r"too|slip|place|sign|size|twice|order|\d+(\.\d+)?%")
+ROWS = [("ann", "11/3", "min_spin", "101.1 rpm"),             # the rpm slip
+        ("ann", "11/3", "precession", "45.13 rpm; 45.13 rpm"),  # a root given twice
+        ("ann", "11/5", "bearing_forces", "62.95 N; 35.15 N"),  # B's and A's, swapped
+        ("ann", "11/5", "moment", "-3.5 N m")]                  # too large in size
+
+
+def _sheet(folder: Path, rows: list[tuple[str, ...]]) -> Path:
+    path = folder / "answers.csv"
+    with path.open("w", newline="") as f:
+        csv.writer(f).writerows([("student", "problem", "answer", "value"), *rows])
+    return path
+
+
+def test_the_words_would_lead_to_the_answer_and_no_hints_withholds_them(tmp_path):
+    sheet = _sheet(tmp_path, ROWS)
+    hinted = {r.answer: r.feedback for r in api.grade(str(sheet), PROBLEMS).rows}
+    assert "likely slip: a factor of 60/(2 pi)" in hinted["min_spin"]
+    assert "given twice" in hinted["precession"]
+    assert "not in its place" in hinted["bearing_forces"]
+    assert "too large in size" in hinted["moment"]
+    plain = {r.answer: r for r in api.grade(str(sheet), PROBLEMS, hints=False).rows}
+    assert plain["min_spin"].feedback == "101.1 rpm: not right"
+    assert plain["precession"].feedback == "45.13 rpm: not right"   # the other 45.13 is right
+    assert plain["bearing_forces"].feedback == "62.95 N: not right; 35.15 N: not right"
+    assert plain["moment"].feedback == "-3.5 N m: not right"
+    for row in plain.values():
+        assert not HINTS.search(row.feedback), row.feedback
+        assert row.note == {r.answer: r.note for r in
+                            api.grade(str(sheet), PROBLEMS).rows}[row.answer]  # the teacher's
+    assert "likely slip" in plain["min_spin"].note and "off by" in plain["min_spin"].note
+
+
+@pytest.mark.parametrize("value", ["1 rpm", "500 rpm", "900 rpm", "1000 rpm", "9654 rpm",
+                                   "-965.4 rpm", "101.1 rpm", "96.54 rpm"])
+def test_a_searching_student_learns_only_right_or_not(tmp_path, value):
+    # A bisection needs the answer to depend on which side the value lies: without hints,
+    # every wrong value of min_spin (965.4 rpm) is told the same words.
+    sheet = _sheet(tmp_path, [("ann", "11/3", "min_spin", value)])
+    [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1], student="ann", hints=False).rows
+             if r.answer == "min_spin"]
+    assert row.result == "wrong" and row.feedback == f"{value}: not right"
+    assert row.note == row.feedback and row.correct == ""
+
+
+def test_credit_is_given_without_naming_the_slip(tmp_path):
+    sheet = _sheet(tmp_path, ROWS[:1])
+    [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1], credit="rpm=0.5",
+                                  hints=False).rows if r.answer == "min_spin"]
+    assert row.points == 0.5 and row.feedback == "101.1 rpm: not right [credit 0.5]"
+
+
+def test_gradescope_and_feedback_pages_carry_no_hints(run, tmp_path):
+    sheet = _sheet(tmp_path, ROWS)
+    out = run("check", *PROBLEMS, "--answers", sheet, "--student", "ann", "--no-hints",
+              "--out-format", "gradescope", "--out", tmp_path / "results.json",
+              "--feedback", tmp_path / "pages")
+    assert out.exit_code == 0, out.output
+    tests = json.loads((tmp_path / "results.json").read_text())["tests"]
+    page = (tmp_path / "pages" / "ann.md").read_text()
+    for text in [t["output"] for t in tests] + [page, out.stdout]:
+        assert "not right" in text or "correct" in text
+        assert not re.search(r"too |slip|place|twice|size", text), text
+
+
+def test_no_hints_goes_with_what_a_student_reads(run, tmp_path):
+    sheet = _sheet(tmp_path, ROWS)
+    out = run("check", *PROBLEMS, "--answers", sheet, "--no-hints")
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1
+    assert "--no-hints goes with --feedback DIR, --student ID" in out.stderr
+    out = run("check", *PROBLEMS, "--no-hints")
+    assert out.exit_code == 2 and "--no-hints" in out.stderr
