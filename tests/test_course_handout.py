@@ -183,3 +183,42 @@ def test_each_sheet_says_how_to_write_its_answers(run, tmp_path):
             "fast, in any order); min_spin in rpm.") in text
     assert ("Answer as problem 11/5: bearing_forces in N, two values separated by ';' "
             "(A; B, in that order).") in text
+
+
+def test_the_key_goes_to_the_teachers_folder_and_the_sheets_folder_holds_only_sheets(
+        run, tmp_path):
+    # The quick-start had written the sheets into the assignment's folder, beside key.json,
+    # assignment.csv and their own key: a teacher handing out "the hw3 folder" (a helper
+    # did) gave every student every answer. --key puts the key elsewhere.
+    r = roster(tmp_path)
+    assert run("vary", TOP, "--roster", r, "-o", tmp_path / "hw").exit_code == 0
+    (tmp_path / "sheets").mkdir()
+    out = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
+              tmp_path / "sheets" / "hw.html", "--key", tmp_path / "hw" / "hw-key.csv")
+    assert out.exit_code == 0, out.output
+    assert sorted(os.listdir(tmp_path / "sheets")) == ["hw-ann.html", "hw-bob.html"]
+    assert f"{tmp_path / 'hw' / 'hw-key.csv'} is the teacher's key" in out.stderr
+    with open(tmp_path / "hw" / "hw-key.csv", newline="") as handle:
+        assert {row["student"] for row in csv.DictReader(handle)} == {"ann", "bob"}
+
+
+@pytest.mark.parametrize("where, said", [
+    ("sheets/hw-ann.html", "--key names a student's sheet"),
+    ("hw/assignment.csv", "assignment.csv"),
+    ("nowhere/key.csv", "no such directory"),
+])
+def test_a_key_that_would_replace_a_sheet_or_an_input_is_refused(run, tmp_path, where, said):
+    r = roster(tmp_path)
+    assert run("vary", TOP, "--roster", r, "-o", tmp_path / "hw").exit_code == 0
+    (tmp_path / "sheets").mkdir()
+    before = (tmp_path / "hw" / "assignment.csv").read_bytes()
+    out = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
+              tmp_path / "sheets" / "hw.html", "--key", tmp_path / where, "--force")
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1 and said in out.stderr, out.stderr
+    assert os.listdir(tmp_path / "sheets") == []
+    assert (tmp_path / "hw" / "assignment.csv").read_bytes() == before
+
+
+def test_key_goes_with_a_class(run, tmp_path):
+    out = run("handout", TOP, "-o", tmp_path / "all.html", "--key", tmp_path / "k.csv")
+    assert out.exit_code == 2 and "goes with --roster or --assignment" in out.stderr

@@ -269,9 +269,10 @@ def _inputs(paths: list[str], roster: str | None, assignment: str | None,
 
 def write_handouts(paths: list[str], out: str, roster: str | None, assignment: str | None,
                    seed: int, solutions: bool, course: str, title: str,
-                   force: bool) -> list[str]:
-    """Write the handout(s) and, per student, the key CSV; nothing over an existing file
-    without ``force`` (checked before anything is written)."""
+                   force: bool, key: str | None = None) -> list[str]:
+    """Write the handout(s) and, per student, the key CSV (``key``, by default
+    ``<OUT stem>-key.csv`` beside the sheets; the last path returned); nothing over an
+    existing file without ``force`` (checked before anything is written)."""
     from ..checking.assignment import file_names
     from ..core.files import StagedSet, refuse_outputs_over_inputs
 
@@ -287,13 +288,21 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
     for sheet in todo:
         target = f"{stem}-{names[sheet.student]}{ext}" if sheet.student is not None else out
         targets.append((target, sheet))
+    if key is not None and not per_student:
+        raise InputError("--key is the teacher's key of a class's sheets: it goes with "
+                         "--roster or --assignment", file=key)
     if per_student:
-        targets.append((f"{stem}-key.csv", None))
+        key = key or f"{stem}-key.csv"
+        if any(os.path.abspath(key) == os.path.abspath(t) for t, _ in targets):
+            raise InputError("--key names a student's sheet: give the key a name of its own",
+                             file=key)
+        targets.append((key, None))
     refuse_outputs_over_inputs([target for target, _ in targets],
                                _inputs(paths, roster, assignment, todo), option="the handout")
-    folder = os.path.dirname(out) or "."
-    if not os.path.isdir(folder):
-        raise InputError(f"cannot write: no such directory {folder!r}", file=out)
+    for path in (out, key) if key else (out,):
+        folder = os.path.dirname(path) or "."
+        if not os.path.isdir(folder):
+            raise InputError(f"cannot write: no such directory {folder!r}", file=path)
     # every sheet and the key, or none: a PDF that fails for one student leaves no
     # class half written (each file is staged as it is made and placed at the end)
     with StagedSet(force, None, [target for target, _ in targets]) as staged:

@@ -174,12 +174,17 @@ def simulate(file: str, periods: float | None, fmt: str, csv_file: str | None,
                    "needed).")
 @click.option("--seed", "-s", type=int, default=0, show_default=True,
               help="With --roster: the course seed.")
+@click.option("--key", metavar="KEY.csv",
+              help="With --roster or --assignment: write the teacher's key there, not beside "
+                   "the sheets as OUT-key.csv (a folder of the teacher's keeps it out of what "
+                   "is handed out).")
 @click.option("--solutions", is_flag=True, help="Add the worked answers.")
 @click.option("--course", default="", help="The course's name, on the cover.")
 @click.option("--title", default="Homework", show_default=True, help="The sheet's title.")
 @click.option("--force", is_flag=True, help="Replace files that exist.")
 def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: str | None,
-            seed: int, solutions: bool, course: str, title: str, force: bool) -> None:
+            seed: int, solutions: bool, course: str, title: str, force: bool,
+            key: str | None = None) -> None:
     """Write the students' question sheets: a cover and each problem's statement with
     the student's numbers; --solutions adds the worked answers."""
     from .handout import write_handouts
@@ -188,17 +193,16 @@ def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: st
         fail("give the problem FILES (or a DIR), or --assignment")
     try:
         written = write_handouts(list(files), out, roster, assignment, seed, solutions,
-                                 course, title, force)
+                                 course, title, force, key)
     except InputError as err:
         fail(err)
     if roster:  # the numbers are drawn again: the seed must be gyro vary's
         click.echo(f"gyro: note: each student's numbers are drawn from --seed {seed}, as "
                    f"gyro vary --roster draws them with that seed; --assignment "
                    "DIR/assignment.csv prints the variants gyro vary wrote", err=True)
-    key = [p for p in written if p.endswith("-key.csv")]
-    if key and (roster or assignment):  # beside the sheets, named like them
-        click.echo(f"gyro: note: {key[0]} is the teacher's key (every student's answers): "
-                   "keep it back when the sheets are handed out", err=True)
+    if roster or assignment:  # the key, written last: by default beside the sheets
+        click.echo(f"gyro: note: {written[-1]} is the teacher's key (every student's "
+                   "answers): keep it back when the sheets are handed out", err=True)
     for path in written:
         click.echo(path)
 
