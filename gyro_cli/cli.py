@@ -441,14 +441,10 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
     try:
         graded = _grade_responses(sheet, responses, paths, credit, student, reveal,
-                                  decimal_comma, attempts) \
+                                  decimal_comma, attempts, not no_hints) \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal, decimal_comma=decimal_comma, hints=not no_hints)
-        if no_hints and responses:
-            from .checking.grades import withhold_hints
-
-            withhold_hints(graded)
         if out or feedback_dir:  # one set: a refused --feedback leaves no --out behind
             grades_report.write_outputs(graded, force, read, reveal, out=out or None,
                                         fmt=out_format, feedback=feedback_dir or None)
@@ -467,7 +463,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
                      credit: str | None, student: str | None,
                      reveal: bool, decimal_comma: bool = False,
-                     attempts: str = "latest"):  # type: ignore[no-untyped-def]
+                     attempts: str = "latest",
+                     hints: bool = True):  # type: ignore[no-untyped-def]
     """Grade a platform's download of responses: read as a gyro answer sheet (written to
     a scratch file that is removed after)."""
     import tempfile
@@ -487,7 +484,8 @@ def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
         sheet = os.path.join(scratch, "responses.csv")
         with open(sheet, "w", encoding="utf-8", newline="") as out:
             out.write(text)
-        graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal)
+        graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal,
+                       hints=hints)
     graded.people = people  # the platform's names and ids, for --out-format canvas
     graded.notes[:0] = notes
     if every_attempt:

@@ -322,3 +322,19 @@ def test_moodle_attempts_kept_as_the_quiz_keeps_them(run, tmp_path, moodle, keep
              _cell(["1", "1", "1"])]]
     assert _scores(run, _moodle(tmp_path, rows), problem, "moodle", "--attempts", keep) == \
         {"ann@x.edu": ann}
+
+
+def test_moodle_regrade_feedback_without_hints(run, tmp_path, moodle):
+    # --no-hints reaches a platform's regrade too: ann's 9.654 (a power of ten low) is told
+    # "not right" on her page, the teacher's grades CSV still names the slip.
+    problem, right = moodle
+    low = [f"{float(v) / 10:.5g}" for v in right]
+    path = _moodle(tmp_path, [["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "3",
+                               _cell(low)]])
+    out = run("check", "--answers", path, "--responses", "moodle", problem, "--no-hints",
+              "--feedback", tmp_path / "pages", "--out", tmp_path / "grades.csv")
+    assert out.exit_code == 0, out.output
+    [page] = (tmp_path / "pages").iterdir()
+    text = page.read_text()
+    assert "not right" in text and "too" not in text and "slip" not in text, text
+    assert "a power of ten" in (tmp_path / "grades.csv").read_text()
