@@ -841,3 +841,30 @@ def test_a_pitch_or_a_loop_is_not_called_a_turn_about_the_vertical(problems_dir,
     text = report.text(solve_file(str(problems_dir / name)))
     assert "the turn's angular velocity, about the vertical" not in text
     assert axis in text
+
+
+def test_without_an_angle_the_dropped_term_is_the_one_that_gives_the_approximation(
+        problems_dir):
+    # The toy gyroscope's spin is psidot (45 rev/s). Eq. 11.13 with omega_z = psidot +
+    # phidot cos(theta) reads m g l = phidot (J psidot + (J - I) phidot cos(theta)): dropping
+    # (J - I) phidot cos(theta) gives m g l / (J psidot); dropping I phidot cos(theta) alone
+    # would leave m g l / (J omega_z), another number at any tilt.
+    from gyro_cli.render import report
+
+    m, r, l, g, spin = 0.170, 0.055, 0.105, 9.80, 45 * 2 * math.pi
+    J = m * r ** 2 / 2
+    result = solve_file(str(problems_dir / "toy_gyroscope_no_angle.yaml"))
+    assert result.answers["precession_approx"].si_values == \
+        [pytest.approx(m * g * l / (J * spin), rel=1e-9)]
+    text = report.text(result)
+    assert "once the (J - I) phidot cos(theta) term of Eq. 11.13 is dropped" in text
+
+
+def test_a_rate_gyros_time_constant_is_called_one(problems_dir):
+    # I_g theta'' + c theta' = H omega: theta' = (H omega / c)(1 - exp(-t c / I_g)), which
+    # reaches 63% of its value at tau = I_g / c, not all of it.
+    from gyro_cli.render import report
+
+    text = report.text(solve_file(str(problems_dir / "rate_integrating_gyro.yaml")))
+    assert "about two thirds of its value" in text
+    assert round(1 - math.exp(-1), 2) == 0.63 and round(1 - math.exp(-3), 2) == 0.95

@@ -186,8 +186,8 @@ def _limit(work: Work, m: float, g: float, h: float, x: float, rw: float, R: flo
 
 # ---- the car as the books draw it: bank, wheelbase, an engine along the car ---------
 
-_BOOK_AXES = ("car axes: ", ax, " forward, ", ay, " toward the centre of the curve, in the "
-              "track's plane, ", az, " up from the track, normal to it; the track is banked by "
+_BOOK_AXES = ("car axes: ", ax, " forward, ", ay, " to the left, in the track's plane (toward "
+              "the centre of a left-hand curve), ", az, " up from the track, normal to it; the track is banked by "
               "the angle ", beta0, ", its outer side higher. Going forward the wheels' spin "
               "vector points to the left; an engine along the car spins forward or aft as its "
               "rotation is seen.")

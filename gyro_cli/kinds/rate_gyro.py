@@ -192,7 +192,9 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
 def _time_constant(c: float, I_g: float | None, work: Work) -> None:
     if I_g is not None:
         tau = work.step("tau", _sym("I_g", I_g) / _sym("c", c), unit="s",
-                        note="time for the gimbal rate to reach its value")
+                        note="the time constant: in this time the gimbal rate reaches about two "
+                        "thirds of its value, nearly all of "
+                        "it in three times as long")
         work.answer("time_constant", "tau", [tau], "time")
 
 

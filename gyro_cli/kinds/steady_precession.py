@@ -236,7 +236,7 @@ SPREAD_ANGLES = (30.0, 60.0, 90.0)  # deg: how far the exact slow root moves wit
 
 
 @cache
-def _without_theta_words() -> tuple[dict[str, tuple], tuple, tuple, tuple]:
+def _without_theta_words() -> tuple[dict[str, tuple], dict[str, tuple], tuple, tuple]:
     """What a solve without theta writes: what the sentences name (with the spin written
     psidot or omega_z), why theta does not matter, D's note and the warning."""
     w0 = names("omega")[0]
@@ -244,11 +244,16 @@ def _without_theta_words() -> tuple[dict[str, tuple], tuple, tuple, tuple]:
     no_angle = {symbol: (th, ", the angle of the axis from the upward vertical, is not given; ",
                          phd, ", the precession rate about the vertical; ", w0, ", the spin (here ",
                          names(symbol)[0], ")") for symbol in ("psidot", "omega_z")}
-    whatever_theta = (
+    # Eq. 11.13, m g l = phidot (J omega_z - I phidot cos theta), drops I phidot cos theta
+    # with the spin omega_z; with psidot (omega_z = psidot + phidot cos theta) it is
+    # m g l = phidot (J psidot + (J - I) phidot cos theta): (J - I) phidot cos theta drops
+    dropped = {"omega_z": _DROPPED_TERM, "psidot": (J_ - I_) * phd * cos_(th)}
+    whatever_theta = {symbol: (
         "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
         J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
-        rel(phd, "=", approximate_rate), " whatever ", th, " is, once the ", _DROPPED_TERM,
+        rel(phd, "=", approximate_rate), " whatever ", th, " is, once the ", term,
         " term of Eq. 11.13 is dropped (exact at ", _AT_90, ", where ", _COS_0, ")")
+        for symbol, term in dropped.items()}
     per_unit_sin = ("per unit ", sin_(th))
     approximation_only = ("no ", th, " given: the answers use the gyroscopic approximation ",
                           approximate_rate, ", exact only with the axis horizontal (", _AT_90,
@@ -281,7 +286,7 @@ def _without_theta(given: Given, find: frozenset[str], work: Work) -> None:
     no_angle, whatever_theta, per_unit_sin, approximation_only = _without_theta_words()
     symbol = {"spin": "psidot", "axial_rate": "omega_z", "precession": "psidot"}[rates[0]]
     work.text(*no_angle[symbol])
-    work.text(*whatever_theta)
+    work.text(*whatever_theta[symbol])
     D = work.step("D", Sym("m", body.mass_for_rates, "kg") * Sym("g", body.g, "m/s^2")
                   * Sym("l", body.l, "m"), unit="N*m", ref="Eq. 11.11", note=per_unit_sin)
     J_v = Sym("J", body.needed("J"), "kg m^2")
