@@ -171,7 +171,7 @@ def test_a_wheel_drops_the_couple_is_about_the_vertical_and_its_forces_along_the
                                                  pytest.approx(-force, rel=1e-9)]
     text = report.text(result)
     assert "(down)" not in text and "couple about the vertical" in text
-    assert "relieved" not in text and "along the track: one forward and the other back" in text
+    assert "relieved" not in text and "along the track (through the treads' grip): one forward and the other back" in text
     assert "the weight (vertical) not among them" in text
 
 
@@ -868,3 +868,22 @@ def test_a_rate_gyros_time_constant_is_called_one(problems_dir):
     text = report.text(solve_file(str(problems_dir / "rate_integrating_gyro.yaml")))
     assert "about two thirds of its value" in text
     assert round(1 - math.exp(-1), 2) == 0.63 and round(1 - math.exp(-3), 2) == 0.95
+
+
+@pytest.mark.parametrize("extra, key", [
+    ("theta: 60 deg, I_cg: 100 kg m^2", "given.theta"),   # M/L would be M/(L sin theta)
+    ("theta: 0 deg", "given.theta"),
+    ("counterweight: 50 kg, balance_position: 0.3 m", "given.counterweight"),
+])
+def test_a_wheel_drop_refuses_what_its_geometry_cannot_carry(run, write, extra, key):
+    # The couple of a wheel's drop is about the vertical: a weight cannot balance it, and the
+    # axle is across the track (theta 90 deg), so a tilted axle is no wheel set.
+    path = write(f"""\
+        id: x
+        kind: gyroscopic_torque
+        given: {{J: 180 kg m^2, spin: 30 rad/s, drop: 6 mm, drop_time: 0.1 s,
+                bearing_spacing: 1.5 m, {extra}}}
+        find: {{moment: N m, couple_forces: N}}
+        """)
+    out = run("solve", path)
+    assert out.exit_code == 2 and out.stderr.count("\n") == 1 and key in out.stderr, out.stderr

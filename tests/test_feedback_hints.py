@@ -93,3 +93,21 @@ def test_no_hints_goes_with_what_a_student_reads(run, tmp_path):
     assert "--no-hints goes with --feedback DIR, --student ID" in out.stderr
     out = run("check", *PROBLEMS, "--no-hints")
     assert out.exit_code == 2 and "--no-hints" in out.stderr
+
+
+@pytest.mark.parametrize("values, said", [
+    ("900 rpm; 1000 rpm", "2 values given, 1 asked: not right"),
+    ("1000 rpm; 900 rpm", "2 values given, 1 asked: not right"),
+])
+def test_a_value_too_many_does_not_say_which_is_nearer(tmp_path, values, said):
+    # The solver pairs the nearer value with the answer and calls the other one too many:
+    # naming it told a student which of two tries was nearer (a review's search found
+    # 11/3's min_spin in six submissions of m / 1.001; m * 1.001 so).
+    sheet = _sheet(tmp_path, [("ann", "11/3", "min_spin", values)])
+    [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1], student="ann", hints=False).rows
+             if r.answer == "min_spin"]
+    assert row.feedback == said
+    sheet = _sheet(tmp_path, [("ann", "11/3", "precession", "45.13 rpm; 40 rpm; 600 rpm")])
+    [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1], student="ann", hints=False).rows
+             if r.answer == "precession"]
+    assert row.feedback == "3 values given, 2 asked: 1 of them right"

@@ -158,6 +158,8 @@ def follow_branch(items: list[Item], result: Any) -> None:
         if len(lines) == len(keep) and all(line.passed for line in lines):
             item.row.points, item.row.result = 1.0, "correct"
             item.row.note = item.row.feedback = ""  # the other root is not missing
+            if item.row.plain is not None:
+                item.row.plain = ""
             _note(item, f"graded on the {' and '.join(sorted(branch))} branch you followed")
 
 

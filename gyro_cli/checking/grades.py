@@ -1179,6 +1179,11 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     row.note = "; ".join(notes)
     row.feedback = "; ".join(feedback)
     row.plain = "; ".join(plain)
+    extra = sum(line.got_si is None for line in lines)
+    if extra:  # which value was left over would say which one is nearer the answer
+        given = sum(line.expected is not None for line in lines)
+        row.plain = f"{given} values given, {given - extra} asked: " + \
+            ("not right" if not passed else f"{passed} of them right")
     if credited and lines:
         row.points = round((passed + credited) / len(lines), 4)
         row.result = "partial" if row.result == "wrong" else row.result

@@ -262,9 +262,21 @@ def _inputs(paths: list[str], roster: str | None, assignment: str | None,
     from ..solving.paths import problem_files
 
     read = [p for p in (roster, assignment) if p]
-    if assignment:
+    if assignment:  # and gyro vary's key.json beside it, which a --key could name
+        read.append(os.path.join(os.path.dirname(assignment), "key.json"))
         return read + [problem.file for sheet in todo for problem in sheet.problems]
     return read + problem_files(paths)[0]
+
+
+def _same_file(a: str, b: str) -> bool:
+    """One file by two names, as far as can be known before either exists: the folders
+    resolved (a symbolic link), the names compared without case (a file system that folds
+    case would make them one file)."""
+    def resolved(path: str) -> tuple[str, str]:
+        folder, name = os.path.split(os.path.abspath(path))
+        return os.path.realpath(folder), name.casefold()
+
+    return resolved(a) == resolved(b)
 
 
 def write_handouts(paths: list[str], out: str, roster: str | None, assignment: str | None,
@@ -293,7 +305,10 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
                          "--roster or --assignment", file=key)
     if per_student:
         key = key or f"{stem}-key.csv"
-        if any(os.path.abspath(key) == os.path.abspath(t) for t, _ in targets):
+        if _same_file(key, out):
+            raise InputError("--key names OUT, the sheets' own name: give the key a name of "
+                             "its own", file=key)
+        if any(_same_file(key, t) for t, _ in targets):
             raise InputError("--key names a student's sheet: give the key a name of its own",
                              file=key)
         targets.append((key, None))

@@ -193,6 +193,10 @@ _TURNING_H = absolute(W0) * absolute(cross(K0, H0))
 def solve(given: Given, find: frozenset[str], work: Work) -> None:
     body = given.solid_body
     theta = given["theta"]
+    if "drop" in given and abs(theta - math.pi / 2) > 1e-9:
+        raise InputError("a wheel set's axle lies across the track, at 90 deg to the axis it "
+                         "tilts about while a wheel drops: leave theta out (or give 90 deg)",
+                         key="given.theta")
     if 0 <= theta <= math.pi and abs(math.sin(theta)) < 1e-12:
         _along_the_axis(given, find, theta, work)
         return
@@ -307,6 +311,10 @@ _HARMONIC_DROP = ("the wheel falls ", h0, " and rises again in the time ", T_d0,
 
 def _drop(given: Given, work: Work) -> float:
     """Omega: the tilt rate of the axle while one wheel drops (Khurmi's defective ballasting)."""
+    if "counterweight" in given or "balance_position" in given:
+        raise InputError("a wheel's drop makes a couple about the vertical, which no weight "
+                         "can balance: leave out the counterweight", key="given.counterweight"
+                         if "counterweight" in given else "given.balance_position")
     if "bearing_spacing" not in given:
         raise InputError("a wheel's drop tilts the axle at drop / L per unit time: give "
                          "bearing_spacing, the distance between the wheels", 
@@ -583,9 +591,8 @@ _ON_THE_ROTOR = ("on the rotor at ", A0)
 _ON_THE_ROTOR_UP = _ON_THE_ROTOR + (", toward ", signed("+", K0))
 _PUSHES_BACK = ("the rotor pushes each bearing (rail) the other way: one is loaded by ",
                 absolute(M0) / L0, " more, the other relieved by as much")
-_PUSHES_ALONG_TRACK = ("the wheel set pushes each rail (through its axle box and flange) the "
-                       "other way, along the track: one forward and the other back by ",
-                       absolute(M0) / L0)
+_PUSHES_ALONG_TRACK = ("the wheels push on the rails the other way, along the track (through "
+                       "the treads' grip): one forward and the other back by ", absolute(M0) / L0)
 _PLUS_MINUS_SHARE = signed("+-", M0) / L0  # +-M / L
 _COUPLE_OF_FORCES = names("F_A,couple")[0] * L0
 _FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
