@@ -202,42 +202,29 @@ def test_the_key_goes_to_the_teachers_folder_and_the_sheets_folder_holds_only_sh
         assert {row["student"] for row in csv.DictReader(handle)} == {"ann", "bob"}
 
 
-@pytest.mark.parametrize("where, said", [
-    ("sheets/hw-ann.html", "--key names a student's sheet"),
-    ("hw/assignment.csv", "assignment.csv"),
-    ("nowhere/key.csv", "no such directory"),
-])
-def test_a_key_that_would_replace_a_sheet_or_an_input_is_refused(run, tmp_path, where, said):
-    r = roster(tmp_path)
-    assert run("vary", TOP, "--roster", r, "-o", tmp_path / "hw").exit_code == 0
-    (tmp_path / "sheets").mkdir()
-    before = (tmp_path / "hw" / "assignment.csv").read_bytes()
-    out = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
-              tmp_path / "sheets" / "hw.html", "--key", tmp_path / where, "--force")
-    assert out.exit_code == 2 and out.stderr.count("\n") == 1 and said in out.stderr, out.stderr
-    assert os.listdir(tmp_path / "sheets") == []
-    assert (tmp_path / "hw" / "assignment.csv").read_bytes() == before
-
-
 def test_key_goes_with_a_class(run, tmp_path):
     out = run("handout", TOP, "-o", tmp_path / "all.html", "--key", tmp_path / "k.csv")
     assert out.exit_code == 2 and "goes with --roster or --assignment" in out.stderr
 
 
 @pytest.mark.parametrize("where, said", [
+    ("sheets/hw-ann.html", "--key names a student's sheet"),
+    ("hw/assignment.csv", "assignment.csv"),
+    ("nowhere/key.csv", "no such directory"),
     ("link/hw-ann.html", "--key names a student's sheet"),   # ann's sheet through a link
     ("sheets/HW-ANN.html", "--key names a student's sheet"),  # one file where case folds
     ("sheets/hw.html", "--key names OUT"),                     # a CSV of answers among sheets
     ("hw/key.json", "replace an input file"),                  # gyro vary's own key
 ])
-def test_a_key_by_another_name_for_a_sheet_or_varys_key_is_refused(run, tmp_path, where, said):
+def test_a_key_that_would_replace_a_sheet_or_an_input_is_refused(run, tmp_path, where, said):
     r = roster(tmp_path)
     assert run("vary", TOP, "--roster", r, "-o", tmp_path / "hw").exit_code == 0
     (tmp_path / "sheets").mkdir()
     (tmp_path / "link").symlink_to(tmp_path / "sheets")
-    before = (tmp_path / "hw" / "key.json").read_bytes()
+    inputs = [tmp_path / "hw" / name for name in ("key.json", "assignment.csv")]
+    before = [path.read_bytes() for path in inputs]
     out = run("handout", "--assignment", tmp_path / "hw" / "assignment.csv", "-o",
               tmp_path / "sheets" / "hw.html", "--key", tmp_path / where, "--force")
     assert out.exit_code == 2 and out.stderr.count("\n") == 1 and said in out.stderr, out.stderr
     assert os.listdir(tmp_path / "sheets") == []
-    assert (tmp_path / "hw" / "key.json").read_bytes() == before
+    assert [path.read_bytes() for path in inputs] == before
