@@ -111,3 +111,21 @@ def test_a_value_too_many_does_not_say_which_is_nearer(tmp_path, values, said):
     [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1], student="ann", hints=False).rows
              if r.answer == "precession"]
     assert row.feedback == "3 values given, 2 asked: 1 of them right"
+
+
+def test_errors_carried_forward_keep_their_hints_to_the_teacher(tmp_path):
+    # 11/3 with its step I asked: I = m k_O^2 = 0.08498 kg (0.04572 m)^2 = 0.0001776 kg m^2,
+    # given 1.5% high; min_spin = sqrt(4 m g l I cos(theta)) / J moves by half that, inside
+    # the 1% band around 965.4 rpm, so "the values carried barely change this answer":
+    # a hint that the student's I is near enough, which --no-hints leaves out.
+    text = (ROOT / "problems" / "11_3.yaml").read_text().replace("find:", "steps: [I]\nfind:")
+    problem = tmp_path / "p.yaml"
+    problem.write_text(text)
+    sheet = _sheet(tmp_path, [("kim", "11/3", "I", "0.0001803 kg*m^2"),
+                              ("kim", "11/3", "min_spin", "900 rpm")])
+    rows = {hints: {r.answer: r for r in api.grade(str(sheet), [str(problem)],
+                                                   credit="ecf=0.5", hints=hints).rows}
+            for hints in (True, False)}
+    assert "barely change" in rows[True]["min_spin"].feedback
+    assert rows[False]["min_spin"].feedback == "900 rpm: not right"
+    assert "barely change" in rows[False]["min_spin"].note

@@ -261,7 +261,10 @@ def _carry_one(item: Item, sources: list[Item], symbol_of: dict[str, str | None]
     bands = student_widths(item.tolerance, _reported(item, result, truth))
     if len(again) == len(truth) and all(
             abs(a - t) <= band for a, t, band in zip(again, truth, bands)):
-        _note(item, "the values carried barely change this answer: no follow-through")
+        # a hint (the student's earlier values are near enough the solver's for this
+        # answer): left out of --no-hints
+        _note(item, "the values carried barely change this answer: no follow-through",
+              hint=True)
         return
     extra = _propagated(item, written, carried, result, again, symbol_of[item.name])
     labels = _reported(item, result, again).labels
@@ -335,13 +338,13 @@ def _reported(item: Item, result: Any, again: list[float]) -> Any:
                            labels=list(answer.labels), values=[a * scale for a in again])
 
 
-def _note(item: Item, text: str) -> None:
+def _note(item: Item, text: str, hint: bool = False) -> None:
     """The same words for the teacher and the student: they name only the student's own
-    values, never the solver's."""
+    values, never the solver's (a ``hint`` not under --no-hints)."""
     row = item.row
     row.note = "; ".join(p for p in (row.note, text) if p)
     row.feedback = "; ".join(p for p in (row.feedback, text) if p)
-    if row.plain is not None:
+    if row.plain is not None and not hint:
         row.plain = "; ".join(p for p in (row.plain, text) if p)
 
 
