@@ -887,3 +887,17 @@ def test_a_wheel_drop_refuses_what_its_geometry_cannot_carry(run, write, extra, 
         """)
     out = run("solve", path)
     assert out.exit_code == 2 and out.stderr.count("\n") == 1 and key in out.stderr, out.stderr
+
+
+@pytest.mark.parametrize("name", ["irodov_turbine_locomotive.yaml", "two_wheeler_250kg.yaml"])
+def test_a_turn_the_data_do_not_give_is_said_to_be_taken(problems_dir, tmp_path, name):
+    # Irodov gives no sense of the curve: the left turn the senses are printed for is gyro's
+    # choice, and the worked answer says so (it had been printed as if given).
+    from gyro_cli.render import report
+
+    text = report.text(solve_file(str(problems_dir / name)))
+    assert "no turn is given: taken left; only the senses depend on it" in text
+    stated = tmp_path / name
+    stated.write_text((problems_dir / name).read_text().replace("given:\n",
+                                                                "given:\n  turn: left\n"))
+    assert "no turn is given" not in report.text(solve_file(str(stated)))

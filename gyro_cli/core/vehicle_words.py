@@ -3,6 +3,8 @@ four-wheeler): kinds may not import each other, so the sentence they share lives
 
 from __future__ import annotations
 
+from typing import Any
+
 from .expr import Sym
 from .prose import cross, names, plus, rel
 from .work import Work
@@ -25,6 +27,17 @@ def reactive_couple(vehicle: str, rotors: str = "rotor",
             f"({precession}); couple on the {rotors} ",
             rel(_C, "=", COUPLE), f" (Eq. 11.29); the {vehicle} feels the reactive "
             "couple ", -_C)
+
+
+#: said where a vehicle's turn is stated and the data give none: the senses printed are then a
+#: left turn's (the sizes do not depend on it)
+TAKEN_LEFT = " (no turn is given: taken left; only the senses depend on it)"
+
+
+def turn_of(given: Any) -> tuple[str, str]:
+    """The vehicle's turn, "left" or "right" (left when none is given), and what to add
+    where it is stated: TAKEN_LEFT when it was not given."""
+    return given.word("turn", "left"), "" if "turn" in given else TAKEN_LEFT
 
 
 def rotor_steps(work: Work, J: float, spin: float, inertia: str,

@@ -19,7 +19,7 @@ from ..core.expr import Sym, absolute
 from ..core.given import Given
 from ..core.prose import names, paren, plus, q, qvec, rel
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps
+from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps, turn_of
 from ..core.work import Work
 from ..physics import vehicles as V
 
@@ -74,12 +74,12 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     if motion == "loop":
         wp, rate = _loop(given, v, R, work)
     else:
-        turn = given.word("turn", "left")
+        turn, taken = turn_of(given)
         work.section("Turn: precession about the vertical")
         rate = work.step("omega_p", V.turn_rate(Sym("v", v, "m/s"), Sym("R", R, "m")), unit="rad/s")
         wp = V.steering_precession(v, R, turn)
         work.text(f"turning {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
-                  "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")))
+                  "seen from above)" + taken + ": ", rel(wp0, "=", qvec(wp, "rad/s")))
 
     work.section(*_COUPLE_TITLE)
     C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m", ref="Eq. 11.29")

@@ -36,7 +36,7 @@ from ..core.expr import Expr, Let, Sym, asin, cos, sin
 from ..core.given import Given
 from ..core.prose import names, plus, q, qvec, rel, total, tup
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
+from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple, turn_of
 from ..core.work import Work, qty
 from ..physics import vehicles as V
 
@@ -121,7 +121,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
               R: float, wheels: float, engines: float, G: float, sense: str,
               equivalent: Let) -> None:
     v = given["speed"]
-    turn = given.word("turn", "left")
+    turn, taken = turn_of(given)
     s = V.four_wheeler(m, g, h, x, rw, wheels, engines, G, sense, v, R)
     outer, inner = s.outer, s.inner  # each wheel's reaction: its three shares, added once
     refuse_overflow(outer, inner, s.gyroscopic_couple, s.centrifugal_couple, s.wheel_rate)
@@ -135,7 +135,7 @@ def _at_speed(given: Given, work: Work, m: float, g: float, h: float, x: float, 
                   unit="kg m^2/s",
                   note=ALONG_LEFT)
     wp, Hv = V.steering_precession(v, R, turn), V.scale(H, V.LEFT)
-    work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
+    work.text(f"turning {turn}{taken}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
               rel(COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the vehicle, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"), ", "

@@ -34,6 +34,7 @@ from ..core.generic import V
 from ..core.given import Given
 from ..core.prose import cross, deriv, names, q, rel, signed
 from ..core.spec import AnswerSpec, Kind, Param
+from ..core.vehicle_words import turn_of
 from ..core.work import Work, num
 from ..physics.algebra import cos_theta, quadratic_roots
 
@@ -383,10 +384,10 @@ def _precession(given: Given, J: float, I: float, spin: float, theta: float,
         return _drop(given, work)
     if ways == ["turn_radius"]:
         R = given["turn_radius"]
-        turn = given.word("turn", "left")
+        turn, taken = turn_of(given)
         sign = 1.0 if turn == "left" else -1.0
         work.section("Precession from the path")
-        work.text(f"the frame turns {turn} on a circle: ", _PATH_RATE[turn],
+        work.text(f"the frame turns {turn} on a circle{taken}: ", _PATH_RATE[turn],
                   " about the upward vertical (a left turn is counter-clockwise from above)")
         v = Sym("v", given["speed"], "m/s")
         return work.step("Omega", (v if sign > 0 else -v) / Sym("R", R, "m"), unit="rad/s")

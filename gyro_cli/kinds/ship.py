@@ -26,7 +26,7 @@ from ..core.expr import Num, Sym, absolute, cos, sin
 from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel
 from ..core.spec import AnswerSpec, Kind, OneOf, Param
-from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps
+from ..core.vehicle_words import COUPLE, reactive_couple, rotor_steps, turn_of
 from ..core.work import Work
 from ..physics import vehicles as V
 
@@ -103,7 +103,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
         assert rate is not None, "only a roll leaves the rate unknown"
         C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m",
                       ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
-                      else "")
+                      and "pitch_rate" not in given else "at the instant"
+                      if motion == "pitching" else "")
     refuse_overflow(C, Hmag)
     work.answer("couple", "C", [C], "moment")
     if rate is not None:
@@ -134,11 +135,11 @@ def _steering(given: Given, work: Work) -> V.Vector:
                 raise InputError("give turn_rate, or speed and turn_radius (omega_p = v / R), "
                                  "not both", key=f"given.{key}")
         rate = given["turn_rate"]
-        turn = given.word("turn", "left")
+        turn, taken = turn_of(given)
         work.section("Steering: precession about the vertical")
         work.step("omega_p", value=rate, unit="rad/s", note="the ship's rate of turn, as given")
         wp = V.steering_precession(rate, 1.0, turn)
-        _steering_line(turn, wp, work)
+        _steering_line(turn, taken, wp, work)
         return wp
     for key in ("speed", "turn_radius"):
         if key not in given:
@@ -146,17 +147,17 @@ def _steering(given: Given, work: Work) -> V.Vector:
                              "turn_rate",
                              key=f"given.{key}")
     v, R = given["speed"], given["turn_radius"]
-    turn = given.word("turn", "left")
+    turn, taken = turn_of(given)
     work.section("Steering: precession about the vertical")
     work.step("omega_p", V.turn_rate(Sym("v", v, "m/s"), Sym("R", R, "m")), unit="rad/s")
     wp = V.steering_precession(v, R, turn)
-    _steering_line(turn, wp, work)
+    _steering_line(turn, taken, wp, work)
     return wp
 
 
-def _steering_line(turn: str, wp: V.Vector, work: Work) -> None:
+def _steering_line(turn: str, taken: str, wp: V.Vector, work: Work) -> None:
     work.text(f"steering to the {turn} ({'counter-clockwise' if turn == 'left' else 'clockwise'} "
-              "seen from above): ", rel(wp0, "=", qvec(wp, "rad/s")), ", along ",
+              "seen from above)" + taken + ": ", rel(wp0, "=", qvec(wp, "rad/s")), ", along ",
               _PLUS_Z if turn == "left" else _MINUS_Z)
 
 

@@ -29,7 +29,7 @@ from ..core.expr import Sym, cos, sin
 from ..core.given import Given
 from ..core.prose import deriv, names, plus, q, qvec, rel, tup
 from ..core.spec import AnswerSpec, Kind, Param
-from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple
+from ..core.vehicle_words import ALONG_LEFT, COUPLE, reactive_couple, turn_of
 from ..core.work import Work
 from ..physics import vehicles as V
 
@@ -67,7 +67,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     Iw, rw, IE = given["wheel_inertia"], given["wheel_radius"], given["engine_inertia"]
     G, sense = given["gear_ratio"], given.word("engine_sense", "same")
     v, R = given["speed"], given["turn_radius"]
-    turn = given.word("turn", "left")
+    turn, taken = turn_of(given)
     w = V.rolling_rate(v, rw)
     H = V.spin_momentum(V.rotor_inertia(2 * Iw, G, IE, sense), w)
     Cg, Cc = V.book_couples(H, V.turn_rate(v, R), m, v, h, R)
@@ -95,7 +95,7 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
               note=ALONG_LEFT)
     wp = V.steering_precession(v, R, turn)
     Hv = V.scale(H, V.LEFT)
-    work.text(f"turning {turn}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
+    work.text(f"turning {turn}{taken}: ", rel(wp0, "=", qvec((0, 0, wp[2]), "rad/s")), "; ",
               rel(COUPLE, "=", qvec((V.couple_on_rotor(wp, Hv)[0], 0, 0), "N m")),
               " on the rotors; the reactive couple on the machine, ",
               qvec((V.reactive_couple(wp, Hv)[0], 0, 0), "N m"),
