@@ -901,3 +901,16 @@ def test_a_turn_the_data_do_not_give_is_said_to_be_taken(problems_dir, tmp_path,
     stated.write_text((problems_dir / name).read_text().replace("given:\n",
                                                                 "given:\n  turn: left\n"))
     assert "no turn is given" not in report.text(solve_file(str(stated)))
+
+
+@pytest.mark.parametrize("name, said", [
+    ("torque_free_shell.yaml", "(Meriam's n); positive: the precession direct"),
+    ("torque_free_earth.yaml", "(Meriam's n); negative: the precession retrograde"),
+])
+def test_the_spin_ratio_says_its_own_sign(problems_dir, name, said):
+    # n = psidot / phidot = (I - J) cos(theta) / J: positive for a prolate body (the shell,
+    # I > J: direct), negative for an oblate one (the Earth, J > I: retrograde). The shell's
+    # positive n had been followed by "negative: retrograde".
+    from gyro_cli.render import report
+
+    assert said in report.text(solve_file(str(problems_dir / name)))

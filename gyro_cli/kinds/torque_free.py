@@ -345,7 +345,8 @@ def _results(J: float, I: float, s: FreeMotion, work: Work, magnitude: bool = Fa
             *_MERIAM, f"), the precession {s.motion}"))
     else:
         work.step("n", psidot_ / phidot_, unit="", note=(
-            *_MERIAM, "); negative: retrograde"))
+            *_MERIAM, f"); {'negative' if n < 0 else 'positive' if n > 0 else 'zero'}: the "
+            f"precession {s.motion}"))
     work.answer("spin_ratio", "n", [n], "dimensionless")
     work.check(rel(*_RATIO, q((I - J) * math.cos(theta) / J)), "; ",
                rel(*_SPIN_OVER_PRECESSION, q(s.spin / s.precession)))
