@@ -171,7 +171,7 @@ def test_a_wheel_drops_the_couple_is_about_the_vertical_and_its_forces_along_the
                                                  pytest.approx(-force, rel=1e-9)]
     text = report.text(result)
     assert "(down)" not in text and "couple about the vertical" in text
-    assert "relieved" not in text and "along the track (through the treads' grip): one forward and the other back" in text
+    assert "relieved" not in text and "one side is pushed forward and the other back" in text
     assert "the weight (vertical) not among them" in text
 
 

@@ -592,8 +592,10 @@ _ON_THE_ROTOR = ("on the rotor at ", A0)
 _ON_THE_ROTOR_UP = _ON_THE_ROTOR + (", toward ", signed("+", K0))
 _PUSHES_BACK = ("the rotor pushes each bearing (rail) the other way: one is loaded by ",
                 absolute(M0) / L0, " more, the other relieved by as much")
-_PUSHES_ALONG_TRACK = ("the wheels push on the rails the other way, along the track (through "
-                       "the treads' grip): one forward and the other back by ", absolute(M0) / L0)
+_PUSHES_ALONG_TRACK = ("the wheel set is held against this yawing where it is carried, taken "
+                       "here at the wheels, ", L0, " apart (its axle boxes in the frame, or "
+                       "the rails through the treads): one side is pushed forward and the "
+                       "other back by ", absolute(M0) / L0)
 _PLUS_MINUS_SHARE = signed("+-", M0) / L0  # +-M / L
 _COUPLE_OF_FORCES = names("F_A,couple")[0] * L0
 _FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
@@ -601,8 +603,9 @@ _FORCES_CANCEL = ("; ", rel(F_A0 + F_B0, "=", 0))
 
 def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> None:
     """No mass (or a tilting axle): the couple's share of the bearing forces alone."""
-    work.section("Forces of the gyroscopic couple on the bearings (rails)")
     drop = "drop" in given
+    work.section("Forces of the gyroscopic couple at the wheels, along the track" if drop
+                 else "Forces of the gyroscopic couple on the bearings (rails)")
     why_pieces = _TILTS if drop else _NO_MASS
     work.text(*why_pieces, *(_COUPLE_ALONG_TRACK if drop else _COUPLE_SHARE))
     F_A, F_B = couple_forces(M, L)
