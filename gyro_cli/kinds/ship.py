@@ -275,7 +275,10 @@ def _rolling(given: Given, work: Work) -> V.Vector:
     else:
         work.text("no roll_rate given: any rate will do, only its direction matters")
     wp = V.rolling_precession(rate or 1.0)
-    work.text(wp0, " along ", x, ": ", qvec(wp, "rad/s"))
+    # the roll's sense is not among the data (+x is either): it does not matter, as the
+    # couple is 0 whichever way the ship rolls
+    work.text(wp0, " along ", x, " (the roll's sense does not matter here): ", qvec(wp, "rad/s"),
+              " or its opposite")
     return wp
 
 
