@@ -57,7 +57,8 @@ _AXES = ("vehicle axes: ", ax, " forward, ", ay, " to the left, ", az, " up. Goi
 _REACTIVE = (*reactive_couple("vehicle", "rotors"), ". Couples are about the fore-and-aft "
              "axis, positive overturning the vehicle outward (lifting the inner wheels). "
              "Reactions are the road's vertical forces on each wheel; the centre of mass is "
-             "taken midway between the axles and the wheels, so each pair shares equally.")
+             "taken midway between the two axles and between the two rails, so each pair "
+             "shares equally.")
 _SUM_I_W, _SUM_I_E = total(I_w0), total(I_E0)
 _REACTIONS, _WEIGHT = 2 * R_o0 + 2 * R_i0, m0 * g0  # the check's vertical balance
 _MOMENT_OF_REACTIONS, _COUPLES = x0 * (R_o0 - R_i0), Cg0 + Cc0  # and its moment balance

@@ -705,7 +705,10 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    work.section("Gyroscopic approximation (the ", _DROPPED_TERM, " term dropped)")
+    # with the spin psidot the approximation drops (J - I) phidot cos(theta) (Eq. 11.13 in
+    # psidot), with omega_z only I phidot cos(theta)
+    work.section("Gyroscopic approximation (the ", (J_ - I_) * phd * cos_(th)
+                 if symbol == "psidot" else _DROPPED_TERM, " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")

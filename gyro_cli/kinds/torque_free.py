@@ -56,8 +56,8 @@ def _conventions() -> tuple[tuple, ...]:
              rel(omega_z, "=", psidot + phidot * cos(theta)), "; ", beta, ": the angle from ",
              k, " to ", omega, ". Then ", rel(omega_z, ">", 0), " and ", theta, ", ",
              rel(beta, "<", q(math.pi / 2, "deg", exact=True)), ".")
-    inertia = (rel(I_, "=", I_G), ": the transverse moment of inertia about ", G, ", the fixed "
-               "point; ", omega_e, ": the component of ", omega, " across ", k)
+    inertia = (rel(I_, "=", I_G), ": the transverse moment of inertia about ", G, ", the centre of "
+               "mass (H is taken about it: no moment acts); ", omega_e, ": the component of ", omega, " across ", k)
     relations = ("Along ", k, ": ", rel(J_ * omega_z, "=", H * cos(theta)), "; across ", k,
                  ": ", rel(I_ * omega_e, "=", H * sin(theta)), " with ",
                  rel(omega_e, "=", phidot * sin(theta)), ". Hence ", rel(phidot, "=", H / I_),
