@@ -514,8 +514,11 @@ def _bearings(given: Given, find: frozenset[str], M: float, precession: float, t
     sin = math.sin(theta)
     forces = bearing_forces(m, g, M, L, a, precession, theta, R, offset)
     b = L - a
-    work.section("Bearing forces: free body of the rotor (forces on the rotor)")
     ms = "m_s" if "supported_mass" in given else "m"  # the Given table's symbol
+    # with supported_mass the free body is all the bearings carry (a motor with its rotor)
+    work.section("Bearing forces: free body of the rotor (forces on the rotor)" if ms == "m"
+                 else "Bearing forces: free body of what the bearings carry, the rotor with "
+                 "its housing")
     work.text(*_BEARING_FORCES)
     work.step("a", value=a, unit="m", note=_CG_FROM_A_DEFAULT if "cg_position" not in given
               else _CG_FROM_A)
