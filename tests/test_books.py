@@ -914,3 +914,18 @@ def test_the_spin_ratio_says_its_own_sign(problems_dir, name, said):
     from gyro_cli.render import report
 
     assert said in report.text(solve_file(str(problems_dir / name)))
+
+
+@pytest.mark.parametrize("name, said", [
+    # 1e-7 N m / 0.1 kg m^2/s = 1e-6 rad/s x (180 / pi) x 3600 = 0.2063 deg/h
+    ("drift_navigation_gyro.yaml", "= 1.000e-06 rad/s    = 0.2063 deg/h"),
+    # 2 pi / 8.142e11 s = 7.717e-12 rad/s = 1.592e-6 deg/h (the Earth's 25,800 years)
+    ("drift_earth_precession.yaml", "= 7.717e-12 rad/s    = 1.592e-06 deg/h"),
+])
+def test_a_drift_rates_note_in_deg_per_hour_is_its_own_value(problems_dir, name, said):
+    # The note beside Omega_d had converted a value already in deg/h again: 4.255e+04 deg/h
+    # printed beside 1e-6 rad/s, whose answer line said 0.2063 deg/h.
+    from gyro_cli.render import report
+
+    assert 1e-6 * 180 / math.pi * 3600 == pytest.approx(0.2063, abs=1e-4)
+    assert said in report.text(solve_file(str(problems_dir / name)))

@@ -21,7 +21,6 @@ from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, qty
 from ..physics import gyro_drift as gd
 
-DEG_PER_HOUR = math.pi / 180 / 3600  # rad/s per deg/h
 LINEAR_LIMIT = 0.1  # rad: beyond this the small-angle gimbal equations are doubtful
 
 
@@ -95,13 +94,13 @@ def _moment_and_rate(given: Given, H: float, work: Work) -> tuple[float, float]:
         work.section(*_DRIFT_TITLE)
         rate = work.step("Omega_d", gd.drift_rate(Sym("M", M, "N m"), Sym("H", H, "kg m^2/s")),
                          unit="rad/s",
-                         note=_equals(gd.drift_rate(M, H) / DEG_PER_HOUR, "deg/h"))
+                         note=_equals(gd.drift_rate(M, H), "deg/h"))
         return M, rate
     if ways == ["drift_period"]:
         T = given["drift_period"]
         work.section("Drift rate from the period of one full turn")
         rate = work.step("Omega_d", 2 * PI / Sym("T_d", T, "s"), unit="rad/s",
-                         note=_equals(2 * math.pi / T / DEG_PER_HOUR, "deg/h"))
+                         note=_equals(2 * math.pi / T, "deg/h"))
     else:
         rate = given["drift_rate"]
     work.section(*_BUDGET_TITLE)
@@ -187,9 +186,11 @@ def _nutation(given: Given, find: frozenset[str], H: float, M: float, work: Work
     work.answer("max_deflection", "alpha_max", [abs(2 * ax)], "angle")
 
 
-def _equals(value: float, unit: str) -> tuple:
-    """A step's note ``= 0.03283 deg/h``: its value in another unit."""
-    return (rel(None, "=", q(value, unit)),)
+def _equals(si: float, unit: str) -> tuple:
+    """A step's note ``= 0.03283 deg/h``: its SI value ``si`` in another unit (``q``
+    converts: a value already in the unit was converted twice, 1e-6 rad/s printed as
+    42,550 deg/h)."""
+    return (rel(None, "=", q(si, unit)),)
 
 
 def _a_dd(M: float, H: float, Iy: float, wn: float, t: float) -> float:
