@@ -929,3 +929,23 @@ def test_a_drift_rates_note_in_deg_per_hour_is_its_own_value(problems_dir, name,
 
     assert 1e-6 * 180 / math.pi * 3600 == pytest.approx(0.2063, abs=1e-4)
     assert said in report.text(solve_file(str(problems_dir / name)))
+
+
+def test_the_chapters_earth_figures_are_said_for_the_earth_only(problems_dir):
+    # "The chapter's 26,000 years; its '80 years' ... is a misprint" is the chapter's Earth:
+    # Mars's 171,000 years had been followed by it.
+    from gyro_cli.render import report
+
+    assert "26,000" in report.text(solve_file(str(problems_dir / "11_3_equinoxes.yaml")))
+    assert "26,000" not in report.text(solve_file(str(problems_dir / "mars_precession.yaml")))
+
+
+def test_a_directional_gyro_keeps_its_azimuth_without_a_horizontal_gimbal_moment(problems_dir):
+    # H along north, dH/dt = M: a moment about the vertical U moves H's tip along U (the axis
+    # tilts, its azimuth kept); one about the horizontal inner gimbal axis E moves it along E
+    # (the azimuth turns). The sentence had named the vertical axis.
+    from gyro_cli.render import report
+
+    text = report.text(solve_file(str(problems_dir / "dg_apparent_drift_45N.yaml")))
+    assert "no moment about the horizontal (inner) gimbal axis the spin axis keeps its " \
+        "azimuth" in text

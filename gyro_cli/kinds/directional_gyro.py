@@ -31,9 +31,10 @@ E0, N0, U0, W0, lam0, R0 = names("E N U Omega_E lambda R")
 _AXES = (E0, ", ", N0, ", ", U0, ": east, north and up at the craft. A drift is the turn "
          "of the spin axis relative to north about ", U0, ", positive to the right (clockwise "
          "seen from above); latitudes are positive north, speeds positive east.")
-_RIGIDITY = ("With no moment about the vertical gimbal axis the spin axis keeps its direction "
-             "in inertial space (section 11.3, Fig. 11-13); north turns under it, so the axis "
-             "drifts against north the other way.")
+_RIGIDITY = ("With no moment about the horizontal (inner) gimbal axis the spin axis keeps its "
+             "azimuth in inertial space (section 11.3, Fig. 11-13: a moment about an axis turns "
+             "the spin axis about the axis at right angles to both); north turns under it, so "
+             "the axis drifts against north the other way.")
 _EARTH = ("The Earth turns at ", W0, " about its axis; the part about the local vertical is ",
           W0 * sin(lam0), ", anticlockwise seen from above in the northern hemisphere.")
 _NUT = ("The latitude nut is a weight on the inner gimbal: its moment about the horizontal "

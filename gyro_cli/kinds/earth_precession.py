@@ -334,9 +334,11 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     # 360 (deg) is the full turn, 2 pi rad: the value is in s/rad, shown in yr/deg
     per_degree = work.step("t_1deg", Sym("T_p", period, "yr") / Const("360", 2 * math.pi),
                            unit="yr/deg")
-    work.text("The chapter's 26,000 years; its '80 years' for ", q(math.radians(1), "deg", True),
-              " is a misprint: ", Num(26000, "26,000") / 360, " is about 72 (the errata), here ",
-              q(per_degree), " years.")
+    if given.word("preset", "") == "earth":  # the chapter's figures are the Earth's
+        work.text("The chapter's 26,000 years; its '80 years' for ",
+                  q(math.radians(1), "deg", True), " is a misprint: ",
+                  Num(26000, "26,000") / 360, " is about 72 (the errata), here ",
+                  q(per_degree), " years.")
     work.answer("precession_period", "T_p", [period], "time")
     work.answer("years_per_degree", "t_1deg", [1 / abs(total)], "time_per_angle")
     turned = math.radians(period / (per_degree * JULIAN_YEAR))  # T_p / t_1deg: 360 deg
