@@ -140,7 +140,9 @@ _FROM_REST = ("solution from rest: ",
 _ABOUT_X = ("about ", x0, ", the moment's axis (", M0 * I0 / H0**2, " for equal inertias ", I0,
             ")")
 _ABOUT_Y = ("about ", y0, ", the drift axis: the ripple on the drift")
-_LARGEST = ("largest deflection about ", x0, ", reached every half period")
+# alpha = A (1 - cos(w_n t)): largest at t = T_n / 2, then once every period
+_LARGEST = ("largest deflection about ", x0, ", reached half a period from rest and once "
+            "every period after")
 _AT_A_QUARTER_PERIOD = ("the solution in the first gimbal equation at ", rel(t0, "=", T_n0 / 4),
                         ": ")
 
