@@ -949,3 +949,14 @@ def test_a_directional_gyro_keeps_its_azimuth_without_a_horizontal_gimbal_moment
     text = report.text(solve_file(str(problems_dir / "dg_apparent_drift_45N.yaml")))
     assert "no moment about the horizontal (inner) gimbal axis the spin axis keeps its " \
         "azimuth" in text
+
+
+def test_at_90_deg_the_spin_is_worked_without_the_inertia_the_book_leaves_out(problems_dir):
+    # With the axis horizontal, m g l = J psidot phidot (cos(theta) = 0): the transverse
+    # inertia, not given, had been substituted as "0 kg m^2" in the (J - I) term.
+    from gyro_cli.render import report
+
+    result = solve_file(str(problems_dir / "toy_gyroscope_pivot.yaml"))
+    text = report.text(result)
+    assert "0 kg m^2)" not in text.replace("0.0001200 kg m^2)", "")
+    assert "psidot = m g l / (J phidot) =" in text

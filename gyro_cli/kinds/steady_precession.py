@@ -560,8 +560,12 @@ def _from_precession_or_pair(given: Given, rates: list[str], I: float, J: float,
     work.section(*title)
     work.text(*equation)
     J_v, I_v, phidot = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2"), _rate("phidot", precession)
-    spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
-                                * phidot ** 2) / (J_v * phidot), unit="rad/s")
+    if cos_theta(theta) == 0:  # the (J - I) term is 0: I, perhaps not given, is not shown
+        spin = work.step("psidot", _driver_tree(D, driver) / (J_v * phidot), unit="rad/s",
+                         note=(_COS_0,))
+    else:
+        spin = work.step("psidot", (_driver_tree(D, driver) - (J_v - I_v) * cos_(_theta(theta))
+                                    * phidot ** 2) / (J_v * phidot), unit="rad/s")
     axial = work.step("omega_z", _rate("psidot", spin) + phidot * cos_(_theta(theta)),
                       unit="rad/s", ref="Eq. 11.8")
     if spin < 0:
