@@ -1005,8 +1005,9 @@ def conceal(graded: Graded, student: str, reveal: bool = False) -> Graded:
 
 
 def withhold_hints(graded: Graded) -> Graded:
-    """--no-hints: each student-facing note says only whether a value is right (and a root
-    missing or one too many), not which way it is off, its likely slip or its place: with
+    """--no-hints: each student-facing note says only whether a value is right (a root
+    missing said, more values than asked counted for the whole answer: grade_item's
+    ``plain``), not which way it is off, its likely slip or its place: with
     resubmissions, "too high" halves the range each time (6 tries from a 100x range) and a
     slip gives the answer in one. The teacher's notes keep everything."""
     for row in graded.rows:

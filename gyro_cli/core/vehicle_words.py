@@ -3,9 +3,8 @@ four-wheeler): kinds may not import each other, so the sentence they share lives
 
 from __future__ import annotations
 
-from typing import Any
-
 from .expr import Sym
+from .given import Given
 from .prose import cross, names, plus, rel
 from .work import Work
 
@@ -34,7 +33,7 @@ def reactive_couple(vehicle: str, rotors: str = "rotor",
 TAKEN_LEFT = " (no turn is given: taken left; only the senses depend on it)"
 
 
-def turn_of(given: Any) -> tuple[str, str]:
+def turn_of(given: Given) -> tuple[str, str]:
     """The vehicle's turn, "left" or "right" (left when none is given), and what to add
     where it is stated: TAKEN_LEFT when it was not given."""
     return given.word("turn", "left"), "" if "turn" in given else TAKEN_LEFT

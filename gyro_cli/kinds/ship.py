@@ -102,9 +102,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
     else:
         assert rate is not None, "only a roll leaves the rate unknown"
         C = work.step("C", V.gyroscopic_couple(J_, omega, Sym("omega_p", rate, "rad/s")), unit="N*m",
-                      ref="Eq. 11.29", note="the maximum, in pitching" if motion == "pitching"
-                      and "pitch_rate" not in given else "at the instant"
-                      if motion == "pitching" else "")
+                      ref="Eq. 11.29", note=_PITCH_NOTE.get(motion, "") if "pitch_rate"
+                      not in given else "at the instant")
     refuse_overflow(C, Hmag)
     work.answer("couple", "C", [C], "moment")
     if rate is not None:
@@ -153,6 +152,10 @@ def _steering(given: Given, work: Work) -> V.Vector:
     wp = V.steering_precession(v, R, turn)
     _steering_line(turn, taken, wp, work)
     return wp
+
+
+# a pitch of amplitude and period: the couple at its greatest (a pitch_rate: at the instant)
+_PITCH_NOTE = {"pitching": "the maximum, in pitching"}
 
 
 def _steering_line(turn: str, taken: str, wp: V.Vector, work: Work) -> None:

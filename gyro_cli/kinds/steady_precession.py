@@ -80,6 +80,8 @@ _AT_90 = rel(th, "=", _deg(90))  # theta = 90 deg
 _COS_0 = rel(cos_(th), "=", 0)
 _AXIAL_RATE = rel(wz, "=", psd + phd * cos_(th))  # omega_z = psidot + phidot cos(theta), Eq. 11.8
 _DROPPED_TERM = I_ * phd * cos_(th)  # the term of Eq. 11.13 the gyroscopic approximation drops
+# ... with the spin written psidot (omega_z = psidot + phidot cos(theta)): (J - I) phidot cos
+_DROPPED_WITH_PSIDOT = (J_ - I_) * phd * cos_(th)
 
 
 # Made on first use, once (functools.cache), as the sentences by driver below: a solve
@@ -247,7 +249,7 @@ def _without_theta_words() -> tuple[dict[str, tuple], dict[str, tuple], tuple, t
     # Eq. 11.13, m g l = phidot (J omega_z - I phidot cos theta), drops I phidot cos theta
     # with the spin omega_z; with psidot (omega_z = psidot + phidot cos theta) it is
     # m g l = phidot (J psidot + (J - I) phidot cos theta): (J - I) phidot cos theta drops
-    dropped = {"omega_z": _DROPPED_TERM, "psidot": (J_ - I_) * phd * cos_(th)}
+    dropped = {"omega_z": _DROPPED_TERM, "psidot": _DROPPED_WITH_PSIDOT}
     whatever_theta = {symbol: (
         "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
         J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
@@ -709,10 +711,8 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    # with the spin psidot the approximation drops (J - I) phidot cos(theta) (Eq. 11.13 in
-    # psidot), with omega_z only I phidot cos(theta)
-    work.section("Gyroscopic approximation (the ", (J_ - I_) * phd * cos_(th)
-                 if symbol == "psidot" else _DROPPED_TERM, " term dropped)")
+    work.section("Gyroscopic approximation (the ", _DROPPED_WITH_PSIDOT if symbol == "psidot"
+                 else _DROPPED_TERM, " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
