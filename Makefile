@@ -1,7 +1,10 @@
 # gyro: the two set-up commands of the README.
 #   make demo   create .venv if needed, install gyro, solve every bundled problem
 #   make test   the same set-up, then import layers, ruff, mypy and the test suite on
-#               every core (pytest-xdist)
+#               every core (pytest-xdist), but for the tests marked slow
+#   make test-slow  the tests marked slow: the pages in Chromium, the package and docs
+#               builds, the hooks' environments, processes sent signals or given a broken
+#               HOME; CI (.ci/run) runs make test, then make test-slow
 #   make props  the property tests with long hypothesis budgets (EXAMPLES times the
 #               default, default 10), on every core
 #   make browser  the pages in Chromium with the contrast of every text (make test checks
@@ -21,7 +24,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test props browser check bench handout fuzz examples docs dist environment clean
+.PHONY: demo test test-slow props browser check bench handout fuzz examples docs dist environment clean
 
 MINUTES ?= 5
 EXAMPLES ?= 10
@@ -47,12 +50,19 @@ test: $(STAMP)
 	$(BIN)/ruff check gyro_cli tests benchmarks fuzz
 	@echo "$(BIN)/mypy gyro_cli  (beside the tests)"
 	@$(BIN)/mypy gyro_cli > $(VENV)/mypy.log 2>&1 & typing=$$!; \
-	  $(BIN)/python -m pytest -q -n auto --dist worksteal --assert=plain; tests=$$?; \
+	  $(BIN)/python -m pytest -q -n auto --dist worksteal --assert=plain -m "not slow"; tests=$$?; \
 	  if [ $$tests -ne 0 ]; then \
 	    echo "make test: the failed tests again, with pytest's assertion messages"; \
-	    $(BIN)/python -m pytest -q --last-failed --last-failed-no-failures none; fi; \
+	    $(BIN)/python -m pytest -q -m "not slow" --last-failed --last-failed-no-failures none; fi; \
 	  wait $$typing; typed=$$?; cat $(VENV)/mypy.log; \
 	  test $$tests -eq 0 -a $$typed -eq 0
+
+# The tests make test leaves out (marked slow): each waits on another program (Chromium,
+# pip and build, mkdocs, pre-commit, a notebook kernel) or on a process it signals.
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -q -n auto --dist worksteal --assert=plain -m slow || \
+	  { echo "make test-slow: the failed tests again, with pytest's assertion messages"; \
+	    $(BIN)/python -m pytest -q -m slow --last-failed --last-failed-no-failures none; exit 1; }
 
 props: $(STAMP)
 	GYRO_EXAMPLES=$(EXAMPLES) $(BIN)/python -m pytest -q -n auto -m property

@@ -200,6 +200,7 @@ def test_mp4_through_ffmpeg(run, tmp_path):
     assert out.read_bytes()[4:8] == b"ftyp"
 
 
+@pytest.mark.slow
 def test_html_animation_plays_in_chromium_without_console_errors(run, tmp_path, browser):
     """(`browser`, conftest.py: the test process's Chromium; skips, saying why, without.)"""
     out = tmp_path / "a.html"

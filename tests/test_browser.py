@@ -68,7 +68,8 @@ else:
         "no Chromium found (apt-get install chromium, or set GYRO_CHROMIUM to its path); "
         ".ci/run installs it")
 
-pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
+pytestmark = [pytest.mark.slow,  # `make test-slow`
+              pytest.mark.skipif(MISSING is not None, reason=MISSING or "")]
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,8 @@ from test_check import put
 
 ROOT = Path(__file__).resolve().parent.parent
 
-pytestmark = pytest.mark.skipif(MISSING is not None, reason=MISSING or "")
+pytestmark = [pytest.mark.slow,  # `make test-slow`
+              pytest.mark.skipif(MISSING is not None, reason=MISSING or "")]
 
 
 def test_handout_page_with_solutions_in_chromium(run, browser, axe, shots, tmp_path):  # noqa: F811

@@ -210,6 +210,7 @@ def reader_leaves(*args, cwd):
         os.close(write)
 
 
+@pytest.mark.slow
 def test_i22_02_junit_written_when_the_reader_leaves(tmp_path):
     result = reader_leaves("check", PROBLEMS, "--junit", "j.xml", cwd=tmp_path)
     assert result.returncode == 141, result.stderr
@@ -218,6 +219,7 @@ def test_i22_02_junit_written_when_the_reader_leaves(tmp_path):
     assert leftovers(tmp_path) == []
 
 
+@pytest.mark.slow
 def test_i22_02_plot_written_when_the_reader_leaves(tmp_path):
     result = reader_leaves("solve", RELEASED, "--plot", "p.png", cwd=tmp_path)
     assert result.returncode == 141, result.stderr
@@ -225,6 +227,7 @@ def test_i22_02_plot_written_when_the_reader_leaves(tmp_path):
 
 
 @needs_dev_full
+@pytest.mark.slow
 def test_i22_02_full_stdout_is_one_line_not_an_internal_error(tmp_path):
     with open("/dev/full", "w") as full:
         result = gyro("check", PROBLEMS, "--junit", "j.xml", cwd=tmp_path, stdout=full)
@@ -245,6 +248,7 @@ SIGNAL_IN_FSYNC = """
 """
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, code", [("SIGTERM", 143), ("SIGINT", 130), ("SIGHUP", 129)])
 def test_i22_03_signal_while_writing_the_csv_leaves_no_temporary_file(tmp_path, name, code):
     if not hasattr(signal, name):
@@ -369,6 +373,7 @@ def solves(env, cwd):
     return result
 
 
+@pytest.mark.slow
 def test_i22_12_solves_with_home_a_regular_file(tmp_path):
     home = tmp_path / "home"
     home.write_text("not a folder")  # nothing can be created under it, root or not
@@ -388,6 +393,7 @@ def test_i22_12_solves_with_a_read_only_home(tmp_path):
     assert list(home.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_i22_12_solves_with_home_missing_and_creates_none(tmp_path):
     home = tmp_path / "gone"
     solves(dict(COLD, HOME=str(home)), tmp_path)
@@ -397,6 +403,7 @@ def test_i22_12_solves_with_home_missing_and_creates_none(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_i22_12_empty_cache_dir_means_no_cache_at_all(tmp_path):
     home = tmp_path / "home"
     home.write_text("not a folder")
@@ -405,6 +412,7 @@ def test_i22_12_empty_cache_dir_means_no_cache_at_all(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["home"]
 
 
+@pytest.mark.slow
 def test_i22_12_a_truncated_pint_pickle_is_ignored_and_rebuilt(tmp_path):
     cache = tmp_path / "cache"
     solves({"GYRO_CACHE_DIR": str(cache)}, tmp_path)
@@ -420,6 +428,7 @@ def test_i22_12_a_truncated_pint_pickle_is_ignored_and_rebuilt(tmp_path):
     assert rebuilt and all(p.stat().st_size > 100 for p in rebuilt)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("damage", [b"", b"{", b"\x80\x04garbage", b"[]"])
 def test_i22_12_a_damaged_gyro_table_is_ignored(tmp_path, damage):
     cache = tmp_path / "cache"
@@ -429,6 +438,7 @@ def test_i22_12_a_damaged_gyro_table_is_ignored(tmp_path, damage):
     assert (cache / "units.json").read_bytes() != damage  # rebuilt
 
 
+@pytest.mark.slow
 def test_i22_12_parallel_first_runs_on_a_fresh_home_both_succeed(tmp_path):
     for round_ in range(3):
         home = tmp_path / f"home{round_}"
@@ -478,6 +488,7 @@ def test_i22_13_glob_still_matches_as_python_does(tmp_path):
 
 
 @needs_fifo
+@pytest.mark.slow
 @pytest.mark.parametrize("where", ["units.json", "pint/x.pickle", "pint"])
 def test_i22_13_a_fifo_at_a_cache_path_does_not_block(tmp_path, where):
     cache = tmp_path / "cache"

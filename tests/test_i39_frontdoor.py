@@ -99,6 +99,7 @@ def _build_site(config: Path, site: Path) -> subprocess.CompletedProcess[str]:
                  "--site-dir", site], cwd=config.parent)
 
 
+@pytest.mark.slow
 def test_item2_docs_site_builds_strict_offline_with_api_reference(tmp_path: Path) -> None:
     _need_module("mkdocs")
     _need_module("mkdocstrings_handlers.python")
@@ -128,6 +129,7 @@ def test_item2_docs_site_builds_strict_offline_with_api_reference(tmp_path: Path
             assert found is None, (path.relative_to(site), found and found.group(0))
 
 
+@pytest.mark.slow
 def test_item2_broken_link_or_anchor_fails_the_build(tmp_path: Path) -> None:
     _need_module("mkdocs")
     shutil.copytree(ROOT / "docs", tmp_path / "docs")
@@ -371,6 +373,7 @@ def _run_action(action: dict[str, Any], given: dict[str, str], work: Path, path:
     return 0, summary.read_text(), outputs.read_text()
 
 
+@pytest.mark.slow
 def test_item4_github_action_is_composite_and_writes_junit_and_summary(tmp_path: Path) -> None:
     action = yaml.safe_load((ROOT / "action.yml").read_text())
     assert action["runs"]["using"] == "composite"
@@ -427,6 +430,7 @@ def test_item4_job_summary_escapes_what_files_hold() -> None:
     assert "\n" not in failure and failure.count(" | ") == 2 and "&#96;1&#96;" in failure
 
 
+@pytest.mark.slow
 def test_item4_gitlab_template_reports_junit_and_shards(tmp_path: Path) -> None:
     template = yaml.safe_load((ROOT / "ci" / "gyro-check.gitlab-ci.yml").read_text())
     job = template["gyro-check"]

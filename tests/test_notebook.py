@@ -15,6 +15,7 @@ pytest.importorskip("ipykernel", reason="ipykernel is in the dev extra")
 NOTEBOOK = Path(__file__).resolve().parent.parent / "docs" / "examples" / "gyro.ipynb"
 
 
+@pytest.mark.slow
 def test_notebook_runs_and_shows_the_worked_answer(tmp_path):
     nb = nbformat.read(NOTEBOOK, as_version=4)
     env_backend = os.environ.get("MPLBACKEND")
