@@ -402,7 +402,14 @@ def _answer_whole(answer: object, answer_fields: set[str]) -> bool:
             and all(isinstance(answer[k], list)
                     and all(isinstance(v, plain) and not isinstance(v, bool) for v in answer[k])
                     for k in ("values", "si_values"))
-            and _strings(answer["labels"]))
+            and _strings(answer["labels"]) and _sign_words(answer["signs"]))
+
+
+def _sign_words(value: object) -> bool:
+    """A stored answer's own sign words: None (the kind's), or [word, +1 or -1] pairs."""
+    return value is None or (isinstance(value, list) and all(
+        isinstance(p, list) and len(p) == 2 and isinstance(p[0], str) and p[1] in (1, -1)
+        and not isinstance(p[1], bool) for p in value))
 
 
 def _strings(value: object) -> bool:

@@ -27,7 +27,7 @@ from collections.abc import Callable, Generator, Iterator
 from typing import Any
 
 from ..core.errors import InputError
-from .expected import Expected, parse_expected
+from .expected import Expected, answer_signs, parse_expected
 from .matching import compare
 from .results import CheckRun, ProblemCheck
 from .tolerance import Tolerance, tolerance_for, validate_tolerance
@@ -83,9 +83,13 @@ def check_problem(problem: Any, strict: bool = False) -> ProblemCheck:
         result.status = "no expected answers"
         return result
     for name, (values, tolerance) in wanted.items():
-        result.answers += compare(name, values, tolerance, solved.answers[name], strict=strict,
-                                  convention=kind.answer(name).doc,
-                                  signs=kind.answer(name).signs)
+        spec, reported = kind.answer(name), solved.answers[name]
+        signs = answer_signs(spec, reported)
+        if signs != spec.signs:  # words the kind reads that sign nothing in this problem
+            values = parse_expected(problem.expected[name], spec.dimension, f"expected.{name}",
+                                    spec.sides, signs)
+        result.answers += compare(name, values, tolerance, reported, strict=strict,
+                                  convention=spec.doc, signs=signs)
     for symbol, raw in step_values.items():
         result.answers += _compare_step(str(symbol), raw, problem, solved.solution, answer_names)
     result.status = "pass" if all(a.passed for a in result.answers) else "fail"

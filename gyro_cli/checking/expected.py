@@ -85,6 +85,14 @@ def parse_expected(raw: Any, dimension: str | None, key: str, sides: tuple[str, 
     return out
 
 
+def answer_signs(spec: Any, reported: Any) -> tuple[tuple[str, int], ...]:
+    """The words that sign an answer's sizes in this problem: the solver's own for it
+    where the kind's do not hold (a wheel drop's couple forces lie along the track, so
+    ``up`` and ``pressed`` sign nothing), else the kind's (``spec.signs``)."""
+    own = getattr(reported, "signs", None)
+    return spec.signs if own is None else tuple((str(w), int(n)) for w, n in own)
+
+
 # words that only join the others: "1.4 kN, outer rail pressed", "116.5 N upwards at A"
 _FILLERS = frozenset(("a", "an", "at", "on", "of", "the", "is", "and", "bearing", "bearings",
                       "rail", "rails", "wheel", "wheels", "each", "side", "end", "force",

@@ -37,7 +37,7 @@ from ..core.work import num
 from . import check
 from .copies import Match, VariantIndex, whose
 from .ecf import check_steps
-from .expected import parse_value
+from .expected import answer_signs, parse_value
 from .matching import diagnose, graded_lines
 from .tolerance import tolerance_for
 
@@ -1101,7 +1101,7 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
     if dimension is None:
         return _grade_words(row, values, reported)
     parsed = []
-    sides, signs = (spec.sides, spec.signs) if spec is not None else ((), ())
+    sides, signs = (spec.sides, answer_signs(spec, reported)) if spec is not None else ((), ())
     for value in values:
         try:
             parsed.append(_student_value(value, dimension, name, list(reported.labels),

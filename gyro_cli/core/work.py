@@ -145,6 +145,9 @@ class Answer:
     dimension: str | None
     labels: list[str] = field(default_factory=list)
     symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
+    # the words that sign its sizes in this problem, where the kind's do not hold (a wheel
+    # drop's couple forces lie along the track: no up or down); None: the kind's
+    signs: list[tuple[str, int]] | None = None
 
     @property
     def si_unit(self) -> str | None:
@@ -305,15 +308,17 @@ class Work:
         self.checks.append(prose_step(pieces))
 
     def answer(self, name: str, symbol: str | Expr, si_values: list, dimension: str | None,
-               labels: list[str] | None = None) -> None:
-        """An answer; its symbol is one name (``phidot``) or a tree (``abs(F)``)."""
+               labels: list[str] | None = None,
+               signs: list[tuple[str, int]] | None = None) -> None:
+        """An answer; its symbol is one name (``phidot``) or a tree (``abs(F)``).
+        ``signs``: the words that sign its sizes here, where the kind's do not hold."""
         tree: Expr | None = None
         if isinstance(symbol, Expr):
             tree, text = symbol, prose_text(symbol)
         else:
             text = symbol
         self.answers[name] = Answer(name, text, list(si_values), dimension, list(labels or []),
-                                    symbol_expr=tree)
+                                    symbol_expr=tree, signs=signs)
 
     def warn(self, *pieces: str | Expr) -> None:
         """A warning: words, or words and trees as `text` takes them."""

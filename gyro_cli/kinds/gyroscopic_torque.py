@@ -617,8 +617,11 @@ def _couple_only(given: Given, M: float, L: float, warn: bool, work: Work) -> No
     work.step("F_A,couple", on_A, unit="N", note=_ON_THE_ROTOR_UP if M >= 0 else _ON_THE_ROTOR)
     work.step("F_B,couple", on_B, unit="N")
     work.text(*(_PUSHES_ALONG_TRACK if drop else _PUSHES_BACK))
-    work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"])
-    work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"])
+    # along the track, which way is forward the data do not say: a size is placed (A, B)
+    # and signed by its number, never by up, down, pressed or relieved
+    signs: list[tuple[str, int]] | None = [] if drop else None
+    work.answer("couple_forces", "F_couple", [F_A, F_B], "force", ["A", "B"], signs=signs)
+    work.answer("bearing_forces", "F", [F_A, F_B], "force", ["A", "B"], signs=signs)
     if warn:
         work.warn(*why_pieces, ": bearing_forces are the gyroscopic couple's "
                   + ("forces, along the track, " if drop else "share alone, "),

@@ -35,6 +35,7 @@ class Reported:
     si_unit: str | None
     labels: list[str]
     symbol_expr: Expr | None = None  # a symbol that is not one name, as a tree
+    signs: list | None = None  # the words that sign its sizes, where the kind's do not hold
 
 
 @record
@@ -157,7 +158,7 @@ def _solve(problem: Problem, overrides: dict[str, float] | None = None) -> Resul
                                  key=f"find.{name}")
         answers[name] = Reported(name, _symbol_in(answer.symbol, answer.dimension, unit),
                                  values, unit, list(answer.si_values), answer.si_unit,
-                                 answer.labels, answer.symbol_expr)
+                                 answer.labels, answer.symbol_expr, answer.signs)
     return Result(problem, solution, answers)
 
 
