@@ -228,3 +228,52 @@ def test_a_key_that_would_replace_a_sheet_or_an_input_is_refused(run, tmp_path, 
     assert out.exit_code == 2 and out.stderr.count("\n") == 1 and said in out.stderr, out.stderr
     assert os.listdir(tmp_path / "sheets") == []
     assert [path.read_bytes() for path in inputs] == before
+
+
+# ---- one problem's data is another's answer ------------------------------------------------
+
+def test_a_sheet_whose_problem_gives_anothers_answer_is_warned(run, tmp_path):
+    # euler_top_11_3 is 11/3's top precessing at the slow rate 11/3 asks for, 45.13 rpm
+    out = tmp_path / "hw.html"
+    result = run("handout", ROOT / "problems" / "11_3.yaml",
+                 ROOT / "problems" / "euler_top_11_3.yaml", "-o", out)
+    assert result.exit_code == 0, result.output
+    [warning] = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert "problem euler-11/3's phi_rate is the answer precession of problem 11/3" in warning
+    assert "45.13 rpm and 45.13 rpm" in warning and "gives that answer away" in warning
+    assert out.exists()  # written: the teacher decides
+
+
+@pytest.mark.parametrize("others", [["11_5.yaml"], ["11_2_released_top.yaml"]])
+def test_round_or_unrelated_data_is_not_warned(run, tmp_path, others):
+    # 11/3's theta = 30 deg is the released top's theta_min = 30 deg: a round number met
+    # by chance, which a student learns nothing from
+    result = run("handout", ROOT / "problems" / "11_3.yaml",
+                 *[ROOT / "problems" / o for o in others], "-o", tmp_path / "hw.html")
+    assert result.exit_code == 0 and "warning" not in result.stderr, result.stderr
+
+
+def test_a_sheet_with_solutions_is_not_warned(run, tmp_path):
+    result = run("handout", ROOT / "problems" / "11_3.yaml",
+                 ROOT / "problems" / "euler_top_11_3.yaml", "--solutions",
+                 "-o", tmp_path / "hw.html")
+    assert result.exit_code == 0 and "warning" not in result.stderr, result.stderr
+
+
+def test_students_sheets_are_warned_once_for_the_pair_with_the_count(run, tmp_path):
+    # an assignment written by hand: ann and bob each given 11/3 and the top of 11/3
+    rows = ["student,problem,variant,file,name"]
+    for student in ("ann", "bob"):
+        for name, pid in (("11_3", "11/3"), ("euler_top_11_3", "euler-11/3")):
+            text = (ROOT / "problems" / f"{name}.yaml").read_text()
+            (tmp_path / f"{student}-{name}.yaml").write_text(
+                text.replace(f'id: "{pid}"', f'id: "{pid}-{student}"', 1))
+            rows.append(f"{student},{pid},{pid}-{student},{student}-{name}.yaml,{student}")
+    (tmp_path / "assignment.csv").write_text("\n".join(rows) + "\n")
+    (tmp_path / "out").mkdir()
+    result = run("handout", "--assignment", tmp_path / "assignment.csv",
+                 "-o", tmp_path / "out" / "hw.html", "--key", tmp_path / "key.csv")
+    assert result.exit_code == 0, result.output
+    [warning] = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert "problem euler-11/3's phi_rate is the answer precession of problem 11/3" in warning
+    assert "ann's; so on 2 of 2 sheets" in warning, warning

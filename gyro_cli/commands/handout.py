@@ -111,6 +111,65 @@ def sheets(paths: list[str], roster: str | None = None, assignment: str | None =
     return [Sheet(None, "", problems, [p.id for p in problems])]
 
 
+def given_away(sheet: Sheet) -> list[tuple[str, str, str]]:
+    """Where one problem of the sheet gives, as its data, what another asks: a given
+    shown in its statement equal (to 0.05 %, not zero, not a round number) to an answer
+    the other asks, of the same dimension (a top of 11/3's precessing at 11/3's 45.13
+    rpm). Each as (what gives it away, what it gives away, the values)."""
+    from ..checking.grades import reported
+    from ..core.expr import num
+    from ..solving.problem import graded_questions, params_by_name
+
+    asked = []  # (problem, answer, dimension, SI value, as printed)
+    for problem, result, pid in zip(sheet.problems, solved(sheet), sheet.variants):
+        for name in graded_questions(problem):
+            spec = problem.kind.answer(name)
+            if spec is not None and spec.dimension is not None:
+                answer = reported(result, name)
+                unit = answer.unit or answer.si_unit
+                asked += [(pid, name, spec.dimension, float(si), f"{num(v)} {unit}")
+                          for si, v in zip(answer.si_values, answer.values)]
+    found = []
+    for problem, pid in zip(sheet.problems, sheet.variants):
+        template = problem.data.get("statement")
+        params, written = params_by_name(problem.kind), problem.data.get("given", {})
+        for key, value in problem.given.values.items():
+            param = params.get(key)
+            if param is None or not isinstance(value, float) or value == 0 or (
+                    isinstance(template, str) and "{" + key + "}" not in template) \
+                    or _digits(written.get(key)) < 3:
+                continue  # not a quantity, not shown to the student, or a round number
+                # (30 deg, 3 rad/s: met by chance; 45.13 rpm is a result carried over)
+            found += [(f"problem {pid}'s {key}", f"the answer {name} of problem {other}",
+                       f"{' '.join(str(written.get(key)).split())} and {shown}")
+                      for other, name, dimension, si, shown in asked
+                      if other != pid and dimension == param.dimension
+                      and abs(si - value) <= 5e-4 * abs(si)]
+    return found
+
+
+def answers_given_away(todo: list[Sheet]) -> list[str]:
+    """`given_away` of every sheet, a sentence for each pair of problems: the values of
+    the one sheet, or of the first of the students' sheets where it is found."""
+    found: dict[tuple[str, str], list[tuple[str | None, str]]] = {}
+    for sheet in todo:
+        for giver, given, values in given_away(sheet):
+            found.setdefault((giver, given), []).append((sheet.student, values))
+    return [f"{giver} is {given} ({values}"
+            + (f", {student}'s; so on {len(where)} of {len(todo)} sheets)"
+               if student is not None else ")")
+            for (giver, given), where in found.items() for student, values in where[:1]]
+
+
+def _digits(written: Any) -> int:
+    """The significant digits of the number a given is written with (``45.13 rpm``: 4,
+    ``30 deg``: 1, ``0.10 m``: 1); 0 where none is found."""
+    import re
+
+    found = re.search(r"\d[\d.]*", str(written))
+    return len(found.group().replace(".", "").strip("0")) if found else 0
+
+
 def _name(extra: dict[str, str], student: str) -> str:
     for key in ("name", "student name", "full name"):
         for k, v in extra.items():
@@ -281,10 +340,12 @@ def _same_file(a: str, b: str) -> bool:
 
 def write_handouts(paths: list[str], out: str, roster: str | None, assignment: str | None,
                    seed: int, solutions: bool, course: str, title: str,
-                   force: bool, key: str | None = None) -> list[str]:
+                   force: bool, key: str | None = None,
+                   warnings: list[str] | None = None) -> list[str]:
     """Write the handout(s) and, per student, the key CSV (``key``, by default
     ``<OUT stem>-key.csv`` beside the sheets; the last path returned); nothing over an
-    existing file without ``force`` (checked before anything is written)."""
+    existing file without ``force`` (checked before anything is written). ``warnings``
+    receives, for sheets without solutions, where one problem's data is another's answer."""
     from ..checking.assignment import file_names
     from ..core.files import StagedSet, refuse_outputs_over_inputs
 
@@ -332,4 +393,6 @@ def write_handouts(paths: list[str], out: str, roster: str | None, assignment: s
                     data = compile_pdf(data)
             staged.add(target, data)
         staged.place()
+    if warnings is not None and not solutions:
+        warnings += answers_given_away(todo)
     return [target for target, _ in targets]

@@ -191,11 +191,15 @@ def handout(files: tuple[str, ...], out: str, roster: str | None, assignment: st
 
     if not files and not assignment:
         fail("give the problem FILES (or a DIR), or --assignment")
+    warnings: list[str] = []
     try:
         written = write_handouts(list(files), out, roster, assignment, seed, solutions,
-                                 course, title, force, key)
+                                 course, title, force, key, warnings)
     except InputError as err:
         fail(err)
+    for warning in warnings:  # the sheets are written: the teacher decides
+        click.echo(f"gyro: warning: {warning}: the sheet gives that answer away; leave one "
+                   "of the two problems out, or ask it without that given", err=True)
     if roster:  # the numbers are drawn again: the seed must be gyro vary's
         click.echo(f"gyro: note: each student's numbers are drawn from --seed {seed}, as "
                    f"gyro vary --roster draws them with that seed; --assignment "
