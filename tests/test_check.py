@@ -456,3 +456,17 @@ def test_unit_factor_cache_keeps_every_check():
     assert units.parse("3 oz", "force", "k", weight=True)[0] == pytest.approx(3 * 0.27801385,
                                                                               rel=1e-8)
     assert units.convert(first, "rate", "rpm") == pytest.approx(1800, rel=1e-15)
+
+
+def test_a_magnitude_check_shows_the_computed_value_as_signed(run):
+    # Irodov's locomotive: the turbine's couple M = J psidot Omega loads the rails +M / L
+    # and -M / L; the key gives [1.4 kN, -1.4 kN] and compares sizes (`magnitude`). B's
+    # computed value is negative: shown "-1.396 kN (B)" beside "-1.4 kN", not as "1.396"
+    problems = Path(__file__).resolve().parent.parent / "problems"
+    result = run("check", problems / "irodov_turbine_locomotive.yaml")
+    assert result.exit_code == 0, result.output
+    rows = [line.split() for line in result.output.splitlines() if "bearing_forces[" in line]
+    assert [(r[2], r[4], r[6]) for r in rows] == [("1.4", "1.396", "(A)"),
+                                                   ("-1.4", "-1.396", "(B)")], rows
+    assert all("magnitude" in line for line in result.output.splitlines()
+               if "bearing_forces[" in line)

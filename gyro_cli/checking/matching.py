@@ -141,7 +141,7 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
     the truth and the values compared are a student's (grading: `tolerance.student_widths`);
     else each expected value's own tolerance decides.
     """
-    computed = list(reported.si_values)
+    computed = shown = list(reported.si_values)  # shown: as the solver signs them
     if tolerance.magnitude and reported.si_unit is not None:
         computed = [abs(c) for c in computed]
         values = [dataclasses.replace(v, si=abs(float(v.si)), number=abs(v.number))
@@ -206,16 +206,17 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
             assert j is not None, "no pairing pairs nothing with nothing"
             unit, factor = values[0].unit or reported.unit or "", values[0].factor
             got_value = computed[j] / factor
+            got_text = f"{num(shown[j] / factor)} {unit}".rstrip() + label  # as signed (above)
             if not strict and all_found:
                 out.append(AnswerCheck(
-                    name, index, None, f"{num(got_value)} {unit}".rstrip() + label, True,
+                    name, index, None, got_text, True,
                     unit=unit, got_value=got_value, got_si=computed[j],
                     si_unit=reported.si_unit, tolerance=tolerance.text, keyed=False,
                     message="not keyed: the key quotes no value for this root "
                             "(gyro check --strict fails it)"))
                 continue
             out.append(AnswerCheck(
-                name, index, None, f"{num(got_value)} {unit}".rstrip() + label, False,
+                name, index, None, got_text, False,
                 unit=unit, got_value=got_value, got_si=computed[j],
                 si_unit=reported.si_unit, tolerance=tolerance.text,
                 message=f"computed root {num(got_value)} {unit}{label} has no expected "
@@ -240,7 +241,9 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         got_si = computed[j]
         got = got_si / value.factor
         check.got_si, check.got_value = got_si, got
-        check.got = f"{num(got)} {unit}".rstrip() + label
+        # the computed value as signed, beside the expected one as written, where only
+        # sizes are compared (`magnitude`): "-1.4 kN" against "-1.396 kN (B)", not "1.396"
+        check.got = f"{num(shown[j] / value.factor)} {unit}".rstrip() + label
         if not math.isfinite(got):  # finite in SI, too large for the expected value's unit
             check.got_value = None
             check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
