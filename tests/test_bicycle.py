@@ -425,3 +425,16 @@ def test_missing_key_without_preset_and_speed_for_eigenvalues(run, write):
     out = run("solve", path)
     assert out.exit_code == 2 and "given.speed" in out.stderr
     assert len(out.stderr.strip().splitlines()) == 1
+
+
+def test_s_a_and_the_wheels_share_are_said_as_they_enter_the_matrices(run, problems_dir):
+    # S_A = m_A u_A + mu m_T x_T (Meijaard et al. 2007, Appendix A): the steering
+    # assembly's own static moment and the trail's share (mu = (c / w) cos(lambda)) of the
+    # whole bicycle's m_T x_T, so not the steering assembly's alone; S_R and S_F enter C1
+    # and K2 with the trail and the tilt, so the spin moves the range as well as opening it
+    out = run("solve", problems_dir / "bicycle_benchmark_fast.yaml").stdout
+    assert "static moment of the steering assembly" not in out
+    assert "S_A = m_A u_A + mu m_T x_T" in out and "lean-steer static moment" in out
+    assert "the rest of the design" not in out
+    slow = (problems_dir / "bicycle_benchmark_slow.yaml").read_text()
+    assert "riderless" not in slow and "rigid rider" in slow  # m_B = 85 kg holds the rider

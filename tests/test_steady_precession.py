@@ -255,3 +255,34 @@ def test_text_output_shows_work(run, problems_dir):
     for piece in ("Given", "Body", "Eq. 11.13", "Eq. 11.21", "45.13 rpm (slow)",
                   "533.5 rpm (fast)", "32.2 ft/s^2", "ozf"):
         assert piece in out.stdout
+
+
+def _least_of_11_3() -> tuple[float, float]:
+    """11/3's least psidot and least omega_z, by hand, in rpm: W = 3 ozf, l = 1.5 in,
+    k = 0.84 in and 1.80 in, theta = 30 deg, the US textbook g = 32.2 ft/s^2 (no mass
+    given). The least psidot is the discriminant of Eq. 11.13 at a given psidot,
+    (J - I) cos(theta) phidot^2 + J psidot phidot - W l = 0: J^2 psidot^2 >= 4 (I - J) W l
+    cos(theta); the least omega_z is Eq. 11.21 corrected: J^2 omega_z^2 >= 4 I W l
+    cos(theta). 965.4 rpm and 1092 rpm: two bounds on two rates, not one."""
+    inch, g = 0.0254, 32.2 * 0.3048
+    weight = 3 / 16 * 4.4482216152605
+    m, Wl, c = weight / g, weight * 1.5 * inch, math.cos(math.radians(30))
+    J, I = m * (0.84 * inch) ** 2, m * (1.80 * inch) ** 2
+    rpm = 2 * math.pi / 60
+    return 2 * math.sqrt((I - J) * Wl * c) / J / rpm, 2 * math.sqrt(I * Wl * c) / J / rpm
+
+
+@pytest.mark.parametrize("rate, where", [("spin", "the discriminant of Eq. 11.13; Eq. 11.21 "
+                                          "is its omega_z form"), ("axial_rate", "Eq. 11.21")])
+def test_each_least_rate_cites_where_it_comes_from(problems_dir, tmp_path, run, rate, where):
+    least = dict(zip(("spin", "axial_rate"), _least_of_11_3()))[rate]
+    assert f"{least:.1f}" == {"spin": "965.4", "axial_rate": "1091.6"}[rate]
+    text = (problems_dir / "11_3.yaml").read_text().replace("spin: 1800 rpm", f"{rate}: 500 rpm")
+    text = text.split("\nstatement:")[0] + "\n"  # the statement names {spin}
+    (tmp_path / "low.yaml").write_text(text)
+    result = run("solve", tmp_path / "low.yaml")
+    assert result.exit_code == 2, result.output
+    assert f"({least:.4g} rpm), {where}" in result.output, result.output
+    if rate == "spin":  # the worked answer's own line, at 1800 rpm
+        out = run("solve", problems_dir / "11_3.yaml").stdout
+        assert f"= 101.1 rad/s    ({where})" in out and "(Eq. 11.21)" not in out

@@ -347,7 +347,8 @@ def solve(given: Given, find: frozenset[str], work: Work) -> None:
                  "kg m")
         ST = step("S_T", SR + SF, "kg m")
     SA = step("S_A", mA * uA + mu * mT * xT, "kg m",
-              note="static moment of the steering assembly")
+              note="lean-steer static moment: the steering assembly's own and the trail's share "
+                   "of the whole bicycle's")
     if work.overrides:  # a student's values carried: the matrices from the steps shown
         m, no_spin = _from_steps((mT, xT, zT, ITxx, ITxz, ITzz, mA, xA, zA, IAxx, IAxz, IAzz,
                                   uA, IAll, IAlx, IAlz, mu, SR, SF, ST, SA), p)
@@ -476,8 +477,8 @@ def _share(with_spin: list[tuple[float, float]], without: list[tuple[float, floa
     if not without:
         return ("without the wheels' spin angular momentum there is no self-stable speed at all: "
                 "the weave never stabilises. For these data the wheels' spin is needed for "
-                "self-stability, while the rest of the design (trail, steer-axis tilt, mass "
-                "distribution) decides where the range lies: the chapter's 'partly'.",)
+                "self-stability; the spin, the trail, the steer-axis tilt and the mass "
+                "distribution together decide where the range lies: the chapter's 'partly'.",)
     if not with_spin:
         return ("the wheels' spin removes the self-stable range these data have without it.",)
     (lo1, hi1), (lo0, hi0) = with_spin[0], without[0]

@@ -364,13 +364,13 @@ def _spread(body, rate: str, value: float, D: float, work: Work) -> tuple:
     for degrees, root in slow.items():
         work.step(_at_angle(exact_root, degrees), value=root, unit="rad/s",
                   note="exact, Eq. 11.13" if root is not None else
-                  "no steady precession: below the least spin (Eq. 11.21)")
+                  "no steady precession: below the least spin (the discriminant of Eq. 11.13)")
     exact, at_30 = slow[90.0], slow[30.0]
     assert exact is not None, "at 90 deg Eq. 11.13 is linear: one root for a non-zero rate"
     if at_30 is None:
         return ("; for these data the exact " + name + " is ", q(exact, "rad/s"), " at ",
                 _angle(90.0), " and there is none at ", _angle(30.0), " (the spin is below the "
-                "least, Eq. 11.21)")
+                "least: the discriminant of Eq. 11.13)")
     apart = abs(at_30 - exact) / abs(exact)
     return ("; for these data the exact " + name + " is ", q(at_30, "rad/s"), " at ",
             _angle(30.0), " and ", q(exact, "rad/s"), " at ", _angle(90.0), ", ",
@@ -422,9 +422,17 @@ def _axial_quadratic(driver: str) -> tuple:
             "    (Eq. 11.20)")
 
 
+#: where each least rate comes from: Eq. 11.21 (corrected) bounds omega_z; the least psidot
+#: is the discriminant of Eq. 11.13 at a given psidot, another number (965.4 rpm for 11/3,
+#: where the least omega_z is 1091 rpm)
+_LEAST_REF = {"psidot": "the discriminant of Eq. 11.13; Eq. 11.21 is its omega_z form",
+              "omega_z": "Eq. 11.21"}
+
+
 @cache
 def _least_spin(driver: str) -> Expr:
-    """The least psidot with a real root (Eq. 11.21 corrected)."""
+    """The least psidot with a real root: the discriminant of Eq. 11.13 at a given psidot
+    (Eq. 11.21, corrected, is the bound on omega_z)."""
     return 2 * sqrt((I_ - J_) * _moment_of(driver) * cos_(th)) / J_
 
 
@@ -491,11 +499,11 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
             f"steady precession at theta = {num(math.degrees(theta))} deg: the least is "
             f"{_least(symbol)} = {prose_text(formula)} = {qty(least, 'rad/s')} "
-            f"({num(least / RPM)} rpm), Eq. 11.21", key=f"given.{rate}")
+            f"({num(least / RPM)} rpm), {_LEAST_REF[symbol]}", key=f"given.{rate}")
     if least > 0:
         work.text("real roots exist because ", rel(names(symbol)[0], ">=",
                                                    names(_least(symbol))[0], "=", formula, "=",
-                                                   q(least, "rad/s")), "    (Eq. 11.21)")
+                                                   q(least, "rad/s")), f"    ({_LEAST_REF[symbol]})")
     if len(roots) == 1:
         work.text(*_one_root(abs(cos) < 1e-12))
     labels = _labels(roots)
@@ -621,7 +629,7 @@ def _no_least_spin(driver: str) -> tuple:
 
 
 def _min_spin(I: float, J: float, theta: float, D: float, driver: str, work: Work) -> None:
-    work.section("Least spin for steady precession (discriminant of Eq. 11.13; Eq. 11.21)")
+    work.section("Least spin for steady precession (discriminant of Eq. 11.13)")
     least = min_spin(I, J, theta, D)
     if least > 0:
         J_v, I_v = Sym("J", J, "kg m^2"), Sym("I", I, "kg m^2")
