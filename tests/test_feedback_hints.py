@@ -129,3 +129,23 @@ def test_errors_carried_forward_keep_their_hints_to_the_teacher(tmp_path):
     assert "barely change" in rows[True]["min_spin"].feedback
     assert rows[False]["min_spin"].feedback == "900 rpm: not right"
     assert "barely change" in rows[False]["min_spin"].note
+
+
+@pytest.mark.parametrize("value, result", [
+    ("533.5 rpm (slow); 45.13 rpm (fast)", "wrong"),   # each root named the other's
+    ("45.13 rpm (slow); 533.5 rpm (fast)", "correct"),
+    ("533.5 rpm (fast); 45.13 rpm (slow)", "correct"),  # in any order, named rightly
+    ("533.5 rpm (slow); 45.13 rpm", "correct"),         # not every value named: a set
+    ("533.5 rpm; 45.13 rpm", "correct")])
+def test_a_root_named_by_its_label_is_that_root(tmp_path, value, result):
+    # 11/3's roots, slow 45.13 rpm and fast 533.5 rpm (to first order m g l / (J psidot)
+    # = 41.6 rpm and J psidot / ((I - J) cos(theta)) = 579 rpm: the slow one is the smaller)
+    sheet = _sheet(tmp_path, [("ann", "11/3", "precession", value)])
+    [row] = [r for r in api.grade(str(sheet), PROBLEMS[:1]).rows if r.answer == "precession"]
+    assert row.result == result, (value, row.result, row.note)
+    if result == "wrong":
+        assert row.points == 0 and "the place" in row.note, row.note
+        assert "not in its place" in row.feedback
+        [plain] = [r for r in api.grade(str(sheet), PROBLEMS[:1], hints=False).rows
+                   if r.answer == "precession"]
+        assert plain.feedback == "533.5 rpm: not right; 45.13 rpm: not right"

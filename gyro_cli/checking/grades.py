@@ -38,7 +38,7 @@ from . import check
 from .copies import Match, VariantIndex, whose
 from .ecf import check_steps
 from .expected import answer_signs, parse_value
-from .matching import diagnose, graded_lines
+from .matching import diagnose, graded_lines, ordered
 from .tolerance import tolerance_for
 
 COLUMNS = ("student", "problem", "answer", "value")
@@ -917,8 +917,6 @@ def _looks_like(sid: str, students: Any) -> str:
 def _in_order(result: Any, name: str) -> bool:
     """Whether an answer's values have places (A, B; outer, inner), as solved: then two
     lists of values are one answer only in the same order."""
-    from .matching import ordered
-
     if result is None:
         return False
     try:
@@ -1115,6 +1113,10 @@ def grade_item(student: str, problem: Any, name: str, reported: Any,
             row.note = f"cannot read {' '.join(str(value).split())[:60]!r} as a quantity"
             row.feedback = row.note
             return row
+    if not ordered(list(reported.labels)) and not all(p.side is not None for p in parsed):
+        # roots matched as a set, unless the student names the root of every value: then
+        # `533.5 rpm (slow)` is compared with the slow root (and is not it)
+        parsed = [dataclasses.replace(p, side=None) for p in parsed]
     if any(p.side is None for p in parsed) and any(p.side is not None for p in parsed):
         # a place named for some values: theirs are kept, the others take the places left,
         # in order (`35.15 N at B; 62.95 N` puts 62.95 N at A)
@@ -1300,16 +1302,14 @@ def _label_of(value: Any, labels: list[str]) -> tuple[str, int] | None:
 def _student_value(value: Any, dimension: str, name: str, labels: list[str],
                    sides: tuple[str, ...], signs: tuple[tuple[str, int], ...]) -> Any:
     """A student's value of a quantity, written as gyro prints it or as books do: with
-    its label in brackets (``45.13 rpm (slow)``: a root's label is dropped, the roots
-    being matched as a set; ``35.15 N (A)`` is placed at A), or with the words of an
+    its label in brackets (``45.13 rpm (slow)`` is placed at the slow root, where every
+    value names its root, `grade_item`; ``35.15 N (A)`` is placed at A), or with the words of an
     answer that reads them (``35.15 N up at B``, as an answer key may: `_parse_worded`)."""
     from .expected import _parse_worded
-    from .matching import ordered
 
     label = _label_of(value, labels)
-    if label is not None:
-        read = parse_value(label[0], dimension, name)
-        return dataclasses.replace(read, side=label[1]) if ordered(labels) else read
+    if label is not None:  # placed; a root's label only where every value has one (below)
+        return dataclasses.replace(parse_value(label[0], dimension, name), side=label[1])
     if sides or signs:
         return _parse_worded(value, dimension, name, sides, signs)
     return parse_value(value, dimension, name)

@@ -267,7 +267,8 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                 out.append(check)
                 continue
             check.slip = diagnose(float(value.si), got_si, width_si, others)
-            if check.slip and check.slip.startswith("the other root") and in_order:
+            if check.slip and check.slip.startswith("the other root") and (
+                    in_order or value.side is not None):  # a root named by its label
                 k = next(k for k, c in enumerate(computed)
                          if k != j and abs(c - float(value.si)) <= width_si)
                 where = labels[k] if k < len(labels) and labels[k] else f"value {k + 1}"
