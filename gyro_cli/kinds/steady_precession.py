@@ -425,8 +425,13 @@ def _axial_quadratic(driver: str) -> tuple:
 #: where each least rate comes from: Eq. 11.21 (corrected) bounds omega_z; the least psidot
 #: is the discriminant of Eq. 11.13 at a given psidot, another number (965.4 rpm for 11/3,
 #: where the least omega_z is 1091 rpm)
-_LEAST_REF = {"psidot": "the discriminant of Eq. 11.13; Eq. 11.21 is its omega_z form",
-              "omega_z": "Eq. 11.21"}
+_LEAST_REF: dict[str, tuple[str | Expr, ...]] = {
+    "psidot": ("the discriminant of Eq. 11.13; Eq. 11.21 is its ", wz, " form"),
+    "omega_z": ("Eq. 11.21",)}
+
+
+def _least_ref_text(symbol: str) -> str:
+    return "".join(p if isinstance(p, str) else prose_text(p) for p in _LEAST_REF[symbol])
 
 
 @cache
@@ -499,11 +504,12 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
             f"steady precession at theta = {num(math.degrees(theta))} deg: the least is "
             f"{_least(symbol)} = {prose_text(formula)} = {qty(least, 'rad/s')} "
-            f"({num(least / RPM)} rpm), {_LEAST_REF[symbol]}", key=f"given.{rate}")
+            f"({num(least / RPM)} rpm), {_least_ref_text(symbol)}", key=f"given.{rate}")
     if least > 0:
         work.text("real roots exist because ", rel(names(symbol)[0], ">=",
                                                    names(_least(symbol))[0], "=", formula, "=",
-                                                   q(least, "rad/s")), f"    ({_LEAST_REF[symbol]})")
+                                                   q(least, "rad/s")),
+                  "    (", *_LEAST_REF[symbol], ")")
     if len(roots) == 1:
         work.text(*_one_root(abs(cos) < 1e-12))
     labels = _labels(roots)
