@@ -3,8 +3,9 @@
 #   make test   the same set-up, then import layers, ruff, mypy and the test suite on
 #               every core (pytest-xdist), but for the tests marked slow
 #   make test-slow  the tests marked slow: the pages in Chromium, the package and docs
-#               builds, the hooks' environments, processes sent signals or given a broken
-#               HOME; CI (.ci/run) runs make test, then make test-slow
+#               builds, the hooks' environments, the cold-start and import guards (fresh
+#               interpreters), processes sent signals or given a broken HOME; CI (.ci/run)
+#               runs make test, then make test-slow
 #   make props  the property tests with long hypothesis budgets (EXAMPLES times the
 #               default, default 10), on every core
 #   make browser  the pages in Chromium with the contrast of every text (make test checks
@@ -58,7 +59,8 @@ test: $(STAMP)
 	  test $$tests -eq 0 -a $$typed -eq 0
 
 # The tests make test leaves out (marked slow): each waits on another program (Chromium,
-# pip and build, mkdocs, pre-commit, a notebook kernel) or on a process it signals.
+# pip and build, mkdocs, pre-commit, a notebook kernel), on fresh Python interpreters (the
+# cold-start and import guards) or on a process it signals.
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal --assert=plain -m slow || \
 	  { echo "make test-slow: the failed tests again, with pytest's assertion messages"; \

@@ -300,6 +300,7 @@ def test_composing_first_reads_every_bundled_problem_alike(monkeypatch):
         assert with_prescan == composed and with_prescan[0] == "data", path
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_a_warm_check_of_every_bundled_problem_imports_no_pint(tmp_path):
     """A unit of three names (`kg m^2/s`, in find and expected) was asked of pint name by
     name on every run, so each process (each worker) paid pint's import for it."""
@@ -364,6 +365,7 @@ def test_the_rolling_disks_faster_scan_finds_the_same_tilts_bit_for_bit():
     assert found >= {0, 1, 2}  # no tilt, one, and two (a slow and a fast one)
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_a_checks_workers_import_nothing_after_warming_and_never_numpy(tmp_path):
     """What checking needs is loaded once, before the workers are forked (check.warm), and
     it is the standard library alone: checking every bundled problem (every kind, every

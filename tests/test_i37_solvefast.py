@@ -77,6 +77,7 @@ def _probe(args: list[str], cache: Path) -> tuple[set[str], list[str], str]:
     return set(extra.group(1).split()), eval(compiled.group(1)), done.stdout  # noqa: S307
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_item02_warm_text_solve_loads_only_its_own_modules(tmp_path):
     extra, _, out = _probe(["solve", str(TOP)], tmp_path / "cache")
     assert "Answer" in out
@@ -84,6 +85,7 @@ def test_item02_warm_text_solve_loads_only_its_own_modules(tmp_path):
     assert not extra & {"json", "locale", "signal", "zlib", "pint", "numpy"}
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_item02_warm_text_solve_compiles_only_the_patterns_it_matches(tmp_path):
     """Patterns are compiled when first used, not when their module is imported: a solve
     of 11/3 compiles the few its own input needs (dataclasses, which compiles one, is not

@@ -46,6 +46,7 @@ def _modules(*args: str, tmp_path: Path) -> tuple[set[str], str]:
     return set(done.stderr.rsplit("MODULES ", 1)[1].split()), done.stdout
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_item02_solve_imports_no_other_command(tmp_path):
     loaded, _ = _modules("solve", str(TOP), tmp_path=tmp_path)
     assert "gyro_cli.solving.solve" in loaded

@@ -253,6 +253,7 @@ def test_item3_version_from_one_place_and_changelog() -> None:
         assert re.search(r"^### (Added|Changed|Fixed|Removed|Deprecated|Security)$", section, re.MULTILINE), section[:80]
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_item3_version_costs_no_metadata_import(tmp_path: Path) -> None:
     """gyro --version, and a solve with the unit table warm, take the version from
     gyro_cli/__init__.py, without importlib.metadata (a few ms of every start-up)."""

@@ -109,6 +109,7 @@ def test_item01_readme_output_is_what_gyro_prints(run):
         at = found + len(part)
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_item01_every_gyro_command_of_the_readme_runs(copy):
     commands = [line for _, body in _blocks("sh") for line in body.splitlines()
                 if line.startswith("gyro ")]

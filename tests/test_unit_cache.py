@@ -122,6 +122,7 @@ def _gyro(args, cache, code="from gyro_cli.cli import main; main()"):
                           capture_output=True, text=True, timeout=300)
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_empty_and_warm_cache_print_byte_identical_output(tmp_path):
     files = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "problems").glob("*.yaml"))
     runs = []
@@ -133,6 +134,7 @@ def test_empty_and_warm_cache_print_byte_identical_output(tmp_path):
     assert runs[0] == runs[1]
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_warm_solve_kinds_and_help_import_neither_pint_nor_numpy(tmp_path):
     probe = ("import sys\nfrom gyro_cli.cli import main\ntry:\n    main()\nexcept SystemExit:\n"
              "    pass\nprint(sorted(m for m in ('pint', 'numpy', 'scipy', 'matplotlib') "
@@ -143,6 +145,7 @@ def test_warm_solve_kinds_and_help_import_neither_pint_nor_numpy(tmp_path):
         assert run.stderr.strip().splitlines()[-1] == "[]", (args, run.stderr)
 
 
+@pytest.mark.slow  # fresh interpreters: `make test-slow`
 def test_warm_bicycle_solve_imports_no_numpy(tmp_path):
     """The bicycle's eigenvalues and speeds are pure Python: a warm solve loads no numpy."""
     probe = ("import sys\nfrom gyro_cli.cli import main\ntry:\n    main()\nexcept SystemExit:\n"
