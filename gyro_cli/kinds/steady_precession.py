@@ -24,7 +24,7 @@ from ..core.expr import NAMED, PI, Expr, Let, Sym, absolute, exp, sqrt
 from ..core.expr import cos as cos_
 from ..core.expr import sin as sin_
 from ..core.given import Given
-from ..core.prose import deriv, fn, names, paren, prime, q, rel, words
+from ..core.prose import Prose, deriv, fn, names, paren, prime, q, rel, words
 from ..core.prose import text as prose_text
 from ..core.spec import AnswerSpec, Kind, Param
 from ..core.work import Work, num, qty
@@ -431,7 +431,7 @@ _LEAST_REF: dict[str, tuple[str | Expr, ...]] = {
 
 
 def _least_ref_text(symbol: str) -> str:
-    return "".join(p if isinstance(p, str) else prose_text(p) for p in _LEAST_REF[symbol])
+    return Prose(_LEAST_REF[symbol]).text
 
 
 @cache
