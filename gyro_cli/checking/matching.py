@@ -206,7 +206,7 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
             assert j is not None, "no pairing pairs nothing with nothing"
             unit, factor = values[0].unit or reported.unit or "", values[0].factor
             got_value = computed[j] / factor
-            got_text = f"{num(shown[j] / factor)} {unit}".rstrip() + label  # as signed (above)
+            got_text = _shown(shown[j] / factor, unit, label)  # as signed (above)
             if not strict and all_found:
                 out.append(AnswerCheck(
                     name, index, None, got_text, True,
@@ -243,10 +243,10 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
         check.got_si, check.got_value = got_si, got
         # the computed value as signed, beside the expected one as written, where only
         # sizes are compared (`magnitude`): "-1.4 kN" against "-1.396 kN (B)", not "1.396"
-        check.got = f"{num(shown[j] / value.factor)} {unit}".rstrip() + label
+        check.got = _shown(shown[j] / value.factor, unit, label)
         if not math.isfinite(got):  # finite in SI, too large for the expected value's unit
             check.got_value = None
-            check.got = f"{num(got_si)} {reported.si_unit or ''}".rstrip() + label
+            check.got = _shown(got_si, reported.si_unit or "", label)
         relative = (got_si - value.si) / abs(float(value.si)) if value.si else None
         check.relative_error = relative if relative is not None and abs(relative) < 1e300 \
             else None  # in percent it would overflow
@@ -281,6 +281,11 @@ def compare(name: str, values: list[Expected], tolerance: Tolerance, reported: A
                 check.slip = _other_root(value, others, width_si, unit)
         out.append(check)
     return out
+
+
+def _shown(value: float, unit: str, label: str) -> str:
+    """A computed value as the report prints it: ``-1.396 kN (B)``."""
+    return f"{num(value)} {unit}".rstrip() + label
 
 
 def graded_lines(name: str, parsed: list[Any], tolerance: Any, reported: Any) -> list[Any]:

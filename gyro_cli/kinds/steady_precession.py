@@ -79,9 +79,11 @@ def _deg(degrees: float) -> Expr:
 _AT_90 = rel(th, "=", _deg(90))  # theta = 90 deg
 _COS_0 = rel(cos_(th), "=", 0)
 _AXIAL_RATE = rel(wz, "=", psd + phd * cos_(th))  # omega_z = psidot + phidot cos(theta), Eq. 11.8
-_DROPPED_TERM = I_ * phd * cos_(th)  # the term of Eq. 11.13 the gyroscopic approximation drops
-# ... with the spin written psidot (omega_z = psidot + phidot cos(theta)): (J - I) phidot cos
-_DROPPED_WITH_PSIDOT = (J_ - I_) * phd * cos_(th)
+# The term of Eq. 11.13, m g l = phidot (J omega_z - I phidot cos theta), that the gyroscopic
+# approximation drops, by how the spin is written: I phidot cos theta with omega_z; with
+# psidot (omega_z = psidot + phidot cos theta) it is m g l = phidot (J psidot + (J - I)
+# phidot cos theta), and (J - I) phidot cos theta drops
+_DROPPED = {"omega_z": I_ * phd * cos_(th), "psidot": (J_ - I_) * phd * cos_(th)}
 
 
 # Made on first use, once (functools.cache), as the sentences by driver below: a solve
@@ -246,16 +248,12 @@ def _without_theta_words() -> tuple[dict[str, tuple], dict[str, tuple], tuple, t
     no_angle = {symbol: (th, ", the angle of the axis from the upward vertical, is not given; ",
                          phd, ", the precession rate about the vertical; ", w0, ", the spin (here ",
                          names(symbol)[0], ")") for symbol in ("psidot", "omega_z")}
-    # Eq. 11.13, m g l = phidot (J omega_z - I phidot cos theta), drops I phidot cos theta
-    # with the spin omega_z; with psidot (omega_z = psidot + phidot cos theta) it is
-    # m g l = phidot (J psidot + (J - I) phidot cos theta): (J - I) phidot cos theta drops
-    dropped = {"omega_z": _DROPPED_TERM, "psidot": _DROPPED_WITH_PSIDOT}
     whatever_theta = {symbol: (
         "gravity's moment ", _moment_of("m g l") * sin_(th), " turns the horizontal part ",
         J_ * w0 * sin_(th), " of the spin angular momentum at ", phd, ", so ",
         rel(phd, "=", approximate_rate), " whatever ", th, " is, once the ", term,
         " term of Eq. 11.13 is dropped (exact at ", _AT_90, ", where ", _COS_0, ")")
-        for symbol, term in dropped.items()}
+        for symbol, term in _DROPPED.items()}
     per_unit_sin = ("per unit ", sin_(th))
     approximation_only = ("no ", th, " given: the answers use the gyroscopic approximation ",
                           approximate_rate, ", exact only with the axis horizontal (", _AT_90,
@@ -430,10 +428,6 @@ _LEAST_REF: dict[str, tuple[str | Expr, ...]] = {
     "omega_z": ("Eq. 11.21",)}
 
 
-def _least_ref_text(symbol: str) -> str:
-    return Prose(_LEAST_REF[symbol]).text
-
-
 @cache
 def _least_spin(driver: str) -> Expr:
     """The least psidot with a real root: the discriminant of Eq. 11.13 at a given psidot
@@ -504,7 +498,7 @@ def _precession_roots(given: Given, rate: str, I: float, J: float, theta: float,
             f"{rate} {qty(given[rate], 'rad/s')} ({num(given[rate] / RPM)} rpm) is too low for "
             f"steady precession at theta = {num(math.degrees(theta))} deg: the least is "
             f"{_least(symbol)} = {prose_text(formula)} = {qty(least, 'rad/s')} "
-            f"({num(least / RPM)} rpm), {_least_ref_text(symbol)}", key=f"given.{rate}")
+            f"({num(least / RPM)} rpm), {Prose(_LEAST_REF[symbol]).text}", key=f"given.{rate}")
     if least > 0:
         work.text("real roots exist because ", rel(names(symbol)[0], ">=",
                                                    names(_least(symbol))[0], "=", formula, "=",
@@ -725,8 +719,7 @@ def _approximation(given: Given, rate: str, J: float, theta: float, D: float, dr
     """The gyroscopic approximation beside the exact roots, and how far apart they are."""
     omega = given[rate]
     symbol = "psidot" if rate == "spin" else "omega_z"
-    work.section("Gyroscopic approximation (the ", _DROPPED_WITH_PSIDOT if symbol == "psidot"
-                 else _DROPPED_TERM, " term dropped)")
+    work.section("Gyroscopic approximation (the ", _DROPPED[symbol], " term dropped)")
     if omega == 0:
         raise InputError(f"the approximation {driver} / (J {symbol}) needs a non-zero {rate}",
                          key=f"given.{rate}")
