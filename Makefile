@@ -4,7 +4,8 @@
 #               every core (pytest-xdist), but for the tests marked slow
 #   make test-slow  the tests marked slow: the pages in Chromium, the package and docs
 #               builds, the hooks' environments, the cold-start and import guards (fresh
-#               interpreters), processes sent signals or given a broken HOME; CI (.ci/run)
+#               interpreters), processes sent signals or given a broken HOME, the memory
+#               guards of streaming (tracemalloc); CI (.ci/run)
 #               runs make test, then make test-slow
 #   make props  the property tests with long hypothesis budgets (EXAMPLES times the
 #               default, default 10), on every core
@@ -45,8 +46,11 @@ demo: $(STAMP)
 # mypy (15 s on one core from a fresh clone) runs beside the tests rather than before them,
 # its report printed after theirs; make test fails if either does. The tests run with plain
 # asserts (rewriting the 3,800 asserts for pytest's messages cost each test process 6 s of
-# its 12 s start); the tests that fail are run again, alone, with pytest's messages.
+# its 12 s start); the tests that fail are run again, alone, with pytest's messages. The
+# tests are compiled first (1.8 s of each test process's start where PYTHONDONTWRITEBYTECODE
+# is set, as on the project's machine).
 test: $(STAMP)
+	$(BIN)/python -m compileall -q -j 0 tests fuzz   # each test process reads them compiled
 	$(BIN)/lint-imports --no-cache
 	$(BIN)/ruff check gyro_cli tests benchmarks fuzz
 	@echo "$(BIN)/mypy gyro_cli  (beside the tests)"
@@ -60,7 +64,8 @@ test: $(STAMP)
 
 # The tests make test leaves out (marked slow): each waits on another program (Chromium,
 # pip and build, mkdocs, pre-commit, a notebook kernel), on fresh Python interpreters (the
-# cold-start and import guards) or on a process it signals.
+# cold-start and import guards) or on a process it signals, or measures memory under
+# tracemalloc (the streaming guards).
 test-slow: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal --assert=plain -m slow || \
 	  { echo "make test-slow: the failed tests again, with pytest's assertion messages"; \

@@ -8,6 +8,7 @@ import json
 import tracemalloc
 from pathlib import Path
 
+import pytest
 import yaml
 
 from gyro_cli.checking.assignment import key_digest, read_key
@@ -40,6 +41,7 @@ def _roster(path: Path, students: int) -> Path:
     return path
 
 
+@pytest.mark.slow  # traced by tracemalloc, threefold slower: a guard of memory
 def test_item03_vary_roster_memory_does_not_grow_with_the_students(run, tmp_path):
     # Holding every variant's text and key entry costs about 6 kB a student (2.5 MB more
     # for 400 more students, measured on the code before it streamed); streaming keeps
@@ -57,6 +59,7 @@ def test_item03_vary_roster_memory_does_not_grow_with_the_students(run, tmp_path
     assert why == "" and key is not None and len(key["variants"]) == 420
 
 
+@pytest.mark.slow  # traced by tracemalloc, threefold slower: a guard of memory
 def test_item03_export_memory_does_not_grow_with_the_variants(run, tmp_path):
     # A variant's worked answer is tens of kB of MathML: held (the code before it
     # streamed), 60 more variants cost 9 MB; streamed, 0.3 MB. The bound is 12.5 kB a
