@@ -15,7 +15,8 @@
 #               apt-get install texlive-latex-base texlive-latex-recommended
 #               texlive-latex-extra poppler-utils; the test that compiles it skips without)
 #   make fuzz   mutate the bundled problems for MINUTES (default 5), in-process
-#   make examples  the example pages docs/examples/*.html (gyro solve --format html)
+#   make examples  the example pages docs/examples/*.html (gyro solve --format html) and the
+#               outputs stored in the example notebook docs/examples/gyro.ipynb
 #   make docs   the documentation site: docs/ built into site/ by MkDocs in strict mode,
 #               offline (any warning, a broken link or anchor, fails); open site/index.html
 #   make dist   the sdist and wheel in dist/ (python -m build), checked by twine
@@ -100,6 +101,7 @@ bench: $(STAMP)
 examples: $(STAMP)
 	$(BIN)/gyro solve --format html problems/11_3.yaml > docs/examples/11_3.html
 	$(BIN)/gyro solve --format html problems/11_2_released_top.yaml > docs/examples/11_2_released_top.html
+	env -u MPLBACKEND $(BIN)/jupyter-execute --inplace --timeout=120 docs/examples/gyro.ipynb
 
 docs: $(STAMP)
 	$(BIN)/mkdocs build --strict --site-dir site
