@@ -20,6 +20,9 @@ identity columns (``Surname``, ``First name`` and the site's identity fields suc
 (unless asked for), so slot N is the N-th problem of the files, as the Moodle export
 wrote them: one cloze question per problem, whose response reads ``part 1: 0.0001954;
 part 2: 45.13; ...``, part K being the problem's K-th blank (render/bank_moodle.py).
+Downloaded with its ``Right answer N`` columns, each is held to problem N's exported
+answers: a quiz in another order, or a drawn variant, is refused rather than graded
+against the wrong numbers.
 
 Canvas's quiz Student Analysis (CSV) of a QTI 1.2 bank: one row per student (``name``,
 ``id``, ``sis_id``, ``section``, ``section_id``, ``section_sis_id``, ``submitted``,
@@ -219,6 +222,8 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
         raise InputError(f"has Response columns {', '.join(map(str, sorted(slots)))}, expected "
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
                          "in the order the bank was exported", file=path, line=1)
+    right = {int(m.group(1)): k for k, name in enumerate(header)
+             if (m := _RIGHT_ANSWER.fullmatch(name)) and int(m.group(1)) in slots}
     by_student: dict[str, list[tuple[str, str, str, int, str]]] = {}
     named: dict[str, int] = {}  # a student known by name alone -> the line of their row
     people: dict[str, dict[str, str]] = {}
@@ -241,6 +246,8 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
                                  "download it with one", file=path, line=number)
             named[student] = number
         finished.setdefault(student, []).append((number, row))
+        for slot, k in right.items():
+            _same_question(row[k], slot, *problems[slot - 1], path, number, decimal_comma)
 
     def one_attempt(student: str, who: str, attempt: int, number: int,
                     row: list[str]) -> None:
@@ -271,6 +278,49 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
         notes.append(f"{unfinished} attempt(s) not finished (State) are not graded, as Moodle "
                      "grades none")
     return _sheet([a for answers in by_student.values() for a in answers]), people
+
+
+#: the report's column of a slot's right answer (its option "Right answer")
+_RIGHT_ANSWER = re.compile(r"right answer (\d+)")
+#: a right answer equal to the exported value: the bank writes every digit (repr), and a
+#: drawn variant's or another problem's value is farther than this
+_SAME_VALUE = 1e-6
+
+
+def _same_question(cell: str, slot: int, variant: Any, part_of: dict[str, Any], path: str,
+                   line: int, decimal_comma: bool) -> None:
+    """Refuse a row whose ``Right answer N`` is not problem N's as exported: the quiz's
+    slot N holds another problem (the quiz built in another order) or a drawn variant (a
+    bank exported with --variants), which would be graded against problem N unnoticed."""
+    blanks = {blank.key: blank for blank in variant.blanks}
+    try:
+        parts = _parts(cell, variant, part_of, path, line)
+    except InputError:  # parts that its question does not have
+        parts, same = [], False
+    else:
+        same = True
+    for part, typed in parts:
+        number = _LEADING_NUMBER.match(moodle_number(typed, decimal_comma))
+        value = blanks[part.key].value
+        if number is None or abs(float(number.group(0)) - value) > _SAME_VALUE * abs(value):
+            same = False
+    if not same:
+        raise InputError(
+            f"Right answer {slot} is not {variant.ident}'s as the bank gives it "
+            f"({_exported_answer(variant)}): the quiz's question {slot} is another problem "
+            "(a quiz in another order than the files) or a drawn variant (a bank exported "
+            "with --variants cannot be regraded); regrade with the files in the quiz's order",
+            file=path, line=line)
+
+
+def _exported_answer(variant: Any) -> str:
+    """A question's right answer as Moodle's report sums it up, shortened to 4 digits."""
+    if len(variant.blanks) == 1 and not variant.choices:
+        return f"{variant.blanks[0].value:.4g}"
+    return "; ".join(f"part {k}: {blank.value:.4g}" for k, blank in enumerate(variant.blanks, 1))
+
+
+_LEADING_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def _by_start(header: list[str], attempts: list[tuple[int, list[str]]], path: str,
