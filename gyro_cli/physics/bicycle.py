@@ -41,6 +41,7 @@ from __future__ import annotations
 import cmath
 import functools
 import math
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import SupportsIndex, overload
@@ -454,12 +455,45 @@ def characteristic(m: Matrices, g: float) -> list[list[float]]:
 
 @functools.lru_cache(maxsize=64)
 def _characteristic(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
-    """The coefficients of ``characteristic``: ``_characteristic_by_polynomials`` with its
-    products written out (``_characteristic_written_out``) wherever that one is finite."""
+    """The coefficients of ``characteristic``: ``_characteristic_computed``, each that
+    double precision cannot tell from 0 set to 0 (``_resolved``)."""
+    return _resolved(_characteristic_computed(m, g), _characteristic_by_polynomials(
+        _absolute(m), abs(g), permanent=True))
+
+
+def _characteristic_computed(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
+    """``_characteristic_by_polynomials`` with its products written out
+    (``_characteristic_written_out``) wherever that one is finite."""
     coeffs = _characteristic_written_out(m, g)
     if all(math.isfinite(x) for a in coeffs for x in a):
         return coeffs
     return _characteristic_by_polynomials(m, g)
+
+
+#: a coefficient within this many rounding units of the sum of its terms' sizes is 0: each
+#: is a sum of at most eight products, each rounded once, the sums rounded again
+_UNRESOLVED = 16 * sys.float_info.epsilon
+
+
+def _resolved(coeffs: tuple[tuple[float, ...], ...], sizes: tuple[tuple[float, ...], ...]
+              ) -> tuple[tuple[float, ...], ...]:
+    """The coefficients with each that is no larger than the rounding of the sum that
+    made it set to 0: ``sizes`` are the sums of the terms' sizes (the characteristic of
+    the matrices' absolute values, every difference a sum). Without a spinning wheel, a0's
+    v^2 coefficient is g (K0_pp K2_dd - K2_pd K0_dp) = 0 exactly, but came out as +-4.5e-13
+    (5607.6 + 4.5e-13 v^2 printed), and a -4.5e-13 made a capsize speed of 1e8 m/s."""
+    out = []
+    for a, size in zip(coeffs, sizes):
+        size = (*size, *[0.0] * (len(a) - len(size)))
+        out.append(_trim([0.0 if math.isfinite(s) and abs(c) <= _UNRESOLVED * s else c
+                          for c, s in zip(a, size)]))
+    return tuple(tuple(a) for a in out)
+
+
+def _absolute(m: Matrices) -> Matrices:
+    """The matrices with each entry's absolute value."""
+    return Matrices(*(Matrix2([[abs(x) for x in row] for row in a])
+                      for a in (m.M, m.C1, m.K0, m.K2)))
 
 
 def _characteristic_written_out(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
@@ -497,8 +531,10 @@ def _characteristic_written_out(m: Matrices, g: float) -> tuple[tuple[float, ...
     return tuple(tuple(_trim(a)) for a in (a0, a1, a2, a3, a4))
 
 
-def _characteristic_by_polynomials(m: Matrices, g: float) -> tuple[tuple[float, ...], ...]:
-    """The coefficients of ``characteristic``, by polynomial arithmetic.
+def _characteristic_by_polynomials(m: Matrices, g: float, permanent: bool = False
+                                   ) -> tuple[tuple[float, ...], ...]:
+    """The coefficients of ``characteristic``, by polynomial arithmetic; ``permanent``:
+    every difference a sum (of the matrices' absolute values: the size of each sum).
 
     Each a_k is a list of coefficients in v (lowest power first).
     For 2x2 A s^2 + B s + C: a4 = det A, a0 = det C,
@@ -510,13 +546,15 @@ def _characteristic_by_polynomials(m: Matrices, g: float) -> tuple[tuple[float, 
     B = [[[0.0, m.C1[i][j]] for j in range(2)] for i in range(2)]
     C = [[[g * m.K0[i][j], 0.0, m.K2[i][j]] for j in range(2)] for i in range(2)]
 
+    minus = polyadd if permanent else polysub
+
     def cross(X, Y):
         """X11 Y22 + Y11 X22 - X12 Y21 - Y12 X21: the mixed term of det(X + Y)."""
-        return polysub(polyadd(polymul(X[0][0], Y[1][1]), polymul(Y[0][0], X[1][1])),
-                       polyadd(polymul(X[0][1], Y[1][0]), polymul(Y[0][1], X[1][0])))
+        return minus(polyadd(polymul(X[0][0], Y[1][1]), polymul(Y[0][0], X[1][1])),
+                     polyadd(polymul(X[0][1], Y[1][0]), polymul(Y[0][1], X[1][0])))
 
     def det(X):
-        return polysub(polymul(X[0][0], X[1][1]), polymul(X[0][1], X[1][0]))
+        return minus(polymul(X[0][0], X[1][1]), polymul(X[0][1], X[1][0]))
 
     a4 = det(A)
     a3 = cross(A, B)
