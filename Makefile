@@ -101,7 +101,9 @@ bench: $(STAMP)
 examples: $(STAMP)
 	$(BIN)/gyro solve --format html problems/11_3.yaml > docs/examples/11_3.html
 	$(BIN)/gyro solve --format html problems/11_2_released_top.yaml > docs/examples/11_2_released_top.html
-	env -u MPLBACKEND $(BIN)/jupyter-execute --inplace --timeout=120 docs/examples/gyro.ipynb
+	env -u MPLBACKEND $(BIN)/python -c "import nbclient, nbformat; p = 'docs/examples/gyro.ipynb'; \
+	  nb = nbformat.read(p, 4); nbclient.NotebookClient(nb, timeout=120, record_timing=False, \
+	  resources={'metadata': {'path': 'docs/examples'}}).execute(); nbformat.write(nb, p)"
 
 docs: $(STAMP)
 	$(BIN)/mkdocs build --strict --site-dir site
