@@ -59,6 +59,23 @@ def test_right_answers_of_the_exported_problems_are_regraded(tmp_path, run):
     graded = run("check", "--answers", path, "--responses", "moodle", top, spin)
     assert graded.exit_code == 0, graded.output
     assert "invalid" not in graded.stdout and "wrong" not in graded.stdout, graded.stdout
+    assert graded.stderr == "", graded.stderr  # checked: nothing to say
+
+
+def test_a_report_without_right_answers_is_graded_with_a_note(tmp_path, run):
+    """Without the Right answer columns the report is graded as before, and a note on
+    stderr says what could not be checked and how to download it."""
+    top, spin, right = _two_problems(tmp_path, run)
+    path = tmp_path / "r.csv"
+    with path.open("w", newline="") as out:
+        writer = csv.writer(out)
+        writer.writerow(HEADER + ["Response 1", "Response 2"])
+        writer.writerow(["Lee", "Ann", "ann@x.edu", "Finished", "", "", "", "0",
+                         "part 1: 45.13; part 2: 533.5; part 3: 965.4", right[1]])
+    graded = run("check", "--answers", path, "--responses", "moodle", top, spin)
+    assert graded.exit_code == 0, graded.output
+    assert graded.stderr.count("gyro: note: the report has no Right answer columns") == 1
+    assert "Right answer ticked" in graded.stderr
 
 
 def test_a_quiz_in_another_order_is_refused(tmp_path, run):

@@ -274,6 +274,11 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
             continue
         for attempt, (number, row) in enumerate(attempts, 1):
             one_attempt(student, f"{student} (attempt {attempt})", attempt, number, row)
+    if not right and notes is not None:
+        notes.append("the report has no Right answer columns, so gyro cannot check that the "
+                     "quiz's question N is problem N as exported (a quiz in another order, or "
+                     "a bank of drawn variants, would be graded against the wrong numbers): "
+                     "download it with Right answer ticked")
     if unfinished and notes is not None:
         notes.append(f"{unfinished} attempt(s) not finished (State) are not graded, as Moodle "
                      "grades none")
