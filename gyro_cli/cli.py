@@ -321,6 +321,12 @@ def solve(files: tuple[str, ...], fmt: str, plot_file: str | None = None,
                    "Question and User; moodle: the quiz's Responses report as CSV; canvas: "
                    "the quiz's Student Analysis of a QTI bank), "
                    "regraded by gyro (errors carried forward too).")
+@click.option("--variants", "count", type=click.IntRange(1, 10_000), default=1,
+              metavar="N", help="With --responses blackboard|canvas: the bank was exported "
+                                "with --variants N (and --seed): each response is graded "
+                                "against the variant its question drew.")
+@click.option("--seed", type=int, default=0, show_default=True,
+              help="With --variants: the bank's --seed.")
 @click.option("--attempts", type=click.Choice(("latest", "best", "first", "average")),
               default="latest", show_default=True,
               help="With --responses moodle|canvas: regrade each student's latest attempt; "
@@ -374,7 +380,8 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
           reveal: bool = False, jobs: int | None = None, timeout: float = 60.0,
           shard: str | None = None, merge: bool = False, student: str | None = None,
           responses: str | None = None, decimal_comma: bool = False,
-          attempts: str = "latest", no_hints: bool = False) -> None:
+          attempts: str = "latest", no_hints: bool = False, count: int = 1,
+          seed: int = 0) -> None:
     """Solve problem files and compare with their `expected` answers.
 
     PATHS are files, directories (searched recursively for *.yaml and *.yml)
@@ -439,9 +446,13 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
         fail(f"--attempts {attempts} grades a whole class's download, not one --student")
     if responses and assignment:
         fail("--responses reads a bank exported from PATHS, not --assignment variants")
+    if (count != 1 or seed != 0) and responses not in ("blackboard", "canvas"):
+        fail("--variants and --seed go with --responses blackboard or canvas, whose "
+             "downloads give each response's question (Moodle's report does not say which "
+             "variant a student drew)")
     try:
         graded = _grade_responses(sheet, responses, paths, credit, student, reveal,
-                                  decimal_comma, attempts, not no_hints) \
+                                  decimal_comma, attempts, not no_hints, count, seed) \
             if responses else \
             grade(sheet, paths, assignment=assignment, credit=credit, student=student,
                   reveal=reveal, decimal_comma=decimal_comma, hints=not no_hints)
@@ -463,29 +474,42 @@ def check(paths: tuple[str, ...], fmt: str, junit_file: str | None, strict: bool
 def _grade_responses(download: str, platform: str, paths: tuple[str, ...],
                      credit: str | None, student: str | None,
                      reveal: bool, decimal_comma: bool = False,
-                     attempts: str = "latest",
-                     hints: bool = True):  # type: ignore[no-untyped-def]
+                     attempts: str = "latest", hints: bool = True, count: int = 1,
+                     seed: int = 0):  # type: ignore[no-untyped-def]
     """Grade a platform's download of responses: read as a gyro answer sheet (written to
-    a scratch file that is removed after)."""
+    a scratch folder that is removed after, with the variants of a bank exported with
+    ``count`` > 1, against which each student is graded alone: `each_alone`)."""
     import tempfile
 
     from .api import grade
-    from .commands.responses import blackboard_sheet, canvas_sheet, moodle_sheet
+    from .commands.responses import (
+        bank_files,
+        blackboard_sheet,
+        canvas_sheet,
+        each_alone,
+        moodle_sheet,
+    )
 
     notes: list[str] = []
     every_attempt = attempts != "latest"
-    if platform == "moodle":
-        text, people = moodle_sheet(download, paths, decimal_comma, every_attempt, notes)
-    elif platform == "canvas":
-        text, people = canvas_sheet(download, paths, every_attempt)
-    else:
-        text, people = blackboard_sheet(download, paths)
     with tempfile.TemporaryDirectory() as scratch:
-        sheet = os.path.join(scratch, "responses.csv")
-        with open(sheet, "w", encoding="utf-8", newline="") as out:
-            out.write(text)
-        graded = grade(sheet, paths, credit=credit, student=student, reveal=reveal,
-                       hints=hints)
+        bank = bank_files(paths, count, seed, scratch)
+        if platform == "moodle":
+            text, people = moodle_sheet(download, bank, decimal_comma, every_attempt, notes)
+        elif platform == "canvas":
+            text, people = canvas_sheet(download, bank, every_attempt)
+        else:
+            text, people = blackboard_sheet(download, bank)
+        files = [banked[0] for banked in bank]
+        if count == 1:
+            sheet = os.path.join(scratch, "responses.csv")
+            with open(sheet, "w", encoding="utf-8", newline="") as out:
+                out.write(text)
+            graded = grade(sheet, files, credit=credit, student=student, reveal=reveal,
+                           hints=hints)
+        else:
+            graded = each_alone(text, scratch, lambda sheet: grade(
+                sheet, files, credit=credit, student=student, reveal=reveal, hints=hints))
     graded.people = people  # the platform's names and ids, for --out-format canvas
     graded.notes[:0] = notes
     if every_attempt:

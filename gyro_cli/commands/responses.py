@@ -35,8 +35,9 @@ from __future__ import annotations
 import csv
 import html
 import io
+import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import Any
 
 from ..checking.assignment import student_id
@@ -54,41 +55,80 @@ def plain(text: str) -> str:
     return " ".join(html.unescape(_TAG.sub(" ", text)).split())
 
 
-def questions(paths: list[str] | tuple[str, ...]) -> dict[str, tuple[str, Any]]:
+#: one question's problem in a bank: (its file, the title and number the export gave
+#: it, the id of the problem file it was drawn from); a problem as written is number 1
+Banked = tuple[str, str | None, int, str | None]
+
+
+def bank_files(paths: list[str] | tuple[str, ...], count: int = 1, seed: int = 0,
+               folder: str | None = None) -> list[Banked]:
+    """The problems of a bank exported from ``paths``: each file as written, or with
+    ``count`` > 1 (``--variants COUNT --seed SEED``) the variants the export drew of each
+    file with `vary`, written into ``folder`` to be graded against (the export draws them
+    as `gyro vary --count COUNT --seed SEED` writes them)."""
+    from ..solving.paths import problem_files
+    from ..solving.problem import load
+    from .authoring import each_variant
+
+    files, missing = problem_files(paths)
+    if missing:
+        raise InputError(missing[0][1])
+    out: list[Banked] = []
+    for path in files:
+        if count == 1:
+            out.append((path, None, 1, None))
+            continue
+        try:
+            problem = load(path)
+            if problem.vary is None:  # exported as written
+                out.append((path, None, 1, str(problem.id)))
+                continue
+            assert folder is not None, "drawn variants need a folder"
+            for n, (name, text) in enumerate(each_variant(path, count, seed), 1):
+                drawn = os.path.join(folder, f"{len(out):04d}-{name}")
+                with open(drawn, "w", encoding="utf-8") as handle:
+                    handle.write(text)
+                out.append((drawn, problem.title, n, str(problem.id)))
+        except InputError as err:
+            raise err.located(file=path) from None
+    return out
+
+
+def questions(bank: list[Banked]) -> dict[str, tuple[str, Any]]:
     """Each question's plain text -> (problem id, what its blank is: `checking.ecf.Part`),
-    as the Blackboard export of ``paths`` writes them."""
+    as the Blackboard export of the ``bank`` writes them."""
+    return _questions_of(_variants(bank))
+
+
+def _questions_of(laid: list[tuple[Any, dict[str, Any], str]]) -> dict[str, tuple[str, Any]]:
     from ..render.bank_blackboard import question_text
 
     out: dict[str, tuple[str, Any]] = {}
-    for variant, part_of in _variants(paths):
+    for variant, part_of, _ in laid:
         for blank in variant.blanks:
             out[plain(question_text(variant, blank))] = (variant.ident, part_of[blank.key])
     return out
 
 
-def _variants(paths: list[str] | tuple[str, ...]) -> list[tuple[Any, dict[str, Any]]]:
-    """Each problem of ``paths`` as exported without --variants, in the files' order, with
-    its blanks' parts by key."""
-    from ..solving.paths import problem_files
+def _variants(bank: list[Banked]) -> list[tuple[Any, dict[str, Any], str]]:
+    """Each problem of the ``bank`` as the export laid it out, in the files' order, with
+    its blanks' parts by key and the id of the problem file it is a variant of."""
     from ..solving.problem import load
     from .export import variant_of
 
-    files, missing = problem_files(paths)
-    if missing:
-        raise InputError(missing[0][1])
-    out: list[tuple[Any, dict[str, Any]]] = []
-    for path in files:
+    out: list[tuple[Any, dict[str, Any], str]] = []
+    for path, title, number, drawn_from in bank:
         try:
             problem = load(path)
             parts: list = []
-            variant = variant_of(problem, 1, problem.title, parts_out=parts)
+            variant = variant_of(problem, number, title or problem.title, parts_out=parts)
         except InputError as err:
             raise err.located(file=path) from None
-        out.append((variant, {part.key: part for part in parts}))
+        out.append((variant, {part.key: part for part in parts}, drawn_from or variant.ident))
     return out
 
 
-def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]
+def blackboard_sheet(path: str, bank: list[Banked]
                      ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Blackboard long-format download of responses as a gyro answer sheet (CSV text:
     student, problem, answer, value), its rows in the order of each answer's values, and
@@ -101,7 +141,7 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]
                          f"Question and Answer; got {', '.join(rows[0]) if rows else 'nothing'}",
                          file=path, line=1)
     column = {name: header.index(name) for name in NEEDED}
-    known = questions(paths)
+    known = questions(bank)
     answers: list[tuple[str, str, str, int, str]] = []
     people: dict[str, dict[str, str]] = {}
     for number, row in _filled(rows, max(column.values()) + 1, path):
@@ -110,7 +150,8 @@ def blackboard_sheet(path: str, paths: list[str] | tuple[str, ...]
         if found is None:
             raise InputError("no question of the problem files has this Question text "
                              f"({plain(cell['question'])[:60]!r}...); regrade with the files the "
-                             "bank was exported from (without --variants)", file=path,
+                             "bank was exported from (and its --variants and --seed)",
+                             file=path,
                              line=number)
         problem, part = found
         # a blank response is `missing`, as in a sheet
@@ -198,11 +239,11 @@ def best_of_attempts(graded: Any, keep: str = "best") -> Any:
     return best_attempts(graded, ATTEMPT_OF, ATTEMPT_NUMBER, keep)
 
 
-def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: bool = False,
+def moodle_sheet(path: str, bank: list[Banked], decimal_comma: bool = False,
                  every_attempt: bool = False, notes: list[str] | None = None
                  ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Moodle quiz Responses report (CSV) as a gyro answer sheet, and each student's
-    name: Response N is the N-th problem of ``paths``; a student's finished attempt
+    name: Response N is the N-th problem of the ``bank``; a student's finished attempt
     started last is the one read (`_by_start`), and an attempt not finished (State) is not
     graded,
     as Moodle grades none; each number is read as Moodle reads it (`moodle_number`, with
@@ -217,7 +258,7 @@ def moodle_sheet(path: str, paths: list[str] | tuple[str, ...], decimal_comma: b
         raise InputError("not a Moodle quiz Responses report: the first row must name the "
                          "columns Surname, First name, ... and Response 1, Response 2, ...; "
                          f"got {', '.join(rows[0]) if rows else 'nothing'}", file=path, line=1)
-    problems = _variants(paths)
+    problems = [(variant, part_of) for variant, part_of, _ in _variants(bank)]
     if sorted(slots) != list(range(1, len(problems) + 1)):
         raise InputError(f"has Response columns {', '.join(map(str, sorted(slots)))}, expected "
                          f"1 to {len(problems)}: one per problem file, the quiz's questions "
@@ -459,7 +500,7 @@ def _compact(text: str) -> str:
     return "".join(plain(text).split())
 
 
-def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: bool = False
+def canvas_sheet(path: str, bank: list[Banked], every_attempt: bool = False
                  ) -> tuple[str, dict[str, dict[str, str]]]:
     """A Canvas quiz Student Analysis report (CSV) of a QTI bank as a gyro answer sheet,
     and each student's Canvas identity (name, Canvas id, SIS id, section: the gradebook
@@ -476,9 +517,11 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: b
                          "name the columns name, id, sis_id, ..., attempt, then each question "
                          f"as 'ID: text'; got {', '.join(header[:8]) or 'nothing'}",
                          file=path, line=1)
-    known = {_compact(text): found for text, found in questions(paths).items()}
+    laid = _variants(bank)
+    known = {_compact(text): found for text, found in _questions_of(laid).items()}
     words = {_compact(_choice_text(variant, choice))
-             for variant, _ in _variants(paths) for choice in variant.choices}
+             for variant, _, _ in laid for choice in variant.choices}
+    origin = {variant.ident: drawn_from for variant, _, drawn_from in laid}
     asked: dict[int, tuple[str, Any]] = {}
     for k, name in enumerate(header[names.index("attempt") + 1:], names.index("attempt") + 1):
         m = _CANVAS_QUESTION.fullmatch(name)
@@ -490,7 +533,8 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: b
         if found is None:
             raise InputError(f"no question of the problem files has the text of column "
                              f"{k + 1} ({plain(m.group(2))[:60]!r}...); regrade with the files "
-                             "the bank was exported from (without --variants)", file=path,
+                             "the bank was exported from (and its --variants and --seed)",
+                             file=path,
                              line=1)
         asked[k] = found
     column = {name: names.index(name) for name in ("name", "id", "sis_id", "attempt")}
@@ -532,7 +576,35 @@ def canvas_sheet(path: str, paths: list[str] | tuple[str, ...], every_attempt: b
             typed = row[k].strip()
             answers.append((who, problem, part.name, part.index,
                             _with_unit(typed, part.unit) if typed else ""))
-    return _sheet(answers), people
+    return _sheet(_drawn_once(answers, origin, path)), people
+
+
+def _drawn_once(answers: list[tuple[str, str, str, int, str]], origin: dict[str, str],
+                path: str) -> list[tuple[str, str, str, int, str]]:
+    """A bank of drawn variants has columns for each variant's numbers, and a student's
+    quiz drew one variant of each number: of a student's columns for one answer of one
+    problem, those of the variant typed into are graded, the others, blank, are not
+    theirs; where all are blank, the first variant's are kept (missing, 0 points,
+    whichever variant was drawn), so that every student is graded on every answer once.
+    The values of one answer typed into two variants (a quiz that drew the two roots from
+    two variants) are refused: one answer cannot be graded against two problems.
+    ``origin``: each variant's problem id -> the id of the file it was drawn from (a file
+    as written: its own, and nothing changes)."""
+    groups: dict[tuple[str, str, str], list[int]] = {}
+    for k, (who, problem, name, _, _) in enumerate(answers):
+        groups.setdefault((who, origin.get(problem, problem), name), []).append(k)
+    keep: set[int] = set()
+    for (who, drawn_from, name), members in groups.items():
+        typed = list(dict.fromkeys(answers[k][1] for k in members if answers[k][4]))
+        if len(typed) > 1:
+            raise InputError(f"{who}'s {name} of {drawn_from} is typed into the questions of "
+                             f"{' and '.join(typed)}: the values of one answer drawn from two "
+                             "variants cannot be graded as one answer, so this download "
+                             "cannot be regraded (a quiz that draws a problem's numbers "
+                             "together, from one variant, can)", file=path)
+        chosen = typed[0] if typed else answers[members[0]][1]
+        keep.update(k for k in members if answers[k][1] == chosen)
+    return [answer for k, answer in enumerate(answers) if k in keep]
 
 
 def _attempt(cell: str, path: str, line: int) -> int:
@@ -542,3 +614,30 @@ def _attempt(cell: str, path: str, line: int) -> int:
         return int(cell.strip())
     raise InputError(f"attempt {cell.strip()!r} is not an attempt number (1, 2, ...)",
                      file=path, line=line)
+
+
+def each_alone(text: str, scratch: str, grade: Callable[[str], Any]) -> Any:
+    """A sheet of responses to a bank of drawn variants (CSV ``text``), each student graded
+    alone by ``grade`` (a sheet's path -> `checking.grades.Graded`): a student is graded on
+    the variants their own rows name, where a sheet graded whole grades every student on
+    every problem any row names, so on every variant. The grades of all, joined in the
+    sheet's order; ``scratch``: a folder for the students' sheets."""
+    from ..checking.grades import Graded
+
+    rows = list(csv.reader(io.StringIO(text)))
+    by_student: dict[str, list[list[str]]] = {}
+    for row in rows[1:]:
+        by_student.setdefault(row[0], []).append(row)
+    whole = Graded([])
+    for k, own in enumerate(by_student.values()):
+        sheet = os.path.join(scratch, f"responses-{k}.csv")
+        with open(sheet, "w", encoding="utf-8", newline="") as out:
+            csv.writer(out, lineterminator="\n").writerows([rows[0], *own])
+        graded = grade(sheet)
+        whole.rows += graded.rows
+        whole.scores.update(graded.scores)
+        whole.sheet_students += graded.sheet_students
+        whole.errors += [line for line in graded.errors if line not in whole.errors]
+        whole.notes += [line for line in graded.notes if line not in whole.notes]
+        whole.submitter = graded.submitter
+    return whole
