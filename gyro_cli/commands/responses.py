@@ -35,6 +35,7 @@ from __future__ import annotations
 import csv
 import html
 import io
+import math
 import os
 import re
 from collections.abc import Callable, Iterator
@@ -346,9 +347,12 @@ def _same_question(cell: str, slot: int, variant: Any, part_of: dict[str, Any], 
     else:
         same = True
     for part, typed in parts:
-        number = _LEADING_NUMBER.match(moodle_number(typed, decimal_comma))
         value = blanks[part.key].value
-        if number is None or abs(float(number.group(0)) - value) > _SAME_VALUE * abs(value):
+        try:  # the number as Moodle reads it, before its unit
+            right = float(moodle_number(typed, decimal_comma).split()[0])
+        except (ValueError, IndexError):
+            right = math.nan
+        if not abs(right - value) <= _SAME_VALUE * abs(value):
             same = False
     if not same:
         raise InputError(
@@ -365,8 +369,6 @@ def _exported_answer(variant: Any) -> str:
         return f"{variant.blanks[0].value:.4g}"
     return "; ".join(f"part {k}: {blank.value:.4g}" for k, blank in enumerate(variant.blanks, 1))
 
-
-_LEADING_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 def _by_start(header: list[str], attempts: list[tuple[int, list[str]]], path: str,
